@@ -1,0 +1,16 @@
+#pragma once
+// Difference images: a signed float image (test - reference, RGB, alpha 1) for EXR, and a
+// heat map of max-channel |difference| on a fixed colour scale with a legend bar drawn
+// into the PNG, so every map in one report can share one scale.
+#include "core/image/image.h"
+
+namespace tp {
+
+ImageRGBA signedDifference(const ImageRGBA& test, const ImageRGBA& reference);
+
+// Heat map of |diff| in [0, scaleMax] (values above saturate; NaN/Inf drawn magenta),
+// with a legend strip of `legendHeight` pixels under the image labelled 0 and scaleMax.
+// Output is display-space RGBA ready for writePng; height = diff.height + legendHeight.
+ImageRGBA heatMap(const ImageRGBA& signedDiff, float scaleMax, uint32_t legendHeight = 24);
+
+} // namespace tp

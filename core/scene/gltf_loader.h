@@ -1,0 +1,20 @@
+#pragma once
+// glTF 2.0 (.gltf / .glb) loader on tinygltf. Node transforms are flattened into world-space
+// vertices; missing normals and tangents are generated; problems become one-line errors
+// that name the file; a missing texture becomes a placeholder with a warning.
+#include <string>
+#include <vector>
+
+#include "core/scene/scene.h"
+#include "core/util/result.h"
+
+namespace tp {
+
+struct GltfLoadOptions {
+    // Warnings (missing texture, ignored extension, ...) are appended here, one line each.
+    std::vector<std::string>* warnings = nullptr;
+};
+
+Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options = {});
+
+} // namespace tp

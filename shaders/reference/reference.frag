@@ -1,0 +1,37 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The reference: every light at every sample (per-sample shading is forced by the pipeline
+// state when MSAA is on), no culling, no intermediate storage. TP_ACCUM_FP64 accumulates
+// the light sum in double precision (shaderFloat64), otherwise in fp32.
+#ifdef TP_ACCUM_FP64
+#extension GL_ARB_gpu_shader_fp64 : require
+#endif
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+#include "include/material.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+layout(location = 4) in vec4 inColor;
+layout(location = 0) out vec4 outColor;
+
+#ifdef TP_ACCUM_FP64
+#define ACCUM dvec3
+#else
+#define ACCUM vec3
+#endif
+
+void main() {
+    MaterialGpu m = materials[draw.materialIndex];
+    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor,
+                                     gl_FrontFacing);
+    if (kAlphaMode == TP_ALPHA_MASK && ms.alpha < m.alphaCutoff) discard;
+
+    ACCUM sum = ACCUM(ambientAndEmissive(ms));
+    uint count = frame.viewport.z;
+    for (uint i = 0u; i < count; ++i)
+        sum += ACCUM(evalLight(lights[i], ms.surface, kHasSpot));
+    outColor = vec4(vec3(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
+}

@@ -1,0 +1,24 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The one vertex shader of every scene draw (prepass, G-buffer, forward, reference), so
+// depth is bit-identical between passes and the EQUAL depth test after a prepass holds.
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+
+layout(location = 0) out vec3 outPosition;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec2 outUv;
+layout(location = 3) out vec4 outTangent;
+layout(location = 4) out vec4 outColor;
+
+invariant gl_Position;
+
+void main() {
+    Vertex v = vertices[gl_VertexIndex];
+    outPosition = v.positionU.xyz;
+    outNormal = v.normalV.xyz;
+    outUv = vec2(v.positionU.w, v.normalV.w);
+    outTangent = v.tangent;
+    outColor = v.color;
+    gl_Position = frame.viewProj * vec4(v.positionU.xyz, 1.0);
+}
