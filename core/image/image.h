@@ -1,6 +1,7 @@
 #pragma once
 // A linear RGBA float image on the CPU: what readback produces and what metrics, EXR/PNG
 // writers and difference images consume. Row 0 is the top row.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

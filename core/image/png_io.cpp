@@ -1,0 +1,84 @@
+// stb_image_write behind image_io.h. Debian's libstb already exports the stb_image_write
+// symbols (nm -D libstb.so), so this file includes the header only and the build links stb
+// (defining STB_IMAGE_WRITE_IMPLEMENTATION here would clash with it once linked).
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "core/image/image_io.h"
+
+namespace tp {
+namespace {
+
+// [0,1] to 0..255 with rounding; NaN and negatives to 0, above 1 to 255.
+uint8_t quantize(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return uint8_t(std::lround(v * 255.0f));
+}
+
+std::vector<uint8_t> quantizeImage(const ImageRGBA& display, bool keepAlpha) {
+    std::vector<uint8_t> bytes(display.rgba.size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+        bool alpha = i % 4 == 3;
+        bytes[i] = alpha && !keepAlpha ? 255 : quantize(display.rgba[i]);
+    }
+    return bytes;
+}
+
+void appendBytes(void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<uint8_t>*>(context);
+    const auto* bytes = static_cast<const uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+}
+
+// stbi_write_png does not check fwrite; this does, so a full disk is an error.
+bool writeBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+    errno = 0;
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) return false;
+    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    ok = std::fclose(f) == 0 && ok;
+    return ok;
+}
+
+} // namespace
+
+Status writePng(const std::string& path, const ImageRGBA& display, bool keepAlpha) {
+    if (display.width == 0 || display.height == 0 ||
+        display.rgba.size() != display.pixelCount() * 4)
+        return Error{path + ": cannot write an empty or inconsistent image"};
+
+    std::vector<uint8_t> bytes = quantizeImage(display, keepAlpha);
+    std::vector<uint8_t> png;
+    int encoded = stbi_write_png_to_func(appendBytes, &png, int(display.width), int(display.height),
+                                         4, bytes.data(), int(display.width * 4));
+    if (!encoded || png.empty()) return Error{path + ": PNG encoding failed"};
+
+    // Same temp-then-rename rule as EXR: no half-written PNG under the real name.
+    const std::string temp = path + ".partial";
+    std::error_code ignored;
+    if (!writeBytes(temp, png)) {
+        std::string why = errno ? std::strerror(errno) : "write failed";
+        std::filesystem::remove(temp, ignored);
+        return Error{path + ": cannot write PNG: " + why};
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ignored);
+        return Error{path + ": cannot rename temporary file: " + ec.message()};
+    }
+    return {};
+}
+
+} // namespace tp
