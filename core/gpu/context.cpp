@@ -1,0 +1,314 @@
+#include "core/gpu/context.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/gpu/vk_check.h"
+
+namespace tp {
+namespace {
+
+const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string deviceTypeName(VkPhysicalDeviceType type) {
+    switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "other";
+    }
+}
+
+int typeRank(VkPhysicalDeviceType type) {
+    switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+    }
+}
+
+bool layerPresent(const char* name) {
+    uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    for (const VkLayerProperties& l : layers)
+        if (std::strcmp(l.layerName, name) == 0) return true;
+    return false;
+}
+
+Result<VkInstance> createInstance(bool validate) {
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "triptych";
+    app.apiVersion = VK_API_VERSION_1_3;
+    std::vector<const char*> layers, extensions;
+    VkValidationFeatureEnableEXT enables[] = {
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = enables;
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pApplicationInfo = &app;
+    if (validate) {
+        if (!layerPresent(kValidationLayer))
+            return Error{"--validate: the Khronos validation layer is not installed "
+                         "(apt-get install vulkan-validationlayers)"};
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        info.pNext = &features;
+    }
+    info.enabledLayerCount = uint32_t(layers.size());
+    info.ppEnabledLayerNames = layers.data();
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VkInstance instance = VK_NULL_HANDLE;
+    VkResult r = vkCreateInstance(&info, nullptr, &instance);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
+        return Error{"no Vulkan 1.3 driver found (install mesa-vulkan-drivers for lavapipe)"};
+    if (r != VK_SUCCESS)
+        return Error{std::string("vkCreateInstance failed with ") + vkResultName(r)};
+    return instance;
+}
+
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+    uint32_t count = 0;
+    vkEnumeratePhysicalDevices(instance, &count, nullptr);
+    std::vector<VkPhysicalDevice> devices(count);
+    vkEnumeratePhysicalDevices(instance, &count, devices.data());
+    // Only Vulkan 1.3 devices can run triptych.
+    std::erase_if(devices, [](VkPhysicalDevice d) {
+        VkPhysicalDeviceProperties p;
+        vkGetPhysicalDeviceProperties(d, &p);
+        return p.apiVersion < VK_API_VERSION_1_3;
+    });
+    return devices;
+}
+
+DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
+    vkGetPhysicalDeviceProperties2(device, &props);
+    DeviceInfo info;
+    info.index = index;
+    info.name = props.properties.deviceName;
+    info.type = deviceTypeName(props.properties.deviceType);
+    info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
+    info.apiVersion = props.properties.apiVersion;
+    return info;
+}
+
+Result<uint32_t> chooseDevice(const std::vector<VkPhysicalDevice>& devices, const std::string& want) {
+    if (devices.empty())
+        return Error{"no Vulkan 1.3 device found (install mesa-vulkan-drivers for lavapipe)"};
+    if (want.empty()) {
+        uint32_t best = 0;
+        for (uint32_t i = 1; i < devices.size(); ++i) {
+            VkPhysicalDeviceProperties a, b;
+            vkGetPhysicalDeviceProperties(devices[i], &a);
+            vkGetPhysicalDeviceProperties(devices[best], &b);
+            if (typeRank(a.deviceType) < typeRank(b.deviceType)) best = i;
+        }
+        return best;
+    }
+    bool numeric = std::all_of(want.begin(), want.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (numeric) {
+        unsigned long i = std::strtoul(want.c_str(), nullptr, 10);
+        if (i < devices.size()) return uint32_t(i);
+        return Error{"--device " + want + ": no such device (there are " +
+                     std::to_string(devices.size()) + "; see 'triptych info')"};
+    }
+    for (uint32_t i = 0; i < devices.size(); ++i) {
+        std::string name = describe(devices[i], i).name;
+        std::string lower = name, key = want;
+        std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+        std::transform(key.begin(), key.end(), key.begin(), ::tolower);
+        if (lower.find(key) != std::string::npos) return i;
+    }
+    return Error{"--device " + want + ": no device name contains it (see 'triptych info')"};
+}
+
+DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p) {
+    VkPhysicalDeviceFeatures f;
+    vkGetPhysicalDeviceFeatures(device, &f);
+    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &sub};
+    vkGetPhysicalDeviceProperties2(device, &p2);
+    DeviceCaps c;
+    c.float64 = f.shaderFloat64;
+    c.sampleRateShading = f.sampleRateShading;
+    c.storageImageMultisample = f.shaderStorageImageMultisample;
+    c.fragmentStoresAndAtomics = f.fragmentStoresAndAtomics;
+    c.colorSampleCounts = p.limits.framebufferColorSampleCounts &
+                          p.limits.framebufferDepthSampleCounts;
+    c.timestampPeriodNs = p.limits.timestampPeriod;
+    c.maxImageDimension2D = p.limits.maxImageDimension2D;
+    c.maxStorageBufferRange = p.limits.maxStorageBufferRange;
+    c.maxComputeSharedMemorySize = p.limits.maxComputeSharedMemorySize;
+    c.subgroupSize = sub.subgroupSize;
+    return c;
+}
+
+} // namespace
+
+VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                       VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
+                       void* user) {
+    auto* ctx = static_cast<GpuContext*>(user);
+    if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
+        std::lock_guard<std::mutex> lock(ctx->messagesMutex_);
+        ctx->messages_.push_back(data->pMessage ? data->pMessage : "(no message)");
+    }
+    return VK_FALSE;
+}
+
+Result<std::vector<DeviceInfo>> GpuContext::listDevices() {
+    Result<VkInstance> instance = createInstance(false);
+    if (!instance) return Error{instance.error()};
+    std::vector<DeviceInfo> out;
+    std::vector<VkPhysicalDevice> devices = physicalDevices(*instance);
+    for (uint32_t i = 0; i < devices.size(); ++i) out.push_back(describe(devices[i], i));
+    vkDestroyInstance(*instance, nullptr);
+    return out;
+}
+
+Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& options) {
+    std::unique_ptr<GpuContext> ctx(new GpuContext());
+    Result<VkInstance> instance = createInstance(options.validate);
+    if (!instance) return Error{instance.error()};
+    ctx->instance = *instance;
+    ctx->validationEnabled_ = options.validate;
+    if (options.validate) {
+        VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+        info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+        info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                           VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+        info.pfnUserCallback = debugCallback;
+        info.pUserData = ctx.get();
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(ctx->instance, "vkCreateDebugUtilsMessengerEXT"));
+        VK_CHECK(create(ctx->instance, &info, nullptr, &ctx->messenger_));
+    }
+    std::vector<VkPhysicalDevice> devices = physicalDevices(ctx->instance);
+    Result<uint32_t> chosen = chooseDevice(devices, options.device);
+    if (!chosen) return Error{chosen.error()};
+    ctx->physical = devices[*chosen];
+    ctx->info = describe(ctx->physical, *chosen);
+    vkGetPhysicalDeviceProperties(ctx->physical, &ctx->properties);
+    vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memoryProperties);
+    ctx->caps = readCaps(ctx->physical, ctx->properties);
+
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(ctx->physical, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(ctx->physical, &familyCount, families.data());
+    bool found = false;
+    for (uint32_t i = 0; i < familyCount && !found; ++i) {
+        VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) {
+            ctx->queueFamily = i;
+            ctx->caps.timestampValidBits = families[i].timestampValidBits;
+            found = true;
+        }
+    }
+    if (!found)
+        return Error{"device '" + ctx->info.name + "' has no graphics+compute queue with timestamps"};
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = ctx->queueFamily;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    f13.dynamicRendering = VK_TRUE;
+    f13.synchronization2 = VK_TRUE;
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+    f12.hostQueryReset = VK_TRUE;
+    f12.scalarBlockLayout = VK_FALSE;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+    features.features.shaderFloat64 = ctx->caps.float64;
+    features.features.sampleRateShading = ctx->caps.sampleRateShading;
+    features.features.shaderStorageImageMultisample = ctx->caps.storageImageMultisample;
+    features.features.fragmentStoresAndAtomics = ctx->caps.fragmentStoresAndAtomics;
+    features.features.independentBlend = VK_TRUE;
+
+    VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+    deviceInfo.queueCreateInfoCount = 1;
+    deviceInfo.pQueueCreateInfos = &queueInfo;
+    VkResult r = vkCreateDevice(ctx->physical, &deviceInfo, nullptr, &ctx->device);
+    if (r != VK_SUCCESS)
+        return Error{"cannot create a Vulkan device on '" + ctx->info.name + "': " + vkResultName(r)};
+    vkGetDeviceQueue(ctx->device, ctx->queueFamily, 0, &ctx->queue);
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = ctx->queueFamily;
+    VK_CHECK(vkCreateCommandPool(ctx->device, &poolInfo, nullptr, &ctx->commandPool));
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(ctx->device, &fenceInfo, nullptr, &ctx->fence_));
+    return ctx;
+}
+
+GpuContext::~GpuContext() {
+    if (device) {
+        vkDeviceWaitIdle(device);
+        vkDestroyFence(device, fence_, nullptr);
+        vkDestroyCommandPool(device, commandPool, nullptr);
+        vkDestroyDevice(device, nullptr);
+    }
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy(instance, messenger_, nullptr);
+    }
+    if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+VkCommandBuffer GpuContext::allocateCommandBuffer() {
+    VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    info.commandPool = commandPool;
+    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    info.commandBufferCount = 1;
+    VkCommandBuffer cmd;
+    VK_CHECK(vkAllocateCommandBuffers(device, &info, &cmd));
+    return cmd;
+}
+
+void GpuContext::freeCommandBuffer(VkCommandBuffer cmd) {
+    vkFreeCommandBuffers(device, commandPool, 1, &cmd);
+}
+
+void GpuContext::submitAndWait(VkCommandBuffer cmd) {
+    VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cmdInfo.commandBuffer = cmd;
+    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    submit.commandBufferInfoCount = 1;
+    submit.pCommandBufferInfos = &cmdInfo;
+    VK_CHECK(vkQueueSubmit2(queue, 1, &submit, fence_));
+    VK_CHECK(vkWaitForFences(device, 1, &fence_, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(device, 1, &fence_));
+}
+
+void GpuContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+    VkCommandBuffer cmd = allocateCommandBuffer();
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    record(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    submitAndWait(cmd);
+    freeCommandBuffer(cmd);
+}
+
+std::vector<std::string> GpuContext::validationMessages() const {
+    std::lock_guard<std::mutex> lock(messagesMutex_);
+    return messages_;
+}
+
+} // namespace tp

@@ -1,0 +1,88 @@
+#pragma once
+// Headless Vulkan 1.3 context: instance (optionally with validation + synchronization
+// validation), one physical device, one graphics+compute queue, a command pool, and the
+// memory ledger every allocation goes through. No window, no surface.
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "core/gpu/ledger.h"
+#include "core/util/result.h"
+
+namespace tp {
+
+struct DeviceInfo {
+    uint32_t index = 0;
+    std::string name;
+    std::string type; // "discrete", "integrated", "virtual", "cpu", "other"
+    std::string driver;
+    uint32_t apiVersion = 0;
+};
+
+struct ContextOptions {
+    bool validate = false; // Khronos validation + synchronization validation
+    std::string device;    // "" = best (discrete > integrated > virtual > cpu), an index, or a name substring
+};
+
+struct DeviceCaps {
+    bool float64 = false;
+    bool sampleRateShading = false;
+    bool storageImageMultisample = false;
+    bool fragmentStoresAndAtomics = false;
+    uint32_t colorSampleCounts = 1; // VkSampleCountFlags supported for colour and depth
+    float timestampPeriodNs = 1.0f;
+    uint32_t timestampValidBits = 64;
+    uint32_t maxImageDimension2D = 0;
+    uint64_t maxStorageBufferRange = 0;
+    uint32_t maxComputeSharedMemorySize = 0;
+    uint32_t subgroupSize = 0;
+};
+
+class GpuContext {
+  public:
+    static Result<std::unique_ptr<GpuContext>> create(const ContextOptions& options);
+    static Result<std::vector<DeviceInfo>> listDevices();
+    ~GpuContext();
+    GpuContext(const GpuContext&) = delete;
+    GpuContext& operator=(const GpuContext&) = delete;
+
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memoryProperties{};
+    DeviceCaps caps;
+    DeviceInfo info;
+    bool isCpuDevice() const { return properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+    MemoryLedger ledger;
+
+    // Records with `record`, submits, waits. For uploads, readbacks and timed frames.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+    void submitAndWait(VkCommandBuffer cmd);
+    VkCommandBuffer allocateCommandBuffer();
+    void freeCommandBuffer(VkCommandBuffer cmd);
+
+    // Validation messages (warnings and errors) seen since creation; tests assert none.
+    std::vector<std::string> validationMessages() const;
+    bool validationEnabled() const { return validationEnabled_; }
+
+  private:
+    GpuContext() = default;
+    friend VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                  VkDebugUtilsMessageTypeFlagsEXT,
+                                  const VkDebugUtilsMessengerCallbackDataEXT*, void*);
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    bool validationEnabled_ = false;
+    mutable std::mutex messagesMutex_;
+    std::vector<std::string> messages_;
+};
+
+} // namespace tp

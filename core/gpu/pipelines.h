@@ -1,0 +1,46 @@
+#pragma once
+// Shader modules from the embedded SPIR-V, and graphics/compute pipeline creation from a
+// small description. All scene draws use dynamic rendering, a negative-height viewport
+// (so glTF's counter-clockwise front faces and +Y up hold as in OpenGL), reverse-Z depth
+// and dynamic cull mode (double-sided materials are a per-draw switch).
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace tp {
+
+class GpuContext;
+
+VkShaderModule createShaderModule(GpuContext& ctx, const std::string& name);
+
+struct SpecConstant {
+    uint32_t id;
+    uint32_t value; // bools as 0/1
+};
+
+enum class BlendMode { None, Alpha, Additive };
+
+struct GraphicsPipelineDesc {
+    std::string vertexShader = "scene_vert";
+    std::string fragmentShader; // empty: depth-only
+    std::vector<SpecConstant> specConstants;
+    std::vector<VkFormat> colorFormats;
+    VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    bool sampleShading = false; // run the fragment shader per sample
+    bool depthTest = true;
+    bool depthWrite = true;
+    VkCompareOp depthCompare = VK_COMPARE_OP_GREATER; // reverse-Z
+    BlendMode blend = BlendMode::None;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+};
+
+VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& desc);
+VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
+                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout);
+
+// Viewport (negative height, depth 0..1) and scissor covering width x height.
+void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height);
+
+} // namespace tp

@@ -1,0 +1,19 @@
+#pragma once
+// Readback of any image to the CPU. The image must be in TRANSFER_SRC_OPTIMAL layout with
+// its writes made available (exported frame-graph outputs are left that way).
+#include "core/gpu/resources.h"
+#include "core/image/image.h"
+
+namespace tp {
+
+class GpuContext;
+
+// Colour formats RGBA32F, RGBA16F, RGBA8 (UNORM/SRGB: raw values / 255), R32F; the result
+// has row 0 at the top.
+ImageRGBA readbackColor(GpuContext& ctx, const Image& image);
+// D32_SFLOAT depth (reverse-Z: 1 at the near plane, 0 at infinity / no geometry).
+ImageR32 readbackDepth(GpuContext& ctx, const Image& image);
+// Raw bytes of a buffer (must have been created with TRANSFER_SRC usage).
+std::vector<uint8_t> readbackBuffer(GpuContext& ctx, const Buffer& buffer);
+
+} // namespace tp

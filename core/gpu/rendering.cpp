@@ -1,0 +1,51 @@
+#include "core/gpu/rendering.h"
+
+#include "core/gpu/pipelines.h"
+
+namespace tp {
+
+void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
+                    std::optional<DepthTarget> depth) {
+    std::vector<VkRenderingAttachmentInfo> colorInfos;
+    for (const ColorTarget& c : colors) {
+        VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        a.imageView = pc.image(c.image).view;
+        a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.loadOp = c.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.clearValue.color = c.clearValue;
+        if (c.resolve.valid()) {
+            a.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+            a.resolveImageView = pc.image(c.resolve).view;
+            a.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        }
+        colorInfos.push_back(a);
+    }
+    VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    if (depth) {
+        depthInfo.imageView = pc.image(depth->image).view;
+        depthInfo.imageLayout = depth->readOnly ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL
+                                                : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        depthInfo.loadOp = depth->clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+        depthInfo.storeOp = depth->readOnly ? VK_ATTACHMENT_STORE_OP_NONE : VK_ATTACHMENT_STORE_OP_STORE;
+        depthInfo.clearValue.depthStencil = {depth->clearValue, 0};
+        if (depth->resolve.valid()) {
+            depthInfo.resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
+            depthInfo.resolveImageView = pc.image(depth->resolve).view;
+            depthInfo.resolveImageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        }
+    }
+    const Image& any = colors.empty() ? pc.image(depth->image) : pc.image(colors.front().image);
+    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    info.renderArea = {{0, 0}, {any.desc.width, any.desc.height}};
+    info.layerCount = 1;
+    info.colorAttachmentCount = uint32_t(colorInfos.size());
+    info.pColorAttachments = colorInfos.data();
+    info.pDepthAttachment = depth ? &depthInfo : nullptr;
+    vkCmdBeginRendering(pc.cmd, &info);
+    setViewportAndScissor(pc.cmd, any.desc.width, any.desc.height);
+}
+
+void endRendering(PassContext& pc) { vkCmdEndRendering(pc.cmd); }
+
+} // namespace tp

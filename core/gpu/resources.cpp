@@ -1,0 +1,183 @@
+#include "core/gpu/resources.h"
+
+#include <cstring>
+#include <utility>
+
+#include "core/gpu/context.h"
+#include "core/gpu/vk_check.h"
+
+namespace tp {
+namespace {
+
+uint32_t findMemoryType(const GpuContext& ctx, uint32_t bits, VkMemoryPropertyFlags want) {
+    const VkPhysicalDeviceMemoryProperties& mp = ctx.memoryProperties;
+    for (uint32_t i = 0; i < mp.memoryTypeCount; ++i)
+        if ((bits & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want) return i;
+    throw GpuError("no Vulkan memory type with the required properties");
+}
+
+VkMemoryPropertyFlags memoryFlags(MemoryKind kind) {
+    switch (kind) {
+    case MemoryKind::Device: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    case MemoryKind::Upload:
+        return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    case MemoryKind::Readback:
+        return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    }
+    return 0;
+}
+
+VkDeviceMemory allocate(GpuContext& ctx, const VkMemoryRequirements& req, VkMemoryPropertyFlags flags) {
+    VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    info.allocationSize = req.size;
+    info.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, flags);
+    VkDeviceMemory memory;
+    VK_CHECK(vkAllocateMemory(ctx.device, &info, nullptr, &memory));
+    return memory;
+}
+
+} // namespace
+
+bool isDepthFormat(VkFormat format) {
+    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
+           format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+    if (this != &o) {
+        reset();
+        ctx = std::exchange(o.ctx, nullptr);
+        buffer = std::exchange(o.buffer, VK_NULL_HANDLE);
+        memory = std::exchange(o.memory, VK_NULL_HANDLE);
+        size = std::exchange(o.size, 0);
+        mapped = std::exchange(o.mapped, nullptr);
+        ledgerId = std::exchange(o.ledgerId, 0);
+    }
+    return *this;
+}
+
+void Buffer::reset() {
+    if (!ctx) return;
+    vkDestroyBuffer(ctx->device, buffer, nullptr);
+    vkFreeMemory(ctx->device, memory, nullptr);
+    ctx->ledger.remove(ledgerId);
+    ctx = nullptr;
+    buffer = VK_NULL_HANDLE;
+    memory = VK_NULL_HANDLE;
+    mapped = nullptr;
+}
+
+Image& Image::operator=(Image&& o) noexcept {
+    if (this != &o) {
+        reset();
+        ctx = std::exchange(o.ctx, nullptr);
+        image = std::exchange(o.image, VK_NULL_HANDLE);
+        view = std::exchange(o.view, VK_NULL_HANDLE);
+        memory = std::exchange(o.memory, VK_NULL_HANDLE);
+        desc = o.desc;
+        aspect = o.aspect;
+        ledgerId = std::exchange(o.ledgerId, 0);
+    }
+    return *this;
+}
+
+void Image::reset() {
+    if (!ctx) return;
+    vkDestroyImageView(ctx->device, view, nullptr);
+    vkDestroyImage(ctx->device, image, nullptr);
+    vkFreeMemory(ctx->device, memory, nullptr);
+    ctx->ledger.remove(ledgerId);
+    ctx = nullptr;
+    image = VK_NULL_HANDLE;
+    view = VK_NULL_HANDLE;
+    memory = VK_NULL_HANDLE;
+}
+
+Buffer createBuffer(GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind kind,
+                    const LedgerTag& tag) {
+    Buffer b;
+    b.ctx = &ctx;
+    b.size = size;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size > 0 ? size : 4; // a zero-sized buffer is invalid; keep bindings valid
+    info.usage = usage;
+    VK_CHECK(vkCreateBuffer(ctx.device, &info, nullptr, &b.buffer));
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
+    b.memory = allocate(ctx, req, memoryFlags(kind));
+    VK_CHECK(vkBindBufferMemory(ctx.device, b.buffer, b.memory, 0));
+    if (kind != MemoryKind::Device) VK_CHECK(vkMapMemory(ctx.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+    LedgerEntry e;
+    e.tag = tag;
+    e.requestedBytes = size;
+    e.bytes = req.size;
+    b.ledgerId = ctx.ledger.add(e);
+    return b;
+}
+
+Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag) {
+    Image img;
+    img.ctx = &ctx;
+    img.desc = desc;
+    img.aspect = isDepthFormat(desc.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = desc.format;
+    info.extent = {desc.width, desc.height, 1};
+    info.mipLevels = desc.mipLevels;
+    info.arrayLayers = 1;
+    info.samples = desc.samples;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = desc.usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VK_CHECK(vkCreateImage(ctx.device, &info, nullptr, &img.image));
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(ctx.device, img.image, &req);
+    img.memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VK_CHECK(vkBindImageMemory(ctx.device, img.image, img.memory, 0));
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = img.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = desc.format;
+    view.subresourceRange = {img.aspect, 0, desc.mipLevels, 0, 1};
+    VK_CHECK(vkCreateImageView(ctx.device, &view, nullptr, &img.view));
+    LedgerEntry e;
+    e.tag = tag;
+    e.isImage = true;
+    e.format = desc.format;
+    e.width = desc.width;
+    e.height = desc.height;
+    e.mipLevels = desc.mipLevels;
+    e.samples = uint32_t(desc.samples);
+    e.requestedBytes = uint64_t(desc.width) * desc.height * desc.samples * formatBytesPerTexel(desc.format);
+    e.bytes = req.size;
+    img.ledgerId = ctx.ledger.add(e);
+    return img;
+}
+
+Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size,
+                            VkBufferUsageFlags usage, const LedgerTag& tag) {
+    Buffer dst = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Device, tag);
+    if (size == 0) return dst;
+    Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
+                                  {"staging", "", "staging", "upload"});
+    std::memcpy(staging.mapped, data, size);
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        VkBufferCopy copy{0, 0, size};
+        vkCmdCopyBuffer(cmd, staging.buffer, dst.buffer, 1, &copy);
+        // Hand-written barrier (the exception to graph-derived ones): the upload happens once,
+        // outside any frame graph; its second scope covers every later submission.
+        VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        barrier.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+        barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &barrier;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    });
+    return dst;
+}
+
+} // namespace tp

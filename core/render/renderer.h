@@ -1,0 +1,71 @@
+#pragma once
+// The one Renderer interface every pipeline (and the reference) implements, and the
+// name -> factory registry the CLI loops over.
+//
+// Contract:
+//   1. The factory gets the scene (already on the GPU), its SceneFeatures and the settings.
+//   2. plan(graph) declares every pass and resource (format, size, usage) in the frame graph
+//      and exports the standard outputs "hdr" (linear RGBA float, single-sample) and "depth"
+//      (D32, reverse-Z, single-sample). It records nothing yet.
+//   3. After the graph is compiled (resources exist), prepare(graph) creates pipelines and
+//      descriptor sets that point at the graph's resources.
+//   4. The pass callbacks given to the graph record the work; the graph adds barriers and
+//      timestamps. The same recording is submitted for every frame.
+//   5. After the timed frames, collectStats(graph) may read back counters; stats() reports
+//      them, and leftOut() what the renderer did not build for this scene and why.
+// Nothing downstream asks which renderer ran.
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/render/settings.h"
+#include "core/scene/scene.h"
+#include "core/util/result.h"
+
+namespace tp {
+
+class GpuContext;
+class SceneGpu;
+class FrameGraph;
+
+struct LeftOut {
+    std::string what;
+    std::string why;
+};
+
+struct RendererStats {
+    std::vector<std::pair<std::string, double>> counters; // e.g. lights_dropped, draws
+    std::vector<LeftOut> leftOut;
+};
+
+class Renderer {
+  public:
+    virtual ~Renderer() = default;
+    virtual void plan(FrameGraph& graph) = 0;
+    virtual void prepare(FrameGraph& graph) = 0;
+    virtual void collectStats(FrameGraph&) {}
+    virtual RendererStats stats() const = 0;
+};
+
+struct RendererCreateInfo {
+    GpuContext& ctx;
+    SceneGpu& scene;
+    SceneFeatures features;
+    RenderSettings settings;
+};
+
+using RendererFactory = std::function<std::unique_ptr<Renderer>(const RendererCreateInfo&)>;
+
+struct RendererEntry {
+    std::string name;
+    std::string description;
+    RendererFactory factory;
+};
+
+void registerRenderer(RendererEntry entry);
+const std::vector<RendererEntry>& registeredRenderers(); // registers the built-ins on first use
+Result<const RendererEntry*> findRenderer(const std::string& name);
+
+} // namespace tp

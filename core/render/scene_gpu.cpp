@@ -1,0 +1,181 @@
+#include "core/render/scene_gpu.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "core/gpu/context.h"
+#include "core/gpu/vk_check.h"
+#include "core/render/camera.h"
+
+namespace tp {
+
+gpu::LightGpu toGpu(const Light& light) {
+    gpu::LightGpu g{};
+    g.position = light.position;
+    g.range = light.range;
+    float len = glm::length(light.direction);
+    g.direction = len > 0.0f ? light.direction / len : glm::vec3(0, -1, 0);
+    g.type = uint32_t(light.type);
+    g.color = light.color * light.intensity;
+    float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+    g.spotScale = 1.0f / std::max(1e-4f, cosInner - cosOuter);
+    g.spotOffset = -cosOuter * g.spotScale;
+    return g;
+}
+
+SceneGpu::SceneGpu(GpuContext& ctx, const Scene& scene) : ctx_(ctx), scene_(scene) {
+    uploadGeometry();
+    uploadMaterials();
+    uploadTextures();
+    frameBuffer_ = createBuffer(ctx_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                MemoryKind::Upload, {"scene", "", "frame_uniforms", "camera and frame constants"});
+    createDescriptors();
+    setLights(scene.lights);
+    setView(1, 1, 1);
+}
+
+SceneGpu::~SceneGpu() {
+    vkDestroyDescriptorPool(ctx_.device, pool_, nullptr);
+    vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);
+    vkDestroySampler(ctx_.device, sampler_, nullptr);
+}
+
+void SceneGpu::uploadGeometry() {
+    std::vector<gpu::Vertex> vertices;
+    std::vector<uint32_t> indices;
+    vertices.reserve(scene_.vertexCount());
+    indices.reserve(scene_.triangleCount() * 3);
+    for (const Mesh& mesh : scene_.meshes) {
+        const Material& mat = scene_.materials.at(mesh.material);
+        DrawItem d;
+        d.firstIndex = uint32_t(indices.size());
+        d.indexCount = uint32_t(mesh.indices.size());
+        d.vertexOffset = int32_t(vertices.size());
+        d.material = mesh.material;
+        d.alphaMode = mat.alphaMode;
+        d.doubleSided = mat.doubleSided;
+        d.bounds = mesh.bounds;
+        if (d.indexCount > 0) draws_.push_back(d);
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            glm::vec2 uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
+            gpu::Vertex v;
+            v.positionU = glm::vec4(mesh.positions[i], uv.x);
+            v.normalV = glm::vec4(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1), uv.y);
+            v.tangent = i < mesh.tangents.size() ? mesh.tangents[i] : glm::vec4(1, 0, 0, 1);
+            v.color = i < mesh.colors.size() ? mesh.colors[i] : glm::vec4(1.0f);
+            vertices.push_back(v);
+        }
+        indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
+    }
+    vertices_ = createBufferWithData(ctx_, vertices.data(), vertices.size() * sizeof(gpu::Vertex),
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     {"scene", "", "vertices", "interleaved vertices (pulled)"});
+    indices_ = createBufferWithData(ctx_, indices.data(), indices.size() * sizeof(uint32_t),
+                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, {"scene", "", "indices", "triangle indices"});
+}
+
+void SceneGpu::uploadMaterials() {
+    std::vector<gpu::MaterialGpu> mats;
+    for (const Material& m : scene_.materials) {
+        gpu::MaterialGpu g{};
+        g.baseColorFactor = m.baseColorFactor;
+        g.emissive = m.emissiveFactor;
+        g.alphaCutoff = m.alphaCutoff;
+        g.metallic = m.metallicFactor;
+        g.roughness = m.roughnessFactor;
+        g.normalScale = m.normalScale;
+        g.occlusionStrength = m.occlusionStrength;
+        g.baseColorTexture = m.baseColorTexture;
+        g.metallicRoughnessTexture = m.metallicRoughnessTexture;
+        g.normalTexture = m.normalTexture;
+        g.occlusionTexture = m.occlusionTexture;
+        g.emissiveTexture = m.emissiveTexture;
+        g.alphaMode = uint32_t(m.alphaMode);
+        g.doubleSided = m.doubleSided ? 1u : 0u;
+        mats.push_back(g);
+    }
+    if (mats.empty()) mats.push_back(gpu::MaterialGpu{});
+    materials_ = createBufferWithData(ctx_, mats.data(), mats.size() * sizeof(gpu::MaterialGpu),
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "materials", "material table"});
+}
+
+void SceneGpu::setLights(const std::vector<Light>& lights) {
+    lightsGpu_.clear();
+    hasSpot_ = false;
+    for (const Light& l : lights) {
+        lightsGpu_.push_back(toGpu(l));
+        hasSpot_ |= l.type == LightType::Spot;
+    }
+    lightCount_ = uint32_t(lights.size());
+    lights_ = createBufferWithData(ctx_, lightsGpu_.data(), lightsGpu_.size() * sizeof(gpu::LightGpu),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "lights", "light array"});
+    writeLightDescriptor();
+    frame_.viewport.z = lightCount_;
+    std::memcpy(frameBuffer_.mapped, &frame_, sizeof(frame_));
+}
+
+void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
+    const Camera& cam = scene_.camera;
+    glm::mat4 view = viewMatrix(cam);
+    glm::mat4 proj = reverseZPerspective(cam.yfov, float(width) / float(height), cam.znear, cam.zfar);
+    frame_.view = view;
+    frame_.proj = proj;
+    frame_.viewProj = proj * view;
+    frame_.invProj = glm::inverse(proj);
+    frame_.invViewProj = glm::inverse(frame_.viewProj);
+    frame_.cameraPosition = glm::vec4(cam.position, 1.0f);
+    frame_.ambient = glm::vec4(scene_.ambient, 0.0f);
+    frame_.viewport = glm::uvec4(width, height, lightCount_, msaaSamples);
+    frame_.projParams = glm::vec4(cam.znear, cam.zfar, 0.0f, 0.0f);
+    std::memcpy(frameBuffer_.mapped, &frame_, sizeof(frame_));
+}
+
+std::vector<SpecConstant> SceneGpu::specConstants(AlphaMode mode) const {
+    return {{TP_SPEC_TEXTURE_COUNT, uint32_t(std::max<size_t>(1, textures_.size()))},
+            {TP_SPEC_HAS_SPOT, hasSpot_ ? 1u : 0u},
+            {TP_SPEC_ALPHA_MODE, uint32_t(mode)}};
+}
+
+VkPipelineLayout SceneGpu::createPipelineLayout(VkDescriptorSetLayout passSet) const {
+    VkDescriptorSetLayout sets[2] = {setLayout_, passSet};
+    VkPushConstantRange push{VK_SHADER_STAGE_ALL, 0, sizeof(gpu::DrawPush)};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = passSet ? 2 : 1;
+    info.pSetLayouts = sets;
+    info.pushConstantRangeCount = 1;
+    info.pPushConstantRanges = &push;
+    VkPipelineLayout layout;
+    VK_CHECK(vkCreatePipelineLayout(ctx_.device, &info, nullptr, &layout));
+    return layout;
+}
+
+void SceneGpu::bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const {
+    vkCmdBindDescriptorSets(cmd, point, layout, TP_SET_SCENE, 1, &set_, 0, nullptr);
+}
+
+bool SceneGpu::hasDraws(DrawFilter filter) const {
+    return std::any_of(draws_.begin(), draws_.end(),
+                       [&](const DrawItem& d) { return uint32_t(d.alphaMode) == uint32_t(filter); });
+}
+
+void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const {
+    std::vector<const DrawItem*> items;
+    for (const DrawItem& d : draws_)
+        if (uint32_t(d.alphaMode) == uint32_t(filter)) items.push_back(&d);
+    if (filter == DrawFilter::Blend) {
+        glm::vec3 eye = scene_.camera.position;
+        auto dist = [&](const DrawItem* d) { return glm::length(d->bounds.center() - eye); };
+        std::stable_sort(items.begin(), items.end(),
+                         [&](const DrawItem* a, const DrawItem* b) { return dist(a) > dist(b); });
+    }
+    vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+    for (const DrawItem* d : items) {
+        gpu::DrawPush push{d->material, 0, 0, 0};
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+        vkCmdSetCullMode(cmd, d->doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+        vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, d->vertexOffset, 0);
+    }
+}
+
+} // namespace tp

@@ -1,0 +1,82 @@
+#pragma once
+// The scene on the GPU, uploaded once and shared by every pipeline (ledger owner "scene"):
+// one vertex buffer (pulled in the vertex shader), one index buffer, materials, lights,
+// textures with mipmaps, and descriptor set 0 that binds them (shaders/include/shared.h).
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
+#include "core/scene/scene.h"
+#include "include/shared.h"
+
+namespace tp {
+
+class GpuContext;
+
+struct DrawItem {
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    int32_t vertexOffset = 0;
+    uint32_t material = 0;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    bool doubleSided = false;
+    Aabb bounds;
+};
+
+enum class DrawFilter { Opaque, Mask, Blend };
+
+class SceneGpu {
+  public:
+    SceneGpu(GpuContext& ctx, const Scene& scene);
+    ~SceneGpu();
+    SceneGpu(const SceneGpu&) = delete;
+    SceneGpu& operator=(const SceneGpu&) = delete;
+
+    // Per configuration (not per frame): camera matrices for this size, light count, MSAA.
+    void setView(uint32_t width, uint32_t height, uint32_t msaaSamples);
+    void setLights(const std::vector<Light>& lights);
+
+    // Specialization constants every scene shader takes (texture count, spot path, alpha mode).
+    std::vector<SpecConstant> specConstants(AlphaMode mode) const;
+    // Layout with set 0 = the scene, optional set 1 = the pass's own, and the DrawPush range.
+    VkPipelineLayout createPipelineLayout(VkDescriptorSetLayout passSet = VK_NULL_HANDLE) const;
+    void bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const;
+    // Records the draws of one alpha mode; Blend draws are sorted back to front (by the
+    // distance from the camera to each mesh's bounds centre).
+    void recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const;
+    bool hasDraws(DrawFilter filter) const;
+
+    const Scene& scene() const { return scene_; }
+    const gpu::FrameUniforms& frame() const { return frame_; }
+    uint32_t lightCount() const { return lightCount_; }
+    const std::vector<gpu::LightGpu>& lightsGpu() const { return lightsGpu_; }
+    VkDescriptorSetLayout setLayout() const { return setLayout_; }
+    const Buffer& lightBuffer() const { return lights_; }
+
+  private:
+    void uploadGeometry();
+    void uploadMaterials();
+    void uploadTextures();
+    void createDescriptors();
+    void writeLightDescriptor();
+
+    GpuContext& ctx_;
+    const Scene& scene_;
+    Buffer vertices_, indices_, materials_, lights_, frameBuffer_;
+    std::vector<Image> textures_;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    std::vector<DrawItem> draws_;
+    gpu::FrameUniforms frame_{};
+    std::vector<gpu::LightGpu> lightsGpu_;
+    uint32_t lightCount_ = 0;
+    bool hasSpot_ = false;
+};
+
+gpu::LightGpu toGpu(const Light& light);
+
+} // namespace tp
