@@ -1,2 +1,39 @@
+// triptych: one scene through several lighting pipelines, side by side with a reference.
+// Errors end here: one line on stderr and a non-zero exit code (2: bad input, 4: Vulkan
+// failure, 1: anything else), never a crash.
 #include <cstdio>
-int main(int, char**) { std::puts("triptych"); return 0; }
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "compare/cli_common.h"
+#include "compare/commands.h"
+#include "core/gpu/vk_check.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"triptych: Forward+, deferred and multipass forward side by side against a "
+                 "brute-force reference (Vulkan)"};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Help for every command");
+    std::vector<tp::cli::CommandRunner> commands = {tp::cli::addRenderCommand(app),
+                                                    tp::cli::addInfoCommand(app)};
+    try {
+        app.parse(argc, argv);
+        for (auto& command : commands) {
+            int code = command();
+            if (code >= 0) return code;
+        }
+        return 1;
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const tp::cli::UsageError& e) {
+        std::fprintf(stderr, "triptych: %s\n", e.what());
+        return 2;
+    } catch (const tp::GpuError& e) {
+        std::fprintf(stderr, "triptych: Vulkan error: %s\n", e.what());
+        return 4;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "triptych: internal error: %s\n", e.what());
+        return 1;
+    }
+}

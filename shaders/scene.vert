@@ -11,7 +11,9 @@ layout(location = 2) out vec2 outUv;
 layout(location = 3) out vec4 outTangent;
 layout(location = 4) out vec4 outColor;
 
-invariant gl_Position;
+// `precise` (NoContraction) instead of `invariant gl_Position`: the validation layers of
+// Debian 12 reject the Invariant decoration glslang puts on the gl_PerVertex member, and
+// forbidding FMA contraction is what keeps the position bit-identical across pipelines.
 
 void main() {
     Vertex v = vertices[gl_VertexIndex];
@@ -20,5 +22,6 @@ void main() {
     outUv = vec2(v.positionU.w, v.normalV.w);
     outTangent = v.tangent;
     outColor = v.color;
-    gl_Position = frame.viewProj * vec4(v.positionU.xyz, 1.0);
+    precise vec4 clip = frame.viewProj * vec4(v.positionU.xyz, 1.0);
+    gl_Position = clip;
 }

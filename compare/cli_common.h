@@ -1,0 +1,57 @@
+#pragma once
+// What every triptych command shares: scene and light options, the device, parsing and
+// validation of user input into one-line errors.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "core/gpu/context.h"
+#include "core/render/settings.h"
+#include "core/scene/lights.h"
+#include "core/scene/scene.h"
+#include "core/util/result.h"
+
+namespace tp::cli {
+
+// A user error: printed as "triptych: <message>", exit code 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct SceneOptions {
+    std::string scene;        // path to .gltf/.glb, or builtin:NAME; empty = builtin:courtyard
+    std::string lightsFile;   // lights JSON (replaces generated lights)
+    int lightCount = 128;
+    uint64_t seed = 1;
+    std::string lightTypes = "point"; // e.g. "point", "point,spot", "point:3,spot:1,directional:0"
+    std::string lightRadius;  // "MIN,MAX" in scene units; empty = from the scene bounds
+    std::string lightIntensity; // "MIN,MAX" candela; empty = from the radius
+    bool dropSceneLights = false;
+};
+
+struct DeviceOptions {
+    std::string device;
+    bool validate = false;
+};
+
+struct ViewOptions {
+    std::string resolution = "320x180";
+    int msaa = 1;
+};
+
+void addSceneOptions(CLI::App& app, SceneOptions& o);
+void addDeviceOptions(CLI::App& app, DeviceOptions& o);
+void addViewOptions(CLI::App& app, ViewOptions& o);
+
+// Loads or builds the scene and sets its lights; warnings go to stderr.
+Scene loadScene(const SceneOptions& o);
+std::unique_ptr<GpuContext> createContext(const DeviceOptions& o);
+// Resolution and MSAA checked against the device's limits.
+RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx);
+
+// Creates DIR (and parents); error if it cannot.
+void ensureDirectory(const std::string& dir);
+
+} // namespace tp::cli

@@ -1,0 +1,93 @@
+// triptych info: Vulkan devices, scene statistics and features, and the plan each pipeline
+// builds for this scene (passes recorded and culled, resources with the bytes allocated,
+// what it left out).
+#include <cstdio>
+#include <memory>
+
+#include "compare/cli_common.h"
+#include "compare/commands.h"
+#include "core/gpu/frame_graph.h"
+#include "core/render/renderer.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp::cli {
+namespace {
+
+struct InfoOptions {
+    SceneOptions scene;
+    DeviceOptions device;
+    ViewOptions view;
+    bool devicesOnly = false;
+};
+
+void printDevices() {
+    Result<std::vector<DeviceInfo>> devices = GpuContext::listDevices();
+    if (!devices) throw UsageError(devices.error());
+    std::printf("Vulkan 1.3 devices:\n");
+    for (const DeviceInfo& d : *devices)
+        std::printf("  [%u] %s (%s; %s)\n", d.index, d.name.c_str(), d.type.c_str(), d.driver.c_str());
+    if (devices->empty()) std::printf("  none\n");
+}
+
+void printScene(const Scene& s, const SceneFeatures& f) {
+    std::printf("\nScene %s\n  %zu meshes, %zu triangles, %zu vertices, %zu materials, %zu textures, %zu lights\n",
+                s.source.c_str(), s.meshes.size(), s.triangleCount(), s.vertexCount(), s.materials.size(),
+                s.textures.size(), s.lights.size());
+    glm::vec3 e = s.bounds.extent();
+    std::printf("  bounds %.2f x %.2f x %.2f\n", e.x, e.y, e.z);
+    std::printf("  features: blended=%d masked=%d normal_maps=%d emissive=%d textures=%d vertex_colors=%d "
+                "point=%d spot=%d directional=%d\n",
+                f.blended, f.masked, f.normalMaps, f.emissive, f.textures, f.vertexColors, f.pointLights,
+                f.spotLights, f.directionalLights);
+}
+
+void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, const SceneFeatures& f,
+               const RenderSettings& settings) {
+    scene.setView(settings.width, settings.height, settings.msaa);
+    std::unique_ptr<Renderer> r = entry.factory({ctx, scene, f, settings});
+    FrameGraph graph(ctx, entry.name, settings.width, settings.height);
+    r->plan(graph);
+    graph.compile();
+    std::printf("\nPipeline %s: %s\n  passes:", entry.name.c_str(), entry.description.c_str());
+    for (const std::string& p : graph.livePasses()) std::printf(" %s", p.c_str());
+    for (const std::string& p : graph.culledPasses()) std::printf(" (%s: culled, output unused)", p.c_str());
+    std::printf("\n");
+    uint64_t total = 0;
+    for (const LedgerEntry& e : ctx.ledger.entriesOf(entry.name)) {
+        std::printf("  %-18s %-14s %5ux%-5u x%u %12llu bytes  %s\n", e.tag.name.c_str(), formatName(e.format),
+                    e.width, e.height, e.samples, (unsigned long long)e.bytes, e.tag.purpose.c_str());
+        total += e.bytes;
+    }
+    std::printf("  total %llu bytes (%.2f bytes/pixel)\n", (unsigned long long)total,
+                double(total) / (double(settings.width) * settings.height));
+    for (const LeftOut& l : r->stats().leftOut) std::printf("  left out: %s (%s)\n", l.what.c_str(), l.why.c_str());
+}
+
+int run(InfoOptions& o) {
+    printDevices();
+    if (o.devicesOnly) return 0;
+    Scene scene = loadScene(o.scene);
+    std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    RenderSettings settings = makeSettings(o.view, *ctx);
+    SceneFeatures f = analyzeScene(scene, settings.msaa);
+    printScene(scene, f);
+    std::printf("\nDevice in use: %s\n", ctx->info.name.c_str());
+    SceneGpu gpuScene(*ctx, scene);
+    std::printf("  shared scene data: %llu bytes\n", (unsigned long long)ctx->ledger.totalBytes("scene"));
+    for (const RendererEntry& e : registeredRenderers()) printPlan(*ctx, gpuScene, e, f, settings);
+    return 0;
+}
+
+} // namespace
+
+CommandRunner addInfoCommand(CLI::App& app) {
+    auto o = std::make_shared<InfoOptions>();
+    CLI::App* cmd = app.add_subcommand("info", "Vulkan devices, scene statistics, and each pipeline's plan");
+    addSceneOptions(*cmd, o->scene);
+    addViewOptions(*cmd, o->view);
+    addDeviceOptions(*cmd, o->device);
+    cmd->add_flag("--devices", o->devicesOnly, "List the Vulkan devices only");
+    return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
+}
+
+} // namespace tp::cli

@@ -1,0 +1,129 @@
+// triptych render: one pipeline, one image (linear EXR + tonemapped PNG), its timings,
+// memory and statistics (render.json) and the lights used (lights.json).
+#include <cstdio>
+#include <memory>
+
+#include "compare/cli_common.h"
+#include "compare/commands.h"
+#include "compare/run_json.h"
+#include "core/image/image_io.h"
+#include "core/image/metrics.h"
+#include "core/image/tonemap.h"
+#include "core/render/frame_runner.h"
+#include "core/render/scene_gpu.h"
+#include "core/util/files.h"
+
+namespace tp::cli {
+namespace {
+
+struct RenderOptions {
+    SceneOptions scene;
+    DeviceOptions device;
+    ViewOptions view;
+    std::string pipeline = "reference";
+    std::string out = "out";
+    int frames = 3;
+    int warmup = 1;
+    std::string exposure = "auto";
+    std::string exrType = "float";
+    std::string referencePrecision = "fp64";
+};
+
+float parseExposure(const std::string& text, const ImageRGBA& image) {
+    if (text == "auto") return autoExposureEv(image);
+    char* end = nullptr;
+    float ev = std::strtof(text.c_str(), &end);
+    if (end == text.c_str() || *end || !std::isfinite(ev) || std::abs(ev) > 64.0f)
+        throw UsageError("--exposure '" + text + "': expected 'auto' or an EV between -64 and 64");
+    return ev;
+}
+
+void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& run,
+                  const GpuContext& ctx, const RenderSettings& settings, const SceneFeatures& features) {
+    const std::string base = o.out + "/" + run.renderer;
+    float ev = parseExposure(o.exposure, run.hdr);
+    Status s = writeExr(base + ".exr", run.hdr, o.exrType == "half" ? ExrPixelType::Half : ExrPixelType::Float);
+    if (s) s = writePng(base + ".png", tonemapToDisplay(run.hdr, ev));
+    if (s) s = writeLightsFile(o.out + "/lights.json", scene.lights);
+    ErrorReport self = computeError(run.hdr, run.hdr);
+    nlohmann::json j;
+    j["schema"] = "triptych.render/1";
+    j["device"] = deviceJson(ctx);
+    j["settings"] = settingsJson(settings);
+    j["settings"]["exposure_ev"] = ev;
+    j["settings"]["seed"] = o.scene.seed;
+    j["scene"] = sceneJson(scene, features);
+    j["run"] = runJson(run, ctx);
+    j["nan_inf_pixels"] = self.nanInfCount;
+    if (s) s = writeTextFile(o.out + "/render.json", j.dump(2) + "\n");
+    if (!s) throw UsageError(s.error());
+}
+
+int run(RenderOptions& o) {
+    if (o.frames < 1 || o.frames > 10000) throw UsageError("--frames must be between 1 and 10000");
+    if (o.warmup < 0 || o.warmup > 1000) throw UsageError("--warmup must be between 0 and 1000");
+    Result<const RendererEntry*> entry = findRenderer(o.pipeline);
+    if (!entry) throw UsageError("--pipeline: " + entry.error());
+    Scene scene = loadScene(o.scene);
+    std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    RenderSettings settings = makeSettings(o.view, *ctx);
+    settings.referenceFp64 = o.referencePrecision == "fp64";
+    ensureDirectory(o.out);
+    SceneFeatures features = analyzeScene(scene, settings.msaa);
+    std::fprintf(stderr, "triptych: %s, %zu triangles, %zu lights, %ux%u, %ux MSAA on %s\n",
+                 scene.source.c_str(), scene.triangleCount(), scene.lights.size(), settings.width,
+                 settings.height, settings.msaa, ctx->info.name.c_str());
+    SceneGpu gpuScene(*ctx, scene);
+    RunOptions runOptions;
+    runOptions.warmupFrames = uint32_t(o.warmup);
+    runOptions.timedFrames = uint32_t(o.frames);
+    runOptions.onFrame = [&](uint32_t f, uint32_t total, double ms) {
+        std::fprintf(stderr, "  %s frame %u/%u: %.1f ms%s\n", o.pipeline.c_str(), f + 1, total, ms,
+                     f < runOptions.warmupFrames ? " (warm-up)" : "");
+    };
+    Result<RunResult> result = runRenderer(*ctx, gpuScene, **entry, features, settings, runOptions);
+    if (!result) throw UsageError(result.error());
+    writeOutputs(o, scene, *result, *ctx, settings, features);
+    for (const TimingStats& t : result->timings)
+        std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)\n", t.name.c_str(),
+                     t.medianMs, t.minMs, t.maxMs, t.frames, ctx->info.name.c_str());
+    std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json\n", o.out.c_str(),
+                 o.pipeline.c_str());
+    std::vector<std::string> messages = ctx->validationMessages();
+    if (!messages.empty()) {
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
+                     messages.front().c_str());
+        return 3;
+    }
+    return 0;
+}
+
+} // namespace
+
+CommandRunner addRenderCommand(CLI::App& app) {
+    auto o = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand("render", "Render one image with one pipeline");
+    addSceneOptions(*cmd, o->scene);
+    addViewOptions(*cmd, o->view);
+    addDeviceOptions(*cmd, o->device);
+    std::string names;
+    for (const RendererEntry& e : registeredRenderers()) names += "\n    " + e.name + ": " + e.description;
+    cmd->add_option("--pipeline", o->pipeline, "Pipeline to render with:" + names)->capture_default_str();
+    cmd->add_option("--out", o->out, "Output directory (created if missing)")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Timed frames (median/min/max are over these)")->capture_default_str();
+    cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")->capture_default_str();
+    cmd->add_option("--exposure", o->exposure,
+                    "Exposure in EV for the PNG (the EXR is linear): a number, or 'auto' (log-average "
+                    "luminance to 0.18)")
+        ->capture_default_str();
+    cmd->add_option("--exr-type", o->exrType, "EXR pixel type")
+        ->check(CLI::IsMember({"half", "float"}))
+        ->capture_default_str();
+    cmd->add_option("--reference-precision", o->referencePrecision,
+                    "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
+        ->check(CLI::IsMember({"fp32", "fp64"}))
+        ->capture_default_str();
+    return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
+}
+
+} // namespace tp::cli

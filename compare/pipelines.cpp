@@ -1,0 +1,13 @@
+// The pipelines this build has. A new pipeline is a folder plus one line here.
+#include "core/reference/reference_renderer.h"
+#include "core/render/renderer.h"
+
+namespace tp {
+
+void registerBuiltinRenderers() {
+    registerRenderer({"reference",
+                      "ground truth: every light at every sample, no culling, fp64 accumulation",
+                      createReferenceRenderer});
+}
+
+} // namespace tp

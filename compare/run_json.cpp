@@ -1,0 +1,84 @@
+#include "compare/run_json.h"
+
+namespace tp::cli {
+
+nlohmann::json deviceJson(const GpuContext& ctx) {
+    nlohmann::json j;
+    j["name"] = ctx.info.name;
+    j["type"] = ctx.info.type;
+    j["driver"] = ctx.info.driver;
+    j["timestamp_period_ns"] = ctx.caps.timestampPeriodNs;
+    j["timestamp_valid_bits"] = ctx.caps.timestampValidBits;
+    if (ctx.isCpuDevice())
+        j["note"] = "CPU device (lavapipe): timings are CPU-rasterizer timings, not GPU timings";
+    return j;
+}
+
+nlohmann::json settingsJson(const RenderSettings& s) {
+    return {{"width", s.width},
+            {"height", s.height},
+            {"msaa", s.msaa},
+            {"reference_fp64", s.referenceFp64},
+            {"tile_size", s.tileSize}};
+}
+
+nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f) {
+    return {{"source", scene.source},
+            {"meshes", scene.meshes.size()},
+            {"triangles", scene.triangleCount()},
+            {"vertices", scene.vertexCount()},
+            {"materials", scene.materials.size()},
+            {"textures", scene.textures.size()},
+            {"lights", scene.lights.size()},
+            {"features",
+             {{"blended", f.blended},
+              {"masked", f.masked},
+              {"normal_maps", f.normalMaps},
+              {"emissive", f.emissive},
+              {"textures", f.textures},
+              {"vertex_colors", f.vertexColors},
+              {"point_lights", f.pointLights},
+              {"spot_lights", f.spotLights},
+              {"directional_lights", f.directionalLights}}}};
+}
+
+nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
+    nlohmann::json j;
+    j["pipeline"] = run.renderer;
+    nlohmann::json timings = nlohmann::json::array();
+    for (const TimingStats& t : run.timings)
+        timings.push_back({{"pass", t.name},
+                           {"median_ms", t.medianMs},
+                           {"min_ms", t.minMs},
+                           {"max_ms", t.maxMs},
+                           {"frames", t.frames},
+                           {"device", ctx.info.name}});
+    j["timings"] = timings;
+    nlohmann::json memory = nlohmann::json::array();
+    uint64_t total = 0;
+    for (const LedgerEntry& e : run.memory) {
+        memory.push_back({{"name", e.tag.name},
+                          {"pass", e.tag.pass},
+                          {"purpose", e.tag.purpose},
+                          {"kind", e.isImage ? "image" : "buffer"},
+                          {"format", formatName(e.format)},
+                          {"width", e.width},
+                          {"height", e.height},
+                          {"samples", e.samples},
+                          {"requested_bytes", e.requestedBytes},
+                          {"bytes", e.bytes}});
+        total += e.bytes;
+    }
+    j["memory"] = {{"resources", memory}, {"total_bytes", total}};
+    nlohmann::json counters = nlohmann::json::object();
+    for (const auto& [k, v] : run.stats.counters) counters[k] = v;
+    j["counters"] = counters;
+    nlohmann::json leftOut = nlohmann::json::array();
+    for (const LeftOut& l : run.stats.leftOut) leftOut.push_back({{"what", l.what}, {"why", l.why}});
+    j["left_out"] = leftOut;
+    j["passes"] = run.passes;
+    j["culled_passes"] = run.culledPasses;
+    return j;
+}
+
+} // namespace tp::cli

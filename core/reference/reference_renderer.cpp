@@ -1,0 +1,117 @@
+#include "core/reference/reference_renderer.h"
+
+#include <optional>
+
+#include "core/gpu/context.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp {
+namespace {
+
+class ReferenceRenderer final : public Renderer {
+  public:
+    explicit ReferenceRenderer(const RendererCreateInfo& info)
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
+        fp64_ = settings_.referenceFp64 && ctx_.caps.float64;
+    }
+
+    ~ReferenceRenderer() override {
+        for (VkPipeline p : pipelines_)
+            if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
+        if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    }
+
+    void plan(FrameGraph& graph) override {
+        const auto samples = VkSampleCountFlagBits(settings_.msaa);
+        hdr_ = graph.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                         "linear radiance (resolved)"});
+        depth_ = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                             "depth (resolved: sample 0)"});
+        std::vector<PassUse> uses;
+        if (settings_.msaa > 1) {
+            hdrMsaa_ = graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, samples,
+                                                      "per-sample radiance"});
+            depthMsaa_ = graph.createImage("depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples,
+                                                          "per-sample depth"});
+            uses = {{hdrMsaa_, Use::ColorAttachment}, {depthMsaa_, Use::DepthAttachment},
+                    {hdr_, Use::ColorResolve}, {depth_, Use::DepthResolve}};
+        } else {
+            uses = {{hdr_, Use::ColorAttachment}, {depth_, Use::DepthAttachment}};
+        }
+        graph.addPass("reference_shading", uses, [this](PassContext& pc) { record(pc); });
+        graph.exportResource("hdr", hdr_);
+        graph.exportResource("depth", depth_);
+    }
+
+    void prepare(FrameGraph&) override {
+        layout_ = scene_.createPipelineLayout();
+        GraphicsPipelineDesc d;
+        d.fragmentShader = fp64_ ? "reference_fp64_frag" : "reference_frag";
+        d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+        d.samples = VkSampleCountFlagBits(settings_.msaa);
+        d.sampleShading = settings_.msaa > 1;
+        d.layout = layout_;
+        for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
+            if (!scene_.hasDraws(DrawFilter(mode))) continue;
+            d.specConstants = scene_.specConstants(mode);
+            d.depthWrite = mode != AlphaMode::Blend;
+            d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
+            pipelines_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
+        }
+    }
+
+    RendererStats stats() const override {
+        RendererStats s;
+        s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});
+        s.counters.push_back({"lights_evaluated_per_sample", double(scene_.lightCount())});
+        if (!fp64_)
+            s.leftOut.push_back({"fp64 accumulation", settings_.referenceFp64
+                                                          ? "device has no shaderFloat64"
+                                                          : "fp32 chosen (--reference-precision fp32)"});
+        if (settings_.msaa == 1)
+            s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+        return s;
+    }
+
+  private:
+    void record(PassContext& pc) {
+        std::optional<DepthTarget> depth;
+        ColorTarget color;
+        if (settings_.msaa > 1) {
+            color = {hdrMsaa_, hdr_};
+            depth = DepthTarget{depthMsaa_, depth_};
+        } else {
+            color = {hdr_, {}};
+            depth = DepthTarget{depth_, {}};
+        }
+        beginRendering(pc, {color}, depth);
+        scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
+            VkPipeline p = pipelines_[uint32_t(mode)];
+            if (!p) continue;
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
+            scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode));
+        }
+        endRendering(pc);
+    }
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    SceneFeatures features_;
+    RenderSettings settings_;
+    bool fp64_ = false;
+    ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipelines_[3] = {};
+};
+
+} // namespace
+
+std::unique_ptr<Renderer> createReferenceRenderer(const RendererCreateInfo& info) {
+    return std::make_unique<ReferenceRenderer>(info);
+}
+
+} // namespace tp

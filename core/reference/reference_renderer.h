@@ -1,0 +1,15 @@
+#pragma once
+// The reference: the ground truth every pipeline is measured against. One pass: for every
+// pixel (every sample when MSAA is on: per-sample shading), every light is evaluated, with
+// no culling and no intermediate storage; the light sum accumulates in fp64 where the
+// device has shaderFloat64 (selectable), else fp32. Opaque and masked geometry first, then
+// blended geometry back to front, blended in a 32-bit float target.
+#include <memory>
+
+#include "core/render/renderer.h"
+
+namespace tp {
+
+std::unique_ptr<Renderer> createReferenceRenderer(const RendererCreateInfo& info);
+
+} // namespace tp

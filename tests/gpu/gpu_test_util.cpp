@@ -1,0 +1,89 @@
+#include "gpu_test_util.h"
+
+#include "core/render/renderer.h"
+
+namespace tp::test {
+
+std::unique_ptr<GpuContext> makeValidatedContext() {
+    ContextOptions options;
+    options.validate = true;
+    Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(options);
+    EXPECT_TRUE(ctx.ok()) << ctx.error();
+    return ctx.ok() ? std::move(*ctx) : nullptr;
+}
+
+void expectNoValidationMessages(const GpuContext& ctx) {
+    std::vector<std::string> messages = ctx.validationMessages();
+    EXPECT_TRUE(messages.empty()) << messages.size() << " validation messages, first: "
+                                  << (messages.empty() ? "" : messages.front());
+}
+
+namespace {
+
+void addQuad(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v) {
+    uint32_t base = uint32_t(m.positions.size());
+    glm::vec3 n = glm::normalize(glm::cross(u, v));
+    glm::vec3 corners[4] = {origin, origin + u, origin + u + v, origin + v};
+    glm::vec2 uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i = 0; i < 4; ++i) {
+        m.positions.push_back(corners[i]);
+        m.normals.push_back(n);
+        m.tangents.push_back(glm::vec4(glm::normalize(u), 1.0f));
+        m.uvs.push_back(uvs[i]);
+        m.colors.push_back(glm::vec4(1.0f));
+    }
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+}
+
+} // namespace
+
+Scene makeFloorScene(const std::vector<Light>& lights) {
+    Scene s;
+    s.source = "test:floor";
+    Material white;
+    white.name = "white";
+    white.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    white.metallicFactor = 0.0f;
+    white.roughnessFactor = 1.0f;
+    Material red = white;
+    red.name = "red";
+    red.baseColorFactor = glm::vec4(0.8f, 0.2f, 0.1f, 1.0f);
+    red.roughnessFactor = 0.3f;
+    s.materials = {white, red};
+    Mesh floor;
+    floor.name = "floor";
+    addQuad(floor, {-5, 0, 5}, {10, 0, 0}, {0, 0, -10}); // CCW seen from +y
+    Mesh box;
+    box.name = "box";
+    box.material = 1;
+    const float h = 1.0f;
+    addQuad(box, {-1, 0, 1}, {2, 0, 0}, {0, h, 0});   // front (+z)
+    addQuad(box, {1, 0, -1}, {-2, 0, 0}, {0, h, 0});  // back (-z)
+    addQuad(box, {1, 0, 1}, {0, 0, -2}, {0, h, 0});   // right (+x)
+    addQuad(box, {-1, 0, -1}, {0, 0, 2}, {0, h, 0});  // left (-x)
+    addQuad(box, {-1, h, 1}, {2, 0, 0}, {0, 0, -2});  // top
+    s.meshes = {floor, box};
+    s.lights = lights;
+    s.camera.position = {0, 6, 8};
+    s.camera.target = {0, 0, 0};
+    s.camera.yfov = 0.9f;
+    s.camera.znear = 0.1f;
+    s.ambient = glm::vec3(0.01f);
+    s.computeBounds();
+    return s;
+}
+
+RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
+                    const RenderSettings& settings, uint32_t frames) {
+    Result<const RendererEntry*> entry = findRenderer(pipeline);
+    EXPECT_TRUE(entry.ok()) << entry.error();
+    RunOptions options;
+    options.warmupFrames = 0;
+    options.timedFrames = frames;
+    SceneFeatures features = analyzeScene(scene.scene(), settings.msaa);
+    Result<RunResult> run = runRenderer(ctx, scene, **entry, features, settings, options);
+    EXPECT_TRUE(run.ok()) << run.error();
+    return run.ok() ? std::move(*run) : RunResult{};
+}
+
+} // namespace tp::test

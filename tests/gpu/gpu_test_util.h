@@ -1,0 +1,28 @@
+#pragma once
+// Shared helpers of the GPU tests: a validated context on the default device and small
+// hand-built scenes whose shading can be recomputed on the CPU.
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "core/gpu/context.h"
+#include "core/render/frame_runner.h"
+#include "core/render/scene_gpu.h"
+#include "core/scene/scene.h"
+
+namespace tp::test {
+
+// Validation (with synchronization validation) on; fails the test if creation fails.
+std::unique_ptr<GpuContext> makeValidatedContext();
+
+// Asserts that the validation layers reported nothing so far.
+void expectNoValidationMessages(const GpuContext& ctx);
+
+// A 10 x 10 floor at y = 0 (white dielectric, roughness 1) with a box on it, camera above
+// looking down at an angle; lights as given.
+Scene makeFloorScene(const std::vector<Light>& lights);
+
+RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
+                    const RenderSettings& settings, uint32_t frames = 1);
+
+} // namespace tp::test
