@@ -66,9 +66,9 @@ void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, con
 int run(InfoOptions& o) {
     printDevices();
     if (o.devicesOnly) return 0;
-    Scene scene = loadScene(o.scene);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings settings = makeSettings(o.view, *ctx);
+    Scene scene = loadScene(o.scene);
     SceneFeatures f = analyzeScene(scene, settings.msaa);
     printScene(scene, f);
     std::printf("\nDevice in use: %s\n", ctx->info.name.c_str());

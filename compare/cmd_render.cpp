@@ -64,10 +64,11 @@ int run(RenderOptions& o) {
     if (o.warmup < 0 || o.warmup > 1000) throw UsageError("--warmup must be between 0 and 1000");
     Result<const RendererEntry*> entry = findRenderer(o.pipeline);
     if (!entry) throw UsageError("--pipeline: " + entry.error());
-    Scene scene = loadScene(o.scene);
+    if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings settings = makeSettings(o.view, *ctx);
     settings.referenceFp64 = o.referencePrecision == "fp64";
+    Scene scene = loadScene(o.scene);
     ensureDirectory(o.out);
     SceneFeatures features = analyzeScene(scene, settings.msaa);
     std::fprintf(stderr, "triptych: %s, %zu triangles, %zu lights, %ux%u, %ux MSAA on %s\n",

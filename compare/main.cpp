@@ -24,8 +24,14 @@ int main(int argc, char** argv) {
             if (code >= 0) return code;
         }
         return 1;
-    } catch (const CLI::ParseError& e) {
+    } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // One line, like every other error (CLI11 would add a second "Run with --help").
+        std::fprintf(stderr, "triptych: %s (see --help)\n", e.what());
+        return 2;
     } catch (const tp::cli::UsageError& e) {
         std::fprintf(stderr, "triptych: %s\n", e.what());
         return 2;

@@ -83,7 +83,7 @@ Image& Image::operator=(Image&& o) noexcept {
 
 void Image::reset() {
     if (!ctx) return;
-    vkDestroyImageView(ctx->device, view, nullptr);
+    if (view) vkDestroyImageView(ctx->device, view, nullptr);
     vkDestroyImage(ctx->device, image, nullptr);
     vkFreeMemory(ctx->device, memory, nullptr);
     ctx->ledger.remove(ledgerId);
@@ -135,12 +135,18 @@ Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag) 
     vkGetImageMemoryRequirements(ctx.device, img.image, &req);
     img.memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkBindImageMemory(ctx.device, img.image, img.memory, 0));
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = img.image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = desc.format;
-    view.subresourceRange = {img.aspect, 0, desc.mipLevels, 0, 1};
-    VK_CHECK(vkCreateImageView(ctx.device, &view, nullptr, &img.view));
+    // A view needs a usage that views serve; an image only copied to/from gets none.
+    const VkImageUsageFlags viewUsages = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    if (desc.usage & viewUsages) {
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = img.image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = desc.format;
+        view.subresourceRange = {img.aspect, 0, desc.mipLevels, 0, 1};
+        VK_CHECK(vkCreateImageView(ctx.device, &view, nullptr, &img.view));
+    }
     LedgerEntry e;
     e.tag = tag;
     e.isImage = true;

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Bad input gets one line on stderr starting with "triptych:", a non-zero exit, no crash,
+# and no output that looks complete. Usage: bad_input.sh TRIPTYCH SHARED_SCENES_DIR
+set -u
+bin=$1
+scenes=${2:-}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail=0
+pass=0
+
+expect_error() { # description, args...
+    local what=$1; shift
+    local out="$work/out$pass$fail"
+    "$bin" "$@" --out "$out" >"$work/stdout" 2>"$work/stderr"
+    local code=$?
+    local lines; lines=$(grep -c '' "$work/stderr")
+    local first; first=$(head -n 1 "$work/stderr")
+    local problem=""
+    if [ "$code" -eq 0 ]; then problem="exit code 0"
+    elif [ "$code" -ge 128 ]; then problem="crashed (exit $code)"
+    elif [ "$lines" -ne 1 ]; then problem="$lines lines on stderr"
+    elif [[ "$first" != triptych:* ]]; then problem="stderr does not start with 'triptych:'"
+    elif ls "$out"/*.exr "$out"/*.png "$out"/*.json >/dev/null 2>&1; then problem="left output files behind"
+    fi
+    if [ -n "$problem" ]; then
+        echo "FAIL $what: $problem"; sed 's/^/    /' "$work/stderr" | head -5; fail=$((fail + 1))
+    else
+        echo "ok   $what: $first"; pass=$((pass + 1))
+    fi
+}
+
+expect_error "zero resolution" render --res 0x0
+expect_error "resolution beyond the device" render --res 100000x100
+expect_error "malformed resolution" render --res big
+expect_error "negative light count" render --lights -1 --res 8x8
+expect_error "absurd light count" render --lights 2000000000 --res 8x8
+expect_error "unsupported msaa" render --msaa 3
+expect_error "msaa not a number" render --msaa four
+expect_error "unknown pipeline" render --pipeline nope
+expect_error "unknown command" frobnicate
+expect_error "missing scene file" render /nonexistent/scene.gltf
+expect_error "unknown builtin scene" render builtin:nope
+expect_error "missing lights file" render builtin:courtyard-small --lights-file /nonexistent.json
+printf '{"version":1,"lights":[{"type":"point","range":-1}]' >"$work/bad.json"
+expect_error "malformed lights JSON" render builtin:courtyard-small --lights-file "$work/bad.json"
+expect_error "inverted light radius range" render builtin:courtyard-small --light-radius 5,1
+expect_error "unknown light type" render builtin:courtyard-small --light-types laser
+expect_error "zero frames" render --frames 0
+expect_error "bad exposure" render --exposure banana
+expect_error "no such device" render --device 99 --res 8x8
+expect_error "scene that is a directory" render /tmp
+if [ -n "$scenes" ] && [ -d "$scenes/negative" ]; then
+    while IFS= read -r f; do
+        case "$f" in */non_relative_uri.gltf) continue ;; esac # valid apart from its URI: a warning
+        expect_error "broken glTF ${f#$scenes/}" render "$f" --res 16x16 --frames 1 --warmup 0
+    done < <(find "$scenes/negative" -name '*.gltf' -o -name '*.glb' | sort)
+else
+    echo "skip broken glTF files: no shared scenes at '$scenes'"
+fi
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
