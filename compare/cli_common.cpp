@@ -126,8 +126,35 @@ std::unique_ptr<GpuContext> createContext(const DeviceOptions& o) {
     return std::move(*ctx);
 }
 
-RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx) {
-    RenderSettings s;
+void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& referencePrecision) {
+    app.add_option("--tile", s.tileSize, "Tile edge in pixels for the tiled pipelines")
+        ->check(CLI::IsMember({8u, 16u, 32u}))
+        ->capture_default_str();
+    app.add_option("--light-lists", s.lightLists,
+                   "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed "
+                   "(fixed capacity per tile; drops are counted), linked (per-tile linked lists)")
+        ->check(CLI::IsMember({"compact", "fixed", "linked"}))
+        ->capture_default_str();
+    app.add_option("--tile-capacity", s.tileCapacity, "Light slots per tile of the 'fixed' layout")
+        ->check(CLI::Range(1u, 65536u))
+        ->capture_default_str();
+    app.add_option("--gbuffer", s.gbuffer, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)")
+        ->check(CLI::IsMember({"compact", "wide"}))
+        ->capture_default_str();
+    app.add_option("--deferred-lighting", s.deferredLighting,
+                   "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")
+        ->check(CLI::IsMember({"tiled", "volumes"}))
+        ->capture_default_str();
+    app.add_option("--accum", s.accum, "Multipass forward accumulation target precision")
+        ->check(CLI::IsMember({"fp16", "fp32"}))
+        ->capture_default_str();
+    app.add_option("--reference-precision", referencePrecision,
+                   "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
+        ->check(CLI::IsMember({"fp32", "fp64"}))
+        ->capture_default_str();
+}
+
+RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderSettings s) {
     unsigned w = 0, h = 0;
     char x = 0, extra = 0;
     if (std::sscanf(v.resolution.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))

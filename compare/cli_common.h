@@ -44,12 +44,16 @@ struct ViewOptions {
 void addSceneOptions(CLI::App& app, SceneOptions& o);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
+// Pipeline knobs (tile size, list layout, G-buffer, lighting mode, accumulation, reference
+// precision) bound straight into the settings.
+void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& referencePrecision);
 
 // Loads or builds the scene and sets its lights; warnings go to stderr.
 Scene loadScene(const SceneOptions& o);
 std::unique_ptr<GpuContext> createContext(const DeviceOptions& o);
 // Resolution and MSAA checked against the device's limits.
-RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx);
+// `base` carries the pipeline knobs; the result adds resolution and MSAA.
+RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderSettings base = {});
 
 // Creates DIR (and parents); error if it cannot.
 void ensureDirectory(const std::string& dir);

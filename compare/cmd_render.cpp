@@ -27,6 +27,7 @@ struct RenderOptions {
     std::string exposure = "auto";
     std::string exrType = "float";
     std::string referencePrecision = "fp64";
+    RenderSettings knobs;
 };
 
 float parseExposure(const std::string& text, const ImageRGBA& image) {
@@ -45,6 +46,11 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
     Status s = writeExr(base + ".exr", run.hdr, o.exrType == "half" ? ExrPixelType::Half : ExrPixelType::Float);
     if (s) s = writePng(base + ".png", tonemapToDisplay(run.hdr, ev));
     if (s) s = writeLightsFile(o.out + "/lights.json", scene.lights);
+    for (const DebugImage& d : run.debugImages) {
+        if (!s) break;
+        const std::string path = base + "_debug_" + d.name;
+        s = d.display ? writePng(path + ".png", d.image) : writeExr(path + ".exr", d.image, ExrPixelType::Float);
+    }
     ErrorReport self = computeError(run.hdr, run.hdr);
     nlohmann::json j;
     j["schema"] = "triptych.render/1";
@@ -66,7 +72,7 @@ int run(RenderOptions& o) {
     if (!entry) throw UsageError("--pipeline: " + entry.error());
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
-    RenderSettings settings = makeSettings(o.view, *ctx);
+    RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
     settings.referenceFp64 = o.referencePrecision == "fp64";
     Scene scene = loadScene(o.scene);
     ensureDirectory(o.out);
@@ -120,10 +126,10 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--exr-type", o->exrType, "EXR pixel type")
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
-    cmd->add_option("--reference-precision", o->referencePrecision,
-                    "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
-        ->check(CLI::IsMember({"fp32", "fp64"}))
-        ->capture_default_str();
+    addPipelineOptions(*cmd, o->knobs, o->referencePrecision);
+    cmd->add_flag("--debug", o->knobs.debug,
+                  "Also write the pipeline's debug images (lights-per-tile heat map, tile depth bounds, "
+                  "G-buffer channels, edge mask) as PIPELINE_debug_NAME.png");
     return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
 }
 

@@ -19,7 +19,12 @@ nlohmann::json settingsJson(const RenderSettings& s) {
             {"height", s.height},
             {"msaa", s.msaa},
             {"reference_fp64", s.referenceFp64},
-            {"tile_size", s.tileSize}};
+            {"tile_size", s.tileSize},
+            {"light_lists", s.lightLists},
+            {"tile_capacity", s.tileCapacity},
+            {"gbuffer", s.gbuffer},
+            {"deferred_lighting", s.deferredLighting},
+            {"accum", s.accum}};
 }
 
 nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f) {

@@ -56,6 +56,7 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
     result.hdr = readbackColor(ctx, graph.image(hdr));
     result.depth = readbackDepth(ctx, graph.image(depth));
     renderer->collectStats(graph);
+    if (settings.debug) result.debugImages = renderer->debugImages(graph);
     result.stats = renderer->stats();
     result.memory = ctx.ledger.entriesOf(entry.name);
     result.passes = graph.livePasses();

@@ -29,6 +29,7 @@ struct RunResult {
     RendererStats stats;
     std::vector<std::string> passes;       // recorded
     std::vector<std::string> culledPasses; // declared but not recorded (outputs unused)
+    std::vector<DebugImage> debugImages;   // only with settings.debug
 };
 
 Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image/image.h"
 #include "core/render/settings.h"
 #include "core/scene/scene.h"
 #include "core/util/result.h"
@@ -35,6 +36,14 @@ struct LeftOut {
     std::string why;
 };
 
+// A debug output (lights-per-tile heat map, G-buffer channel, edge mask, ...), produced only
+// when settings.debug is set. display = true: already display-space [0,1] for a PNG.
+struct DebugImage {
+    std::string name;
+    ImageRGBA image;
+    bool display = true;
+};
+
 struct RendererStats {
     std::vector<std::pair<std::string, double>> counters; // e.g. lights_dropped, draws
     std::vector<LeftOut> leftOut;
@@ -46,6 +55,8 @@ class Renderer {
     virtual void plan(FrameGraph& graph) = 0;
     virtual void prepare(FrameGraph& graph) = 0;
     virtual void collectStats(FrameGraph&) {}
+    // Read back after the frames when settings.debug is set (see DebugImage).
+    virtual std::vector<DebugImage> debugImages(FrameGraph&) { return {}; }
     virtual RendererStats stats() const = 0;
 };
 

@@ -12,6 +12,15 @@ struct RenderSettings {
     uint32_t msaa = 1;             // samples per pixel: 1, 2, 4, 8 (as the device supports)
     bool referenceFp64 = true;     // reference accumulates the light sum in fp64 when the device can
     uint32_t tileSize = 16;        // tiled pipelines: tile edge in pixels (8, 16, 32)
+    // Forward+ light-list layout: "compact" (count, prefix sum, fill: never drops a light),
+    // "fixed" (flat fixed capacity per tile, AMD ForwardPlus11; drops are counted),
+    // "linked" (per-tile linked lists with a head buffer).
+    std::string lightLists = "compact";
+    uint32_t tileCapacity = 256;   // "fixed" layout: light slots per tile
+    std::string gbuffer = "compact";         // deferred G-buffer: "compact" or "wide" (fp32)
+    std::string deferredLighting = "tiled";  // deferred lighting: "tiled" or "volumes"
+    std::string accum = "fp32";              // multipass forward accumulation: "fp16" or "fp32"
+    bool debug = false;            // renderers export their debug images (heat maps, ...)
 };
 
 } // namespace tp

@@ -116,4 +116,9 @@ static_assert(offsetof(FrameUniforms, viewport) == 5 * 64 + 32);
 static_assert(sizeof(DrawPush) == 16);
 } // namespace tp::gpu
 #endif
+
+// Each pipeline's own GPU structs, bindings (set TP_SET_PASS) and constants.
+#include "include/forwardplus_shared.h"
+#include "include/deferred_shared.h"
+#include "include/multipass_shared.h"
 #endif

@@ -1,0 +1,12 @@
+// Forward+: structs, set-1 bindings and constants shared by C++ and GLSL.
+// Included by shared.h; same rules (TP_STRUCT, static_asserts on the C++ side).
+#ifndef TP_FORWARDPLUS_SHARED_H
+#define TP_FORWARDPLUS_SHARED_H
+#ifndef TP_GLSL
+namespace tp::gpu {
+#endif
+
+#ifndef TP_GLSL
+} // namespace tp::gpu
+#endif
+#endif
