@@ -1,0 +1,167 @@
+#include "deferred/deferred_renderer.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "core/gpu/context.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/readback.h"
+#include "core/render/scene_gpu.h"
+#include "deferred/gbuffer_pass.h"
+#include "deferred/tiled_lighting.h"
+#include "deferred/transparent_pass.h"
+
+namespace tp {
+namespace {
+
+class DeferredRenderer final : public Renderer {
+  public:
+    explicit DeferredRenderer(const RendererCreateInfo& info)
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
+          gbuffer_(info.ctx, info.scene), lighting_(info.ctx, info.scene, info.settings.debug),
+          transparent_(info.ctx, info.scene) {}
+
+    void plan(FrameGraph& graph) override {
+        t_.layout = planGBufferLayout(ctx_, features_, settings_);
+        // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels.
+        if (settings_.tileSize % 8 != 0 || settings_.tileSize == 0 || settings_.tileSize > 64)
+            throw std::runtime_error("deferred: --tile must be 8, 16, 32 or 64 (got " +
+                                     std::to_string(settings_.tileSize) + ")");
+        t_.tileSize = settings_.tileSize;
+        t_.tilesX = (graph.width() + t_.tileSize - 1) / t_.tileSize;
+        t_.tilesY = (graph.height() + t_.tileSize - 1) / t_.tileSize;
+        const uint32_t tiles = t_.tilesX * t_.tilesY;
+        t_.hdr = graph.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                           "linear radiance (resolved)"});
+        t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                               t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
+        blended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
+        if (blended_ && t_.msaa())
+            t_.hdrMsaa = graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
+                                                        VkSampleCountFlagBits(settings_.msaa),
+                                                        "per-sample radiance (blended under MSAA)"});
+        t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
+                                          "per tile: lights, transparent lights, edge pixels, overflow");
+        if (blended_) {
+            // Capacity = every light, so no light is ever dropped, unless that exceeds the
+            // device's storage buffer range; then the list keeps what fits (counted).
+            uint64_t maxUints = ctx_.caps.maxStorageBufferRange / 4 / std::max(tiles, 1u);
+            t_.listStride = uint32_t(std::min<uint64_t>(scene_.lightCount() + 1, maxUints));
+            t_.transparentLists = graph.createBuffer("transparent_lists", uint64_t(tiles) * t_.listStride * 4,
+                                                     "per tile: count + transparent light indices");
+        }
+        if (settings_.debug)
+            t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
+                                                           VK_SAMPLE_COUNT_1_BIT,
+                                                           "debug: edge mask, roughness, metallic"});
+        gbuffer_.plan(graph, t_);
+        lighting_.plan(graph, t_);
+        if (blended_) transparent_.plan(graph, t_);
+        graph.exportResource("hdr", t_.hdr);
+        graph.exportResource("depth", t_.depth);
+        graph.exportResource("tile_stats", t_.tileStats);
+        if (settings_.debug) {
+            graph.exportResource("debug_edge_rm", t_.debug);
+            if (!t_.msaa()) graph.exportResource("gbuffer_base", t_.gbuffer[0]); // readback: 1x only
+        }
+    }
+
+    void prepare(FrameGraph& graph) override {
+        gbuffer_.prepare();
+        lighting_.prepare(graph);
+        if (blended_) transparent_.prepare(graph);
+    }
+
+    void collectStats(FrameGraph& graph) override {
+        std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.tileStats));
+        tileStats_.assign(raw.size() / 4, 0);
+        std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
+    }
+
+    std::vector<DebugImage> debugImages(FrameGraph& graph) override;
+    RendererStats stats() const override;
+
+  private:
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    SceneFeatures features_;
+    RenderSettings settings_;
+    DeferredTargets t_;
+    bool blended_ = false;
+    GBufferPass gbuffer_;
+    TiledLighting lighting_;
+    TransparentPass transparent_;
+    std::vector<uint32_t> tileStats_; // uvec4 per tile
+};
+
+// Inferno-free heat map: black (0 lights) -> red -> yellow -> white (max).
+ImageRGBA lightsPerTileImage(const std::vector<uint32_t>& stats, const DeferredTargets& t, uint32_t w,
+                             uint32_t h) {
+    ImageRGBA img(w, h);
+    uint32_t maxCount = 1;
+    for (size_t i = 0; i + 3 < stats.size(); i += 4) maxCount = std::max(maxCount, stats[i]);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            float v = float(stats[((y / t.tileSize) * t.tilesX + x / t.tileSize) * 4]) / float(maxCount);
+            float* p = img.at(x, y);
+            p[0] = std::min(1.0f, 3.0f * v);
+            p[1] = std::clamp(3.0f * v - 1.0f, 0.0f, 1.0f);
+            p[2] = std::clamp(3.0f * v - 2.0f, 0.0f, 1.0f);
+            p[3] = 1.0f;
+        }
+    return img;
+}
+
+std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
+    std::vector<DebugImage> out;
+    uint32_t w = graph.width(), h = graph.height();
+    out.push_back({"lights_per_tile", lightsPerTileImage(tileStats_, t_, w, h), true});
+    ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
+    ImageRGBA edge(w, h), rm(w, h);
+    for (size_t i = 0; i < dbg.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c) edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
+        rm.rgba[i * 4] = dbg.rgba[i * 4 + 1];
+        rm.rgba[i * 4 + 1] = dbg.rgba[i * 4 + 2];
+        edge.rgba[i * 4 + 3] = rm.rgba[i * 4 + 3] = 1.0f;
+    }
+    out.push_back({"edge_mask", std::move(edge), true});
+    out.push_back({"gbuffer_roughness_metallic", std::move(rm), true});
+    // RGBA8_SRGB reads back as the raw encoded bytes / 255: already display sRGB.
+    if (!t_.msaa()) out.push_back({"gbuffer_base_color", readbackColor(ctx_, graph.image(t_.gbuffer[0])), true});
+    return out;
+}
+
+RendererStats DeferredRenderer::stats() const {
+    RendererStats s;
+    const uint32_t samples = t_.layout.samples;
+    s.counters.push_back({"gbuffer_bytes_per_sample", double(t_.layout.bytesPerSample())});
+    s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});
+    double lights = 0, maxLights = 0, edges = 0, overflow = 0, tiles = double(tileStats_.size() / 4);
+    for (size_t i = 0; i + 3 < tileStats_.size(); i += 4) {
+        lights += tileStats_[i];
+        maxLights = std::max(maxLights, double(tileStats_[i]));
+        edges += tileStats_[i + 2];
+        overflow += tileStats_[i + 3];
+    }
+    s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
+    s.counters.push_back({"lights_per_tile_max", maxLights});
+    s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
+    double pixels = double(settings_.width) * settings_.height;
+    s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
+    if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
+    if (!blended_)
+        s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
+    if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
+    if (settings_.deferredLighting == "volumes")
+        s.leftOut.push_back({"volumes lighting", "not implemented yet: tiled lighting ran instead"});
+    return s;
+}
+
+} // namespace
+
+std::unique_ptr<Renderer> createDeferredRenderer(const RendererCreateInfo& info) {
+    return std::make_unique<DeferredRenderer>(info);
+}
+
+} // namespace tp

@@ -1,0 +1,68 @@
+#include "deferred/gbuffer_pass.h"
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp {
+
+GBufferPass::~GBufferPass() {
+    if (opaque_) vkDestroyPipeline(ctx_.device, opaque_, nullptr);
+    if (masked_) vkDestroyPipeline(ctx_.device, masked_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+}
+
+void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t) {
+    t_ = &t;
+    const auto samples = VkSampleCountFlagBits(t.layout.samples);
+    for (const GBufferTarget& c : t.layout.colors)
+        t.gbuffer.push_back(graph.createImage(c.name, {c.format, 0, 0, samples, c.purpose}));
+    std::vector<PassUse> uses;
+    for (ResourceHandle h : t.gbuffer) uses.push_back({h, Use::ColorAttachment});
+    if (t.msaa()) {
+        t.gbufferDepth = graph.createImage("gbuffer_depth_msaa", {t.layout.depth, 0, 0, samples,
+                                                                  "per-sample depth (reverse-Z)"});
+        uses.push_back({t.gbufferDepth, Use::DepthAttachment});
+        uses.push_back({t.depth, Use::DepthResolve});
+    } else {
+        t.gbufferDepth = t.depth;
+        uses.push_back({t.depth, Use::DepthAttachment});
+    }
+    graph.addPass("gbuffer", uses, [this](PassContext& pc) { record(pc); });
+}
+
+void GBufferPass::prepare() {
+    layout_ = scene_.createPipelineLayout();
+    GraphicsPipelineDesc d;
+    d.fragmentShader = t_->layout.emissive ? "deferred_gbuffer_emissive_frag" : "deferred_gbuffer_frag";
+    for (const GBufferTarget& c : t_->layout.colors) d.colorFormats.push_back(c.format);
+    d.depthFormat = t_->layout.depth;
+    d.samples = VkSampleCountFlagBits(t_->layout.samples);
+    d.layout = layout_;
+    for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask}) {
+        if (!scene_.hasDraws(DrawFilter(mode))) continue;
+        d.specConstants = scene_.specConstants(mode);
+        d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+        (mode == AlphaMode::Opaque ? opaque_ : masked_) = createGraphicsPipeline(ctx_, d);
+    }
+}
+
+void GBufferPass::record(PassContext& pc) {
+    std::vector<ColorTarget> colors;
+    for (ResourceHandle h : t_->gbuffer) colors.push_back({h, {}, true, {{0.0f, 0.0f, 0.0f, 0.0f}}});
+    DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}};
+    beginRendering(pc, colors, depth);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    if (opaque_) {
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque_);
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque);
+    }
+    if (masked_) {
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, masked_);
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Mask);
+    }
+    endRendering(pc);
+}
+
+} // namespace tp

@@ -1,0 +1,29 @@
+#pragma once
+// G-buffer pass: opaque and alpha-masked draws (masked ones discard below the cutoff) write
+// the planned layout; blended draws are left to the hybrid forward pass. Under MSAA the
+// targets are per sample, and depth is resolved (sample 0) into the exported "depth".
+#include "core/gpu/frame_graph.h"
+#include "deferred/deferred_targets.h"
+
+namespace tp {
+
+class GpuContext;
+class SceneGpu;
+
+class GBufferPass {
+  public:
+    GBufferPass(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
+    ~GBufferPass();
+    void plan(FrameGraph& graph, DeferredTargets& t);
+    void prepare();
+
+  private:
+    void record(PassContext& pc);
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    const DeferredTargets* t_ = nullptr;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
+};
+
+} // namespace tp

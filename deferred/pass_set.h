@@ -1,0 +1,29 @@
+#pragma once
+// Descriptor set 1 of a deferred pass: layout, pool and one set, from a list of bindings
+// whose numbers come from shaders/include/deferred_shared.h.
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace tp {
+
+class GpuContext;
+
+struct SetBinding {
+    uint32_t binding;
+    VkDescriptorType type;
+};
+
+struct PassSet {
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+
+PassSet createPassSet(GpuContext& ctx, const std::vector<SetBinding>& bindings);
+void destroyPassSet(GpuContext& ctx, PassSet& set);
+void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
+                          VkImageView view, VkImageLayout layout, VkSampler sampler);
+void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkBuffer buffer);
+
+} // namespace tp

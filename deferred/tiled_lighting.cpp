@@ -1,0 +1,89 @@
+#include "deferred/tiled_lighting.h"
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/vk_check.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp {
+
+TiledLighting::~TiledLighting() {
+    if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    if (sampler_) vkDestroySampler(ctx_.device, sampler_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t) {
+    t_ = &t;
+    std::vector<PassUse> uses;
+    for (ResourceHandle h : t.gbuffer) uses.push_back({h, Use::Sampled});
+    uses.push_back({t.gbufferDepth, Use::Sampled});
+    uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite});
+    uses.push_back({t.tileStats, Use::StorageWrite});
+    if (t.transparentLists.valid()) uses.push_back({t.transparentLists, Use::StorageWrite});
+    if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite});
+    graph.addPass("tiled_lighting", uses, [this](PassContext& pc) { record(pc); });
+}
+
+std::string TiledLighting::shaderName() const {
+    int m = !t_->msaa() ? 0 : t_->hdrMsaa.valid() ? 2 : 1;
+    return "deferred_tiled_m" + std::to_string(m) + "_e" + (t_->layout.emissive ? "1" : "0") + "_t" +
+           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") + "_comp";
+}
+
+void TiledLighting::prepare(FrameGraph& graph) {
+    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    const VkDescriptorType storageImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    const VkDescriptorType storageBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
+                                        TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
+    std::vector<SetBinding> bindings;
+    for (size_t i = 0; i < t_->gbuffer.size(); ++i) bindings.push_back({gbufferBindings[i], sampled});
+    bindings.push_back({TP_DEF_BINDING_DEPTH, sampled});
+    bindings.push_back({TP_DEF_BINDING_HDR, storageImage});
+    bindings.push_back({TP_DEF_BINDING_TILE_STATS, storageBuffer});
+    if (t_->transparentLists.valid()) bindings.push_back({TP_DEF_BINDING_TRANSPARENT_LISTS, storageBuffer});
+    if (t_->debug.valid()) bindings.push_back({TP_DEF_BINDING_DEBUG, storageImage});
+    set_ = createPassSet(ctx_, bindings);
+
+    // texelFetch only: the sampler's filtering is never used.
+    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
+    for (size_t i = 0; i < t_->gbuffer.size(); ++i)
+        writeImageDescriptor(ctx_, set_.set, gbufferBindings[i], sampled, graph.image(t_->gbuffer[i]).view,
+                             ro, sampler_);
+    writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_DEPTH, sampled, graph.image(t_->gbufferDepth).view,
+                         ro, sampler_);
+    ResourceHandle out = t_->hdrMsaa.valid() ? t_->hdrMsaa : t_->hdr;
+    writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_HDR, storageImage, graph.image(out).view,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
+    writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TILE_STATS, graph.buffer(t_->tileStats).buffer);
+    if (t_->transparentLists.valid())
+        writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TRANSPARENT_LISTS,
+                              graph.buffer(t_->transparentLists).buffer);
+    if (t_->debug.valid())
+        writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_DEBUG, storageImage, graph.image(t_->debug).view,
+                             VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
+
+    layout_ = scene_.createPipelineLayout(set_.layout);
+    std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
+    spec.push_back({TP_DEF_SPEC_TILE_SIZE, t_->tileSize});
+    spec.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+    spec.push_back({TP_DEF_SPEC_LIST_STRIDE, t_->listStride});
+    spec.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_);
+}
+
+void TiledLighting::record(PassContext& pc) {
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0,
+                            nullptr);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdDispatch(pc.cmd, t_->tilesX, t_->tilesY, 1);
+}
+
+} // namespace tp

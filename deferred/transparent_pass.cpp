@@ -1,0 +1,58 @@
+#include "deferred/transparent_pass.h"
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp {
+
+TransparentPass::~TransparentPass() {
+    if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t) {
+    t_ = &t;
+    std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead}, {t.gbufferDepth, Use::DepthTest}};
+    if (t.msaa()) {
+        uses.push_back({t.hdrMsaa, Use::ColorAttachment});
+        uses.push_back({t.hdr, Use::ColorResolve});
+    } else {
+        uses.push_back({t.hdr, Use::ColorAttachment});
+    }
+    graph.addPass("transparent_forward", uses, [this](PassContext& pc) { record(pc); });
+}
+
+void TransparentPass::prepare(FrameGraph& graph) {
+    set_ = createPassSet(ctx_, {{TP_DEF_FWD_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
+    writeBufferDescriptor(ctx_, set_.set, TP_DEF_FWD_BINDING_LISTS, graph.buffer(t_->transparentLists).buffer);
+    layout_ = scene_.createPipelineLayout(set_.layout);
+    GraphicsPipelineDesc d;
+    d.fragmentShader = "deferred_transparent_frag";
+    d.specConstants = scene_.specConstants(AlphaMode::Blend);
+    d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->tileSize});
+    d.specConstants.push_back({TP_DEF_SPEC_LIST_STRIDE, t_->listStride});
+    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.samples = VkSampleCountFlagBits(t_->layout.samples);
+    d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample
+    d.depthWrite = false;
+    d.blend = BlendMode::Alpha;
+    d.layout = layout_;
+    pipeline_ = createGraphicsPipeline(ctx_, d);
+}
+
+void TransparentPass::record(PassContext& pc) {
+    ColorTarget color = t_->msaa() ? ColorTarget{t_->hdrMsaa, t_->hdr, false} : ColorTarget{t_->hdr, {}, false};
+    DepthTarget depth{t_->gbufferDepth, {}, false, true};
+    beginRendering(pc, {color}, depth);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0,
+                            nullptr);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend);
+    endRendering(pc);
+}
+
+} // namespace tp

@@ -1,0 +1,31 @@
+#pragma once
+// The hybrid forward pass: blended draws, back to front, alpha-blended into hdr (per sample
+// and resolved under MSAA), lit from the per-tile transparent light lists. Planned only
+// when the scene has blended materials.
+#include "core/gpu/frame_graph.h"
+#include "deferred/deferred_targets.h"
+#include "deferred/pass_set.h"
+
+namespace tp {
+
+class GpuContext;
+class SceneGpu;
+
+class TransparentPass {
+  public:
+    TransparentPass(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
+    ~TransparentPass();
+    void plan(FrameGraph& graph, DeferredTargets& t);
+    void prepare(FrameGraph& graph);
+
+  private:
+    void record(PassContext& pc);
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    const DeferredTargets* t_ = nullptr;
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+} // namespace tp

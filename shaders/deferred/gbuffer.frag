@@ -1,0 +1,39 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// G-buffer pass: the material is evaluated once per pixel (not per sample: under MSAA the
+// value is written to every covered sample, which is what makes samples of one surface
+// compare equal in the edge test) and stored in the layout the renderer planned.
+// TP_EMISSIVE: the scene emits, so target 3 exists (left out otherwise).
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+#include "include/material.glsl"
+#include "include/gbuffer_encoding.h"
+
+layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+layout(location = 4) in vec4 inColor;
+
+layout(location = 0) out vec4 outBase;       // rgb base colour (sRGB target in compact), a occlusion
+layout(location = 1) out vec4 outNormal;     // compact: octahedral rg; wide: xyz
+layout(location = 2) out vec4 outRoughMetal; // r roughness, g metallic
+#ifdef TP_EMISSIVE
+layout(location = 3) out vec4 outEmissive;   // rgb emissive radiance
+#endif
+
+void main() {
+    MaterialGpu m = materials[draw.materialIndex];
+    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor,
+                                     gl_FrontFacing);
+    if (kAlphaMode == TP_ALPHA_MASK && ms.alpha < m.alphaCutoff) discard;
+    outBase = vec4(ms.surface.baseColor, ms.occlusion);
+    vec3 n = ms.surface.normal;
+    outNormal = kWide ? vec4(n, 0.0) : vec4(octEncode(n), 0.0, 0.0);
+    outRoughMetal = vec4(ms.surface.roughness, ms.surface.metallic, 0.0, 0.0);
+#ifdef TP_EMISSIVE
+    outEmissive = vec4(ms.emissive, 0.0);
+#endif
+}

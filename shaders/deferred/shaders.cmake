@@ -1,0 +1,30 @@
+# G-buffer deferred shaders (names are what deferred/*.cpp asks core/gpu/pipelines for).
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_frag)
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_emissive_frag DEFINES TP_EMISSIVE=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_frag)
+# Tiled lighting variants where the set-1 resources differ: m = 0 single-sample G-buffer,
+# 1 per-sample G-buffer, 2 per-sample G-buffer and per-sample hdr (blended under MSAA);
+# e = emissive target; t = transparent light lists; d = debug outputs.
+foreach(m 0 1 2)
+  foreach(e 0 1)
+    foreach(t 0 1)
+      foreach(d 0 1)
+        set(defs TP_EMISSIVE=${e})
+        if(m GREATER 0)
+          list(APPEND defs TP_MSAA=1)
+        endif()
+        if(m EQUAL 2)
+          list(APPEND defs TP_HDR_MSAA=1)
+        endif()
+        if(t)
+          list(APPEND defs TP_TRANSPARENT=1)
+        endif()
+        if(d)
+          list(APPEND defs TP_DEBUG=1)
+        endif()
+        triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
+          deferred_tiled_m${m}_e${e}_t${t}_d${d}_comp DEFINES ${defs})
+      endforeach()
+    endforeach()
+  endforeach()
+endforeach()
