@@ -1,6 +1,7 @@
 // The pipelines this build has. A new pipeline is a folder plus one line here.
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
+#include "deferred/deferred_renderer.h"
 
 namespace tp {
 
@@ -8,6 +9,7 @@ void registerBuiltinRenderers() {
     registerRenderer({"reference",
                       "ground truth: every light at every sample, no culling, fp64 accumulation",
                       createReferenceRenderer});
+    registerRenderer({"deferred", "G-buffer deferred: tiled compute lighting, hybrid forward pass for blended", createDeferredRenderer});
 }
 
 } // namespace tp
