@@ -228,6 +228,9 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.dynamicRendering = VK_TRUE;
     f13.synchronization2 = VK_TRUE;
+    // Required by Vulkan 1.3; glslang's vulkan1.3 target writes compute workgroup sizes as
+    // LocalSizeId, which the validation layers accept only with maintenance4 enabled.
+    f13.maintenance4 = VK_TRUE;
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
     f12.hostQueryReset = VK_TRUE;
     f12.scalarBlockLayout = VK_FALSE;
