@@ -2,6 +2,7 @@
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
 #include "deferred/deferred_renderer.h"
+#include "multipass_forward/multipass_renderer.h"
 
 namespace tp {
 
@@ -10,6 +11,7 @@ void registerBuiltinRenderers() {
                       "ground truth: every light at every sample, no culling, fp64 accumulation",
                       createReferenceRenderer});
     registerRenderer({"deferred", "G-buffer deferred: tiled compute lighting, hybrid forward pass for blended", createDeferredRenderer});
+    registerRenderer({"multipass_forward", "one additive pass per light after a depth prepass", createMultipassForwardRenderer});
 }
 
 } // namespace tp

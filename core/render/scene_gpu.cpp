@@ -159,7 +159,7 @@ bool SceneGpu::hasDraws(DrawFilter filter) const {
                        [&](const DrawItem& d) { return uint32_t(d.alphaMode) == uint32_t(filter); });
 }
 
-void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const {
+std::vector<const DrawItem*> SceneGpu::drawList(DrawFilter filter) const {
     std::vector<const DrawItem*> items;
     for (const DrawItem& d : draws_)
         if (uint32_t(d.alphaMode) == uint32_t(filter)) items.push_back(&d);
@@ -169,7 +169,16 @@ void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFil
         std::stable_sort(items.begin(), items.end(),
                          [&](const DrawItem* a, const DrawItem* b) { return dist(a) > dist(b); });
     }
+    return items;
+}
+
+void SceneGpu::bindIndexBuffer(VkCommandBuffer cmd) const {
     vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+}
+
+void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const {
+    std::vector<const DrawItem*> items = drawList(filter);
+    bindIndexBuffer(cmd);
     for (const DrawItem* d : items) {
         gpu::DrawPush push{d->material, 0, 0, 0};
         vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);

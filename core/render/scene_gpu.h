@@ -47,6 +47,11 @@ class SceneGpu {
     // distance from the camera to each mesh's bounds centre).
     void recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const;
     bool hasDraws(DrawFilter filter) const;
+    // The draws of one alpha mode in the order recordDraws records them (Blend: back to
+    // front), for pipelines that record draws one by one (multipass forward: per light).
+    std::vector<const DrawItem*> drawList(DrawFilter filter) const;
+    // Binds the scene's index buffer; DrawItem's firstIndex/vertexOffset refer to it.
+    void bindIndexBuffer(VkCommandBuffer cmd) const;
 
     const Scene& scene() const { return scene_; }
     const gpu::FrameUniforms& frame() const { return frame_; }

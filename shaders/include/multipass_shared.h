@@ -1,12 +1,19 @@
 // multipass forward: structs, set-1 bindings and constants shared by C++ and GLSL.
 // Included by shared.h; same rules (TP_STRUCT, static_asserts on the C++ side).
+// The pipeline has no set-1 resources: everything per light travels in the scene's
+// DrawPush push constant and in specialization constants.
 #ifndef TP_MULTIPASS_SHARED_H
 #define TP_MULTIPASS_SHARED_H
-#ifndef TP_GLSL
-namespace tp::gpu {
-#endif
 
-#ifndef TP_GLSL
-} // namespace tp::gpu
-#endif
+// Light passes carry the index of their light in DrawPush.pad0, so one pipeline object
+// serves every light and no per-light descriptor set exists.
+#define TP_MP_LIGHT_INDEX pad0
+
+// The base pass evaluates up to TP_MP_MAX_BASE_DIRECTIONAL directional lights, named by
+// specialization constants (count, then one index each); further directional lights get
+// full-screen additive passes like any other light.
+#define TP_MP_MAX_BASE_DIRECTIONAL 4
+#define TP_MP_SPEC_DIRECTIONAL_COUNT 10
+#define TP_MP_SPEC_DIRECTIONAL_FIRST 11 // ids 11 .. 11 + TP_MP_MAX_BASE_DIRECTIONAL - 1
+
 #endif

@@ -1,0 +1,177 @@
+#include "multipass_forward/light_plan.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tp::mp {
+namespace {
+
+ScreenRect fullScreen(const gpu::FrameUniforms& f) {
+    return {0, 0, int32_t(f.viewport.x), int32_t(f.viewport.y)};
+}
+
+// NDC bounds [lo, hi] (x right, y up) -> pixel rectangle, grown by a pixel for rounding.
+ScreenRect toPixels(const gpu::FrameUniforms& f, glm::vec2 lo, glm::vec2 hi) {
+    const float w = float(f.viewport.x), h = float(f.viewport.y);
+    // Clamp before converting: a tangent close to 90 degrees off-axis projects far away.
+    auto px = [&](float ndc) { return std::clamp((ndc * 0.5f + 0.5f) * w, -1.0f, w + 1.0f); };
+    auto py = [&](float ndc) { return std::clamp((0.5f - ndc * 0.5f) * h, -1.0f, h + 1.0f); };
+    ScreenRect r;
+    r.x0 = std::max(0, int32_t(std::floor(px(lo.x))) - 1);
+    r.x1 = std::min(int32_t(w), int32_t(std::ceil(px(hi.x))) + 1);
+    r.y0 = std::max(0, int32_t(std::floor(py(hi.y))) - 1);
+    r.y1 = std::min(int32_t(h), int32_t(std::ceil(py(lo.y))) + 1);
+    return r;
+}
+
+// The two tangents from the eye to the circle (u, depth) of radius r in one view-space
+// axis plane, as NDC coordinates along that axis (scale = the projection's focal term).
+// Requires depth > r: the circle lies in front of the eye, so both tangents do too.
+glm::vec2 tangentNdc(float u, float depth, float r, float scale) {
+    float l2 = u * u + depth * depth;
+    float l = std::sqrt(l2);
+    float cosA = std::sqrt(std::max(l2 - r * r, 0.0f)) / l, sinA = r / l;
+    glm::vec2 ndc;
+    for (int s = 0; s < 2; ++s) {
+        float sign = s == 0 ? -1.0f : 1.0f;
+        // Rotate (u, depth) by +-alpha; the slope u'/depth' is what the projection keeps.
+        float ut = u * cosA - sign * depth * sinA;
+        float dt = sign * u * sinA + depth * cosA;
+        ndc[s] = scale * ut / dt;
+    }
+    return {std::min(ndc[0], ndc[1]), std::max(ndc[0], ndc[1])}; // lower, upper
+}
+
+} // namespace
+
+ScreenRect sphereScreenRect(const gpu::FrameUniforms& f, glm::vec3 center, float radius) {
+    const float znear = f.projParams.x;
+    glm::vec3 c = glm::vec3(f.view * glm::vec4(center, 1.0f));
+    float depth = -c.z; // distance in front of the eye along the view axis
+    if (depth + radius <= znear) return {};                 // entirely behind the near plane
+    if (depth - radius <= znear) return fullScreen(f);      // crosses it (or holds the eye)
+    // The projection here is symmetric (proj[2][0] = proj[2][1] = 0), so NDC = focal * slope.
+    glm::vec2 x = tangentNdc(c.x, depth, radius, f.proj[0][0]);
+    glm::vec2 y = tangentNdc(c.y, depth, radius, f.proj[1][1]);
+    return toPixels(f, {x[0], y[0]}, {x[1], y[1]});
+}
+
+ScreenRect boxScreenRect(const gpu::FrameUniforms& f, const Aabb& box) {
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    int behind = 0;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                    (i & 4) ? box.max.z : box.min.z);
+        glm::vec4 clip = f.viewProj * glm::vec4(p, 1.0f);
+        // w = distance along the view axis; a corner at or behind the near plane cannot be
+        // projected, so the box may cover anything.
+        if (clip.w <= f.projParams.x) {
+            ++behind;
+            continue;
+        }
+        glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    if (behind == 8) {
+        // All corners behind the near plane: the box is too (it is their convex hull).
+        return {};
+    }
+    if (behind > 0) return fullScreen(f);
+    return toPixels(f, lo, hi);
+}
+
+bool sphereTouchesBox(glm::vec3 center, float radius, const Aabb& box) {
+    glm::vec3 closest = glm::clamp(center, box.min, box.max);
+    glm::vec3 d = center - closest;
+    return glm::dot(d, d) <= radius * radius;
+}
+
+namespace {
+
+// Under MSAA, lavapipe may interpolate a sample's attributes at the pixel centre, which can
+// lie outside the triangle: the shaded position then leaves the mesh's box by up to about
+// a pixel's footprint at its depth (found by a test: a light missing from one sample). The
+// box grows by one pixel footprint at its farthest depth, so culling stays conservative.
+Aabb shadingBounds(const gpu::FrameUniforms& f, const Aabb& box) {
+    if (f.viewport.w <= 1) return box;
+    float maxW = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                    (i & 4) ? box.max.z : box.min.z);
+        maxW = std::max(maxW, (f.viewProj * glm::vec4(p, 1.0f)).w); // view depth is linear
+    }
+    float perDepth = std::max(2.0f / (f.proj[0][0] * float(f.viewport.x)),
+                              2.0f / (f.proj[1][1] * float(f.viewport.y)));
+    Aabb grown = box;
+    grown.min -= glm::vec3(maxW * perDepth);
+    grown.max += glm::vec3(maxW * perDepth);
+    return grown;
+}
+
+struct VisibleDraw {
+    const DrawItem* draw;
+    ScreenRect rect;
+    Aabb bounds; // for the light tests (shadingBounds)
+};
+
+// The draws of `filter` on screen, with their screen rectangles.
+std::vector<VisibleDraw> visibleDraws(const SceneGpu& scene, DrawFilter filter) {
+    std::vector<VisibleDraw> out;
+    for (const DrawItem* d : scene.drawList(filter)) {
+        Aabb bounds = shadingBounds(scene.frame(), d->bounds);
+        ScreenRect r = boxScreenRect(scene.frame(), bounds);
+        if (!r.empty()) out.push_back({d, r, bounds});
+    }
+    return out;
+}
+
+// A draw is lit by a light when its box touches the sphere and their rectangles overlap.
+bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleDraw& d) {
+    if (l.type == TP_LIGHT_DIRECTIONAL) return true;
+    return lightRect.overlaps(d.rect) && sphereTouchesBox(l.position, l.range, d.bounds);
+}
+
+} // namespace
+
+LightPlan planLights(const SceneGpu& scene) {
+    LightPlan plan;
+    const gpu::FrameUniforms& f = scene.frame();
+    auto opaque = visibleDraws(scene, DrawFilter::Opaque);
+    auto masked = visibleDraws(scene, DrawFilter::Mask);
+    auto blended = visibleDraws(scene, DrawFilter::Blend);
+    for (const VisibleDraw& v : opaque) plan.opaque.push_back(v.draw);
+    for (const VisibleDraw& v : masked) plan.masked.push_back(v.draw);
+    for (const VisibleDraw& v : blended) plan.blended.push_back({v.draw, {}});
+
+    const std::vector<gpu::LightGpu>& lights = scene.lightsGpu();
+    for (uint32_t i = 0; i < scene.lightCount(); ++i) {
+        const gpu::LightGpu& l = lights[i];
+        if (l.type == TP_LIGHT_DIRECTIONAL && plan.baseDirectional.size() < TP_MP_MAX_BASE_DIRECTIONAL) {
+            plan.baseDirectional.push_back(i);
+            continue;
+        }
+        ++plan.localLights;
+        LightBatch batch{i, l.type == TP_LIGHT_DIRECTIONAL ? fullScreen(f)
+                                                            : sphereScreenRect(f, l.position, l.range), {}};
+        uint32_t meshes = 0;
+        if (!batch.scissor.empty()) {
+            for (auto* list : {&opaque, &masked})
+                for (const VisibleDraw& v : *list)
+                    if (touches(l, batch.scissor, v)) batch.draws.push_back(v.draw);
+            meshes = uint32_t(batch.draws.size());
+            for (size_t b = 0; b < blended.size(); ++b)
+                if (touches(l, batch.scissor, blended[b])) {
+                    plan.blended[b].lights.push_back({i, batch.scissor});
+                    ++meshes;
+                }
+        }
+        if (meshes == 0) ++plan.lightsSkipped;
+        if (!batch.draws.empty()) plan.batches.push_back(std::move(batch));
+        plan.meshesPerLightSum += meshes;
+        plan.meshesPerLightMax = std::max(plan.meshesPerLightMax, meshes);
+    }
+    return plan;
+}
+
+} // namespace tp::mp

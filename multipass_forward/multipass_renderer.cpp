@@ -1,0 +1,121 @@
+#include "multipass_forward/multipass_renderer.h"
+
+#include <optional>
+
+#include "core/gpu/context.h"
+#include "core/gpu/frame_graph.h"
+#include "core/render/scene_gpu.h"
+#include "multipass_forward/passes.h"
+
+namespace tp {
+namespace {
+
+using namespace mp;
+
+class MultipassForwardRenderer final : public Renderer {
+  public:
+    explicit MultipassForwardRenderer(const RendererCreateInfo& info)
+        : ctx_(info.ctx), scene_(info.scene), settings_(info.settings),
+          accumFormat_(info.settings.accum == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT
+                                                    : VK_FORMAT_R32G32B32A32_SFLOAT),
+          plan_(planLights(info.scene)) {}
+
+    ~MultipassForwardRenderer() override {
+        prepass_.reset();
+        base_.reset();
+        lights_.reset();
+        blended_.reset();
+        if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    }
+
+    void plan(FrameGraph& graph) override {
+        createTargets(graph);
+        // The last pass that shades resolves the per-sample target into hdr.
+        const bool hasLights = !plan_.batches.empty(), hasBlended = !plan_.blended.empty();
+        graph.addPass("depth_prepass", DepthPrepass::uses(t_), [this](PassContext& pc) { prepass_->record(pc, t_); });
+        bool last = !hasLights && !hasBlended;
+        graph.addPass("base_pass", shadingUses(t_, last), [this, last](PassContext& pc) { base_->record(pc, t_, last); });
+        if (hasLights) {
+            last = !hasBlended;
+            graph.addPass("light_passes", shadingUses(t_, last),
+                          [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
+        }
+        if (hasBlended)
+            graph.addPass("blended", shadingUses(t_, true), [this](PassContext& pc) { blended_->record(pc, t_, true); });
+        graph.exportResource("hdr", t_.hdr);
+        graph.exportResource("depth", t_.depth);
+    }
+
+    void prepare(FrameGraph&) override {
+        layout_ = scene_.createPipelineLayout();
+        PassEnv env{ctx_, scene_, settings_, plan_, layout_, accumFormat_};
+        prepass_ = std::make_unique<DepthPrepass>(env);
+        base_ = std::make_unique<BasePass>(env);
+        lights_ = std::make_unique<LightPasses>(env);
+        blended_ = std::make_unique<BlendedPass>(env);
+    }
+
+    RendererStats stats() const override;
+
+  private:
+    void createTargets(FrameGraph& graph) {
+        const bool fp16 = accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT;
+        const std::string accum = fp16 ? "accumulated radiance, fp16 (resolved)" : "accumulated radiance, fp32 (resolved)";
+        t_.hdr = graph.createImage("hdr", {accumFormat_, 0, 0, VK_SAMPLE_COUNT_1_BIT, accum});
+        t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                               "prepass depth (resolved: sample 0)"});
+        if (settings_.msaa > 1) {
+            const auto samples = VkSampleCountFlagBits(settings_.msaa);
+            t_.hdrMsaa = graph.createImage("hdr_msaa", {accumFormat_, 0, 0, samples, "per-sample accumulation"});
+            t_.depthMsaa = graph.createImage("depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "per-sample prepass depth"});
+        }
+    }
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    RenderSettings settings_;
+    VkFormat accumFormat_;
+    LightPlan plan_;
+    Targets t_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    std::unique_ptr<DepthPrepass> prepass_;
+    std::unique_ptr<BasePass> base_;
+    std::unique_ptr<LightPasses> lights_;
+    std::unique_ptr<BlendedPass> blended_;
+};
+
+RendererStats MultipassForwardRenderer::stats() const {
+    RendererStats s;
+    auto count = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
+    const uint32_t lightDraws = lights_ ? lights_->draws() : 0, blendDraws = blended_ ? blended_->draws() : 0;
+    const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0, baseDraws = base_ ? base_->draws() : 0;
+    count("draws", double(prepassDraws + baseDraws + lightDraws + blendDraws));
+    count("depth_prepass_draws", prepassDraws);
+    count("base_pass_draws", baseDraws);
+    count("light_passes_draws", lightDraws);
+    count("blended_draws", blendDraws);
+    count("local_lights", plan_.localLights);
+    count("lights_skipped", plan_.lightsSkipped);
+    count("base_pass_directional_lights", double(plan_.baseDirectional.size()));
+    count("meshes_per_light_mean",
+          plan_.localLights ? double(plan_.meshesPerLightSum) / double(plan_.localLights) : 0.0);
+    count("meshes_per_light_max", plan_.meshesPerLightMax);
+    count("accumulation_bits", accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT ? 16.0 : 32.0);
+    if (plan_.batches.empty())
+        s.leftOut.push_back({"light_passes", plan_.localLights ? "no local light touches a mesh on screen"
+                                                               : "no point or spot lights"});
+    if (plan_.blended.empty())
+        s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend) ? "no blended draw on screen"
+                                                                               : "no blended materials"});
+    if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+    if (plan_.masked.empty()) s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
+    return s;
+}
+
+} // namespace
+
+std::unique_ptr<Renderer> createMultipassForwardRenderer(const RendererCreateInfo& info) {
+    return std::make_unique<MultipassForwardRenderer>(info);
+}
+
+} // namespace tp

@@ -1,0 +1,111 @@
+#pragma once
+// The passes of multipass forward, one file each: depth_prepass.cpp, base_pass.cpp,
+// light_passes.cpp, blended_pass.cpp. Each creates its pipelines in its constructor (after
+// the graph allocated resources) and records into the targets below. They share the scene's
+// pipeline layout (set 0 + DrawPush); nothing has a set 1.
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
+#include "core/render/settings.h"
+#include "multipass_forward/light_plan.h"
+
+namespace tp {
+class GpuContext;
+}
+
+namespace tp::mp {
+
+// The accumulation target and depth every pass renders into: the single-sample exported
+// images at 1x, the per-sample ones under MSAA (resolved by the last pass into hdr).
+struct Targets {
+    ResourceHandle hdr, depth;          // exported
+    ResourceHandle hdrMsaa, depthMsaa;  // valid only when msaa > 1
+    ResourceHandle color() const { return hdrMsaa.valid() ? hdrMsaa : hdr; }
+    ResourceHandle depthTarget() const { return depthMsaa.valid() ? depthMsaa : depth; }
+};
+
+struct PassEnv {
+    GpuContext& ctx;
+    const SceneGpu& scene;
+    const RenderSettings& settings;
+    const LightPlan& plan;
+    VkPipelineLayout layout;
+    VkFormat accumFormat; // RGBA16F or RGBA32F (settings.accum)
+};
+
+// Frame-graph uses of a pass that blends into the accumulation target with the prepass
+// depth read-only; `resolve`: this is the last such pass and averages into hdr.
+std::vector<PassUse> shadingUses(const Targets& t, bool resolve);
+// beginRendering for those uses (`clear`: the base pass starts the accumulation).
+void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear);
+// Pipeline description shared by the shading passes: per-sample shading under MSAA (as the
+// reference, so both shade the same points), scene layout, accumulation format.
+GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
+// One scene draw; `light` goes to DrawPush.TP_MP_LIGHT_INDEX (ignored by non-light shaders).
+void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light = 0);
+void setScissor(VkCommandBuffer cmd, const ScreenRect& r);
+void destroyPipeline(GpuContext& ctx, VkPipeline& pipeline);
+
+// 1. Depth only; masked materials discard; blended ones are not drawn.
+class DepthPrepass {
+  public:
+    explicit DepthPrepass(const PassEnv& env);
+    ~DepthPrepass();
+    static std::vector<PassUse> uses(const Targets& t);
+    void record(PassContext& pc, const Targets& t);
+    uint32_t draws() const { return draws_; }
+
+  private:
+    const PassEnv env_;
+    VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
+    uint32_t draws_ = 0;
+};
+
+// 2. Ambient + emissive + directional lights of opaque and masked surfaces, depth EQUAL.
+class BasePass {
+  public:
+    explicit BasePass(const PassEnv& env);
+    ~BasePass();
+    void record(PassContext& pc, const Targets& t, bool resolve);
+    uint32_t draws() const { return draws_; }
+
+  private:
+    const PassEnv env_;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    uint32_t draws_ = 0;
+};
+
+// 3. Every local light's additive pass over the opaque and masked draws it touches,
+// scissored to the light's screen rectangle; one graph pass, so one timing.
+class LightPasses {
+  public:
+    explicit LightPasses(const PassEnv& env);
+    ~LightPasses();
+    void record(PassContext& pc, const Targets& t, bool resolve);
+    uint32_t draws() const { return draws_; }
+
+  private:
+    const PassEnv env_;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    uint32_t draws_ = 0;
+};
+
+// 4. Blended draws back to front; each one's base pass composites over what is behind it,
+// then its lights add alpha-scaled, before the next draw starts.
+class BlendedPass {
+  public:
+    explicit BlendedPass(const PassEnv& env);
+    ~BlendedPass();
+    void record(PassContext& pc, const Targets& t, bool resolve);
+    uint32_t draws() const { return draws_; }
+
+  private:
+    const PassEnv env_;
+    VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE;
+    uint32_t draws_ = 0;
+};
+
+} // namespace tp::mp

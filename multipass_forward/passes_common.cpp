@@ -1,0 +1,49 @@
+#include <optional>
+
+#include "core/gpu/context.h"
+#include "core/gpu/rendering.h"
+#include "multipass_forward/passes.h"
+
+namespace tp::mp {
+
+std::vector<PassUse> shadingUses(const Targets& t, bool resolve) {
+    std::vector<PassUse> uses = {{t.color(), Use::ColorAttachment}, {t.depthTarget(), Use::DepthTest}};
+    if (resolve && t.hdrMsaa.valid()) uses.push_back({t.hdr, Use::ColorResolve});
+    return uses;
+}
+
+void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear) {
+    ColorTarget color{t.color(), resolve && t.hdrMsaa.valid() ? t.hdr : ResourceHandle{}, clear};
+    DepthTarget depth{t.depthTarget(), {}, false, true};
+    beginRendering(pc, {color}, depth);
+}
+
+GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode) {
+    GraphicsPipelineDesc d;
+    d.specConstants = env.scene.specConstants(mode);
+    d.colorFormats = {env.accumFormat};
+    d.samples = VkSampleCountFlagBits(env.settings.msaa);
+    d.sampleShading = env.settings.msaa > 1;
+    d.layout = env.layout;
+    return d;
+}
+
+void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light) {
+    gpu::DrawPush push{d.material, 0, 0, 0};
+    push.TP_MP_LIGHT_INDEX = light;
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdSetCullMode(cmd, d.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+    vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+}
+
+void setScissor(VkCommandBuffer cmd, const ScreenRect& r) {
+    VkRect2D rect{{r.x0, r.y0}, {uint32_t(r.x1 - r.x0), uint32_t(r.y1 - r.y0)}};
+    vkCmdSetScissor(cmd, 0, 1, &rect);
+}
+
+void destroyPipeline(GpuContext& ctx, VkPipeline& pipeline) {
+    if (pipeline) vkDestroyPipeline(ctx.device, pipeline, nullptr);
+    pipeline = VK_NULL_HANDLE;
+}
+
+} // namespace tp::mp

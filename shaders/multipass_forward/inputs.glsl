@@ -1,0 +1,11 @@
+// The interpolants of scene.vert, as every multipass fragment stage receives them.
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+layout(location = 4) in vec4 inColor;
+
+MaterialSample evalFragmentMaterial() {
+    return evalMaterial(materials[draw.materialIndex], inPosition, inNormal, inUv, inTangent,
+                        inColor, gl_FrontFacing);
+}

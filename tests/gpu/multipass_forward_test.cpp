@@ -1,0 +1,313 @@
+// Multipass forward against the reference (lavapipe, validation on, small resolutions).
+//
+// Tolerances (docs/multipass_forward.md): both renderers run the same material and light
+// code on the same samples, so what differs is the summation: the reference sums
+// ambient + emissive + every light in fp64 and rounds once; multipass forward sums in the
+// shader (base pass) and then in the blend unit, one rounding per light pass. With all terms
+// non-negative, each rounding is at most eps * (final value), so per pixel and channel
+//     |mp - ref| <= (n + kExtraRoundings) * eps * ref + n * kTiny
+// with n the number of lights, eps = 2^-24 for fp32 and 2^-11 for fp16 accumulation, and
+// kExtraRoundings covering the base pass's own sum, the reference's final rounding and the
+// MSAA resolve. kTiny covers values below the target format's normal range.
+#include <cmath>
+
+#include "core/image/metrics.h"
+#include "core/scene/lights.h"
+#include "core/scene/procedural.h"
+#include "gpu_test_util.h"
+#include "multipass_forward/light_plan.h"
+#include "core/render/camera.h"
+
+namespace tp::test {
+namespace {
+
+constexpr double kEps32 = 1.0 / 16777216.0; // 2^-24
+constexpr double kEps16 = 1.0 / 2048.0;     // 2^-11
+constexpr double kExtraRoundings = 4.0;
+
+struct BoundCheck {
+    double worstRatio = 0; // max over pixels of |mp - ref| / bound (must stay <= 1)
+    double maxAbs = 0;
+    double rmse = 0;
+};
+
+// Checks every pixel (RGB) of `mp` against `ref` with the bound above; `skip` masks pixels.
+BoundCheck checkBound(const ImageRGBA& mp, const ImageRGBA& ref, double n, double eps,
+                      const std::vector<bool>* skip = nullptr) {
+    BoundCheck c;
+    double sq = 0;
+    size_t count = 0;
+    const double tiny = eps == kEps16 ? 6.0e-8 : 1.0e-12;
+    for (size_t p = 0; p < ref.pixelCount(); ++p) {
+        if (skip && (*skip)[p]) continue;
+        for (int ch = 0; ch < 3; ++ch) {
+            double r = ref.rgba[p * 4 + ch], t = mp.rgba[p * 4 + ch], d = std::abs(t - r);
+            double bound = (n + kExtraRoundings) * eps * std::abs(r) + (n + 1) * tiny + 1e-30;
+            c.worstRatio = std::max(c.worstRatio, d / bound);
+            c.maxAbs = std::max(c.maxAbs, d);
+            sq += d * d;
+            ++count;
+        }
+    }
+    c.rmse = count ? std::sqrt(sq / double(count)) : 0.0;
+    return c;
+}
+
+double statOf(const RunResult& run, const std::string& name) {
+    for (const auto& [k, v] : run.stats.counters)
+        if (k == name) return v;
+    ADD_FAILURE() << "no counter " << name;
+    return -1;
+}
+
+Light point(glm::vec3 pos, float range, float intensity, glm::vec3 color = glm::vec3(1.0f, 0.9f, 0.8f)) {
+    Light l;
+    l.position = pos;
+    l.range = range;
+    l.intensity = intensity;
+    l.color = color;
+    return l;
+}
+
+std::vector<Light> generated(const Scene& scene, uint32_t count) {
+    LightGenOptions o;
+    o.count = count;
+    o.seed = 7;
+    return generateLights(scene.bounds, o);
+}
+
+// Pixels the blended geometry covers: where the reference changes when blended meshes go.
+std::vector<bool> blendedCoverage(GpuContext& ctx, const Scene& scene, const RenderSettings& s,
+                                  const ImageRGBA& ref) {
+    Scene opaque = scene;
+    std::erase_if(opaque.meshes, [&](const Mesh& m) {
+        return scene.materials[m.material].alphaMode == AlphaMode::Blend;
+    });
+    SceneGpu gpu(ctx, opaque);
+    gpu.setLights(opaque.lights);
+    ImageRGBA without = runOrFail(ctx, gpu, "reference", s).hdr;
+    std::vector<bool> mask(ref.pixelCount());
+    for (size_t p = 0; p < mask.size(); ++p)
+        for (int ch = 0; ch < 3; ++ch) mask[p] = mask[p] || ref.rgba[p * 4 + ch] != without.rgba[p * 4 + ch];
+    return mask;
+}
+
+struct Case {
+    uint32_t lights;
+    uint32_t msaa;
+};
+
+// Renders the scene with each case's lights through both renderers and checks the fp32
+// bound (on pixels not covered by blended geometry when `excludeBlended`).
+void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w, uint32_t h,
+                  bool excludeBlended) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (const Case& c : cases) {
+        Scene scene = base;
+        scene.lights = generated(base, c.lights);
+        SceneGpu gpu(*ctx, scene);
+        gpu.setLights(scene.lights);
+        RenderSettings s;
+        s.width = w;
+        s.height = h;
+        s.msaa = c.msaa;
+        RunResult ref = runOrFail(*ctx, gpu, "reference", s);
+        RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
+        ASSERT_EQ(mp.hdr.rgba.size(), ref.hdr.rgba.size());
+        std::vector<bool> mask;
+        if (excludeBlended) mask = blendedCoverage(*ctx, scene, s, ref.hdr);
+        BoundCheck b = checkBound(mp.hdr, ref.hdr, c.lights, kEps32, excludeBlended ? &mask : nullptr);
+        EXPECT_LE(b.worstRatio, 1.0) << c.lights << " lights, " << c.msaa << "x: max abs " << b.maxAbs;
+        EXPECT_EQ(computeError(mp.hdr, ref.hdr).nanInfCount, 0u);
+        if (c.lights > 0) {
+            EXPECT_GT(statOf(mp, "light_passes_draws"), 0.0);
+        }
+        std::printf("[   info   ] %u lights %ux: worst/bound %.3g, max abs %.3g, rmse %.3g\n", c.lights,
+                    c.msaa, b.worstRatio, b.maxAbs, b.rmse);
+        if (excludeBlended) {
+            BoundCheck all = checkBound(mp.hdr, ref.hdr, c.lights, kEps32);
+            std::printf("[   info   ]   incl. blended pixels: max abs %.3g, rmse %.3g\n", all.maxAbs, all.rmse);
+        }
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(MultipassForward, MatchesReferenceOnFloorFp32) {
+    Scene scene = makeFloorScene({});
+    compareCases(scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96, 64, false);
+}
+
+TEST(MultipassForward, MatchesReferenceOnCourtyardFp32) {
+    Result<Scene> scene = makeBuiltinScene("courtyard-small");
+    ASSERT_TRUE(scene.ok());
+    compareCases(*scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96, 64, true);
+}
+
+// fp16 accumulation: within (n + 4) * 2^-11 * ref, and measurably worse than fp32.
+TEST(MultipassForward, Fp16ErrorWithinBoundAndLargerThanFp32) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Result<Scene> base = makeBuiltinScene("courtyard-small");
+    ASSERT_TRUE(base.ok());
+    for (uint32_t n : {1u, 64u}) {
+        Scene scene = *base;
+        scene.lights = generated(scene, n);
+        SceneGpu gpu(*ctx, scene);
+        gpu.setLights(scene.lights);
+        RenderSettings s;
+        s.width = 96;
+        s.height = 64;
+        ImageRGBA ref = runOrFail(*ctx, gpu, "reference", s).hdr;
+        ImageRGBA fp32 = runOrFail(*ctx, gpu, "multipass_forward", s).hdr;
+        s.accum = "fp16";
+        RunResult fp16 = runOrFail(*ctx, gpu, "multipass_forward", s);
+        EXPECT_EQ(statOf(fp16, "accumulation_bits"), 16.0);
+        BoundCheck b16 = checkBound(fp16.hdr, ref, n, kEps16), b32 = checkBound(fp32, ref, n, kEps32);
+        EXPECT_LE(b16.worstRatio, 1.0) << n << " lights, max abs " << b16.maxAbs;
+        EXPECT_GT(b16.rmse, 10.0 * b32.rmse) << n << " lights";
+        std::printf("[   info   ] %u lights: fp16 rmse %.3g max abs %.3g (worst/bound %.3g); fp32 rmse %.3g\n",
+                    n, b16.rmse, b16.maxAbs, b16.worstRatio, b32.rmse);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+Mesh quad(glm::vec3 origin, glm::vec3 u, glm::vec3 v, uint32_t material) {
+    Mesh m;
+    m.name = "quad";
+    m.material = material;
+    glm::vec3 n = glm::normalize(glm::cross(u, v));
+    glm::vec3 corners[4] = {origin, origin + u, origin + u + v, origin + v};
+    for (int i = 0; i < 4; ++i) {
+        m.positions.push_back(corners[i]);
+        m.normals.push_back(n);
+        m.tangents.push_back(glm::vec4(glm::normalize(u), 1.0f));
+        m.uvs.push_back(glm::vec2(i == 1 || i == 2, i >= 2));
+        m.colors.push_back(glm::vec4(1.0f));
+    }
+    m.indices = {0, 1, 2, 0, 2, 3};
+    return m;
+}
+
+// A light whose sphere touches no mesh, and one behind the camera, issue no draw; a light
+// touching only the box draws only the box.
+TEST(MultipassForward, LightsTouchingNoMeshIssueNoDraw) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = makeFloorScene({point({0, 40, 0}, 3.0f, 50.0f),     // above everything
+                                  point({0, 6, 14}, 2.0f, 50.0f)});   // behind the camera
+    SceneGpu gpu(*ctx, scene);
+    gpu.setLights(scene.lights);
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    RunResult none = runOrFail(*ctx, gpu, "multipass_forward", s);
+    EXPECT_EQ(statOf(none, "lights_skipped"), 2.0);
+    EXPECT_EQ(statOf(none, "light_passes_draws"), 0.0);
+    EXPECT_EQ(statOf(none, "meshes_per_light_max"), 0.0);
+    EXPECT_EQ(std::count(none.passes.begin(), none.passes.end(), "light_passes"), 0);
+
+    scene.lights.push_back(point({0, 1.6f, 0}, 0.8f, 5.0f)); // above the box, off the floor
+    gpu.setLights(scene.lights);
+    RunResult one = runOrFail(*ctx, gpu, "multipass_forward", s);
+    EXPECT_EQ(statOf(one, "lights_skipped"), 2.0);
+    EXPECT_EQ(statOf(one, "light_passes_draws"), 1.0);
+    EXPECT_EQ(statOf(one, "meshes_per_light_max"), 1.0);
+    RunResult ref = runOrFail(*ctx, gpu, "reference", s);
+    EXPECT_LE(checkBound(one.hdr, ref.hdr, 3, kEps32).worstRatio, 1.0);
+    expectNoValidationMessages(*ctx);
+}
+
+// Overlapping blended panes (separate draws) over the floor, lit by several lights: each
+// draw finishes its passes before the next, so the composite equals the reference's.
+TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    std::vector<Light> lights = {point({-1, 2, 2}, 5.0f, 6.0f), point({1.5f, 1, 3}, 4.0f, 4.0f, {0.3f, 0.6f, 1.0f}),
+                                 point({0, 3, -1}, 6.0f, 8.0f, {1.0f, 0.5f, 0.2f})};
+    Scene scene = makeFloorScene(lights);
+    const glm::vec4 tints[3] = {{1, 0.2f, 0.2f, 0.5f}, {0.2f, 1, 0.3f, 0.35f}, {0.3f, 0.4f, 1, 0.7f}};
+    for (int i = 0; i < 3; ++i) {
+        Material m;
+        m.name = "pane";
+        m.baseColorFactor = tints[i];
+        m.roughnessFactor = 0.4f;
+        m.alphaMode = AlphaMode::Blend;
+        m.doubleSided = true;
+        scene.materials.push_back(m);
+        float z = 2.0f - 1.2f * float(i), x = -2.0f + 0.8f * float(i);
+        scene.meshes.push_back(quad({x, 0.2f, z}, {2.5f, 0, 0}, {0, 2.0f, 0}, uint32_t(scene.materials.size() - 1)));
+    }
+    scene.computeBounds();
+    SceneGpu gpu(*ctx, scene);
+    gpu.setLights(scene.lights);
+    for (uint32_t msaa : {1u, 4u}) {
+        RenderSettings s;
+        s.width = 96;
+        s.height = 64;
+        s.msaa = msaa;
+        RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
+        RunResult ref = runOrFail(*ctx, gpu, "reference", s);
+        EXPECT_EQ(statOf(mp, "blended_draws"), 3.0 + 9.0); // 3 composites + every light on every pane
+        BoundCheck b = checkBound(mp.hdr, ref.hdr, double(lights.size()), kEps32);
+        EXPECT_LE(b.worstRatio, 1.0) << msaa << "x: max abs " << b.maxAbs;
+        std::printf("[   info   ] panes %ux: worst/bound %.3g, max abs %.3g\n", msaa, b.worstRatio, b.maxAbs);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// The scissor holds the sphere: points on the sphere project inside the rectangle (or the
+// rectangle is the full screen when the sphere crosses the near plane), and it is tight.
+TEST(MultipassForward, SphereScissorContainsTheSphere) {
+    gpu::FrameUniforms f{};
+    Camera cam;
+    cam.position = {0, 2, 6};
+    cam.target = {0, 0, 0};
+    cam.znear = 0.1f;
+    const uint32_t w = 160, h = 90;
+    f.view = viewMatrix(cam);
+    f.proj = reverseZPerspective(cam.yfov, float(w) / float(h), cam.znear, 0.0f);
+    f.viewProj = f.proj * f.view;
+    f.viewport = glm::uvec4(w, h, 0, 1);
+    f.projParams = glm::vec4(cam.znear, 0, 0, 0);
+    uint32_t seed = 12345, full = 0, empty = 0, checked = 0;
+    auto rnd = [&] { seed = seed * 1664525u + 1013904223u; return float(seed >> 8) / float(1 << 24); };
+    for (int i = 0; i < 2000; ++i) {
+        glm::vec3 c(rnd() * 24 - 12, rnd() * 16 - 6, rnd() * 24 - 16);
+        float r = 0.05f + rnd() * 4.0f;
+        mp::ScreenRect rect = mp::sphereScreenRect(f, c, r);
+        glm::vec3 cv = glm::vec3(f.view * glm::vec4(c, 1));
+        if (-cv.z - r <= cam.znear && -cv.z + r > cam.znear) {
+            EXPECT_TRUE(rect.x0 == 0 && rect.y0 == 0 && rect.x1 == int(w) && rect.y1 == int(h));
+            ++full;
+            continue;
+        }
+        glm::vec2 lo(1e9f), hi(-1e9f);
+        for (int k = 0; k < 400; ++k) { // points on the sphere in front of the near plane
+            float zz = rnd() * 2 - 1, phi = rnd() * 6.2831853f, s = std::sqrt(1 - zz * zz);
+            glm::vec3 p = c + r * glm::vec3(s * std::cos(phi), s * std::sin(phi), zz);
+            glm::vec4 clip = f.viewProj * glm::vec4(p, 1);
+            if (clip.w <= cam.znear) continue;
+            glm::vec2 px((clip.x / clip.w * 0.5f + 0.5f) * w, (0.5f - clip.y / clip.w * 0.5f) * h);
+            if (px.x < 0 || px.y < 0 || px.x >= w || px.y >= h) continue;
+            EXPECT_TRUE(px.x >= rect.x0 && px.x <= rect.x1 && px.y >= rect.y0 && px.y <= rect.y1)
+                << "sphere " << c.x << "," << c.y << "," << c.z << " r " << r;
+            lo = glm::min(lo, px);
+            hi = glm::max(hi, px);
+            ++checked;
+        }
+        if (rect.empty()) {
+            EXPECT_GT(lo.x, hi.x) << "empty rectangle for a visible sphere";
+            ++empty;
+        } else if (lo.x < hi.x && rect.x0 > 0 && rect.x1 < int(w) && rect.y0 > 0 && rect.y1 < int(h)) {
+            // Tight: sampled silhouette and rectangle agree within the rounding and sampling.
+            EXPECT_LE(rect.x1 - rect.x0, hi.x - lo.x + 4 + 0.1f * (hi.x - lo.x));
+        }
+    }
+    EXPECT_GT(full, 10u);
+    EXPECT_GT(empty, 10u);
+    EXPECT_GT(checked, 10000u);
+}
+
+} // namespace
+} // namespace tp::test
