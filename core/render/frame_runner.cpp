@@ -27,14 +27,21 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
                               const RunOptions& options) {
     scene.setView(settings.width, settings.height, settings.msaa);
     RendererCreateInfo info{ctx, scene, features, settings};
-    std::unique_ptr<Renderer> renderer = entry.factory(info);
+    std::unique_ptr<Renderer> renderer;
     FrameGraph graph(ctx, entry.name, settings.width, settings.height);
-    renderer->plan(graph);
-    ResourceHandle hdr = graph.exported("hdr"), depth = graph.exported("depth");
-    if (!hdr.valid() || !depth.valid())
-        return Error{"pipeline " + entry.name + " does not export both 'hdr' and 'depth'"};
-    graph.compile();
-    renderer->prepare(graph);
+    ResourceHandle hdr, depth;
+    try {
+        renderer = entry.factory(info);
+        renderer->plan(graph);
+        hdr = graph.exported("hdr");
+        depth = graph.exported("depth");
+        if (!hdr.valid() || !depth.valid())
+            return Error{"pipeline " + entry.name + " does not export both 'hdr' and 'depth'"};
+        graph.compile();
+        renderer->prepare(graph);
+    } catch (const RendererError& e) {
+        return Error{"pipeline " + entry.name + ": " + e.what()};
+    }
 
     GpuProfiler profiler(ctx, 64);
     VkCommandBuffer cmd = ctx.allocateCommandBuffer();

@@ -17,6 +17,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,14 @@ namespace tp {
 class GpuContext;
 class SceneGpu;
 class FrameGraph;
+
+// Thrown by a renderer's constructor, plan() or prepare() when this configuration cannot
+// be built (e.g. a buffer beyond maxStorageBufferRange); runRenderer turns it into an Error
+// (one line for the user) instead of a crash.
+class RendererError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
 
 struct LeftOut {
     std::string what;

@@ -6,6 +6,56 @@
 namespace tp::gpu {
 #endif
 
+// ---- set 1 of the Forward+ passes ----
+#define TP_FP_BINDING_TILES 0   // buffer FpTileLists[tileCount]: per-tile counts, starts, drops, depth bounds
+#define TP_FP_BINDING_INDICES 1 // buffer uint[]: light indices (compact, fixed) or nodes (linked: {light, next})
+#define TP_FP_BINDING_PARAMS 2  // buffer FpParams + uint data[] (uploaded once per configuration)
+#define TP_FP_BINDING_DEPTH 3   // culling only: the prepass depth (sampler2D, or sampler2DMS with MSAA)
+#define TP_FP_BINDING_COUNTER 4 // culling only, "linked" layout: node-pool allocation counter
+
+// ---- specialization constants (ids after the shared ones) ----
+#define TP_FP_SPEC_TILE_X 10    // culling workgroup width = tile size (8, 16, 32)
+#define TP_FP_SPEC_TILE_Y 11    // culling workgroup height = tile size
+#define TP_FP_SPEC_TILE_SIZE 12 // shading: tile size in pixels
+#define TP_FP_SPEC_SAMPLES 13   // culling: depth samples per pixel
+#define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
+#define TP_FP_SPEC_LAYOUT 15    // TP_FP_LAYOUT_*
+
+#define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
+#define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted
+#define TP_FP_LAYOUT_LINKED 2u  // head per tile + node pool with an atomic counter
+
+// Lights are tested in chunks of TP_FP_CHUNK_WORDS * 32; each chunk's survivors are a
+// bitmask in shared memory, compacted in light-index order (deterministic lists).
+#define TP_FP_CHUNK_WORDS 32u
+#define TP_FP_CHUNK_LIGHTS (TP_FP_CHUNK_WORDS * 32u)
+
+// What the culling pass leaves for each tile. List 0 = opaque (bounded by the tile's
+// [min, max] depth), list 1 = transparent (near plane to the tile's farthest depth).
+TP_STRUCT(FpTileLists) {
+    uint count[2];   // lights in each list (kept; never more than the storage holds)
+    uint start[2];   // compact/fixed: first slot in indices[]; linked: head node (count bounds the walk)
+    uint dropped[2]; // lights that passed the test but did not fit (fixed capacity, pool overflow)
+    float nearDepth; // opaque depth bounds, reverse-Z: nearDepth >= farDepth;
+    float farDepth;  // nearDepth == 0: no geometry in the tile (sky), opaque list empty
+};
+
+// Uploaded once per configuration; followed in the same buffer by uint data[]:
+//   data[0 .. directionalCount)                     directional light indices (shaded by every fragment)
+//   data[directionalCount .. + localCount)          point/spot light indices (culled)
+//   data[tileOffsetBase .. + tileCount + 1)         compact layout: first slot of each tile (prefix sum)
+TP_STRUCT(FpParams) {
+    uvec4 tiles;  // tilesX, tilesY, tileCount, tileSize
+    uvec4 lights; // directionalCount, localCount, tileOffsetBase, tileCapacity (fixed layout)
+    uvec4 lists;  // listStride (slots of list 0 before list 1), poolNodes (linked), unused, unused
+};
+
+#ifndef TP_GLSL
+static_assert(sizeof(FpTileLists) == 32);
+static_assert(offsetof(FpTileLists, nearDepth) == 24);
+static_assert(sizeof(FpParams) == 48);
+#endif
+
 #ifndef TP_GLSL
 } // namespace tp::gpu
 #endif

@@ -1,0 +1,36 @@
+#pragma once
+// Forward+ statistics and debug images from the read-back tile lists.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/image/image.h"
+#include "forwardplus/tile_bounds.h"
+#include "include/shared.h"
+
+namespace tp::fp {
+
+struct TileListSummary {
+    double mean = 0.0;     // lights per tile (stored), over every tile
+    uint32_t max = 0;      // lights in the fullest tile (stored)
+    uint32_t skyTiles = 0; // tiles with no geometry
+    double tested = 0.0;   // light-vs-tile tests made (sky tiles test nothing for the opaque list)
+    double passed = 0.0;   // tests passed (stored + dropped)
+    double stored = 0.0;
+    double dropped = 0.0;
+};
+
+TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights);
+
+// Lights per tile (list 0 opaque, 1 transparent) on the inferno scale from 0 to the largest
+// count, with the shared legend under it; tiles that dropped lights are outlined in
+// bright green (overflow of the "fixed" layout).
+ImageRGBA lightsPerTileHeatMap(const TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles, uint32_t list);
+
+// Tile depth bounds as view distance, nearest | farthest side by side on one scale (0 to
+// the farthest bound); tiles without geometry are magenta (the scale's "not a number").
+ImageRGBA tileDepthBoundsImage(const TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles,
+                               const glm::mat4& invProj);
+
+} // namespace tp::fp

@@ -1,0 +1,468 @@
+#include "forwardplus/forwardplus_renderer.h"
+
+#include <algorithm>
+#include <cstring>
+#include <optional>
+#include <string>
+
+#include "core/gpu/context.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/readback.h"
+#include "core/gpu/rendering.h"
+#include "core/gpu/vk_check.h"
+#include "core/image/difference.h"
+#include "core/render/scene_gpu.h"
+#include "forwardplus/forwardplus_debug.h"
+#include "forwardplus/tile_bounds.h"
+
+namespace tp {
+namespace {
+
+constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT; // storage-precision choice (docs)
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+uint32_t layoutFromName(const std::string& name) {
+    if (name == "compact") return TP_FP_LAYOUT_COMPACT;
+    if (name == "fixed") return TP_FP_LAYOUT_FIXED;
+    if (name == "linked") return TP_FP_LAYOUT_LINKED;
+    throw RendererError("unknown light-list layout '" + name + "' (compact, fixed, linked)");
+}
+
+class ForwardPlusRenderer final : public Renderer {
+  public:
+    explicit ForwardPlusRenderer(const RendererCreateInfo& info)
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
+        if (settings_.tileSize != 8 && settings_.tileSize != 16 && settings_.tileSize != 32)
+            throw RendererError("tile size " + std::to_string(settings_.tileSize) + " (8, 16 or 32)");
+        layout_ = layoutFromName(settings_.lightLists);
+        if (layout_ == TP_FP_LAYOUT_FIXED && settings_.tileCapacity == 0)
+            throw RendererError("tile capacity must be at least 1");
+        grid_ = fp::makeTileGrid(settings_.width, settings_.height, settings_.tileSize);
+        // Two lists only when something is blended (and drawn).
+        twoLists_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
+        numLists_ = twoLists_ ? 2 : 1;
+        classes_ = fp::classifyLights(scene_.lightsGpu());
+        sizeLists();
+    }
+
+    ~ForwardPlusRenderer() override {
+        VkDevice d = ctx_.device;
+        for (VkPipeline p : {prepassOpaque_, prepassMask_, cull_, shade_[0], shade_[1], shade_[2]})
+            if (p) vkDestroyPipeline(d, p, nullptr);
+        if (cullLayout_) vkDestroyPipelineLayout(d, cullLayout_, nullptr);
+        if (shadeLayout_) vkDestroyPipelineLayout(d, shadeLayout_, nullptr);
+        if (sceneLayout_) vkDestroyPipelineLayout(d, sceneLayout_, nullptr);
+        if (pool_) vkDestroyDescriptorPool(d, pool_, nullptr);
+        if (cullSetLayout_) vkDestroyDescriptorSetLayout(d, cullSetLayout_, nullptr);
+        if (shadeSetLayout_) vkDestroyDescriptorSetLayout(d, shadeSetLayout_, nullptr);
+        if (sampler_) vkDestroySampler(d, sampler_, nullptr);
+    }
+
+    void plan(FrameGraph& graph) override {
+        const bool msaa = settings_.msaa > 1;
+        const auto samples = VkSampleCountFlagBits(settings_.msaa);
+        hdr_ = graph.createImage("hdr", {kHdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                         "linear radiance, resolved (RGBA16F)"});
+        depth_ = graph.createImage("depth", {kDepthFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                             msaa ? "depth (resolved: sample 0)" : "prepass depth"});
+        if (msaa) {
+            hdrMsaa_ = graph.createImage("hdr_msaa", {kHdrFormat, 0, 0, samples, "per-sample radiance (RGBA16F)"});
+            depthMsaa_ = graph.createImage("depth_msaa", {kDepthFormat, 0, 0, samples, "per-sample prepass depth"});
+        }
+        const ResourceHandle depthSrc = msaa ? depthMsaa_ : depth_;
+        const ResourceHandle color = msaa ? hdrMsaa_ : hdr_;
+
+        tiles_ = graph.createBuffer("tile_lists", VkDeviceSize(grid_.count()) * sizeof(gpu::FpTileLists),
+                                    "per tile: list counts, starts, drops, depth bounds");
+        indices_ = graph.createBuffer("light_indices", indexBytes_, indexPurpose_);
+        if (layout_ == TP_FP_LAYOUT_LINKED)
+            counter_ = graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
+
+        std::vector<PassUse> prepassUses = {{depthSrc, Use::DepthAttachment}};
+        if (msaa) prepassUses.push_back({depth_, Use::DepthResolve});
+        graph.addPass("depth_prepass", prepassUses, [this](PassContext& pc) { recordPrepass(pc); });
+
+        if (layout_ == TP_FP_LAYOUT_LINKED)
+            graph.addPass("node_counter_reset", {{counter_, Use::TransferDst}}, [this](PassContext& pc) {
+                vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
+            });
+
+        std::vector<PassUse> cullUses = {{depthSrc, Use::Sampled},
+                                         {tiles_, Use::StorageWrite},
+                                         {indices_, Use::StorageWrite}};
+        if (layout_ == TP_FP_LAYOUT_LINKED) cullUses.push_back({counter_, Use::StorageWrite});
+        graph.addPass("light_culling", cullUses, [this](PassContext& pc) { recordCulling(pc); });
+
+        std::vector<PassUse> opaqueUses = {{color, Use::ColorAttachment},
+                                           {depthSrc, Use::DepthTest},
+                                           {tiles_, Use::StorageRead},
+                                           {indices_, Use::StorageRead}};
+        if (msaa && !twoLists_) opaqueUses.push_back({hdr_, Use::ColorResolve});
+        graph.addPass("forward_opaque", opaqueUses, [this](PassContext& pc) { recordShading(pc, false); });
+
+        if (twoLists_) {
+            std::vector<PassUse> uses = {{color, Use::ColorAttachment},
+                                         {depthSrc, Use::DepthTest},
+                                         {tiles_, Use::StorageRead},
+                                         {indices_, Use::StorageRead}};
+            if (msaa) uses.push_back({hdr_, Use::ColorResolve});
+            graph.addPass("forward_transparent", uses, [this](PassContext& pc) { recordShading(pc, true); });
+        }
+        graph.exportResource("hdr", hdr_);
+        graph.exportResource("depth", depth_);
+        // Read back after the frame for the statistics, debug images and tests.
+        graph.exportResource("fp_tile_lists", tiles_);
+        graph.exportResource("fp_light_indices", indices_);
+        if (layout_ == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
+    }
+
+    void prepare(FrameGraph& graph) override {
+        createParams();
+        createDescriptors(graph);
+        createPipelines();
+    }
+
+    void collectStats(FrameGraph& graph) override {
+        std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(tiles_));
+        tileLists_.resize(grid_.count());
+        std::memcpy(tileLists_.data(), bytes.data(), tileLists_.size() * sizeof(gpu::FpTileLists));
+        if (layout_ == TP_FP_LAYOUT_LINKED) {
+            std::vector<uint8_t> c = readbackBuffer(ctx_, graph.buffer(counter_));
+            std::memcpy(&nodesUsed_, c.data(), sizeof(uint32_t));
+        }
+        collected_ = true;
+    }
+
+    std::vector<DebugImage> debugImages(FrameGraph&) override {
+        if (!collected_) return {};
+        std::vector<DebugImage> out;
+        out.push_back({"lights_per_tile", fp::lightsPerTileHeatMap(grid_, tileLists_, 0), true});
+        if (twoLists_)
+            out.push_back({"lights_per_tile_transparent", fp::lightsPerTileHeatMap(grid_, tileLists_, 1), true});
+        out.push_back({"tile_depth_bounds", fp::tileDepthBoundsImage(grid_, tileLists_, scene_.frame().invProj), true});
+        return out;
+    }
+
+    RendererStats stats() const override {
+        RendererStats s;
+        auto add = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
+        add("tile_size", settings_.tileSize);
+        add("tiles", grid_.count());
+        add("light_lists", double(numLists_));
+        add("directional_lights_unculled", double(classes_.directional.size()));
+        add("local_lights", double(classes_.local.size()));
+        add("hdr_storage_bits_per_channel", 16.0);
+        add("light_list_slots", double(slotCount_));
+        if (collected_) {
+            fp::TileListSummary o = fp::summarize(tileLists_, 0, classes_.local.size());
+            add("lights_per_tile_mean", o.mean);
+            add("lights_per_tile_max", double(o.max));
+            add("tiles_without_geometry", double(o.skyTiles));
+            double tested = o.tested, kept = o.passed, dropped = o.dropped, stored = o.stored;
+            if (twoLists_) {
+                fp::TileListSummary t = fp::summarize(tileLists_, 1, classes_.local.size());
+                add("transparent_lights_per_tile_mean", t.mean);
+                add("transparent_lights_per_tile_max", double(t.max));
+                tested += t.tested;
+                kept += t.passed;
+                dropped += t.dropped;
+                stored += t.stored;
+            }
+            add("lights_tested", tested);
+            add("lights_kept", kept);
+            add("lights_stored", stored);
+            add("lights_dropped", dropped);
+            if (layout_ == TP_FP_LAYOUT_LINKED) {
+                add("linked_nodes_used", double(nodesUsed_));
+                add("linked_pool_nodes", double(poolNodes_));
+            }
+        }
+        if (!twoLists_)
+            s.leftOut.push_back({"transparent light list, forward_transparent pass and their memory",
+                                 "the scene has no blended materials"});
+        if (settings_.msaa == 1)
+            s.leftOut.push_back({"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
+        if (!scene_.hasDraws(DrawFilter::Mask))
+            s.leftOut.push_back({"alpha-masked prepass and shading pipelines", "the scene has no masked materials"});
+        if (!features_.spotLights)
+            s.leftOut.push_back({"spot-light shading code (TP_SPEC_HAS_SPOT = 0)", "the scene has no spot lights"});
+        if (layout_ != TP_FP_LAYOUT_LINKED)
+            s.leftOut.push_back({"node counter and its reset pass", "only the 'linked' layout allocates nodes"});
+        s.leftOut.push_back({"fp32 colour storage",
+                             "hdr and hdr_msaa are RGBA16F (storage-precision choice: half the bytes of "
+                             "RGBA32F; each rounding below one ulp, <= 2^-10 relative; values saturate at 65504)"});
+        return s;
+    }
+
+  private:
+    // Sizes the index buffer of the chosen layout, against maxStorageBufferRange.
+    void sizeLists() {
+        const uint64_t tileCount = grid_.count();
+        if (layout_ == TP_FP_LAYOUT_FIXED) {
+            listStride_ = tileCount * settings_.tileCapacity;
+            slotCount_ = listStride_ * numLists_;
+            indexBytes_ = slotCount_ * 4;
+            indexPurpose_ = "light indices, " + std::to_string(settings_.tileCapacity) + " slots per tile" +
+                            (twoLists_ ? " and list" : "");
+        } else {
+            const gpu::FrameUniforms& f = scene_.frame();
+            tileBound_ = fp::conservativeTileBound(grid_, f.view, f.proj, scene_.lightsGpu(), classes_.local);
+            tileOffsets_.assign(tileCount + 1, 0);
+            uint64_t total = 0;
+            for (uint64_t t = 0; t < tileCount; ++t) {
+                tileOffsets_[t] = uint32_t(std::min<uint64_t>(total, 0xffffffffu));
+                total += tileBound_[t];
+            }
+            tileOffsets_[tileCount] = uint32_t(std::min<uint64_t>(total, 0xffffffffu));
+            listStride_ = total;
+            slotCount_ = total * numLists_;
+            if (layout_ == TP_FP_LAYOUT_COMPACT) {
+                indexBytes_ = slotCount_ * 4;
+                indexPurpose_ = "light indices, packed per tile (offsets from a conservative bound)";
+            } else {
+                poolNodes_ = slotCount_;
+                indexBytes_ = poolNodes_ * 8;
+                indexPurpose_ = "linked-list node pool {light, next}, sized so it cannot overflow";
+            }
+        }
+        indexBytes_ = std::max<uint64_t>(indexBytes_, 16);
+        const uint64_t limit = ctx_.caps.maxStorageBufferRange;
+        if (indexBytes_ > limit || slotCount_ > 0xffffffffull)
+            throw RendererError("the '" + settings_.lightLists + "' light lists need " + std::to_string(indexBytes_) +
+                                " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
+                                ctx_.info.name + "; use a larger --tile, a lower --res, fewer lights" +
+                                (layout_ == TP_FP_LAYOUT_FIXED ? " or a smaller --tile-capacity" : ""));
+    }
+
+    void createParams() {
+        gpu::FpParams p{};
+        p.tiles = glm::uvec4(grid_.tilesX, grid_.tilesY, grid_.count(), grid_.tileSize);
+        const uint32_t dirCount = uint32_t(classes_.directional.size());
+        const uint32_t localCount = uint32_t(classes_.local.size());
+        std::vector<uint32_t> data;
+        data.insert(data.end(), classes_.directional.begin(), classes_.directional.end());
+        data.insert(data.end(), classes_.local.begin(), classes_.local.end());
+        const uint32_t offsetBase = uint32_t(data.size());
+        if (layout_ == TP_FP_LAYOUT_COMPACT) data.insert(data.end(), tileOffsets_.begin(), tileOffsets_.end());
+        data.push_back(0); // never empty
+        p.lights = glm::uvec4(dirCount, localCount, offsetBase, settings_.tileCapacity);
+        p.lists = glm::uvec4(uint32_t(listStride_), uint32_t(poolNodes_), 0, 0);
+        std::vector<uint8_t> bytes(sizeof(p) + data.size() * 4);
+        std::memcpy(bytes.data(), &p, sizeof(p));
+        std::memcpy(bytes.data() + sizeof(p), data.data(), data.size() * 4);
+        params_ = createBufferWithData(ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                       {"forwardplus", "", "fp_params",
+                                        "tile grid, light classes" +
+                                            std::string(layout_ == TP_FP_LAYOUT_COMPACT ? ", per-tile offsets" : "")});
+    }
+
+    void createDescriptors(FrameGraph& graph) {
+        const bool msaa = settings_.msaa > 1;
+        VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        si.magFilter = si.minFilter = VK_FILTER_NEAREST;
+        si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+
+        auto binding = [](uint32_t b, VkDescriptorType t, VkShaderStageFlags stages) {
+            return VkDescriptorSetLayoutBinding{b, t, 1, stages, nullptr};
+        };
+        const VkShaderStageFlags C = VK_SHADER_STAGE_COMPUTE_BIT, F = VK_SHADER_STAGE_FRAGMENT_BIT;
+        std::vector<VkDescriptorSetLayoutBinding> cull = {
+            binding(TP_FP_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C),
+            binding(TP_FP_BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C),
+            binding(TP_FP_BINDING_PARAMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C),
+            binding(TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, C)};
+        if (layout_ == TP_FP_LAYOUT_LINKED)
+            cull.push_back(binding(TP_FP_BINDING_COUNTER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C));
+        std::vector<VkDescriptorSetLayoutBinding> shade = {
+            binding(TP_FP_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, F),
+            binding(TP_FP_BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, F),
+            binding(TP_FP_BINDING_PARAMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, F)};
+        auto makeLayout = [&](const std::vector<VkDescriptorSetLayoutBinding>& b) {
+            VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+            info.bindingCount = uint32_t(b.size());
+            info.pBindings = b.data();
+            VkDescriptorSetLayout l;
+            VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &info, nullptr, &l));
+            return l;
+        };
+        cullSetLayout_ = makeLayout(cull);
+        shadeSetLayout_ = makeLayout(shade);
+
+        VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8},
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+        VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+        pi.maxSets = 2;
+        pi.poolSizeCount = 2;
+        pi.pPoolSizes = sizes;
+        VK_CHECK(vkCreateDescriptorPool(ctx_.device, &pi, nullptr, &pool_));
+        VkDescriptorSetLayout layouts[2] = {cullSetLayout_, shadeSetLayout_};
+        VkDescriptorSet sets[2];
+        VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+        ai.descriptorPool = pool_;
+        ai.descriptorSetCount = 2;
+        ai.pSetLayouts = layouts;
+        VK_CHECK(vkAllocateDescriptorSets(ctx_.device, &ai, sets));
+        cullSet_ = sets[0];
+        shadeSet_ = sets[1];
+
+        VkDescriptorBufferInfo tiles{graph.buffer(tiles_).buffer, 0, VK_WHOLE_SIZE};
+        VkDescriptorBufferInfo indices{graph.buffer(indices_).buffer, 0, VK_WHOLE_SIZE};
+        VkDescriptorBufferInfo params{params_.buffer, 0, VK_WHOLE_SIZE};
+        VkDescriptorImageInfo depth{sampler_, graph.image(msaa ? depthMsaa_ : depth_).view,
+                                    VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL};
+        VkDescriptorBufferInfo counter{};
+        std::vector<VkWriteDescriptorSet> writes;
+        auto write = [&](VkDescriptorSet set, uint32_t b, VkDescriptorType t, const VkDescriptorBufferInfo* bi,
+                         const VkDescriptorImageInfo* ii) {
+            VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+            w.dstSet = set;
+            w.dstBinding = b;
+            w.descriptorCount = 1;
+            w.descriptorType = t;
+            w.pBufferInfo = bi;
+            w.pImageInfo = ii;
+            writes.push_back(w);
+        };
+        for (VkDescriptorSet set : {cullSet_, shadeSet_}) {
+            write(set, TP_FP_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &tiles, nullptr);
+            write(set, TP_FP_BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indices, nullptr);
+            write(set, TP_FP_BINDING_PARAMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &params, nullptr);
+        }
+        write(cullSet_, TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &depth);
+        if (layout_ == TP_FP_LAYOUT_LINKED) {
+            counter = {graph.buffer(counter_).buffer, 0, VK_WHOLE_SIZE};
+            write(cullSet_, TP_FP_BINDING_COUNTER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &counter, nullptr);
+        }
+        vkUpdateDescriptorSets(ctx_.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+    }
+
+    void createPipelines() {
+        const bool msaa = settings_.msaa > 1;
+        const auto samples = VkSampleCountFlagBits(settings_.msaa);
+        sceneLayout_ = scene_.createPipelineLayout();
+        cullLayout_ = scene_.createPipelineLayout(cullSetLayout_);
+        shadeLayout_ = scene_.createPipelineLayout(shadeSetLayout_);
+
+        // Depth prepass: opaque without a fragment shader, masked with the alpha test.
+        GraphicsPipelineDesc pre;
+        pre.samples = samples;
+        pre.layout = sceneLayout_;
+        pre.specConstants = scene_.specConstants(AlphaMode::Opaque);
+        if (scene_.hasDraws(DrawFilter::Opaque)) prepassOpaque_ = createGraphicsPipeline(ctx_, pre);
+        if (scene_.hasDraws(DrawFilter::Mask)) {
+            pre.fragmentShader = "fp_prepass_mask_frag";
+            pre.specConstants = scene_.specConstants(AlphaMode::Mask);
+            prepassMask_ = createGraphicsPipeline(ctx_, pre);
+        }
+
+        std::string cullName = "fp_cull_" + settings_.lightLists + (msaa ? "_ms" : "") + "_comp";
+        std::vector<SpecConstant> cullSpec = scene_.specConstants(AlphaMode::Opaque);
+        cullSpec.push_back({TP_FP_SPEC_TILE_X, settings_.tileSize});
+        cullSpec.push_back({TP_FP_SPEC_TILE_Y, settings_.tileSize});
+        cullSpec.push_back({TP_FP_SPEC_SAMPLES, settings_.msaa});
+        cullSpec.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
+        cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_);
+
+        for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
+            if (!scene_.hasDraws(DrawFilter(mode))) continue;
+            GraphicsPipelineDesc d;
+            d.fragmentShader = "fp_shading_frag";
+            d.colorFormats = {kHdrFormat};
+            d.samples = samples;
+            d.sampleShading = msaa; // per-sample shading, as the reference
+            d.layout = shadeLayout_;
+            d.depthWrite = false;
+            d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
+            d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
+            d.specConstants = scene_.specConstants(mode);
+            d.specConstants.push_back({TP_FP_SPEC_TILE_SIZE, settings_.tileSize});
+            d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
+            d.specConstants.push_back({TP_FP_SPEC_LAYOUT, layout_});
+            shade_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
+        }
+    }
+
+    void recordPrepass(PassContext& pc) {
+        const bool msaa = settings_.msaa > 1;
+        DepthTarget depth{msaa ? depthMsaa_ : depth_, msaa ? depth_ : ResourceHandle{}};
+        beginRendering(pc, {}, depth);
+        scene_.bindSceneSet(pc.cmd, sceneLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        if (prepassOpaque_) {
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, prepassOpaque_);
+            scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Opaque);
+        }
+        if (prepassMask_) {
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, prepassMask_);
+            scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Mask);
+        }
+        endRendering(pc);
+    }
+
+    void recordCulling(PassContext& pc) {
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
+        scene_.bindSceneSet(pc.cmd, cullLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
+        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_, 0,
+                                nullptr);
+        vkCmdDispatch(pc.cmd, grid_.tilesX, grid_.tilesY, 1);
+    }
+
+    void recordShading(PassContext& pc, bool transparent) {
+        const bool msaa = settings_.msaa > 1;
+        ColorTarget color;
+        color.image = msaa ? hdrMsaa_ : hdr_;
+        const bool lastPass = transparent || !twoLists_;
+        if (msaa && lastPass) color.resolve = hdr_;
+        color.clear = !transparent;
+        DepthTarget depth{msaa ? depthMsaa_ : depth_, {}, false, true};
+        beginRendering(pc, {color}, depth);
+        scene_.bindSceneSet(pc.cmd, shadeLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_, TP_SET_PASS, 1, &shadeSet_, 0,
+                                nullptr);
+        std::vector<AlphaMode> modes = transparent ? std::vector<AlphaMode>{AlphaMode::Blend}
+                                                   : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
+        for (AlphaMode mode : modes) {
+            VkPipeline p = shade_[uint32_t(mode)];
+            if (!p) continue;
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
+            scene_.recordDraws(pc.cmd, shadeLayout_, DrawFilter(mode));
+        }
+        endRendering(pc);
+    }
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    SceneFeatures features_;
+    RenderSettings settings_;
+    uint32_t layout_ = TP_FP_LAYOUT_COMPACT;
+    fp::TileGrid grid_;
+    bool twoLists_ = false;
+    uint32_t numLists_ = 1;
+    fp::LightClasses classes_;
+    std::vector<uint32_t> tileBound_, tileOffsets_;
+    uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
+    std::string indexPurpose_;
+
+    ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
+    Buffer params_;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout cullSetLayout_ = VK_NULL_HANDLE, shadeSetLayout_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet cullSet_ = VK_NULL_HANDLE, shadeSet_ = VK_NULL_HANDLE;
+    VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, cullLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
+    VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE, cull_ = VK_NULL_HANDLE;
+    VkPipeline shade_[3] = {};
+
+    std::vector<gpu::FpTileLists> tileLists_;
+    uint32_t nodesUsed_ = 0;
+    bool collected_ = false;
+};
+
+} // namespace
+
+std::unique_ptr<Renderer> createForwardPlusRenderer(const RendererCreateInfo& info) {
+    return std::make_unique<ForwardPlusRenderer>(info);
+}
+
+} // namespace tp

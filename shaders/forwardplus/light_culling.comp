@@ -1,0 +1,249 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Forward+ light culling: one workgroup per tile, one invocation per pixel of the tile
+// (tile size = workgroup size, a specialization constant).
+//  1. Depth bounds: min/max over every sample of every pixel that has geometry (depth > 0);
+//     a tile with no geometry (sky) gets an empty opaque list. The transparent list (only
+//     when the scene has blended materials) spans the near plane to the tile's farthest
+//     depth, unbounded where any sample sees the sky.
+//  2. Point/spot lights are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
+//     sub-frustum (include/tile_culling.glsl); survivors set a bit in shared memory.
+//  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts), so
+//     every layout stores the same lights in the same order and gives the same image.
+// Directional lights are never culled: the shading pass loops over them separately.
+// Layout (one shader variant each):
+//  compact: the tile's slots [offset[t], offset[t+1]) come from a conservative CPU bound
+//           (sphere vs the depth-unbounded tile frustum), so nothing can be dropped; a
+//           count that exceeded it anyway would be reported in `dropped`, never silent.
+//  fixed:   tileCapacity slots per tile; lights beyond it are counted in `dropped`.
+//  linked:  nodes {light, next} from a pool with one atomic allocation per chunk; chunks
+//           are processed last to first and prepended, so a walk of `count` nodes from the
+//           head visits lights in index order.
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+#include "include/tile_culling.glsl"
+
+// One of TP_FP_CULL_COMPACT, TP_FP_CULL_FIXED, TP_FP_CULL_LINKED is defined (1) per variant.
+#if !defined(TP_FP_CULL_FIXED) && !defined(TP_FP_CULL_LINKED) && !defined(TP_FP_CULL_COMPACT)
+#define TP_FP_CULL_COMPACT 1
+#endif
+
+layout(local_size_x_id = TP_FP_SPEC_TILE_X, local_size_y_id = TP_FP_SPEC_TILE_Y) in;
+layout(constant_id = TP_FP_SPEC_SAMPLES) const int kSamples = 1;
+layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
+
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) writeonly buffer TileBlock {
+    FpTileLists tiles[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_INDICES) writeonly buffer IndexBlock {
+    uint indices[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffer ParamBlock {
+    FpParams params;
+    uint data[];
+};
+#ifdef TP_FP_DEPTH_MS
+layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2DMS depthImage;
+#else
+layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depthImage;
+#endif
+#ifdef TP_FP_CULL_LINKED
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
+    uint nodeCounter;
+};
+#endif
+
+shared uint sMinDepth, sMaxDepth, sAnySky;
+shared uint sBits[2][TP_FP_CHUNK_WORDS];
+shared uint sCount[2];   // survivors so far (kept + dropped)
+shared uint sDropped[2];
+shared uint sNodeBase[2]; // linked: first node of this chunk
+shared uint sKept[2];     // linked: nodes of this chunk that fit in the pool
+shared uint sHead[2];     // linked: current head
+
+const uint kNoNode = 0xffffffffu;
+
+void main() {
+    const uint groupSize = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
+    const uint tileSize = gl_WorkGroupSize.x;
+    const uint lid = gl_LocalInvocationIndex;
+    const uvec2 tile = gl_WorkGroupID.xy;
+    const uint tileIndex = tile.y * params.tiles.x + tile.x;
+    const uint numLists = kTwoLists ? 2u : 1u;
+
+    if (lid == 0u) {
+        sMinDepth = floatBitsToUint(2.0); // above any depth: no geometry yet
+        sMaxDepth = 0u;
+        sAnySky = 0u;
+        for (uint l = 0u; l < 2u; ++l) {
+            sCount[l] = 0u;
+            sDropped[l] = 0u;
+            sHead[l] = kNoNode;
+        }
+    }
+    barrier();
+
+    // 1. Depth bounds over every sample (depths are non-negative, so their bit patterns
+    //    order like the values).
+    uvec2 pixel = tile * tileSize + gl_LocalInvocationID.xy;
+    uvec2 viewport = frame.viewport.xy;
+    if (all(lessThan(pixel, viewport))) {
+        float lo = 2.0, hi = 0.0;
+        bool sky = false;
+        for (int s = 0; s < kSamples; ++s) {
+#ifdef TP_FP_DEPTH_MS
+            float d = texelFetch(depthImage, ivec2(pixel), s).r;
+#else
+            float d = texelFetch(depthImage, ivec2(pixel), 0).r;
+#endif
+            if (d > 0.0) {
+                lo = min(lo, d);
+                hi = max(hi, d);
+            } else {
+                sky = true;
+            }
+        }
+        if (hi > 0.0) {
+            atomicMin(sMinDepth, floatBitsToUint(lo));
+            atomicMax(sMaxDepth, floatBitsToUint(hi));
+        }
+        if (sky) atomicOr(sAnySky, 1u);
+    }
+    barrier();
+
+    const bool hasGeometry = sMaxDepth > 0u;
+    const float nearDepth = uintBitsToFloat(sMaxDepth);
+    const float farDepth = hasGeometry ? uintBitsToFloat(sMinDepth) : 0.0;
+    const vec2 viewportSize = vec2(viewport);
+    TileFrustum opaqueFrustum =
+        makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
+    // Transparent: from the near plane (depth 1) to the farthest opaque depth, or
+    // unbounded (depth 0) where the tile sees the sky.
+    float transparentFar = (sAnySky != 0u || !hasGeometry) ? 0.0 : farDepth;
+    TileFrustum transparentFrustum =
+        makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, 1.0, transparentFar);
+
+    const uint directionalCount = params.lights.x;
+    const uint localCount = params.lights.y;
+    uint capacity;
+    uint start[2];
+#if defined(TP_FP_CULL_COMPACT)
+    uint offset = data[params.lights.z + tileIndex];
+    capacity = data[params.lights.z + tileIndex + 1u] - offset;
+    start[0] = offset;
+    start[1] = params.lists.x + offset;
+#elif defined(TP_FP_CULL_FIXED)
+    capacity = params.lights.w;
+    start[0] = tileIndex * capacity;
+    start[1] = params.lists.x + tileIndex * capacity;
+#else
+    capacity = 0xffffffffu; // bounded by the pool instead
+    start[0] = 0u;
+    start[1] = 0u;
+#endif
+
+    const uint chunkCount = (localCount + TP_FP_CHUNK_LIGHTS - 1u) / TP_FP_CHUNK_LIGHTS;
+    for (uint step = 0u; step < chunkCount; ++step) {
+#ifdef TP_FP_CULL_LINKED
+        const uint chunk = chunkCount - 1u - step; // prepend: last chunk first
+#else
+        const uint chunk = step;
+#endif
+        const uint base = chunk * TP_FP_CHUNK_LIGHTS;
+        if (lid < TP_FP_CHUNK_WORDS) {
+            sBits[0][lid] = 0u;
+            sBits[1][lid] = 0u;
+        }
+        barrier();
+
+        // 2. Test this chunk's lights, groupSize at a time.
+        const uint inChunk = min(TP_FP_CHUNK_LIGHTS, localCount - base);
+        for (uint i = lid; i < inChunk; i += groupSize) {
+            LightGpu light = lights[data[directionalCount + base + i]];
+            uint bit = 1u << (i & 31u);
+            if (hasGeometry && lightInTile(light, opaqueFrustum, frame.view))
+                atomicOr(sBits[0][i >> 5u], bit);
+            if (kTwoLists && lightInTile(light, transparentFrustum, frame.view))
+                atomicOr(sBits[1][i >> 5u], bit);
+        }
+        barrier();
+
+        // 3. Compaction: invocation (list, word) writes the survivors of one 32-light word.
+        const uint list = lid / TP_FP_CHUNK_WORDS;
+        const uint word = lid % TP_FP_CHUNK_WORDS;
+        const bool compacts = list < numLists;
+        uint prefix = 0u, bits = 0u, chunkTotal = 0u;
+        if (compacts) {
+            for (uint j = 0u; j < word; ++j) prefix += bitCount(sBits[list][j]);
+            bits = sBits[list][word];
+            chunkTotal = prefix + bitCount(bits); // meaningful in the last word's invocation
+        }
+#ifdef TP_FP_CULL_LINKED
+        // One allocation per chunk and list; nodes past the pool are dropped and counted
+        // (the pool is sized so that it cannot happen).
+        if (compacts && word == TP_FP_CHUNK_WORDS - 1u) {
+            uint nodeBase = chunkTotal > 0u ? atomicAdd(nodeCounter, chunkTotal) : 0u;
+            uint pool = params.lists.y;
+            uint room = nodeBase < pool ? pool - nodeBase : 0u;
+            uint kept = min(chunkTotal, room);
+            sNodeBase[list] = nodeBase;
+            sKept[list] = kept;
+            sDropped[list] += chunkTotal - kept;
+        }
+        barrier();
+        if (compacts && bits != 0u) {
+            uint nodeBase = sNodeBase[list];
+            uint kept = sKept[list];
+            uint oldHead = sHead[list];
+            uint rank = prefix;
+            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+                int lsb = findLSB(bits);
+                bits &= bits - 1u;
+                if (rank < kept) {
+                    uint node = nodeBase + rank;
+                    indices[2u * node] = data[directionalCount + base + word * 32u + uint(lsb)];
+                    indices[2u * node + 1u] = rank + 1u < kept ? node + 1u : oldHead;
+                }
+                ++rank;
+            }
+        }
+        barrier();
+        if (compacts && word == TP_FP_CHUNK_WORDS - 1u && sKept[list] > 0u) {
+            sHead[list] = sNodeBase[list];
+            sCount[list] += sKept[list];
+        }
+#else
+        if (compacts && bits != 0u) {
+            uint pos = sCount[list] + prefix;
+            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+                int lsb = findLSB(bits);
+                bits &= bits - 1u;
+                if (pos < capacity)
+                    indices[start[list] + pos] = data[directionalCount + base + word * 32u + uint(lsb)];
+                ++pos;
+            }
+        }
+        barrier();
+        if (compacts && word == TP_FP_CHUNK_WORDS - 1u) sCount[list] += chunkTotal;
+#endif
+        barrier();
+    }
+
+    if (lid == 0u) {
+        FpTileLists t;
+        for (uint l = 0u; l < 2u; ++l) {
+#ifdef TP_FP_CULL_LINKED
+            t.count[l] = sCount[l];
+            t.start[l] = sHead[l];
+            t.dropped[l] = sDropped[l];
+#else
+            t.count[l] = min(sCount[l], capacity);
+            t.start[l] = start[l];
+            t.dropped[l] = sCount[l] - t.count[l];
+#endif
+        }
+        t.nearDepth = hasGeometry ? nearDepth : 0.0;
+        t.farDepth = hasGeometry ? farDepth : 0.0;
+        tiles[tileIndex] = t;
+    }
+}

@@ -1,0 +1,11 @@
+# Forward+ shaders (included by shaders/CMakeLists.txt with SHADER_DIR set).
+triptych_add_shader(SPVS ${SHADER_DIR}/prepass_mask.frag fp_prepass_mask_frag)
+triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_frag)
+# Culling: one variant per list layout, single-sample and multisampled depth.
+foreach(layout compact fixed linked)
+  string(TOUPPER ${layout} LAYOUT_UPPER)
+  triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_${layout}_comp
+    DEFINES TP_FP_CULL_${LAYOUT_UPPER}=1)
+  triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_${layout}_ms_comp
+    DEFINES TP_FP_CULL_${LAYOUT_UPPER}=1 TP_FP_DEPTH_MS=1)
+endforeach()

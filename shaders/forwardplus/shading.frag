@@ -1,0 +1,64 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Forward+ shading. Opaque and masked draws run with depth test EQUAL against the prepass
+// and no discard (early depth rejection stays on: only the visible surface is shaded);
+// blended draws run afterwards, back to front, with depth test GREATER and the tile's
+// transparent list. Every loop is bounded by an explicit count (never a sentinel): the
+// directional lights first, then the tile's list in light-index order.
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+#include "include/material.glsl"
+
+layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
+layout(constant_id = TP_FP_SPEC_LAYOUT) const uint kLayout = TP_FP_LAYOUT_COMPACT;
+
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) readonly buffer TileBlock {
+    FpTileLists tiles[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_INDICES) readonly buffer IndexBlock {
+    uint indices[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffer ParamBlock {
+    FpParams params;
+    uint data[];
+};
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+layout(location = 4) in vec4 inColor;
+layout(location = 0) out vec4 outColor;
+
+// Largest finite half: the hdr target is RGBA16F, so larger values saturate instead of
+// becoming +Inf.
+const float kHalfMax = 65504.0;
+
+void main() {
+    MaterialGpu m = materials[draw.materialIndex];
+    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor, gl_FrontFacing);
+
+    vec3 sum = ambientAndEmissive(ms);
+    uint directionalCount = params.lights.x;
+    for (uint i = 0u; i < directionalCount; ++i)
+        sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
+
+    uvec2 tile = uvec2(gl_FragCoord.xy) / kTileSize;
+    uint tileIndex = min(tile.y, params.tiles.y - 1u) * params.tiles.x + min(tile.x, params.tiles.x - 1u);
+    uint list = (kTwoLists && kAlphaMode == TP_ALPHA_BLEND) ? 1u : 0u;
+    uint count = tiles[tileIndex].count[list];
+    uint start = tiles[tileIndex].start[list];
+    if (kLayout == TP_FP_LAYOUT_LINKED) {
+        uint node = start;
+        for (uint i = 0u; i < count; ++i) {
+            uint lightIndex = indices[2u * node];
+            node = indices[2u * node + 1u];
+            sum += evalLight(lights[lightIndex], ms.surface, kHasSpot);
+        }
+    } else {
+        for (uint i = 0u; i < count; ++i)
+            sum += evalLight(lights[indices[start + i]], ms.surface, kHasSpot);
+    }
+    outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
+}

@@ -1,0 +1,486 @@
+// Forward+ on the default device (lavapipe in CI), validation on, small resolutions.
+//
+// Tolerance against the reference (derived, see docs/forwardplus.md): the BRDF, the light
+// model and the materials are the same code, culling at the window's range is exact, so
+// what remains is
+//   - storage: hdr (and hdr_msaa) are RGBA16F. Vulkan leaves the rounding of fp32 -> fp16
+//     conversions to the implementation (to nearest or toward zero), so each rounding is
+//     below one ulp: <= 2^-10 relative in the normal range, <= 2^-24 absolute for
+//     subnormals. One rounding at 1x, two with MSAA (per-sample store, resolve), one more
+//     per blended layer;
+//   - summation: the reference sums in fp64 in light order, Forward+ in fp32 (directional
+//     lights first, then the tile's list in light order). Every term is >= 0, so the fp32
+//     sum is within n * 2^-24 of the exact sum, relative (n = terms);
+//   - per-term evaluation: the same code compiled into other shaders, a few ulps.
+// So |fp - ref| <= ((roundings + layers) * 2^-10 + (n + 8) * 2^-24 + 1e-5) * |ref| + 1e-6.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/readback.h"
+#include "core/gpu/vk_check.h"
+#include "core/image/difference.h"
+#include "core/scene/lights.h"
+#include "core/scene/procedural.h"
+#include "forwardplus/forwardplus_debug.h"
+#include "forwardplus/tile_bounds.h"
+#include "gpu_test_util.h"
+#include "include/light_model.h"
+
+namespace tp::test {
+namespace {
+
+double statOf(const RunResult& r, const std::string& name) {
+    for (const auto& [n, v] : r.stats.counters)
+        if (n == name) return v;
+    ADD_FAILURE() << "no counter " << name;
+    return -1.0;
+}
+
+bool hasLeftOut(const RunResult& r, const std::string& prefix) {
+    for (const LeftOut& l : r.stats.leftOut)
+        if (l.what.rfind(prefix, 0) == 0) return true;
+    return false;
+}
+
+std::vector<Light> makeLights(const Aabb& bounds, uint32_t count, uint64_t seed) {
+    LightGenOptions g;
+    g.count = count;
+    g.seed = seed;
+    g.pointWeight = 3.0f;
+    g.spotWeight = 1.0f;
+    return generateLights(bounds, g);
+}
+
+Scene floorScene(uint32_t lightCount) {
+    Scene s = makeFloorScene({});
+    Aabb b = s.bounds;
+    b.max.y = 3.0f; // lights above the floor as well
+    s.lights = makeLights(b, lightCount, 11);
+    return s;
+}
+
+Scene courtyardScene(uint32_t lightCount) {
+    Result<Scene> s = makeBuiltinScene("courtyard-small");
+    EXPECT_TRUE(s.ok()) << s.error();
+    if (!s.ok()) return {};
+    Scene scene = std::move(*s);
+    std::vector<Light> lights = makeLights(scene.bounds, lightCount, 5);
+    scene.lights = lights;
+    return scene;
+}
+
+struct Comparison {
+    double worstRatio = 0.0; // max |d| / tolerance
+    uint32_t worstX = 0, worstY = 0;
+    double worstGot = 0.0, worstRef = 0.0;
+    uint64_t nonFinite = 0;
+};
+
+Comparison compare(const ImageRGBA& got, const ImageRGBA& ref, uint32_t lightCount, uint32_t msaa,
+                   uint32_t blendLayers) {
+    Comparison c;
+    const double roundings = (msaa > 1 ? 2.0 : 1.0) + blendLayers;
+    const double relTol = roundings * std::ldexp(1.0, -10) + (lightCount + 8.0) * std::ldexp(1.0, -24) + 1e-5;
+    for (uint32_t y = 0; y < ref.height; ++y)
+        for (uint32_t x = 0; x < ref.width; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                double g = got.at(x, y)[ch], r = ref.at(x, y)[ch];
+                if (!std::isfinite(g)) {
+                    ++c.nonFinite;
+                    continue;
+                }
+                double ratio = std::abs(g - r) / (relTol * std::abs(r) + 1e-6);
+                if (ratio > c.worstRatio) {
+                    c.worstRatio = ratio;
+                    c.worstX = x;
+                    c.worstY = y;
+                    c.worstGot = g;
+                    c.worstRef = r;
+                }
+            }
+    return c;
+}
+
+void expectMatchesReference(const Scene& scene, RenderSettings settings, uint32_t blendLayers = 0) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    RunResult ref = runOrFail(*ctx, gpuScene, "reference", settings);
+    RunResult fp = runOrFail(*ctx, gpuScene, "forwardplus", settings);
+    ASSERT_EQ(fp.hdr.width, ref.hdr.width);
+    ASSERT_EQ(fp.hdr.height, ref.hdr.height);
+    Comparison c = compare(fp.hdr, ref.hdr, uint32_t(scene.lights.size()), settings.msaa, blendLayers);
+    EXPECT_EQ(c.nonFinite, 0u);
+    EXPECT_LE(c.worstRatio, 1.0) << "worst pixel " << c.worstX << "," << c.worstY << ": got " << c.worstGot
+                                 << ", reference " << c.worstRef;
+    EXPECT_EQ(statOf(fp, "lights_dropped"), 0.0);
+    EXPECT_EQ(fp.depth.r, ref.depth.r) << "prepass depth differs from the reference's depth";
+    double sum = 0.0;
+    for (size_t i = 0; i < ref.hdr.pixelCount(); ++i) sum += ref.hdr.rgba[i * 4];
+    EXPECT_GT(sum, 0.0);
+    std::printf("[ forwardplus ] %zu lights, %ux%u, %ux: worst |d|/tol = %.3g, lights/tile mean %.2f max %.0f\n",
+                scene.lights.size(), settings.width, settings.height, settings.msaa, c.worstRatio,
+                statOf(fp, "lights_per_tile_mean"), statOf(fp, "lights_per_tile_max"));
+    expectNoValidationMessages(*ctx);
+}
+
+RenderSettings small(uint32_t w, uint32_t h, uint32_t msaa) {
+    RenderSettings s;
+    s.width = w;
+    s.height = h;
+    s.msaa = msaa;
+    return s;
+}
+
+// ---- against the reference ----
+
+TEST(ForwardPlusReference, FloorNoLights) { expectMatchesReference(floorScene(0), small(96, 64, 1)); }
+TEST(ForwardPlusReference, FloorOneLight) { expectMatchesReference(floorScene(1), small(96, 64, 1)); }
+TEST(ForwardPlusReference, Floor256Lights) { expectMatchesReference(floorScene(256), small(96, 64, 1)); }
+TEST(ForwardPlusReference, Floor256LightsMsaa4) { expectMatchesReference(floorScene(256), small(96, 64, 4)); }
+TEST(ForwardPlusReference, Floor4096LightsTiny) { expectMatchesReference(floorScene(4096), small(40, 24, 1)); }
+TEST(ForwardPlusReference, Floor4096LightsTinyMsaa4) { expectMatchesReference(floorScene(4096), small(40, 24, 4)); }
+
+TEST(ForwardPlusReference, FloorTileSizes8And32) {
+    for (uint32_t tile : {8u, 32u}) {
+        SCOPED_TRACE(tile);
+        RenderSettings s = small(80, 56, 1);
+        s.tileSize = tile;
+        expectMatchesReference(floorScene(256), s);
+    }
+}
+
+TEST(ForwardPlusReference, CourtyardNoLights) { expectMatchesReference(courtyardScene(0), small(96, 54, 1), 4); }
+TEST(ForwardPlusReference, CourtyardOneLight) { expectMatchesReference(courtyardScene(1), small(96, 54, 1), 4); }
+TEST(ForwardPlusReference, Courtyard256Lights) { expectMatchesReference(courtyardScene(256), small(96, 54, 1), 4); }
+TEST(ForwardPlusReference, Courtyard256LightsMsaa4) {
+    expectMatchesReference(courtyardScene(256), small(96, 54, 4), 4);
+}
+TEST(ForwardPlusReference, Courtyard4096LightsTiny) {
+    expectMatchesReference(courtyardScene(4096), small(48, 27, 1), 4);
+}
+TEST(ForwardPlusReference, Courtyard4096LightsTinyMsaa4) {
+    expectMatchesReference(courtyardScene(4096), small(48, 27, 4), 4);
+}
+
+TEST(ForwardPlusReference, DirectionalLightsAreShadedUnculled) {
+    Scene s = floorScene(32);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    sun.intensity = 2.0f;
+    s.lights.insert(s.lights.begin() + 7, sun);
+    expectMatchesReference(s, small(64, 48, 1));
+}
+
+// ---- the lists themselves ----
+
+// One frame of Forward+ run by hand (plan, compile, prepare, record, submit) so that the
+// tile lists can be read back.
+struct ListRun {
+    ImageR32 depth;
+    std::vector<gpu::FpTileLists> tiles;
+    std::vector<uint32_t> indices;
+    fp::TileGrid grid;
+    RendererStats stats;
+    std::vector<DebugImage> debug;
+};
+
+ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& settings) {
+    ListRun out;
+    scene.setView(settings.width, settings.height, settings.msaa);
+    Result<const RendererEntry*> entry = findRenderer("forwardplus");
+    EXPECT_TRUE(entry.ok());
+    RendererCreateInfo info{ctx, scene, analyzeScene(scene.scene(), settings.msaa), settings};
+    std::unique_ptr<Renderer> renderer = (*entry)->factory(info);
+    FrameGraph graph(ctx, "forwardplus", settings.width, settings.height);
+    renderer->plan(graph);
+    graph.compile();
+    renderer->prepare(graph);
+    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    graph.record(cmd, nullptr);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    ctx.submitAndWait(cmd);
+    ctx.freeCommandBuffer(cmd);
+    out.depth = readbackDepth(ctx, graph.image(graph.exported("depth")));
+    std::vector<uint8_t> t = readbackBuffer(ctx, graph.buffer(graph.exported("fp_tile_lists")));
+    out.tiles.resize(t.size() / sizeof(gpu::FpTileLists));
+    std::memcpy(out.tiles.data(), t.data(), out.tiles.size() * sizeof(gpu::FpTileLists));
+    std::vector<uint8_t> i = readbackBuffer(ctx, graph.buffer(graph.exported("fp_light_indices")));
+    out.indices.resize(i.size() / 4);
+    std::memcpy(out.indices.data(), i.data(), out.indices.size() * 4);
+    out.grid = fp::makeTileGrid(settings.width, settings.height, settings.tileSize);
+    renderer->collectStats(graph);
+    out.stats = renderer->stats();
+    out.debug = renderer->debugImages(graph);
+    return out;
+}
+
+// The lights of one list, walked with its explicit count.
+std::vector<uint32_t> listOf(const ListRun& r, uint32_t tile, uint32_t list, const std::string& layout) {
+    const gpu::FpTileLists& t = r.tiles[tile];
+    std::vector<uint32_t> out;
+    if (layout == "linked") {
+        uint32_t node = t.start[list];
+        for (uint32_t i = 0; i < t.count[list]; ++i) {
+            if (2 * size_t(node) + 1 >= r.indices.size()) {
+                ADD_FAILURE() << "node " << node << " outside the pool";
+                break;
+            }
+            out.push_back(r.indices[2 * node]);
+            node = r.indices[2 * node + 1];
+        }
+    } else {
+        for (uint32_t i = 0; i < t.count[list]; ++i) out.push_back(r.indices.at(t.start[list] + i));
+    }
+    return out;
+}
+
+glm::vec3 unproject(const gpu::FrameUniforms& f, uint32_t x, uint32_t y, float depth) {
+    float w = float(f.viewport.x), h = float(f.viewport.y);
+    glm::vec4 ndc((x + 0.5f) / w * 2.0f - 1.0f, 1.0f - (y + 0.5f) / h * 2.0f, depth, 1.0f);
+    glm::vec4 p = f.invViewProj * ndc;
+    return glm::vec3(p) / p.w;
+}
+
+// A light reaches p (before N.L): inside its range and, for a spot, inside its outer cone.
+bool reaches(const gpu::LightGpu& l, const glm::vec3& p) {
+    if (l.type == TP_LIGHT_DIRECTIONAL) return true;
+    glm::vec3 d = l.position - p;
+    float dist = glm::length(d);
+    if (dist >= l.range) return false;
+    if (l.type == TP_LIGHT_SPOT && dist > 0.0f)
+        return gpu::spotAttenuation(d / dist, l.direction, l.spotScale, l.spotOffset) > 0.0f;
+    return true;
+}
+
+TEST(ForwardPlusCulling, ConservativeOnEveryTileWithFalsePositiveRate) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings = small(128, 72, 1);
+    ListRun r = runLists(*ctx, gpuScene, settings);
+    const gpu::FrameUniforms& f = gpuScene.frame();
+    const auto& lights = gpuScene.lightsGpu();
+    uint64_t listed = 0, needed = 0, missing = 0, skyTiles = 0;
+    for (uint32_t ty = 0; ty < r.grid.tilesY; ++ty)
+        for (uint32_t tx = 0; tx < r.grid.tilesX; ++tx) {
+            uint32_t tile = ty * r.grid.tilesX + tx;
+            std::vector<uint32_t> list = listOf(r, tile, 0, "compact");
+            std::set<uint32_t> inList(list.begin(), list.end());
+            EXPECT_EQ(inList.size(), list.size()) << "duplicates in tile " << tile;
+            EXPECT_TRUE(std::is_sorted(list.begin(), list.end()));
+            std::set<uint32_t> contributing;
+            bool anyGeometry = false;
+            for (uint32_t y = ty * 16; y < std::min(settings.height, ty * 16 + 16); ++y)
+                for (uint32_t x = tx * 16; x < std::min(settings.width, tx * 16 + 16); ++x) {
+                    float d = r.depth.r[y * r.depth.width + x];
+                    if (d <= 0.0f) continue;
+                    anyGeometry = true;
+                    glm::vec3 p = unproject(f, x, y, d);
+                    for (uint32_t li = 0; li < lights.size(); ++li)
+                        if (reaches(lights[li], p)) contributing.insert(li);
+                }
+            if (!anyGeometry) {
+                ++skyTiles;
+                EXPECT_EQ(r.tiles[tile].count[0], 0u) << "sky tile " << tile << " has lights";
+                EXPECT_EQ(r.tiles[tile].nearDepth, 0.0f);
+            }
+            for (uint32_t li : contributing)
+                if (!inList.count(li)) {
+                    ++missing;
+                    ADD_FAILURE() << "tile " << tx << "," << ty << ": light " << li << " reaches a pixel but is not listed";
+                }
+            listed += list.size();
+            needed += contributing.size();
+            // The transparent list spans a larger depth range: it holds every opaque one.
+            std::vector<uint32_t> tlist = listOf(r, tile, 1, "compact");
+            std::set<uint32_t> inT(tlist.begin(), tlist.end());
+            for (uint32_t li : list) EXPECT_TRUE(inT.count(li)) << "tile " << tile << " light " << li;
+        }
+    EXPECT_EQ(missing, 0u);
+    double fpRate = listed ? double(listed - needed) / double(listed) : 0.0;
+    std::printf("[ forwardplus ] culling: %llu listed, %llu reach a pixel, false-positive rate %.1f%%, %llu sky tiles\n",
+                (unsigned long long)listed, (unsigned long long)needed, 100.0 * fpRate, (unsigned long long)skyTiles);
+    RecordProperty("false_positive_rate", std::to_string(fpRate));
+    EXPECT_LT(fpRate, 0.9); // useful: most listed lights do reach the tile
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusCulling, LayoutsHoldTheSameListsAndHeatMapCountsMatch) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings = small(96, 54, 4);
+    std::vector<ListRun> runs;
+    for (const char* layout : {"compact", "fixed", "linked"}) {
+        RenderSettings s = settings;
+        s.lightLists = layout;
+        s.debug = true;
+        runs.push_back(runLists(*ctx, gpuScene, s));
+    }
+    const fp::TileGrid& g = runs[0].grid;
+    for (uint32_t tile = 0; tile < g.count(); ++tile)
+        for (uint32_t list = 0; list < 2; ++list) {
+            std::vector<uint32_t> a = listOf(runs[0], tile, list, "compact");
+            EXPECT_EQ(a, listOf(runs[1], tile, list, "fixed")) << "tile " << tile;
+            EXPECT_EQ(a, listOf(runs[2], tile, list, "linked")) << "tile " << tile;
+            for (uint32_t li : a) EXPECT_LT(li, scene.lights.size());
+        }
+    // The heat map shows each tile's list length: rebuild it from the walked lists.
+    for (size_t k = 0; k < runs.size(); ++k) {
+        const ListRun& r = runs[k];
+        std::vector<gpu::FpTileLists> walked = r.tiles;
+        for (uint32_t tile = 0; tile < g.count(); ++tile)
+            walked[tile].count[0] = uint32_t(listOf(r, tile, 0, k == 2 ? "linked" : "compact").size());
+        ImageRGBA expect = fp::lightsPerTileHeatMap(g, walked, 0);
+        ASSERT_FALSE(r.debug.empty());
+        EXPECT_EQ(r.debug[0].name, "lights_per_tile");
+        EXPECT_EQ(r.debug[0].image.rgba, expect.rgba);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusCulling, CompactBoundIsAnUpperBound) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(512);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings = small(96, 64, 1);
+    ListRun r = runLists(*ctx, gpuScene, settings);
+    const gpu::FrameUniforms& f = gpuScene.frame();
+    fp::LightClasses classes = fp::classifyLights(gpuScene.lightsGpu());
+    std::vector<uint32_t> bound = fp::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
+    for (uint32_t tile = 0; tile < r.grid.count(); ++tile) {
+        EXPECT_LE(r.tiles[tile].count[0], bound[tile]);
+        EXPECT_EQ(r.tiles[tile].dropped[0], 0u);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// ---- layouts: same image when nothing overflows; drops counted and visible ----
+
+TEST(ForwardPlusLayouts, AllLayoutsGiveTheSameImage) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    for (uint32_t msaa : {1u, 4u}) {
+        RenderSettings s = small(96, 54, msaa);
+        RunResult compact = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        s.lightLists = "linked";
+        RunResult linked = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        s.lightLists = "fixed";
+        s.tileCapacity = 256;
+        RunResult fixed = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        EXPECT_EQ(compact.hdr.rgba, linked.hdr.rgba) << msaa << "x";
+        EXPECT_EQ(compact.hdr.rgba, fixed.hdr.rgba) << msaa << "x";
+        EXPECT_EQ(statOf(linked, "lights_dropped"), 0.0);
+        EXPECT_EQ(statOf(fixed, "lights_dropped"), 0.0);
+        EXPECT_EQ(statOf(linked, "lights_kept"), statOf(compact, "lights_kept"));
+        EXPECT_LE(statOf(linked, "linked_nodes_used"), statOf(linked, "linked_pool_nodes"));
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusLayouts, FixedWithTinyCapacityCountsDropsAndShowsThem) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = small(96, 64, 1);
+    s.debug = true;
+    ListRun compact = runLists(*ctx, gpuScene, s);
+    RunResult ref = runOrFail(*ctx, gpuScene, "reference", s);
+    s.lightLists = "fixed";
+    s.tileCapacity = 2;
+    ListRun fixed = runLists(*ctx, gpuScene, s);
+    RunResult fixedRun = runOrFail(*ctx, gpuScene, "forwardplus", s);
+    uint64_t expectDropped = 0, overflowTiles = 0;
+    for (uint32_t tile = 0; tile < compact.grid.count(); ++tile) {
+        uint32_t all = compact.tiles[tile].count[0];
+        EXPECT_EQ(fixed.tiles[tile].count[0], std::min(all, 2u));
+        EXPECT_EQ(fixed.tiles[tile].dropped[0], all - std::min(all, 2u));
+        expectDropped += all - std::min(all, 2u);
+        overflowTiles += all > 2;
+        // The kept ones are the first lights of the full list.
+        std::vector<uint32_t> full = listOf(compact, tile, 0, "compact");
+        std::vector<uint32_t> kept = listOf(fixed, tile, 0, "fixed");
+        full.resize(kept.size());
+        EXPECT_EQ(kept, full);
+    }
+    ASSERT_GT(expectDropped, 0u);
+    EXPECT_EQ(statOf(fixedRun, "lights_dropped"), double(expectDropped));
+    // Drops show as error against the reference...
+    Comparison c = compare(fixedRun.hdr, ref.hdr, 256, 1, 0);
+    EXPECT_GT(c.worstRatio, 10.0);
+    // ...and as green outlines in the heat map, exactly on the overflowing tiles.
+    const ImageRGBA& heat = fixed.debug.at(0).image;
+    uint64_t outlined = 0;
+    for (uint32_t ty = 0; ty < fixed.grid.tilesY; ++ty)
+        for (uint32_t tx = 0; tx < fixed.grid.tilesX; ++tx) {
+            const float* p = heat.at(tx * 16, ty * 16); // the tile's top-left corner
+            bool green = p[0] == 0.0f && p[1] == 1.0f && p[2] == 0.0f;
+            EXPECT_EQ(green, fixed.tiles[ty * fixed.grid.tilesX + tx].dropped[0] > 0) << tx << "," << ty;
+            outlined += green;
+        }
+    EXPECT_EQ(outlined, overflowTiles);
+    expectNoValidationMessages(*ctx);
+}
+
+// ---- what is built, and refusals ----
+
+TEST(ForwardPlusPlan, LeavesOutWhatTheSceneDoesNotNeed) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(8); // no blended, no masked materials
+    SceneGpu gpuScene(*ctx, scene);
+    RunResult r = runOrFail(*ctx, gpuScene, "forwardplus", small(64, 48, 1));
+    EXPECT_TRUE(hasLeftOut(r, "transparent light list"));
+    EXPECT_TRUE(hasLeftOut(r, "MSAA targets"));
+    EXPECT_EQ(statOf(r, "light_lists"), 1.0);
+    for (const std::string& p : r.passes) EXPECT_NE(p, "forward_transparent");
+    for (const LedgerEntry& e : r.memory) {
+        EXPECT_NE(e.tag.name, "hdr_msaa");
+        EXPECT_NE(e.tag.name, "depth_msaa");
+        EXPECT_NE(e.tag.name, "node_counter");
+    }
+    Scene court = courtyardScene(8); // blended cloth
+    SceneGpu gpuCourt(*ctx, court);
+    RunResult c = runOrFail(*ctx, gpuCourt, "forwardplus", small(64, 36, 4));
+    EXPECT_FALSE(hasLeftOut(c, "transparent light list"));
+    EXPECT_FALSE(hasLeftOut(c, "MSAA targets"));
+    EXPECT_EQ(statOf(c, "light_lists"), 2.0);
+    EXPECT_NE(std::find(c.passes.begin(), c.passes.end(), "forward_transparent"), c.passes.end());
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusPlan, RefusesListsBeyondMaxStorageBufferRange) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(4);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = small(4096, 4096, 1);
+    s.tileSize = 8;
+    s.lightLists = "fixed";
+    s.tileCapacity = 65536;
+    Result<const RendererEntry*> entry = findRenderer("forwardplus");
+    ASSERT_TRUE(entry.ok());
+    RunOptions o;
+    o.warmupFrames = 0;
+    o.timedFrames = 1;
+    Result<RunResult> r = runRenderer(*ctx, gpuScene, **entry, analyzeScene(scene, 1), s, o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().find("maxStorageBufferRange"), std::string::npos) << r.error();
+    expectNoValidationMessages(*ctx);
+}
+
+} // namespace
+} // namespace tp::test
