@@ -13,6 +13,9 @@ namespace tp {
 struct GltfLoadOptions {
     // Warnings (missing texture, ignored extension, ...) are appended here, one line each.
     std::vector<std::string>* warnings = nullptr;
+    // Missing NORMALs: the spec's flat normals (false: vertices are split per triangle) or
+    // area-weighted smooth ones (true).
+    bool smoothMissingNormals = false;
 };
 
 Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options = {});

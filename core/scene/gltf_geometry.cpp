@@ -1,0 +1,272 @@
+// glTF primitives: strip/fan conversion, generated normals and tangents, transformation into
+// world space.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "core/scene/gltf_internal.h"
+
+namespace tp::gltf {
+namespace {
+
+// Strips and fans to lists (glTF 2.0 spec, 3.7.2.1); a list keeps whole triangles only.
+std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) {
+    std::vector<uint32_t> out;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        for (size_t i = 0; i + 2 < in.size(); ++i) {
+            if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+                out.insert(out.end(), {in[i + 1], in[i + 2], in[0]});
+            else if (i % 2 == 0)
+                out.insert(out.end(), {in[i], in[i + 1], in[i + 2]});
+            else
+                out.insert(out.end(), {in[i], in[i + 2], in[i + 1]});
+        }
+        return out;
+    }
+    out = in;
+    out.resize(in.size() / 3 * 3);
+    return out;
+}
+
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    float len2 = glm::dot(v, v);
+    if (!(len2 > 1e-30f) || !std::isfinite(len2)) return fallback;
+    return v / std::sqrt(len2);
+}
+
+template <class T> void deindex(std::vector<T>& v, const std::vector<uint32_t>& indices) {
+    if (v.empty()) return;
+    std::vector<T> out(indices.size());
+    for (size_t i = 0; i < indices.size(); ++i)
+        out[i] = v[indices[i]];
+    v.swap(out);
+}
+
+} // namespace
+
+glm::vec3 anyPerpendicular(const glm::vec3& n) {
+    glm::vec3 axis = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    return safeNormalize(axis - n * glm::dot(n, axis), glm::vec3(1, 0, 0));
+}
+
+void makeFlatNormals(LocalPrimitive& p) {
+    deindex(p.positions, p.indices);
+    deindex(p.tangents, p.indices);
+    deindex(p.uvs, p.indices);
+    deindex(p.colors, p.indices);
+    p.normals.assign(p.positions.size(), glm::vec3(0, 1, 0));
+    for (uint32_t i = 0; i < p.indices.size(); ++i)
+        p.indices[i] = i;
+    for (size_t t = 0; t + 2 < p.positions.size(); t += 3) {
+        glm::vec3 n =
+            glm::cross(p.positions[t + 1] - p.positions[t], p.positions[t + 2] - p.positions[t]);
+        p.normals[t] = p.normals[t + 1] = p.normals[t + 2] = safeNormalize(n, glm::vec3(0, 1, 0));
+    }
+}
+
+void makeSmoothNormals(const std::vector<glm::vec3>& positions,
+                       const std::vector<uint32_t>& indices, std::vector<glm::vec3>& normals) {
+    normals.assign(positions.size(), glm::vec3(0.0f));
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+        // Unnormalized: the cross product's length is twice the area, hence area weighting.
+        glm::vec3 n = glm::cross(positions[b] - positions[a], positions[c] - positions[a]);
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    for (glm::vec3& n : normals)
+        n = safeNormalize(n, glm::vec3(0, 1, 0));
+}
+
+// MikkTSpace (what Blender and the glTF sample viewer use) is not packaged for Debian, so
+// this is Lengyel's method; results match MikkTSpace's on well-behaved uv layouts and differ
+// slightly on seams and skewed uvs.
+void makeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                  const std::vector<glm::vec2>& uvs, const std::vector<uint32_t>& indices,
+                  std::vector<glm::vec4>& tangents) {
+    std::vector<glm::vec3> sdir(positions.size(), glm::vec3(0.0f));
+    std::vector<glm::vec3> tdir(positions.size(), glm::vec3(0.0f));
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+        glm::vec3 e1 = positions[b] - positions[a], e2 = positions[c] - positions[a];
+        // v is negated: glTF's v grows down the image, the normal map's +Y (green) points up.
+        glm::vec2 d1 = uvs[b] - uvs[a], d2 = uvs[c] - uvs[a];
+        d1.y = -d1.y;
+        d2.y = -d2.y;
+        float r = d1.x * d2.y - d2.x * d1.y;
+        if (r == 0.0f || !std::isfinite(r)) continue;
+        // dP/du and dP/dv times |r|: weighted by uv area, so that near-degenerate uv
+        // triangles cannot dominate a vertex.
+        float sign = r > 0.0f ? 1.0f : -1.0f;
+        glm::vec3 s = (e1 * d2.y - e2 * d1.y) * sign;
+        glm::vec3 u = (e2 * d1.x - e1 * d2.x) * sign;
+        for (uint32_t v : {a, b, c}) {
+            sdir[v] += s;
+            tdir[v] += u;
+        }
+    }
+    tangents.resize(positions.size());
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const glm::vec3& n = normals[i];
+        glm::vec3 t = sdir[i] - n * glm::dot(n, sdir[i]);
+        float len2 = glm::dot(t, t);
+        if (!(len2 > 1e-12f * std::max(glm::dot(sdir[i], sdir[i]), 1e-30f)) ||
+            !std::isfinite(len2)) {
+            tangents[i] = glm::vec4(anyPerpendicular(n), 1.0f);
+            continue;
+        }
+        t /= std::sqrt(len2);
+        float w = glm::dot(glm::cross(n, t), tdir[i]) < 0.0f ? -1.0f : 1.0f;
+        tangents[i] = glm::vec4(t, w);
+    }
+}
+
+Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
+                     const PrimitiveOptions& options, LocalPrimitive& out, const WarnFn& warn) {
+    const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
+    const tinygltf::Primitive& p = mesh.primitives[size_t(primIndex)];
+    std::string label =
+        "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(primIndex);
+    auto fail = [&](const Status& s) { return Error{label + ": " + s.error()}; };
+    out = LocalPrimitive{};
+    out.material = p.material;
+    int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        warn(label + ": mode " + std::to_string(mode) + " (points or lines) skipped");
+        return {};
+    }
+    auto attribute = [&](const char* name) {
+        auto it = p.attributes.find(name);
+        return it == p.attributes.end() ? -1 : it->second;
+    };
+    if (attribute("POSITION") < 0) {
+        warn(label + ": no POSITION attribute, skipped");
+        return {};
+    }
+    static const AttributeSpec kPosition{
+        "POSITION", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
+    static const AttributeSpec kNormal{
+        "NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kShort}, true};
+    static const AttributeSpec kTangent{
+        "TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat, kByte, kShort}, true};
+    // Non-normalized integer uvs are KHR_mesh_quantization's; they are read as they are.
+    static const AttributeSpec kUv{
+        "TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
+    static const AttributeSpec kColor{
+        "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}, true};
+    std::vector<float> data;
+    size_t comps = 0;
+    Status s = readFloats(model, attribute("POSITION"), kPosition, data, comps);
+    if (!s) return fail(s);
+    const size_t n = data.size() / 3;
+    out.positions.resize(n);
+    std::memcpy(out.positions.data(), data.data(), n * sizeof(glm::vec3));
+    auto readOptional = [&](const AttributeSpec& spec, auto&& store) -> Status {
+        int index = attribute(spec.name);
+        if (index < 0) return {};
+        Status r = readFloats(model, index, spec, data, comps);
+        if (!r) return r;
+        if (data.size() / comps != n)
+            return Error{std::string(spec.name) + " has " + std::to_string(data.size() / comps) +
+                         " elements but POSITION has " + std::to_string(n)};
+        store();
+        return {};
+    };
+    s = readOptional(kNormal, [&] {
+        out.normals.resize(n);
+        for (size_t i = 0; i < n; ++i)
+            out.normals[i] = safeNormalize(glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]),
+                                           glm::vec3(0, 1, 0));
+    });
+    if (s)
+        s = readOptional(kTangent, [&] {
+            out.tangents.resize(n);
+            for (size_t i = 0; i < n; ++i)
+                out.tangents[i] =
+                    glm::vec4(glm::vec3(data[4 * i], data[4 * i + 1], data[4 * i + 2]),
+                              data[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
+        });
+    if (s)
+        s = readOptional(kUv, [&] {
+            out.uvs.resize(n);
+            std::memcpy(out.uvs.data(), data.data(), n * sizeof(glm::vec2));
+        });
+    if (s)
+        s = readOptional(kColor, [&] {
+            out.colors.resize(n);
+            for (size_t i = 0; i < n; ++i)
+                out.colors[i] = glm::vec4(data[comps * i], data[comps * i + 1], data[comps * i + 2],
+                                          comps == 4 ? data[comps * i + 3] : 1.0f);
+        });
+    if (!s) return fail(s);
+
+    std::vector<uint32_t> indices;
+    if (p.indices >= 0) {
+        s = readIndices(model, p.indices, n, indices);
+        if (!s) return fail(s);
+    } else {
+        indices.resize(n);
+        for (uint32_t i = 0; i < n; ++i)
+            indices[i] = i;
+    }
+    if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
+        warn(label + ": " + std::to_string(indices.size()) +
+             " indices is not a multiple of 3; the last partial triangle is dropped");
+    out.indices = toTriangleList(indices, mode);
+    if (out.indices.empty()) {
+        warn(label + ": no triangles, skipped");
+        out.positions.clear();
+        return {};
+    }
+
+    if (out.uvs.empty()) out.uvs.assign(n, glm::vec2(0.0f));
+    if (out.colors.empty()) out.colors.assign(n, glm::vec4(1.0f));
+    if (out.normals.empty()) {
+        // The spec asks for flat normals; smooth ones are an option.
+        if (options.smoothNormals)
+            makeSmoothNormals(out.positions, out.indices, out.normals);
+        else
+            makeFlatNormals(out);
+    }
+    if (out.tangents.empty()) {
+        bool normalMapped = p.material >= 0 && size_t(p.material) < model.materials.size() &&
+                            model.materials[size_t(p.material)].normalTexture.index >= 0;
+        if (normalMapped) {
+            makeTangents(out.positions, out.normals, out.uvs, out.indices, out.tangents);
+        } else {
+            out.tangents.resize(out.positions.size());
+            for (size_t i = 0; i < out.positions.size(); ++i)
+                out.tangents[i] = glm::vec4(anyPerpendicular(out.normals[i]), 1.0f);
+        }
+    }
+    return {};
+}
+
+void appendTransformed(const LocalPrimitive& prim, const glm::mat4& world, Mesh& out) {
+    const glm::mat3 m(world);
+    const float det = glm::determinant(m);
+    // The cofactor matrix is det * inverse-transpose: defined even for det == 0, and with the
+    // sign of det removed it gives the inverse-transpose's directions.
+    glm::mat3 cof(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
+    const glm::mat3 normalMatrix = det < 0.0f ? -cof : cof;
+    const float mirror = det < 0.0f ? -1.0f : 1.0f;
+    const uint32_t base = uint32_t(out.positions.size());
+    for (size_t i = 0; i < prim.positions.size(); ++i) {
+        out.positions.push_back(glm::vec3(world * glm::vec4(prim.positions[i], 1.0f)));
+        glm::vec3 n = safeNormalize(normalMatrix * prim.normals[i], glm::vec3(0, 1, 0));
+        out.normals.push_back(n);
+        glm::vec3 t = safeNormalize(m * glm::vec3(prim.tangents[i]), anyPerpendicular(n));
+        out.tangents.push_back(glm::vec4(t, prim.tangents[i].w * mirror));
+    }
+    out.uvs.insert(out.uvs.end(), prim.uvs.begin(), prim.uvs.end());
+    out.colors.insert(out.colors.end(), prim.colors.begin(), prim.colors.end());
+    for (size_t t = 0; t + 2 < prim.indices.size(); t += 3) {
+        uint32_t a = prim.indices[t], b = prim.indices[t + 1], c = prim.indices[t + 2];
+        if (det < 0.0f) std::swap(b, c);
+        out.indices.insert(out.indices.end(), {base + a, base + b, base + c});
+    }
+}
+
+} // namespace tp::gltf

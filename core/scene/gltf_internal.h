@@ -1,0 +1,160 @@
+#pragma once
+// Internal to the glTF loader (gltf_*.cpp) and its tests; not a public interface.
+// Every function that reads the tinygltf::Model checks indices and byte ranges itself: the
+// model comes from an untrusted file and tinygltf 2.7 validates little. Error and warning
+// texts here do not name the file; loadGltf() prefixes "PATH: ".
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+#include "core/scene/scene.h"
+#include "core/util/result.h"
+
+namespace tp::gltf {
+
+constexpr uint64_t kMaxElements = 1ull << 28; // vertices, and indices, in the whole scene
+constexpr int kMaxTextureSide = 16384;
+
+using WarnFn = std::function<void(const std::string&)>;
+
+// The first non-blank line of a (tinygltf or library) message, trimmed.
+std::string firstLine(const std::string& text);
+
+constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
+constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT;
+constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+
+// --- gltf_files.cpp ----------------------------------------------------------------------
+
+// The files tinygltf may open (lexically normal absolute path -> bytes to read, 0 = all).
+struct FileAccess {
+    std::map<std::string, uint64_t> allowed;
+};
+
+// Reads a whole file: missing, empty and over-4-GiB files are errors.
+Status readFile(const std::string& path, std::vector<unsigned char>& bytes);
+// The GLB container (glTF 2.0 spec, 4.4); `jsonText` receives the JSON chunk.
+Status checkGlb(const std::vector<unsigned char>& bytes, std::string_view& jsonText);
+// Parses the JSON; checks asset.version and extensionsRequired (warns about extensions used
+// but ignored); checks every buffer URI (an error if absolute, with a scheme, leaving
+// `folder`, missing or shorter than byteLength) and every image URI (a problem recorded in
+// imageProblems[i], later a placeholder); fills `access` with the files that passed.
+Status prescan(std::string_view jsonText, const std::filesystem::path& folder, bool binary,
+               FileAccess& access, std::vector<std::string>& imageProblems, const WarnFn& warn);
+// Routes tinygltf's file access through `access` (which must outlive the load) and makes it
+// keep images encoded (tinygltf::Image::as_is) for loadMaterials to decode.
+void confine(tinygltf::TinyGLTF& loader, FileAccess& access);
+
+// --- gltf_nodes.cpp ----------------------------------------------------------------------
+
+struct Instance {
+    int node; // -1: a mesh drawn without a node (file without nodes)
+    int mesh;
+    glm::mat4 world;
+};
+
+// The nodes of the default scene (scene 0 if none is named), depth first, with their world
+// matrices. A file without scenes shows its root nodes; one without nodes, each mesh once.
+Status collectInstances(const tinygltf::Model& model, std::vector<Instance>& out);
+// Adds the node's KHR_lights_punctual light, if any, placed by its world matrix.
+void addLight(const tinygltf::Model& model, const Instance& inst, Scene& scene, const WarnFn& warn);
+// The file's first perspective camera on a drawn node, else one framing scene.bounds.
+void placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
+                 Scene& scene);
+
+// --- gltf_accessors.cpp ------------------------------------------------------------------
+
+// Checks one accessor (and its sparse part) against the bufferViews and the buffer bytes
+// tinygltf actually loaded. loadGltf runs it on every accessor, used or not.
+Status checkAccessor(const tinygltf::Model& model, size_t index);
+
+// What an attribute may hold.
+struct AttributeSpec {
+    const char* name;
+    std::vector<int> types;          // TINYGLTF_TYPE_*
+    std::vector<int> componentTypes; // allowed componentType values
+    bool forceNormalized;            // integer data is always normalized (COLOR_0)
+};
+
+// Reads a float attribute (integers converted, normalized ones to [0,1] or [-1,1]; sparse
+// values applied); `comps` receives the element width (3 or 4 for COLOR_0). Errors name the
+// attribute and accessor; NaN and infinity are errors.
+Status readFloats(const tinygltf::Model& model, int index, const AttributeSpec& spec,
+                  std::vector<float>& out, size_t& comps);
+// Reads an index accessor; every index must be below vertexCount.
+Status readIndices(const tinygltf::Model& model, int index, size_t vertexCount,
+                   std::vector<uint32_t>& out);
+
+// --- gltf_geometry.cpp -------------------------------------------------------------------
+
+// One primitive as read from the file, in its mesh's local space, as a triangle list; every
+// attribute array has positions.size() entries once readPrimitive returns.
+struct LocalPrimitive {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec4> tangents;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec4> colors;
+    std::vector<uint32_t> indices;
+    int material = -1; // as in the file, unchecked
+};
+
+struct PrimitiveOptions {
+    bool smoothNormals = false; // missing normals: area-weighted smooth instead of flat
+};
+
+// Reads primitive `prim` of mesh `mesh` (indices already checked by the caller), converting
+// strips and fans and generating what is missing. Returns an error for invalid data; sets
+// `out.positions` empty (with a warning) for a primitive that is skipped (points, lines, no
+// POSITION).
+Status readPrimitive(const tinygltf::Model& model, int mesh, int prim,
+                     const PrimitiveOptions& options, LocalPrimitive& out, const WarnFn& warn);
+
+// Appends `prim` transformed by `world` to `out`: normals by the inverse-transpose, tangents
+// by the matrix with w flipped when the determinant is negative, and the winding flipped then
+// too so that front faces stay front faces.
+void appendTransformed(const LocalPrimitive& prim, const glm::mat4& world, Mesh& out);
+
+// Flat normals need one vertex per triangle corner: de-indexes every attribute, then sets each
+// corner's normal to its face normal.
+void makeFlatNormals(LocalPrimitive& prim);
+// Area-weighted average of the face normals around each vertex (vertices are not welded).
+void makeSmoothNormals(const std::vector<glm::vec3>& positions,
+                       const std::vector<uint32_t>& indices, std::vector<glm::vec3>& normals);
+// Per-vertex tangents from the uvs (Lengyel), Gram-Schmidt against the normals, handedness in
+// w with the glTF convention: bitangent = cross(normal, tangent.xyz) * w points toward
+// decreasing v ("up" in the image). Vertices whose uvs are degenerate get any unit tangent
+// perpendicular to the normal, w = +1.
+void makeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                  const std::vector<glm::vec2>& uvs, const std::vector<uint32_t>& indices,
+                  std::vector<glm::vec4>& tangents);
+glm::vec3 anyPerpendicular(const glm::vec3& n);
+
+// --- gltf_materials.cpp ------------------------------------------------------------------
+
+// Converts a decoded tinygltf image (1-4 channels, 8 or 16 bits) to RGBA8: grey to grey,
+// missing alpha to 255, 16-bit rounded to 8. False when the size or layout is inconsistent.
+bool toRgba8(const unsigned char* data, size_t size, int width, int height, int components,
+             int bits, std::vector<uint8_t>& rgba8);
+
+// Reads the width and height from a PNG or JPEG header without decoding it.
+bool peekImageSize(const unsigned char* bytes, size_t size, int& width, int& height);
+
+// Fills scene.materials (one per glTF material, in order) and scene.textures (one per
+// (image, sRGB) pair actually used, images decoded in parallel). Images the file could not
+// provide (imageProblems[i] non-empty) and images that fail to decode become 1x1
+// placeholders with one warning each. A texture over kMaxTextureSide is an error.
+Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
+                     Scene& scene, const WarnFn& warn);
+
+} // namespace tp::gltf

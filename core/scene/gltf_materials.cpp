@@ -1,0 +1,337 @@
+// glTF materials and textures: metal-rough factors, images decoded to RGBA8 (in parallel,
+// only those a material uses), one tp::Texture per (image, sRGB) pair, placeholders for
+// images that cannot be had.
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <thread>
+
+#include "core/scene/gltf_internal.h"
+
+namespace tp::gltf {
+namespace {
+
+enum class Slot { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive };
+
+bool isSrgb(Slot slot) {
+    return slot == Slot::BaseColor || slot == Slot::Emissive;
+}
+
+// What stands in for an image that cannot be had: conspicuous magenta for base colour; no
+// emission (black) rather than a magenta glow; a flat normal; white (factors unchanged) for
+// metal-rough and occlusion.
+Texture placeholder(Slot slot) {
+    Texture t;
+    t.width = t.height = 1;
+    t.srgb = isSrgb(slot);
+    switch (slot) {
+    case Slot::BaseColor:
+        t.rgba8 = {255, 0, 255, 255}, t.name = "placeholder:baseColor";
+        break;
+    case Slot::Emissive:
+        t.rgba8 = {0, 0, 0, 255}, t.name = "placeholder:emissive";
+        break;
+    case Slot::Normal:
+        t.rgba8 = {128, 128, 255, 255}, t.name = "placeholder:normal";
+        break;
+    default:
+        t.rgba8 = {255, 255, 255, 255}, t.name = "placeholder:white";
+        break;
+    }
+    return t;
+}
+
+struct Decoded {
+    std::vector<uint8_t> rgba8;
+    int width = 0, height = 0;
+    std::string problem; // why there is no image (a placeholder is used)
+    bool tooLarge = false;
+};
+
+uint32_t readBe32(const unsigned char* p) {
+    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3];
+}
+
+// `image` holds the encoded file (as_is) as our image loader left it, or decoded pixels when
+// tinygltf decoded them itself.
+Decoded decode(const tinygltf::Image& image, int index) {
+    Decoded d;
+    if (!image.as_is) {
+        d.width = image.width, d.height = image.height;
+        if (!toRgba8(image.image.data(), image.image.size(), image.width, image.height,
+                     image.component, image.bits, d.rgba8))
+            d.problem = "decoded pixels have an unsupported layout";
+        return d;
+    }
+    const unsigned char* bytes = image.image.data();
+    const size_t size = image.image.size();
+    // Only PNG and JPEG (all that glTF 2.0 allows) and only after their headers are checked:
+    // stb would decode other formats, and sizes up to 2^24, with int arithmetic.
+    if (!peekImageSize(bytes, size, d.width, d.height)) {
+        d.problem = "not a PNG or JPEG image, or its header is damaged";
+        return d;
+    }
+    bool png16 = size > 24 && bytes[0] == 0x89 && bytes[24] == 16;
+    if (d.width > kMaxTextureSide || d.height > kMaxTextureSide ||
+        (png16 && uint64_t(d.width) * uint64_t(d.height) >= (1ull << 28))) {
+        d.tooLarge = true;
+        return d;
+    }
+    tinygltf::Image pixels;
+    std::string err, warn;
+    if (size > size_t(INT32_MAX) ||
+        !tinygltf::LoadImageData(&pixels, index, &err, &warn, 0, 0, bytes, int(size), nullptr)) {
+        d.problem = "cannot decode: " + firstLine(err);
+        return d;
+    }
+    d.width = pixels.width, d.height = pixels.height;
+    if (!toRgba8(pixels.image.data(), pixels.image.size(), pixels.width, pixels.height,
+                 pixels.component, pixels.bits, d.rgba8))
+        d.problem = "decoded pixels have an unsupported layout";
+    return d;
+}
+
+// Runs decode() over `needed` on a few threads (stb and tinygltf's LoadImageData keep no
+// shared state between calls); falls back to one thread if threads cannot be had.
+void decodeAll(const tinygltf::Model& model, const std::vector<int>& needed,
+               std::vector<Decoded>& decoded) {
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t k; (k = next.fetch_add(1)) < needed.size();)
+            decoded[size_t(needed[k])] = decode(model.images[size_t(needed[k])], needed[k]);
+    };
+    std::vector<std::thread> threads;
+    size_t count =
+        std::min<size_t>(needed.size(), std::max(1u, std::thread::hardware_concurrency()));
+    try {
+        for (size_t i = 1; i < count; ++i)
+            threads.emplace_back(work);
+    } catch (const std::system_error&) {
+    }
+    work();
+    for (std::thread& t : threads)
+        t.join();
+}
+
+std::string imageLabel(const tinygltf::Model& model, int index) {
+    const tinygltf::Image& image = model.images[size_t(index)];
+    std::string label = "image " + std::to_string(index);
+    if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0)
+        label += " '" + image.uri + "'";
+    else if (!image.name.empty())
+        label += " ('" + image.name + "')";
+    return label;
+}
+
+} // namespace
+
+bool toRgba8(const unsigned char* data, size_t size, int width, int height, int components,
+             int bits, std::vector<uint8_t>& rgba8) {
+    if (width <= 0 || height <= 0 || components < 1 || components > 4 || (bits != 8 && bits != 16))
+        return false;
+    const size_t pixels = size_t(width) * size_t(height);
+    const size_t bytesPerChannel = size_t(bits / 8);
+    if (size < pixels * size_t(components) * bytesPerChannel) return false;
+    rgba8.resize(pixels * 4);
+    auto channel = [&](size_t i) -> uint8_t {
+        if (bits == 8) return data[i];
+        uint16_t v = uint16_t(data[2 * i] | data[2 * i + 1] << 8); // stb: native (little) endian
+        return uint8_t((uint32_t(v) * 255u + 32767u) / 65535u);
+    };
+    for (size_t p = 0; p < pixels; ++p) {
+        const size_t s = p * size_t(components);
+        uint8_t* d = &rgba8[p * 4];
+        if (components <= 2) {
+            d[0] = d[1] = d[2] = channel(s);
+            d[3] = components == 2 ? channel(s + 1) : 255;
+        } else {
+            d[0] = channel(s), d[1] = channel(s + 1), d[2] = channel(s + 2);
+            d[3] = components == 4 ? channel(s + 3) : 255;
+        }
+    }
+    return true;
+}
+
+bool peekImageSize(const unsigned char* b, size_t size, int& width, int& height) {
+    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 24 && std::equal(kPng, kPng + 8, b)) {
+        if (!std::equal(b + 12, b + 16, "IHDR")) return false;
+        uint32_t w = readBe32(b + 16), h = readBe32(b + 20);
+        if (w == 0 || h == 0 || w > INT32_MAX || h > INT32_MAX) return false;
+        width = int(w), height = int(h);
+        return true;
+    }
+    if (size < 4 || b[0] != 0xFF || b[1] != 0xD8) return false;
+    size_t i = 2;
+    while (i + 3 < size) {
+        if (b[i] != 0xFF) return false;
+        unsigned char m = b[i + 1];
+        if (m == 0xFF) { // fill byte
+            ++i;
+            continue;
+        }
+        if (m == 0x01 || (m >= 0xD0 && m <= 0xD8)) { // markers without a length
+            i += 2;
+            continue;
+        }
+        size_t length = size_t(b[i + 2]) << 8 | b[i + 3];
+        bool sof = m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+        if (sof) {
+            if (i + 9 > size || length < 7) return false;
+            height = int(b[i + 5]) << 8 | b[i + 6];
+            width = int(b[i + 7]) << 8 | b[i + 8];
+            return width > 0 && height > 0;
+        }
+        if (m == 0xDA || m == 0xD9 || length < 2) return false; // image data before any SOF
+        i += 2 + length;
+    }
+    return false;
+}
+
+Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
+                     Scene& scene, const WarnFn& warn) {
+    // Pass 1: which image each texture slot of each material shows (-1: none or unusable).
+    auto slotsOf = [](const tinygltf::Material& m) {
+        const auto& pbr = m.pbrMetallicRoughness;
+        return std::vector<std::pair<int, Slot>>{
+            {pbr.baseColorTexture.index, Slot::BaseColor},
+            {pbr.metallicRoughnessTexture.index, Slot::MetallicRoughness},
+            {m.normalTexture.index, Slot::Normal},
+            {m.occlusionTexture.index, Slot::Occlusion},
+            {m.emissiveTexture.index, Slot::Emissive}};
+    };
+    auto imageOf = [&](int texture) -> int {
+        if (texture < 0 || size_t(texture) >= model.textures.size()) return -1;
+        int source = model.textures[size_t(texture)].source;
+        return source >= 0 && size_t(source) < model.images.size() ? source : -1;
+    };
+    std::vector<char> needed(model.images.size(), 0);
+    std::vector<int> flavoursLeft(model.images.size(), 0); // distinct sRGB flags still to create
+    {
+        std::vector<char> seen(model.images.size() * 2, 0);
+        for (const tinygltf::Material& m : model.materials)
+            for (auto [texture, slot] : slotsOf(m))
+                if (int image = imageOf(texture); image >= 0) {
+                    needed[size_t(image)] = 1;
+                    char& s = seen[size_t(image) * 2 + (isSrgb(slot) ? 1 : 0)];
+                    if (!s) ++flavoursLeft[size_t(image)];
+                    s = 1;
+                }
+    }
+    std::vector<int> toDecode;
+    for (size_t i = 0; i < needed.size(); ++i)
+        if (needed[i] && (i >= imageProblems.size() || imageProblems[i].empty()))
+            toDecode.push_back(int(i));
+    std::vector<Decoded> decoded(model.images.size());
+    decodeAll(model, toDecode, decoded);
+    for (size_t i = 0; i < needed.size(); ++i) {
+        if (i < imageProblems.size() && !imageProblems[i].empty())
+            decoded[i].problem = imageProblems[i];
+        if (decoded[i].tooLarge)
+            return Error{imageLabel(model, int(i)) + " is " + std::to_string(decoded[i].width) +
+                         "x" + std::to_string(decoded[i].height) + ", over the " +
+                         std::to_string(kMaxTextureSide) + " limit"};
+        if (!decoded[i].problem.empty())
+            warn(imageLabel(model, int(i)) + ": " + decoded[i].problem +
+                 (needed[i] ? "; using a placeholder" : " (no material uses it)"));
+    }
+
+    // Pass 2: materials, creating textures on first use.
+    std::map<std::pair<int, bool>, int32_t> textureOf; // (image, srgb) -> scene texture
+    std::map<Slot, int32_t> placeholderOf;
+    auto resolve = [&](size_t material, int texture, Slot slot) -> int32_t {
+        if (texture < 0) return kNoTexture;
+        int image = imageOf(texture);
+        if (image < 0 || !decoded[size_t(image)].problem.empty()) {
+            if (image < 0)
+                warn("material " + std::to_string(material) + ": texture " +
+                     std::to_string(texture) +
+                     " does not exist or has no image this loader can read; using a placeholder");
+            auto [it, added] = placeholderOf.try_emplace(slot, int32_t(scene.textures.size()));
+            if (added) scene.textures.push_back(placeholder(slot));
+            return it->second;
+        }
+        auto [it, added] =
+            textureOf.try_emplace({image, isSrgb(slot)}, int32_t(scene.textures.size()));
+        if (added) {
+            Decoded& d = decoded[size_t(image)];
+            Texture t;
+            const tinygltf::Image& src = model.images[size_t(image)];
+            t.name = !src.name.empty() ? src.name : "image " + std::to_string(image);
+            if (src.name.empty() && !src.uri.empty() && src.uri.rfind("data:", 0) != 0)
+                t.name = src.uri;
+            t.width = uint32_t(d.width), t.height = uint32_t(d.height);
+            t.srgb = isSrgb(slot);
+            // The last texture made from an image takes its pixels; an earlier one copies them.
+            if (--flavoursLeft[size_t(image)] == 0)
+                t.rgba8 = std::move(d.rgba8);
+            else
+                t.rgba8 = d.rgba8;
+            scene.textures.push_back(std::move(t));
+        }
+        return it->second;
+    };
+
+    bool warnedTexCoord = false;
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& src = model.materials[i];
+        const auto& pbr = src.pbrMetallicRoughness;
+        Material m;
+        m.name = src.name;
+        if (pbr.baseColorFactor.size() == 4)
+            m.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                          pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+        m.metallicFactor = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
+        m.roughnessFactor = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+        if (src.emissiveFactor.size() == 3)
+            m.emissiveFactor =
+                glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
+        if (auto it = src.extensions.find("KHR_materials_emissive_strength");
+            it != src.extensions.end() && it->second.IsObject() &&
+            it->second.Has("emissiveStrength") && it->second.Get("emissiveStrength").IsNumber())
+            m.emissiveFactor *= float(it->second.Get("emissiveStrength").GetNumberAsDouble());
+        m.normalScale = float(src.normalTexture.scale);
+        m.occlusionStrength = float(src.occlusionTexture.strength);
+        if (src.alphaMode == "MASK")
+            m.alphaMode = AlphaMode::Mask;
+        else if (src.alphaMode == "BLEND")
+            m.alphaMode = AlphaMode::Blend;
+        else if (src.alphaMode != "OPAQUE")
+            warn("material " + std::to_string(i) + ": unknown alphaMode '" + src.alphaMode +
+                 "', drawn opaque");
+        m.alphaCutoff = float(src.alphaCutoff);
+        m.doubleSided = src.doubleSided;
+        for (auto [texture, slot] : slotsOf(src)) {
+            int32_t t = resolve(i, texture, slot);
+            switch (slot) {
+            case Slot::BaseColor:
+                m.baseColorTexture = t;
+                break;
+            case Slot::MetallicRoughness:
+                m.metallicRoughnessTexture = t;
+                break;
+            case Slot::Normal:
+                m.normalTexture = t;
+                break;
+            case Slot::Occlusion:
+                m.occlusionTexture = t;
+                break;
+            case Slot::Emissive:
+                m.emissiveTexture = t;
+                break;
+            }
+        }
+        int texCoord = std::max({pbr.baseColorTexture.texCoord,
+                                 pbr.metallicRoughnessTexture.texCoord, src.normalTexture.texCoord,
+                                 src.occlusionTexture.texCoord, src.emissiveTexture.texCoord});
+        if (texCoord > 0 && !warnedTexCoord) {
+            warnedTexCoord = true;
+            warn("material " + std::to_string(i) + " uses TEXCOORD_" + std::to_string(texCoord) +
+                 "; only TEXCOORD_0 is read");
+        }
+        scene.materials.push_back(std::move(m));
+    }
+    return {};
+}
+
+} // namespace tp::gltf
