@@ -67,4 +67,9 @@ Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size
 
 bool isDepthFormat(VkFormat format);
 
+// A global memory barrier, for the few hand-written ones outside the frame graph (uploads,
+// readbacks): each call site says why it needs one.
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+
 } // namespace tp
