@@ -359,8 +359,7 @@ class ForwardPlusRenderer final : public Renderer {
 
         std::string cullName = "fp_cull_" + settings_.lightLists + (msaa ? "_ms" : "") + "_comp";
         std::vector<SpecConstant> cullSpec = scene_.specConstants(AlphaMode::Opaque);
-        cullSpec.push_back({TP_FP_SPEC_TILE_X, settings_.tileSize});
-        cullSpec.push_back({TP_FP_SPEC_TILE_Y, settings_.tileSize});
+        cullSpec.push_back({TP_FP_SPEC_TILE_SIZE, settings_.tileSize});
         cullSpec.push_back({TP_FP_SPEC_SAMPLES, settings_.msaa});
         cullSpec.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
         cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_);

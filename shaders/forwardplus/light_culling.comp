@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Forward+ light culling: one workgroup per tile, one invocation per pixel of the tile
-// (tile size = workgroup size, a specialization constant).
+// Forward+ light culling: one workgroup per tile (tile size 8, 16 or 32: a specialization
+// constant), 64 invocations.
 //  1. Depth bounds: min/max over every sample of every pixel that has geometry (depth > 0);
 //     a tile with no geometry (sky) gets an empty opaque list. The transparent list (only
 //     when the scene has blended materials) spans the near plane to the tile's farthest
@@ -28,7 +28,11 @@
 #define TP_FP_CULL_COMPACT 1
 #endif
 
-layout(local_size_x_id = TP_FP_SPEC_TILE_X, local_size_y_id = TP_FP_SPEC_TILE_Y) in;
+// 64 invocations whatever the tile size: enough for the compaction (2 lists x 32 words),
+// and few enough that a barrier is cheap on lavapipe (it runs a workgroup as 8-lane
+// coroutines that switch at every barrier). Each invocation reads (tile / 8)^2 pixels.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_SAMPLES) const int kSamples = 1;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 
@@ -54,7 +58,11 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer Counte
 #endif
 
 shared uint sMinDepth, sMaxDepth, sAnySky;
-shared uint sBits[2][TP_FP_CHUNK_WORDS];
+shared TileFrustum sFrustum[2]; // opaque, transparent
+// Survivor bitmasks, triple-buffered by chunk so that the compact/fixed layouts need a
+// single barrier per chunk (buffer (c+1)%3 is cleared while chunk c is tested; its last
+// readers, chunk c-2's compaction, finished before chunk c-1's barrier).
+shared uint sBits[3][2][TP_FP_CHUNK_WORDS];
 shared uint sCount[2];   // survivors so far (kept + dropped)
 shared uint sDropped[2];
 shared uint sNodeBase[2]; // linked: first node of this chunk
@@ -65,7 +73,7 @@ const uint kNoNode = 0xffffffffu;
 
 void main() {
     const uint groupSize = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-    const uint tileSize = gl_WorkGroupSize.x;
+    const uint tileSize = kTileSize;
     const uint lid = gl_LocalInvocationIndex;
     const uvec2 tile = gl_WorkGroupID.xy;
     const uint tileIndex = tile.y * params.tiles.x + tile.x;
@@ -81,26 +89,36 @@ void main() {
             sHead[l] = kNoNode;
         }
     }
+    if (lid < TP_FP_CHUNK_WORDS) {
+        sBits[0][0][lid] = 0u;
+        sBits[0][1][lid] = 0u;
+    }
     barrier();
 
     // 1. Depth bounds over every sample (depths are non-negative, so their bit patterns
     //    order like the values).
-    uvec2 pixel = tile * tileSize + gl_LocalInvocationID.xy;
     uvec2 viewport = frame.viewport.xy;
-    if (all(lessThan(pixel, viewport))) {
+    {
         float lo = 2.0, hi = 0.0;
         bool sky = false;
-        for (int s = 0; s < kSamples; ++s) {
+        const uint perSide = tileSize / gl_WorkGroupSize.x;
+        for (uint py = 0u; py < perSide; ++py) {
+            for (uint px = 0u; px < perSide; ++px) {
+                uvec2 pixel = tile * tileSize + uvec2(px, py) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
+                if (any(greaterThanEqual(pixel, viewport))) continue;
+                for (int s = 0; s < kSamples; ++s) {
 #ifdef TP_FP_DEPTH_MS
-            float d = texelFetch(depthImage, ivec2(pixel), s).r;
+                    float d = texelFetch(depthImage, ivec2(pixel), s).r;
 #else
-            float d = texelFetch(depthImage, ivec2(pixel), 0).r;
+                    float d = texelFetch(depthImage, ivec2(pixel), 0).r;
 #endif
-            if (d > 0.0) {
-                lo = min(lo, d);
-                hi = max(hi, d);
-            } else {
-                sky = true;
+                    if (d > 0.0) {
+                        lo = min(lo, d);
+                        hi = max(hi, d);
+                    } else {
+                        sky = true;
+                    }
+                }
             }
         }
         if (hi > 0.0) {
@@ -114,14 +132,19 @@ void main() {
     const bool hasGeometry = sMaxDepth > 0u;
     const float nearDepth = uintBitsToFloat(sMaxDepth);
     const float farDepth = hasGeometry ? uintBitsToFloat(sMinDepth) : 0.0;
-    const vec2 viewportSize = vec2(viewport);
-    TileFrustum opaqueFrustum =
-        makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
-    // Transparent: from the near plane (depth 1) to the farthest opaque depth, or
-    // unbounded (depth 0) where the tile sees the sky.
-    float transparentFar = (sAnySky != 0u || !hasGeometry) ? 0.0 : farDepth;
-    TileFrustum transparentFrustum =
-        makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, 1.0, transparentFar);
+    // The sub-frusta are the same for the whole tile: one invocation builds them.
+    if (lid == 0u) {
+        const vec2 viewportSize = vec2(viewport);
+        sFrustum[0] = makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
+        // Transparent: from the near plane (depth 1) to the farthest opaque depth, or
+        // unbounded (depth 0) where the tile sees the sky.
+        float transparentFar = (sAnySky != 0u || !hasGeometry) ? 0.0 : farDepth;
+        if (kTwoLists)
+            sFrustum[1] = makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, 1.0, transparentFar);
+    }
+    barrier();
+    const TileFrustum opaqueFrustum = sFrustum[0];
+    const TileFrustum transparentFrustum = sFrustum[kTwoLists ? 1 : 0];
 
     const uint directionalCount = params.lights.x;
     const uint localCount = params.lights.y;
@@ -142,8 +165,13 @@ void main() {
     start[1] = 0u;
 #endif
 
+    const uint list = lid / TP_FP_CHUNK_WORDS; // compaction: invocation (list, word)
+    const uint word = lid % TP_FP_CHUNK_WORDS;
+    const bool compacts = list < numLists;
+    uint running = 0u; // compact/fixed: survivors of this invocation's list so far
     const uint chunkCount = (localCount + TP_FP_CHUNK_LIGHTS - 1u) / TP_FP_CHUNK_LIGHTS;
     for (uint step = 0u; step < chunkCount; ++step) {
+        const uint buf = step % 3u;
 #ifdef TP_FP_CULL_LINKED
         const uint chunk = chunkCount - 1u - step; // prepend: last chunk first
 #else
@@ -151,10 +179,9 @@ void main() {
 #endif
         const uint base = chunk * TP_FP_CHUNK_LIGHTS;
         if (lid < TP_FP_CHUNK_WORDS) {
-            sBits[0][lid] = 0u;
-            sBits[1][lid] = 0u;
+            sBits[(step + 1u) % 3u][0][lid] = 0u;
+            sBits[(step + 1u) % 3u][1][lid] = 0u;
         }
-        barrier();
 
         // 2. Test this chunk's lights, groupSize at a time.
         const uint inChunk = min(TP_FP_CHUNK_LIGHTS, localCount - base);
@@ -162,21 +189,22 @@ void main() {
             LightGpu light = lights[data[directionalCount + base + i]];
             uint bit = 1u << (i & 31u);
             if (hasGeometry && lightInTile(light, opaqueFrustum, frame.view))
-                atomicOr(sBits[0][i >> 5u], bit);
+                atomicOr(sBits[buf][0][i >> 5u], bit);
             if (kTwoLists && lightInTile(light, transparentFrustum, frame.view))
-                atomicOr(sBits[1][i >> 5u], bit);
+                atomicOr(sBits[buf][1][i >> 5u], bit);
         }
         barrier();
 
-        // 3. Compaction: invocation (list, word) writes the survivors of one 32-light word.
-        const uint list = lid / TP_FP_CHUNK_WORDS;
-        const uint word = lid % TP_FP_CHUNK_WORDS;
-        const bool compacts = list < numLists;
+        // 3. Compaction: invocation (list, word) writes the survivors of one 32-light word
+        //    after those of the words before it.
         uint prefix = 0u, bits = 0u, chunkTotal = 0u;
         if (compacts) {
-            for (uint j = 0u; j < word; ++j) prefix += bitCount(sBits[list][j]);
-            bits = sBits[list][word];
-            chunkTotal = prefix + bitCount(bits); // meaningful in the last word's invocation
+            for (uint j = 0u; j < TP_FP_CHUNK_WORDS; ++j) {
+                uint n = bitCount(sBits[buf][list][j]);
+                prefix += j < word ? n : 0u;
+                chunkTotal += n;
+            }
+            bits = sBits[buf][list][word];
         }
 #ifdef TP_FP_CULL_LINKED
         // One allocation per chunk and list; nodes past the pool are dropped and counted
@@ -212,9 +240,10 @@ void main() {
             sHead[list] = sNodeBase[list];
             sCount[list] += sKept[list];
         }
+        barrier();
 #else
         if (compacts && bits != 0u) {
-            uint pos = sCount[list] + prefix;
+            uint pos = running + prefix;
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
                 int lsb = findLSB(bits);
                 bits &= bits - 1u;
@@ -223,11 +252,13 @@ void main() {
                 ++pos;
             }
         }
-        barrier();
-        if (compacts && word == TP_FP_CHUNK_WORDS - 1u) sCount[list] += chunkTotal;
+        running += chunkTotal;
 #endif
-        barrier();
     }
+#ifndef TP_FP_CULL_LINKED
+    if (compacts && word == 0u) sCount[list] = running;
+#endif
+    barrier();
 
     if (lid == 0u) {
         FpTileLists t;

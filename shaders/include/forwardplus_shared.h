@@ -14,9 +14,7 @@ namespace tp::gpu {
 #define TP_FP_BINDING_COUNTER 4 // culling only, "linked" layout: node-pool allocation counter
 
 // ---- specialization constants (ids after the shared ones) ----
-#define TP_FP_SPEC_TILE_X 10    // culling workgroup width = tile size (8, 16, 32)
-#define TP_FP_SPEC_TILE_Y 11    // culling workgroup height = tile size
-#define TP_FP_SPEC_TILE_SIZE 12 // shading: tile size in pixels
+#define TP_FP_SPEC_TILE_SIZE 12 // tile size in pixels (8, 16, 32), culling and shading
 #define TP_FP_SPEC_SAMPLES 13   // culling: depth samples per pixel
 #define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
 #define TP_FP_SPEC_LAYOUT 15    // TP_FP_LAYOUT_*
