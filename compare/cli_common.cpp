@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/image/tonemap.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/procedural.h"
 
@@ -178,6 +179,32 @@ void ensureDirectory(const std::string& dir) {
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir))
         throw UsageError("--out " + dir + ": cannot create the directory (" + ec.message() + ")");
+}
+
+void checkFrameCounts(int frames, int warmup) {
+    if (frames < 1 || frames > 10000) throw UsageError("--frames must be between 1 and 10000");
+    if (warmup < 0 || warmup > 1000) throw UsageError("--warmup must be between 0 and 1000");
+}
+
+float parseExposure(const std::string& text, const ImageRGBA& image) {
+    if (text == "auto") return autoExposureEv(image);
+    char* end = nullptr;
+    float ev = std::strtof(text.c_str(), &end);
+    if (end == text.c_str() || *end || !std::isfinite(ev) || std::abs(ev) > 64.0f)
+        throw UsageError("--exposure '" + text + "': expected 'auto' or an EV between -64 and 64");
+    return ev;
+}
+
+RunOptions progressRunOptions(const std::string& label, int warmup, int frames) {
+    RunOptions r;
+    r.warmupFrames = uint32_t(warmup);
+    r.timedFrames = uint32_t(frames);
+    const uint32_t w = r.warmupFrames;
+    r.onFrame = [label, w](uint32_t f, uint32_t total, double ms) {
+        std::fprintf(stderr, "  %s frame %u/%u: %.1f ms%s\n", label.c_str(), f + 1, total, ms,
+                     f < w ? " (warm-up)" : "");
+    };
+    return r;
 }
 
 } // namespace tp::cli

@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "core/gpu/context.h"
+#include "core/image/image.h"
+#include "core/render/frame_runner.h"
 #include "core/render/settings.h"
 #include "core/scene/lights.h"
 #include "core/scene/scene.h"
@@ -57,5 +59,12 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
 
 // Creates DIR (and parents); error if it cannot.
 void ensureDirectory(const std::string& dir);
+
+// --frames / --warmup bounds shared by the commands that time frames.
+void checkFrameCounts(int frames, int warmup);
+// Exposure in EV: "auto" (log-average luminance of `image` to 0.18) or a number in [-64, 64].
+float parseExposure(const std::string& text, const ImageRGBA& image);
+// Warm-up then timed frames, one progress line per frame on stderr prefixed by `label`.
+RunOptions progressRunOptions(const std::string& label, int warmup, int frames);
 
 } // namespace tp::cli

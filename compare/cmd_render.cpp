@@ -30,15 +30,6 @@ struct RenderOptions {
     RenderSettings knobs;
 };
 
-float parseExposure(const std::string& text, const ImageRGBA& image) {
-    if (text == "auto") return autoExposureEv(image);
-    char* end = nullptr;
-    float ev = std::strtof(text.c_str(), &end);
-    if (end == text.c_str() || *end || !std::isfinite(ev) || std::abs(ev) > 64.0f)
-        throw UsageError("--exposure '" + text + "': expected 'auto' or an EV between -64 and 64");
-    return ev;
-}
-
 void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& run,
                   const GpuContext& ctx, const RenderSettings& settings, const SceneFeatures& features) {
     const std::string base = o.out + "/" + run.renderer;
@@ -66,8 +57,7 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
 }
 
 int run(RenderOptions& o) {
-    if (o.frames < 1 || o.frames > 10000) throw UsageError("--frames must be between 1 and 10000");
-    if (o.warmup < 0 || o.warmup > 1000) throw UsageError("--warmup must be between 0 and 1000");
+    checkFrameCounts(o.frames, o.warmup);
     Result<const RendererEntry*> entry = findRenderer(o.pipeline);
     if (!entry) throw UsageError("--pipeline: " + entry.error());
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
@@ -81,13 +71,7 @@ int run(RenderOptions& o) {
                  scene.source.c_str(), scene.triangleCount(), scene.lights.size(), settings.width,
                  settings.height, settings.msaa, ctx->info.name.c_str());
     SceneGpu gpuScene(*ctx, scene);
-    RunOptions runOptions;
-    runOptions.warmupFrames = uint32_t(o.warmup);
-    runOptions.timedFrames = uint32_t(o.frames);
-    runOptions.onFrame = [&](uint32_t f, uint32_t total, double ms) {
-        std::fprintf(stderr, "  %s frame %u/%u: %.1f ms%s\n", o.pipeline.c_str(), f + 1, total, ms,
-                     f < runOptions.warmupFrames ? " (warm-up)" : "");
-    };
+    RunOptions runOptions = progressRunOptions(o.pipeline, o.warmup, o.frames);
     Result<RunResult> result = runRenderer(*ctx, gpuScene, **entry, features, settings, runOptions);
     if (!result) throw UsageError(result.error());
     writeOutputs(o, scene, *result, *ctx, settings, features);

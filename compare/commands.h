@@ -2,6 +2,8 @@
 // Each triptych command adds its subcommand to the app and returns the function that runs
 // it (the exit code). compare/main.cpp wires them together and catches errors.
 #include <functional>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -11,5 +13,7 @@ using CommandRunner = std::function<int()>;
 
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addInfoCommand(CLI::App& app);
+// commandLine: argv as given, recorded in report.json so a run can be repeated.
+CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandLine);
 
 } // namespace tp::cli

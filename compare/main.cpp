@@ -1,6 +1,7 @@
 // triptych: one scene through several lighting pipelines, side by side with a reference.
 // Errors end here: one line on stderr and a non-zero exit code (2: bad input, 4: Vulkan
-// failure, 1: anything else), never a crash.
+// failure, 3: validation messages with --validate, 5: compare wrote its report but a
+// pipeline failed, 1: anything else), never a crash.
 #include <cstdio>
 #include <vector>
 
@@ -15,8 +16,9 @@ int main(int argc, char** argv) {
                  "brute-force reference (Vulkan)"};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Help for every command");
-    std::vector<tp::cli::CommandRunner> commands = {tp::cli::addRenderCommand(app),
-                                                    tp::cli::addInfoCommand(app)};
+    std::vector<tp::cli::CommandRunner> commands = {
+        tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
+        tp::cli::addRenderCommand(app), tp::cli::addInfoCommand(app)};
     try {
         app.parse(argc, argv);
         for (auto& command : commands) {

@@ -1,5 +1,7 @@
 #include "compare/run_json.h"
 
+#include <cmath>
+
 namespace tp::cli {
 
 nlohmann::json deviceJson(const GpuContext& ctx) {
@@ -59,9 +61,24 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
                            {"frames", t.frames},
                            {"device", ctx.info.name}});
     j["timings"] = timings;
+    j["memory"] = ledgerJson(run.memory);
+    const double pixels = double(run.hdr.pixelCount());
+    j["memory"]["bytes_per_pixel"] = pixels > 0 ? double(j["memory"]["total_bytes"].get<uint64_t>()) / pixels : 0.0;
+    nlohmann::json counters = nlohmann::json::object();
+    for (const auto& [k, v] : run.stats.counters) counters[k] = v;
+    j["counters"] = counters;
+    nlohmann::json leftOut = nlohmann::json::array();
+    for (const LeftOut& l : run.stats.leftOut) leftOut.push_back({{"what", l.what}, {"why", l.why}});
+    j["left_out"] = leftOut;
+    j["passes"] = run.passes;
+    j["culled_passes"] = run.culledPasses;
+    return j;
+}
+
+nlohmann::json ledgerJson(const std::vector<LedgerEntry>& entries) {
     nlohmann::json memory = nlohmann::json::array();
     uint64_t total = 0;
-    for (const LedgerEntry& e : run.memory) {
+    for (const LedgerEntry& e : entries) {
         memory.push_back({{"name", e.tag.name},
                           {"pass", e.tag.pass},
                           {"purpose", e.tag.purpose},
@@ -74,15 +91,19 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
                           {"bytes", e.bytes}});
         total += e.bytes;
     }
-    j["memory"] = {{"resources", memory}, {"total_bytes", total}};
-    nlohmann::json counters = nlohmann::json::object();
-    for (const auto& [k, v] : run.stats.counters) counters[k] = v;
-    j["counters"] = counters;
-    nlohmann::json leftOut = nlohmann::json::array();
-    for (const LeftOut& l : run.stats.leftOut) leftOut.push_back({{"what", l.what}, {"why", l.why}});
-    j["left_out"] = leftOut;
-    j["passes"] = run.passes;
-    j["culled_passes"] = run.culledPasses;
+    return {{"resources", memory}, {"total_bytes", total}};
+}
+
+nlohmann::json metricsJson(const ErrorReport& e) {
+    nlohmann::json j;
+    for (const MetricInfo& m : metricTable()) {
+        double v = m.value(e);
+        if (std::isfinite(v)) j[m.name] = v;
+        else j[m.name] = nullptr; // JSON has no infinity: PSNR of identical images
+    }
+    j["max_abs_x"] = e.maxAbsX;
+    j["max_abs_y"] = e.maxAbsY;
+    j["compared_pixels"] = e.comparedPixels;
     return j;
 }
 

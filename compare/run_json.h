@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/gpu/context.h"
+#include "core/image/metrics.h"
 #include "core/render/frame_runner.h"
 #include "core/render/settings.h"
 #include "core/scene/scene.h"
@@ -14,6 +15,12 @@ nlohmann::json deviceJson(const GpuContext& ctx);
 nlohmann::json settingsJson(const RenderSettings& s);
 nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f);
 // Timings carry the device's name beside every figure set.
+// Memory: {resources, total_bytes, bytes_per_pixel} (per output pixel).
 nlohmann::json runJson(const RunResult& run, const GpuContext& ctx);
+// Ledger entries as {resources: [...], total_bytes}; total is the sum of the entries' bytes.
+nlohmann::json ledgerJson(const std::vector<LedgerEntry>& entries);
+// Every metric of metricTable() by name, plus the location of the largest difference and
+// the pixel count compared. A PSNR of +inf (identical images) is written as null.
+nlohmann::json metricsJson(const ErrorReport& e);
 
 } // namespace tp::cli

@@ -1,0 +1,275 @@
+// triptych compare: the reference and each selected pipeline on one SceneGpu (same scene,
+// camera and lights), one exposure for every PNG (auto from the reference), signed
+// difference EXRs and heat maps on one shared scale, metrics against the reference and
+// between pipelines, then report.html and, last, report.json: a directory without
+// report.json is an unfinished run.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "compare/commands.h"
+#include "compare/compare.h"
+#include "compare/report_html.h"
+#include "compare/report_json.h"
+#include "core/gpu/vk_check.h"
+#include "core/image/difference.h"
+#include "core/image/image_io.h"
+#include "core/image/tonemap.h"
+#include "core/render/scene_gpu.h"
+#include "core/util/files.h"
+
+namespace tp::cli {
+namespace {
+
+std::vector<std::string> selectPipelines(const std::string& list) {
+    std::vector<std::string> names;
+    if (list.empty()) {
+        for (const RendererEntry& e : registeredRenderers())
+            if (e.name != "reference") names.push_back(e.name);
+        return names;
+    }
+    std::stringstream ss(list);
+    std::string name;
+    while (std::getline(ss, name, ',')) {
+        if (name == "reference") throw UsageError("--pipelines: the reference is always rendered; list the others");
+        Result<const RendererEntry*> e = findRenderer(name);
+        if (!e) throw UsageError("--pipelines: " + e.error());
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    if (names.empty()) throw UsageError("--pipelines '" + list + "': no pipeline named");
+    return names;
+}
+
+// A previous run's report must not survive next to this run's partial output.
+void removeStaleOutputs(const std::string& out, const std::vector<std::string>& names) {
+    std::vector<std::string> files = {"report.json", "report.html", "lights.json", "reference.exr", "reference.png"};
+    for (const std::string& n : names)
+        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png"}) files.push_back(n + suffix);
+    for (const std::string& f : files) {
+        std::error_code ec;
+        std::filesystem::remove(out + "/" + f, ec);
+    }
+}
+
+void check(const Status& s) {
+    if (!s) throw UsageError(s.error());
+}
+
+// Runs one renderer; a renderer that cannot be built, or a Vulkan failure inside it, becomes
+// a failed outcome so the other pipelines still run.
+PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const CompareRecord& r,
+                          const std::string& label) {
+    PipelineOutcome p;
+    p.name = name;
+    const RendererEntry* entry = *findRenderer(name);
+    auto start = std::chrono::steady_clock::now();
+    std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
+    try {
+        Result<RunResult> result =
+            runRenderer(ctx, scene, *entry, r.features, r.settings, progressRunOptions(name, r.options->warmup, r.options->frames));
+        if (result) p.run = std::move(*result);
+        else p.error = result.error();
+    } catch (const GpuError& e) {
+        p.error = std::string("Vulkan error: ") + e.what();
+    }
+    std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    if (p.run) std::fprintf(stderr, "triptych: %s %s done in %.1f s\n", label.c_str(), name.c_str(), took.count());
+    else std::fprintf(stderr, "triptych: %s %s FAILED: %s\n", label.c_str(), name.c_str(), p.error.c_str());
+    return p;
+}
+
+void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
+    check(writeExr(out + "/" + p.name + ".exr", p.run->hdr, ExrPixelType::Float));
+    check(writePng(out + "/" + p.name + ".png", tonemapToDisplay(p.run->hdr, ev)));
+    p.files = {p.name + ".exr", p.name + ".png"};
+}
+
+float brightestChannel(const ImageRGBA& image) {
+    float peak = 0.0f;
+    for (size_t i = 0; i < image.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c)
+            if (std::isfinite(image.rgba[i * 4 + c])) peak = std::max(peak, image.rgba[i * 4 + c]);
+    return peak > 0.0f ? peak : 1.0f;
+}
+
+// Metrics against the reference and the signed difference of every pipeline that ran.
+std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
+    const ImageRGBA& ref = r.reference.run->hdr;
+    MetricsOptions hdrOptions;
+    hdrOptions.psnrPeak = r.hdrPsnrPeak;
+    std::vector<ImageRGBA> diffs;
+    for (PipelineOutcome& p : r.pipelines) {
+        if (!p.run) {
+            diffs.emplace_back();
+            continue;
+        }
+        p.hdr = computeError(p.run->hdr, ref, hdrOptions);
+        p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
+        diffs.push_back(signedDifference(p.run->hdr, ref));
+        p.diffP99 = differencePercentile99(diffs.back());
+        r.diffScale = std::max(r.diffScale, p.diffP99);
+    }
+    // A scale of 0 (every pipeline equals the reference) would make the legend meaningless.
+    if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f;
+    return diffs;
+}
+
+void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
+    const std::string& out = r.options->out;
+    for (size_t i = 0; i < r.pipelines.size(); ++i) {
+        PipelineOutcome& p = r.pipelines[i];
+        if (!p.run) continue;
+        check(writeExr(out + "/" + p.name + "_diff.exr", diffs[i], ExrPixelType::Float));
+        check(writePng(out + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale)));
+        p.files.push_back(p.name + "_diff.exr");
+        p.files.push_back(p.name + "_diff.png");
+    }
+}
+
+void measurePairs(CompareRecord& r) {
+    MetricsOptions hdrOptions;
+    hdrOptions.psnrPeak = r.hdrPsnrPeak;
+    for (size_t i = 0; i < r.pipelines.size(); ++i)
+        for (size_t k = i + 1; k < r.pipelines.size(); ++k) {
+            const PipelineOutcome &a = r.pipelines[i], &b = r.pipelines[k];
+            if (!a.run || !b.run) continue;
+            PairOutcome pair{a.name, b.name, computeError(a.run->hdr, b.run->hdr, hdrOptions),
+                             computeError(tonemapToDisplay(a.run->hdr, r.exposureEv),
+                                          tonemapToDisplay(b.run->hdr, r.exposureEv))};
+            r.pairs.push_back(std::move(pair));
+        }
+}
+
+double frameMedian(const RunResult& run) {
+    for (const TimingStats& t : run.timings)
+        if (t.name == "frame") return t.medianMs;
+    return 0.0;
+}
+
+void printSummary(const CompareRecord& r) {
+    const std::string& device = r.ctx->info.name;
+    std::printf("%-18s %12s %12s %12s %14s %10s  %s\n", "pipeline", "frame ms", "memory MiB", "bytes/px",
+                "rmse (hdr)", "psnr (tm)", "status");
+    auto row = [&](const PipelineOutcome& p, bool reference) {
+        if (!p.run) {
+            std::printf("%-18s %12s %12s %12s %14s %10s  FAILED: %s\n", p.name.c_str(), "-", "-", "-", "-", "-",
+                        p.error.c_str());
+            return;
+        }
+        uint64_t bytes = 0;
+        for (const LedgerEntry& e : p.run->memory) bytes += e.bytes;
+        double bpp = double(bytes) / double(std::max<size_t>(1, p.run->hdr.pixelCount()));
+        char rmse[32] = "-", psnr[32] = "-";
+        if (!reference) {
+            std::snprintf(rmse, sizeof rmse, "%.3e", p.hdr.rmse);
+            std::snprintf(psnr, sizeof psnr, std::isfinite(p.display.psnr) ? "%.2f" : "inf", p.display.psnr);
+        }
+        std::printf("%-18s %12.3f %12.2f %12.1f %14s %10s  ok\n", p.name.c_str(), frameMedian(*p.run),
+                    double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr);
+    };
+    row(r.reference, true);
+    for (const PipelineOutcome& p : r.pipelines) row(p, false);
+    uint64_t shared = 0;
+    for (const LedgerEntry& e : r.sharedMemory) shared += e.bytes;
+    std::printf("frame ms: median GPU time on %s%s; shared scene data %.2f MiB counted once\n", device.c_str(),
+                r.ctx->isCpuDevice() ? " (CPU-rasterizer times)" : "", double(shared) / (1024.0 * 1024.0));
+}
+
+void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, const std::vector<std::string>& names) {
+    for (size_t i = 0; i < names.size(); ++i) {
+        std::string label = "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
+        PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, label);
+        if (p.run) {
+            writeImages(r.options->out, p, r.exposureEv);
+            double dropped = 0;
+            for (const auto& [k, v] : p.run->stats.counters)
+                if (k == "lights_dropped") dropped = v;
+            if (dropped > 0)
+                std::fprintf(stderr, "triptych: warning: %s dropped %.0f lights (see its counters)\n",
+                             p.name.c_str(), dropped);
+        }
+        r.pipelines.push_back(std::move(p));
+    }
+}
+
+} // namespace
+
+int runCompare(const CompareOptions& o) {
+    checkFrameCounts(o.frames, o.warmup);
+    std::vector<std::string> names = selectPipelines(o.pipelines);
+    if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
+    std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    CompareRecord r;
+    r.options = &o;
+    r.ctx = ctx.get();
+    r.settings = makeSettings(o.view, *ctx, o.knobs);
+    r.settings.referenceFp64 = o.referencePrecision == "fp64";
+    Scene scene = loadScene(o.scene);
+    r.scene = &scene;
+    r.features = analyzeScene(scene, r.settings.msaa);
+    if (scene.source.rfind("builtin:", 0) != 0) r.sceneHash = hashFile(scene.source);
+    ensureDirectory(o.out);
+    removeStaleOutputs(o.out, names);
+    std::fprintf(stderr, "triptych: compare %s, %zu triangles, %zu lights, %ux%u, %ux MSAA, %d+%d frames on %s\n",
+                 scene.source.c_str(), scene.triangleCount(), scene.lights.size(), r.settings.width,
+                 r.settings.height, r.settings.msaa, o.warmup, o.frames, ctx->info.name.c_str());
+
+    SceneGpu gpuScene(*ctx, scene);
+    r.sharedMemory = ctx->ledger.entriesOf("scene");
+    r.reference = renderOne(*ctx, gpuScene, "reference", r, "[1/" + std::to_string(names.size() + 1) + "]");
+    if (!r.reference.run) throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
+    r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
+    r.hdrPsnrPeak = brightestChannel(r.reference.run->hdr);
+    writeImages(o.out, r.reference, r.exposureEv);
+    check(writeLightsFile(o.out + "/lights.json", scene.lights));
+
+    renderPipelines(r, *ctx, gpuScene, names);
+    std::vector<ImageRGBA> diffs = measure(r, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
+    writeDifferences(r, diffs);
+    measurePairs(r);
+    r.validationMessages = ctx->validationMessages();
+
+    nlohmann::json report = reportJson(r);
+    Result<std::string> html = reportHtml(report, o.out);
+    if (!html) throw UsageError(html.error());
+    check(writeTextFile(o.out + "/report.html", *html));
+    check(writeTextFile(o.out + "/report.json", report.dump(2) + "\n")); // last: marks the run complete
+    printSummary(r);
+    std::fprintf(stderr, "triptych: wrote %s/report.html, report.json and the images\n", o.out.c_str());
+
+    if (!r.validationMessages.empty()) {
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", r.validationMessages.size(),
+                     r.validationMessages.front().c_str());
+        return 3;
+    }
+    return report["status"] == "ok" ? 0 : 5;
+}
+
+CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandLine) {
+    auto o = std::make_shared<CompareOptions>();
+    o->commandLine = std::move(commandLine);
+    CLI::App* cmd = app.add_subcommand(
+        "compare", "Render the scene with the reference and each pipeline; write images, difference maps, "
+                   "report.json and report.html");
+    addSceneOptions(*cmd, o->scene);
+    addViewOptions(*cmd, o->view);
+    addDeviceOptions(*cmd, o->device);
+    std::string names;
+    for (const RendererEntry& e : registeredRenderers())
+        if (e.name != "reference") names += (names.empty() ? "" : ",") + e.name;
+    cmd->add_option("--pipelines", o->pipelines,
+                    "Comma-separated pipelines to compare with the reference (default: all: " + names + ")");
+    cmd->add_option("--out", o->out, "Output directory (created if missing)")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Timed frames per pipeline (median/min/max are over these)")
+        ->capture_default_str();
+    cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")->capture_default_str();
+    cmd->add_option("--exposure", o->exposure,
+                    "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the reference)")
+        ->capture_default_str();
+    addPipelineOptions(*cmd, o->knobs, o->referencePrecision);
+    return [o, cmd]() { return cmd->parsed() ? runCompare(*o) : -1; };
+}
+
+} // namespace tp::cli

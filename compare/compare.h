@@ -1,0 +1,32 @@
+#pragma once
+// triptych compare: the reference and every selected pipeline on ONE uploaded scene, their
+// images, difference maps, error metrics, timings and memory, written as report.json and a
+// self-contained report.html (docs/report.md). Exposed for the tests, which set knobs the
+// CLI would refuse.
+#include <string>
+#include <vector>
+
+#include "compare/cli_common.h"
+#include "core/render/settings.h"
+
+namespace tp::cli {
+
+struct CompareOptions {
+    SceneOptions scene;
+    DeviceOptions device;
+    ViewOptions view;
+    std::string pipelines;           // comma-separated; empty = every registered one but the reference
+    std::string out = "out";
+    int frames = 3;
+    int warmup = 1;
+    std::string exposure = "auto";   // of every PNG; "auto" is taken from the reference
+    std::string referencePrecision = "fp64";
+    RenderSettings knobs;
+    std::vector<std::string> commandLine; // recorded in report.json
+};
+
+// Exit codes: 0 all ran; 3 validation messages (with --validate); 5 the report was written
+// but a pipeline failed (recorded in it). Bad input and a failed reference throw UsageError.
+int runCompare(const CompareOptions& o);
+
+} // namespace tp::cli

@@ -1,0 +1,264 @@
+// report.html from report.json: what a person reads first. Everything is inline so the page
+// opens offline from any directory; numbers come from report.json only, so the page and the
+// JSON cannot disagree.
+#include "compare/report_html.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "compare/svg_plot.h"
+
+namespace tp::cli {
+namespace {
+
+using nlohmann::json;
+
+const char* kStyle = R"(
+body{font-family:sans-serif;margin:16px 24px;color:#222;max-width:1400px}
+h1{font-size:22px;margin:4px 0}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ccc}
+table{border-collapse:collapse;font-size:13px;margin:6px 0}
+td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f0f0f0}
+td.l,th.l{text-align:left}
+.meta{font-size:13px;color:#444}.meta code{background:#f4f4f4;padding:1px 4px;word-break:break-all}
+.failed{background:#fde2e2;border:1px solid #d33;padding:8px;margin:8px 0}
+.note{background:#fff6d6;border:1px solid #e0c040;padding:6px;margin:8px 0;font-size:13px}
+.grid{display:grid;grid-template-columns:repeat(2,minmax(0,1fr));gap:12px}
+figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #999}
+figcaption{font-size:12px;color:#333;margin-top:2px}
+details{margin:6px 0}summary{cursor:pointer;font-weight:bold}
+)";
+
+Result<std::string> readBinary(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error{path + ": cannot read for report.html"};
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string esc(const json& j) { return escapeXml(j.is_string() ? j.get<std::string>() : j.dump()); }
+
+std::string numberCell(const json& j) {
+    if (j.is_null()) return "<td>inf</td>";
+    return "<td>" + formatNumber(j.get<double>()) + "</td>";
+}
+
+double frameMedian(const json& outcome) {
+    for (const json& t : outcome["run"]["timings"])
+        if (t["pass"] == "frame") return t["median_ms"].get<double>();
+    return 0.0;
+}
+
+bool ok(const json& outcome) { return outcome["status"] == "ok"; }
+
+std::string header(const json& r) {
+    const json& s = r["settings"];
+    std::string h = "<h1>triptych compare: " + esc(r["scene"]["path"]) + "</h1>\n<p class=\"meta\">";
+    h += std::to_string(s["width"].get<int>()) + "&times;" + std::to_string(s["height"].get<int>()) + ", " +
+         std::to_string(s["msaa"].get<int>()) + "&times; MSAA, " + std::to_string(r["scene"]["lights"].get<int>()) +
+         " lights (seed " + esc(r["seed"]) + "), " + std::to_string(r["scene"]["triangles"].get<int>()) +
+         " triangles; " + std::to_string(s["warmup"].get<int>()) + " warm-up + " +
+         std::to_string(s["frames"].get<int>()) + " timed frames per pipeline; exposure " +
+         formatNumber(s["exposure_ev"].get<double>()) + " EV for every PNG.<br>Device: <b>" +
+         esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) + ")<br>Command: <code>" +
+         esc(r["command"]) + "</code></p>\n";
+    if (r["device"].contains("note")) h += "<div class=\"note\">" + esc(r["device"]["note"]) + ".</div>\n";
+    for (const json& p : r["pipelines"])
+        if (!ok(p)) h += "<div class=\"failed\"><b>" + esc(p["name"]) + " failed:</b> " + esc(p["error"]) + "</div>\n";
+    for (const json& m : r["validation_messages"]) h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
+    return h;
+}
+
+std::string summaryTable(const json& r) {
+    std::string device = esc(r["device"]["name"]);
+    std::string t = "<h2>Summary</h2>\n<table><tr><th class=\"l\">pipeline</th><th>frame median ms<br>(" + device +
+                    ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>PSNR dB "
+                    "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>lights dropped</th></tr>\n";
+    auto row = [&](const json& p, bool reference) {
+        t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>";
+        if (!ok(p)) {
+            t += "<td colspan=\"7\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
+            return;
+        }
+        const json& mem = p["run"]["memory"];
+        t += "<td>" + formatNumber(frameMedian(p)) + "</td><td>" +
+             formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" + numberCell(mem["bytes_per_pixel"]);
+        if (reference) t += "<td>0</td><td>inf</td><td>0</td>";
+        else {
+            const json& e = p["error_vs_reference"];
+            t += numberCell(e["hdr"]["rmse"]) + numberCell(e["tonemapped"]["psnr"]) +
+                 numberCell(e["tonemapped"]["share_over_threshold"]);
+        }
+        t += numberCell(p["lights_dropped"]) + "</tr>\n";
+    };
+    row(r["reference"], true);
+    for (const json& p : r["pipelines"]) row(p, false);
+    t += "</table>\n<p class=\"meta\">Shared scene data (counted once, not in any pipeline's total): " +
+         formatNumber(r["shared_memory"]["total_bytes"].get<double>() / 1048576.0) + " MiB.</p>\n";
+    return t;
+}
+
+std::string errorPlot(const json& r) {
+    std::vector<PlotPoint> points;
+    points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
+    for (const json& p : r["pipelines"])
+        if (ok(p)) points.push_back({p["name"].get<std::string>(), frameMedian(p), p["error_vs_reference"]["hdr"]["rmse"].get<double>()});
+    return "<h2>Error against run time</h2>\n" +
+           scatterLogLogSvg(points, "frame time, median ms on " + r["device"]["name"].get<std::string>(),
+                            "RMSE vs reference (linear HDR)") +
+           "<p class=\"meta\">Lower left is better: cheaper and closer to the reference.</p>\n";
+}
+
+Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption) {
+    Result<std::string> bytes = readBinary(outDir + "/" + file);
+    if (!bytes) return Error{bytes.error()};
+    return "<figure><img alt=\"" + escapeXml(file) + "\" src=\"data:image/png;base64," + base64(*bytes) +
+           "\"><figcaption>" + caption + "</figcaption></figure>\n";
+}
+
+Result<std::string> imagesSection(const json& r, const std::string& outDir) {
+    std::string h = "<h2>Images and differences</h2>\n<p class=\"meta\">Left: tonemapped image. Right: heat map of "
+                    "|pipeline &minus; reference| (max over RGB, linear), one scale for the whole report: 0 to " +
+                    formatNumber(r["difference_scale"]["value"].get<double>()) + " (" +
+                    esc(r["difference_scale"]["rule"]) + "). Magenta: NaN/Inf.</p>\n<div class=\"grid\">\n";
+    Result<std::string> ref = figure(outDir, "reference.png", "reference");
+    if (!ref) return ref;
+    h += *ref + "<figure><figcaption>The reference: every light at every sample.</figcaption></figure>\n";
+    for (const json& p : r["pipelines"]) {
+        if (!ok(p)) continue;
+        const std::string name = p["name"];
+        const json& e = p["error_vs_reference"];
+        Result<std::string> img = figure(outDir, name + ".png", escapeXml(name));
+        Result<std::string> diff = figure(outDir, name + "_diff.png",
+                                          escapeXml(name) + " &minus; reference: RMSE " + formatNumber(e["hdr"]["rmse"].get<double>()) +
+                                              ", max " + formatNumber(e["hdr"]["max_abs"].get<double>()) + " (HDR)");
+        if (!img) return img;
+        if (!diff) return diff;
+        h += *img + *diff;
+    }
+    return h + "</div>\n";
+}
+
+std::string timingSection(const json& r) {
+    std::vector<BarGroup> groups;
+    auto add = [&](const json& p) {
+        if (!ok(p)) return;
+        BarGroup g{p["name"].get<std::string>(), {}};
+        for (const json& t : p["run"]["timings"]) g.bars.push_back({t["pass"].get<std::string>(), t["median_ms"].get<double>()});
+        groups.push_back(std::move(g));
+    };
+    add(r["reference"]);
+    for (const json& p : r["pipelines"]) add(p);
+    std::string h = "<h2>GPU time per pass (median over timed frames, " + esc(r["device"]["name"]) + ")</h2>\n" +
+                    barChartSvg(groups, "ms");
+    h += "<details><summary>median / min / max per pass</summary><table><tr><th class=\"l\">pipeline</th><th "
+         "class=\"l\">pass</th><th>median ms</th><th>min ms</th><th>max ms</th><th>frames</th><th class=\"l\">device</th></tr>\n";
+    auto rows = [&](const json& p) {
+        if (!ok(p)) return;
+        for (const json& t : p["run"]["timings"])
+            h += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" + esc(t["pass"]) + "</td>" +
+                 numberCell(t["median_ms"]) + numberCell(t["min_ms"]) + numberCell(t["max_ms"]) + "<td>" +
+                 esc(t["frames"]) + "</td><td class=\"l\">" + esc(t["device"]) + "</td></tr>\n";
+    };
+    rows(r["reference"]);
+    for (const json& p : r["pipelines"]) rows(p);
+    return h + "</table></details>\n";
+}
+
+std::string ledgerTable(const json& memory) {
+    std::string t = "<table><tr><th class=\"l\">name</th><th class=\"l\">pass</th><th class=\"l\">kind</th><th "
+                    "class=\"l\">format</th><th>extent</th><th>samples</th><th>bytes</th><th class=\"l\">purpose</th></tr>\n";
+    for (const json& e : memory["resources"])
+        t += "<tr><td class=\"l\">" + esc(e["name"]) + "</td><td class=\"l\">" + esc(e["pass"]) + "</td><td class=\"l\">" +
+             esc(e["kind"]) + "</td><td class=\"l\">" + esc(e["format"]) + "</td><td>" +
+             (e["kind"] == "image" ? esc(e["width"]) + "&times;" + esc(e["height"]) : std::string("")) + "</td><td>" +
+             esc(e["samples"]) + "</td><td>" + esc(e["bytes"]) + "</td><td class=\"l\">" + esc(e["purpose"]) + "</td></tr>\n";
+    return t + "<tr><th class=\"l\" colspan=\"6\">total</th><th>" + esc(memory["total_bytes"]) + "</th><th></th></tr></table>\n";
+}
+
+std::string memorySection(const json& r) {
+    std::string h = "<h2>Memory</h2>\n<table><tr><th class=\"l\">owner</th><th>resources</th><th>total bytes</th><th>MiB</th><th>bytes / pixel</th></tr>\n";
+    auto row = [&](const std::string& name, const json& mem) {
+        h += "<tr><td class=\"l\">" + escapeXml(name) + "</td><td>" + std::to_string(mem["resources"].size()) + "</td><td>" +
+             esc(mem["total_bytes"]) + "</td><td>" + formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" +
+             (mem.contains("bytes_per_pixel") ? numberCell(mem["bytes_per_pixel"]) : "<td>&ndash;</td>") + "</tr>\n";
+    };
+    row("scene (shared, counted once)", r["shared_memory"]);
+    if (ok(r["reference"])) row("reference", r["reference"]["run"]["memory"]);
+    for (const json& p : r["pipelines"])
+        if (ok(p)) row(p["name"], p["run"]["memory"]);
+    h += "</table>\n";
+    auto details = [&](const std::string& name, const json& mem) {
+        h += "<details><summary>" + escapeXml(name) + "</summary>" + ledgerTable(mem) + "</details>\n";
+    };
+    if (ok(r["reference"])) details("reference", r["reference"]["run"]["memory"]);
+    for (const json& p : r["pipelines"])
+        if (ok(p)) details(p["name"], p["run"]["memory"]);
+    details("scene (shared)", r["shared_memory"]);
+    return h;
+}
+
+std::string pairwiseSection(const json& r) {
+    if (r["pairwise"].empty()) return "";
+    std::string h = "<h2>Pipelines against each other</h2>\n<table><tr><th class=\"l\">a</th><th class=\"l\">b</th>"
+                    "<th>RMSE (HDR)</th><th>max |a&minus;b| (HDR)</th><th>PSNR dB (tonemapped)</th><th>max (tonemapped)</th></tr>\n";
+    for (const json& p : r["pairwise"])
+        h += "<tr><td class=\"l\">" + esc(p["a"]) + "</td><td class=\"l\">" + esc(p["b"]) + "</td>" + numberCell(p["hdr"]["rmse"]) +
+             numberCell(p["hdr"]["max_abs"]) + numberCell(p["tonemapped"]["psnr"]) + numberCell(p["tonemapped"]["max_abs"]) + "</tr>\n";
+    return h + "</table>\n";
+}
+
+std::string detailsSection(const json& r) {
+    std::string h = "<h2>Counters and what was left out</h2>\n";
+    auto block = [&](const json& p) {
+        if (!ok(p)) return;
+        h += "<details><summary>" + esc(p["name"]) + "</summary><table>";
+        for (const auto& [k, v] : p["run"]["counters"].items())
+            h += "<tr><td class=\"l\">" + escapeXml(k) + "</td>" + numberCell(v) + "</tr>";
+        h += "</table><ul>";
+        for (const json& l : p["run"]["left_out"]) h += "<li>left out: " + esc(l["what"]) + " &mdash; " + esc(l["why"]) + "</li>";
+        for (const json& c : p["run"]["culled_passes"]) h += "<li>culled pass: " + esc(c) + "</li>";
+        h += "</ul></details>\n";
+    };
+    block(r["reference"]);
+    for (const json& p : r["pipelines"]) block(p);
+    h += "<h2>Metrics</h2>\n<table>";
+    for (const json& m : r["metrics_table"]["metrics"])
+        h += "<tr><td class=\"l\">" + esc(m["name"]) + "</td><td class=\"l\">" + esc(m["description"]) + "</td></tr>";
+    return h + "</table>\n<p class=\"meta\">HDR PSNR peak: " + formatNumber(r["metrics_table"]["psnr_peak_hdr"].get<double>()) +
+           " (" + esc(r["metrics_table"]["hdr_psnr_peak_rule"]) + "); tonemapped PSNR peak 1.</p>\n";
+}
+
+} // namespace
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16 | uint32_t(uint8_t(bytes[i + 1])) << 8 | uint8_t(bytes[i + 2]);
+        for (int s = 18; s >= 0; s -= 6) out += table[(v >> s) & 63];
+    }
+    if (i < bytes.size()) {
+        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+Result<std::string> reportHtml(const json& r, const std::string& outDir) {
+    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych compare</title>\n<style>";
+    h += kStyle;
+    h += "</style></head><body>\n" + header(r) + summaryTable(r) + errorPlot(r);
+    Result<std::string> images = imagesSection(r, outDir);
+    if (!images) return images;
+    h += *images + timingSection(r) + memorySection(r) + pairwiseSection(r) + detailsSection(r);
+    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n</body></html>\n";
+}
+
+} // namespace tp::cli

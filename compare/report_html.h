@@ -1,0 +1,18 @@
+#pragma once
+// report.html: one self-contained page made from report.json and the PNGs beside it
+// (embedded as base64 data URIs; inline CSS and SVG; no script, no network).
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/util/result.h"
+
+namespace tp::cli {
+
+// `report` follows schema triptych.report/1; PNGs named in its "files" lists are read from
+// outDir. Fails (naming the file) when a PNG cannot be read.
+Result<std::string> reportHtml(const nlohmann::json& report, const std::string& outDir);
+
+std::string base64(const std::string& bytes);
+
+} // namespace tp::cli

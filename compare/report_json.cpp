@@ -1,0 +1,135 @@
+// report.json: everything needed to read the comparison and to repeat it (command line,
+// seed, scene path and hash, settings, device). Field meanings: docs/report.md.
+#include "compare/report_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "compare/run_json.h"
+
+namespace tp::cli {
+namespace {
+
+std::string joinCommandLine(const std::vector<std::string>& args) {
+    std::string out;
+    for (const std::string& a : args) {
+        if (!out.empty()) out += ' ';
+        bool plain = !a.empty() && a.find_first_of(" \t\"'\\$`") == std::string::npos;
+        out += plain ? a : "'" + a + "'";
+    }
+    return out;
+}
+
+double counter(const RunResult& run, const std::string& name, double fallback) {
+    for (const auto& [k, v] : run.stats.counters)
+        if (k == name) return v;
+    return fallback;
+}
+
+nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool isReference) {
+    nlohmann::json j;
+    j["name"] = p.name;
+    j["status"] = p.run ? "ok" : "failed";
+    j["files"] = p.files;
+    if (!p.run) {
+        j["error"] = p.error;
+        return j;
+    }
+    j["run"] = runJson(*p.run, ctx);
+    // Pipelines that cannot drop a light do not count drops: 0 for them.
+    j["lights_dropped"] = counter(*p.run, "lights_dropped", 0.0);
+    if (!isReference) {
+        j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)}, {"tonemapped", metricsJson(p.display)}};
+        j["difference_p99"] = p.diffP99;
+    }
+    return j;
+}
+
+nlohmann::json metricTableJson(const CompareRecord& r) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const MetricInfo& m : metricTable()) list.push_back({{"name", m.name}, {"description", m.description}});
+    MetricsOptions defaults;
+    return {{"metrics", list},
+            {"relative_epsilon", defaults.relativeEpsilon},
+            {"over_threshold", defaults.overThreshold},
+            {"psnr_peak_hdr", r.hdrPsnrPeak},
+            {"psnr_peak_tonemapped", 1.0},
+            {"hdr_psnr_peak_rule", "brightest finite RGB channel of the reference image"}};
+}
+
+} // namespace
+
+nlohmann::json reportJson(const CompareRecord& r) {
+    const CompareOptions& o = *r.options;
+    nlohmann::json j;
+    j["schema"] = "triptych.report/1";
+    j["command_line"] = o.commandLine;
+    j["command"] = joinCommandLine(o.commandLine);
+    bool allOk = std::all_of(r.pipelines.begin(), r.pipelines.end(), [](const PipelineOutcome& p) { return bool(p.run); });
+    j["status"] = allOk ? "ok" : "failed";
+    j["seed"] = o.scene.seed;
+    j["scene"] = sceneJson(*r.scene, r.features);
+    j["scene"]["path"] = o.scene.scene.empty() ? "builtin:courtyard" : o.scene.scene;
+    j["scene"]["hash_fnv1a64"] = r.sceneHash.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.sceneHash);
+    j["scene"]["lights_file"] = "lights.json";
+    j["settings"] = settingsJson(r.settings);
+    j["settings"]["frames"] = o.frames;
+    j["settings"]["warmup"] = o.warmup;
+    j["settings"]["exposure"] = o.exposure;
+    j["settings"]["exposure_ev"] = r.exposureEv;
+    j["settings"]["light_types"] = o.scene.lightTypes;
+    j["settings"]["lights_requested"] = o.scene.lightCount;
+    j["device"] = deviceJson(*r.ctx);
+    j["difference_scale"] = {{"value", r.diffScale},
+                             {"unit", "linear radiance, max over RGB of |pipeline - reference|"},
+                             {"rule", "largest 99th percentile of |difference| over the pipelines"}};
+    j["metrics_table"] = metricTableJson(r);
+    j["shared_memory"] = ledgerJson(r.sharedMemory);
+    j["shared_memory"]["owner"] = "scene";
+    j["reference"] = outcomeJson(r.reference, *r.ctx, true);
+    nlohmann::json pipelines = nlohmann::json::array();
+    for (const PipelineOutcome& p : r.pipelines) pipelines.push_back(outcomeJson(p, *r.ctx, false));
+    j["pipelines"] = pipelines;
+    nlohmann::json pairs = nlohmann::json::array();
+    for (const PairOutcome& p : r.pairs)
+        pairs.push_back({{"a", p.a}, {"b", p.b}, {"hdr", metricsJson(p.hdr)}, {"tonemapped", metricsJson(p.display)}});
+    j["pairwise"] = pairs;
+    j["validation_messages"] = r.validationMessages;
+    j["files"] = {"lights.json", "report.json", "report.html"};
+    return j;
+}
+
+float differencePercentile99(const ImageRGBA& signedDiff) {
+    std::vector<float> values;
+    values.reserve(signedDiff.pixelCount());
+    for (size_t i = 0; i < signedDiff.pixelCount(); ++i) {
+        const float* px = &signedDiff.rgba[i * 4];
+        float m = std::max({std::abs(px[0]), std::abs(px[1]), std::abs(px[2])});
+        if (std::isfinite(m)) values.push_back(m);
+    }
+    if (values.empty()) return 0.0f;
+    size_t k = std::min(values.size() - 1, size_t(std::ceil(0.99 * double(values.size()))) - 1);
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+    return values[k];
+}
+
+std::string hashFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    uint64_t h = 1469598103934665603ull; // FNV-1a 64 offset basis
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            h ^= uint8_t(buffer[i]);
+            h *= 1099511628211ull;
+        }
+        if (!in) break;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", (unsigned long long)h);
+    return hex;
+}
+
+} // namespace tp::cli

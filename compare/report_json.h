@@ -1,0 +1,58 @@
+#pragma once
+// The compare run as data (what was rendered, how it went, how it measures up) and its
+// report.json (schema "triptych.report/1", documented in docs/report.md).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/compare.h"
+#include "core/gpu/context.h"
+#include "core/image/metrics.h"
+#include "core/render/frame_runner.h"
+#include "core/scene/scene.h"
+
+namespace tp::cli {
+
+struct PipelineOutcome {
+    std::string name;
+    std::string error;            // why it failed; empty when it ran
+    std::optional<RunResult> run; // set when it ran
+    ErrorReport hdr;              // against the reference, linear
+    ErrorReport display;          // against the reference, tonemapped (same exposure)
+    float diffP99 = 0;            // 99th percentile of max-channel |diff| (linear)
+    std::vector<std::string> files; // written into --out, relative names
+};
+
+struct PairOutcome {
+    std::string a, b; // b is the "reference" side of computeError
+    ErrorReport hdr, display;
+};
+
+struct CompareRecord {
+    const CompareOptions* options = nullptr;
+    const Scene* scene = nullptr;
+    SceneFeatures features;
+    RenderSettings settings;
+    const GpuContext* ctx = nullptr;
+    std::string sceneHash;        // FNV-1a 64 of the scene file, hex; empty for built-ins
+    float exposureEv = 0;
+    float diffScale = 0;          // shared heat-map scale
+    float hdrPsnrPeak = 1;        // brightest finite reference channel
+    std::vector<LedgerEntry> sharedMemory; // owner "scene": counted once
+    PipelineOutcome reference;
+    std::vector<PipelineOutcome> pipelines;
+    std::vector<PairOutcome> pairs;
+    std::vector<std::string> validationMessages;
+};
+
+nlohmann::json reportJson(const CompareRecord& r);
+
+// 99th percentile of the per-pixel max-channel |value| of a signed difference image
+// (non-finite pixels ignored); 0 for an empty image.
+float differencePercentile99(const ImageRGBA& signedDiff);
+// FNV-1a 64 of a file's bytes as 16 hex digits; empty when it cannot be read.
+std::string hashFile(const std::string& path);
+
+} // namespace tp::cli

@@ -1,0 +1,166 @@
+// SVG charts for report.html. Coordinates are computed here so the page needs no script;
+// colours come from one small palette that reads on white and in greyscale.
+#include "compare/svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace tp::cli {
+namespace {
+
+const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", v);
+    return buf;
+}
+
+std::string text(double x, double y, const std::string& s, const char* anchor = "start", int size = 12,
+                 const char* extra = "") {
+    return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + anchor + "\" font-size=\"" +
+           std::to_string(size) + "\"" + extra + ">" + escapeXml(s) + "</text>\n";
+}
+
+std::string line(double x1, double y1, double x2, double y2, const char* stroke, double w = 1) {
+    return "<line x1=\"" + num(x1) + "\" y1=\"" + num(y1) + "\" x2=\"" + num(x2) + "\" y2=\"" + num(y2) +
+           "\" stroke=\"" + stroke + "\" stroke-width=\"" + num(w) + "\"/>\n";
+}
+
+// A log axis range covering [lo, hi] with a margin, in log10 units.
+std::pair<double, double> logRange(double lo, double hi) {
+    double a = std::log10(lo), b = std::log10(hi);
+    if (b - a < 0.5) {
+        double mid = 0.5 * (a + b);
+        a = mid - 0.25;
+        b = mid + 0.25;
+    }
+    double pad = 0.08 * (b - a);
+    return {a - pad, b + pad};
+}
+
+// Tick values 1, 2, 5 x 10^k inside [10^a, 10^b]; only powers of ten when that is too many.
+std::vector<double> logTicks(double a, double b) {
+    std::vector<double> ticks;
+    for (int k = int(std::floor(a)); k <= int(std::ceil(b)); ++k)
+        for (double m : {1.0, 2.0, 5.0}) {
+            double v = m * std::pow(10.0, k);
+            if (std::log10(v) >= a && std::log10(v) <= b) ticks.push_back(v);
+        }
+    if (ticks.size() > 10) {
+        std::vector<double> decades;
+        for (double v : ticks)
+            if (std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-9) decades.push_back(v);
+        if (decades.size() >= 2) return decades;
+    }
+    return ticks;
+}
+
+} // namespace
+
+std::string escapeXml(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    for (char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&#39;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string formatNumber(double v) {
+    char buf[32];
+    if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
+    double a = std::abs(v);
+    if (a != 0.0 && (a < 1e-3 || a >= 1e6)) std::snprintf(buf, sizeof buf, "%.2e", v);
+    else std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& unit, int width) {
+    const double rowH = 18, labelW = 220, valueW = 110, top = 6;
+    double maxValue = 0;
+    int rows = 0;
+    for (const BarGroup& g : groups) {
+        rows += 1 + int(g.bars.size());
+        for (const auto& b : g.bars) maxValue = std::max(maxValue, b.second);
+    }
+    if (!(maxValue > 0)) maxValue = 1;
+    const double barW = width - labelW - valueW;
+    const double height = top + rows * rowH + 8;
+    std::string svg = "<svg width=\"" + std::to_string(width) +
+                      "\" height=\"" + num(height) + "\" font-family=\"sans-serif\">\n";
+    double y = top;
+    for (size_t gi = 0; gi < groups.size(); ++gi) {
+        const char* colour = kPalette[gi % std::size(kPalette)];
+        svg += text(4, y + 13, groups[gi].title, "start", 13, " font-weight=\"bold\"");
+        y += rowH;
+        for (const auto& [label, value] : groups[gi].bars) {
+            double w = std::max(1.0, barW * value / maxValue);
+            svg += text(labelW - 6, y + 13, label, "end");
+            svg += "<rect x=\"" + num(labelW) + "\" y=\"" + num(y + 3) + "\" width=\"" + num(w) +
+                   "\" height=\"" + num(rowH - 6) + "\" fill=\"" + colour + "\"" +
+                   (label == "frame" ? " fill-opacity=\"0.45\"" : "") + "/>\n";
+            svg += text(labelW + w + 6, y + 13, formatNumber(value) + " " + unit);
+            y += rowH;
+        }
+    }
+    return svg + "</svg>\n";
+}
+
+std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
+                             const std::string& yLabel, int width, int height) {
+    const double left = 80, right = 30, top = 20, bottom = 60;
+    double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
+    bool anyZero = false;
+    for (const PlotPoint& p : points) {
+        if (p.x > 0) xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x);
+        if (p.y > 0) ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
+        else anyZero = true;
+    }
+    if (!(xhi > 0)) xlo = 1, xhi = 10;
+    if (!(yhi > 0)) ylo = 1e-4, yhi = 1e-2;
+    auto [xa, xb] = logRange(xlo, xhi);
+    auto [ya, yb] = logRange(ylo, yhi);
+    if (anyZero) ya -= 0.12 * (yb - ya); // room on the bottom edge for exact (zero-error) points
+    const double pw = width - left - right, ph = height - top - bottom;
+    auto px = [&](double v) { return left + pw * (std::log10(std::max(v, 1e-30)) - xa) / (xb - xa); };
+    auto py = [&](double v) { return v > 0 ? top + ph * (yb - std::log10(v)) / (yb - ya) : top + ph; };
+
+    std::string svg = "<svg width=\"" + std::to_string(width) +
+                      "\" height=\"" + std::to_string(height) + "\" font-family=\"sans-serif\">\n";
+    svg += "<rect x=\"" + num(left) + "\" y=\"" + num(top) + "\" width=\"" + num(pw) + "\" height=\"" + num(ph) +
+           "\" fill=\"#fafafa\" stroke=\"#888\"/>\n";
+    for (double t : logTicks(xa, xb)) {
+        svg += line(px(t), top, px(t), top + ph, "#e2e2e2");
+        svg += text(px(t), top + ph + 16, formatNumber(t), "middle", 11);
+    }
+    for (double t : logTicks(ya, yb)) {
+        svg += line(left, py(t), left + pw, py(t), "#e2e2e2");
+        svg += text(left - 6, py(t) + 4, formatNumber(t), "end", 11);
+    }
+    if (anyZero) svg += text(left - 6, top + ph + 4, "0", "end", 11);
+    svg += text(left + pw / 2, height - 18, xLabel + " (log)", "middle", 13);
+    svg += "<text transform=\"translate(18," + num(top + ph / 2) + ") rotate(-90)\" text-anchor=\"middle\" "
+           "font-size=\"13\">" + escapeXml(yLabel + " (log)") + "</text>\n";
+    for (size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& p = points[i];
+        const char* colour = kPalette[i % std::size(kPalette)];
+        double x = px(p.x), y = py(p.y);
+        svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"6\" fill=\"" + colour +
+               "\" stroke=\"#000\" stroke-width=\"0.8\"/>\n";
+        // Labels go left of points in the right third so they stay inside the plot.
+        bool leftSide = x > left + pw * 0.66;
+        svg += text(leftSide ? x - 10 : x + 10, y - 8, p.label, leftSide ? "end" : "start", 12);
+    }
+    return svg + "</svg>\n";
+}
+
+} // namespace tp::cli

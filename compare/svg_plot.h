@@ -1,0 +1,32 @@
+#pragma once
+// Inline SVG charts for the offline report pages: horizontal bars and a labelled scatter
+// plot with logarithmic axes. Plain strings, no script, no external font or stylesheet.
+#include <string>
+#include <vector>
+
+namespace tp::cli {
+
+struct BarGroup {
+    std::string title;                                 // e.g. the pipeline
+    std::vector<std::pair<std::string, double>> bars;  // label, value
+};
+
+// One bar per value on a shared linear scale (0 .. largest value), grouped under titles;
+// each bar is labelled on the left and its value (with `unit`) on the right.
+std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& unit, int width = 900);
+
+struct PlotPoint {
+    std::string label;
+    double x = 0, y = 0; // y <= 0 is drawn on the bottom edge, marked "0" (log axis)
+};
+
+// Scatter plot with log x and log y axes, ticks at 1, 2, 5 x 10^k, one labelled point each.
+std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
+                             const std::string& yLabel, int width = 720, int height = 440);
+
+// Escapes &, <, >, " and ' for HTML/SVG text and attributes.
+std::string escapeXml(const std::string& text);
+// Short human form of a number: 3 significant digits, exponent when very small or large.
+std::string formatNumber(double v);
+
+} // namespace tp::cli
