@@ -1,0 +1,187 @@
+// triptych compare end to end on courtyard-small at 96x54 with 8 lights and one frame:
+// every promised file, a report.json that holds what docs/report.md promises, an offline
+// report.html, and a failing configuration recorded as failed while the others go on.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "compare/commands.h"
+#include "compare/compare.h"
+#include "compare/report_html.h"
+#include "compare/svg_plot.h"
+#include "core/image/image_io.h"
+#include "core/image/metrics.h"
+#include "core/image/tonemap.h"
+#include "core/render/renderer.h"
+
+namespace tp::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string freshDir(const std::string& name) {
+    fs::path p = fs::temp_directory_path() / ("triptych_" + name + "_" + std::to_string(getpid()));
+    fs::remove_all(p);
+    return p.string();
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::vector<std::string> pipelinesButReference() {
+    std::vector<std::string> names;
+    for (const RendererEntry& e : registeredRenderers())
+        if (e.name != "reference") names.push_back(e.name);
+    return names;
+}
+
+// Runs `triptych compare ARGS` through the real CLI definition.
+int runCli(std::vector<std::string> args) {
+    CLI::App app;
+    std::vector<std::string> argv = {"triptych", "compare"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    cli::CommandRunner runner = cli::addCompareCommand(app, argv);
+    std::vector<char*> raw;
+    for (std::string& a : argv) raw.push_back(a.data());
+    app.parse(int(raw.size()), raw.data());
+    return runner();
+}
+
+size_t count(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+void expectMetrics(const json& m, const std::string& where) {
+    for (const MetricInfo& info : metricTable()) EXPECT_TRUE(m.contains(info.name)) << where << " lacks " << info.name;
+    EXPECT_EQ(m["compared_pixels"].get<uint64_t>(), 96u * 54u) << where;
+    EXPECT_EQ(m["nan_inf"].get<double>(), 0.0) << where;
+}
+
+void expectMemoryTotal(const json& memory, const std::string& where) {
+    uint64_t sum = 0;
+    for (const json& e : memory["resources"]) sum += e["bytes"].get<uint64_t>();
+    EXPECT_EQ(memory["total_bytes"].get<uint64_t>(), sum) << where;
+    EXPECT_GT(sum, 0u) << where;
+}
+
+TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
+    const std::string out = freshDir("compare_all");
+    int rc = runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "8", "--seed", "3", "--frames", "1",
+                     "--warmup", "0", "--validate", "--out", out});
+    ASSERT_EQ(rc, 0);
+    const std::vector<std::string> names = pipelinesButReference();
+    ASSERT_FALSE(names.empty());
+    for (const char* f : {"reference.exr", "reference.png", "lights.json", "report.json", "report.html"})
+        EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+    for (const std::string& n : names)
+        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png"})
+            EXPECT_TRUE(fs::exists(out + "/" + n + suffix)) << n << suffix;
+
+    json r = json::parse(readText(out + "/report.json"));
+    EXPECT_EQ(r["schema"], "triptych.report/1");
+    EXPECT_EQ(r["status"], "ok");
+    EXPECT_EQ(r["seed"].get<uint64_t>(), 3u);
+    EXPECT_EQ(r["scene"]["path"], "builtin:courtyard-small");
+    EXPECT_EQ(r["command_line"].back(), out);
+    EXPECT_TRUE(r["validation_messages"].empty());
+    const std::string device = r["device"]["name"];
+    EXPECT_FALSE(device.empty());
+    expectMemoryTotal(r["shared_memory"], "scene");
+    ASSERT_EQ(r["pipelines"].size(), names.size());
+    float largestP99 = 0;
+    for (size_t i = 0; i < names.size(); ++i) {
+        const json& p = r["pipelines"][i];
+        SCOPED_TRACE(names[i]);
+        EXPECT_EQ(p["name"], names[i]);
+        ASSERT_EQ(p["status"], "ok") << p.value("error", "");
+        ASSERT_GE(p["run"]["timings"].size(), 2u); // "frame" and at least one pass
+        EXPECT_EQ(p["run"]["timings"][0]["pass"], "frame");
+        for (const json& t : p["run"]["timings"]) {
+            EXPECT_EQ(t["device"], device);
+            EXPECT_LE(t["min_ms"].get<double>(), t["median_ms"].get<double>());
+            EXPECT_LE(t["median_ms"].get<double>(), t["max_ms"].get<double>());
+        }
+        expectMemoryTotal(p["run"]["memory"], names[i]);
+        EXPECT_DOUBLE_EQ(p["run"]["memory"]["bytes_per_pixel"].get<double>(),
+                         p["run"]["memory"]["total_bytes"].get<double>() / (96.0 * 54.0));
+        for (const json& e : p["run"]["memory"]["resources"]) EXPECT_NE(e["name"], "vertices"); // scene is shared
+        expectMetrics(p["error_vs_reference"]["hdr"], "hdr");
+        expectMetrics(p["error_vs_reference"]["tonemapped"], "tonemapped");
+        EXPECT_EQ(p["lights_dropped"].get<double>(), 0.0);
+        largestP99 = std::max(largestP99, p["difference_p99"].get<float>());
+    }
+    EXPECT_FLOAT_EQ(r["difference_scale"]["value"].get<float>(), std::max(largestP99, 1e-6f));
+    EXPECT_EQ(r["pairwise"].size(), names.size() * (names.size() - 1) / 2);
+
+    // One exposure for every PNG: the automatic one of the reference image as written.
+    Result<ImageRGBA> ref = readExr(out + "/reference.exr");
+    ASSERT_TRUE(ref.ok()) << ref.error();
+    EXPECT_FLOAT_EQ(r["settings"]["exposure_ev"].get<float>(), autoExposureEv(*ref));
+
+    const std::string html = readText(out + "/report.html");
+    EXPECT_EQ(count(html, "http://"), 0u);
+    EXPECT_EQ(count(html, "https://"), 0u);
+    EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 1 + 2 * names.size());
+    EXPECT_GE(count(html, "<svg"), 2u); // timing bars and the error/time plot
+    for (const std::string& n : names) EXPECT_NE(html.find(n), std::string::npos);
+}
+
+TEST(Compare, FailingPipelineIsRecordedAndTheOthersGoOn) {
+    const std::string out = freshDir("compare_fail");
+    fs::create_directories(out);
+    { std::ofstream(out + "/report.json") << "{\"stale\": true}"; } // must not survive
+    cli::CompareOptions o;
+    o.scene.scene = "builtin:courtyard-small";
+    o.scene.lightCount = 4;
+    o.view.resolution = "96x54";
+    o.frames = 1;
+    o.warmup = 0;
+    o.out = out;
+    o.pipelines = "forwardplus,multipass_forward";
+    o.knobs.lightLists = "fixed";
+    o.knobs.tileCapacity = 0; // refused by the CLI; forwardplus cannot be built with it
+    EXPECT_EQ(cli::runCompare(o), 5);
+    json r = json::parse(readText(out + "/report.json"));
+    EXPECT_FALSE(r.contains("stale"));
+    EXPECT_EQ(r["status"], "failed");
+    ASSERT_EQ(r["pipelines"].size(), 2u);
+    EXPECT_EQ(r["pipelines"][0]["status"], "failed");
+    EXPECT_NE(r["pipelines"][0]["error"].get<std::string>().find("capacity"), std::string::npos);
+    EXPECT_FALSE(fs::exists(out + "/forwardplus.png"));
+    EXPECT_EQ(r["pipelines"][1]["status"], "ok");
+    EXPECT_TRUE(fs::exists(out + "/multipass_forward_diff.png"));
+    EXPECT_NE(readText(out + "/report.html").find("forwardplus failed"), std::string::npos);
+}
+
+TEST(Compare, BadPipelineNameFailsBeforeWritingAnything) {
+    const std::string out = freshDir("compare_bad");
+    EXPECT_THROW(runCli({"builtin:courtyard-small", "--pipelines", "forwardplus,nosuch", "--out", out}),
+                 cli::UsageError);
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Compare, HtmlHelpers) {
+    EXPECT_EQ(cli::base64(""), "");
+    EXPECT_EQ(cli::base64("M"), "TQ==");
+    EXPECT_EQ(cli::base64("Ma"), "TWE=");
+    EXPECT_EQ(cli::base64("Man"), "TWFu");
+    EXPECT_EQ(cli::escapeXml("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
+    std::string svg = cli::scatterLogLogSvg({{"a", 10, 1e-3}, {"b", 100, 0}}, "x", "y");
+    EXPECT_EQ(count(svg, "<circle"), 2u);
+    EXPECT_NE(svg.find(">a</text>"), std::string::npos);
+}
+
+} // namespace
+} // namespace tp::test
