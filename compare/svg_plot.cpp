@@ -48,6 +48,14 @@ std::vector<double> logTicks(double a, double b) {
             double v = m * std::pow(10.0, k);
             if (std::log10(v) >= a && std::log10(v) <= b) ticks.push_back(v);
         }
+    if (ticks.size() < 3) { // a narrow range: every integer multiple of the decade
+        ticks.clear();
+        for (int k = int(std::floor(a)); k <= int(std::ceil(b)); ++k)
+            for (int m = 1; m <= 9; ++m) {
+                double v = m * std::pow(10.0, k);
+                if (std::log10(v) >= a && std::log10(v) <= b) ticks.push_back(v);
+            }
+    }
     if (ticks.size() > 10) {
         std::vector<double> decades;
         for (double v : ticks)
@@ -55,6 +63,12 @@ std::vector<double> logTicks(double a, double b) {
         if (decades.size() >= 2) return decades;
     }
     return ticks;
+}
+
+std::string tickLabel(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
 }
 
 } // namespace
@@ -140,11 +154,11 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
            "\" fill=\"#fafafa\" stroke=\"#888\"/>\n";
     for (double t : logTicks(xa, xb)) {
         svg += line(px(t), top, px(t), top + ph, "#e2e2e2");
-        svg += text(px(t), top + ph + 16, formatNumber(t), "middle", 11);
+        svg += text(px(t), top + ph + 16, tickLabel(t), "middle", 11);
     }
     for (double t : logTicks(ya, yb)) {
         svg += line(left, py(t), left + pw, py(t), "#e2e2e2");
-        svg += text(left - 6, py(t) + 4, formatNumber(t), "end", 11);
+        svg += text(left - 6, py(t) + 4, tickLabel(t), "end", 11);
     }
     if (anyZero) svg += text(left - 6, top + ph + 4, "0", "end", 11);
     svg += text(left + pw / 2, height - 18, xLabel + " (log)", "middle", 13);
