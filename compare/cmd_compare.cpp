@@ -122,7 +122,10 @@ void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
         PipelineOutcome& p = r.pipelines[i];
         if (!p.run) continue;
         check(writeExr(out + "/" + p.name + "_diff.exr", diffs[i], ExrPixelType::Float));
-        check(writePng(out + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale)));
+        // The legend's font scales with its height: keep it readable when the page shrinks a
+        // large image to a column (about 320-600 px wide).
+        const uint32_t legend = 24 * std::max(1u, diffs[i].width / 320);
+        check(writePng(out + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale, legend)));
         p.files.push_back(p.name + "_diff.exr");
         p.files.push_back(p.name + "_diff.png");
     }

@@ -157,6 +157,7 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
         svg += text(px(t), top + ph + 16, tickLabel(t), "middle", 11);
     }
     for (double t : logTicks(ya, yb)) {
+        if (anyZero && py(t) > top + ph - 14) continue; // would collide with the "0" label
         svg += line(left, py(t), left + pw, py(t), "#e2e2e2");
         svg += text(left - 6, py(t) + 4, tickLabel(t), "end", 11);
     }
