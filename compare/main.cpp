@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     app.set_help_all_flag("--help-all", "Help for every command");
     std::vector<tp::cli::CommandRunner> commands = {
         tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
+        tp::cli::addSweepCommand(app, std::vector<std::string>(argv, argv + argc)),
         tp::cli::addRenderCommand(app), tp::cli::addInfoCommand(app)};
     try {
         app.parse(argc, argv);

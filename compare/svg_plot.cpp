@@ -130,7 +130,8 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
 }
 
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
-                             const std::string& yLabel, int width, int height) {
+                             const std::string& yLabel, int width, int height,
+                             const std::vector<std::string>& seriesNames, bool joinSeries) {
     const double left = 80, right = 30, top = 20, bottom = 60;
     double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
     bool anyZero = false;
@@ -165,15 +166,32 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
     svg += text(left + pw / 2, height - 18, xLabel + " (log)", "middle", 13);
     svg += "<text transform=\"translate(18," + num(top + ph / 2) + ") rotate(-90)\" text-anchor=\"middle\" "
            "font-size=\"13\">" + escapeXml(yLabel + " (log)") + "</text>\n";
+    for (size_t si = 0; si < seriesNames.size(); ++si) {
+        std::vector<std::pair<double, double>> xy;
+        for (const PlotPoint& p : points)
+            if (p.series == int(si)) xy.push_back({px(p.x), py(p.y)});
+        std::sort(xy.begin(), xy.end());
+        std::string path;
+        for (const auto& [x, y] : xy) path += (path.empty() ? "M" : " L") + num(x) + "," + num(y);
+        if (joinSeries && xy.size() > 1)
+            svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"" + kPalette[si % std::size(kPalette)] +
+                   "\" stroke-width=\"1.5\"/>\n";
+        double ly = top + 14 + 16 * double(si);
+        svg += "<circle cx=\"" + num(left + 12) + "\" cy=\"" + num(ly - 4) + "\" r=\"5\" fill=\"" +
+               kPalette[si % std::size(kPalette)] + "\"/>\n" + text(left + 22, ly, seriesNames[si]);
+    }
     for (size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& p = points[i];
-        const char* colour = kPalette[i % std::size(kPalette)];
+        const char* colour = kPalette[(p.series >= 0 ? size_t(p.series) : i) % std::size(kPalette)];
         double x = px(p.x), y = py(p.y);
+        if (p.ring)
+            svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"10\" fill=\"none\" stroke=\"#000\" "
+                   "stroke-width=\"1.5\"/>\n";
         svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"6\" fill=\"" + colour +
                "\" stroke=\"#000\" stroke-width=\"0.8\"/>\n";
         // Labels go left of points in the right third so they stay inside the plot.
         bool leftSide = x > left + pw * 0.66;
-        svg += text(leftSide ? x - 10 : x + 10, y - 8, p.label, leftSide ? "end" : "start", 12);
+        if (!p.label.empty()) svg += text(leftSide ? x - 10 : x + 10, y - 8, p.label, leftSide ? "end" : "start", 12);
     }
     return svg + "</svg>\n";
 }

@@ -16,13 +16,17 @@ struct BarGroup {
 std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& unit, int width = 900);
 
 struct PlotPoint {
-    std::string label;
+    std::string label;   // drawn beside the point; may be empty
     double x = 0, y = 0; // y <= 0 is drawn on the bottom edge, marked "0" (log axis)
+    int series = -1;     // colour index; -1: one colour per point
+    bool ring = false;   // circled (e.g. on the Pareto front)
 };
 
-// Scatter plot with log x and log y axes, ticks at 1, 2, 5 x 10^k, one labelled point each.
+// Scatter plot with log x and log y axes, ticks at 1, 2, 5 x 10^k. With seriesNames, points
+// of one series share a colour, are joined in x order (joinSeries), and a legend names the series.
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
-                             const std::string& yLabel, int width = 720, int height = 440);
+                             const std::string& yLabel, int width = 720, int height = 440,
+                             const std::vector<std::string>& seriesNames = {}, bool joinSeries = true);
 
 // Escapes &, <, >, " and ' for HTML/SVG text and attributes.
 std::string escapeXml(const std::string& text);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -170,6 +172,41 @@ TEST(Compare, BadPipelineNameFailsBeforeWritingAnything) {
     EXPECT_THROW(runCli({"builtin:courtyard-small", "--pipelines", "forwardplus,nosuch", "--out", out}),
                  cli::UsageError);
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Compare, SweepWritesOneRowPerRun) {
+    const std::string out = freshDir("sweep");
+    CLI::App app;
+    std::vector<std::string> argv = {"triptych", "sweep", "builtin:courtyard-small", "--lights", "4,8", "--res", "96x54",
+                                     "--tile", "8,16", "--frames", "1", "--warmup", "0", "--out", out};
+    cli::CommandRunner runner = cli::addSweepCommand(app, argv);
+    std::vector<char*> raw;
+    for (std::string& a : argv) raw.push_back(a.data());
+    app.parse(int(raw.size()), raw.data());
+    ASSERT_EQ(runner(), 0);
+    std::stringstream csv(readText(out + "/sweep.csv"));
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line.rfind("pipeline,lights,width,height,msaa,tile,", 0), 0u);
+    std::map<std::string, int> runs; // pipeline/lights -> rows
+    std::set<std::string> tiles;
+    while (std::getline(csv, line)) {
+        std::vector<std::string> f;
+        std::stringstream ls(line);
+        std::string field;
+        while (std::getline(ls, field, ',')) f.push_back(field);
+        ASSERT_GE(f.size(), 10u) << line;
+        EXPECT_EQ(f[9], "ok") << line;
+        ++runs[f[0] + "/" + f[1]];
+        if (f[0] == "forwardplus") tiles.insert(f[5]);
+    }
+    for (const RendererEntry& e : registeredRenderers())
+        for (const char* lights : {"4", "8"}) EXPECT_GE(runs[e.name + "/" + lights], 1) << e.name << " " << lights;
+    EXPECT_EQ(runs["reference/4"], 1); // once per light set
+    EXPECT_EQ(tiles, (std::set<std::string>{"8", "16"}));
+    const std::string html = readText(out + "/sweep.html");
+    EXPECT_EQ(count(html, "http"), 0u);
+    EXPECT_EQ(count(html, "<svg"), 3u);
 }
 
 TEST(Compare, HtmlHelpers) {
