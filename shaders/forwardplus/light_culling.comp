@@ -7,7 +7,8 @@
 //     when the scene has blended materials) spans the near plane to the tile's farthest
 //     depth, unbounded where any sample sees the sky.
 //  2. Point/spot lights are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
-//     sub-frustum (include/tile_culling.glsl); survivors set a bit in shared memory.
+//     sub-frustum's bounding box and the sub-frustum itself (include/tile_culling.glsl);
+//     survivors set a bit in shared memory.
 //  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts), so
 //     every layout stores the same lights in the same order and gives the same image.
 // Directional lights are never culled: the shading pass loops over them separately.
@@ -59,6 +60,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer Counte
 
 shared uint sMinDepth, sMaxDepth, sAnySky;
 shared TileFrustum sFrustum[2]; // opaque, transparent
+shared TileBox sBox[2];         // their view-space bounding boxes
 // Survivor bitmasks, triple-buffered by chunk so that the compact/fixed layouts need a
 // single barrier per chunk (buffer (c+1)%3 is cleared while chunk c is tested; its last
 // readers, chunk c-2's compaction, finished before chunk c-1's barrier).
@@ -139,12 +141,17 @@ void main() {
         // Transparent: from the near plane (depth 1) to the farthest opaque depth, or
         // unbounded (depth 0) where the tile sees the sky.
         float transparentFar = (sAnySky != 0u || !hasGeometry) ? 0.0 : farDepth;
-        if (kTwoLists)
+        sBox[0] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[0]);
+        if (kTwoLists) {
             sFrustum[1] = makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, 1.0, transparentFar);
+            sBox[1] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[1]);
+        }
     }
     barrier();
     const TileFrustum opaqueFrustum = sFrustum[0];
     const TileFrustum transparentFrustum = sFrustum[kTwoLists ? 1 : 0];
+    const TileBox opaqueBox = sBox[0];
+    const TileBox transparentBox = sBox[kTwoLists ? 1 : 0];
 
     const uint directionalCount = params.lights.x;
     const uint localCount = params.lights.y;
@@ -188,9 +195,11 @@ void main() {
         for (uint i = lid; i < inChunk; i += groupSize) {
             LightGpu light = lights[data[directionalCount + base + i]];
             uint bit = 1u << (i & 31u);
-            if (hasGeometry && lightInTile(light, opaqueFrustum, frame.view))
+            if (hasGeometry && lightInTileBox(light, opaqueBox, frame.view) &&
+                lightInTile(light, opaqueFrustum, frame.view))
                 atomicOr(sBits[buf][0][i >> 5u], bit);
-            if (kTwoLists && lightInTile(light, transparentFrustum, frame.view))
+            if (kTwoLists && lightInTileBox(light, transparentBox, frame.view) &&
+                lightInTile(light, transparentFrustum, frame.view))
                 atomicOr(sBits[buf][1][i >> 5u], bit);
         }
         barrier();

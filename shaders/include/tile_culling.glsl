@@ -122,4 +122,46 @@ bool lightInTile(LightGpu light, TileFrustum f, mat4 view) {
         return false;
     return true;
 }
+
+// Optional, additive: the view-space axis-aligned box of the tile's sub-frustum (its 8
+// corners between nearViewZ and farViewZ). A sphere can pass all six plane tests near a
+// frustum corner while missing the frustum; the box rejects most of those. Conservative
+// (the box contains the frustum piece), so `lightInTile(...) && lightInTileBox(...)` is too.
+struct TileBox {
+    vec3 lo;
+    vec3 hi;
+};
+
+TileBox makeTileBox(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj, TileFrustum f) {
+    vec2 p0 = vec2(tile * tileSize);
+    vec2 p1 = min(vec2((tile + uvec2(1u)) * tileSize), viewportSize);
+    float xs[2] = float[2](2.0 * p0.x / viewportSize.x - 1.0, 2.0 * p1.x / viewportSize.x - 1.0);
+    float ys[2] = float[2](1.0 - 2.0 * p0.y / viewportSize.y, 1.0 - 2.0 * p1.y / viewportSize.y);
+    TileBox b;
+    b.lo = vec3(1e30);
+    b.hi = vec3(-1e30);
+    for (int i = 0; i < 4; ++i) {
+        vec3 c = tileCornerView(vec2(xs[i & 1], ys[i >> 1]), invProj); // on the near plane (z < 0)
+        for (int k = 0; k < 2; ++k) {
+            float z = k == 0 ? f.nearViewZ : f.farViewZ;
+            vec3 p = c * (z / c.z);
+            b.lo = min(b.lo, p);
+            b.hi = max(b.hi, p);
+        }
+    }
+    // Rounding of the corners: pad like the planes.
+    vec3 pad = TP_TILE_CULL_PAD * (abs(b.lo) + abs(b.hi)) + vec3(1e-6);
+    b.lo -= pad;
+    b.hi += pad;
+    return b;
+}
+
+// Sphere of a point or spot light (position, range) against the box; directional: true.
+bool lightInTileBox(LightGpu light, TileBox b, mat4 view) {
+    if (light.type == TP_LIGHT_DIRECTIONAL) return true;
+    vec3 c = (view * vec4(light.position, 1.0)).xyz;
+    float r = light.range + TP_TILE_CULL_PAD * (light.range + length(c));
+    vec3 d = max(max(b.lo - c, c - b.hi), vec3(0.0));
+    return dot(d, d) <= r * r;
+}
 #endif
