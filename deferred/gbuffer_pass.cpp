@@ -54,14 +54,8 @@ void GBufferPass::record(PassContext& pc) {
     DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}};
     beginRendering(pc, colors, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    if (opaque_) {
-        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque_);
-        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque);
-    }
-    if (masked_) {
-        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, masked_);
-        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Mask);
-    }
+    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque, opaque_);
+    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Mask, masked_);
     endRendering(pc);
 }
 

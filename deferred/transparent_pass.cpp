@@ -50,8 +50,7 @@ void TransparentPass::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0,
                             nullptr);
-    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend);
+    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
     endRendering(pc);
 }
 

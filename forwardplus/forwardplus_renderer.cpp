@@ -352,7 +352,7 @@ class ForwardPlusRenderer final : public Renderer {
         pre.specConstants = scene_.specConstants(AlphaMode::Opaque);
         if (scene_.hasDraws(DrawFilter::Opaque)) prepassOpaque_ = createGraphicsPipeline(ctx_, pre);
         if (scene_.hasDraws(DrawFilter::Mask)) {
-            pre.fragmentShader = "fp_prepass_mask_frag";
+            pre.fragmentShader = "prepass_mask_frag";
             pre.specConstants = scene_.specConstants(AlphaMode::Mask);
             prepassMask_ = createGraphicsPipeline(ctx_, pre);
         }
@@ -388,14 +388,8 @@ class ForwardPlusRenderer final : public Renderer {
         DepthTarget depth{msaa ? depthMsaa_ : depth_, msaa ? depth_ : ResourceHandle{}};
         beginRendering(pc, {}, depth);
         scene_.bindSceneSet(pc.cmd, sceneLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        if (prepassOpaque_) {
-            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, prepassOpaque_);
-            scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Opaque);
-        }
-        if (prepassMask_) {
-            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, prepassMask_);
-            scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Mask);
-        }
+        scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Opaque, prepassOpaque_);
+        scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Mask, prepassMask_);
         endRendering(pc);
     }
 
@@ -421,12 +415,8 @@ class ForwardPlusRenderer final : public Renderer {
                                 nullptr);
         std::vector<AlphaMode> modes = transparent ? std::vector<AlphaMode>{AlphaMode::Blend}
                                                    : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
-        for (AlphaMode mode : modes) {
-            VkPipeline p = shade_[uint32_t(mode)];
-            if (!p) continue;
-            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
-            scene_.recordDraws(pc.cmd, shadeLayout_, DrawFilter(mode));
-        }
+        for (AlphaMode mode : modes)
+            scene_.recordDraws(pc.cmd, shadeLayout_, DrawFilter(mode), shade_[uint32_t(mode)]);
         endRendering(pc);
     }
 

@@ -19,7 +19,7 @@ DepthPrepass::DepthPrepass(const PassEnv& env) : env_(env) {
     if (!env.plan.masked.empty()) {
         // Per-sample under MSAA, as the reference: the alpha test then sees the same
         // interpolants per sample and the coverage matches.
-        d.fragmentShader = "mp_prepass_mask_frag";
+        d.fragmentShader = "prepass_mask_frag";
         d.sampleShading = env.settings.msaa > 1;
         d.specConstants = env.scene.specConstants(AlphaMode::Mask);
         masked_ = createGraphicsPipeline(env.ctx, d);

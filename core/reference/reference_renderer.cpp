@@ -89,12 +89,8 @@ class ReferenceRenderer final : public Renderer {
         }
         beginRendering(pc, {color}, depth);
         scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
-            VkPipeline p = pipelines_[uint32_t(mode)];
-            if (!p) continue;
-            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
-            scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode));
-        }
+        for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+            scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
         endRendering(pc);
     }
 

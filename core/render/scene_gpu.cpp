@@ -176,7 +176,10 @@ void SceneGpu::bindIndexBuffer(VkCommandBuffer cmd) const {
     vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
 }
 
-void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const {
+void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter,
+                           VkPipeline pipeline) const {
+    if (!pipeline) return;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     std::vector<const DrawItem*> items = drawList(filter);
     bindIndexBuffer(cmd);
     for (const DrawItem* d : items) {

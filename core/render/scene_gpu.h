@@ -43,9 +43,11 @@ class SceneGpu {
     // Layout with set 0 = the scene, optional set 1 = the pass's own, and the DrawPush range.
     VkPipelineLayout createPipelineLayout(VkDescriptorSetLayout passSet = VK_NULL_HANDLE) const;
     void bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const;
-    // Records the draws of one alpha mode; Blend draws are sorted back to front (by the
-    // distance from the camera to each mesh's bounds centre).
-    void recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter) const;
+    // Binds `pipeline` and records the draws of one alpha mode; Blend draws are sorted back
+    // to front (by the distance from the camera to each mesh's bounds centre). A null
+    // pipeline (the renderer built none: no such draws) records nothing.
+    void recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter,
+                     VkPipeline pipeline) const;
     bool hasDraws(DrawFilter filter) const;
     // The draws of one alpha mode in the order recordDraws records them (Blend: back to
     // front), for pipelines that record draws one by one (multipass forward: per light).

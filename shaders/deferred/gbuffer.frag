@@ -7,15 +7,11 @@
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
+#include "include/scene_inputs.glsl"
 #include "include/gbuffer_encoding.h"
 
 layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inTangent;
-layout(location = 4) in vec4 inColor;
 
 layout(location = 0) out vec4 outBase;       // rgb base colour (sRGB target in compact), a occlusion
 layout(location = 1) out vec4 outNormal;     // compact: octahedral rg; wide: xyz
@@ -26,8 +22,7 @@ layout(location = 3) out vec4 outEmissive;   // rgb emissive radiance
 
 void main() {
     MaterialGpu m = materials[draw.materialIndex];
-    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor,
-                                     gl_FrontFacing);
+    MaterialSample ms = evalFragmentMaterial();
     if (kAlphaMode == TP_ALPHA_MASK && ms.alpha < m.alphaCutoff) discard;
     outBase = vec4(ms.surface.baseColor, ms.occlusion);
     vec3 n = ms.surface.normal;

@@ -7,6 +7,7 @@
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
+#include "include/scene_inputs.glsl"
 
 layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_DEF_SPEC_LIST_STRIDE) const uint kListStride = 1u;
@@ -15,17 +16,10 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_LISTS) readonly b
     uint tLists[];
 };
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inTangent;
-layout(location = 4) in vec4 inColor;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    MaterialGpu m = materials[draw.materialIndex];
-    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor,
-                                     gl_FrontFacing);
+    MaterialSample ms = evalFragmentMaterial();
     uvec2 tile = uvec2(gl_FragCoord.xy) / kTileSize;
     uint tilesX = (frame.viewport.x + kTileSize - 1u) / kTileSize;
     uint base = (tile.y * tilesX + tile.x) * kListStride;

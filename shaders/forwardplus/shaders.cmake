@@ -1,5 +1,4 @@
 # Forward+ shaders (included by shaders/CMakeLists.txt with SHADER_DIR set).
-triptych_add_shader(SPVS ${SHADER_DIR}/prepass_mask.frag fp_prepass_mask_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_frag)
 # Culling: one variant per list layout, single-sample and multisampled depth.
 foreach(layout compact fixed linked)

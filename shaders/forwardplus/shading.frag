@@ -8,6 +8,7 @@
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
+#include "include/scene_inputs.glsl"
 
 layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
@@ -24,11 +25,6 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     uint data[];
 };
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inTangent;
-layout(location = 4) in vec4 inColor;
 layout(location = 0) out vec4 outColor;
 
 // Largest finite half: the hdr target is RGBA16F, so larger values saturate instead of
@@ -36,8 +32,7 @@ layout(location = 0) out vec4 outColor;
 const float kHalfMax = 65504.0;
 
 void main() {
-    MaterialGpu m = materials[draw.materialIndex];
-    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor, gl_FrontFacing);
+    MaterialSample ms = evalFragmentMaterial();
 
     vec3 sum = ambientAndEmissive(ms);
     uint directionalCount = params.lights.x;

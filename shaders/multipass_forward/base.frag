@@ -7,7 +7,7 @@
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
-#include "multipass_forward/inputs.glsl"
+#include "include/scene_inputs.glsl"
 
 layout(constant_id = TP_MP_SPEC_DIRECTIONAL_COUNT) const uint kDirCount = 0u;
 layout(constant_id = TP_MP_SPEC_DIRECTIONAL_FIRST + 0) const uint kDir0 = 0u;

@@ -7,7 +7,7 @@
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
-#include "multipass_forward/inputs.glsl"
+#include "include/scene_inputs.glsl"
 
 layout(location = 0) out vec4 outColor;
 

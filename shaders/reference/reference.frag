@@ -9,12 +9,8 @@
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
+#include "include/scene_inputs.glsl"
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inTangent;
-layout(location = 4) in vec4 inColor;
 layout(location = 0) out vec4 outColor;
 
 #ifdef TP_ACCUM_FP64
@@ -25,8 +21,7 @@ layout(location = 0) out vec4 outColor;
 
 void main() {
     MaterialGpu m = materials[draw.materialIndex];
-    MaterialSample ms = evalMaterial(m, inPosition, inNormal, inUv, inTangent, inColor,
-                                     gl_FrontFacing);
+    MaterialSample ms = evalFragmentMaterial();
     if (kAlphaMode == TP_ALPHA_MASK && ms.alpha < m.alphaCutoff) discard;
 
     ACCUM sum = ACCUM(ambientAndEmissive(ms));
