@@ -4,7 +4,7 @@
 // writes per-tile statistics and, for blended scenes, the transparent light lists.
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
-#include "deferred/pass_set.h"
+#include "core/gpu/descriptors.h"
 
 namespace tp {
 

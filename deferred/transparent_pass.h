@@ -4,7 +4,7 @@
 // when the scene has blended materials.
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
-#include "deferred/pass_set.h"
+#include "core/gpu/descriptors.h"
 
 namespace tp {
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/gpu/context.h"
+#include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
@@ -53,9 +54,8 @@ class ForwardPlusRenderer final : public Renderer {
         if (cullLayout_) vkDestroyPipelineLayout(d, cullLayout_, nullptr);
         if (shadeLayout_) vkDestroyPipelineLayout(d, shadeLayout_, nullptr);
         if (sceneLayout_) vkDestroyPipelineLayout(d, sceneLayout_, nullptr);
-        if (pool_) vkDestroyDescriptorPool(d, pool_, nullptr);
-        if (cullSetLayout_) vkDestroyDescriptorSetLayout(d, cullSetLayout_, nullptr);
-        if (shadeSetLayout_) vkDestroyDescriptorSetLayout(d, shadeSetLayout_, nullptr);
+        destroyPassSet(ctx_, cullSet_);
+        destroyPassSet(ctx_, shadeSet_);
         if (sampler_) vkDestroySampler(d, sampler_, nullptr);
     }
 
@@ -264,86 +264,32 @@ class ForwardPlusRenderer final : public Renderer {
         si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
         VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
 
-        auto binding = [](uint32_t b, VkDescriptorType t, VkShaderStageFlags stages) {
-            return VkDescriptorSetLayoutBinding{b, t, 1, stages, nullptr};
-        };
-        const VkShaderStageFlags C = VK_SHADER_STAGE_COMPUTE_BIT, F = VK_SHADER_STAGE_FRAGMENT_BIT;
-        std::vector<VkDescriptorSetLayoutBinding> cull = {
-            binding(TP_FP_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C),
-            binding(TP_FP_BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C),
-            binding(TP_FP_BINDING_PARAMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C),
-            binding(TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, C)};
+        const VkDescriptorType SB = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        std::vector<SetBinding> shade = {{TP_FP_BINDING_TILES, SB}, {TP_FP_BINDING_INDICES, SB},
+                                         {TP_FP_BINDING_PARAMS, SB}};
+        std::vector<SetBinding> cull = shade;
+        cull.push_back({TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+        if (layout_ == TP_FP_LAYOUT_LINKED) cull.push_back({TP_FP_BINDING_COUNTER, SB});
+        cullSet_ = createPassSet(ctx_, cull);
+        shadeSet_ = createPassSet(ctx_, shade);
+        for (VkDescriptorSet set : {cullSet_.set, shadeSet_.set}) {
+            writeBufferDescriptor(ctx_, set, TP_FP_BINDING_TILES, graph.buffer(tiles_).buffer);
+            writeBufferDescriptor(ctx_, set, TP_FP_BINDING_INDICES, graph.buffer(indices_).buffer);
+            writeBufferDescriptor(ctx_, set, TP_FP_BINDING_PARAMS, params_.buffer);
+        }
+        writeImageDescriptor(ctx_, cullSet_.set, TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             graph.image(msaa ? depthMsaa_ : depth_).view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+                             sampler_);
         if (layout_ == TP_FP_LAYOUT_LINKED)
-            cull.push_back(binding(TP_FP_BINDING_COUNTER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, C));
-        std::vector<VkDescriptorSetLayoutBinding> shade = {
-            binding(TP_FP_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, F),
-            binding(TP_FP_BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, F),
-            binding(TP_FP_BINDING_PARAMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, F)};
-        auto makeLayout = [&](const std::vector<VkDescriptorSetLayoutBinding>& b) {
-            VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-            info.bindingCount = uint32_t(b.size());
-            info.pBindings = b.data();
-            VkDescriptorSetLayout l;
-            VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &info, nullptr, &l));
-            return l;
-        };
-        cullSetLayout_ = makeLayout(cull);
-        shadeSetLayout_ = makeLayout(shade);
-
-        VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
-        VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-        pi.maxSets = 2;
-        pi.poolSizeCount = 2;
-        pi.pPoolSizes = sizes;
-        VK_CHECK(vkCreateDescriptorPool(ctx_.device, &pi, nullptr, &pool_));
-        VkDescriptorSetLayout layouts[2] = {cullSetLayout_, shadeSetLayout_};
-        VkDescriptorSet sets[2];
-        VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-        ai.descriptorPool = pool_;
-        ai.descriptorSetCount = 2;
-        ai.pSetLayouts = layouts;
-        VK_CHECK(vkAllocateDescriptorSets(ctx_.device, &ai, sets));
-        cullSet_ = sets[0];
-        shadeSet_ = sets[1];
-
-        VkDescriptorBufferInfo tiles{graph.buffer(tiles_).buffer, 0, VK_WHOLE_SIZE};
-        VkDescriptorBufferInfo indices{graph.buffer(indices_).buffer, 0, VK_WHOLE_SIZE};
-        VkDescriptorBufferInfo params{params_.buffer, 0, VK_WHOLE_SIZE};
-        VkDescriptorImageInfo depth{sampler_, graph.image(msaa ? depthMsaa_ : depth_).view,
-                                    VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL};
-        VkDescriptorBufferInfo counter{};
-        std::vector<VkWriteDescriptorSet> writes;
-        auto write = [&](VkDescriptorSet set, uint32_t b, VkDescriptorType t, const VkDescriptorBufferInfo* bi,
-                         const VkDescriptorImageInfo* ii) {
-            VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-            w.dstSet = set;
-            w.dstBinding = b;
-            w.descriptorCount = 1;
-            w.descriptorType = t;
-            w.pBufferInfo = bi;
-            w.pImageInfo = ii;
-            writes.push_back(w);
-        };
-        for (VkDescriptorSet set : {cullSet_, shadeSet_}) {
-            write(set, TP_FP_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &tiles, nullptr);
-            write(set, TP_FP_BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &indices, nullptr);
-            write(set, TP_FP_BINDING_PARAMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &params, nullptr);
-        }
-        write(cullSet_, TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, &depth);
-        if (layout_ == TP_FP_LAYOUT_LINKED) {
-            counter = {graph.buffer(counter_).buffer, 0, VK_WHOLE_SIZE};
-            write(cullSet_, TP_FP_BINDING_COUNTER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &counter, nullptr);
-        }
-        vkUpdateDescriptorSets(ctx_.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+            writeBufferDescriptor(ctx_, cullSet_.set, TP_FP_BINDING_COUNTER, graph.buffer(counter_).buffer);
     }
 
     void createPipelines() {
         const bool msaa = settings_.msaa > 1;
         const auto samples = VkSampleCountFlagBits(settings_.msaa);
         sceneLayout_ = scene_.createPipelineLayout();
-        cullLayout_ = scene_.createPipelineLayout(cullSetLayout_);
-        shadeLayout_ = scene_.createPipelineLayout(shadeSetLayout_);
+        cullLayout_ = scene_.createPipelineLayout(cullSet_.layout);
+        shadeLayout_ = scene_.createPipelineLayout(shadeSet_.layout);
 
         // Depth prepass: opaque without a fragment shader, masked with the alpha test.
         GraphicsPipelineDesc pre;
@@ -396,7 +342,7 @@ class ForwardPlusRenderer final : public Renderer {
     void recordCulling(PassContext& pc) {
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
         scene_.bindSceneSet(pc.cmd, cullLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
-        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_, 0,
+        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_.set, 0,
                                 nullptr);
         vkCmdDispatch(pc.cmd, grid_.tilesX, grid_.tilesY, 1);
     }
@@ -411,7 +357,7 @@ class ForwardPlusRenderer final : public Renderer {
         DepthTarget depth{msaa ? depthMsaa_ : depth_, {}, false, true};
         beginRendering(pc, {color}, depth);
         scene_.bindSceneSet(pc.cmd, shadeLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_, TP_SET_PASS, 1, &shadeSet_, 0,
+        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_, TP_SET_PASS, 1, &shadeSet_.set, 0,
                                 nullptr);
         std::vector<AlphaMode> modes = transparent ? std::vector<AlphaMode>{AlphaMode::Blend}
                                                    : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
@@ -436,9 +382,7 @@ class ForwardPlusRenderer final : public Renderer {
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;
     VkSampler sampler_ = VK_NULL_HANDLE;
-    VkDescriptorSetLayout cullSetLayout_ = VK_NULL_HANDLE, shadeSetLayout_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet cullSet_ = VK_NULL_HANDLE, shadeSet_ = VK_NULL_HANDLE;
+    PassSet cullSet_, shadeSet_;
     VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, cullLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
     VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE, cull_ = VK_NULL_HANDLE;
     VkPipeline shade_[3] = {};

@@ -1,6 +1,6 @@
 #pragma once
-// Descriptor set 1 of a deferred pass: layout, pool and one set, from a list of bindings
-// whose numbers come from shaders/include/deferred_shared.h.
+// A pass's own descriptor set (set 1): layout, pool and one set, made from a list of
+// bindings whose numbers come from the pipeline's shaders/include/<pipeline>_shared.h.
 #include <vector>
 
 #include <vulkan/vulkan.h>

@@ -1,4 +1,4 @@
-#include "deferred/pass_set.h"
+#include "core/gpu/descriptors.h"
 
 #include "core/gpu/context.h"
 #include "core/gpu/vk_check.h"
