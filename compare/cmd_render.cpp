@@ -42,7 +42,6 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
         const std::string path = base + "_debug_" + d.name;
         s = d.display ? writePng(path + ".png", d.image) : writeExr(path + ".exr", d.image, ExrPixelType::Float);
     }
-    ErrorReport self = computeError(run.hdr, run.hdr);
     nlohmann::json j;
     j["schema"] = "triptych.render/1";
     j["device"] = deviceJson(ctx);
@@ -51,7 +50,7 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
     j["settings"]["seed"] = o.scene.seed;
     j["scene"] = sceneJson(scene, features);
     j["run"] = runJson(run, ctx);
-    j["nan_inf_pixels"] = self.nanInfCount;
+    j["nan_inf_pixels"] = countNonFinitePixels(run.hdr);
     if (s) s = writeTextFile(o.out + "/render.json", j.dump(2) + "\n");
     if (!s) throw UsageError(s.error());
 }

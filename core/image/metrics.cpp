@@ -54,6 +54,12 @@ void finish(const Sums& sums, const MetricsOptions& options, ErrorReport& report
 
 } // namespace
 
+uint64_t countNonFinitePixels(const ImageRGBA& image) {
+    uint64_t n = 0;
+    for (size_t i = 0; i < image.pixelCount(); ++i) n += !finiteRgb(&image.rgba[i * 4]);
+    return n;
+}
+
 ErrorReport computeError(const ImageRGBA& test, const ImageRGBA& reference,
                          const MetricsOptions& options) {
     ErrorReport report;

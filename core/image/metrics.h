@@ -37,6 +37,9 @@ struct MetricInfo {
 // The table: rmse, psnr, max_abs, mean_relative, share_over_threshold, nan_inf.
 const std::vector<MetricInfo>& metricTable();
 
+// Pixels with a NaN or Inf in RGB (the nanInfCount of computeError, for a single image).
+uint64_t countNonFinitePixels(const ImageRGBA& image);
+
 // Images must have the same size; returns a report with comparedPixels=0 otherwise.
 ErrorReport computeError(const ImageRGBA& test, const ImageRGBA& reference,
                          const MetricsOptions& options = {});
