@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/gpu/context.h"
+#include "core/gpu/descriptors.h"
 #include "core/gpu/vk_check.h"
 #include "core/render/scene_gpu.h"
 
@@ -160,14 +161,7 @@ void SceneGpu::createDescriptors() {
 }
 
 void SceneGpu::writeLightDescriptor() {
-    VkDescriptorBufferInfo info{lights_.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set_;
-    w.dstBinding = TP_BINDING_LIGHTS;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    w.pBufferInfo = &info;
-    vkUpdateDescriptorSets(ctx_.device, 1, &w, 0, nullptr);
+    writeBufferDescriptor(ctx_, set_, TP_BINDING_LIGHTS, lights_.buffer);
 }
 
 } // namespace tp
