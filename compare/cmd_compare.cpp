@@ -23,6 +23,10 @@
 namespace tp::cli {
 namespace {
 
+void check(const Status& s) {
+    if (!s) throw UsageError(s.error());
+}
+
 std::vector<std::string> selectPipelines(const std::string& list) {
     std::vector<std::string> names;
     if (list.empty()) {
@@ -42,19 +46,34 @@ std::vector<std::string> selectPipelines(const std::string& list) {
     return names;
 }
 
+// Files of the pair (a, b): the signed difference a - b.
+std::string pairDiffStem(const std::string& a, const std::string& b) { return a + "_vs_" + b + "_diff"; }
+
+// The legend's font scales with its height: keep it readable when the page shrinks a large
+// image to a column (about 320-600 px wide).
+uint32_t legendHeight(const ImageRGBA& image) { return 24 * std::max(1u, image.width / 320); }
+
+// Signed EXR and heat map (on the report's one scale) of a difference image.
+void writeDifference(const std::string& out, const std::string& stem, const ImageRGBA& diff, float scale,
+                     std::vector<std::string>& files) {
+    check(writeExr(out + "/" + stem + ".exr", diff, ExrPixelType::Float));
+    check(writePng(out + "/" + stem + ".png", heatMap(diff, scale, legendHeight(diff))));
+    files.push_back(stem + ".exr");
+    files.push_back(stem + ".png");
+}
+
 // A previous run's report must not survive next to this run's partial output.
 void removeStaleOutputs(const std::string& out, const std::vector<std::string>& names) {
     std::vector<std::string> files = {"report.json", "report.html", "lights.json", "reference.exr", "reference.png"};
     for (const std::string& n : names)
         for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png"}) files.push_back(n + suffix);
+    for (size_t i = 0; i < names.size(); ++i)
+        for (size_t k = i + 1; k < names.size(); ++k)
+            for (const char* suffix : {".exr", ".png"}) files.push_back(pairDiffStem(names[i], names[k]) + suffix);
     for (const std::string& f : files) {
         std::error_code ec;
         std::filesystem::remove(out + "/" + f, ec);
     }
-}
-
-void check(const Status& s) {
-    if (!s) throw UsageError(s.error());
 }
 
 // Runs one renderer; a renderer that cannot be built, or a Vulkan failure inside it, becomes
@@ -120,17 +139,13 @@ void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
     const std::string& out = r.options->out;
     for (size_t i = 0; i < r.pipelines.size(); ++i) {
         PipelineOutcome& p = r.pipelines[i];
-        if (!p.run) continue;
-        check(writeExr(out + "/" + p.name + "_diff.exr", diffs[i], ExrPixelType::Float));
-        // The legend's font scales with its height: keep it readable when the page shrinks a
-        // large image to a column (about 320-600 px wide).
-        const uint32_t legend = 24 * std::max(1u, diffs[i].width / 320);
-        check(writePng(out + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale, legend)));
-        p.files.push_back(p.name + "_diff.exr");
-        p.files.push_back(p.name + "_diff.png");
+        if (p.run) writeDifference(out, p.name + "_diff", diffs[i], r.diffScale, p.files);
     }
 }
 
+// Pipelines against each other: metrics of a against b, and the signed difference a - b as
+// EXR and heat map on the same scale as the maps against the reference (what exceeds it
+// saturates), so one legend reads every map of the report.
 void measurePairs(CompareRecord& r) {
     MetricsOptions hdrOptions;
     hdrOptions.psnrPeak = r.hdrPsnrPeak;
@@ -141,6 +156,9 @@ void measurePairs(CompareRecord& r) {
             PairOutcome pair{a.name, b.name, computeError(a.run->hdr, b.run->hdr, hdrOptions),
                              computeError(tonemapToDisplay(a.run->hdr, r.exposureEv),
                                           tonemapToDisplay(b.run->hdr, r.exposureEv))};
+            ImageRGBA diff = signedDifference(a.run->hdr, b.run->hdr);
+            pair.diffP99 = differencePercentile99(diff);
+            writeDifference(r.options->out, pairDiffStem(a.name, b.name), diff, r.diffScale, pair.files);
             r.pairs.push_back(std::move(pair));
         }
 }

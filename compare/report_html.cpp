@@ -3,6 +3,7 @@
 // JSON cannot disagree.
 #include "compare/report_html.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -25,6 +26,7 @@ td.l,th.l{text-align:left}
 .grid{display:grid;grid-template-columns:repeat(2,minmax(0,1fr));gap:12px}
 figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #999}
 figcaption{font-size:12px;color:#333;margin-top:2px}
+table.pairs td{width:300px;vertical-align:top}table.pairs img{width:300px}
 details{margin:6px 0}summary{cursor:pointer;font-weight:bold}
 )";
 
@@ -198,13 +200,55 @@ std::string memorySection(const json& r) {
     return h;
 }
 
-std::string pairwiseSection(const json& r) {
-    if (r["pairwise"].empty()) return "";
-    std::string h = "<h2>Pipelines against each other</h2>\n<table><tr><th class=\"l\">a</th><th class=\"l\">b</th>"
-                    "<th>RMSE (HDR)</th><th>max |a&minus;b| (HDR)</th><th>PSNR dB (tonemapped)</th><th>max (tonemapped)</th></tr>\n";
+// One pair: its heat map (a - b on the report's scale) with the numbers under it.
+Result<std::string> pairCell(const json& pair, const std::string& outDir) {
+    const std::string a = pair["a"], b = pair["b"];
+    std::string caption = escapeXml(a) + " &minus; " + escapeXml(b) + ": RMSE " + formatNumber(pair["hdr"]["rmse"].get<double>()) +
+                          ", max " + formatNumber(pair["hdr"]["max_abs"].get<double>()) + " (HDR)";
+    for (const json& f : pair.value("files", json::array()))
+        if (const std::string file = f; file.ends_with(".png")) return figure(outDir, file, caption);
+    return "<p class=\"meta\">" + caption + "</p>\n";
+}
+
+// A matrix: row a, column b holds the map of a - b (upper triangle; the lower one would
+// repeat it with the sign flipped), then every number in a table.
+Result<std::string> pairwiseSection(const json& r, const std::string& outDir) {
+    if (r["pairwise"].empty()) return std::string();
+    std::vector<std::string> rows, cols;
+    auto add = [](std::vector<std::string>& v, const std::string& n) {
+        if (std::find(v.begin(), v.end(), n) == v.end()) v.push_back(n);
+    };
+    for (const json& p : r["pairwise"]) {
+        add(rows, p["a"]);
+        add(cols, p["b"]);
+    }
+    std::string h = "<h2>Pipelines against each other</h2>\n<p class=\"meta\">Row a, column b: heat map of |a &minus; b| "
+                    "(max over RGB, linear) on the same scale as the maps above (0 to " +
+                    formatNumber(r["difference_scale"]["value"].get<double>()) +
+                    "; above it saturates). Signed differences: a_vs_b_diff.exr.</p>\n<table class=\"pairs\"><tr><th></th>";
+    for (const std::string& c : cols) h += "<th>" + escapeXml(c) + "</th>";
+    h += "</tr>\n";
+    for (const std::string& a : rows) {
+        h += "<tr><th class=\"l\">" + escapeXml(a) + "</th>";
+        for (const std::string& b : cols) {
+            auto it = std::find_if(r["pairwise"].begin(), r["pairwise"].end(),
+                                   [&](const json& p) { return p["a"] == a && p["b"] == b; });
+            if (it == r["pairwise"].end()) {
+                h += "<td></td>";
+                continue;
+            }
+            Result<std::string> cell = pairCell(*it, outDir);
+            if (!cell) return cell;
+            h += "<td class=\"l\">" + *cell + "</td>";
+        }
+        h += "</tr>\n";
+    }
+    h += "</table>\n<table><tr><th class=\"l\">a</th><th class=\"l\">b</th><th>RMSE (HDR)</th><th>max |a&minus;b| "
+         "(HDR)</th><th>99th percentile |a&minus;b|</th><th>PSNR dB (tonemapped)</th><th>max (tonemapped)</th></tr>\n";
     for (const json& p : r["pairwise"])
         h += "<tr><td class=\"l\">" + esc(p["a"]) + "</td><td class=\"l\">" + esc(p["b"]) + "</td>" + numberCell(p["hdr"]["rmse"]) +
-             numberCell(p["hdr"]["max_abs"]) + numberCell(p["tonemapped"]["psnr"]) + numberCell(p["tonemapped"]["max_abs"]) + "</tr>\n";
+             numberCell(p["hdr"]["max_abs"]) + numberCell(p.value("difference_p99", json(nullptr))) +
+             numberCell(p["tonemapped"]["psnr"]) + numberCell(p["tonemapped"]["max_abs"]) + "</tr>\n";
     return h + "</table>\n";
 }
 
@@ -257,7 +301,9 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     h += "</style></head><body>\n" + header(r) + summaryTable(r) + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
     if (!images) return images;
-    h += *images + timingSection(r) + memorySection(r) + pairwiseSection(r) + detailsSection(r);
+    Result<std::string> pairs = pairwiseSection(r, outDir);
+    if (!pairs) return pairs;
+    h += *images + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
     return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n</body></html>\n";
 }
 

@@ -94,7 +94,12 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["pipelines"] = pipelines;
     nlohmann::json pairs = nlohmann::json::array();
     for (const PairOutcome& p : r.pairs)
-        pairs.push_back({{"a", p.a}, {"b", p.b}, {"hdr", metricsJson(p.hdr)}, {"tonemapped", metricsJson(p.display)}});
+        pairs.push_back({{"a", p.a},
+                         {"b", p.b},
+                         {"hdr", metricsJson(p.hdr)},
+                         {"tonemapped", metricsJson(p.display)},
+                         {"difference_p99", p.diffP99},
+                         {"files", p.files}});
     j["pairwise"] = pairs;
     j["validation_messages"] = r.validationMessages;
     j["files"] = {"lights.json", "report.json", "report.html"};

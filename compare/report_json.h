@@ -28,6 +28,8 @@ struct PipelineOutcome {
 struct PairOutcome {
     std::string a, b; // b is the "reference" side of computeError
     ErrorReport hdr, display;
+    float diffP99 = 0;              // of |a - b|, on the report's shared scale
+    std::vector<std::string> files; // a_vs_b_diff.exr / .png
 };
 
 struct CompareRecord {

@@ -126,6 +126,19 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     }
     EXPECT_FLOAT_EQ(r["difference_scale"]["value"].get<float>(), std::max(largestP99, 1e-6f));
     EXPECT_EQ(r["pairwise"].size(), names.size() * (names.size() - 1) / 2);
+    for (const json& pair : r["pairwise"]) { // a - b as EXR and heat map, listed in the report
+        const std::string stem = pair["a"].get<std::string>() + "_vs_" + pair["b"].get<std::string>() + "_diff";
+        EXPECT_EQ(pair["files"], json({stem + ".exr", stem + ".png"}));
+        expectMetrics(pair["hdr"], stem);
+        expectMetrics(pair["tonemapped"], stem);
+        Result<ImageRGBA> diff = readExr(out + "/" + stem + ".exr");
+        ASSERT_TRUE(diff.ok()) << diff.error();
+        // The EXR holds float(a - b): within one float rounding (2^-24 relative) of the metric's
+        // difference, which is taken in double.
+        const double maxAbs = pair["hdr"]["max_abs"].get<double>();
+        EXPECT_NEAR(computeError(*diff, ImageRGBA(96, 54)).maxAbs, maxAbs, maxAbs * 0x1p-24) << stem;
+        EXPECT_TRUE(fs::exists(out + "/" + stem + ".png")) << stem;
+    }
 
     // One exposure for every PNG: the automatic one of the reference image as written.
     Result<ImageRGBA> ref = readExr(out + "/reference.exr");
@@ -135,7 +148,8 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     const std::string html = readText(out + "/report.html");
     EXPECT_EQ(count(html, "http://"), 0u);
     EXPECT_EQ(count(html, "https://"), 0u);
-    EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 1 + 2 * names.size());
+    const size_t pairs = names.size() * (names.size() - 1) / 2;
+    EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 1 + 2 * names.size() + pairs);
     EXPECT_GE(count(html, "<svg"), 2u); // timing bars and the error/time plot
     for (const std::string& n : names) EXPECT_NE(html.find(n), std::string::npos);
 }
