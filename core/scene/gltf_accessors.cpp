@@ -117,7 +117,13 @@ Status locate(const tinygltf::Model& model, size_t index, Located& out) {
         return accessorError(index, "unknown componentType " + std::to_string(a.componentType));
     if (comps == 0) return accessorError(index, "unknown type");
     if (a.count > kMaxElements)
-        return accessorError(index, "count " + std::to_string(a.count) + " is absurd (over 2^28)");
+        return accessorError(index, "count " + std::to_string(a.count) + " is absurd (over 2^" +
+                                        std::to_string(kMaxElementsLog2) + ")");
+    if (a.bufferView == -1 && a.count > kMaxZeroFilled)
+        return accessorError(index, "has no bufferView yet declares " + std::to_string(a.count) +
+                                        " elements (zeros; at most 2^" +
+                                        std::to_string(kMaxZeroFilledLog2) +
+                                        " without data in the file)");
     out.elementSize = out.componentSize * comps;
     out.stride = out.elementSize;
     if (a.bufferView != -1 && a.count > 0) {

@@ -166,11 +166,13 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
     auto readOptional = [&](const AttributeSpec& spec, auto&& store) -> Status {
         int index = attribute(spec.name);
         if (index < 0) return {};
+        // Compared before reading: an attribute's count is not bounded by POSITION's.
+        if (size_t(index) < model.accessors.size() && model.accessors[size_t(index)].count != n)
+            return Error{std::string(spec.name) + " has " +
+                         std::to_string(model.accessors[size_t(index)].count) +
+                         " elements but POSITION has " + std::to_string(n)};
         Status r = readFloats(model, index, spec, data, comps);
         if (!r) return r;
-        if (data.size() / comps != n)
-            return Error{std::string(spec.name) + " has " + std::to_string(data.size() / comps) +
-                         " elements but POSITION has " + std::to_string(n)};
         store();
         return {};
     };

@@ -14,13 +14,28 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "core/scene/gltf_loader.h"
 #include "core/scene/scene.h"
 #include "core/util/result.h"
 
 namespace tp::gltf {
 
-constexpr uint64_t kMaxElements = 1ull << 28; // vertices, and indices, in the whole scene
+// Limits that keep a hostile file from asking for gigabytes (docs/hostile_input.md). Data
+// read from a bufferView is bounded by the file's size; these bound what is not.
+// Vertices, and indices, in the whole scene once every node's meshes are placed: 2^24
+// vertices are 1 GiB of vertex attributes (64 bytes each), far past any scene this tool
+// renders in reasonable time, and instancing can multiply a small file's mesh without limit.
+constexpr int kMaxElementsLog2 = 24;
+constexpr uint64_t kMaxElements = 1ull << kMaxElementsLog2;
+// An accessor without a bufferView is zeros (plus its sparse values): no byte of the file
+// bounds its count. 2^20 elements are 64 MiB even as VEC4 floats.
+constexpr int kMaxZeroFilledLog2 = 20;
+constexpr uint64_t kMaxZeroFilled = 1ull << kMaxZeroFilledLog2;
 constexpr int kMaxTextureSide = 16384;
+// Pixels of every texture a material uses, read from the image headers before any decoding:
+// 2^28 pixels are 1 GiB as RGBA8 (Sponza's textures are ~2^26).
+constexpr int kMaxTexturePixelsLog2 = 28;
+constexpr uint64_t kMaxTexturePixels = 1ull << kMaxTexturePixelsLog2;
 
 using WarnFn = std::function<void(const std::string&)>;
 
@@ -33,6 +48,13 @@ constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT;
 constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+
+// Loads a glTF from bytes already in memory, as loadGltf does with a file's: `name` prefixes
+// every message, external files resolve in `folder`, `binary` when the name ends in .glb
+// (the GLB magic is recognised whatever it is). For the fuzz target and the tests.
+Result<Scene> loadGltfBytes(std::vector<unsigned char> bytes, const std::string& name,
+                            const std::filesystem::path& folder, bool binary,
+                            const GltfLoadOptions& options = {});
 
 // --- gltf_files.cpp ----------------------------------------------------------------------
 

@@ -16,8 +16,39 @@ namespace {
 namespace fs = std::filesystem;
 using namespace gltf;
 
-const char* const kTooLarge = "the scene is absurdly large (over 2^28 vertices or indices once "
-                              "every node's meshes are placed)";
+std::string tooLarge() {
+    return "the scene is absurdly large (over 2^" + std::to_string(kMaxElementsLog2) +
+           " vertices or indices once every node's meshes are placed)";
+}
+
+// Before anything is read: the counts the file declares for every placed primitive. Each is a
+// lower bound of what building the meshes allocates, so a file that instances one mesh
+// thousands of times, or declares zeros by the million, fails here and not after gigabytes.
+Status checkDeclaredSize(const tinygltf::Model& model, const std::vector<Instance>& instances) {
+    auto count = [&](int accessor) -> uint64_t {
+        return accessor >= 0 && size_t(accessor) < model.accessors.size()
+                   ? model.accessors[size_t(accessor)].count
+                   : 0;
+    };
+    std::vector<uint64_t> uses(model.meshes.size(), 0);
+    for (const Instance& inst : instances)
+        if (inst.mesh >= 0) ++uses[size_t(inst.mesh)];
+    uint64_t vertices = 0, indices = 0;
+    for (size_t m = 0; m < model.meshes.size(); ++m) {
+        for (const tinygltf::Primitive& p : model.meshes[m].primitives) {
+            if (p.mode >= 0 && p.mode < TINYGLTF_MODE_TRIANGLES) continue; // skipped, not read
+            auto it = p.attributes.find("POSITION");
+            const uint64_t n = it == p.attributes.end() ? 0 : count(it->second);
+            const uint64_t k = p.indices >= 0 ? count(p.indices) : n;
+            // Counts are at most 2^24 (checkAccessor) and uses at most the node count: the
+            // products cannot overflow 64 bits.
+            vertices += n * uses[m];
+            indices += k * uses[m];
+            if (vertices > kMaxElements || indices > kMaxElements) return Error{tooLarge()};
+        }
+    }
+    return {};
+}
 
 Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances,
                    const GltfLoadOptions& options, Scene& scene, const WarnFn& warn) {
@@ -36,15 +67,6 @@ Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& in
         const tinygltf::Mesh& mesh = model.meshes[size_t(inst.mesh)];
         std::vector<LocalPrimitive>& prims = cache[size_t(inst.mesh)];
         if (prims.empty()) {
-            // Before reading: an accessor without a bufferView is zeros of any count, so
-            // counts alone could ask for gigabytes.
-            uint64_t declared = vertices;
-            for (const tinygltf::Primitive& p : mesh.primitives)
-                if (auto it = p.attributes.find("POSITION");
-                    it != p.attributes.end() && it->second >= 0 &&
-                    size_t(it->second) < model.accessors.size())
-                    declared += model.accessors[size_t(it->second)].count;
-            if (declared > kMaxElements) return Error{kTooLarge};
             prims.resize(mesh.primitives.size());
             for (size_t p = 0; p < prims.size(); ++p) {
                 Status s =
@@ -57,7 +79,7 @@ Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& in
             if (prim.positions.empty()) continue;
             vertices += prim.positions.size();
             indices += prim.indices.size();
-            if (vertices > kMaxElements || indices > kMaxElements) return Error{kTooLarge};
+            if (vertices > kMaxElements || indices > kMaxElements) return Error{tooLarge()};
             Mesh out;
             out.name = mesh.name.empty() ? "mesh " + std::to_string(inst.mesh) : mesh.name;
             if (prims.size() > 1) out.name.append(1, '#').append(std::to_string(p));
@@ -111,16 +133,14 @@ std::string printableLine(const std::string& text) {
     return out;
 }
 
-Result<Scene> load(const std::string& path, const GltfLoadOptions& options, const WarnFn& warn) {
-    std::vector<unsigned char> bytes;
-    if (Status s = readFile(path, bytes); !s) return Error{s.error()};
-    const fs::path folder = fs::absolute(fs::path(path)).parent_path().lexically_normal();
-    std::string ext = fs::path(path).extension().string();
-    for (char& c : ext)
-        c = char(std::tolower(uint8_t(c)));
+Result<Scene> parse(std::vector<unsigned char>& bytes, const std::string& name,
+                    const fs::path& folder, bool binaryByName, const GltfLoadOptions& options,
+                    const WarnFn& warn) {
+    if (bytes.empty()) return Error{"file is empty"};
+    if (bytes.size() >= (1ull << 32)) return Error{"file is over 4 GiB, which tinygltf cannot load"};
     // By extension, or by the GLB magic whatever the extension says.
     const bool binary =
-        ext == ".glb" || (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0);
+        binaryByName || (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0);
 
     std::string_view jsonText(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (binary)
@@ -155,8 +175,9 @@ Result<Scene> load(const std::string& path, const GltfLoadOptions& options, cons
         if (Status s = checkAccessor(model, i); !s) return Error{s.error()};
     std::vector<Instance> instances;
     if (Status s = collectInstances(model, instances); !s) return Error{s.error()};
+    if (Status s = checkDeclaredSize(model, instances); !s) return Error{s.error()};
     Scene scene;
-    scene.source = path;
+    scene.source = name;
     if (Status s = loadMaterials(model, imageProblems, scene, warn); !s) return Error{s.error()};
     if (Status s = buildMeshes(model, instances, options, scene, warn); !s) return Error{s.error()};
     for (const tinygltf::Node& node : model.nodes)
@@ -172,15 +193,22 @@ Result<Scene> load(const std::string& path, const GltfLoadOptions& options, cons
     return scene;
 }
 
-} // namespace
+bool hasGlbExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext)
+        c = char(std::tolower(uint8_t(c)));
+    return ext == ".glb";
+}
 
-Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options) {
+// Every failure, including running out of memory, becomes one printable line naming `name`.
+Result<Scene> guarded(const std::string& name, const GltfLoadOptions& options,
+                      const std::function<Result<Scene>(const WarnFn&)>& body) {
     auto warn = [&](const std::string& line) {
-        if (options.warnings) options.warnings->push_back(printableLine(path + ": " + line));
+        if (options.warnings) options.warnings->push_back(printableLine(name + ": " + line));
     };
     std::string problem;
     try {
-        Result<Scene> scene = load(path, options, warn);
+        Result<Scene> scene = body(warn);
         if (scene.ok()) return scene;
         problem = scene.error();
     } catch (const std::bad_alloc&) {
@@ -188,7 +216,29 @@ Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options) 
     } catch (const std::exception& e) {
         problem = "unexpected failure: " + firstLine(e.what());
     }
-    return Error{printableLine(path + ": " + problem)};
+    return Error{printableLine(name + ": " + problem)};
+}
+
+} // namespace
+
+namespace gltf {
+
+Result<Scene> loadGltfBytes(std::vector<unsigned char> bytes, const std::string& name,
+                            const fs::path& folder, bool binary, const GltfLoadOptions& options) {
+    return guarded(name, options, [&](const WarnFn& warn) {
+        return parse(bytes, name, fs::absolute(folder).lexically_normal(), binary, options, warn);
+    });
+}
+
+} // namespace gltf
+
+Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options) {
+    return guarded(path, options, [&](const WarnFn& warn) -> Result<Scene> {
+        std::vector<unsigned char> bytes;
+        if (Status s = readFile(path, bytes); !s) return Error{s.error()};
+        const fs::path folder = fs::absolute(fs::path(path)).parent_path().lexically_normal();
+        return parse(bytes, path, folder, hasGlbExtension(path), options, warn);
+    });
 }
 
 } // namespace tp

@@ -123,6 +123,33 @@ std::string imageLabel(const tinygltf::Model& model, int index) {
     return label;
 }
 
+std::string tooLargeError(const tinygltf::Model& model, int index, int width, int height) {
+    return imageLabel(model, index) + " is " + std::to_string(width) + "x" +
+           std::to_string(height) + ", over the " + std::to_string(kMaxTextureSide) + " limit";
+}
+
+// From the headers, before anything is decoded (a PNG header is 33 bytes; what it claims
+// would be allocated by the decoder): every side within kMaxTextureSide, and all the images
+// together within kMaxTexturePixels. An unreadable header is skipped here: that image becomes
+// a placeholder.
+Status checkTextureSizes(const tinygltf::Model& model, const std::vector<int>& toDecode) {
+    uint64_t total = 0;
+    for (int i : toDecode) {
+        const tinygltf::Image& image = model.images[size_t(i)];
+        int w = image.width, h = image.height;
+        if (image.as_is && !peekImageSize(image.image.data(), image.image.size(), w, h)) continue;
+        if (w <= 0 || h <= 0) continue;
+        if (w > kMaxTextureSide || h > kMaxTextureSide)
+            return Error{tooLargeError(model, i, w, h)};
+        total += uint64_t(w) * uint64_t(h);
+    }
+    if (total > kMaxTexturePixels)
+        return Error{"the textures add up to " + std::to_string(total) + " pixels, over the 2^" +
+                     std::to_string(kMaxTexturePixelsLog2) + " limit (" +
+                     std::to_string(kMaxTexturePixels >> 28) + " GiB as RGBA8)"};
+    return {};
+}
+
 } // namespace
 
 bool toRgba8(const unsigned char* data, size_t size, int width, int height, int components,
@@ -222,15 +249,14 @@ Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string
     for (size_t i = 0; i < needed.size(); ++i)
         if (needed[i] && (i >= imageProblems.size() || imageProblems[i].empty()))
             toDecode.push_back(int(i));
+    if (Status s = checkTextureSizes(model, toDecode); !s) return s;
     std::vector<Decoded> decoded(model.images.size());
     decodeAll(model, toDecode, decoded);
     for (size_t i = 0; i < needed.size(); ++i) {
         if (i < imageProblems.size() && !imageProblems[i].empty())
             decoded[i].problem = imageProblems[i];
         if (decoded[i].tooLarge)
-            return Error{imageLabel(model, int(i)) + " is " + std::to_string(decoded[i].width) +
-                         "x" + std::to_string(decoded[i].height) + ", over the " +
-                         std::to_string(kMaxTextureSide) + " limit"};
+            return Error{tooLargeError(model, int(i), decoded[i].width, decoded[i].height)};
         if (!decoded[i].problem.empty())
             warn(imageLabel(model, int(i)) + ": " + decoded[i].problem +
                  (needed[i] ? "; using a placeholder" : " (no material uses it)"));
