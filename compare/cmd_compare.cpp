@@ -230,7 +230,12 @@ int runCompare(const CompareOptions& o) {
     Scene scene = loadScene(o.scene);
     r.scene = &scene;
     r.features = analyzeScene(scene, r.settings.msaa);
-    if (scene.source.rfind("builtin:", 0) != 0) r.sceneHash = hashFile(scene.source);
+    if (scene.source.rfind("builtin:", 0) != 0) {
+        r.sceneHash = hashFile(scene.source);
+        r.sceneFiles = hashSceneFiles(scene.source);
+    }
+    r.contentHash = hashSceneContent(scene);
+    r.lightsHash = hashLights(scene.lights);
     ensureDirectory(o.out);
     removeStaleOutputs(o.out, names);
     std::fprintf(stderr, "triptych: compare %s, %zu triangles, %zu lights, %ux%u, %ux MSAA, %d+%d frames on %s\n",

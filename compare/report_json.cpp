@@ -73,6 +73,12 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["scene"] = sceneJson(*r.scene, r.features);
     j["scene"]["path"] = o.scene.scene.empty() ? "builtin:courtyard" : o.scene.scene;
     j["scene"]["hash_fnv1a64"] = r.sceneHash.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.sceneHash);
+    const bool fromFile = !r.sceneFiles.hash.empty();
+    j["scene"]["files_hash_fnv1a64"] = fromFile ? nlohmann::json(r.sceneFiles.hash) : nlohmann::json(nullptr);
+    j["scene"]["files_hashed"] = r.sceneFiles.files;
+    j["scene"]["files_missing"] = r.sceneFiles.missing;
+    j["scene"]["content_hash_fnv1a64"] = r.contentHash;
+    j["scene"]["lights_hash_fnv1a64"] = r.lightsHash;
     j["scene"]["lights_file"] = "lights.json";
     j["settings"] = settingsJson(r.settings);
     j["settings"]["frames"] = o.frames;

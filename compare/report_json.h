@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/compare.h"
+#include "compare/scene_hash.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
 #include "core/render/frame_runner.h"
@@ -39,6 +40,9 @@ struct CompareRecord {
     RenderSettings settings;
     const GpuContext* ctx = nullptr;
     std::string sceneHash;        // FNV-1a 64 of the scene file, hex; empty for built-ins
+    FileHashes sceneFiles;        // the file and every file it references; empty for built-ins
+    std::string contentHash;      // the loaded geometry, materials, textures, camera (any scene)
+    std::string lightsHash;       // the lights rendered (file lights and generated ones)
     float exposureEv = 0;
     float diffScale = 0;          // shared heat-map scale
     float hdrPsnrPeak = 1;        // brightest finite reference channel

@@ -181,6 +181,41 @@ TEST(Compare, FailingPipelineIsRecordedAndTheOthersGoOn) {
     EXPECT_NE(readText(out + "/report.html").find("forwardplus failed"), std::string::npos);
 }
 
+// report.json without what legitimately changes between two runs of one command: the
+// output directory in the command line, and the timings.
+json withoutTimings(json r) {
+    r.erase("command");
+    r.erase("command_line");
+    r["reference"]["run"].erase("timings");
+    for (json& p : r["pipelines"]) p["run"].erase("timings");
+    return r;
+}
+
+// The same command on the same device: identical images (byte for byte) and an identical
+// report but for the timings; the report names the scene by hashes of its data.
+TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
+    std::vector<std::string> dirs = {freshDir("repeat_a"), freshDir("repeat_b")};
+    for (const std::string& out : dirs)
+        ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "16", "--seed", "5", "--frames",
+                          "2", "--warmup", "0", "--out", out}),
+                  0);
+    json a = json::parse(readText(dirs[0] + "/report.json"));
+    json b = json::parse(readText(dirs[1] + "/report.json"));
+    EXPECT_EQ(withoutTimings(a), withoutTimings(b));
+    EXPECT_EQ(a["scene"]["content_hash_fnv1a64"].get<std::string>().size(), 16u);
+    EXPECT_EQ(a["scene"]["lights_hash_fnv1a64"].get<std::string>().size(), 16u);
+    EXPECT_TRUE(a["scene"]["files_hash_fnv1a64"].is_null()); // a built-in scene has no file
+    size_t images = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(dirs[0])) {
+        const std::string name = e.path().filename().string();
+        if (e.path().extension() != ".exr" && e.path().extension() != ".png" && name != "lights.json") continue;
+        ++images;
+        EXPECT_TRUE(readText(e.path().string()) == readText(dirs[1] + "/" + name)) << name << " differs";
+    }
+    const size_t n = pipelinesButReference().size();
+    EXPECT_EQ(images, 1 + 2 + 4 * n + 2 * (n * (n - 1) / 2)); // lights, reference, pipelines, pairs
+}
+
 TEST(Compare, BadPipelineNameFailsBeforeWritingAnything) {
     const std::string out = freshDir("compare_bad");
     EXPECT_THROW(runCli({"builtin:courtyard-small", "--pipelines", "forwardplus,nosuch", "--out", out}),
