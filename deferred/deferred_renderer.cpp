@@ -11,6 +11,7 @@
 #include "deferred/gbuffer_pass.h"
 #include "deferred/tiled_lighting.h"
 #include "deferred/transparent_pass.h"
+#include "deferred/volume_lighting.h"
 
 namespace tp {
 namespace {
@@ -20,7 +21,12 @@ class DeferredRenderer final : public Renderer {
     explicit DeferredRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
           gbuffer_(info.ctx, info.scene), lighting_(info.ctx, info.scene, info.settings.debug),
-          transparent_(info.ctx, info.scene) {}
+          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
+        if (settings_.deferredLighting != "tiled" && settings_.deferredLighting != "volumes")
+            throw RendererError("--deferred-lighting must be tiled or volumes (got " +
+                                settings_.deferredLighting + ")");
+        useVolumes_ = settings_.deferredLighting == "volumes";
+    }
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, settings_);
@@ -41,8 +47,11 @@ class DeferredRenderer final : public Renderer {
             t_.hdrMsaa = graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
                                                         VkSampleCountFlagBits(settings_.msaa),
                                                         "per-sample radiance (blended under MSAA)"});
-        t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
-                                          "per tile: lights, transparent lights, edge pixels, overflow");
+        // Volumes lighting of an opaque-only scene runs no tile pass at all.
+        const bool tilePass = !useVolumes_ || blended_;
+        if (tilePass)
+            t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
+                                              "per tile: lights, transparent lights, edge pixels, overflow");
         if (blended_) {
             // Capacity = every light, so no light is ever dropped, unless that exceeds the
             // device's storage buffer range; then the list keeps what fits (counted).
@@ -51,32 +60,42 @@ class DeferredRenderer final : public Renderer {
             t_.transparentLists = graph.createBuffer("transparent_lists", uint64_t(tiles) * t_.listStride * 4,
                                                      "per tile: count + transparent light indices");
         }
-        if (settings_.debug)
+        if (settings_.debug && !useVolumes_)
             t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
                                                            VK_SAMPLE_COUNT_1_BIT,
                                                            "debug: edge mask, roughness, metallic"});
         gbuffer_.plan(graph, t_);
-        lighting_.plan(graph, t_);
+        if (tilePass) lighting_.plan(graph, t_, useVolumes_);
+        if (useVolumes_) volumes_.plan(graph, t_);
         if (blended_) transparent_.plan(graph, t_);
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
-        graph.exportResource("tile_stats", t_.tileStats);
+        if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
+        if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
-            graph.exportResource("debug_edge_rm", t_.debug);
+            if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
             if (!t_.msaa()) graph.exportResource("gbuffer_base", t_.gbuffer[0]); // readback: 1x only
         }
     }
 
     void prepare(FrameGraph& graph) override {
         gbuffer_.prepare();
-        lighting_.prepare(graph);
+        if (t_.tileStats.valid()) lighting_.prepare(graph);
+        if (useVolumes_) volumes_.prepare(graph);
         if (blended_) transparent_.prepare(graph);
     }
 
     void collectStats(FrameGraph& graph) override {
-        std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.tileStats));
-        tileStats_.assign(raw.size() / 4, 0);
-        std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
+        if (t_.tileStats.valid()) {
+            std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.tileStats));
+            tileStats_.assign(raw.size() / 4, 0);
+            std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
+        }
+        if (t_.edgeMask.valid()) {
+            ImageRGBA mask = readbackColor(ctx_, graph.image(t_.edgeMask));
+            volumeEdges_ = 0;
+            for (size_t i = 0; i < mask.pixelCount(); ++i) volumeEdges_ += mask.rgba[i * 4] > 0.5f ? 1 : 0;
+        }
     }
 
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;
@@ -89,8 +108,11 @@ class DeferredRenderer final : public Renderer {
     RenderSettings settings_;
     DeferredTargets t_;
     bool blended_ = false;
+    bool useVolumes_ = false;
+    uint64_t volumeEdges_ = 0; // edge pixels found by the volumes base pass (MSAA)
     GBufferPass gbuffer_;
     TiledLighting lighting_;
+    VolumeLighting volumes_;
     TransparentPass transparent_;
     std::vector<uint32_t> tileStats_; // uvec4 per tile
 };
@@ -116,6 +138,12 @@ ImageRGBA lightsPerTileImage(const std::vector<uint32_t>& stats, const DeferredT
 std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     std::vector<DebugImage> out;
     uint32_t w = graph.width(), h = graph.height();
+    // RGBA8_SRGB reads back as the raw encoded bytes / 255: already display sRGB.
+    if (!t_.msaa()) out.push_back({"gbuffer_base_color", readbackColor(ctx_, graph.image(t_.gbuffer[0])), true});
+    if (useVolumes_) { // no tile pass shaded: the edge mask is the base pass's (MSAA only)
+        if (t_.edgeMask.valid()) out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
+        return out;
+    }
     out.push_back({"lights_per_tile", lightsPerTileImage(tileStats_, t_, w, h), true});
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
@@ -127,8 +155,6 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     }
     out.push_back({"edge_mask", std::move(edge), true});
     out.push_back({"gbuffer_roughness_metallic", std::move(rm), true});
-    // RGBA8_SRGB reads back as the raw encoded bytes / 255: already display sRGB.
-    if (!t_.msaa()) out.push_back({"gbuffer_base_color", readbackColor(ctx_, graph.image(t_.gbuffer[0])), true});
     return out;
 }
 
@@ -144,17 +170,24 @@ RendererStats DeferredRenderer::stats() const {
         edges += tileStats_[i + 2];
         overflow += tileStats_[i + 3];
     }
-    s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
-    s.counters.push_back({"lights_per_tile_max", maxLights});
-    s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
     double pixels = double(settings_.width) * settings_.height;
+    if (useVolumes_) {
+        edges = double(volumeEdges_);
+        s.counters.push_back({"light_volume_draws", double(scene_.lightCount())});
+        s.leftOut.push_back({"lights per tile (statistics, heat map)", "volumes lighting has no opaque tiles"});
+    } else {
+        s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
+        s.counters.push_back({"lights_per_tile_max", maxLights});
+        s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
+    }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
+    if (samples > 1 && !ctx_.caps.standardSampleLocations)
+        s.leftOut.push_back({"exact MSAA sample positions",
+                             "device reports non-standard sample locations: edge samples use the standard ones"});
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
-    if (settings_.deferredLighting == "volumes")
-        s.leftOut.push_back({"volumes lighting", "not implemented yet: tiled lighting ran instead"});
     return s;
 }
 

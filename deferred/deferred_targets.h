@@ -16,7 +16,9 @@ struct DeferredTargets {
     ResourceHandle hdrMsaa;              // per-sample radiance: blended scenes under MSAA only
     ResourceHandle tileStats;            // uvec4 per tile
     ResourceHandle transparentLists;     // blended scenes only
-    ResourceHandle debug;                // --debug only
+    ResourceHandle debug;                // --debug only (tiled lighting)
+    ResourceHandle edgeMask;             // volumes lighting under MSAA: 1x edge mask
+    ResourceHandle volumeDepth;          // volumes lighting under MSAA: 1x depth the volumes test
     uint32_t tileSize = 16, tilesX = 0, tilesY = 0;
     uint32_t listStride = 1;             // uints per transparent list: count + capacity
     bool msaa() const { return layout.samples > 1; }

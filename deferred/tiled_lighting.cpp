@@ -14,19 +14,23 @@ TiledLighting::~TiledLighting() {
     destroyPassSet(ctx_, set_);
 }
 
-void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t) {
+void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly) {
     t_ = &t;
+    listsOnly_ = listsOnly;
     std::vector<PassUse> uses;
-    for (ResourceHandle h : t.gbuffer) uses.push_back({h, Use::Sampled});
+    if (!listsOnly)
+        for (ResourceHandle h : t.gbuffer) uses.push_back({h, Use::Sampled});
     uses.push_back({t.gbufferDepth, Use::Sampled});
-    uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite});
+    if (!listsOnly) uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite});
     uses.push_back({t.tileStats, Use::StorageWrite});
     if (t.transparentLists.valid()) uses.push_back({t.transparentLists, Use::StorageWrite});
     if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite});
-    graph.addPass("tiled_lighting", uses, [this](PassContext& pc) { record(pc); });
+    graph.addPass(listsOnly ? "transparent_light_lists" : "tiled_lighting", uses,
+                  [this](PassContext& pc) { record(pc); });
 }
 
 std::string TiledLighting::shaderName() const {
+    if (listsOnly_) return std::string("deferred_tiled_lists_m") + (t_->msaa() ? "1" : "0") + "_comp";
     int m = !t_->msaa() ? 0 : t_->hdrMsaa.valid() ? 2 : 1;
     return "deferred_tiled_m" + std::to_string(m) + "_e" + (t_->layout.emissive ? "1" : "0") + "_t" +
            (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") + "_comp";
@@ -38,10 +42,11 @@ void TiledLighting::prepare(FrameGraph& graph) {
     const VkDescriptorType storageBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
                                         TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
+    const size_t colors = listsOnly_ ? 0 : t_->gbuffer.size();
     std::vector<SetBinding> bindings;
-    for (size_t i = 0; i < t_->gbuffer.size(); ++i) bindings.push_back({gbufferBindings[i], sampled});
+    for (size_t i = 0; i < colors; ++i) bindings.push_back({gbufferBindings[i], sampled});
     bindings.push_back({TP_DEF_BINDING_DEPTH, sampled});
-    bindings.push_back({TP_DEF_BINDING_HDR, storageImage});
+    if (!listsOnly_) bindings.push_back({TP_DEF_BINDING_HDR, storageImage});
     bindings.push_back({TP_DEF_BINDING_TILE_STATS, storageBuffer});
     if (t_->transparentLists.valid()) bindings.push_back({TP_DEF_BINDING_TRANSPARENT_LISTS, storageBuffer});
     if (t_->debug.valid()) bindings.push_back({TP_DEF_BINDING_DEBUG, storageImage});
@@ -53,14 +58,15 @@ void TiledLighting::prepare(FrameGraph& graph) {
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
     const VkImageLayout ro = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
-    for (size_t i = 0; i < t_->gbuffer.size(); ++i)
+    for (size_t i = 0; i < colors; ++i)
         writeImageDescriptor(ctx_, set_.set, gbufferBindings[i], sampled, graph.image(t_->gbuffer[i]).view,
                              ro, sampler_);
     writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_DEPTH, sampled, graph.image(t_->gbufferDepth).view,
                          ro, sampler_);
     ResourceHandle out = t_->hdrMsaa.valid() ? t_->hdrMsaa : t_->hdr;
-    writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_HDR, storageImage, graph.image(out).view,
-                         VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
+    if (!listsOnly_)
+        writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_HDR, storageImage, graph.image(out).view,
+                             VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
     writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TILE_STATS, graph.buffer(t_->tileStats).buffer);
     if (t_->transparentLists.valid())
         writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TRANSPARENT_LISTS,

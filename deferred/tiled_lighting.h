@@ -15,7 +15,9 @@ class TiledLighting {
   public:
     TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug) : ctx_(ctx), scene_(scene), debug_(debug) {}
     ~TiledLighting();
-    void plan(FrameGraph& graph, DeferredTargets& t);
+    // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
+    // (and the tile statistics) are built here.
+    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false);
     void prepare(FrameGraph& graph);
 
   private:
@@ -24,6 +26,7 @@ class TiledLighting {
     GpuContext& ctx_;
     SceneGpu& scene_;
     bool debug_;
+    bool listsOnly_ = false;
     const DeferredTargets* t_ = nullptr;
     PassSet set_;
     VkSampler sampler_ = VK_NULL_HANDLE;

@@ -149,6 +149,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.maxStorageBufferRange = p.limits.maxStorageBufferRange;
     c.maxComputeSharedMemorySize = p.limits.maxComputeSharedMemorySize;
     c.subgroupSize = sub.subgroupSize;
+    c.standardSampleLocations = p.limits.standardSampleLocations;
     return c;
 }
 

@@ -40,6 +40,7 @@ struct DeviceCaps {
     uint64_t maxStorageBufferRange = 0;
     uint32_t maxComputeSharedMemorySize = 0;
     uint32_t subgroupSize = 0;
+    bool standardSampleLocations = false; // MSAA samples sit at the spec's standard locations
 };
 
 class GpuContext {

@@ -28,3 +28,25 @@ foreach(m 0 1 2)
     endforeach()
   endforeach()
 endforeach()
+# Transparent light lists alone (volumes lighting of a blended scene): m = 0 / 1 as above.
+triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp deferred_tiled_lists_m0_comp
+  DEFINES TP_EMISSIVE=0 TP_TRANSPARENT=1 TP_LISTS_ONLY=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp deferred_tiled_lists_m1_comp
+  DEFINES TP_EMISSIVE=0 TP_TRANSPARENT=1 TP_LISTS_ONLY=1 TP_MSAA=1)
+# Light volumes: m = per-sample G-buffer (edge pixels shaded per sample in the shader),
+# e = emissive target (the base pass adds it once).
+triptych_add_shader(SPVS ${SHADER_DIR}/fullscreen.vert deferred_fullscreen_vert)
+triptych_add_shader(SPVS ${SHADER_DIR}/volume.vert deferred_volume_vert)
+triptych_add_shader(SPVS ${SHADER_DIR}/volume_expand.frag deferred_volume_expand_frag)
+foreach(m 0 1)
+  set(msaa)
+  if(m)
+    set(msaa TP_MSAA=1)
+  endif()
+  triptych_add_shader(SPVS ${SHADER_DIR}/volume_light.frag deferred_volume_light_m${m}_frag
+    DEFINES TP_EMISSIVE=0 ${msaa})
+  foreach(e 0 1)
+    triptych_add_shader(SPVS ${SHADER_DIR}/volume_base.frag deferred_volume_base_m${m}_e${e}_frag
+      DEFINES TP_EMISSIVE=${e} ${msaa})
+  endforeach()
+endforeach()

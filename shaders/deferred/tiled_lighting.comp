@@ -10,11 +10,16 @@
 //   TP_MSAA: the G-buffer is per-sample.  TP_HDR_MSAA: hdr is per-sample (the blended
 //   forward pass draws into it and resolves).  TP_TRANSPARENT: write transparent lists.
 //   TP_DEBUG: write the edge mask and decoded G-buffer channels.
+//   TP_LISTS_ONLY: only the transparent lists and tile statistics (volumes lighting
+//   shades the opaque surfaces; the hybrid forward pass still needs the lists).
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/light_model.h"
 #include "include/tile_culling.glsl"
-#include "include/gbuffer_encoding.h"
+#ifdef TP_LISTS_ONLY
+#define TP_GBUFFER_DEPTH_ONLY
+#endif
+#include "deferred/gbuffer_read.glsl"
 
 // A fixed 8 x 8 group covers a tile of 8, 16 or 32 pixels, each invocation taking
 // (tileSize / 8)^2 pixels: a spec-constant workgroup size (LocalSizeId) would need
@@ -22,28 +27,14 @@
 #define TP_GROUP 8u
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
-layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
 layout(constant_id = TP_DEF_SPEC_LIST_STRIDE) const uint kListStride = 1u;
-layout(constant_id = TP_DEF_SPEC_SAMPLES) const uint kSamples = 1u;
 
-#ifdef TP_MSAA
-#define GTEX sampler2DMS
-#define FETCH(t, p, s) texelFetch(t, p, int(s))
-#else
-#define GTEX sampler2D
-#define FETCH(t, p, s) texelFetch(t, p, 0)
-#endif
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_BASE) uniform GTEX gBase;
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_NORMAL) uniform GTEX gNormal;
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_ROUGH_METAL) uniform GTEX gRoughMetal;
-#if TP_EMISSIVE
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_EMISSIVE) uniform GTEX gEmissive;
-#endif
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEPTH) uniform GTEX gDepth;
+#ifndef TP_LISTS_ONLY
 #ifdef TP_HDR_MSAA
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform writeonly image2DMS hdrOut;
 #else
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform writeonly image2D hdrOut;
+#endif
 #endif
 #ifdef TP_TRANSPARENT
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_LISTS) buffer TransparentLists {
@@ -64,65 +55,11 @@ shared uint sTransparentCount;
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 
-// Sample locations, pixel-relative, y down like the compute pixel grid. The Vulkan
-// standard 4x pattern mirrored in y: of the mirrorings tried, it came closest to what
-// lavapipe rasterizes (measured against the per-sample reference; a residual bias of
-// ~0.15 % remains on edge pixels, see docs/deferred.md: open question).
-vec2 sampleOffset(uint s) {
-    if (kSamples == 2u) return s == 0u ? vec2(0.75, 0.75) : vec2(0.25, 0.25);
-    if (kSamples == 4u) {
-        const vec2 p4[4] = vec2[](vec2(0.375, 0.875), vec2(0.875, 0.625), vec2(0.125, 0.375),
-                                  vec2(0.625, 0.125));
-        return p4[s & 3u];
-    }
-    if (kSamples == 8u) {
-        const vec2 p8[8] = vec2[](vec2(0.5625, 0.3125), vec2(0.4375, 0.6875), vec2(0.8125, 0.5625),
-                                  vec2(0.3125, 0.1875), vec2(0.1875, 0.8125), vec2(0.0625, 0.4375),
-                                  vec2(0.6875, 0.9375), vec2(0.9375, 0.0625));
-        return p8[s & 7u];
-    }
-    return vec2(0.5);
-}
-
-float fetchDepth(ivec2 p, uint s) { return FETCH(gDepth, p, s).r; }
-
-// World position from a reverse-Z depth at a pixel-relative location.
-vec3 reconstructPosition(ivec2 p, vec2 offset, float depth) {
-    vec2 size = vec2(frame.viewport.xy);
-    vec2 ndc = vec2((float(p.x) + offset.x) / size.x * 2.0 - 1.0,
-                    1.0 - (float(p.y) + offset.y) / size.y * 2.0);
-    vec4 w = frame.invViewProj * vec4(ndc, depth, 1.0);
-    return w.xyz / w.w;
-}
-
-vec3 fetchNormal(ivec2 p, uint s) {
-    vec4 e = FETCH(gNormal, p, s);
-    return kWide ? e.xyz : octDecode(e.xy);
-}
-
-vec3 fetchEmissive(ivec2 p, uint s) {
-#if TP_EMISSIVE
-    return FETCH(gEmissive, p, s).rgb;
-#else
-    return vec3(0.0);
-#endif
-}
-
+#ifndef TP_LISTS_ONLY
 // One G-buffer sample, lit by the tile's lights (every light when the tile overflowed).
 vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
-    vec4 base = FETCH(gBase, p, s);
-    vec2 rm = FETCH(gRoughMetal, p, s).rg;
-    SurfaceSample ss;
-    ss.position = reconstructPosition(p, offset, depth);
-    ss.normal = fetchNormal(p, s);
-    vec3 toViewer = frame.cameraPosition.xyz - ss.position;
-    float vl = length(toViewer);
-    ss.toViewer = vl > 0.0 ? toViewer / vl : ss.normal;
-    ss.baseColor = base.rgb;
-    ss.roughness = rm.r;
-    ss.metallic = rm.g;
-    // material.glsl's ambientAndEmissive, from the stored occlusion (base.a) and emissive.
-    vec3 sum = frame.ambient.rgb * ss.baseColor * (1.0 - ss.metallic) * base.a + fetchEmissive(p, s);
+    SurfaceSample ss = readSurface(p, s, reconstructPosition(p, offset, depth));
+    vec3 sum = ambientEmissive(p, s);
     uint n = sCount;
     if (n > TP_DEF_TILE_LIGHT_CAPACITY) {
         for (uint i = 0u; i < frame.viewport.z; ++i) sum += evalLight(lights[i], ss, kHasSpot);
@@ -130,26 +67,6 @@ vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
         for (uint i = 0u; i < n; ++i) sum += evalLight(lights[sLights[i]], ss, kHasSpot);
     }
     return sum;
-}
-
-// Lauritzen 2010: a pixel is an edge when its samples do not hold the same surface: a
-// different G-buffer value (the G-buffer pass writes one value per primitive), coverage by
-// geometry on some samples only, or a view-depth jump of more than 1 %.
-bool isEdge(ivec2 p) {
-    float d0 = fetchDepth(p, 0u);
-    vec4 b0 = FETCH(gBase, p, 0u), n0 = FETCH(gNormal, p, 0u), r0 = FETCH(gRoughMetal, p, 0u);
-    vec3 e0 = fetchEmissive(p, 0u);
-    float z0 = viewZFromDepth(d0, frame.invProj);
-    for (uint s = 1u; s < kSamples; ++s) {
-        float d = fetchDepth(p, s);
-        if ((d > 0.0) != (d0 > 0.0)) return true;
-        if (d0 <= 0.0) continue;
-        if (FETCH(gBase, p, s) != b0 || FETCH(gNormal, p, s) != n0 ||
-            FETCH(gRoughMetal, p, s) != r0 || fetchEmissive(p, s) != e0)
-            return true;
-        if (abs(viewZFromDepth(d, frame.invProj) - z0) > 0.01 * abs(z0)) return true;
-    }
-    return false;
 }
 
 void writeHdr(ivec2 p, uint s, vec3 c) {
@@ -164,11 +81,8 @@ void writeHdr(ivec2 p, uint s, vec3 c) {
 bool shadePixel(ivec2 p) {
     bool edge = kSamples > 1u && isEdge(p);
     if (!edge) {
-        // One surface: shade once at the pixel centre, depth = mean of the samples (depth
-        // is affine in screen space over a plane, the standard patterns are centred).
-        float d = 0.0;
-        for (uint s = 0u; s < kSamples; ++s) d += fetchDepth(p, s);
-        d /= float(kSamples);
+        // One surface: shade once at the pixel centre with the mean sample depth.
+        float d = meanDepth(p);
         vec3 c = d > 0.0 ? shade(p, 0u, vec2(0.5), d) : vec3(0.0);
 #ifdef TP_HDR_MSAA
         for (uint s = 0u; s < kSamples; ++s) writeHdr(p, s, c);
@@ -191,6 +105,7 @@ bool shadePixel(ivec2 p) {
 #endif
     return true;
 }
+#endif
 
 void cull(uvec2 tile, bool hasGeometry) {
     uint groupSize = TP_GROUP * TP_GROUP;
@@ -207,10 +122,12 @@ void cull(uvec2 tile, bool hasGeometry) {
 #endif
     for (uint i = gl_LocalInvocationIndex; i < lightCount; i += groupSize) {
         LightGpu light = lights[i];
+#ifndef TP_LISTS_ONLY
         if (hasGeometry && lightInTile(light, f, frame.view)) {
             uint slot = atomicAdd(sCount, 1u);
             if (slot < TP_DEF_TILE_LIGHT_CAPACITY) sLights[slot] = i;
         }
+#endif
 #ifdef TP_TRANSPARENT
         if (lightInTile(light, ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
@@ -252,6 +169,7 @@ void main() {
     }
     barrier();
     cull(tile, sMaxDepthBits != 0u);
+#ifndef TP_LISTS_ONLY
     barrier();
     for (uint k = 0u; k < pixelsPerInvocation; ++k) {
         ivec2 p = pixelOf(tile, k);
@@ -263,6 +181,7 @@ void main() {
         imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
     }
+#endif
     barrier();
     if (gl_LocalInvocationIndex == 0u) {
         uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;

@@ -1,0 +1,217 @@
+#include "deferred/volume_lighting.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/gpu/vk_check.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp {
+
+float circumscribedSphereScale() {
+    float nearest = 1.0f;
+    for (uint32_t k = 0; k < TP_DEF_SPHERE_VERTICES; k += 3) {
+        glm::vec3 a = gpu::volumeSphereVertex(k), b = gpu::volumeSphereVertex(k + 1),
+                  c = gpu::volumeSphereVertex(k + 2);
+        glm::vec3 n = glm::cross(b - a, c - a);
+        if (glm::length(n) < 1e-6f) continue; // the degenerate half of a polar quad
+        nearest = std::min(nearest, std::abs(glm::dot(glm::normalize(n), a)));
+    }
+    return 1.001f / nearest;
+}
+
+bool drawsCone(const gpu::LightGpu& light) {
+    return light.type == TP_LIGHT_SPOT && -light.spotOffset / light.spotScale >= 0.5f;
+}
+
+VolumeLighting::~VolumeLighting() {
+    for (Stage* s : {&base_, &lights_, &expand_}) {
+        if (s->pipeline) vkDestroyPipeline(ctx_.device, s->pipeline, nullptr);
+        if (s->layout) vkDestroyPipelineLayout(ctx_.device, s->layout, nullptr);
+        destroyPassSet(ctx_, s->set);
+    }
+    if (sampler_) vkDestroySampler(ctx_.device, sampler_, nullptr);
+}
+
+void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
+    t_ = &t;
+    const bool msaa = t.msaa();
+    if (msaa) {
+        // RGBA8 rather than R8 so the statistics and --debug can read it back.
+        t.edgeMask = graph.createImage("volume_edge_mask", {VK_FORMAT_R8G8B8A8_UNORM, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                                            "edge mask: pixels shaded per sample"});
+        t.volumeDepth = graph.createImage("volume_depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                                           "nearest sample depth (1 on edges): volumes' depth test"});
+    }
+    std::vector<PassUse> base, lights;
+    for (ResourceHandle h : t.gbuffer) base.push_back({h, Use::Sampled});
+    for (size_t i = 0; i < 3; ++i) lights.push_back({t.gbuffer[i], Use::Sampled}); // no emissive
+    base.push_back({t.gbufferDepth, Use::Sampled});
+    base.push_back({t.hdr, Use::ColorAttachment});
+    lights.push_back({t.hdr, Use::ColorAttachment});
+    if (msaa) {
+        base.push_back({t.edgeMask, Use::ColorAttachment});
+        base.push_back({t.volumeDepth, Use::DepthAttachment});
+        lights.push_back({t.gbufferDepth, Use::Sampled});
+        lights.push_back({t.volumeDepth, Use::DepthTest});
+        lights.push_back({t.edgeMask, Use::Sampled});
+    } else {
+        lights.push_back({t.gbufferDepth, Use::DepthTest}); // tested and sampled
+    }
+    graph.addPass("volume_base", base, [this](PassContext& pc) { recordBase(pc); });
+    graph.addPass("volume_lights", lights, [this](PassContext& pc) { recordLights(pc); });
+    if (t.hdrMsaa.valid())
+        graph.addPass("volume_expand", {{t.hdr, Use::Sampled}, {t.hdrMsaa, Use::ColorAttachment}},
+                      [this](PassContext& pc) { recordExpand(pc); });
+}
+
+void VolumeLighting::writeGBuffer(FrameGraph& graph, VkDescriptorSet set, bool emissive) {
+    const uint32_t bindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
+                                 TP_DEF_BINDING_EMISSIVE};
+    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
+    size_t count = emissive ? t_->gbuffer.size() : 3;
+    for (size_t i = 0; i < count; ++i)
+        writeImageDescriptor(ctx_, set, bindings[i], sampled, graph.image(t_->gbuffer[i]).view, ro, sampler_);
+    writeImageDescriptor(ctx_, set, TP_DEF_BINDING_DEPTH, sampled, graph.image(t_->gbufferDepth).view, ro,
+                         sampler_);
+}
+
+namespace {
+
+std::vector<SetBinding> gbufferBindings(size_t colors) {
+    const uint32_t numbers[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
+                                TP_DEF_BINDING_EMISSIVE};
+    std::vector<SetBinding> b;
+    for (size_t i = 0; i < colors; ++i) b.push_back({numbers[i], VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    b.push_back({TP_DEF_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    return b;
+}
+
+} // namespace
+
+void VolumeLighting::prepare(FrameGraph& graph) {
+    // texelFetch only: the sampler's filtering is never used.
+    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    prepareBase(graph);
+    prepareLights(graph);
+    if (t_->hdrMsaa.valid()) prepareExpand(graph);
+}
+
+void VolumeLighting::prepareBase(FrameGraph& graph) {
+    base_.set = createPassSet(ctx_, gbufferBindings(t_->gbuffer.size()));
+    writeGBuffer(graph, base_.set.set, true);
+    base_.layout = scene_.createPipelineLayout(base_.set.layout);
+    GraphicsPipelineDesc d;
+    d.vertexShader = "deferred_fullscreen_vert";
+    d.fragmentShader = std::string("deferred_volume_base_m") + (t_->msaa() ? "1" : "0") + "_e" +
+                       (t_->layout.emissive ? "1" : "0") + "_frag";
+    d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+    d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+    d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.depthFormat = VK_FORMAT_UNDEFINED;
+    d.depthTest = d.depthWrite = false;
+    if (t_->msaa()) {
+        d.colorFormats.push_back(VK_FORMAT_R8G8B8A8_UNORM);
+        d.depthFormat = VK_FORMAT_D32_SFLOAT;
+        d.depthTest = d.depthWrite = true; // writes need the test on; ALWAYS passes
+        d.depthCompare = VK_COMPARE_OP_ALWAYS;
+    }
+    d.layout = base_.layout;
+    base_.pipeline = createGraphicsPipeline(ctx_, d);
+}
+
+void VolumeLighting::prepareLights(FrameGraph& graph) {
+    std::vector<SetBinding> bindings = gbufferBindings(3);
+    if (t_->msaa()) bindings.push_back({TP_DEF_BINDING_EDGE_MASK, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    lights_.set = createPassSet(ctx_, bindings);
+    writeGBuffer(graph, lights_.set.set, false);
+    if (t_->msaa())
+        writeImageDescriptor(ctx_, lights_.set.set, TP_DEF_BINDING_EDGE_MASK,
+                             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graph.image(t_->edgeMask).view,
+                             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
+    lights_.layout = scene_.createPipelineLayout(lights_.set.layout);
+    GraphicsPipelineDesc d;
+    d.vertexShader = "deferred_volume_vert";
+    d.fragmentShader = std::string("deferred_volume_light_m") + (t_->msaa() ? "1" : "0") + "_frag";
+    d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+    d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+    d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    d.specConstants.push_back({TP_DEF_SPEC_SPHERE_SCALE, std::bit_cast<uint32_t>(circumscribedSphereScale())});
+    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.depthWrite = false;
+    d.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL; // reverse-Z: back face at or behind the surface
+    d.blend = BlendMode::Additive;
+    d.layout = lights_.layout;
+    lights_.pipeline = createGraphicsPipeline(ctx_, d);
+}
+
+void VolumeLighting::prepareExpand(FrameGraph& graph) {
+    expand_.set = createPassSet(ctx_, {{TP_DEF_BINDING_HDR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
+    writeImageDescriptor(ctx_, expand_.set.set, TP_DEF_BINDING_HDR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                         graph.image(t_->hdr).view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
+    expand_.layout = scene_.createPipelineLayout(expand_.set.layout);
+    GraphicsPipelineDesc d;
+    d.vertexShader = "deferred_fullscreen_vert";
+    d.fragmentShader = "deferred_volume_expand_frag";
+    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.samples = VkSampleCountFlagBits(t_->layout.samples);
+    d.depthFormat = VK_FORMAT_UNDEFINED;
+    d.depthTest = d.depthWrite = false;
+    d.layout = expand_.layout;
+    expand_.pipeline = createGraphicsPipeline(ctx_, d);
+}
+
+void VolumeLighting::bind(VkCommandBuffer cmd, const Stage& stage) {
+    scene_.bindSceneSet(cmd, stage.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, stage.layout, TP_SET_PASS, 1, &stage.set.set,
+                            0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, stage.pipeline);
+}
+
+void VolumeLighting::recordBase(PassContext& pc) {
+    std::vector<ColorTarget> colors = {{t_->hdr}};
+    std::optional<DepthTarget> depth;
+    if (t_->msaa()) {
+        colors.push_back({t_->edgeMask});
+        depth = DepthTarget{t_->volumeDepth};
+    }
+    beginRendering(pc, colors, depth);
+    bind(pc.cmd, base_);
+    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
+    vkCmdDraw(pc.cmd, 3, 1, 0, 0);
+    endRendering(pc);
+}
+
+void VolumeLighting::recordLights(PassContext& pc) {
+    ResourceHandle depth = t_->msaa() ? t_->volumeDepth : t_->gbufferDepth;
+    beginRendering(pc, {ColorTarget{t_->hdr, {}, false}}, DepthTarget{depth, {}, false, true});
+    bind(pc.cmd, lights_);
+    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_FRONT_BIT); // back faces only
+    const std::vector<gpu::LightGpu>& lights = scene_.lightsGpu();
+    for (uint32_t i = 0; i < scene_.lightCount(); ++i) {
+        const bool cone = drawsCone(lights[i]);
+        uint32_t vertices = lights[i].type == TP_LIGHT_DIRECTIONAL ? 3u
+                            : cone                                 ? TP_DEF_CONE_VERTICES
+                                                                   : TP_DEF_SPHERE_VERTICES;
+        vkCmdDraw(pc.cmd, vertices, 1, 0, 2 * i + (cone ? 1u : 0u)); // firstInstance: light, mesh
+    }
+    endRendering(pc);
+}
+
+void VolumeLighting::recordExpand(PassContext& pc) {
+    beginRendering(pc, {ColorTarget{t_->hdrMsaa}}, std::nullopt);
+    bind(pc.cmd, expand_);
+    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
+    vkCmdDraw(pc.cmd, 3, 1, 0, 0);
+    endRendering(pc);
+}
+
+} // namespace tp

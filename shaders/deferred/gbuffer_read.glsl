@@ -1,0 +1,130 @@
+// Reading the G-buffer back: bindings, position reconstruction, the surface one sample
+// holds, its ambient + emissive term and the MSAA edge test. One copy, included by the
+// tiled compute pass and by every light-volume shader, so both lighting modes shade with
+// the very same code (their results differ only in the order the light sum is added).
+// The includer defines TP_MSAA (per-sample G-buffer) and TP_EMISSIVE (0/1) as the variant
+// needs, and TP_GBUFFER_DEPTH_ONLY when it reads depth alone.
+#ifndef TP_GBUFFER_READ_GLSL
+#define TP_GBUFFER_READ_GLSL
+#include "include/gbuffer_encoding.h"
+#include "include/light_model.h"
+#include "include/tile_culling.glsl" // viewZFromDepth
+
+layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
+layout(constant_id = TP_DEF_SPEC_SAMPLES) const uint kSamples = 1u;
+
+#ifdef TP_MSAA
+#define GTEX sampler2DMS
+#define FETCH(t, p, s) texelFetch(t, p, int(s))
+#else
+#define GTEX sampler2D
+#define FETCH(t, p, s) texelFetch(t, p, 0)
+#endif
+#ifndef TP_GBUFFER_DEPTH_ONLY
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_BASE) uniform GTEX gBase;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_NORMAL) uniform GTEX gNormal;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_ROUGH_METAL) uniform GTEX gRoughMetal;
+#if TP_EMISSIVE
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_EMISSIVE) uniform GTEX gEmissive;
+#endif
+#endif
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEPTH) uniform GTEX gDepth;
+
+// Sample locations, pixel-relative, y down (framebuffer coordinates, as the compute pixel
+// grid and gl_FragCoord): the standard locations of the Vulkan spec ("Multisampling",
+// table "Standard sample locations"), which the device uses when
+// VkPhysicalDeviceLimits::standardSampleLocations is true (otherwise the renderer reports
+// under left-out that edge samples are reconstructed at assumed positions).
+vec2 sampleOffset(uint s) {
+    if (kSamples == 2u) return s == 0u ? vec2(0.75, 0.75) : vec2(0.25, 0.25);
+    if (kSamples == 4u) {
+        const vec2 p4[4] = vec2[](vec2(0.375, 0.125), vec2(0.875, 0.375), vec2(0.125, 0.625),
+                                  vec2(0.625, 0.875));
+        return p4[s & 3u];
+    }
+    if (kSamples == 8u) {
+        const vec2 p8[8] = vec2[](vec2(0.5625, 0.3125), vec2(0.4375, 0.6875), vec2(0.8125, 0.5625),
+                                  vec2(0.3125, 0.1875), vec2(0.1875, 0.8125), vec2(0.0625, 0.4375),
+                                  vec2(0.6875, 0.9375), vec2(0.9375, 0.0625));
+        return p8[s & 7u];
+    }
+    return vec2(0.5);
+}
+
+float fetchDepth(ivec2 p, uint s) { return FETCH(gDepth, p, s).r; }
+
+// Mean of the samples' depths: a one-surface pixel is shaded once at its centre with it
+// (depth is affine in screen space over a plane and the standard patterns are centred).
+float meanDepth(ivec2 p) {
+    float d = 0.0;
+    for (uint s = 0u; s < kSamples; ++s) d += fetchDepth(p, s);
+    return d / float(kSamples);
+}
+
+// World position from a reverse-Z depth at a pixel-relative location.
+vec3 reconstructPosition(ivec2 p, vec2 offset, float depth) {
+    vec2 size = vec2(frame.viewport.xy);
+    vec2 ndc = vec2((float(p.x) + offset.x) / size.x * 2.0 - 1.0,
+                    1.0 - (float(p.y) + offset.y) / size.y * 2.0);
+    vec4 w = frame.invViewProj * vec4(ndc, depth, 1.0);
+    return w.xyz / w.w;
+}
+
+#ifndef TP_GBUFFER_DEPTH_ONLY
+vec3 fetchNormal(ivec2 p, uint s) {
+    vec4 e = FETCH(gNormal, p, s);
+    return kWide ? e.xyz : octDecode(e.xy);
+}
+
+vec3 fetchEmissive(ivec2 p, uint s) {
+#if TP_EMISSIVE
+    return FETCH(gEmissive, p, s).rgb;
+#else
+    return vec3(0.0);
+#endif
+}
+
+// The surface sample s of pixel p holds, at `position` (reconstructed by the caller).
+SurfaceSample readSurface(ivec2 p, uint s, vec3 position) {
+    vec4 base = FETCH(gBase, p, s);
+    vec2 rm = FETCH(gRoughMetal, p, s).rg;
+    SurfaceSample ss;
+    ss.position = position;
+    ss.normal = fetchNormal(p, s);
+    vec3 toViewer = frame.cameraPosition.xyz - ss.position;
+    float vl = length(toViewer);
+    ss.toViewer = vl > 0.0 ? toViewer / vl : ss.normal;
+    ss.baseColor = base.rgb;
+    ss.roughness = rm.r;
+    ss.metallic = rm.g;
+    return ss;
+}
+
+// material.glsl's ambientAndEmissive, from the stored occlusion (base.a) and emissive.
+vec3 ambientEmissive(ivec2 p, uint s) {
+    vec4 base = FETCH(gBase, p, s);
+    float metallic = FETCH(gRoughMetal, p, s).g;
+    return frame.ambient.rgb * base.rgb * (1.0 - metallic) * base.a + fetchEmissive(p, s);
+}
+
+// Lauritzen 2010: a pixel is an edge when its samples do not hold the same surface: a
+// different G-buffer value (the G-buffer pass writes one value per primitive), coverage by
+// geometry on some samples only, or a view-depth jump of more than 1 %.
+bool isEdge(ivec2 p) {
+    float d0 = fetchDepth(p, 0u);
+    vec4 b0 = FETCH(gBase, p, 0u), n0 = FETCH(gNormal, p, 0u), r0 = FETCH(gRoughMetal, p, 0u);
+    vec3 e0 = fetchEmissive(p, 0u);
+    float z0 = viewZFromDepth(d0, frame.invProj);
+    for (uint s = 1u; s < kSamples; ++s) {
+        float d = fetchDepth(p, s);
+        if ((d > 0.0) != (d0 > 0.0)) return true;
+        if (d0 <= 0.0) continue;
+        if (FETCH(gBase, p, s) != b0 || FETCH(gNormal, p, s) != n0 ||
+            FETCH(gRoughMetal, p, s) != r0 || fetchEmissive(p, s) != e0)
+            return true;
+        if (abs(viewZFromDepth(d, frame.invProj) - z0) > 0.01 * abs(z0)) return true;
+    }
+    return false;
+}
+#endif
+#endif

@@ -1,0 +1,54 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// One light's contribution over its volume's back faces, added (blend ONE + ONE) to hdr.
+// Depth test LESS_OR_EQUAL in reverse-Z: a back-face fragment survives where the scene
+// surface is at or in front of the volume's far side, which every surface inside the
+// volume is, whether the camera is outside or inside the volume (inside, the back faces
+// are all that is in front of the camera). Surfaces in front of the volume also pass and
+// are rejected here by the range test before the G-buffer is read.
+// Under MSAA (TP_MSAA) the depth attachment is the 1x `volume_depth` from the base pass
+// (the nearest sample, or 1 on edge pixels: always passes) and edge pixels are shaded per
+// sample in this invocation, the rest once at the centre with the mean depth: exactly what
+// the tiled pass does, through the same code (gbuffer_read.glsl).
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+#include "deferred/gbuffer_read.glsl"
+
+layout(early_fragment_tests) in;
+#ifdef TP_MSAA
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_EDGE_MASK) uniform sampler2D gEdge;
+#endif
+layout(location = 0) flat in uint inLight;
+layout(location = 0) out vec4 outColor;
+
+// evalLight(light, readSurface(...)) with its range test moved ahead of the G-buffer reads
+// (the same expression, so the same outcome).
+vec3 lightSample(LightGpu light, ivec2 p, uint s, vec2 offset, float depth) {
+    vec3 position = reconstructPosition(p, offset, depth);
+    if (light.type != TP_LIGHT_DIRECTIONAL && length(light.position - position) >= light.range)
+        return vec3(0.0);
+    return evalLight(light, readSurface(p, s, position), kHasSpot);
+}
+
+void main() {
+    LightGpu light = lights[inLight];
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec3 c = vec3(0.0);
+#ifdef TP_MSAA
+    if (texelFetch(gEdge, p, 0).r > 0.5) {
+        for (uint s = 0u; s < kSamples; ++s) {
+            float d = fetchDepth(p, s);
+            if (d > 0.0) c += lightSample(light, p, s, sampleOffset(s), d);
+        }
+        c /= float(kSamples);
+    } else {
+        float d = meanDepth(p);
+        if (d > 0.0) c = lightSample(light, p, 0u, vec2(0.5), d);
+    }
+#else
+    float d = fetchDepth(p, 0u);
+    if (d > 0.0) c = lightSample(light, p, 0u, vec2(0.5), d);
+#endif
+    if (c == vec3(0.0)) discard; // adding zero changes nothing: skip the blend
+    outColor = vec4(c, 0.0);
+}
