@@ -185,6 +185,57 @@ TEST(Deferred, VolumesAgreeWithTiled) {
     expectNoValidationMessages(*ctx);
 }
 
+// Every volume kind and the awkward cases: spots (cone mesh, and a 80-degree one drawn
+// with the sphere), directional lights (full-screen triangle), a point and a spot light
+// around the camera (camera inside the volume: only back faces are drawn, so nothing is
+// lost), and a finite far plane that cuts volumes (flattened onto depth 0). Same bound as
+// above; at 1x volumes also stays within the wide-vs-reference bound (2.5e-4).
+Scene floorWithEveryLightKind(float zfar) {
+    Scene s = makeFloorScene({});
+    LightGenOptions o;
+    o.count = 48;
+    o.seed = 5;
+    o.spotWeight = 1.0f;
+    o.directionalWeight = 0.1f;
+    s.lights = generateLights(s.bounds, o);
+    Light around;
+    around.position = s.camera.position + glm::vec3(0.1f, -0.1f, 0.0f);
+    around.range = 2.0f * glm::length(s.camera.position - s.camera.target);
+    around.intensity = 2.0f;
+    s.lights.push_back(around);
+    Light spot = around;
+    spot.type = LightType::Spot;
+    spot.direction = glm::normalize(s.camera.target - s.camera.position);
+    spot.outerConeAngle = 0.4f;
+    spot.innerConeAngle = 0.2f;
+    s.lights.push_back(spot);
+    spot.outerConeAngle = 1.4f; // wider than 60 degrees: the sphere bounds it
+    spot.position += glm::vec3(0.5f, 0.5f, 0.0f);
+    s.lights.push_back(spot);
+    s.camera.zfar = zfar;
+    return s;
+}
+
+TEST(Deferred, VolumesHandleEveryLightKindACameraInsideAndAFarPlane) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (float zfar : {0.0f, 9.0f}) {
+        Scene scene = floorWithEveryLightKind(zfar);
+        SceneGpu gpuScene(*ctx, scene);
+        uint32_t n = uint32_t(scene.lights.size());
+        for (uint32_t msaa : {1u, 4u}) {
+            RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(small(msaa, "wide"), "tiled"));
+            RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(small(msaa, "wide"), "volumes"));
+            std::string what = "every kind, zfar " + std::to_string(zfar) + ", " + std::to_string(msaa) + "x";
+            expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, n, msaa, what);
+            if (msaa > 1) continue;
+            RunResult reference = runOrFail(*ctx, gpuScene, "reference", small(1, "wide"));
+            EXPECT_LT(maxRelativeError(volumes.hdr, reference.hdr, 1e-4), 2.5e-4) << what;
+        }
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 uint64_t gbufferBytes(const RunResult& run, bool msaa) {
     uint64_t bytes = 0;
     for (const LedgerEntry& e : run.memory)
