@@ -1,6 +1,8 @@
 #include "compare/cli_common.h"
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <cstdio>
 #include <filesystem>
@@ -12,36 +14,80 @@
 namespace tp::cli {
 namespace {
 
-std::pair<float, float> parseRange(const std::string& text, const char* option) {
-    float a = 0, b = 0;
-    char comma = 0;
-    if (std::sscanf(text.c_str(), "%f%c%f", &a, &comma, &b) != 3 || comma != ',' || !(a > 0) || !(b >= a) ||
-        !std::isfinite(b))
-        throw UsageError(std::string(option) + " '" + text + "': expected MIN,MAX with 0 < MIN <= MAX");
-    return {a, b};
+// A whole string as a finite number (strtod accepts "nan", "inf", leading blanks and stops
+// at junk; all of that is refused here).
+bool parseNumber(const std::string& text, double& out) {
+    if (text.empty() || std::isspace(uint8_t(text[0]))) return false;
+    char* end = nullptr;
+    out = std::strtod(text.c_str(), &end);
+    return end != text.c_str() && *end == 0 && std::isfinite(out);
 }
 
+std::pair<float, float> parseRange(const std::string& text, const char* option, double limit) {
+    const size_t comma = text.find(',');
+    double a = 0, b = 0;
+    char limitText[32];
+    std::snprintf(limitText, sizeof limitText, "%g", limit);
+    if (comma == std::string::npos || !parseNumber(text.substr(0, comma), a) ||
+        !parseNumber(text.substr(comma + 1), b) || !(a > 0) || !(b >= a) || b > limit)
+        throw UsageError(std::string(option) + " '" + text + "': expected MIN,MAX with 0 < MIN <= MAX <= " +
+                         limitText);
+    return {float(a), float(b)};
+}
+
+// Relative weights: finite, not negative, each type named once.
 void parseTypes(const std::string& text, LightGenOptions& g) {
     g.pointWeight = g.spotWeight = g.directionalWeight = 0.0f;
     std::stringstream ss(text);
-    std::string item;
+    std::string item, seen = ",";
     while (std::getline(ss, item, ',')) {
         std::string name = item.substr(0, item.find(':'));
-        float weight = 1.0f;
+        double weight = 1.0;
         if (item.find(':') != std::string::npos) {
             std::string w = item.substr(item.find(':') + 1);
-            char* end = nullptr;
-            weight = std::strtof(w.c_str(), &end);
-            if (end == w.c_str() || *end || !(weight >= 0.0f))
-                throw UsageError("--light-types '" + text + "': bad weight '" + w + "'");
+            if (!parseNumber(w, weight) || weight < 0.0 || weight > 1e6)
+                throw UsageError("--light-types '" + text + "': bad weight '" + w +
+                                 "' (a number from 0 to 1e6)");
         }
-        if (name == "point") g.pointWeight = weight;
-        else if (name == "spot") g.spotWeight = weight;
-        else if (name == "directional") g.directionalWeight = weight;
+        if (seen.find("," + name + ",") != std::string::npos)
+            throw UsageError("--light-types '" + text + "': '" + name + "' is listed twice");
+        seen += name + ",";
+        if (name == "point") g.pointWeight = float(weight);
+        else if (name == "spot") g.spotWeight = float(weight);
+        else if (name == "directional") g.directionalWeight = float(weight);
         else throw UsageError("--light-types: unknown type '" + name + "' (point, spot, directional)");
     }
     if (g.pointWeight + g.spotWeight + g.directionalWeight <= 0.0f)
         throw UsageError("--light-types '" + text + "': all weights are zero");
+}
+
+// The generator's options, checked before any scene is loaded.
+LightGenOptions lightOptions(const SceneOptions& o) {
+    if (o.lightCount < 0 || o.lightCount > 1000000)
+        throw UsageError("--lights " + std::to_string(o.lightCount) + ": must be between 0 and 1000000");
+    LightGenOptions g;
+    g.count = uint32_t(o.lightCount);
+    g.seed = o.seed;
+    parseTypes(o.lightTypes, g);
+    if (!o.lightRadius.empty())
+        std::tie(g.radiusMin, g.radiusMax) = parseRange(o.lightRadius, "--light-radius", kMaxLightRange);
+    if (!o.lightIntensity.empty())
+        std::tie(g.intensityMin, g.intensityMax) =
+            parseRange(o.lightIntensity, "--light-intensity", kMaxLightIntensity);
+    return g;
+}
+
+// WIDTHxHEIGHT, digits only (sscanf's %u would take "-8", " 8" and wrap 2^32+8 to 8).
+bool parseResolution(const std::string& text, uint32_t& w, uint32_t& h) {
+    const size_t x = text.find_first_of("xX");
+    auto side = [](const std::string& digits, uint32_t& out) {
+        if (digits.empty() || digits.size() > 9) return false;
+        for (char c : digits)
+            if (c < '0' || c > '9') return false;
+        out = uint32_t(std::stoul(digits));
+        return true;
+    };
+    return x != std::string::npos && side(text.substr(0, x), w) && side(text.substr(x + 1), h);
 }
 
 } // namespace
@@ -52,7 +98,18 @@ void addSceneOptions(CLI::App& app, SceneOptions& o) {
                    "Default: the built-in courtyard");
     app.add_option("--lights", o.lightCount, "Number of generated lights (added to the scene's own)")
         ->capture_default_str();
-    app.add_option("--seed", o.seed, "Seed of the light generator: same seed, same lights")->capture_default_str();
+    // The check runs on the text: CLI11 would wrap "-1" to 2^64-1.
+    app.add_option("--seed", o.seed, "Seed of the light generator: same seed, same lights")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                bool digits = !text.empty() && text.size() <= 20 &&
+                              text.find_first_not_of("0123456789") == std::string::npos;
+                return digits && (text.size() < 20 || text <= "18446744073709551615")
+                           ? std::string()
+                           : "'" + text + "' is not a whole number from 0 to 2^64-1";
+            },
+            "UINT64"))
+        ->capture_default_str();
     app.add_option("--light-types", o.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, "
                    "e.g. point:3,spot:1")
@@ -82,6 +139,7 @@ void addViewOptions(CLI::App& app, ViewOptions& o) {
 }
 
 Scene loadScene(const SceneOptions& o) {
+    const LightGenOptions g = lightOptions(o);
     Scene scene;
     std::string name = o.scene.empty() ? "builtin:courtyard" : o.scene;
     if (name.rfind("builtin:", 0) == 0) {
@@ -104,15 +162,6 @@ Scene loadScene(const SceneOptions& o) {
         scene.lights = std::move(*lights);
         return scene;
     }
-    if (o.lightCount < 0 || o.lightCount > 1000000)
-        throw UsageError("--lights " + std::to_string(o.lightCount) + ": must be between 0 and 1000000");
-    LightGenOptions g;
-    g.count = uint32_t(o.lightCount);
-    g.seed = o.seed;
-    parseTypes(o.lightTypes, g);
-    if (!o.lightRadius.empty()) std::tie(g.radiusMin, g.radiusMax) = parseRange(o.lightRadius, "--light-radius");
-    if (!o.lightIntensity.empty())
-        std::tie(g.intensityMin, g.intensityMax) = parseRange(o.lightIntensity, "--light-intensity");
     std::vector<Light> generated = generateLights(scene.bounds, g);
     scene.lights.insert(scene.lights.end(), generated.begin(), generated.end());
     return scene;
@@ -156,9 +205,8 @@ void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& reference
 }
 
 RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderSettings s) {
-    unsigned w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(v.resolution.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+    uint32_t w = 0, h = 0;
+    if (!parseResolution(v.resolution, w, h))
         throw UsageError("--res '" + v.resolution + "': expected WIDTHxHEIGHT, e.g. 1280x720");
     uint32_t maxDim = ctx.caps.maxImageDimension2D;
     if (w == 0 || h == 0 || w > maxDim || h > maxDim)

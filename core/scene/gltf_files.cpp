@@ -49,6 +49,53 @@ bool isDataUri(const std::string& uri) {
     return uri.rfind("data:", 0) == 0;
 }
 
+// The data URIs tinygltf 2.7 decodes (any other "data:" URI it takes for a file name).
+const char* const kDataUriPrefixes[] = {
+    "data:application/octet-stream;base64,", "data:application/gltf-buffer;base64,",
+    "data:image/jpeg;base64,",  "data:image/png;base64,", "data:image/bmp;base64,",
+    "data:image/gif;base64,",   "data:text/plain;base64,"};
+
+bool decodableDataUri(const std::string& uri) {
+    for (const char* p : kDataUriPrefixes)
+        if (uri.rfind(p, 0) == 0) return true;
+    return false;
+}
+
+// What is wrong with the base64 payload of a data URI tinygltf decodes ("" if nothing);
+// `bytes` receives the decoded size. tinygltf stops silently at the first character outside
+// the alphabet and fails the whole file when nothing decodes, so both are checked here.
+std::string base64Problem(const std::string& uri, uint64_t& bytes) {
+    const size_t start = uri.find(',') + 1;
+    size_t end = uri.size();
+    for (int pad = 0; pad < 2 && end > start && uri[end - 1] == '='; ++pad)
+        --end;
+    for (size_t i = start; i < end; ++i)
+        if (!std::isalnum(uint8_t(uri[i])) && uri[i] != '+' && uri[i] != '/')
+            return "the data URI holds a character that is not base64 at offset " +
+                   std::to_string(i);
+    const size_t chars = end - start;
+    if (chars % 4 == 1 || chars == 0) return "the data URI's base64 is empty or truncated";
+    bytes = chars / 4 * 3 + (chars % 4 == 0 ? 0 : chars % 4 - 1);
+    return "";
+}
+
+// A buffer's data URI: one tinygltf decodes, valid base64, exactly byteLength bytes.
+Status checkBufferDataUri(const std::string& uri, const json& buffer, const std::string& label) {
+    if (!decodableDataUri(uri))
+        return Error{label + ": only base64 data URIs are supported "
+                             "(data:application/octet-stream;base64,...)"};
+    uint64_t bytes = 0;
+    if (std::string problem = base64Problem(uri, bytes); !problem.empty())
+        return Error{label + ": " + problem};
+    const json* length = buffer.is_object() && buffer.contains("byteLength")
+                             ? &buffer["byteLength"]
+                             : nullptr;
+    if (length && length->is_number_unsigned() && length->get<uint64_t>() != bytes)
+        return Error{label + ": the data URI holds " + std::to_string(bytes) +
+                     " bytes, byteLength says " + std::to_string(length->get<uint64_t>())};
+    return {};
+}
+
 // Empty when `uri` is a relative reference that stays inside `folder` (then `resolved` is the
 // file's absolute path), else what is wrong with it. The check is lexical: a symbolic link
 // inside the folder is trusted wherever it points.
@@ -191,7 +238,10 @@ Status prescanUris(const json& root, const fs::path& folder, bool binary, FileAc
         }
         if (!uri->is_string()) return Error{label + ": uri is not a string"};
         std::string text = uri->get<std::string>();
-        if (isDataUri(text)) continue;
+        if (isDataUri(text)) {
+            if (Status s = checkBufferDataUri(text, buffers[i], label); !s) return s;
+            continue;
+        }
         label += " '" + text + "'";
         fs::path resolved;
         if (std::string problem = uriProblem(text, folder, resolved); !problem.empty())
@@ -229,8 +279,16 @@ Status prescanUris(const json& root, const fs::path& folder, bool binary, FileAc
             continue;
         }
         const json* uri = member(images[i], "uri");
-        if (!uri || !uri->is_string() || isDataUri(uri->get<std::string>())) continue;
+        if (!uri || !uri->is_string()) continue;
         std::string text = uri->get<std::string>();
+        if (decodableDataUri(text)) {
+            // tinygltf fails the whole file on an image URI it cannot decode.
+            uint64_t bytes = 0;
+            if (std::string problem = base64Problem(text, bytes); !problem.empty())
+                return Error{"image " + std::to_string(i) + ": " + problem};
+            continue;
+        }
+        if (isDataUri(text)) continue; // a type tinygltf does not decode: a placeholder later
         fs::path resolved;
         if (std::string problem = uriProblem(text, folder, resolved); !problem.empty()) {
             imageProblems[i] = "the URI " + problem + "; refusing to read it";

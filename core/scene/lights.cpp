@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -16,6 +17,11 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 constexpr size_t kMaxLights = 1000000;
+// A lights file is at most this long: a million lights written by lightsToJson are ~250 MB.
+constexpr uintmax_t kMaxLightsFileBytes = uintmax_t(512) << 20;
+// Directions shorter than this have no reliable direction once normalized (the other bounds
+// are in lights.h).
+constexpr double kMinDirectionLength = 1e-6;
 
 // splitmix64: tiny, fast, and the same numbers on every platform and standard library
 // (std::uniform_*_distribution is not).
@@ -156,6 +162,9 @@ struct LightReader {
         out = f;
         return true;
     }
+    bool atMost(const char* field, double value, double limit, const char* message) {
+        return value <= limit || fail(message, field);
+    }
     bool vec3(const char* field, glm::vec3& out, bool required) {
         auto it = obj.find(field);
         if (it == obj.end()) return required ? fail("missing field", field) : true;
@@ -208,7 +217,17 @@ bool readLight(LightReader& r, Light& l) {
     if (!ok) return false;
     if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f))))
         return r.fail("must not be negative", "color");
-    if (aimed && !(glm::length(l.direction) > 0.0f)) return r.fail("must not be zero", "direction");
+    if (aimed && !(glm::length(glm::dvec3(l.direction)) >= kMinDirectionLength))
+        return r.fail("must not be zero (length at least 1e-6)", "direction");
+    if (local && !(l.range > 0.0f)) return r.fail("must be positive", "range");
+    const double brightest = double(l.intensity) * std::max({l.color.r, l.color.g, l.color.b});
+    const glm::dvec3 p = glm::abs(glm::dvec3(l.position));
+    if (!r.atMost("position", std::max({p.x, p.y, p.z}), kMaxLightCoordinate,
+                  "must be at most 1e10 in magnitude") ||
+        !r.atMost("range", l.range, kMaxLightRange, "must be at most 1e10") ||
+        !r.atMost("intensity", brightest, kMaxLightIntensity,
+                  "intensity times the brightest color channel must be at most 1e15"))
+        return false;
     if (l.innerConeAngle > l.outerConeAngle)
         return r.fail("inner_cone is larger than outer_cone", "inner_cone");
     if (l.outerConeAngle > 0.5f * kPi + 1e-6f) return r.fail("must be at most pi/2", "outer_cone");
@@ -225,6 +244,9 @@ std::string oneLine(std::string s) {
 Result<std::vector<Light>> parseLights(const json& doc, const std::string& name) {
     auto err = [&](const std::string& what) { return Error{name + ": " + what}; };
     if (!doc.is_object()) return err("expected a JSON object with \"lights\" (at top level)");
+    for (auto it = doc.begin(); it != doc.end(); ++it)
+        if (it.key() != "version" && it.key() != "lights")
+            return err("unknown field '" + it.key() + "' (at top level; valid: version, lights)");
     auto v = doc.find("version");
     if (v != doc.end() && !(v->is_number_integer() && v->get<int64_t>() == 1))
         return err("unsupported version, expected 1 (at version)");
@@ -265,6 +287,12 @@ Result<std::vector<Light>> lightsFromJson(const std::string& text, const std::st
 }
 
 Result<std::vector<Light>> readLightsFile(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        return Error{path + ": not a regular file"};
+    if (uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxLightsFileBytes)
+        return Error{path + ": " + std::to_string(size) + " bytes, over the " +
+                     std::to_string(kMaxLightsFileBytes >> 20) + " MiB a lights file may have"};
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{path + ": cannot open (" + std::strerror(errno) + ")"};
     std::ostringstream text;

@@ -10,6 +10,12 @@
 
 namespace tp {
 
+// Bounds on light values a user gives (lights files, the CLI): beyond them shading loses float
+// precision or can overflow fp32 (derived in docs/hostile_input.md).
+inline constexpr double kMaxLightCoordinate = 1e10; // |position| per axis, scene units
+inline constexpr double kMaxLightRange = 1e10;      // scene units
+inline constexpr double kMaxLightIntensity = 1e15;  // times the brightest colour channel
+
 struct LightGenOptions {
     uint32_t count = 0;
     uint64_t seed = 1;

@@ -6,28 +6,13 @@ bin=$1
 scenes=${2:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fail=0
-pass=0
+. "$(dirname "$0")/cli_lib.sh"
 
 expect_error() { # description, args...
     local what=$1; shift
     local out="$work/out$pass$fail"
-    "$bin" "$@" --out "$out" >"$work/stdout" 2>"$work/stderr"
-    local code=$?
-    local lines; lines=$(grep -c '' "$work/stderr")
-    local first; first=$(head -n 1 "$work/stderr")
-    local problem=""
-    if [ "$code" -eq 0 ]; then problem="exit code 0"
-    elif [ "$code" -ge 128 ]; then problem="crashed (exit $code)"
-    elif [ "$lines" -ne 1 ]; then problem="$lines lines on stderr"
-    elif [[ "$first" != triptych:* ]]; then problem="stderr does not start with 'triptych:'"
-    elif ls "$out"/*.exr "$out"/*.png "$out"/*.json >/dev/null 2>&1; then problem="left output files behind"
-    fi
-    if [ -n "$problem" ]; then
-        echo "FAIL $what: $problem"; sed 's/^/    /' "$work/stderr" | head -5; fail=$((fail + 1))
-    else
-        echo "ok   $what: $first"; pass=$((pass + 1))
-    fi
+    run_triptych "$@" --out "$out"
+    report "$what" "$(error_problem "$out" "")"
 }
 
 expect_error "zero resolution" render --res 0x0

@@ -134,10 +134,11 @@ TEST(LightsJson, RoundTripIsExact) {
     auto lights = generateLights(kBounds, mixed(2000, 11));
     Light odd;
     odd.type = LightType::Spot;
-    odd.position = {0.1f, -1e-7f, 3.4e38f};
+    // Values that stress the decimal round trip, within the bounds a lights file may have.
+    odd.position = {0.1f, -1e-7f, 9.9999994e9f};
     odd.direction = {1e-38f, -0.3333333f, 1.0f / 3.0f};
     odd.color = {0.0f, 1e-45f, 123456.79f};
-    odd.intensity = std::numeric_limits<float>::max();
+    odd.intensity = 8.0999e9f; // * 123456.79 just under 1e15
     odd.range = std::numeric_limits<float>::min();
     odd.innerConeAngle = 0.0f;
     odd.outerConeAngle = 1.5707963f;
@@ -194,6 +195,31 @@ TEST(LightsJson, BadInputGivesOneLineErrors) {
         "(at lights[1])");
 }
 
+// Absurd values and unknown names: each bound (lights.h) refused just past it, accepted at it.
+TEST(LightsJson, AbsurdValuesAndUnknownNames) {
+    const std::string at = "\"type\":\"point\",\"intensity\":5,\"range\":2,\"position\":";
+    expectError("{\"version\":1,\"lights\":[],\"colour\":1}", "unknown field 'colour' (at top level");
+    expectError(oneLight(at + "[2e10,0,0]"), "at most 1e10 in magnitude (at lights[0].position)");
+    expectError(oneLight(at + "[0,-2e10,0]"), "(at lights[0].position)");
+    EXPECT_TRUE(lightsFromJson(oneLight(at + "[1e10,-1e10,0]"), "x").ok());
+    const std::string p = "\"type\":\"point\",\"position\":[0,1,0],";
+    expectError(oneLight(p + "\"intensity\":5,\"range\":0"), "must be positive (at lights[0].range)");
+    expectError(oneLight(p + "\"intensity\":5,\"range\":2e10"), "at most 1e10 (at lights[0].range)");
+    expectError(oneLight(p + "\"intensity\":2e15,\"range\":1"), "(at lights[0].intensity)");
+    expectError(oneLight(p + "\"intensity\":1e14,\"range\":1,\"color\":[0,20,1]"),
+                "brightest color channel must be at most 1e15");
+    EXPECT_TRUE(lightsFromJson(oneLight(p + "\"intensity\":1e15,\"range\":1e10"), "x").ok());
+    expectError(oneLight(p + "\"intensity\":\"5\",\"range\":1"), "expected a number, got string");
+    expectError(oneLight(p + "\"intensity\":true,\"range\":1"), "expected a number, got boolean");
+    expectError(oneLight(p + "\"intensity\":null,\"range\":1"), "(at lights[0].intensity)");
+    expectError(oneLight("\"type\":\"directional\",\"direction\":[0,-1e-9,0],\"intensity\":1"),
+                "(at lights[0].direction)");
+    expectError(oneLight("\"type\":\"POINT\",\"intensity\":1"), "unknown light type 'POINT'");
+    expectError(std::string(100000, '['), "lights.json: ");
+    expectError("{\"lights\":[]} trailing", "parse error");
+    expectError("{\"lights\":[{\"type\":\"point\",\"position\":[NaN,0,0]}]}", "parse error");
+}
+
 TEST(LightsJson, TooManyLights) {
     std::string text = "{\"lights\":[";
     text.reserve(3000020);
@@ -222,6 +248,9 @@ TEST(LightsJson, FileRoundTrip) {
     Status bad = writeLightsFile((dir / "no_such_dir" / "l.json").string(), lights);
     ASSERT_FALSE(bad.ok());
     EXPECT_NE(bad.error().find("l.json"), std::string::npos);
+    auto directory = readLightsFile(dir.string());
+    ASSERT_FALSE(directory.ok());
+    EXPECT_NE(directory.error().find("not a regular file"), std::string::npos) << directory.error();
     std::ofstream(dir / "broken.json") << "{\"lights\":[{\"type\":\"point\"";
     auto broken = readLightsFile((dir / "broken.json").string());
     ASSERT_FALSE(broken.ok());
