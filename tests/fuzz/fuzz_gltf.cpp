@@ -1,0 +1,67 @@
+// libFuzzer target: the glTF loader on arbitrary bytes, read as .gltf text or, by its magic, as
+// .glb. External files resolve in $TRIPTYCH_FUZZ_FILES (run.sh copies the seeds' buffers and
+// small images there). Besides the sanitizers, a loaded scene must hold together and an error
+// must be one line: anything else aborts, which libFuzzer reports as a finding.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/scene/gltf_internal.h"
+
+namespace {
+
+std::filesystem::path gFolder;
+
+[[noreturn]] void broken(const char* what, const std::string& detail) {
+    std::fprintf(stderr, "fuzz_gltf: %s: %s\n", what, detail.c_str());
+    std::abort();
+}
+
+void checkScene(const tp::Scene& s) {
+    if (s.triangleCount() == 0) broken("loaded", "a scene without triangles");
+    for (const tp::Mesh& m : s.meshes) {
+        const size_t n = m.positions.size();
+        if (m.normals.size() != n || m.tangents.size() != n || m.uvs.size() != n ||
+            m.colors.size() != n)
+            broken("loaded", m.name + ": attribute arrays of different lengths");
+        if (m.indices.size() % 3 != 0) broken("loaded", m.name + ": a partial triangle");
+        for (uint32_t i : m.indices)
+            if (i >= n) broken("loaded", m.name + ": index past the vertices");
+        if (m.material >= s.materials.size()) broken("loaded", m.name + ": no such material");
+        for (size_t i = 0; i < n; ++i)
+            if (!std::isfinite(m.positions[i].x + m.positions[i].y + m.positions[i].z))
+                broken("loaded", m.name + ": a position that is not finite");
+    }
+    for (const tp::Material& m : s.materials)
+        for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
+                          m.occlusionTexture, m.emissiveTexture})
+            if (t != tp::kNoTexture && (t < 0 || size_t(t) >= s.textures.size()))
+                broken("loaded", "a material refers to a texture that does not exist");
+    for (const tp::Texture& t : s.textures)
+        if (t.rgba8.size() != size_t(t.width) * t.height * 4 || t.width == 0 || t.height == 0)
+            broken("loaded", t.name + ": texture size and pixels disagree");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    const char* folder = std::getenv("TRIPTYCH_FUZZ_FILES");
+    gFolder = folder ? folder : std::filesystem::temp_directory_path().string();
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    std::vector<std::string> warnings;
+    tp::GltfLoadOptions options;
+    options.warnings = &warnings;
+    options.smoothMissingNormals = size % 2 == 1; // both normal generators, from the length
+    tp::Result<tp::Scene> scene = tp::gltf::loadGltfBytes(
+        std::vector<unsigned char>(data, data + size), "fuzz.gltf", gFolder, false, options);
+    if (scene.ok())
+        checkScene(*scene);
+    else if (scene.error().find('\n') != std::string::npos || scene.error().rfind("fuzz.gltf: ", 0))
+        broken("error", scene.error());
+    for (const std::string& w : warnings)
+        if (w.find('\n') != std::string::npos) broken("warning", w);
+    return 0;
+}
