@@ -16,5 +16,6 @@ CommandRunner addInfoCommand(CLI::App& app);
 // commandLine: argv as given, recorded in report.json so a run can be repeated.
 CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLine);
+CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLine);
 
 } // namespace tp::cli

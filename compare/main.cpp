@@ -1,7 +1,7 @@
 // triptych: one scene through several lighting pipelines, side by side with a reference.
 // Errors end here: one line on stderr and a non-zero exit code (2: bad input, 4: Vulkan
 // failure, 3: validation messages with --validate, 5: compare wrote its report but a
-// pipeline failed, 1: anything else), never a crash.
+// pipeline failed, 6: stress wrote its report and a case failed, 1: anything else), never a crash.
 #include <cstdio>
 #include <vector>
 
@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     std::vector<tp::cli::CommandRunner> commands = {
         tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
         tp::cli::addSweepCommand(app, std::vector<std::string>(argv, argv + argc)),
+        tp::cli::addStressCommand(app, std::vector<std::string>(argv, argv + argc)),
         tp::cli::addRenderCommand(app), tp::cli::addInfoCommand(app)};
     try {
         app.parse(argc, argv);

@@ -1,0 +1,167 @@
+// stress.html from stress.json: a verdict matrix (case x pipeline), then per case what it
+// stresses, what is expected, each pipeline's figures against its bound, and the images
+// beside their difference maps. Everything inline (PNG data URIs), no script: opens offline.
+#include <fstream>
+#include <sstream>
+
+#include "compare/report_html.h"
+#include "compare/stress_report.h"
+#include "compare/svg_plot.h"
+
+namespace tp::cli {
+namespace {
+
+using nlohmann::json;
+
+const char* kStyle = R"(
+body{font-family:sans-serif;margin:16px 24px;color:#222;max-width:1400px}
+h1{font-size:22px;margin:4px 0}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ccc}
+table{border-collapse:collapse;font-size:13px;margin:6px 0}
+td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f0f0f0}
+td.l,th.l{text-align:left}td.pass{background:#e3f6e3}td.fail{background:#fde2e2;font-weight:bold}
+.meta{font-size:13px;color:#444}.meta code{background:#f4f4f4;padding:1px 4px;word-break:break-all}
+.failed{background:#fde2e2;border:1px solid #d33;padding:8px;margin:8px 0}
+.note{background:#fff6d6;border:1px solid #e0c040;padding:6px;margin:8px 0;font-size:13px}
+.grid{display:grid;grid-template-columns:repeat(4,minmax(0,1fr));gap:10px}
+figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #999}
+figcaption{font-size:12px;color:#333;margin-top:2px}
+details{margin:6px 0}summary{cursor:pointer}
+)";
+
+std::string esc(const json& j) { return escapeXml(j.is_string() ? j.get<std::string>() : j.dump()); }
+std::string num(const json& j) { return j.is_number() ? formatNumber(j.get<double>()) : "&ndash;"; }
+
+Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption) {
+    std::ifstream in(outDir + "/" + file, std::ios::binary);
+    if (!in) return Error{outDir + "/" + file + ": cannot read for stress.html"};
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return "<figure><img alt=\"" + escapeXml(file) + "\" src=\"data:image/png;base64," + base64(ss.str()) +
+           "\"><figcaption>" + caption + "</figcaption></figure>\n";
+}
+
+const json* checkNamed(const json& p, const std::string& name) {
+    for (const json& c : p["checks"])
+        if (c["name"] == name) return &c;
+    return nullptr;
+}
+
+std::string verdictCell(const json& p) {
+    const bool pass = p["verdict"] == "pass";
+    std::string figure;
+    if (const json* c = checkNamed(p, "tonemapped max |p - r|"))
+        figure = " " + num((*c)["measured"]) + " / " + num((*c)["limit"]);
+    return "<td class=\"" + std::string(pass ? "pass" : "fail") + "\">" + (pass ? "pass" : "FAIL") + figure + "</td>";
+}
+
+std::string matrix(const json& r) {
+    std::string h = "<h2>Verdicts</h2>\n<p class=\"meta\">Each cell: verdict, then the tonemapped max |pipeline "
+                    "&minus; reference| / its derived bound.</p>\n<table><tr><th class=\"l\">case</th>";
+    if (r["cases"].empty()) return h + "</tr></table>\n";
+    for (const json& p : r["cases"][0]["pipelines"]) h += "<th>" + esc(p["name"]) + "</th>";
+    h += "</tr>\n";
+    for (const json& c : r["cases"]) {
+        h += "<tr><td class=\"l\"><a href=\"#" + esc(c["name"]) + "\">" + esc(c["name"]) + "</a></td>";
+        for (const json& p : c["pipelines"]) h += verdictCell(p);
+        h += "</tr>\n";
+    }
+    return h + "</table>\n";
+}
+
+std::string failedChecks(const json& p) {
+    std::string s;
+    for (const json& c : p["checks"])
+        if (!c["pass"].get<bool>())
+            s += (s.empty() ? "" : "<br>") + esc(c["name"]) + ": " + num(c["measured"]) + " (limit " + num(c["limit"]) + ")";
+    return s.empty() ? "&ndash;" : s;
+}
+
+std::string caseTable(const json& c) {
+    std::string t = "<table><tr><th class=\"l\">pipeline</th><th>verdict</th><th>tonemapped max (bound)</th><th>RMSE "
+                    "(HDR)</th><th>max |d| (HDR)</th><th>NaN px</th><th>Inf px</th><th>lights dropped</th><th "
+                    "class=\"l\">beyond 65,504</th><th>depth px &ne; ref</th><th class=\"l\">failed checks</th></tr>\n";
+    for (const json& p : c["pipelines"]) {
+        t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>" + verdictCell(p);
+        if (p["status"] != "ok") {
+            t += "<td colspan=\"9\" class=\"l\">did not run: " + esc(p.value("error", json(""))) + "</td></tr>\n";
+            continue;
+        }
+        const json& e = p["error_vs_reference"]["hdr"];
+        t += "<td>" + num(p["checked_max_tonemapped"]) + " (" + num(p["bound"].value("tonemapped", json())) + ")</td>" +
+             "<td>" + num(e["rmse"]) + "</td><td>" + num(e["max_abs"]) + "</td><td>" + num(p["nan_pixels"]) + "</td><td>" +
+             num(p["inf_pixels"]) + "</td><td>" + num(p["lights_dropped"]) + "</td><td class=\"l\">" +
+             esc(p["beyond_half_float"]["behaviour"]) + "</td><td>" + num(p["depth_mismatch_pixels"]) +
+             "</td><td class=\"l\">" + failedChecks(p) + "</td></tr>\n";
+    }
+    return t + "</table>\n";
+}
+
+std::string boundDetails(const json& c) {
+    std::string h = "<details><summary>bounds and checks, term by term</summary>";
+    for (const json& p : c["pipelines"]) {
+        if (!p.contains("bound")) continue;
+        h += "<p class=\"meta\"><b>" + esc(p["name"]) + "</b>: " + esc(p["bound"]["why"]) + "</p><table>";
+        for (const json& t : p["bound"]["terms"])
+            h += "<tr><td class=\"l\">" + esc(t["name"]) + "</td><td>" + num(t["relative"]) + "</td><td>" +
+                 num(t["absolute"]) + "</td><td class=\"l\">" + esc(t["why"]) + "</td></tr>";
+        for (const json& k : p["checks"])
+            h += "<tr><td class=\"l\">check: " + esc(k["name"]) + "</td><td>" + num(k["measured"]) + "</td><td>" +
+                 num(k["limit"]) + "</td><td class=\"l\">" + esc(k["why"]) + "</td></tr>";
+        h += "</table>";
+    }
+    return h + "</details>\n";
+}
+
+Result<std::string> caseSection(const json& c, const std::string& outDir) {
+    const bool pass = c["verdict"] == "pass";
+    const json& s = c["settings"];
+    std::string h = "<h2 id=\"" + esc(c["name"]) + "\">" + esc(c["name"]) + ": " + (pass ? "pass" : "FAIL") + "</h2>\n";
+    h += "<p class=\"meta\"><b>Stresses:</b> " + esc(c["stresses"]) + "<br><b>Expected:</b> " + esc(c["expectation"]) +
+         "<br>" + esc(s["width"]) + "&times;" + esc(s["height"]) + ", " + esc(s["msaa"]) + "&times; MSAA, " +
+         esc(c["lights"]) + " lights, " + esc(c["triangles"]) + " triangles, exposure " + num(c["exposure_ev"]) +
+         " EV, " + num(c["seconds"]) + " s.</p>\n";
+    if (c["reference"]["status"] != "ok")
+        h += "<div class=\"failed\">reference failed: " + esc(c["reference"].value("error", json(""))) + "</div>\n";
+    h += caseTable(c) + boundDetails(c);
+    h += "<p class=\"meta\">Heat maps: |pipeline &minus; reference| (max over RGB, linear) from 0 to " +
+         num(c["difference_scale"]["value"]) + " (one scale per case); magenta: NaN/Inf.</p>\n<div class=\"grid\">\n";
+    for (const json& f : c["reference"]["files"]) {
+        if (f.get<std::string>().ends_with(".png")) {
+            Result<std::string> fig = figure(outDir, f, "reference");
+            if (!fig) return fig;
+            h += *fig;
+        }
+    }
+    for (const json& p : c["pipelines"])
+        for (const json& f : p["files"]) {
+            const std::string file = f;
+            if (!file.ends_with(".png")) continue;
+            Result<std::string> fig = figure(outDir, file, esc(p["name"]) + (file.ends_with("_diff.png") ? " &minus; reference" : ""));
+            if (!fig) return fig;
+            h += *fig;
+        }
+    return h + "</div>\n";
+}
+
+} // namespace
+
+Result<std::string> stressHtml(const json& r, const std::string& outDir) {
+    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych stress</title>\n<style>";
+    h += kStyle;
+    const json& sum = r["summary"];
+    h += "</style></head><body>\n<h1>triptych stress: " + esc(sum["passed"]) + " of " + esc(sum["cases"]) +
+         " cases pass</h1>\n<p class=\"meta\">Device: <b>" + esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) +
+         ")<br>Command: <code>" + esc(r["command"]) + "</code><br>Tonemapped bounds: K = " +
+         num(r["tonemap_slopes"]["relative_K"]) + ", S0 = " + num(r["tonemap_slopes"]["absolute_S0"]) + " (" +
+         esc(r["tonemap_slopes"]["rule"]) + "); docs/stress.md derives every term.</p>\n";
+    for (const json& m : r["validation_messages"]) h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
+    h += matrix(r);
+    for (const json& c : r["cases"]) {
+        Result<std::string> s = caseSection(c, outDir);
+        if (!s) return s;
+        h += *s;
+    }
+    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in stress.json.</p>\n</body></html>\n";
+}
+
+} // namespace tp::cli

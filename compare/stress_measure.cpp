@@ -1,0 +1,136 @@
+// Figures and verdicts of one pipeline in one stress case.
+#include "compare/stress_measure.h"
+
+#include <cmath>
+
+#include "core/image/tonemap.h"
+
+namespace tp::cli {
+namespace {
+
+double counter(const RunResult& run, const std::string& name, double fallback) {
+    for (const auto& [k, v] : run.stats.counters)
+        if (k == name) return v;
+    return fallback;
+}
+
+bool hasCounter(const RunResult& run, const std::string& name) { return !std::isnan(counter(run, name, NAN)); }
+
+bool fp16Hdr(const RunResult& run) {
+    for (const LedgerEntry& e : run.memory)
+        if (e.tag.name == "hdr" && e.format == VK_FORMAT_R16G16B16A16_SFLOAT) return true;
+    return false;
+}
+
+// Where the reference exceeds 65,504 and the pipeline stores fp16, the channel cannot be
+// represented: classify what the pipeline wrote and take it out of the error bound by
+// copying the reference's value (both images, before the tonemap).
+ImageRGBA maskOverflow(StressOutcome& p, const ImageRGBA& ref) {
+    ImageRGBA checked = p.run->hdr;
+    for (size_t i = 0; i < ref.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const size_t k = i * 4 + c;
+            if (!(ref.rgba[k] > kHalfMax)) continue;
+            ++p.overflowChannels;
+            if (!p.fp16Storage) continue;
+            const float v = p.run->hdr.rgba[k];
+            if (std::isinf(v) && v > 0) ++p.overflowInf;
+            else if (v >= kHalfMax * (1.0f - 1.0f / 1024.0f) && v <= kHalfMax) ++p.saturated;
+            else continue; // anything else (NaN included) stays in the comparison
+            checked.rgba[k] = ref.rgba[k];
+        }
+    return checked;
+}
+
+// Inf pixels the overflow rule does not explain: an Inf (or NaN) that spread.
+uint64_t unexplainedInf(const StressOutcome& p, const ImageRGBA& ref) {
+    uint64_t n = 0;
+    for (size_t i = 0; i < ref.pixelCount(); ++i) {
+        bool bad = false;
+        for (int c = 0; c < 3; ++c) {
+            const float v = p.run->hdr.rgba[i * 4 + c];
+            bad |= std::isinf(v) && !(p.fp16Storage && ref.rgba[i * 4 + c] > kHalfMax && v > 0);
+        }
+        n += bad;
+    }
+    return n;
+}
+
+uint64_t depthMismatch(const ImageR32& a, const ImageR32& b) {
+    if (a.r.size() != b.r.size()) return a.r.size() + b.r.size();
+    uint64_t n = 0;
+    for (size_t i = 0; i < a.r.size(); ++i) n += a.r[i] != b.r[i];
+    return n;
+}
+
+void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref) {
+    auto check = [&](std::string name, double measured, double limit, std::string why) {
+        p.checks.push_back({std::move(name), measured <= limit, measured, limit, std::move(why)});
+    };
+    check("NaN pixels", double(p.nanPixels), 0, "no NaN may appear, let alone spread");
+    check("Inf pixels not explained by fp16 overflow", double(unexplainedInf(p, ref)), 0,
+          "+Inf only where the reference exceeds 65,504 and the target is fp16");
+    check("lights dropped", p.lightsDropped, 0, "the default list layouts never drop a light");
+    if (p.bound.bounded)
+        check("tonemapped max |p - r|", p.checkedMaxTonemapped, p.bound.tonemapped(r.exposureEv),
+              "the pipeline's derived bound (relative " + std::to_string(p.bound.relative()) + ", absolute " +
+                  std::to_string(p.bound.absolute()) + ") through the tonemap");
+    if (r.c->depthExact)
+        check("depth pixels differing from the reference", double(p.depthMismatch), 0,
+              "same triangles, same vertex shader (precise gl_Position), D32 reverse-Z");
+    for (const stress::CounterAtLeast& s : r.c->stressed) {
+        if (s.pipeline != p.name || !hasCounter(*p.run, s.counter)) continue;
+        const double v = counter(*p.run, s.counter, 0);
+        p.checks.push_back({"stressed: " + s.counter, v >= s.atLeast, v, s.atLeast, s.why});
+    }
+}
+
+} // namespace
+
+void countNonFinite(const ImageRGBA& image, uint64_t& nanPixels, uint64_t& infPixels) {
+    nanPixels = infPixels = 0;
+    for (size_t i = 0; i < image.pixelCount(); ++i) {
+        bool nan = false, inf = false;
+        for (int c = 0; c < 3; ++c) {
+            nan |= std::isnan(image.rgba[i * 4 + c]);
+            inf |= std::isinf(image.rgba[i * 4 + c]);
+        }
+        nanPixels += nan;
+        infPixels += inf && !nan;
+    }
+}
+
+void measureOutcome(StressOutcome& p, const StressOutcome& reference, const StressCaseResult& r, const Scene& scene) {
+    const ImageRGBA& ref = reference.run->hdr;
+    MetricsOptions hdrOptions;
+    float peak = 1.0f;
+    for (size_t i = 0; i < ref.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c)
+            if (std::isfinite(ref.rgba[i * 4 + c])) peak = std::max(peak, ref.rgba[i * 4 + c]);
+    hdrOptions.psnrPeak = peak;
+    const ImageRGBA refDisplay = tonemapToDisplay(ref, r.exposureEv);
+    p.hdr = computeError(p.run->hdr, ref, hdrOptions);
+    p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
+    countNonFinite(p.run->hdr, p.nanPixels, p.infPixels);
+    p.fp16Storage = fp16Hdr(*p.run);
+    p.lightsDropped = counter(*p.run, "lights_dropped", 0);
+    p.depthMismatch = depthMismatch(p.run->depth, reference.run->depth);
+    p.checkedMaxTonemapped = computeError(tonemapToDisplay(maskOverflow(p, ref), r.exposureEv), refDisplay).maxAbs;
+    p.bound = expectedBound(p.name, *r.c, scene, r.settings);
+    addChecks(p, r, ref);
+    p.pass = true;
+    for (const StressCheck& c : p.checks) p.pass &= c.pass;
+}
+
+std::string overflowBehaviour(const StressOutcome& p) {
+    if (!p.run || p.overflowChannels == 0) return "no value beyond 65,504";
+    if (!p.fp16Storage) return "fp32 target: values beyond 65,504 kept";
+    std::string s;
+    if (p.saturated) s += "saturates at 65,504 (" + std::to_string(p.saturated) + " channels)";
+    if (p.overflowInf) s += std::string(s.empty() ? "" : "; ") + "overflows to +Inf (" + std::to_string(p.overflowInf) + " channels)";
+    const uint64_t other = p.overflowChannels - p.saturated - p.overflowInf;
+    if (other) s += std::string(s.empty() ? "" : "; ") + std::to_string(other) + " channels neither (checked against the bound)";
+    return s;
+}
+
+} // namespace tp::cli

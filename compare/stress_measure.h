@@ -1,0 +1,16 @@
+#pragma once
+// Measuring one pipeline's image against the reference in a stress case and turning the
+// figures into checks and a verdict (internal to triptych stress).
+#include "compare/stress_run.h"
+
+namespace tp::cli {
+
+constexpr float kHalfMax = 65504.0f; // largest finite fp16
+
+// Fills the figures, the bound, the checks and the verdict of `p` (which ran).
+void measureOutcome(StressOutcome& p, const StressOutcome& reference, const StressCaseResult& r, const Scene& scene);
+
+// NaN and Inf pixels (RGB) of an image.
+void countNonFinite(const ImageRGBA& image, uint64_t& nanPixels, uint64_t& infPixels);
+
+} // namespace tp::cli

@@ -1,0 +1,180 @@
+// triptych stress: for each case, one SceneGpu, the reference then every pipeline (one
+// frame each: stress measures images, not time), images and difference maps into
+// OUT/CASE/, then stress.html and, last, stress.json (a folder without it is unfinished).
+#include "compare/stress_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "compare/report_json.h"
+#include "compare/stress_measure.h"
+#include "compare/stress_report.h"
+#include "compare/svg_plot.h"
+#include "core/gpu/vk_check.h"
+#include "core/image/difference.h"
+#include "core/image/image_io.h"
+#include "core/image/tonemap.h"
+#include "core/render/scene_gpu.h"
+#include "core/util/files.h"
+
+namespace tp::cli {
+namespace {
+
+std::vector<std::string> selectPipelines(const std::string& list) {
+    std::vector<std::string> names;
+    if (list.empty()) {
+        for (const RendererEntry& e : registeredRenderers())
+            if (e.name != "reference") names.push_back(e.name);
+        return names;
+    }
+    std::stringstream ss(list);
+    std::string name;
+    while (std::getline(ss, name, ',')) {
+        if (name == "reference") throw UsageError("--pipelines: the reference is always rendered; list the others");
+        Result<const RendererEntry*> e = findRenderer(name);
+        if (!e) throw UsageError("--pipelines: " + e.error());
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    if (names.empty()) throw UsageError("--pipelines '" + list + "': no pipeline named");
+    return names;
+}
+
+void check(const Status& s) {
+    if (!s) throw UsageError(s.error());
+}
+
+StressOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const Scene& cpuScene,
+                        const RenderSettings& settings) {
+    StressOutcome p;
+    p.name = name;
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    try {
+        Result<RunResult> result =
+            runRenderer(ctx, scene, **findRenderer(name), analyzeScene(cpuScene, settings.msaa), settings, once);
+        if (result) p.run = std::move(*result);
+        else p.error = result.error();
+    } catch (const GpuError& e) {
+        p.error = std::string("Vulkan error: ") + e.what();
+    }
+    return p;
+}
+
+void writeImages(const std::string& dir, const std::string& rel, StressOutcome& p, float ev) {
+    check(writeExr(dir + "/" + p.name + ".exr", p.run->hdr, ExrPixelType::Float));
+    check(writePng(dir + "/" + p.name + ".png", tonemapToDisplay(p.run->hdr, ev)));
+    p.files = {rel + "/" + p.name + ".exr", rel + "/" + p.name + ".png"};
+}
+
+void writeDifferences(const std::string& dir, const std::string& rel, StressCaseResult& r,
+                      const std::vector<ImageRGBA>& diffs) {
+    if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f; // a legend needs a non-zero end
+    for (size_t i = 0; i < r.pipelines.size(); ++i) {
+        StressOutcome& p = r.pipelines[i];
+        if (!p.run) continue;
+        check(writeExr(dir + "/" + p.name + "_diff.exr", diffs[i], ExrPixelType::Float));
+        check(writePng(dir + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale, 12)));
+        p.files.push_back(rel + "/" + p.name + "_diff.exr");
+        p.files.push_back(rel + "/" + p.name + "_diff.png");
+    }
+}
+
+// A pipeline that could not run fails its case with the reason as its only check.
+void failUnrun(StressOutcome& p, const std::string& why) {
+    p.pass = false;
+    p.checks.push_back({"ran", false, 0, 1, why.empty() ? p.error : why});
+}
+
+StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std::vector<std::string>& names,
+                         const std::string& out) {
+    auto start = std::chrono::steady_clock::now();
+    StressCaseResult r;
+    r.c = &c;
+    r.settings.width = c.width;
+    r.settings.height = c.height;
+    r.settings.msaa = c.msaa;
+    const Scene scene = c.build();
+    r.lights = scene.lights.size();
+    r.triangles = scene.triangleCount();
+    const std::string dir = out + "/" + c.name;
+    std::filesystem::remove_all(dir);
+    ensureDirectory(dir);
+    SceneGpu gpuScene(ctx, scene);
+    r.reference = renderOne(ctx, gpuScene, "reference", scene, r.settings);
+    if (r.reference.run) {
+        r.exposureEv = autoExposureEv(r.reference.run->hdr);
+        countNonFinite(r.reference.run->hdr, r.reference.nanPixels, r.reference.infPixels);
+        writeImages(dir, c.name, r.reference, r.exposureEv);
+    }
+    const bool refUsable = r.reference.run && r.reference.nanPixels + r.reference.infPixels == 0;
+    std::vector<ImageRGBA> diffs;
+    for (const std::string& name : names) {
+        std::fprintf(stderr, "triptych: stress %s: %s ...\n", c.name.c_str(), name.c_str());
+        StressOutcome p = renderOne(ctx, gpuScene, name, scene, r.settings);
+        diffs.emplace_back();
+        if (!p.run) failUnrun(p, "");
+        else if (!refUsable) failUnrun(p, "the reference " + (r.reference.run ? std::string("has NaN/Inf pixels") : "failed: " + r.reference.error));
+        else {
+            writeImages(dir, c.name, p, r.exposureEv);
+            measureOutcome(p, r.reference, r, scene);
+            diffs.back() = signedDifference(p.run->hdr, r.reference.run->hdr);
+            p.diffP99 = differencePercentile99(diffs.back());
+            r.diffScale = std::max(r.diffScale, p.diffP99);
+        }
+        r.pipelines.push_back(std::move(p));
+    }
+    writeDifferences(dir, c.name, r, diffs);
+    r.pass = refUsable;
+    for (const StressOutcome& p : r.pipelines) r.pass &= p.pass;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+void printCase(const StressCaseResult& r) {
+    std::printf("%-26s %s (%.1f s)\n", r.c->name.c_str(), r.pass ? "pass" : "FAIL", r.seconds);
+    for (const StressOutcome& p : r.pipelines) {
+        std::string failed;
+        for (const StressCheck& k : p.checks)
+            if (!k.pass) failed += (failed.empty() ? "" : "; ") + k.name + " " + formatNumber(k.measured) + " (limit " + formatNumber(k.limit) + ")";
+        std::printf("  %-20s %s%s%s\n", p.name.c_str(), p.pass ? "pass" : "FAIL", failed.empty() ? "" : ": ", failed.c_str());
+    }
+}
+
+} // namespace
+
+int runStress(const StressOptions& o) {
+    Result<std::vector<const stress::StressCase*>> cases = stress::selectStressCases(o.cases);
+    if (!cases) throw UsageError(cases.error());
+    std::vector<std::string> names = selectPipelines(o.pipelines);
+    std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    for (const stress::StressCase* c : *cases)
+        makeSettings({std::to_string(c->width) + "x" + std::to_string(c->height), int(c->msaa)}, *ctx);
+    ensureDirectory(o.out);
+    for (const char* f : {"stress.json", "stress.html"}) std::filesystem::remove(o.out + "/" + f);
+    std::vector<StressCaseResult> results;
+    for (const stress::StressCase* c : *cases) {
+        results.push_back(runCase(*ctx, *c, names, o.out));
+        printCase(results.back());
+    }
+    const std::vector<std::string> validation = ctx->validationMessages();
+    nlohmann::json report = stressJson(o, *ctx, results, validation);
+    Result<std::string> html = stressHtml(report, o.out);
+    if (!html) throw UsageError(html.error());
+    check(writeTextFile(o.out + "/stress.html", *html));
+    check(writeTextFile(o.out + "/stress.json", report.dump(2) + "\n")); // last: marks the run complete
+    size_t failed = 0;
+    for (const StressCaseResult& r : results) failed += !r.pass;
+    std::fprintf(stderr, "triptych: %zu of %zu cases passed; wrote %s/stress.html and stress.json\n",
+                 results.size() - failed, results.size(), o.out.c_str());
+    if (!validation.empty()) {
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(), validation.front().c_str());
+        return 3;
+    }
+    return failed ? 6 : 0;
+}
+
+} // namespace tp::cli

@@ -1,0 +1,79 @@
+#pragma once
+// The stress catalogue (`triptych stress`, docs/stress.md): named procedural scenes, each
+// built to push one pipeline choice to its limit (a tile full of lights, a specular spike,
+// values beyond fp16, positions 10^6 from the origin, ...). Scenes are built in code, so a
+// case is the same on every machine; the expectations (error bounds and checks per
+// pipeline) live in compare/stress_expect.*, which reads the facts a case states here.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/scene/scene.h"
+#include "core/util/result.h"
+
+namespace tp::stress {
+
+// A counter a pipeline must report for the case to have stressed what it claims
+// (e.g. the deferred shared light list overflowed). Pipelines without the counter skip it.
+struct CounterAtLeast {
+    std::string pipeline;
+    std::string counter;
+    double atLeast = 0;
+    std::string why;
+};
+
+struct StressCase {
+    std::string name;
+    std::string stresses;    // one line: what the case does to the pipelines
+    std::string expectation; // one line: what every pipeline must still do
+    uint32_t width = 96, height = 64, msaa = 1;
+    std::function<Scene()> build;
+    // The published depth must equal the reference's bit for bit (same triangles, same
+    // vertex shader with a precise gl_Position, D32 reverse-Z): checked where depth is
+    // what the case is about.
+    bool depthExact = false;
+    // Normals that are not axis-aligned reach the shading (G-buffer normal quantization
+    // matters); every other case keeps surfaces axis-aligned.
+    bool freeNormals = false;
+    // Only directional lights and rough (roughness 1) dielectrics: the case where a
+    // pipeline that shades a pixel once instead of per sample can be bounded.
+    bool directionalRoughOnly = false;
+    std::vector<CounterAtLeast> stressed;
+};
+
+const std::vector<StressCase>& stressCases();
+// "a,b,c" -> cases in catalogue order; empty = all. Error names the unknown case.
+Result<std::vector<const StressCase*>> selectStressCases(const std::string& list);
+
+// Building blocks shared by the scene files (stress_scenes*.cpp).
+namespace build {
+Material plain(const char* name, glm::vec3 base, float metallic, float roughness);
+uint32_t addMaterial(Scene& s, Material m);
+// An axis-aligned rectangle origin, origin+u, origin+u+v, origin+v with the exact normal n
+// (unit, along an axis) so G-buffer normal encodings round-trip exactly.
+void rect(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v, glm::vec3 n);
+Mesh meshOf(const char* name, uint32_t material);
+// Axis-aligned box, faces outward, exact normals.
+void box(Mesh& m, glm::vec3 lo, glm::vec3 hi);
+Light point(glm::vec3 p, float intensity, float range, glm::vec3 color = glm::vec3(1.0f));
+// A 10 x 10 grey floor at y = 0 under a 10 x 5 back wall at z = -5, camera at (0, 3, 7)
+// looking at (0, 1, 0): the stage most cases put their stress on.
+Scene stage(const char* source);
+void finish(Scene& s);
+} // namespace build
+
+// Scene builders (stress_scenes.cpp, stress_scenes_counts.cpp).
+Scene tileOverflow();
+Scene depthDiscontinuity();
+Scene mirrorSpike();
+Scene lightOnSurface();
+Scene beyondHalfFloat();
+Scene farFromOrigin();
+Scene depthPrecision(bool infiniteFar);
+Scene degenerateGeometry();
+Scene lightCount(uint32_t count);
+Scene lightsWholeScreen();
+Scene lightsSubpixel();
+Scene msaaEdges();
+
+} // namespace tp::stress
