@@ -1,0 +1,130 @@
+// triptych stress end to end, validation on: every case through every registered pipeline,
+// the report written, a verdict per case and pipeline, and the verdicts those of today:
+// every pair passes except the known failures below, each listed with the bug it shows.
+// When a bug is fixed its entry must go (the test fails on an unexpected pass too), so the
+// list stays the truth.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "compare/stress_run.h"
+#include "core/render/renderer.h"
+#include "core/scene/stress_scenes.h"
+
+namespace tp::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// "case/pipeline" -> why it fails today (docs/stress.md, "Known failures").
+const std::map<std::string, std::string>& knownFailures() {
+    static const std::map<std::string, std::string> known = {
+        {"light-on-surface/deferred",
+         "positions reconstructed from depth leave the floor plane by ~1e-6 m, so a light centred in the plane "
+         "(where n.l = 0 exactly for the reference) lights the floor around it"},
+        {"far-from-origin/deferred",
+         "positions reconstructed from depth with the inverse view-projection at 1e6: fp32 loses them "
+         "(camera-relative reconstruction needed)"},
+        {"far-from-origin/multipass_forward",
+         "CPU light scissors computed at 1e6 in fp32 cut off one column of a light's pixels (0.06 m error, "
+         "more than the one-pixel margin)"},
+    };
+    return known;
+}
+
+// "case/pipeline" -> why its verdict changes from run to run today: either verdict is
+// accepted (and printed), so the suite stays honest without hiding the bug.
+const std::map<std::string, std::string>& knownFlaky() {
+    static const std::map<std::string, std::string> flaky = {
+        {"lights-65536/deferred",
+         "tiles beyond the 4,096-light shared list (shaded with all 65,536 lights) come out with 8x8-pixel "
+         "blocks of zeros and values up to 7e25 in about one run of four on lavapipe"},
+    };
+    return flaky;
+}
+
+std::string freshDir(const std::string& name) {
+    fs::path p = fs::temp_directory_path() / ("triptych_" + name + "_" + std::to_string(getpid()));
+    fs::remove_all(p);
+    return p.string();
+}
+
+json readJson(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return json::parse(ss.str());
+}
+
+TEST(Stress, EveryCaseGivesTodaysVerdicts) {
+    cli::StressOptions o;
+    o.out = freshDir("stress");
+    o.device.validate = true;
+    o.commandLine = {"triptych", "stress", "--validate", "--out", o.out};
+    const int code = cli::runStress(o);
+    EXPECT_NE(code, 3) << "validation messages: see stress.json";
+    // 6 exactly when some case failed (checked against the verdicts below).
+    EXPECT_TRUE(code == 0 || code == 6) << code;
+    ASSERT_TRUE(fs::exists(o.out + "/stress.json"));
+    ASSERT_TRUE(fs::exists(o.out + "/stress.html"));
+    const json r = readJson(o.out + "/stress.json");
+    EXPECT_EQ(r["schema"], "triptych.stress/1");
+    EXPECT_TRUE(r["validation_messages"].empty());
+    ASSERT_EQ(r["cases"].size(), stress::stressCases().size());
+
+    std::vector<std::string> pipelines;
+    for (const RendererEntry& e : registeredRenderers())
+        if (e.name != "reference") pipelines.push_back(e.name);
+    bool anyFail = false;
+    for (const json& c : r["cases"]) {
+        const std::string name = c["name"];
+        EXPECT_EQ(c["reference"]["status"], "ok") << name;
+        EXPECT_TRUE(fs::exists(o.out + "/" + name + "/reference.png")) << name;
+        ASSERT_EQ(c["pipelines"].size(), pipelines.size()) << name;
+        bool casePass = true;
+        for (size_t i = 0; i < pipelines.size(); ++i) {
+            const json& p = c["pipelines"][i];
+            const std::string key = name + "/" + pipelines[i];
+            EXPECT_EQ(p["name"], pipelines[i]);
+            ASSERT_TRUE(p["verdict"] == "pass" || p["verdict"] == "fail") << key;
+            EXPECT_FALSE(p["checks"].empty()) << key;
+            const bool expectFail = knownFailures().count(key) > 0;
+            std::string failed;
+            for (const json& k : p["checks"])
+                if (!k["pass"].get<bool>()) failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
+            if (knownFlaky().count(key))
+                std::printf("stress: %s (known flaky): %s %s\n", key.c_str(), p["verdict"].get<std::string>().c_str(), failed.c_str());
+            else
+                EXPECT_EQ(p["verdict"], expectFail ? "fail" : "pass")
+                    << key << (expectFail ? ": a known failure passes now; remove it from knownFailures()" : ": " + failed);
+            casePass &= p["verdict"] == "pass";
+            if (p["status"] == "ok") {
+                EXPECT_TRUE(fs::exists(o.out + "/" + name + "/" + pipelines[i] + ".exr")) << key;
+                EXPECT_TRUE(fs::exists(o.out + "/" + name + "/" + pipelines[i] + "_diff.png")) << key;
+            }
+        }
+        EXPECT_EQ(c["verdict"], casePass ? "pass" : "fail") << name;
+        anyFail |= !casePass;
+    }
+    EXPECT_EQ(code, anyFail ? 6 : 0);
+    EXPECT_EQ(r["summary"]["failed"].get<int>() > 0, anyFail);
+    fs::remove_all(o.out);
+}
+
+TEST(Stress, UnknownCaseIsRefusedBeforeWriting) {
+    cli::StressOptions o;
+    o.out = freshDir("stress_bad");
+    o.cases = "tile-overflow,no-such-case";
+    EXPECT_THROW(cli::runStress(o), cli::UsageError);
+    EXPECT_FALSE(fs::exists(o.out));
+}
+
+} // namespace
+} // namespace tp::test
