@@ -162,7 +162,8 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
     if (!s) return fail(s);
     const size_t n = data.size() / 3;
     out.positions.resize(n);
-    std::memcpy(out.positions.data(), data.data(), n * sizeof(glm::vec3));
+    for (size_t i = 0; i < n; ++i) // a loop, not memcpy: data.data() is null when n == 0
+        out.positions[i] = glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
     auto readOptional = [&](const AttributeSpec& spec, auto&& store) -> Status {
         int index = attribute(spec.name);
         if (index < 0) return {};
@@ -193,7 +194,8 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
     if (s)
         s = readOptional(kUv, [&] {
             out.uvs.resize(n);
-            std::memcpy(out.uvs.data(), data.data(), n * sizeof(glm::vec2));
+            for (size_t i = 0; i < n; ++i)
+                out.uvs[i] = glm::vec2(data[2 * i], data[2 * i + 1]);
         });
     if (s)
         s = readOptional(kColor, [&] {

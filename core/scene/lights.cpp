@@ -278,12 +278,16 @@ std::string lightsToJson(const std::vector<Light>& lights) {
 }
 
 Result<std::vector<Light>> lightsFromJson(const std::string& text, const std::string& name) {
+    Result<std::vector<Light>> lights = Error{""};
     try {
         json doc = json::parse(text);
-        return parseLights(doc, name);
+        lights = parseLights(doc, name);
     } catch (const std::exception& e) {
-        return Error{name + ": " + oneLine(e.what())};
+        lights = Error{name + ": " + oneLine(e.what())};
     }
+    // Messages quote the file's keys and strings: "int\nsity" must not break the line.
+    if (!lights) return Error{printableLine(lights.error())};
+    return lights;
 }
 
 Result<std::vector<Light>> readLightsFile(const std::string& path) {

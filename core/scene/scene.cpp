@@ -50,4 +50,30 @@ SceneFeatures analyzeScene(const Scene& scene, uint32_t msaaSamples) {
     return f;
 }
 
+std::string printableLine(const std::string& text) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+        const uint8_t c = uint8_t(text[i]);
+        size_t length = c < 0x80         ? 1
+                        : (c >> 5) == 6  ? 2
+                        : (c >> 4) == 14 ? 3
+                        : (c >> 3) == 30 ? 4
+                                         : 0;
+        bool valid = length > 0 && i + length <= text.size();
+        for (size_t k = 1; valid && k < length; ++k)
+            valid = (uint8_t(text[i + k]) >> 6) == 2;
+        if (!valid) {
+            out += '?';
+            ++i;
+        } else if (length == 1) {
+            out += c < 0x20 || c == 0x7f ? ' ' : char(c);
+            ++i;
+        } else {
+            out.append(text, i, length);
+            i += length;
+        }
+    }
+    return out;
+}
+
 } // namespace tp

@@ -129,4 +129,8 @@ struct SceneFeatures {
 
 SceneFeatures analyzeScene(const Scene& scene, uint32_t msaaSamples);
 
+// Error messages quote files (names, URIs, JSON keys): control characters become spaces and
+// bytes that are not UTF-8 become '?', so that a message stays one printable line.
+std::string printableLine(const std::string& text);
+
 } // namespace tp

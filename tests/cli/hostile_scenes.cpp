@@ -198,6 +198,10 @@ void rangeCases(Writer& w) {
     w.gltf({"view_offset_wraps_32bit", "scene.gltf", E, "outside its buffer",
             "bufferView byteOffset 2^32-4: offset + length wraps to 2 in 32 bits"}, g);
     g = triangleJson();
+    g["accessors"][0]["count"] = 0; // found by the fuzzer: memcpy from a null pointer (UB)
+    w.gltf({"position_count_zero", "scene.gltf", E, "out of range (0 vertices)",
+            "a POSITION accessor of count 0"}, g);
+    g = triangleJson();
     g["accessors"][0]["byteOffset"] = 40;
     w.gltf({"accessor_past_view", "scene.gltf", E, "lies outside bufferView",
             "an accessor starting 40 bytes into a 36-byte bufferView"}, g);

@@ -217,6 +217,9 @@ TEST(LightsJson, AbsurdValuesAndUnknownNames) {
     expectError(oneLight("\"type\":\"POINT\",\"intensity\":1"), "unknown light type 'POINT'");
     expectError(std::string(100000, '['), "lights.json: ");
     expectError("{\"lights\":[]} trailing", "parse error");
+    // Found by the fuzzer: a key with an escaped newline made a two-line message.
+    expectError(oneLight("\"type\":\"point\",\"int\\nsity\":5"), "unknown field 'int sity'");
+    expectError(oneLight("\"type\":\"\\u001b[31mred\""), "unknown light type ' [31mred'");
     expectError("{\"lights\":[{\"type\":\"point\",\"position\":[NaN,0,0]}]}", "parse error");
 }
 

@@ -68,6 +68,9 @@ if [ -d "$shared" ]; then
 else
     echo "note: no shared scenes at $shared; seeding with the hostile scenes only"
 fi
+# Inputs that once failed (tests/fuzz/regressions) are seeds too: they run first, every time.
+cp "$root"/tests/fuzz/regressions/gltf/* "$build/seeds/gltf/"
+cp "$root"/tests/fuzz/regressions/lights/* "$build/seeds/lights/"
 p='"position":[1,2,3],"intensity":5,"range":4,"color":[1,0.5,0.25]'
 printf '{"version":1,"lights":[{"type":"point",%s}]}' "$p" >"$build/seeds/lights/point.json"
 printf '{"version":1,"lights":[{"type":"spot",%s,"direction":[0,-1,0],"inner_cone":0.2,"outer_cone":0.6}]}' \
