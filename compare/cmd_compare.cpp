@@ -105,14 +105,6 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
     p.files = {p.name + ".exr", p.name + ".png"};
 }
 
-float brightestChannel(const ImageRGBA& image) {
-    float peak = 0.0f;
-    for (size_t i = 0; i < image.pixelCount(); ++i)
-        for (int c = 0; c < 3; ++c)
-            if (std::isfinite(image.rgba[i * 4 + c])) peak = std::max(peak, image.rgba[i * 4 + c]);
-    return peak > 0.0f ? peak : 1.0f;
-}
-
 // Metrics against the reference and the signed difference of every pipeline that ran.
 std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
     const ImageRGBA& ref = r.reference.run->hdr;
@@ -247,7 +239,7 @@ int runCompare(const CompareOptions& o) {
     r.reference = renderOne(*ctx, gpuScene, "reference", r, "[1/" + std::to_string(names.size() + 1) + "]");
     if (!r.reference.run) throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
-    r.hdrPsnrPeak = brightestChannel(r.reference.run->hdr);
+    r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
     writeImages(o.out, r.reference, r.exposureEv);
     check(writeLightsFile(o.out + "/lights.json", scene.lights));
 

@@ -1,21 +1,21 @@
 // triptych sweep: every combination of light count, resolution, MSAA and pipeline knobs
-// through the selected pipelines, the reference once per (light set, resolution, MSAA);
-// one sweep.csv row per run (failed runs included, with their reason) and sweep.html with
-// time against light count, memory against MSAA, and error against time with the Pareto front.
+// through the selected pipelines, the reference once per (light count, resolution, MSAA) for
+// its image; a progress bar with the time left; a run that fails is recorded with its reason
+// and the sweep goes on. Files: sweep_output.h; meanings: docs/report.md.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 
-#include "compare/cli_common.h"
 #include "compare/commands.h"
-#include "compare/report_html.h"
-#include "compare/svg_plot.h"
+#include "compare/report_json.h"
+#include "compare/run_json.h"
+#include "compare/scene_hash.h"
+#include "compare/sweep.h"
+#include "compare/sweep_output.h"
 #include "core/gpu/vk_check.h"
-#include "core/image/metrics.h"
 #include "core/image/tonemap.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
@@ -23,13 +23,7 @@
 namespace tp::cli {
 namespace {
 
-struct SweepOptions {
-    SceneOptions scene;
-    DeviceOptions device;
-    std::string lights = "16,64,256", res = "320x180", msaa = "1", tile = "16", lightLists = "compact",
-                gbuffer = "compact", accum = "fp32", pipelines, out = "sweep";
-    int frames = 2, warmup = 1;
-};
+using Clock = std::chrono::steady_clock;
 
 std::vector<std::string> splitList(const std::string& text, const char* option) {
     std::vector<std::string> items;
@@ -48,224 +42,252 @@ int toInt(const std::string& s, const char* option) {
     return int(v);
 }
 
-// Which knobs change which pipeline: a pipeline is run once per value of the knobs it reads
-// and with the first value of the others, so the sweep does not repeat identical runs.
-bool reads(const std::string& pipeline, const std::string& knob) {
-    static const std::map<std::string, std::vector<std::string>> table = {
-        {"tile", {"forwardplus", "deferred"}},
-        {"light_lists", {"forwardplus"}},
-        {"gbuffer", {"deferred"}},
-        {"accum", {"multipass_forward"}}};
-    const auto& users = table.at(knob);
-    return std::find(users.begin(), users.end(), pipeline) != users.end();
-}
-
-struct Row {
-    std::string pipeline, status = "ok", error;
-    int lights = 0;
-    RenderSettings s;
-    double frameMs = 0, minMs = 0, maxMs = 0, bytesPerPixel = 0, rmse = 0, psnrTm = 0, maxAbs = 0, dropped = 0;
-    uint64_t bytes = 0;
+// One list knob: its option, the pipelines that read it, its allowed values and where it goes.
+struct Knob {
+    const char* option;
+    std::vector<std::string> readers, allowed;
+    std::string SweepOptions::*list;
+    void (*apply)(RenderSettings&, const std::string&);
 };
 
-std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepOptions& o, RenderSettings base) {
+const std::vector<Knob>& knobs() {
+    static const std::vector<Knob> table = {
+        {"--tile", {"forwardplus", "deferred"}, {"8", "16", "32"}, &SweepOptions::tile,
+         [](RenderSettings& s, const std::string& v) { s.tileSize = uint32_t(std::stoi(v)); }},
+        {"--light-lists", {"forwardplus"}, {"compact", "fixed", "linked"}, &SweepOptions::lightLists,
+         [](RenderSettings& s, const std::string& v) { s.lightLists = v; }},
+        {"--gbuffer", {"deferred"}, {"compact", "wide"}, &SweepOptions::gbuffer,
+         [](RenderSettings& s, const std::string& v) { s.gbuffer = v; }},
+        {"--deferred-lighting", {"deferred"}, {"tiled", "volumes"}, &SweepOptions::deferredLighting,
+         [](RenderSettings& s, const std::string& v) { s.deferredLighting = v; }},
+        {"--accum", {"multipass_forward"}, {"fp16", "fp32"}, &SweepOptions::accum,
+         [](RenderSettings& s, const std::string& v) { s.accum = v; }}};
+    return table;
+}
+
+void checkKnobValues(const SweepOptions& o) {
+    for (const Knob& k : knobs())
+        for (const std::string& v : splitList(o.*k.list, k.option))
+            if (std::find(k.allowed.begin(), k.allowed.end(), v) == k.allowed.end())
+                throw UsageError(std::string(k.option) + ": '" + v + "' is not one of the allowed values");
+}
+
+// A pipeline runs once per value of the knobs it reads, with the first value of the others,
+// so the sweep repeats no identical run.
+std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepOptions& o, const RenderSettings& base) {
     std::vector<RenderSettings> combos = {base};
-    auto expand = [&](const std::string& knob, const std::string& list, auto apply) {
-        std::vector<std::string> values = splitList(list, ("--" + knob).c_str());
-        if (!reads(pipeline, knob)) values.resize(1);
+    for (const Knob& k : knobs()) {
+        std::vector<std::string> values = splitList(o.*k.list, k.option);
+        if (std::find(k.readers.begin(), k.readers.end(), pipeline) == k.readers.end()) values.resize(1);
         std::vector<RenderSettings> next;
         for (const RenderSettings& c : combos)
             for (const std::string& v : values) {
-                RenderSettings n = c;
-                apply(n, v);
-                next.push_back(n);
+                next.push_back(c);
+                k.apply(next.back(), v);
             }
-        combos = next;
-    };
-    expand("tile", o.tile, [](RenderSettings& s, const std::string& v) { s.tileSize = uint32_t(toInt(v, "--tile")); });
-    expand("light_lists", o.lightLists, [](RenderSettings& s, const std::string& v) { s.lightLists = v; });
-    expand("gbuffer", o.gbuffer, [](RenderSettings& s, const std::string& v) { s.gbuffer = v; });
-    expand("accum", o.accum, [](RenderSettings& s, const std::string& v) { s.accum = v; });
+        combos = std::move(next);
+    }
     return combos;
 }
 
-Row measureRun(const std::string& name, int lights, const RenderSettings& s, const Result<RunResult>& run,
-               const RunResult* reference, float ev) {
-    Row row;
+std::vector<std::string> selectPipelines(const std::string& list) {
+    std::vector<std::string> names;
+    for (const RendererEntry& e : registeredRenderers())
+        if (e.name != "reference") names.push_back(e.name);
+    if (list.empty()) return names;
+    std::vector<std::string> chosen;
+    for (const std::string& n : splitList(list, "--pipelines")) {
+        if (std::find(names.begin(), names.end(), n) == names.end())
+            throw UsageError("--pipelines: unknown pipeline '" + n + "' (reference is always run; known: " +
+                             shellJoin(names) + ")");
+        if (std::find(chosen.begin(), chosen.end(), n) == chosen.end()) chosen.push_back(n);
+    }
+    return chosen;
+}
+
+struct Reference {
+    std::optional<RunResult> run;
+    float ev = 0, peak = 1;
+};
+
+SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s, const Result<RunResult>& result,
+                    const Reference& ref, const GpuContext& ctx) {
+    SweepRow row;
     row.pipeline = name;
     row.lights = lights;
     row.s = s;
-    if (!run) {
+    if (!result) {
         row.status = "failed";
-        row.error = run.error();
+        row.error = result.error();
         return row;
     }
-    const RunResult& r = run.value();
-    row.frameMs = r.timings.front().medianMs;
-    row.minMs = r.timings.front().minMs;
-    row.maxMs = r.timings.front().maxMs;
-    for (const LedgerEntry& e : r.memory) row.bytes += e.bytes;
-    row.bytesPerPixel = double(row.bytes) / double(std::max<size_t>(1, r.hdr.pixelCount()));
+    const RunResult& r = result.value();
+    row.frame = r.timings.front();
+    row.run = runJson(r, ctx);
+    row.bytes = row.run["memory"]["total_bytes"].get<uint64_t>();
+    row.bytesPerPixel = row.run["memory"]["bytes_per_pixel"].get<double>();
     for (const auto& [k, v] : r.stats.counters)
         if (k == "lights_dropped") row.dropped = v;
-    if (reference) {
-        ErrorReport e = computeError(r.hdr, reference->hdr);
-        row.rmse = e.rmse;
-        row.maxAbs = e.maxAbs;
-        row.psnrTm = computeError(tonemapToDisplay(r.hdr, ev), tonemapToDisplay(reference->hdr, ev)).psnr;
+    if (ref.run && name != "reference") {
+        MetricsOptions hdr;
+        hdr.psnrPeak = ref.peak;
+        row.hdr = computeError(r.hdr, ref.run->hdr, hdr);
+        row.display = computeError(tonemapToDisplay(r.hdr, ref.ev), tonemapToDisplay(ref.run->hdr, ref.ev));
+        row.measured = true;
+        row.exposureEv = ref.ev;
+        row.hdrPsnrPeak = ref.peak;
     }
     return row;
 }
 
-std::string csvField(std::string s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
+// Progress: runs done, time spent, and the time left from the average reference and
+// pipeline run so far (a reference can cost a hundred pipeline runs).
+struct Progress {
+    size_t total = 0, references = 0, done = 0, referencesDone = 0;
+    double referenceSeconds = 0, pipelineSeconds = 0;
+    Clock::time_point start = Clock::now();
+
+    void report(const SweepRow& row, const std::string& resText) {
+        ++done;
+        bool isRef = row.pipeline == "reference";
+        (isRef ? referenceSeconds : pipelineSeconds) += row.seconds;
+        referencesDone += isRef;
+        const size_t pipelinesDone = done - referencesDone, pipelinesTotal = total - references;
+        const double perRef = referencesDone ? referenceSeconds / double(referencesDone) : 0.0;
+        const double perRun = pipelinesDone ? pipelineSeconds / double(pipelinesDone) : perRef;
+        const double left = double(references - referencesDone) * (referencesDone ? perRef : perRun) +
+                            double(pipelinesTotal - pipelinesDone) * perRun;
+        const double spent = std::chrono::duration<double>(Clock::now() - start).count();
+        const int filled = int(30 * done / std::max<size_t>(1, total));
+        std::fprintf(stderr, "[%s%s] %zu/%zu %s %d lights %s %ux: %s (%.1f s), %.0f s spent, ~%.0f s left\n",
+                     std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(), done,
+                     total, row.pipeline.c_str(), row.lights, resText.c_str(), row.s.msaa,
+                     row.status == "ok" ? "ok" : ("FAILED: " + row.error).c_str(), row.seconds, spent, left);
+    }
+};
+
+Result<RunResult> runOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const SceneFeatures& features,
+                         const RenderSettings& s, const RunOptions& ro) {
+    try {
+        return runRenderer(ctx, scene, **findRenderer(name), features, s, ro);
+    } catch (const GpuError& e) {
+        return Error{std::string("Vulkan error: ") + e.what()};
+    }
 }
 
-std::string csv(const std::vector<Row>& rows, const std::string& device) {
-    std::string t = "pipeline,lights,width,height,msaa,tile,light_lists,gbuffer,accum,status,frame_median_ms,"
-                    "frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,psnr_tonemapped,max_abs_hdr,"
-                    "lights_dropped,device,error\n";
-    for (const Row& r : rows) {
-        char nums[512];
-        std::snprintf(nums, sizeof nums, "%.6g,%.6g,%.6g,%llu,%.6g,%.6g,%.6g,%.6g,%.0f", r.frameMs, r.minMs, r.maxMs,
-                      (unsigned long long)r.bytes, r.bytesPerPixel, r.rmse, r.psnrTm, r.maxAbs, r.dropped);
-        t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," + std::to_string(r.s.width) + "," +
-             std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + "," + std::to_string(r.s.tileSize) + "," +
-             r.s.lightLists + "," + r.s.gbuffer + "," + r.s.accum + "," + r.status + "," + nums + "," +
-             csvField(device) + "," + csvField(r.error) + "\n";
-    }
-    return t;
+struct View {
+    RenderSettings settings;
+    std::string text;
+};
+
+// Everything but the runs: enough to repeat the sweep and to know what it swept.
+nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuContext& ctx) {
+    nlohmann::json j;
+    j["schema"] = "triptych.sweep/1";
+    j["command_line"] = o.commandLine;
+    j["command"] = shellJoin(o.commandLine);
+    j["seed"] = o.scene.seed;
+    j["scene"] = sceneJson(scene, analyzeScene(scene, 1));
+    j["scene"].erase("lights"); // per run: it depends on the light count
+    j["scene"]["path"] = o.scene.scene.empty() ? "builtin:courtyard" : o.scene.scene;
+    FileHashes files = scene.source.rfind("builtin:", 0) == 0 ? FileHashes{} : hashSceneFiles(scene.source);
+    j["scene"]["files_hash_fnv1a64"] = files.hash.empty() ? nlohmann::json(nullptr) : nlohmann::json(files.hash);
+    j["scene"]["files_hashed"] = files.files;
+    j["scene"]["content_hash_fnv1a64"] = hashSceneContent(scene);
+    j["device"] = deviceJson(ctx);
+    j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"tile", o.tile},
+                 {"light_lists", o.lightLists}, {"gbuffer", o.gbuffer}, {"deferred_lighting", o.deferredLighting},
+                 {"accum", o.accum}, {"tile_capacity", o.tileCapacity}, {"light_types", o.scene.lightTypes},
+                 {"reference_precision", o.referencePrecision}};
+    j["frames"] = o.frames;
+    j["warmup"] = o.warmup;
+    j["reference_frames"] = o.referenceFrames;
+    j["files"] = {"sweep.csv", "sweep.json", "sweep.html"};
+    return j;
 }
 
-std::string sweepHtml(const std::vector<Row>& rows, const std::vector<std::string>& names, const std::string& device,
-                      const std::string& command) {
-    auto series = [&](const std::string& p) { return int(std::find(names.begin(), names.end(), p) - names.begin()); };
-    std::vector<PlotPoint> time, memory, error;
-    std::set<std::string> firstOfKind;
-    for (const Row& r : rows) {
-        if (r.status != "ok") continue;
-        int si = series(r.pipeline);
-        // Time against lights: the first resolution, MSAA and knob values only, one line per pipeline.
-        if (r.s.width == rows.front().s.width && r.s.msaa == rows.front().s.msaa &&
-            firstOfKind.insert(r.pipeline + "/" + std::to_string(r.lights)).second)
-            time.push_back({"", double(r.lights), r.frameMs, si});
-        memory.push_back({"", double(r.s.msaa), double(r.bytes), si});
-        if (r.pipeline != "reference") error.push_back({"", r.frameMs, r.rmse, si});
-    }
-    // Pareto front: no other run is both faster and closer to the reference.
-    for (PlotPoint& p : error) {
-        p.ring = std::none_of(error.begin(), error.end(), [&](const PlotPoint& q) {
-            return q.x <= p.x && q.y <= p.y && (q.x < p.x || q.y < p.y);
-        });
-    }
-    std::string failed;
-    for (const Row& r : rows)
-        if (r.status != "ok") failed += "<li>" + escapeXml(r.pipeline + " (" + std::to_string(r.lights) + " lights): " + r.error) + "</li>";
-    return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych sweep</title><style>"
-           "body{font-family:sans-serif;margin:16px 24px}h2{font-size:18px;border-bottom:1px solid #ccc}"
-           "</style></head><body><h1>triptych sweep</h1><p>Device: <b>" + escapeXml(device) +
-           "</b>. Command: <code>" + escapeXml(command) + "</code>. Every run is a row of sweep.csv.</p>" +
-           (failed.empty() ? "" : "<h2>Failed runs</h2><ul>" + failed + "</ul>") +
-           "<h2>Frame time against light count</h2>" +
-           scatterLogLogSvg(time, "lights", "frame median ms", 720, 440, names) +
-           "<h2>Memory against MSAA</h2>" + scatterLogLogSvg(memory, "MSAA samples", "pipeline bytes", 720, 440, names, false) +
-           "<h2>Error against run time (circled: Pareto front)</h2>" +
-           scatterLogLogSvg(error, "frame median ms", "RMSE vs reference (HDR)", 720, 440, names, false) + "</body></html>\n";
-}
-
-int run(SweepOptions& o, const std::vector<std::string>& commandLine) {
-    checkFrameCounts(o.frames, o.warmup);
-    std::vector<std::string> names = {"reference"};
-    for (const RendererEntry& e : registeredRenderers())
-        if (e.name != "reference" && (o.pipelines.empty() || ("," + o.pipelines + ",").find("," + e.name + ",") != std::string::npos))
-            names.push_back(e.name);
-    std::vector<int> lightCounts;
-    for (const std::string& s : splitList(o.lights, "--lights")) lightCounts.push_back(toInt(s, "--lights"));
-    std::vector<std::string> resolutions = splitList(o.res, "--res"), msaas = splitList(o.msaa, "--msaa");
-    std::unique_ptr<GpuContext> ctx = createContext(o.device);
-    std::vector<std::pair<RenderSettings, std::string>> views; // validated up front: bad input fails before any run
-    for (const std::string& r : resolutions)
-        for (const std::string& m : msaas) views.push_back({makeSettings(ViewOptions{r, toInt(m, "--msaa")}, *ctx), r});
-    size_t total = 0;
-    for (const std::string& n : names) total += knobCombos(n, o, {}).size();
-    total *= lightCounts.size() * views.size();
-    ensureDirectory(o.out);
-
-    std::vector<Row> rows;
-    auto start = std::chrono::steady_clock::now();
-    for (int lights : lightCounts) {
-        SceneOptions so = o.scene;
-        so.lightCount = lights;
-        Scene scene = loadScene(so);
-        SceneGpu gpuScene(*ctx, scene);
-        for (const auto& [view, resText] : views) {
-            SceneFeatures features = analyzeScene(scene, view.msaa);
-            std::optional<RunResult> reference;
-            float ev = 0;
-            for (const std::string& name : names)
-                for (const RenderSettings& s : knobCombos(name, o, view)) {
-                    Result<RunResult> result = Error{"not run"};
-                    try {
-                        RunOptions ro;
-                        ro.warmupFrames = uint32_t(o.warmup);
-                        ro.timedFrames = uint32_t(o.frames);
-                        result = runRenderer(*ctx, gpuScene, **findRenderer(name), features, s, ro);
-                    } catch (const GpuError& e) {
-                        result = Error{std::string("Vulkan error: ") + e.what()};
-                    }
-                    if (name == "reference" && result) {
-                        reference = result.value();
-                        ev = autoExposureEv(reference->hdr);
-                    }
-                    rows.push_back(measureRun(name, lights, s, result, reference ? &*reference : nullptr, ev));
-                    std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
-                    double left = spent.count() / double(rows.size()) * double(total - rows.size());
-                    int filled = int(30 * rows.size() / total);
-                    std::fprintf(stderr, "[%s%s] %zu/%zu %s %d lights %s %ux: %s, %.0f s spent, ~%.0f s left\n",
-                                 std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(),
-                                 rows.size(), total, name.c_str(), lights, resText.c_str(), s.msaa,
-                                 rows.back().status == "ok" ? "ok" : ("FAILED: " + rows.back().error).c_str(),
-                                 spent.count(), left);
-                }
-        }
-    }
-    std::string command;
-    for (const std::string& a : commandLine) command += (command.empty() ? "" : " ") + a;
-    Status s = writeTextFile(o.out + "/sweep.html", sweepHtml(rows, names, ctx->info.name, command));
-    if (s) s = writeTextFile(o.out + "/sweep.csv", csv(rows, ctx->info.name)); // last: marks the sweep complete
+void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows, const std::vector<std::string>& names,
+                  const nlohmann::json& header, const std::string& device) {
+    Status s = writeTextFile(o.out + "/sweep.html", sweepHtml(rows, names, device, shellJoin(o.commandLine)));
+    if (s) s = writeTextFile(o.out + "/sweep.json", sweepJson(header, rows).dump(1) + "\n");
+    if (s) s = writeTextFile(o.out + "/sweep.csv", sweepCsv(rows, device)); // last: marks the sweep complete
     if (!s) throw UsageError(s.error());
-    size_t failed = size_t(std::count_if(rows.begin(), rows.end(), [](const Row& r) { return r.status != "ok"; }));
-    std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv and sweep.html\n", rows.size(), failed,
-                ctx->info.name.c_str(), o.out.c_str());
-    return failed == 0 ? 0 : 5;
 }
 
 } // namespace
 
+int runSweep(const SweepOptions& o) {
+    checkFrameCounts(o.frames, o.warmup);
+    if (o.referenceFrames < 0 || o.referenceFrames > 1000) throw UsageError("--reference-frames must be between 0 and 1000");
+    checkKnobValues(o);
+    std::vector<std::string> names = selectPipelines(o.pipelines);
+    if (o.referenceFrames > 0) names.insert(names.begin(), "reference");
+    std::vector<int> lightCounts;
+    for (const std::string& s : splitList(o.lights, "--lights")) lightCounts.push_back(toInt(s, "--lights"));
+    std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    RenderSettings base;
+    base.tileCapacity = o.tileCapacity;
+    base.referenceFp64 = o.referencePrecision == "fp64";
+    std::vector<View> views; // validated up front: bad input fails before any run
+    for (const std::string& r : splitList(o.res, "--res"))
+        for (const std::string& m : splitList(o.msaa, "--msaa"))
+            views.push_back({makeSettings(ViewOptions{r, toInt(m, "--msaa")}, *ctx, base), r});
+    Progress progress;
+    for (const std::string& n : names) progress.total += knobCombos(n, o, base).size();
+    progress.total *= lightCounts.size() * views.size();
+    progress.references = o.referenceFrames > 0 ? lightCounts.size() * views.size() : 0;
+    ensureDirectory(o.out);
+    for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"}) std::remove((o.out + "/" + f).c_str());
+
+    std::vector<SweepRow> rows;
+    nlohmann::json header;
+    for (int lights : lightCounts) {
+        SceneOptions so = o.scene;
+        so.lightCount = lights;
+        Scene scene = loadScene(so);
+        if (header.is_null()) header = sweepHeader(o, scene, *ctx);
+        const std::string lightsHash = hashLights(scene.lights);
+        SceneGpu gpuScene(*ctx, scene);
+        for (const View& view : views) {
+            SceneFeatures features = analyzeScene(scene, view.settings.msaa);
+            Reference ref;
+            for (const std::string& name : names)
+                for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
+                    const bool isRef = name == "reference";
+                    RunOptions ro = isRef ? progressRunOptions("reference", 0, o.referenceFrames) : RunOptions{};
+                    if (!isRef) {
+                        ro.warmupFrames = uint32_t(o.warmup);
+                        ro.timedFrames = uint32_t(o.frames);
+                    }
+                    auto start = Clock::now();
+                    Result<RunResult> result = runOne(*ctx, gpuScene, name, features, s, ro);
+                    if (isRef && result) {
+                        ref.run = result.value();
+                        ref.ev = autoExposureEv(ref.run->hdr);
+                        ref.peak = brightestFiniteChannel(ref.run->hdr);
+                    }
+                    rows.push_back(measureRun(name, lights, s, result, ref, *ctx));
+                    rows.back().seconds = std::chrono::duration<double>(Clock::now() - start).count();
+                    rows.back().lightsHash = lightsHash;
+                    progress.report(rows.back(), view.text);
+                }
+        }
+    }
+    writeOutputs(o, rows, names, header, ctx->info.name);
+    size_t failed = size_t(std::count_if(rows.begin(), rows.end(), [](const SweepRow& r) { return r.status != "ok"; }));
+    std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and sweep.html\n",
+                rows.size(), failed, ctx->info.name.c_str(), o.out.c_str());
+    return failed == 0 ? 0 : 5;
+}
+
 CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLine) {
     auto o = std::make_shared<SweepOptions>();
-    CLI::App* cmd = app.add_subcommand("sweep", "Every combination of lights, resolution, MSAA and knobs through the "
-                                                "pipelines: sweep.csv and sweep.html");
-    cmd->add_option("scene", o->scene.scene, "Scene: a glTF 2.0 file or builtin:NAME (default builtin:courtyard)");
-    cmd->add_option("--lights", o->lights, "Comma-separated generated light counts")->capture_default_str();
-    cmd->add_option("--seed", o->scene.seed, "Seed of the light generator")->capture_default_str();
-    cmd->add_option("--light-types", o->scene.lightTypes, "Generated light type mix, e.g. point:3,spot:1")->capture_default_str();
-    cmd->add_flag("--no-scene-lights", o->scene.dropSceneLights, "Ignore lights defined in the glTF file");
-    cmd->add_option("--res", o->res, "Comma-separated resolutions WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--msaa", o->msaa, "Comma-separated sample counts")->capture_default_str();
-    cmd->add_option("--tile", o->tile, "Comma-separated tile sizes (tiled pipelines)")->capture_default_str();
-    cmd->add_option("--light-lists", o->lightLists, "Comma-separated Forward+ list layouts")->capture_default_str();
-    cmd->add_option("--gbuffer", o->gbuffer, "Comma-separated deferred G-buffer layouts")->capture_default_str();
-    cmd->add_option("--accum", o->accum, "Comma-separated multipass accumulation precisions")->capture_default_str();
-    cmd->add_option("--pipelines", o->pipelines, "Comma-separated pipelines (default: all)");
-    cmd->add_option("--frames", o->frames, "Timed frames per run")->capture_default_str();
-    cmd->add_option("--warmup", o->warmup, "Warm-up frames per run")->capture_default_str();
-    cmd->add_option("--out", o->out, "Output directory")->capture_default_str();
-    addDeviceOptions(*cmd, o->device);
-    return [o, cmd, commandLine]() { return cmd->parsed() ? run(*o, commandLine) : -1; };
+    o->commandLine = std::move(commandLine);
+    CLI::App* cmd = app.add_subcommand(
+        "sweep", "Every combination of lights, resolution, MSAA and pipeline knobs through the pipelines, the "
+                 "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html");
+    addSweepOptions(*cmd, *o);
+    return [o, cmd]() { return cmd->parsed() ? runSweep(*o) : -1; };
 }
 
 } // namespace tp::cli

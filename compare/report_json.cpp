@@ -12,16 +12,6 @@
 namespace tp::cli {
 namespace {
 
-std::string joinCommandLine(const std::vector<std::string>& args) {
-    std::string out;
-    for (const std::string& a : args) {
-        if (!out.empty()) out += ' ';
-        bool plain = !a.empty() && a.find_first_of(" \t\"'\\$`") == std::string::npos;
-        out += plain ? a : "'" + a + "'";
-    }
-    return out;
-}
-
 double counter(const RunResult& run, const std::string& name, double fallback) {
     for (const auto& [k, v] : run.stats.counters)
         if (k == name) return v;
@@ -66,7 +56,7 @@ nlohmann::json reportJson(const CompareRecord& r) {
     nlohmann::json j;
     j["schema"] = "triptych.report/1";
     j["command_line"] = o.commandLine;
-    j["command"] = joinCommandLine(o.commandLine);
+    j["command"] = shellJoin(o.commandLine);
     bool allOk = std::all_of(r.pipelines.begin(), r.pipelines.end(), [](const PipelineOutcome& p) { return bool(p.run); });
     j["status"] = allOk ? "ok" : "failed";
     j["seed"] = o.scene.seed;
@@ -110,6 +100,18 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["validation_messages"] = r.validationMessages;
     j["files"] = {"lights.json", "report.json", "report.html"};
     return j;
+}
+
+std::string shellJoin(const std::vector<std::string>& args) {
+    std::string out;
+    for (const std::string& a : args) {
+        if (!out.empty()) out += ' ';
+        bool plain = !a.empty() && a.find_first_of(" \t\n\"'\\$`;&|<>()*?[]{}#~!") == std::string::npos;
+        std::string quoted = "'";
+        for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        out += plain ? a : quoted + "'";
+    }
+    return out;
 }
 
 float differencePercentile99(const ImageRGBA& signedDiff) {

@@ -58,6 +58,8 @@ nlohmann::json reportJson(const CompareRecord& r);
 // 99th percentile of the per-pixel max-channel |value| of a signed difference image
 // (non-finite pixels ignored); 0 for an empty image.
 float differencePercentile99(const ImageRGBA& signedDiff);
+// argv as one string a POSIX shell splits back into the same words.
+std::string shellJoin(const std::vector<std::string>& args);
 // FNV-1a 64 of a file's bytes as 16 hex digits; empty when it cannot be read.
 std::string hashFile(const std::string& path);
 

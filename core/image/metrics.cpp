@@ -60,6 +60,14 @@ uint64_t countNonFinitePixels(const ImageRGBA& image) {
     return n;
 }
 
+float brightestFiniteChannel(const ImageRGBA& image) {
+    float peak = 0.0f;
+    for (size_t i = 0; i < image.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c)
+            if (std::isfinite(image.rgba[i * 4 + c])) peak = std::max(peak, image.rgba[i * 4 + c]);
+    return peak > 0.0f ? peak : 1.0f;
+}
+
 ErrorReport computeError(const ImageRGBA& test, const ImageRGBA& reference,
                          const MetricsOptions& options) {
     ErrorReport report;

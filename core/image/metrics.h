@@ -40,6 +40,10 @@ const std::vector<MetricInfo>& metricTable();
 // Pixels with a NaN or Inf in RGB (the nanInfCount of computeError, for a single image).
 uint64_t countNonFinitePixels(const ImageRGBA& image);
 
+// The brightest finite RGB value of an image, 1 when there is none above 0: the PSNR peak of
+// linear HDR comparisons (a fixed 1 would make HDR PSNR depend on the scene's units).
+float brightestFiniteChannel(const ImageRGBA& image);
+
 // Images must have the same size; returns a report with comparedPixels=0 otherwise.
 ErrorReport computeError(const ImageRGBA& test, const ImageRGBA& reference,
                          const MetricsOptions& options = {});

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 #include "compare/commands.h"
 #include "compare/compare.h"
 #include "compare/report_html.h"
+#include "compare/sweep.h"
 #include "compare/svg_plot.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
@@ -223,39 +225,131 @@ TEST(Compare, BadPipelineNameFailsBeforeWritingAnything) {
     EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(Compare, SweepWritesOneRowPerRun) {
-    const std::string out = freshDir("sweep");
+// sweep.csv as one map per row, keyed by the header's column names.
+std::vector<std::map<std::string, std::string>> readCsv(const std::string& path) {
+    std::stringstream csv(readText(path));
+    std::string line;
+    std::getline(csv, line);
+    std::vector<std::string> header;
+    std::stringstream hs(line);
+    for (std::string f; std::getline(hs, f, ',');) header.push_back(f);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(csv, line)) {
+        std::vector<std::string> fields;
+        std::string field;
+        bool quoted = false;
+        for (char c : line) { // the device name is quoted: it holds commas
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) fields.push_back(std::exchange(field, ""));
+            else field += c;
+        }
+        fields.push_back(field);
+        EXPECT_EQ(fields.size(), header.size()) << line;
+        std::map<std::string, std::string> row;
+        for (size_t i = 0; i < std::min(fields.size(), header.size()); ++i) row[header[i]] = fields[i];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+int runSweepCli(std::vector<std::string> args) {
     CLI::App app;
-    std::vector<std::string> argv = {"triptych", "sweep", "builtin:courtyard-small", "--lights", "4,8", "--res", "96x54",
-                                     "--tile", "8,16", "--frames", "1", "--warmup", "0", "--out", out};
+    std::vector<std::string> argv = {"triptych", "sweep"};
+    argv.insert(argv.end(), args.begin(), args.end());
     cli::CommandRunner runner = cli::addSweepCommand(app, argv);
     std::vector<char*> raw;
     for (std::string& a : argv) raw.push_back(a.data());
     app.parse(int(raw.size()), raw.data());
-    ASSERT_EQ(runner(), 0);
-    std::stringstream csv(readText(out + "/sweep.csv"));
-    std::string line;
-    std::getline(csv, line);
-    EXPECT_EQ(line.rfind("pipeline,lights,width,height,msaa,tile,", 0), 0u);
+    return runner();
+}
+
+TEST(Compare, SweepWritesOneRowPerRun) {
+    const std::string out = freshDir("sweep");
+    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4,8", "--res", "96x54", "--tile", "8,16",
+                           "--deferred-lighting", "tiled,volumes", "--frames", "1", "--warmup", "0", "--out", out}),
+              0);
     std::map<std::string, int> runs; // pipeline/lights -> rows
-    std::set<std::string> tiles;
-    while (std::getline(csv, line)) {
-        std::vector<std::string> f;
-        std::stringstream ls(line);
-        std::string field;
-        while (std::getline(ls, field, ',')) f.push_back(field);
-        ASSERT_GE(f.size(), 10u) << line;
-        EXPECT_EQ(f[9], "ok") << line;
-        ++runs[f[0] + "/" + f[1]];
-        if (f[0] == "forwardplus") tiles.insert(f[5]);
+    std::set<std::string> tiles, lighting;
+    const auto rows = readCsv(out + "/sweep.csv");
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("status"), "ok") << row.at("pipeline");
+        ++runs[row.at("pipeline") + "/" + row.at("lights")];
+        if (row.at("pipeline") == "forwardplus") tiles.insert(row.at("tile"));
+        if (row.at("pipeline") == "deferred") lighting.insert(row.at("deferred_lighting"));
+        const bool pipeline = row.at("pipeline") != "reference";
+        for (const char* column : {"rmse_hdr", "psnr_hdr", "max_abs_hdr", "rmse_tonemapped", "psnr_tonemapped",
+                                   "max_abs_tonemapped"})
+            EXPECT_EQ(row.at(column).empty(), !pipeline) << row.at("pipeline") << " " << column;
     }
     for (const RendererEntry& e : registeredRenderers())
         for (const char* lights : {"4", "8"}) EXPECT_GE(runs[e.name + "/" + lights], 1) << e.name << " " << lights;
     EXPECT_EQ(runs["reference/4"], 1); // once per light set
+    EXPECT_EQ(runs["deferred/4"], 4);  // 2 tiles x 2 lighting modes
+    EXPECT_EQ(runs["multipass_forward/4"], 1); // reads neither knob
     EXPECT_EQ(tiles, (std::set<std::string>{"8", "16"}));
+    EXPECT_EQ(lighting, (std::set<std::string>{"tiled", "volumes"}));
+
+    // sweep.json: one entry per row, with every pass's timings, the ledger and every metric.
+    json j = json::parse(readText(out + "/sweep.json"));
+    EXPECT_EQ(j["schema"], "triptych.sweep/1");
+    EXPECT_EQ(j["command_line"][1], "sweep");
+    EXPECT_EQ(j["scene"]["content_hash_fnv1a64"].get<std::string>().size(), 16u);
+    ASSERT_EQ(j["runs"].size(), rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const json& run = j["runs"][i];
+        SCOPED_TRACE(rows[i].at("pipeline"));
+        EXPECT_EQ(run["pipeline"], rows[i].at("pipeline"));
+        EXPECT_EQ(run["settings"]["deferred_lighting"], rows[i].at("deferred_lighting"));
+        ASSERT_GE(run["run"]["timings"].size(), 2u); // the frame and each pass
+        EXPECT_EQ(run["run"]["timings"][0]["pass"], "frame");
+        EXPECT_EQ(std::to_string(run["run"]["memory"]["total_bytes"].get<uint64_t>()), rows[i].at("memory_bytes"));
+        expectMemoryTotal(run["run"]["memory"], rows[i].at("pipeline"));
+        if (run["pipeline"] == "reference") {
+            EXPECT_TRUE(run["error_vs_reference"].is_null());
+            continue;
+        }
+        expectMetrics(run["error_vs_reference"]["hdr"], "hdr");
+        expectMetrics(run["error_vs_reference"]["tonemapped"], "tonemapped");
+    }
     const std::string html = readText(out + "/sweep.html");
     EXPECT_EQ(count(html, "http"), 0u);
     EXPECT_EQ(count(html, "<svg"), 3u);
+}
+
+// A configuration that cannot run is a failed row with its reason, the others still run and
+// the files are written; exit code 5. Without a reference (--reference-frames 0) there are
+// no error figures.
+TEST(Compare, SweepRecordsAFailedRunAndGoesOn) {
+    const std::string out = freshDir("sweep_fail");
+    cli::SweepOptions o;
+    o.scene.scene = "builtin:courtyard-small";
+    o.lights = "4";
+    o.res = "96x54";
+    o.lightLists = "fixed,compact";
+    o.tileCapacity = 0; // refused by the CLI; Forward+ with fixed lists cannot be built with it
+    o.frames = 1;
+    o.warmup = 0;
+    o.referenceFrames = 0;
+    o.pipelines = "forwardplus,multipass_forward";
+    o.out = out;
+    EXPECT_EQ(cli::runSweep(o), 5);
+    const auto rows = readCsv(out + "/sweep.csv");
+    ASSERT_EQ(rows.size(), 3u); // forwardplus fixed, forwardplus compact, multipass_forward
+    EXPECT_EQ(rows[0].at("pipeline"), "forwardplus");
+    EXPECT_EQ(rows[0].at("status"), "failed");
+    EXPECT_NE(rows[0].at("error").find("capacity"), std::string::npos) << rows[0].at("error");
+    EXPECT_EQ(rows[1].at("status"), "ok");
+    EXPECT_EQ(rows[2].at("status"), "ok");
+    for (const auto& row : rows) EXPECT_TRUE(row.at("rmse_hdr").empty());
+    json j = json::parse(readText(out + "/sweep.json"));
+    EXPECT_EQ(j["runs"][0]["status"], "failed");
+    EXPECT_EQ(j["runs"][0]["error"], rows[0].at("error"));
+    EXPECT_NE(readText(out + "/sweep.html").find("Failed runs"), std::string::npos);
+
+    o.deferredLighting = "tiled,sideways"; // bad input: refused before anything runs
+    o.out = freshDir("sweep_bad");
+    EXPECT_THROW(cli::runSweep(o), cli::UsageError);
+    EXPECT_FALSE(fs::exists(o.out));
 }
 
 TEST(Compare, HtmlHelpers) {

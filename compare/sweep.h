@@ -1,0 +1,35 @@
+#pragma once
+// triptych sweep: every combination of light count, resolution, MSAA and the pipeline knobs
+// through the selected pipelines, the reference once per (light count, resolution, MSAA);
+// sweep.csv, sweep.json and sweep.html (docs/report.md). Exposed for the tests, which set
+// values the CLI would refuse.
+#include <string>
+#include <vector>
+
+#include "compare/cli_common.h"
+
+namespace tp::cli {
+
+struct SweepOptions {
+    SceneOptions scene;   // lightCount is ignored: `lights` lists the counts
+    DeviceOptions device;
+    // Comma-separated lists; each value of a knob is run only by the pipelines that read it.
+    std::string lights = "16,64,256", res = "320x180", msaa = "1", tile = "16", lightLists = "compact",
+                gbuffer = "compact", deferredLighting = "tiled", accum = "fp32";
+    std::string pipelines; // empty: every registered one
+    std::string out = "sweep";
+    int frames = 2, warmup = 1;
+    int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
+    uint32_t tileCapacity = 256;
+    std::string referencePrecision = "fp64";
+    std::vector<std::string> commandLine; // recorded in sweep.json
+};
+
+// The sweep's options and their help texts.
+void addSweepOptions(CLI::App& cmd, SweepOptions& o);
+
+// Exit codes: 0 every run ok; 5 the files were written but a run failed (recorded in them).
+// Bad input throws UsageError before anything is rendered.
+int runSweep(const SweepOptions& o);
+
+} // namespace tp::cli
