@@ -269,8 +269,9 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     auto o = std::make_shared<CompareOptions>();
     o->commandLine = std::move(commandLine);
     CLI::App* cmd = app.add_subcommand(
-        "compare", "Render the scene with the reference and each pipeline; write images, difference maps, "
-                   "report.json and report.html");
+        "compare", "Render the scene with the reference and each pipeline (same camera and lights); write images, "
+                   "difference maps against the reference and between pipelines, report.json and report.html. "
+                   "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a pipeline failed");
     addSceneOptions(*cmd, o->scene);
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
@@ -279,7 +280,10 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
         if (e.name != "reference") names += (names.empty() ? "" : ",") + e.name;
     cmd->add_option("--pipelines", o->pipelines,
                     "Comma-separated pipelines to compare with the reference (default: all: " + names + ")");
-    cmd->add_option("--out", o->out, "Output directory (created if missing)")->capture_default_str();
+    cmd->add_option("--out", o->out,
+                    "Output directory (created if missing) for the EXR/PNG images, difference maps, lights.json, "
+                    "report.json and report.html; this run's files there are replaced")
+        ->capture_default_str();
     cmd->add_option("--frames", o->frames, "Timed frames per pipeline (median/min/max are over these)")
         ->capture_default_str();
     cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")->capture_default_str();

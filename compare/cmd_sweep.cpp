@@ -273,10 +273,16 @@ int runSweep(const SweepOptions& o) {
                 }
         }
     }
+    const std::vector<std::string> validation = ctx->validationMessages();
+    header["validation_messages"] = validation;
     writeOutputs(o, rows, names, header, ctx->info.name);
     size_t failed = size_t(std::count_if(rows.begin(), rows.end(), [](const SweepRow& r) { return r.status != "ok"; }));
     std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and sweep.html\n",
                 rows.size(), failed, ctx->info.name.c_str(), o.out.c_str());
+    if (!validation.empty()) {
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(), validation.front().c_str());
+        return 3;
+    }
     return failed == 0 ? 0 : 5;
 }
 
@@ -285,7 +291,8 @@ CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLin
     o->commandLine = std::move(commandLine);
     CLI::App* cmd = app.add_subcommand(
         "sweep", "Every combination of lights, resolution, MSAA and pipeline knobs through the pipelines, the "
-                 "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html");
+                 "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html. "
+                 "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a run failed");
     addSweepOptions(*cmd, *o);
     return [o, cmd]() { return cmd->parsed() ? runSweep(*o) : -1; };
 }

@@ -28,7 +28,8 @@ struct SweepOptions {
 // The sweep's options and their help texts.
 void addSweepOptions(CLI::App& cmd, SweepOptions& o);
 
-// Exit codes: 0 every run ok; 5 the files were written but a run failed (recorded in them).
+// Exit codes: 0 every run ok; 3 validation messages (with --validate; in sweep.json); 5 the
+// files were written but a run failed (recorded in them).
 // Bad input throws UsageError before anything is rendered.
 int runSweep(const SweepOptions& o);
 

@@ -130,10 +130,12 @@ void crossCheck(const std::string& aPath, const std::string& bPath, const std::s
             ASSERT_TRUE(std::isfinite(got[m])) << names[m];
             EXPECT_NEAR(got[m], want[m], halfUnit(got[m]) + std::abs(want[m]) * 0x1p-23) << names[m];
         }
-        if (k == digitShift(rms))
+        if (k == digitShift(rms)) {
             EXPECT_LE(halfUnit(p.rms) / std::ldexp(rms, k), 1e-6) << "RMS resolved to 1e-6";
-        if (k == digitShift(ours.maxAbs))
+        }
+        if (k == digitShift(ours.maxAbs)) {
             EXPECT_LE(halfUnit(p.max) / std::ldexp(ours.maxAbs, k), 1e-6) << "max resolved to 1e-6";
+        }
         EXPECT_EQ(p.maxX, int(ours.maxAbsX));
         EXPECT_EQ(p.maxY, int(ours.maxAbsY));
     }
