@@ -98,18 +98,7 @@ void addSceneOptions(CLI::App& app, SceneOptions& o) {
                    "Default: the built-in courtyard");
     app.add_option("--lights", o.lightCount, "Number of generated lights (added to the scene's own)")
         ->capture_default_str();
-    // The check runs on the text: CLI11 would wrap "-1" to 2^64-1.
-    app.add_option("--seed", o.seed, "Seed of the light generator: same seed, same lights")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                bool digits = !text.empty() && text.size() <= 20 &&
-                              text.find_first_not_of("0123456789") == std::string::npos;
-                return digits && (text.size() < 20 || text <= "18446744073709551615")
-                           ? std::string()
-                           : "'" + text + "' is not a whole number from 0 to 2^64-1";
-            },
-            "UINT64"))
-        ->capture_default_str();
+    addSeedOption(app, o.seed);
     app.add_option("--light-types", o.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, "
                    "e.g. point:3,spot:1")
@@ -121,6 +110,40 @@ void addSceneOptions(CLI::App& app, SceneOptions& o) {
     app.add_option("--lights-file", o.lightsFile,
                    "Read lights from this JSON file instead of generating them (see lights.json in any output)");
     app.add_flag("--no-scene-lights", o.dropSceneLights, "Ignore lights defined in the glTF file");
+}
+
+CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed) {
+    // The check runs on the text: CLI11 would wrap "-1" to 2^64-1.
+    return app.add_option("--seed", seed, "Seed of the light generator: same seed, same lights")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                bool digits = !text.empty() && text.size() <= 20 &&
+                              text.find_first_not_of("0123456789") == std::string::npos;
+                return digits && (text.size() < 20 || text <= "18446744073709551615")
+                           ? std::string()
+                           : "'" + text + "' is not a whole number from 0 to 2^64-1";
+            },
+            "UINT64"))
+        ->capture_default_str();
+}
+
+void checkKnobValue(const std::string& option, const std::string& value) {
+    static const std::vector<std::pair<std::string, std::vector<std::string>>> kValues = {
+        {"--tile", {"8", "16", "32"}},
+        {"--light-lists", {"compact", "fixed", "linked"}},
+        {"--gbuffer", {"compact", "wide"}},
+        {"--deferred-lighting", {"tiled", "volumes"}},
+        {"--accum", {"fp16", "fp32"}}};
+    for (const auto& [name, values] : kValues) {
+        if (name != option) continue;
+        std::string list;
+        for (const std::string& v : values) {
+            if (v == value) return;
+            list += (list.empty() ? "" : ", ") + v;
+        }
+        throw UsageError(option + " '" + value + "': not one of " + list);
+    }
+    throw UsageError(option + ": not a pipeline knob");
 }
 
 void addDeviceOptions(CLI::App& app, DeviceOptions& o) {

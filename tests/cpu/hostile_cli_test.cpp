@@ -1,0 +1,51 @@
+// The CLI's shared option checks (compare/cli_common) on hostile values, without a device; the
+// commands end to end are in tests/cli/hostile_input.sh.
+#include <gtest/gtest.h>
+
+#include "compare/cli_common.h"
+
+using namespace tp::cli;
+
+namespace {
+
+bool seedAccepted(const std::string& text, uint64_t& seed) {
+    CLI::App app;
+    addSeedOption(app, seed);
+    try {
+        app.parse(std::vector<std::string>{text, "--seed"}); // reversed: CLI11 pops the back
+        return true;
+    } catch (const CLI::ParseError&) {
+        return false;
+    }
+}
+
+} // namespace
+
+TEST(HostileCli, SeedIsAWholeNumberThatFits64Bits) {
+    uint64_t seed = 0;
+    EXPECT_TRUE(seedAccepted("18446744073709551615", seed));
+    EXPECT_EQ(seed, UINT64_MAX);
+    EXPECT_TRUE(seedAccepted("7", seed));
+    EXPECT_EQ(seed, 7u);
+    for (const char* bad : {"-1", "18446744073709551616", "99999999999999999999", "1e3", "0x10",
+                            " 5", "", "abc"})
+        EXPECT_FALSE(seedAccepted(bad, seed)) << "'" << bad << "'";
+}
+
+TEST(HostileCli, KnobValuesAsTheSingleOptionsAcceptThem) {
+    EXPECT_NO_THROW(checkKnobValue("--tile", "16"));
+    EXPECT_NO_THROW(checkKnobValue("--gbuffer", "wide"));
+    EXPECT_NO_THROW(checkKnobValue("--deferred-lighting", "volumes"));
+    for (auto [option, value] : std::vector<std::pair<std::string, std::string>>{
+             {"--tile", "0"}, {"--tile", "7"}, {"--tile", "016"}, {"--light-lists", "bogus"},
+             {"--gbuffer", ""}, {"--accum", "fp8"}, {"--deferred-lighting", "Tiled"}}) {
+        try {
+            checkKnobValue(option, value);
+            ADD_FAILURE() << option << " '" << value << "' accepted";
+        } catch (const UsageError& e) {
+            EXPECT_NE(std::string(e.what()).find(option + " '" + value + "'"), std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_THROW(checkKnobValue("--nope", "1"), UsageError);
+}
