@@ -22,7 +22,7 @@ td.l,th.l{text-align:left}td.pass{background:#e3f6e3}td.fail{background:#fde2e2;
 .meta{font-size:13px;color:#444}.meta code{background:#f4f4f4;padding:1px 4px;word-break:break-all}
 .failed{background:#fde2e2;border:1px solid #d33;padding:8px;margin:8px 0}
 .note{background:#fff6d6;border:1px solid #e0c040;padding:6px;margin:8px 0;font-size:13px}
-.grid{display:grid;grid-template-columns:repeat(4,minmax(0,1fr));gap:10px}
+.grid{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:10px;max-width:1000px}
 figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #999}
 figcaption{font-size:12px;color:#333;margin-top:2px}
 details{margin:6px 0}summary{cursor:pointer}
@@ -123,16 +123,18 @@ Result<std::string> caseSection(const json& c, const std::string& outDir) {
     if (c["reference"]["status"] != "ok")
         h += "<div class=\"failed\">reference failed: " + esc(c["reference"].value("error", json(""))) + "</div>\n";
     h += caseTable(c) + boundDetails(c);
-    h += "<p class=\"meta\">Heat maps: |pipeline &minus; reference| (max over RGB, linear) from 0 to " +
-         num(c["difference_scale"]["value"]) + " (one scale per case); magenta: NaN/Inf.</p>\n<div class=\"grid\">\n";
-    for (const json& f : c["reference"]["files"]) {
+    h += "<p class=\"meta\">Per pipeline: the reference, the pipeline, and the heat map of |pipeline &minus; reference| "
+         "(max over RGB, linear) from 0 to " + num(c["difference_scale"]["value"]) +
+         " (one scale per case); magenta: NaN/Inf.</p>\n<div class=\"grid\">\n";
+    std::string ref;
+    for (const json& f : c["reference"]["files"])
         if (f.get<std::string>().ends_with(".png")) {
             Result<std::string> fig = figure(outDir, f, "reference");
             if (!fig) return fig;
-            h += *fig;
+            ref = *fig;
         }
-    }
-    for (const json& p : c["pipelines"])
+    for (const json& p : c["pipelines"]) {
+        h += ref;
         for (const json& f : p["files"]) {
             const std::string file = f;
             if (!file.ends_with(".png")) continue;
@@ -140,6 +142,8 @@ Result<std::string> caseSection(const json& c, const std::string& outDir) {
             if (!fig) return fig;
             h += *fig;
         }
+        if (p["status"] != "ok") h += "<figure><figcaption>" + esc(p["name"]) + " did not run</figcaption></figure><figure></figure>\n";
+    }
     return h + "</div>\n";
 }
 
