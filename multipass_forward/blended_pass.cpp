@@ -1,16 +1,49 @@
-// Blended surfaces, back to front, one draw at a time: its base pass composites
-// ambient + emissive + directional lights over what is behind it (alpha blending), then
-// each light that touches it adds alpha * light (the light shader scales by alpha, blend
-// ONE + ONE). Finishing one draw before the next makes overlapping draws composite as in
-// the reference; only a draw that overlaps itself on screen differs (docs/multipass_forward.md).
+// Blended surfaces, back to front, one draw at a time (the reference's order):
+//   1. composite: ambient + emissive + directional lights, alpha-blended over what is behind,
+//      triangles in the scene's order (as the reference);
+//   2. per light touching the draw: the draw's triangles in REVERSE order, each adding
+//      T * alpha * light, where T, the target's alpha, starts at 1 and is multiplied by
+//      (1 - alpha) at each layer ("under" compositing, front to back in drawing order);
+//      then an alpha-only draw puts T back to 1.
+// Compositing under in reverse order equals compositing over in order, so each light of a
+// draw that overlaps itself (cloth folds, several panels in one mesh) is attenuated by the
+// layers drawn after it exactly as in the reference's single shade-and-blend. Simply adding
+// alpha * light instead (the textbook multipass) overcounts by a_near * a_far * L_far per
+// self-overlap (docs/multipass_forward.md: 48.9 dB instead of 157 dB on the courtyard).
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
 
 std::vector<SpecConstant> directionalSpec(const LightPlan& plan); // base_pass.cpp
+
+namespace {
+
+// Colour += src * T (T = dst alpha); T *= 1 - src alpha.
+VkPipelineColorBlendAttachmentState underBlend() {
+    VkPipelineColorBlendAttachmentState a{};
+    a.blendEnable = VK_TRUE;
+    a.srcColorBlendFactor = VK_BLEND_FACTOR_DST_ALPHA;
+    a.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    a.colorBlendOp = VK_BLEND_OP_ADD;
+    a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+    a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    a.alphaBlendOp = VK_BLEND_OP_ADD;
+    a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                       VK_COLOR_COMPONENT_A_BIT;
+    return a;
+}
+
+VkPipelineColorBlendAttachmentState alphaOnly() {
+    VkPipelineColorBlendAttachmentState a{};
+    a.colorWriteMask = VK_COLOR_COMPONENT_A_BIT;
+    return a;
+}
+
+} // namespace
 
 BlendedPass::BlendedPass(const PassEnv& env) : env_(env) {
     if (env.plan.blended.empty()) return;
@@ -22,33 +55,77 @@ BlendedPass::BlendedPass(const PassEnv& env) : env_(env) {
     base.fragmentShader = "mp_base_frag";
     base.blend = BlendMode::Alpha;
     base_ = createGraphicsPipeline(env.ctx, base);
+    d.blend = BlendMode::Custom;
     d.fragmentShader = "mp_light_frag";
-    d.blend = BlendMode::Additive;
+    d.customBlend = underBlend();
     light_ = createGraphicsPipeline(env.ctx, d);
+    d.fragmentShader = "mp_alpha_reset_frag";
+    d.customBlend = alphaOnly();
+    d.sampleShading = false; // a constant: per-sample coverage is enough
+    reset_ = createGraphicsPipeline(env.ctx, d);
+    createReversedIndices();
 }
 
 BlendedPass::~BlendedPass() {
     destroyPipeline(env_.ctx, base_);
     destroyPipeline(env_.ctx, light_);
+    destroyPipeline(env_.ctx, reset_);
+}
+
+// The triangles of every blended draw that has lights, in reverse order (each triangle's
+// own vertex order kept, so facing is unchanged), in one index buffer of this pipeline.
+void BlendedPass::createReversedIndices() {
+    std::vector<uint32_t> reversed;
+    reversedFirst_.assign(env_.plan.blended.size(), 0);
+    for (size_t b = 0; b < env_.plan.blended.size(); ++b) {
+        const BlendedDraw& bd = env_.plan.blended[b];
+        if (bd.lights.empty()) continue;
+        // The scene's index buffer is its meshes' indices in order (SceneGpu::uploadGeometry).
+        uint32_t first = 0;
+        const Mesh* mesh = nullptr;
+        for (const Mesh& m : env_.scene.scene().meshes) {
+            if (first == bd.draw->firstIndex && uint32_t(m.indices.size()) == bd.draw->indexCount) {
+                mesh = &m;
+                break;
+            }
+            first += uint32_t(m.indices.size());
+        }
+        if (!mesh) throw RendererError("multipass_forward: a blended draw matches no mesh");
+        reversedFirst_[b] = uint32_t(reversed.size());
+        for (size_t t = mesh->indices.size(); t >= 3; t -= 3)
+            reversed.insert(reversed.end(), mesh->indices.begin() + ptrdiff_t(t - 3), mesh->indices.begin() + ptrdiff_t(t));
+    }
+    if (reversed.empty()) return;
+    reversedIndices_ = createBufferWithData(env_.ctx, reversed.data(), reversed.size() * sizeof(uint32_t),
+                                            VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                            {"multipass_forward", "blended", "blended_indices_reversed",
+                                             "lit blended meshes' triangles in reverse order (light passes)"});
 }
 
 void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
     beginShading(pc, t, resolve, false);
     const SceneGpu& scene = env_.scene;
     scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    scene.bindIndexBuffer(pc.cmd);
     const ScreenRect full{0, 0, int32_t(env_.settings.width), int32_t(env_.settings.height)};
     draws_ = 0;
-    for (const BlendedDraw& b : env_.plan.blended) {
+    for (size_t b = 0; b < env_.plan.blended.size(); ++b) {
+        const BlendedDraw& bd = env_.plan.blended[b];
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, base_);
+        scene.bindIndexBuffer(pc.cmd);
         setScissor(pc.cmd, full);
-        recordDraw(pc.cmd, env_.layout, *b.draw);
-        if (!b.lights.empty()) vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
-        for (const auto& [light, scissor] : b.lights) {
+        recordDraw(pc.cmd, env_.layout, *bd.draw);
+        if (!bd.lights.empty())
+            vkCmdBindIndexBuffer(pc.cmd, reversedIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+        DrawItem reversed = *bd.draw;
+        reversed.firstIndex = reversedFirst_[b];
+        for (const auto& [light, scissor] : bd.lights) {
             setScissor(pc.cmd, scissor);
-            recordDraw(pc.cmd, env_.layout, *b.draw, light);
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
+            recordDraw(pc.cmd, env_.layout, reversed, light);
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, reset_);
+            recordDraw(pc.cmd, env_.layout, reversed);
         }
-        draws_ += 1 + uint32_t(b.lights.size());
+        draws_ += 1 + 2 * uint32_t(bd.lights.size());
     }
     endRendering(pc);
 }

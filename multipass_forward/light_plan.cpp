@@ -89,47 +89,38 @@ bool sphereTouchesBox(glm::vec3 center, float radius, const Aabb& box) {
 
 namespace {
 
-// Under MSAA, lavapipe may interpolate a sample's attributes at the pixel centre, which can
-// lie outside the triangle: the shaded position then leaves the mesh's box by up to about
-// a pixel's footprint at its depth (found by a test: a light missing from one sample). The
-// box grows by one pixel footprint at its farthest depth, so culling stays conservative.
-Aabb shadingBounds(const gpu::FrameUniforms& f, const Aabb& box) {
-    if (f.viewport.w <= 1) return box;
-    float maxW = 0.0f;
-    for (int i = 0; i < 8; ++i) {
-        glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                    (i & 4) ? box.max.z : box.min.z);
-        maxW = std::max(maxW, (f.viewProj * glm::vec4(p, 1.0f)).w); // view depth is linear
-    }
-    float perDepth = std::max(2.0f / (f.proj[0][0] * float(f.viewport.x)),
-                              2.0f / (f.proj[1][1] * float(f.viewport.y)));
-    Aabb grown = box;
-    grown.min -= glm::vec3(maxW * perDepth);
-    grown.max += glm::vec3(maxW * perDepth);
-    return grown;
-}
+// Where a fragment's attributes are interpolated decides which point is shaded. At 1x that
+// is the pixel centre, a covered sample, so the shaded position lies on the triangle and in
+// the mesh's box. Under MSAA with per-sample shading, lavapipe interpolates inputs without
+// the `sample` qualifier (scene_inputs.glsl, shared with the reference) at a point of the
+// pixel that may lie outside the triangle: the position is then extrapolated along the
+// triangle's plane, and for a plane seen edge-on that is arbitrarily far from the mesh (a
+// cloth edge shaded 2 m past its box at 96x64; docs/multipass_forward.md). No world-space
+// margin is conservative, but the extrapolated position still projects into the pixel being
+// shaded, so the screen-space tests stay exact: under MSAA only those are used.
+bool shadedInsideBox(const gpu::FrameUniforms& f) { return f.viewport.w <= 1; }
 
 struct VisibleDraw {
     const DrawItem* draw;
     ScreenRect rect;
-    Aabb bounds; // for the light tests (shadingBounds)
+    Aabb bounds;
 };
 
 // The draws of `filter` on screen, with their screen rectangles.
 std::vector<VisibleDraw> visibleDraws(const SceneGpu& scene, DrawFilter filter) {
     std::vector<VisibleDraw> out;
     for (const DrawItem* d : scene.drawList(filter)) {
-        Aabb bounds = shadingBounds(scene.frame(), d->bounds);
-        ScreenRect r = boxScreenRect(scene.frame(), bounds);
-        if (!r.empty()) out.push_back({d, r, bounds});
+        ScreenRect r = boxScreenRect(scene.frame(), d->bounds);
+        if (!r.empty()) out.push_back({d, r, d->bounds});
     }
     return out;
 }
 
-// A draw is lit by a light when its box touches the sphere and their rectangles overlap.
-bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleDraw& d) {
+// A draw is lit by a light when their rectangles overlap and (where shading stays on the
+// triangles, see shadedInsideBox) its box touches the sphere.
+bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleDraw& d, bool boxTest) {
     if (l.type == TP_LIGHT_DIRECTIONAL) return true;
-    return lightRect.overlaps(d.rect) && sphereTouchesBox(l.position, l.range, d.bounds);
+    return lightRect.overlaps(d.rect) && (!boxTest || sphereTouchesBox(l.position, l.range, d.bounds));
 }
 
 } // namespace
@@ -145,6 +136,7 @@ LightPlan planLights(const SceneGpu& scene) {
     for (const VisibleDraw& v : blended) plan.blended.push_back({v.draw, {}});
 
     const std::vector<gpu::LightGpu>& lights = scene.lightsGpu();
+    const bool boxTest = shadedInsideBox(f);
     for (uint32_t i = 0; i < scene.lightCount(); ++i) {
         const gpu::LightGpu& l = lights[i];
         if (l.type == TP_LIGHT_DIRECTIONAL && plan.baseDirectional.size() < TP_MP_MAX_BASE_DIRECTIONAL) {
@@ -158,10 +150,10 @@ LightPlan planLights(const SceneGpu& scene) {
         if (!batch.scissor.empty()) {
             for (auto* list : {&opaque, &masked})
                 for (const VisibleDraw& v : *list)
-                    if (touches(l, batch.scissor, v)) batch.draws.push_back(v.draw);
+                    if (touches(l, batch.scissor, v, boxTest)) batch.draws.push_back(v.draw);
             meshes = uint32_t(batch.draws.size());
             for (size_t b = 0; b < blended.size(); ++b)
-                if (touches(l, batch.scissor, blended[b])) {
+                if (touches(l, batch.scissor, blended[b], boxTest)) {
                     plan.blended[b].lights.push_back({i, batch.scissor});
                     ++meshes;
                 }

@@ -4,7 +4,8 @@
 //   base_pass      ambient + emissive + directional lights, depth EQUAL
 //   light_passes   one additive pass per point/spot light over the meshes its sphere
 //                  touches, scissored to its screen rectangle, depth EQUAL
-//   blended        blended draws back to front: composite, then alpha-scaled light passes
+//   blended        blended draws back to front: composite, then each light composited
+//                  under the draw's own layers (exact for self-overlapping meshes)
 // The accumulation target is RGBA16F or RGBA32F (settings.accum); MSAA shades per sample
 // and resolves into hdr. See docs/multipass_forward.md.
 #include <memory>

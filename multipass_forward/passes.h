@@ -9,6 +9,7 @@
 
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
 #include "core/render/settings.h"
 #include "multipass_forward/light_plan.h"
 
@@ -94,7 +95,8 @@ class LightPasses {
 };
 
 // 4. Blended draws back to front; each one's base pass composites over what is behind it,
-// then its lights add alpha-scaled, before the next draw starts.
+// then each light adds under the draw's own layers (reverse triangle order, transmittance
+// in the target's alpha), before the next draw starts.
 class BlendedPass {
   public:
     explicit BlendedPass(const PassEnv& env);
@@ -103,8 +105,12 @@ class BlendedPass {
     uint32_t draws() const { return draws_; }
 
   private:
+    void createReversedIndices();
+
     const PassEnv env_;
-    VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE;
+    VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
+    Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
+    std::vector<uint32_t> reversedFirst_; // per plan.blended entry: its first index there
     uint32_t draws_ = 0;
 };
 

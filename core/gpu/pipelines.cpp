@@ -100,7 +100,8 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
     depth.depthTestEnable = d.depthTest;
     depth.depthWriteEnable = d.depthWrite;
     depth.depthCompareOp = d.depthCompare;
-    std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size(), blendState(d.blend));
+    std::vector<VkPipelineColorBlendAttachmentState> blends(
+        d.colorFormats.size(), d.blend == BlendMode::Custom ? d.customBlend : blendState(d.blend));
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = uint32_t(blends.size());
     blend.pAttachments = blends.data();

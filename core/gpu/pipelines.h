@@ -19,7 +19,7 @@ struct SpecConstant {
     uint32_t value; // bools as 0/1
 };
 
-enum class BlendMode { None, Alpha, Additive };
+enum class BlendMode { None, Alpha, Additive, Custom }; // Custom: GraphicsPipelineDesc::customBlend
 
 struct GraphicsPipelineDesc {
     std::string vertexShader = "scene_vert";
@@ -33,6 +33,9 @@ struct GraphicsPipelineDesc {
     bool depthWrite = true;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER; // reverse-Z
     BlendMode blend = BlendMode::None;
+    // Used as given with BlendMode::Custom (multipass forward's transmittance passes need
+    // factors and write masks the named modes do not have).
+    VkPipelineColorBlendAttachmentState customBlend{};
     VkPipelineLayout layout = VK_NULL_HANDLE;
 };
 
