@@ -299,7 +299,7 @@ TEST(MultipassForward, BlendedMeshOverlappingItselfCompositesLikeTheReference) {
         const uint32_t mat = uint32_t(scene.materials.size() - 1);
         const float x = i == 0 ? -2.5f : 0.5f;
         Mesh far = quad({x, 0.2f, -1.5f}, {2.0f, 0, 0}, {0, 2.0f, 0}, mat);
-        Mesh near = quad({x + 0.8f, 0.1f, 1.5f}, {2.0f, 0, 0}, {0, 1.5f, 0}, mat);
+        Mesh near = quad({x + 0.8f, 0.1f, 1.5f}, {2.0f, 0, 0}, {0, 3.4f, 0}, mat); // hides all of `far`
         Mesh& first = i == 0 ? far : near; // mesh 0: far pane first; mesh 1: near pane first
         const Mesh& second = i == 0 ? near : far;
         for (uint32_t idx : second.indices) first.indices.push_back(idx + uint32_t(first.positions.size()));
