@@ -107,7 +107,7 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
     const SceneGpu& scene = env_.scene;
     scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
     const ScreenRect full{0, 0, int32_t(env_.settings.width), int32_t(env_.settings.height)};
-    draws_ = 0;
+    draws_ = lightDraws_ = 0;
     for (size_t b = 0; b < env_.plan.blended.size(); ++b) {
         const BlendedDraw& bd = env_.plan.blended[b];
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, base_);
@@ -126,6 +126,7 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
             recordDraw(pc.cmd, env_.layout, reversed);
         }
         draws_ += 1 + 2 * uint32_t(bd.lights.size());
+        lightDraws_ += uint32_t(bd.lights.size());
     }
     endRendering(pc);
 }

@@ -94,6 +94,7 @@ RendererStats MultipassForwardRenderer::stats() const {
     count("base_pass_draws", baseDraws);
     count("light_passes_draws", lightDraws);
     count("blended_draws", blendDraws);
+    count("blended_light_draws", blended_ ? blended_->lightDraws() : 0);
     count("local_lights", plan_.localLights);
     count("lights_skipped", plan_.lightsSkipped);
     count("base_pass_directional_lights", double(plan_.baseDirectional.size()));

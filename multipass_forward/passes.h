@@ -103,6 +103,7 @@ class BlendedPass {
     ~BlendedPass();
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
+    uint32_t lightDraws() const { return lightDraws_; } // of draws(); each has a reset too
 
   private:
     void createReversedIndices();
@@ -111,7 +112,7 @@ class BlendedPass {
     VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
     Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
     std::vector<uint32_t> reversedFirst_; // per plan.blended entry: its first index there
-    uint32_t draws_ = 0;
+    uint32_t draws_ = 0, lightDraws_ = 0;
 };
 
 } // namespace tp::mp

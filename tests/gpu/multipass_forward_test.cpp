@@ -112,6 +112,18 @@ std::vector<Light> generated(const Scene& scene, uint32_t count) {
     return generateLights(scene.bounds, o);
 }
 
+// The counters agree with each other: every draw is in one pass; each local light's meshes
+// are its opaque/masked draws plus its blended draws (each of those adds a reset draw).
+void expectConsistentStats(const RunResult& mp) {
+    const double light = statOf(mp, "light_passes_draws"), blended = statOf(mp, "blended_draws");
+    const double blendedLight = statOf(mp, "blended_light_draws");
+    EXPECT_EQ(statOf(mp, "draws"), statOf(mp, "depth_prepass_draws") + statOf(mp, "base_pass_draws") + light + blended);
+    EXPECT_NEAR(statOf(mp, "meshes_per_light_mean") * statOf(mp, "local_lights"), light + blendedLight, 1e-6);
+    EXPECT_GE(blended, 2.0 * blendedLight);
+    EXPECT_LE(statOf(mp, "meshes_per_light_max"), light + blendedLight);
+    EXPECT_LE(statOf(mp, "lights_skipped"), statOf(mp, "local_lights"));
+}
+
 struct Case {
     uint32_t lights;
     uint32_t msaa;
@@ -141,6 +153,7 @@ void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w,
         if (c.lights > 0) {
             EXPECT_GT(statOf(mp, "light_passes_draws"), 0.0);
         }
+        expectConsistentStats(mp);
         std::printf("[   info   ] %u lights %ux: worst/bound %.3g, max abs %.3g, rmse %.3g; without the "
                     "blended layers' share: worst/bound %.3g\n", c.lights, c.msaa, b.worstRatio, b.maxAbs,
                     b.rmse, checkBound(mp.hdr, ref.hdr, c.lights, kEps32).worstRatio);
@@ -321,6 +334,8 @@ TEST(MultipassForward, BlendedMeshOverlappingItselfCompositesLikeTheReference) {
         RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
         RunResult ref = runOrFail(*ctx, gpu, "reference", s);
         EXPECT_EQ(statOf(mp, "blended_draws"), 2.0 + 2.0 * 4.0);
+        EXPECT_EQ(statOf(mp, "blended_light_draws"), 4.0);
+        expectConsistentStats(mp);
         std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
         BoundCheck b = checkBound(mp.hdr, ref.hdr, double(lights.size()), kEps32, &layers);
         EXPECT_LE(b.worstRatio, 1.0) << msaa << "x: max abs " << b.maxAbs;
