@@ -127,25 +127,6 @@ CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed) {
         ->capture_default_str();
 }
 
-void checkKnobValue(const std::string& option, const std::string& value) {
-    static const std::vector<std::pair<std::string, std::vector<std::string>>> kValues = {
-        {"--tile", {"8", "16", "32"}},
-        {"--light-lists", {"compact", "fixed", "linked"}},
-        {"--gbuffer", {"compact", "wide"}},
-        {"--deferred-lighting", {"tiled", "volumes"}},
-        {"--accum", {"fp16", "fp32"}}};
-    for (const auto& [name, values] : kValues) {
-        if (name != option) continue;
-        std::string list;
-        for (const std::string& v : values) {
-            if (v == value) return;
-            list += (list.empty() ? "" : ", ") + v;
-        }
-        throw UsageError(option + " '" + value + "': not one of " + list);
-    }
-    throw UsageError(option + ": not a pipeline knob");
-}
-
 void addDeviceOptions(CLI::App& app, DeviceOptions& o) {
     app.add_option("--device", o.device,
                    "Vulkan device by index or name substring (default: a discrete GPU if present, else "

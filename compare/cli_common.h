@@ -47,10 +47,6 @@ void addSceneOptions(CLI::App& app, SceneOptions& o);
 // --seed with its check (CLI11 alone would wrap "-1" to 2^64-1); for commands that add the
 // scene options one by one (sweep).
 CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed);
-// One value of a pipeline knob given as a list (sweep's --tile 8,16), checked against what the
-// single-valued option accepts: --tile 8/16/32, --light-lists compact/fixed/linked,
-// --gbuffer compact/wide, --deferred-lighting tiled/volumes, --accum fp16/fp32.
-void checkKnobValue(const std::string& option, const std::string& value);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
 // Pipeline knobs (tile size, list layout, G-buffer, lighting mode, accumulation, reference

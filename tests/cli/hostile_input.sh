@@ -116,6 +116,9 @@ expect_refusal "sweep --res zero" "--res" sweep --res 0x0 "${o[@]}"
 expect_refusal "sweep --msaa unsupported" "--msaa" sweep --msaa 1,16 "${o[@]}"
 expect_refusal "sweep --frames zero" "--frames" sweep --frames 0 "${o[@]}"
 expect_refusal "sweep --light-types unknown" "--light-types" sweep --light-types laser "${o[@]}"
+expect_refusal "sweep --tile unsupported" "--tile" sweep --tile 16,7 "${o[@]}"
+expect_refusal "sweep --gbuffer unknown" "--gbuffer" sweep --gbuffer compact,bogus "${o[@]}"
+expect_refusal "sweep --pipelines unknown" "--pipelines" sweep --pipelines nope "${o[@]}"
 expect_refusal "sweep scene missing" "/nonexistent.glb" sweep /nonexistent.glb --lights 1 --res 8x8 "${o[@]}"
 expect_refusal "info --res malformed" "--res" info --res 8by8
 expect_refusal "info --msaa unsupported" "--msaa" info --msaa 3

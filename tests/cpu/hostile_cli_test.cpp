@@ -31,21 +31,3 @@ TEST(HostileCli, SeedIsAWholeNumberThatFits64Bits) {
                             " 5", "", "abc"})
         EXPECT_FALSE(seedAccepted(bad, seed)) << "'" << bad << "'";
 }
-
-TEST(HostileCli, KnobValuesAsTheSingleOptionsAcceptThem) {
-    EXPECT_NO_THROW(checkKnobValue("--tile", "16"));
-    EXPECT_NO_THROW(checkKnobValue("--gbuffer", "wide"));
-    EXPECT_NO_THROW(checkKnobValue("--deferred-lighting", "volumes"));
-    for (auto [option, value] : std::vector<std::pair<std::string, std::string>>{
-             {"--tile", "0"}, {"--tile", "7"}, {"--tile", "016"}, {"--light-lists", "bogus"},
-             {"--gbuffer", ""}, {"--accum", "fp8"}, {"--deferred-lighting", "Tiled"}}) {
-        try {
-            checkKnobValue(option, value);
-            ADD_FAILURE() << option << " '" << value << "' accepted";
-        } catch (const UsageError& e) {
-            EXPECT_NE(std::string(e.what()).find(option + " '" + value + "'"), std::string::npos)
-                << e.what();
-        }
-    }
-    EXPECT_THROW(checkKnobValue("--nope", "1"), UsageError);
-}
