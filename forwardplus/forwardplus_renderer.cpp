@@ -206,8 +206,9 @@ class ForwardPlusRenderer final : public Renderer {
             indexPurpose_ = "light indices, " + std::to_string(settings_.tileCapacity) + " slots per tile" +
                             (twoLists_ ? " and list" : "");
         } else {
-            const gpu::FrameUniforms& f = scene_.frame();
-            tileBound_ = fp::conservativeTileBound(grid_, f.view, f.proj, scene_.lightsGpu(), classes_.local);
+            // The uploaded (camera-relative) view and lights: what the culling shader tests.
+            const gpu::FrameUniforms& f = scene_.shadingFrame();
+            tileBound_ = fp::conservativeTileBound(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local);
             tileOffsets_.assign(tileCount + 1, 0);
             uint64_t total = 0;
             for (uint64_t t = 0; t < tileCount; ++t) {

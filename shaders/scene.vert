@@ -15,13 +15,19 @@ layout(location = 4) out vec4 outColor;
 // Debian 12 reject the Invariant decoration glslang puts on the gl_PerVertex member, and
 // forbidding FMA contraction is what keeps the position bit-identical across pipelines.
 
+// Camera-relative (shared.h, FrameUniforms): the position leaves here minus the eye, so the
+// rasterizer, the interpolants and the shading never carry the eye's magnitude. Far from the
+// origin (|p|, |eye| ~ 1e6 and |p - eye| < |eye|) the subtraction is exact (Sterbenz); near it
+// the result is correctly rounded. The vertices are world space with no model transform.
+
 void main() {
     Vertex v = vertices[gl_VertexIndex];
-    outPosition = v.positionU.xyz;
+    precise vec3 relative = v.positionU.xyz - frame.eyeWorld.xyz;
+    outPosition = relative;
     outNormal = v.normalV.xyz;
     outUv = vec2(v.positionU.w, v.normalV.w);
     outTangent = v.tangent;
     outColor = v.color;
-    precise vec4 clip = frame.viewProj * vec4(v.positionU.xyz, 1.0);
+    precise vec4 clip = frame.viewProj * vec4(relative, 1.0);
     gl_Position = clip;
 }

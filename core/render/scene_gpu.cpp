@@ -24,7 +24,35 @@ gpu::LightGpu toGpu(const Light& light) {
     return g;
 }
 
-SceneGpu::SceneGpu(GpuContext& ctx, const Scene& scene) : ctx_(ctx), scene_(scene) {
+namespace {
+
+// One FrameUniforms from a view in double: viewProj rounded once from the exact product, its
+// inverse taken from the rounded matrix the rasterizer uses (reconstruction inverts what
+// produced the depth).
+gpu::FrameUniforms makeFrame(const glm::dmat4& view, const glm::mat4& proj) {
+    gpu::FrameUniforms f{};
+    f.view = glm::mat4(view);
+    f.proj = proj;
+    f.viewProj = glm::mat4(glm::dmat4(proj) * view);
+    f.invProj = glm::mat4(glm::inverse(glm::dmat4(proj)));
+    f.invViewProj = glm::mat4(glm::inverse(glm::dmat4(f.viewProj)));
+    return f;
+}
+
+float roundDown(double v) {
+    float f = float(v);
+    return double(f) > v ? std::nextafter(f, -INFINITY) : f;
+}
+
+float roundUp(double v) {
+    float f = float(v);
+    return double(f) < v ? std::nextafter(f, INFINITY) : f;
+}
+
+} // namespace
+
+SceneGpu::SceneGpu(GpuContext& ctx, const Scene& scene)
+    : ctx_(ctx), scene_(scene), eye_(glm::dvec3(scene.camera.position)) {
     uploadGeometry();
     uploadMaterials();
     uploadTextures();
@@ -108,27 +136,48 @@ void SceneGpu::setLights(const std::vector<Light>& lights) {
         hasSpot_ |= l.type == LightType::Spot;
     }
     lightCount_ = uint32_t(lights.size());
-    lights_ = createBufferWithData(ctx_, lightsGpu_.data(), lightsGpu_.size() * sizeof(gpu::LightGpu),
+    uploadLights();
+}
+
+// The uploaded lights: positions relative to the eye, subtracted in double and rounded once.
+void SceneGpu::uploadLights() {
+    shadingLights_ = lightsGpu_;
+    for (gpu::LightGpu& l : shadingLights_) l.position = toShading(l.position);
+    lights_ = createBufferWithData(ctx_, shadingLights_.data(), shadingLights_.size() * sizeof(gpu::LightGpu),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "lights", "light array"});
     writeLightDescriptor();
-    frame_.viewport.z = lightCount_;
-    std::memcpy(frameBuffer_.mapped, &frame_, sizeof(frame_));
+    frame_.viewport.z = shadingFrame_.viewport.z = lightCount_;
+    std::memcpy(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_));
+}
+
+glm::vec3 SceneGpu::toShading(glm::vec3 world) const { return glm::vec3(glm::dvec3(world) - eye_); }
+
+Aabb SceneGpu::toShading(const Aabb& world) const {
+    if (world.empty()) return world;
+    Aabb r;
+    for (int i = 0; i < 3; ++i) {
+        r.min[i] = roundDown(double(world.min[i]) - eye_[i]);
+        r.max[i] = roundUp(double(world.max[i]) - eye_[i]);
+    }
+    return r;
 }
 
 void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
     const Camera& cam = scene_.camera;
-    glm::mat4 view = viewMatrix(cam);
     glm::mat4 proj = reverseZPerspective(cam.yfov, float(width) / float(height), cam.znear, cam.zfar);
-    frame_.view = view;
-    frame_.proj = proj;
-    frame_.viewProj = proj * view;
-    frame_.invProj = glm::inverse(proj);
-    frame_.invViewProj = glm::inverse(frame_.viewProj);
-    frame_.cameraPosition = glm::vec4(cam.position, 1.0f);
-    frame_.ambient = glm::vec4(scene_.ambient, 0.0f);
-    frame_.viewport = glm::uvec4(width, height, lightCount_, msaaSamples);
-    frame_.projParams = glm::vec4(cam.znear, cam.zfar, 0.0f, 0.0f);
-    std::memcpy(frameBuffer_.mapped, &frame_, sizeof(frame_));
+    frame_ = makeFrame(viewMatrixWorld(cam), proj);
+    shadingFrame_ = makeFrame(viewRotation(cam), proj);
+    for (gpu::FrameUniforms* f : {&frame_, &shadingFrame_}) {
+        f->eyeWorld = glm::vec4(cam.position, 1.0f);
+        f->ambient = glm::vec4(scene_.ambient, 0.0f);
+        f->viewport = glm::uvec4(width, height, lightCount_, msaaSamples);
+        f->projParams = glm::vec4(cam.znear, cam.zfar, 0.0f, 0.0f);
+    }
+    if (glm::dvec3(cam.position) != eye_) { // the camera moved: the relative lights follow
+        eye_ = glm::dvec3(cam.position);
+        uploadLights();
+    }
+    std::memcpy(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_));
 }
 
 std::vector<SpecConstant> SceneGpu::specConstants(AlphaMode mode) const {
@@ -164,8 +213,10 @@ std::vector<const DrawItem*> SceneGpu::drawList(DrawFilter filter) const {
     for (const DrawItem& d : draws_)
         if (uint32_t(d.alphaMode) == uint32_t(filter)) items.push_back(&d);
     if (filter == DrawFilter::Blend) {
-        glm::vec3 eye = scene_.camera.position;
-        auto dist = [&](const DrawItem* d) { return glm::length(d->bounds.center() - eye); };
+        // In double: far from the origin fp32 world distances differ by whole spacings.
+        auto dist = [&](const DrawItem* d) {
+            return glm::length((glm::dvec3(d->bounds.min) + glm::dvec3(d->bounds.max)) * 0.5 - eye_);
+        };
         std::stable_sort(items.begin(), items.end(),
                          [&](const DrawItem* a, const DrawItem* b) { return dist(a) > dist(b); });
     }

@@ -22,7 +22,7 @@ struct DrawItem {
     uint32_t material = 0;
     AlphaMode alphaMode = AlphaMode::Opaque;
     bool doubleSided = false;
-    Aabb bounds;
+    Aabb bounds; // world space (SceneGpu::toShading for camera-relative)
 };
 
 enum class DrawFilter { Opaque, Mask, Blend };
@@ -56,9 +56,20 @@ class SceneGpu {
     void bindIndexBuffer(VkCommandBuffer cmd) const;
 
     const Scene& scene() const { return scene_; }
+    // What the GPU gets: camera-relative (shared.h, FrameUniforms; docs/shading.md). CPU code
+    // that must agree with the shaders (culling bounds, light scissors) uses these.
+    const gpu::FrameUniforms& shadingFrame() const { return shadingFrame_; }
+    const std::vector<gpu::LightGpu>& shadingLights() const { return shadingLights_; }
+    // World -> camera-relative, in double, rounded to fp32 like the uploaded data (the box
+    // rounded outward, so it still holds every relative vertex position of its mesh).
+    glm::vec3 toShading(glm::vec3 world) const;
+    Aabb toShading(const Aabb& world) const;
+    // World-space copies (fp32 matrices composed in double, lights as the scene has them) for
+    // CPU code that works in world coordinates. Far from the origin fp32 cannot hold world
+    // positions precisely: prefer the shading versions there.
     const gpu::FrameUniforms& frame() const { return frame_; }
-    uint32_t lightCount() const { return lightCount_; }
     const std::vector<gpu::LightGpu>& lightsGpu() const { return lightsGpu_; }
+    uint32_t lightCount() const { return lightCount_; }
     VkDescriptorSetLayout setLayout() const { return setLayout_; }
     const Buffer& lightBuffer() const { return lights_; }
 
@@ -78,8 +89,11 @@ class SceneGpu {
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     std::vector<DrawItem> draws_;
-    gpu::FrameUniforms frame_{};
-    std::vector<gpu::LightGpu> lightsGpu_;
+    void uploadLights();
+
+    gpu::FrameUniforms frame_{}, shadingFrame_{};
+    std::vector<gpu::LightGpu> lightsGpu_, shadingLights_;
+    glm::dvec3 eye_{0.0};
     uint32_t lightCount_ = 0;
     bool hasSpot_ = false;
 };

@@ -61,7 +61,10 @@ float meanDepth(ivec2 p) {
     return d / float(kSamples);
 }
 
-// World position from a reverse-Z depth at a pixel-relative location.
+// Camera-relative position (world minus eye, as scene.vert interpolates it) from a reverse-Z
+// depth at a pixel-relative location: invViewProj is built from the rotation-only view, so
+// the result's error scales with the distance to the eye, not with the distance to the
+// world origin.
 vec3 reconstructPosition(ivec2 p, vec2 offset, float depth) {
     vec2 size = vec2(frame.viewport.xy);
     vec2 ndc = vec2((float(p.x) + offset.x) / size.x * 2.0 - 1.0,
@@ -91,7 +94,7 @@ SurfaceSample readSurface(ivec2 p, uint s, vec3 position) {
     SurfaceSample ss;
     ss.position = position;
     ss.normal = fetchNormal(p, s);
-    vec3 toViewer = frame.cameraPosition.xyz - ss.position;
+    vec3 toViewer = -ss.position; // camera-relative: the viewer is at the origin
     float vl = length(toViewer);
     ss.toViewer = vl > 0.0 ? toViewer / vl : ss.normal;
     ss.baseColor = base.rgb;

@@ -16,7 +16,10 @@
 layout(constant_id = TP_DEF_SPEC_SPHERE_SCALE) const float kSphereScale = 1.0;
 layout(location = 0) flat out uint outLight;
 
-// World-space growth that moves the projected silhouette out by >= 1 pixel everywhere: a
+// Positions are camera-relative (shared.h, FrameUniforms): the eye is at the origin, so
+// length(light.position) is the light's distance from it.
+
+// Growth that moves the projected silhouette out by >= 1 pixel everywhere: a
 // ball of radius m at distance D subtends >= m / D radians, and a pixel subtends <= 1/f
 // radians anywhere on screen (f = focal length in pixels; the projection only stretches
 // off-axis), so m = D / f with D bounding the distance of every point of the region.
@@ -24,12 +27,12 @@ float pixelMargin(LightGpu light) {
     float fx = abs(frame.proj[0][0]) * float(frame.viewport.x);
     float fy = abs(frame.proj[1][1]) * float(frame.viewport.y);
     float focalPx = 0.5 * min(fx, fy);
-    return (length(light.position - frame.cameraPosition.xyz) + light.range) / focalPx;
+    return (length(light.position) + light.range) / focalPx;
 }
 
 // The cone grown by `margin` in every direction: the same half-angle with its apex moved
 // back by margin / sin(outer) (a parallel offset of the sides) and its cap pushed out by
-// margin. Returns the world position of vertex k and the distance bound of the mesh.
+// margin. Returns the (camera-relative) position of vertex k and the distance bound of the mesh.
 vec3 coneVertex(LightGpu light, uint k, float margin, out float extent) {
     float cosOuter = -light.spotOffset / light.spotScale;
     float sinOuter = sqrt(max(1.0 - cosOuter * cosOuter, 1e-8));
@@ -58,18 +61,18 @@ void main() {
     }
     float margin = pixelMargin(light);
     float extent;
-    vec3 world;
+    vec3 position;
     if (cone) {
-        world = coneVertex(light, k, margin, extent);
+        position = coneVertex(light, k, margin, extent);
     } else {
         extent = (light.range + margin) * kSphereScale;
-        world = light.position + volumeSphereVertex(k) * extent;
+        position = light.position + volumeSphereVertex(k) * extent;
     }
-    vec4 clip = frame.viewProj * vec4(world, 1.0);
+    vec4 clip = frame.viewProj * vec4(position, 1.0);
     // A finite far plane would clip back faces beyond it: a volume that may reach past it
     // is flattened onto depth 0, which passes the depth test everywhere (conservative).
     float far = frame.projParams.y;
-    if (far > 0.0 && length(light.position - frame.cameraPosition.xyz) + extent > 0.999 * far)
+    if (far > 0.0 && length(light.position) + extent > 0.999 * far)
         clip.z = 0.0;
     gl_Position = clip;
 }

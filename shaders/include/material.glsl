@@ -47,7 +47,7 @@ MaterialSample evalMaterial(MaterialGpu m, vec3 position, vec3 normal, vec2 uv, 
 
     r.surface.position = position;
     r.surface.normal = n;
-    vec3 toViewer = frame.cameraPosition.xyz - position;
+    vec3 toViewer = -position; // camera-relative: the viewer is at the origin
     float vl = length(toViewer);
     r.surface.toViewer = vl > 0.0 ? toViewer / vl : n;
     r.surface.baseColor = base.rgb;

@@ -81,13 +81,19 @@ TP_STRUCT(LightGpu) {
 };
 
 // std140 uniform buffer: mat4 and vec4 only.
+// Camera-relative (docs/shading.md, "Camera-relative shading"): as uploaded, every position
+// the shaders see is world position minus the eye: scene.vert subtracts eyeWorld from the
+// (world-space) vertices, LightGpu.position is uploaded relative to the eye (in double on
+// the CPU), `view` is the rotation only (the eye at the origin) and viewProj / invViewProj
+// are built from it; the viewer is at the origin (toViewer = -position). Only scene.vert
+// may use eyeWorld. SceneGpu::frame() keeps a world-space copy for CPU code.
 TP_STRUCT(FrameUniforms) {
-    mat4 view;
+    mat4 view;        // camera-relative -> view space: rotation only
     mat4 proj;
-    mat4 viewProj;
+    mat4 viewProj;    // proj * view: camera-relative -> clip
     mat4 invProj;
-    mat4 invViewProj;
-    vec4 cameraPosition; // xyz, w unused
+    mat4 invViewProj; // clip -> camera-relative
+    vec4 eyeWorld;    // xyz: the eye in world space (scene.vert's subtraction only), w unused
     vec4 ambient;        // rgb ambient radiance
     uvec4 viewport;      // width, height, light count, msaa samples
     vec4 projParams;     // znear, zfar (0 = infinite), unused, unused

@@ -25,17 +25,10 @@ using nlohmann::json;
 
 // "case/pipeline" -> why it fails today (docs/stress.md, "Known failures").
 const std::map<std::string, std::string>& knownFailures() {
-    static const std::map<std::string, std::string> known = {
-        {"light-on-surface/deferred",
-         "positions reconstructed from depth leave the floor plane by ~1e-6 m, so a light centred in the plane "
-         "(where n.l = 0 exactly for the reference) lights the floor around it"},
-        {"far-from-origin/deferred",
-         "positions reconstructed from depth with the inverse view-projection at 1e6: fp32 loses them "
-         "(camera-relative reconstruction needed)"},
-        {"far-from-origin/multipass_forward",
-         "CPU light scissors computed at 1e6 in fp32 cut off one column of a light's pixels (0.06 m error, "
-         "more than the one-pixel margin)"},
-    };
+    // Empty since shading became camera-relative (docs/shading.md): far-from-origin
+    // (deferred, multipass) and light-on-surface (deferred) pass; docs/stress.md says how
+    // robust each pass is.
+    static const std::map<std::string, std::string> known = {};
     return known;
 }
 
