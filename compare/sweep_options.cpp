@@ -49,7 +49,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
                    "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
         ->check(CLI::IsMember({"fp32", "fp64"}))
         ->capture_default_str();
-    cmd.add_option("--seed", o.scene.seed, "Seed of the light generator: same seed, same lights")->capture_default_str();
+    addSeedOption(cmd, o.scene.seed);
     cmd.add_option("--light-types", o.scene.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, e.g. point:3,spot:1")
         ->capture_default_str();
