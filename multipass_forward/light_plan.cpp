@@ -106,12 +106,15 @@ struct VisibleDraw {
     Aabb bounds;
 };
 
-// The draws of `filter` on screen, with their screen rectangles.
+// The draws of `filter` on screen, with their screen rectangles. Everything here is
+// camera-relative, like the shading (docs/shading.md): world-space fp32 at 10^6 from the
+// origin would be off by more than the rectangles' one-pixel margin.
 std::vector<VisibleDraw> visibleDraws(const SceneGpu& scene, DrawFilter filter) {
     std::vector<VisibleDraw> out;
     for (const DrawItem* d : scene.drawList(filter)) {
-        ScreenRect r = boxScreenRect(scene.frame(), d->bounds);
-        if (!r.empty()) out.push_back({d, r, d->bounds});
+        Aabb bounds = scene.toShading(d->bounds);
+        ScreenRect r = boxScreenRect(scene.shadingFrame(), bounds);
+        if (!r.empty()) out.push_back({d, r, bounds});
     }
     return out;
 }
@@ -127,7 +130,7 @@ bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleD
 
 LightPlan planLights(const SceneGpu& scene) {
     LightPlan plan;
-    const gpu::FrameUniforms& f = scene.frame();
+    const gpu::FrameUniforms& f = scene.shadingFrame();
     auto opaque = visibleDraws(scene, DrawFilter::Opaque);
     auto masked = visibleDraws(scene, DrawFilter::Mask);
     auto blended = visibleDraws(scene, DrawFilter::Blend);
@@ -135,7 +138,7 @@ LightPlan planLights(const SceneGpu& scene) {
     for (const VisibleDraw& v : masked) plan.masked.push_back(v.draw);
     for (const VisibleDraw& v : blended) plan.blended.push_back({v.draw, {}});
 
-    const std::vector<gpu::LightGpu>& lights = scene.lightsGpu();
+    const std::vector<gpu::LightGpu>& lights = scene.shadingLights();
     const bool boxTest = shadedInsideBox(f);
     for (uint32_t i = 0; i < scene.lightCount(); ++i) {
         const gpu::LightGpu& l = lights[i];
