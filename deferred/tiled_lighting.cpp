@@ -1,5 +1,7 @@
 #include "deferred/tiled_lighting.h"
 
+#include <algorithm>
+
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/vk_check.h"
@@ -84,12 +86,41 @@ void TiledLighting::prepare(FrameGraph& graph) {
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_);
 }
 
+uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {
+    const uint32_t pixels = (tileSize / 8) * (tileSize / 8);
+    return std::max(1u, std::min(TP_DEF_TILE_LIGHT_CAPACITY, 32768u / (pixels * samples)));
+}
+
+void TiledLighting::dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end) {
+    gpu::DrawPush push{0, 0, 0, 0};
+    push.TP_DEF_LIGHT_FIRST = first;
+    push.TP_DEF_LIGHT_END = end;
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, t_->tilesX, t_->tilesY, 1);
+}
+
 void TiledLighting::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0,
                             nullptr);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    vkCmdDispatch(pc.cmd, t_->tilesX, t_->tilesY, 1);
+    const uint32_t lights = scene_.lightCount();
+    // Lists only: no shading loop, one dispatch whatever the light count.
+    const uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_->tileSize, t_->layout.samples);
+    for (uint32_t first = 0; first == 0 || first < lights; first += batch) {
+        if (first > 0) {
+            // The next batch adds to hdr and the tile statistics that this one wrote.
+            VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+            mb.srcStageMask = mb.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+            mb.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+            dep.memoryBarrierCount = 1;
+            dep.pMemoryBarriers = &mb;
+            vkCmdPipelineBarrier2(pc.cmd, &dep);
+        }
+        dispatch(pc.cmd, first, std::min(lights, first + batch));
+    }
 }
 
 } // namespace tp

@@ -8,6 +8,15 @@
 
 namespace tp {
 
+// Lights per tiled lighting dispatch. lavapipe (gallivm) ends a shader invocation after
+// 65,535 loop iterations in total, counted over every loop it runs
+// (LP_MAX_TGSI_LOOP_ITERATIONS): the rest of its work is silently skipped. An invocation
+// shades (tileSize / 8)^2 pixels, each up to `samples` times, with every light of its
+// tile's list, so a batch holds at most 32,768 / (pixels * samples) lights (half the
+// limit: the other loops - depth bounds, culling, transparent lists - stay far below the
+// rest) and never more than the shared list (TP_DEF_TILE_LIGHT_CAPACITY).
+uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples);
+
 class GpuContext;
 class SceneGpu;
 
@@ -22,6 +31,7 @@ class TiledLighting {
 
   private:
     void record(PassContext& pc);
+    void dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end);
     std::string shaderName() const;
     GpuContext& ctx_;
     SceneGpu& scene_;

@@ -2,10 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 // Tiled deferred lighting (Andersson 2009, Uncharted; Lauritzen 2010): one workgroup per
 // tile. (1) the tile's depth bounds from the G-buffer depth (every sample), (2) the lights
-// that reach the tile's sub-frustum are culled into shared memory, (3) every pixel of the
-// tile is shaded from that list and written to hdr. Under MSAA a pixel whose samples differ
-// (an edge) is shaded per sample, every other pixel once. Blended scenes also get each
-// tile's transparent light list, culled against [near plane, farthest opaque depth].
+// of this dispatch's batch (push constant: [first, end), at most the shared capacity) that
+// reach the tile's sub-frustum are culled into shared memory, (3) every pixel of the tile
+// is shaded from that list: the first batch writes hdr (with ambient and emissive), later
+// batches add to it. Under MSAA a pixel whose samples differ (an edge) is shaded per
+// sample, every other pixel once. Blended scenes also get each tile's transparent light
+// list (every light, first batch only), culled against [near plane, farthest opaque depth].
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
 //   TP_MSAA: the G-buffer is per-sample.  TP_HDR_MSAA: hdr is per-sample (the blended
 //   forward pass draws into it and resolves).  TP_TRANSPARENT: write transparent lists.
@@ -30,10 +32,11 @@ layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_DEF_SPEC_LIST_STRIDE) const uint kListStride = 1u;
 
 #ifndef TP_LISTS_ONLY
+// Read back by the later batches, which add their lights to what the earlier ones wrote.
 #ifdef TP_HDR_MSAA
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform writeonly image2DMS hdrOut;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2DMS hdrOut;
 #else
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform writeonly image2D hdrOut;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2D hdrOut;
 #endif
 #endif
 #ifdef TP_TRANSPARENT
@@ -55,24 +58,27 @@ shared uint sTransparentCount;
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 
+// The first batch writes hdr, the tile statistics and the transparent lists; later
+// batches add to them.
+bool firstBatch() { return draw.TP_DEF_LIGHT_FIRST == 0u; }
+
 #ifndef TP_LISTS_ONLY
-// One G-buffer sample, lit by the tile's lights (every light when the tile overflowed).
+// One G-buffer sample, lit by the tile's lights of this batch (the host keeps a batch
+// within the shared capacity: sCount never exceeds it).
 vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
     SurfaceSample ss = readSurface(p, s, reconstructPosition(p, offset, depth));
-    vec3 sum = ambientEmissive(p, s);
-    uint n = sCount;
-    if (n > TP_DEF_TILE_LIGHT_CAPACITY) {
-        for (uint i = 0u; i < frame.viewport.z; ++i) sum += evalLight(lights[i], ss, kHasSpot);
-    } else {
-        for (uint i = 0u; i < n; ++i) sum += evalLight(lights[sLights[i]], ss, kHasSpot);
-    }
+    vec3 sum = firstBatch() ? ambientEmissive(p, s) : vec3(0.0);
+    uint n = min(sCount, TP_DEF_TILE_LIGHT_CAPACITY);
+    for (uint i = 0u; i < n; ++i) sum += evalLight(lights[sLights[i]], ss, kHasSpot);
     return sum;
 }
 
 void writeHdr(ivec2 p, uint s, vec3 c) {
 #ifdef TP_HDR_MSAA
+    if (!firstBatch()) c += imageLoad(hdrOut, p, int(s)).rgb;
     imageStore(hdrOut, p, int(s), vec4(c, 1.0));
 #else
+    if (!firstBatch()) c += imageLoad(hdrOut, p).rgb;
     imageStore(hdrOut, p, vec4(c, 1.0));
 #endif
 }
@@ -109,7 +115,6 @@ bool shadePixel(ivec2 p) {
 
 void cull(uvec2 tile, bool hasGeometry) {
     uint groupSize = TP_GROUP * TP_GROUP;
-    uint lightCount = frame.viewport.z;
     vec2 size = vec2(frame.viewport.xy);
     float nearDepth = uintBitsToFloat(sMaxDepthBits), farDepth = uintBitsToFloat(sMinDepthBits);
     TileFrustum f = makeTileFrustum(tile, kTileSize, size, frame.invProj, nearDepth, farDepth);
@@ -120,21 +125,24 @@ void cull(uvec2 tile, bool hasGeometry) {
                                      hasGeometry ? farDepth : 0.0);
     uint listBase = (tile.y * gl_NumWorkGroups.x + tile.x) * kListStride;
 #endif
-    for (uint i = gl_LocalInvocationIndex; i < lightCount; i += groupSize) {
-        LightGpu light = lights[i];
 #ifndef TP_LISTS_ONLY
-        if (hasGeometry && lightInTile(light, f, frame.view)) {
+    uint end = min(draw.TP_DEF_LIGHT_END, frame.viewport.z);
+    for (uint i = draw.TP_DEF_LIGHT_FIRST + gl_LocalInvocationIndex; hasGeometry && i < end; i += groupSize) {
+        if (lightInTile(lights[i], f, frame.view)) {
             uint slot = atomicAdd(sCount, 1u);
             if (slot < TP_DEF_TILE_LIGHT_CAPACITY) sLights[slot] = i;
         }
+    }
 #endif
 #ifdef TP_TRANSPARENT
-        if (lightInTile(light, ft, frame.view)) {
+    // Every light, once (first batch): a loop of lights / 64 iterations per invocation.
+    for (uint i = gl_LocalInvocationIndex; firstBatch() && i < frame.viewport.z; i += groupSize) {
+        if (lightInTile(lights[i], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
             if (slot + 1u < kListStride) tLists[listBase + 1u + slot] = i;
         }
-#endif
     }
+#endif
 }
 
 // The pixels of this invocation: (k % perAxis, k / perAxis) steps of TP_GROUP.
@@ -171,24 +179,32 @@ void main() {
     cull(tile, sMaxDepthBits != 0u);
 #ifndef TP_LISTS_ONLY
     barrier();
-    for (uint k = 0u; k < pixelsPerInvocation; ++k) {
+    // A later batch with no light in this tile adds nothing (sCount is uniform here).
+    uint shadedPixels = firstBatch() || sCount > 0u ? pixelsPerInvocation : 0u;
+    for (uint k = 0u; k < shadedPixels; ++k) {
         ivec2 p = pixelOf(tile, k);
         if (!insideViewport(p)) continue;
         bool edge = shadePixel(p);
         if (edge) atomicAdd(sEdges, 1u);
 #ifdef TP_DEBUG
         vec2 rm = FETCH(gRoughMetal, p, 0u).rg;
-        imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
+        if (firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
     }
 #endif
     barrier();
     if (gl_LocalInvocationIndex == 0u) {
         uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
-        uint overflow = sCount > TP_DEF_TILE_LIGHT_CAPACITY ? 1u : 0u;
-        tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, overflow);
+        if (firstBatch()) {
+            tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, 0u);
 #ifdef TP_TRANSPARENT
-        tLists[tileIndex * kListStride] = min(sTransparentCount, kListStride - 1u);
+            tLists[tileIndex * kListStride] = min(sTransparentCount, kListStride - 1u);
 #endif
+        } else {
+            tileStats[tileIndex].x += sCount;
+        }
+        // Overflow: the tile met more lights than one shared list holds (its lights came
+        // from several batches; none is dropped).
+        if (tileStats[tileIndex].x > TP_DEF_TILE_LIGHT_CAPACITY) tileStats[tileIndex].w = 1u;
     }
 }

@@ -33,9 +33,13 @@ using std::sin;
 #define TP_DEF_SPEC_SPHERE_SCALE 14  // float bits: volumeSphereVertex scale that circumscribes the unit sphere
 
 // Lights one tile can hold in shared memory: 4096 uints = 16 KiB of the 32 KiB lavapipe
-// offers. A tile that meets more lights does not drop them: it shades with every light
-// (evalLight is exactly zero outside a light's range), and counts the overflow.
+// offers. The tiled lighting pass never meets more: it takes the lights in batches of at
+// most this many, one dispatch each (deferred/tiled_lighting.cpp says why and how big).
 #define TP_DEF_TILE_LIGHT_CAPACITY 4096u
+// The batch of one tiled lighting dispatch: lights [first, end) of the scene's light
+// buffer, in the scene's DrawPush push constant (the dispatches share one pipeline).
+#define TP_DEF_LIGHT_FIRST pad0
+#define TP_DEF_LIGHT_END pad1
 
 // ---- light volumes (classic deferred, `--deferred-lighting volumes`) ----
 // Generated from gl_VertexIndex in shaders/deferred/volume.vert; the CPU computes the scale

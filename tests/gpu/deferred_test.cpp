@@ -185,6 +185,45 @@ TEST(Deferred, VolumesAgreeWithTiled) {
     expectNoValidationMessages(*ctx);
 }
 
+double counter(const RunResult& run, const std::string& name) {
+    for (const auto& [n, v] : run.stats.counters)
+        if (n == name) return v;
+    return -1.0;
+}
+
+// More lights in every tile than the 4,096-light shared list, each reaching the whole view.
+// lavapipe ends a shader invocation after 65,535 loop iterations in total; an invocation
+// shades (tile / 8)^2 pixels, so before the lights came in batches (tiledLightBatch) tile 32
+// at 1x (16 pixels x 6,000 lights per invocation) and tile 16 at 4x (4 pixels x 4 edge
+// samples) left later pixels unshaded or half shaded: deterministic, whole 8x8 blocks wrong.
+// Volumes lighting (one draw per light, no long loop) is the comparison, within the
+// summation bound above: the batches store partial sums in the fp32 hdr, exactly.
+TEST(Deferred, TiledShadesEveryLightBeyondTheSharedListAndTheLoopLimit) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const uint32_t lights = 6000;
+    Scene scene = makeFloorScene({});
+    LightGenOptions o;
+    o.count = lights;
+    o.seed = 5;
+    o.radiusMin = o.radiusMax = 2.0f * glm::length(scene.bounds.max - scene.bounds.min);
+    scene.lights = generateLights(scene.bounds, o);
+    SceneGpu gpuScene(*ctx, scene);
+    for (auto [tile, msaa] : {std::pair{32u, 1u}, std::pair{16u, 4u}}) {
+        RenderSettings s = small(msaa, "wide");
+        s.width = s.height = 32;
+        s.tileSize = tile;
+        RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "tiled"));
+        RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "volumes"));
+        std::string what = "floor " + std::to_string(lights) + " lights, tile " + std::to_string(tile) + ", " +
+                           std::to_string(msaa) + "x";
+        expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, lights, msaa, what);
+        EXPECT_EQ(counter(tiled, "lights_per_tile_max"), double(lights)) << what;
+        EXPECT_EQ(counter(tiled, "tiles_over_shared_capacity"), double((32 / tile) * (32 / tile))) << what;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 // Every volume kind and the awkward cases: spots (cone mesh, and a 80-degree one drawn
 // with the sphere), directional lights (full-screen triangle), a point and a spot light
 // around the camera (camera inside the volume: only back faces are drawn, so nothing is
