@@ -25,8 +25,13 @@ void main() {
     if (kAlphaMode == TP_ALPHA_MASK && ms.alpha < m.alphaCutoff) discard;
 
     ACCUM sum = ACCUM(ambientAndEmissive(ms));
-    uint count = frame.viewport.z;
-    for (uint i = 0u; i < count; ++i)
+    // Two lights an iteration, in order: lavapipe ends an invocation after 65,535 loop
+    // iterations and silently skips the rest (docs/shading.md), and the CLI allows 65,536.
+    uint count = frame.viewport.z, i = 0u;
+    for (; i + 1u < count; i += 2u) {
         sum += ACCUM(evalLight(lights[i], ms.surface, kHasSpot));
+        sum += ACCUM(evalLight(lights[i + 1u], ms.surface, kHasSpot));
+    }
+    if (i < count) sum += ACCUM(evalLight(lights[i], ms.surface, kHasSpot));
     outColor = vec4(vec3(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
 }

@@ -1,4 +1,5 @@
 // The reference on the default device (lavapipe in CI), validation on.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -96,6 +97,33 @@ TEST(Reference, NoLightsLeavesAmbientOnly) {
     for (size_t i = 0; i < run.hdr.pixelCount(); ++i) maxValue = std::max(maxValue, run.hdr.rgba[i * 4]);
     EXPECT_LE(maxValue, 0.8f * 0.01f + 1e-6f); // ambient * white base colour
     EXPECT_GT(maxValue, 0.0f);
+    expectNoValidationMessages(*ctx);
+}
+
+// 65,536 lights (the CLI's maximum), only the last one in reach of the floor: the result
+// must equal that light alone. Lavapipe ends a shader invocation after 65,535 loop
+// iterations, so a loop of one light per iteration silently dropped the last light.
+TEST(Reference, ShadesTheLastOf65536Lights) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Light lit = pointLight({0, 1.5f, 0}, 5.0f, 8.0f);
+    std::vector<Light> many(65535, pointLight({500, 500, 500}, 1.0f, 1.0f));
+    many.push_back(lit);
+    RenderSettings settings;
+    settings.width = 16;
+    settings.height = 16;
+    Scene oneScene = makeFloorScene({lit}), manyScene = makeFloorScene(many);
+    SceneGpu oneGpu(*ctx, oneScene), manyGpu(*ctx, manyScene);
+    RunResult one = runOrFail(*ctx, oneGpu, "reference", settings);
+    RunResult all = runOrFail(*ctx, manyGpu, "reference", settings);
+    ASSERT_EQ(one.hdr.rgba.size(), all.hdr.rgba.size());
+    // The far lights add exact zeros (the falloff window is 0 past the range): same sum.
+    float maxLit = 0.0f;
+    for (size_t i = 0; i < one.hdr.rgba.size(); ++i) {
+        ASSERT_EQ(all.hdr.rgba[i], one.hdr.rgba[i]) << "channel " << i;
+        maxLit = std::max(maxLit, one.hdr.rgba[i]);
+    }
+    EXPECT_GT(maxLit, 0.1f); // the light does reach the floor in view
     expectNoValidationMessages(*ctx);
 }
 
