@@ -1,5 +1,6 @@
 #include "compare/cli_common.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +9,7 @@
 #include <filesystem>
 
 #include "core/image/tonemap.h"
+#include "core/render/renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/procedural.h"
 
@@ -257,6 +259,25 @@ RunOptions progressRunOptions(const std::string& label, int warmup, int frames) 
                      f < w ? " (warm-up)" : "");
     };
     return r;
+}
+
+std::vector<std::string> selectPipelines(const std::string& list) {
+    std::vector<std::string> names;
+    if (list.empty()) {
+        for (const RendererEntry& e : registeredRenderers())
+            if (e.name != "reference") names.push_back(e.name);
+        return names;
+    }
+    std::stringstream ss(list);
+    std::string name;
+    while (std::getline(ss, name, ',')) {
+        if (name == "reference") throw UsageError("--pipelines: the reference is always rendered; list the others");
+        Result<const RendererEntry*> e = findRenderer(name);
+        if (!e) throw UsageError("--pipelines: " + e.error());
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    if (names.empty()) throw UsageError("--pipelines '" + list + "': no pipeline named");
+    return names;
 }
 
 } // namespace tp::cli

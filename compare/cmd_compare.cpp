@@ -27,25 +27,6 @@ void check(const Status& s) {
     if (!s) throw UsageError(s.error());
 }
 
-std::vector<std::string> selectPipelines(const std::string& list) {
-    std::vector<std::string> names;
-    if (list.empty()) {
-        for (const RendererEntry& e : registeredRenderers())
-            if (e.name != "reference") names.push_back(e.name);
-        return names;
-    }
-    std::stringstream ss(list);
-    std::string name;
-    while (std::getline(ss, name, ',')) {
-        if (name == "reference") throw UsageError("--pipelines: the reference is always rendered; list the others");
-        Result<const RendererEntry*> e = findRenderer(name);
-        if (!e) throw UsageError("--pipelines: " + e.error());
-        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-    }
-    if (names.empty()) throw UsageError("--pipelines '" + list + "': no pipeline named");
-    return names;
-}
-
 // Files of the pair (a, b): the signed difference a - b.
 std::string pairDiffStem(const std::string& a, const std::string& b) { return a + "_vs_" + b + "_diff"; }
 

@@ -90,21 +90,6 @@ std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepO
     return combos;
 }
 
-std::vector<std::string> selectPipelines(const std::string& list) {
-    std::vector<std::string> names;
-    for (const RendererEntry& e : registeredRenderers())
-        if (e.name != "reference") names.push_back(e.name);
-    if (list.empty()) return names;
-    std::vector<std::string> chosen;
-    for (const std::string& n : splitList(list, "--pipelines")) {
-        if (std::find(names.begin(), names.end(), n) == names.end())
-            throw UsageError("--pipelines: unknown pipeline '" + n + "' (reference is always run; known: " +
-                             shellJoin(names) + ")");
-        if (std::find(chosen.begin(), chosen.end(), n) == chosen.end()) chosen.push_back(n);
-    }
-    return chosen;
-}
-
 struct Reference {
     std::optional<RunResult> run;
     float ev = 0, peak = 1;

@@ -14,7 +14,8 @@ namespace {
 
 using nlohmann::json;
 
-const char* kStyle = R"(
+// The rules of every triptych page (compare, stress); each page adds its own after them.
+const char* kBaseStyle = R"(
 body{font-family:sans-serif;margin:16px 24px;color:#222;max-width:1400px}
 h1{font-size:22px;margin:4px 0}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ccc}
 table{border-collapse:collapse;font-size:13px;margin:6px 0}
@@ -23,11 +24,14 @@ td.l,th.l{text-align:left}
 .meta{font-size:13px;color:#444}.meta code{background:#f4f4f4;padding:1px 4px;word-break:break-all}
 .failed{background:#fde2e2;border:1px solid #d33;padding:8px;margin:8px 0}
 .note{background:#fff6d6;border:1px solid #e0c040;padding:6px;margin:8px 0;font-size:13px}
-.grid{display:grid;grid-template-columns:repeat(2,minmax(0,1fr));gap:12px}
 figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #999}
 figcaption{font-size:12px;color:#333;margin-top:2px}
-table.pairs td{width:300px;vertical-align:top}table.pairs img{width:300px}
 details{margin:6px 0}summary{cursor:pointer;font-weight:bold}
+)";
+
+const char* kStyle = R"(
+.grid{display:grid;grid-template-columns:repeat(2,minmax(0,1fr));gap:12px}
+table.pairs td{width:300px;vertical-align:top}table.pairs img{width:300px}
 )";
 
 Result<std::string> readBinary(const std::string& path) {
@@ -297,6 +301,7 @@ std::string base64(const std::string& bytes) {
 
 Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych compare</title>\n<style>";
+    h += kBaseStyle;
     h += kStyle;
     h += "</style></head><body>\n" + header(r) + summaryTable(r) + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
@@ -306,5 +311,7 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     h += *images + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
     return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n</body></html>\n";
 }
+
+const char* reportPageStyle() { return kBaseStyle; }
 
 } // namespace tp::cli

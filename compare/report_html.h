@@ -15,4 +15,7 @@ Result<std::string> reportHtml(const nlohmann::json& report, const std::string& 
 
 std::string base64(const std::string& bytes);
 
+// The CSS every triptych page starts with (tables, figures, notes); pages append their own.
+const char* reportPageStyle();
+
 } // namespace tp::cli

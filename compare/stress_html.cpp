@@ -13,19 +13,11 @@ namespace {
 
 using nlohmann::json;
 
+// After reportPageStyle(): verdict cells and a three-column image grid.
 const char* kStyle = R"(
-body{font-family:sans-serif;margin:16px 24px;color:#222;max-width:1400px}
-h1{font-size:22px;margin:4px 0}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ccc}
-table{border-collapse:collapse;font-size:13px;margin:6px 0}
-td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f0f0f0}
-td.l,th.l{text-align:left}td.pass{background:#e3f6e3}td.fail{background:#fde2e2;font-weight:bold}
-.meta{font-size:13px;color:#444}.meta code{background:#f4f4f4;padding:1px 4px;word-break:break-all}
-.failed{background:#fde2e2;border:1px solid #d33;padding:8px;margin:8px 0}
-.note{background:#fff6d6;border:1px solid #e0c040;padding:6px;margin:8px 0;font-size:13px}
+td.pass{background:#e3f6e3}td.fail{background:#fde2e2;font-weight:bold}
 .grid{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:10px;max-width:1000px}
-figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #999}
-figcaption{font-size:12px;color:#333;margin-top:2px}
-details{margin:6px 0}summary{cursor:pointer}
+summary{font-weight:normal}
 )";
 
 std::string esc(const json& j) { return escapeXml(j.is_string() ? j.get<std::string>() : j.dump()); }
@@ -151,6 +143,7 @@ Result<std::string> caseSection(const json& c, const std::string& outDir) {
 
 Result<std::string> stressHtml(const json& r, const std::string& outDir) {
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych stress</title>\n<style>";
+    h += reportPageStyle();
     h += kStyle;
     const json& sum = r["summary"];
     h += "</style></head><body>\n<h1>triptych stress: " + esc(sum["passed"]) + " of " + esc(sum["cases"]) +

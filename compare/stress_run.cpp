@@ -23,25 +23,6 @@
 namespace tp::cli {
 namespace {
 
-std::vector<std::string> selectPipelines(const std::string& list) {
-    std::vector<std::string> names;
-    if (list.empty()) {
-        for (const RendererEntry& e : registeredRenderers())
-            if (e.name != "reference") names.push_back(e.name);
-        return names;
-    }
-    std::stringstream ss(list);
-    std::string name;
-    while (std::getline(ss, name, ',')) {
-        if (name == "reference") throw UsageError("--pipelines: the reference is always rendered; list the others");
-        Result<const RendererEntry*> e = findRenderer(name);
-        if (!e) throw UsageError("--pipelines: " + e.error());
-        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-    }
-    if (names.empty()) throw UsageError("--pipelines '" + list + "': no pipeline named");
-    return names;
-}
-
 void check(const Status& s) {
     if (!s) throw UsageError(s.error());
 }
