@@ -197,6 +197,12 @@ void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& reference
     app.add_option("--gbuffer", s.gbuffer, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)")
         ->check(CLI::IsMember({"compact", "wide"}))
         ->capture_default_str();
+    app.add_option("--gbuffer-msaa", s.gbufferMsaa,
+                   "Deferred G-buffer under MSAA: pixel (material evaluated once per pixel, written to the covered "
+                   "samples; only edges are lit per sample, Lauritzen 2010) or sample (material evaluated and lit at "
+                   "every sample: supersampled deferred, the reference's image at its cost)")
+        ->check(CLI::IsMember({"pixel", "sample"}))
+        ->capture_default_str();
     app.add_option("--deferred-lighting", s.deferredLighting,
                    "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")
         ->check(CLI::IsMember({"tiled", "volumes"}))
@@ -207,6 +213,16 @@ void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& reference
     app.add_option("--reference-precision", referencePrecision,
                    "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
         ->check(CLI::IsMember({"fp32", "fp64"}))
+        ->capture_default_str();
+    addReferenceMsaaOption(app, s.referenceMsaaShading);
+}
+
+void addReferenceMsaaOption(CLI::App& app, std::string& shading) {
+    app.add_option("--reference-msaa", shading,
+                   "Reference under MSAA: sample (every sample shaded at its own location: supersampling, the "
+                   "ground truth) or center (every covered sample shaded with the inputs at the pixel centre: "
+                   "what shading once per pixel gives; the error against it leaves out the shading rate)")
+        ->check(CLI::IsMember({"sample", "center"}))
         ->capture_default_str();
 }
 

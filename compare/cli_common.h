@@ -52,6 +52,8 @@ void addViewOptions(CLI::App& app, ViewOptions& o);
 // Pipeline knobs (tile size, list layout, G-buffer, lighting mode, accumulation, reference
 // precision) bound straight into the settings.
 void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& referencePrecision);
+// --reference-msaa sample|center (RenderSettings::referenceMsaaShading).
+void addReferenceMsaaOption(CLI::App& app, std::string& shading);
 
 // Loads or builds the scene and sets its lights; warnings go to stderr.
 Scene loadScene(const SceneOptions& o);

@@ -58,6 +58,8 @@ const std::vector<Knob>& knobs() {
          [](RenderSettings& s, const std::string& v) { s.lightLists = v; }},
         {"--gbuffer", {"deferred"}, {"compact", "wide"}, &SweepOptions::gbuffer,
          [](RenderSettings& s, const std::string& v) { s.gbuffer = v; }},
+        {"--gbuffer-msaa", {"deferred"}, {"pixel", "sample"}, &SweepOptions::gbufferMsaa,
+         [](RenderSettings& s, const std::string& v) { s.gbufferMsaa = v; }},
         {"--deferred-lighting", {"deferred"}, {"tiled", "volumes"}, &SweepOptions::deferredLighting,
          [](RenderSettings& s, const std::string& v) { s.deferredLighting = v; }},
         {"--accum", {"multipass_forward"}, {"fp16", "fp32"}, &SweepOptions::accum,
@@ -181,9 +183,10 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuC
     j["scene"]["content_hash_fnv1a64"] = hashSceneContent(scene);
     j["device"] = deviceJson(ctx);
     j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"tile", o.tile},
-                 {"light_lists", o.lightLists}, {"gbuffer", o.gbuffer}, {"deferred_lighting", o.deferredLighting},
+                 {"light_lists", o.lightLists}, {"gbuffer", o.gbuffer}, {"gbuffer_msaa", o.gbufferMsaa},
+                 {"deferred_lighting", o.deferredLighting},
                  {"accum", o.accum}, {"tile_capacity", o.tileCapacity}, {"light_types", o.scene.lightTypes},
-                 {"reference_precision", o.referencePrecision}};
+                 {"reference_precision", o.referencePrecision}, {"reference_msaa", o.referenceMsaa}};
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["reference_frames"] = o.referenceFrames;
@@ -213,6 +216,7 @@ int runSweep(const SweepOptions& o) {
     RenderSettings base;
     base.tileCapacity = o.tileCapacity;
     base.referenceFp64 = o.referencePrecision == "fp64";
+    base.referenceMsaaShading = o.referenceMsaa;
     std::vector<View> views; // validated up front: bad input fails before any run
     for (const std::string& r : splitList(o.res, "--res"))
         for (const std::string& m : splitList(o.msaa, "--msaa"))

@@ -21,10 +21,12 @@ nlohmann::json settingsJson(const RenderSettings& s) {
             {"height", s.height},
             {"msaa", s.msaa},
             {"reference_fp64", s.referenceFp64},
+            {"reference_msaa_shading", s.referenceMsaaShading},
             {"tile_size", s.tileSize},
             {"light_lists", s.lightLists},
             {"tile_capacity", s.tileCapacity},
             {"gbuffer", s.gbuffer},
+            {"gbuffer_msaa", s.gbufferMsaa},
             {"deferred_lighting", s.deferredLighting},
             {"accum", s.accum}};
 }

@@ -15,13 +15,14 @@ struct SweepOptions {
     DeviceOptions device;
     // Comma-separated lists; each value of a knob is run only by the pipelines that read it.
     std::string lights = "16,64,256", res = "320x180", msaa = "1", tile = "16", lightLists = "compact",
-                gbuffer = "compact", deferredLighting = "tiled", accum = "fp32";
+                gbuffer = "compact", gbufferMsaa = "pixel", deferredLighting = "tiled", accum = "fp32";
     std::string pipelines; // empty: every registered one
     std::string out = "sweep";
     int frames = 2, warmup = 1;
     int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
     uint32_t tileCapacity = 256;
     std::string referencePrecision = "fp64";
+    std::string referenceMsaa = "sample"; // RenderSettings::referenceMsaaShading
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
 

@@ -26,6 +26,10 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
         ->capture_default_str();
     cmd.add_option("--gbuffer", o.gbuffer, "Comma-separated G-buffer layouts (compact, wide); read by deferred")
         ->capture_default_str();
+    cmd.add_option("--gbuffer-msaa", o.gbufferMsaa,
+                   "Comma-separated deferred G-buffer rates under MSAA (pixel: material once per pixel, edges lit "
+                   "per sample; sample: material evaluated and lit at every sample); read by deferred")
+        ->capture_default_str();
     cmd.add_option("--deferred-lighting", o.deferredLighting,
                    "Comma-separated deferred lighting modes (tiled: compute with per-tile lists; volumes: one "
                    "draw per light); read by deferred")
@@ -49,6 +53,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
                    "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
         ->check(CLI::IsMember({"fp32", "fp64"}))
         ->capture_default_str();
+    addReferenceMsaaOption(cmd, o.referenceMsaa);
     addSeedOption(cmd, o.scene.seed);
     cmd.add_option("--light-types", o.scene.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, e.g. point:3,spot:1")

@@ -36,13 +36,15 @@ std::string errorFields(const SweepRow& r, const ErrorReport& e) {
 } // namespace
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device) {
-    std::string t = "pipeline,lights,width,height,msaa,tile,light_lists,gbuffer,deferred_lighting,accum,status,"
+    std::string t = "pipeline,lights,width,height,msaa,tile,light_lists,gbuffer,gbuffer_msaa,deferred_lighting,"
+                    "accum,status,"
                     "frame_median_ms,frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,psnr_hdr,"
                     "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,lights_dropped,device,error\n";
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," + std::to_string(r.s.width) + "," +
              std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + "," + std::to_string(r.s.tileSize) + "," +
-             csvField(r.s.lightLists) + "," + csvField(r.s.gbuffer) + "," + csvField(r.s.deferredLighting) + "," +
+             csvField(r.s.lightLists) + "," + csvField(r.s.gbuffer) + "," + csvField(r.s.gbufferMsaa) + "," +
+             csvField(r.s.deferredLighting) + "," +
              csvField(r.s.accum) + "," + r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
              number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) + "," +
              errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + number(r.dropped) + "," +

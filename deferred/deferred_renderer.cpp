@@ -26,10 +26,13 @@ class DeferredRenderer final : public Renderer {
             throw RendererError("--deferred-lighting must be tiled or volumes (got " +
                                 settings_.deferredLighting + ")");
         useVolumes_ = settings_.deferredLighting == "volumes";
+        if (settings_.gbufferMsaa != "pixel" && settings_.gbufferMsaa != "sample")
+            throw RendererError("--gbuffer-msaa must be pixel or sample (got " + settings_.gbufferMsaa + ")");
     }
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, settings_);
+        t_.sampleRateGBuffer = settings_.gbufferMsaa == "sample";
         // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels.
         if (settings_.tileSize % 8 != 0 || settings_.tileSize == 0 || settings_.tileSize > 64)
             throw std::runtime_error("deferred: --tile must be 8, 16, 32 or 64 (got " +
@@ -188,6 +191,7 @@ RendererStats DeferredRenderer::stats() const {
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
+    if (samples > 1) s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
     return s;
 }
 

@@ -21,6 +21,7 @@ struct DeferredTargets {
     ResourceHandle volumeDepth;          // volumes lighting under MSAA: 1x depth the volumes test
     uint32_t tileSize = 16, tilesX = 0, tilesY = 0;
     uint32_t listStride = 1;             // uints per transparent list: count + capacity
+    bool sampleRateGBuffer = false;      // --gbuffer-msaa sample: the material at every sample
     bool msaa() const { return layout.samples > 1; }
 };
 

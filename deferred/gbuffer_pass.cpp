@@ -35,7 +35,10 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t) {
 void GBufferPass::prepare() {
     layout_ = scene_.createPipelineLayout();
     GraphicsPipelineDesc d;
-    d.fragmentShader = t_->layout.emissive ? "deferred_gbuffer_emissive_frag" : "deferred_gbuffer_frag";
+    const bool perSample = t_->msaa() && t_->sampleRateGBuffer;
+    d.fragmentShader = std::string("deferred_gbuffer") + (perSample ? "_sample" : "") +
+                       (t_->layout.emissive ? "_emissive_frag" : "_frag");
+    d.sampleShading = perSample;
     for (const GBufferTarget& c : t_->layout.colors) d.colorFormats.push_back(c.format);
     d.depthFormat = t_->layout.depth;
     d.samples = VkSampleCountFlagBits(t_->layout.samples);

@@ -83,6 +83,7 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_LIST_STRIDE, t_->listStride});
     spec.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_);
 }
 

@@ -115,6 +115,7 @@ void VolumeLighting::prepareBase(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    d.specConstants.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
     d.depthFormat = VK_FORMAT_UNDEFINED;
     d.depthTest = d.depthWrite = false;

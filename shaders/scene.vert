@@ -10,6 +10,11 @@ layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUv;
 layout(location = 3) out vec4 outTangent;
 layout(location = 4) out vec4 outColor;
+// 1 at every vertex, interpolated like the others: the fragment stage divides every
+// interpolant by it (scene_inputs.glsl). Exactly 1 on a correct device; on lavapipe, whose
+// per-sample interpolation divides by 1/w at the pixel centre instead of at the sample, it
+// is the factor that undoes that (docs/shading.md, "Where a sample is shaded").
+layout(location = 5) out float outOne;
 
 // `precise` (NoContraction) instead of `invariant gl_Position`: the validation layers of
 // Debian 12 reject the Invariant decoration glslang puts on the gl_PerVertex member, and
@@ -28,6 +33,7 @@ void main() {
     outUv = vec2(v.positionU.w, v.normalV.w);
     outTangent = v.tangent;
     outColor = v.color;
+    outOne = frame.projParams.z;
     precise vec4 clip = frame.viewProj * vec4(relative, 1.0);
     gl_Position = clip;
 }

@@ -49,7 +49,8 @@ class ReferenceRenderer final : public Renderer {
     void prepare(FrameGraph&) override {
         layout_ = scene_.createPipelineLayout();
         GraphicsPipelineDesc d;
-        d.fragmentShader = fp64_ ? "reference_fp64_frag" : "reference_frag";
+        const bool center = settings_.msaa > 1 && settings_.referenceMsaaShading == "center";
+        d.fragmentShader = std::string(center ? "reference_center" : "reference") + (fp64_ ? "_fp64_frag" : "_frag");
         d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
         d.samples = VkSampleCountFlagBits(settings_.msaa);
         d.sampleShading = settings_.msaa > 1;
@@ -67,6 +68,8 @@ class ReferenceRenderer final : public Renderer {
         RendererStats s;
         s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});
         s.counters.push_back({"lights_evaluated_per_sample", double(scene_.lightCount())});
+        if (settings_.msaa > 1)
+            s.counters.push_back({"shaded_at_pixel_center", settings_.referenceMsaaShading == "center" ? 1.0 : 0.0});
         if (!fp64_)
             s.leftOut.push_back({"fp64 accumulation", settings_.referenceFp64
                                                           ? "device has no shaderFloat64"

@@ -171,7 +171,9 @@ void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
         f->eyeWorld = glm::vec4(cam.position, 1.0f);
         f->ambient = glm::vec4(scene_.ambient, 0.0f);
         f->viewport = glm::uvec4(width, height, lightCount_, msaaSamples);
-        f->projParams = glm::vec4(cam.znear, cam.zfar, 0.0f, 0.0f);
+        // z = 1: the varying scene.vert divides every interpolant by (a uniform, so no linker
+        // folds it into a constant and skips the interpolation it exists to measure).
+        f->projParams = glm::vec4(cam.znear, cam.zfar, 1.0f, 0.0f);
     }
     if (glm::dvec3(cam.position) != eye_) { // the camera moved: the relative lights follow
         eye_ = glm::dvec3(cam.position);

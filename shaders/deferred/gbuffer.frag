@@ -1,9 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// G-buffer pass: the material is evaluated once per pixel (not per sample: under MSAA the
-// value is written to every covered sample, which is what makes samples of one surface
-// compare equal in the edge test) and stored in the layout the renderer planned.
-// TP_EMISSIVE: the scene emits, so target 3 exists (left out otherwise).
+// G-buffer pass: the material at this fragment, stored in the layout the renderer planned.
+// TP_INPUTS_AT_PIXEL (--gbuffer-msaa pixel, the default): evaluated once per pixel at its
+// centre and written to every covered sample, which is what makes samples of one surface
+// compare equal in the edge test. Without it every sample is evaluated at its own location
+// (--gbuffer-msaa sample; scene_inputs.glsl). TP_EMISSIVE: the scene emits, so target 3
+// exists (left out otherwise).
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
@@ -11,7 +13,6 @@
 #include "include/gbuffer_encoding.h"
 
 layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
-
 
 layout(location = 0) out vec4 outBase;       // rgb base colour (sRGB target in compact), a occlusion
 layout(location = 1) out vec4 outNormal;     // compact: octahedral rg; wide: xyz

@@ -12,6 +12,7 @@
 
 layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
 layout(constant_id = TP_DEF_SPEC_SAMPLES) const uint kSamples = 1u;
+layout(constant_id = TP_DEF_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 
 #ifdef TP_MSAA
 #define GTEX sampler2DMS
@@ -113,7 +114,14 @@ vec3 ambientEmissive(ivec2 p, uint s) {
 // Lauritzen 2010: a pixel is an edge when its samples do not hold the same surface: a
 // different G-buffer value (the G-buffer pass writes one value per primitive), coverage by
 // geometry on some samples only, or a view-depth jump of more than 1 %.
+// With a sample-rate G-buffer (kEverySample) every pixel that holds geometry counts as an
+// edge: each sample is lit from its own material, as the supersampled reference does.
 bool isEdge(ivec2 p) {
+    if (kEverySample) {
+        for (uint s = 0u; s < kSamples; ++s)
+            if (fetchDepth(p, s) > 0.0) return true;
+        return false;
+    }
     float d0 = fetchDepth(p, 0u);
     vec4 b0 = FETCH(gBase, p, 0u), n0 = FETCH(gNormal, p, 0u), r0 = FETCH(gRoughMetal, p, 0u);
     vec3 e0 = fetchEmissive(p, 0u);

@@ -1,6 +1,10 @@
 # G-buffer deferred shaders (names are what deferred/*.cpp asks core/gpu/pipelines for).
-triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_frag)
-triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_emissive_frag DEFINES TP_EMISSIVE=1)
+# G-buffer: once per pixel (TP_INPUTS_AT_PIXEL) or at every sample (--gbuffer-msaa sample).
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_frag DEFINES TP_INPUTS_AT_PIXEL=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_emissive_frag
+  DEFINES TP_EMISSIVE=1 TP_INPUTS_AT_PIXEL=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_frag)
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_emissive_frag DEFINES TP_EMISSIVE=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_frag)
 # Tiled lighting variants where the set-1 resources differ: m = 0 single-sample G-buffer,
 # 1 per-sample G-buffer, 2 per-sample G-buffer and per-sample hdr (blended under MSAA);

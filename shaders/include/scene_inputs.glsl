@@ -1,12 +1,41 @@
 // The interpolants of scene.vert as a fragment stage receives them, and the material at this
 // fragment. Include after scene_bindings.glsl and material.glsl.
-layout(location = 0) in vec3 inPosition; // camera-relative: world minus the eye (scene.vert)
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inTangent;
-layout(location = 4) in vec4 inColor;
+//
+// Where the inputs are interpolated is stated, never left to the driver. Vulkan lets an
+// implementation interpolate an input without the `sample` qualifier anywhere in the pixel
+// when sample-rate shading is on: lavapipe takes the pixel centre, NVIDIA the sample, so a
+// per-sample shader without `sample` inputs gives a different image on each (measured at
+// 4x: the reference moved by RMSE 0.095 on the courtyard at 320x180, 256 lights). Hence:
+//   default            `sample` inputs: a shader that runs per sample under MSAA evaluates
+//                      its own sample (the reference, Forward+, multipass, the blended pass);
+//                      at 1x the one sample is the pixel centre, as without the qualifier.
+//   TP_INPUTS_AT_PIXEL once per pixel, at the pixel centre (the deferred G-buffer pass:
+//                      no sample shading, one value written to every covered sample).
+//   TP_INPUTS_AT_CENTER per-sample invocations that all read the pixel centre through
+//                      interpolateAtOffset(x, 0): the reference's `center` MSAA shading, the
+//                      once-per-pixel shading a pipeline approximates on covered pixels.
+#if defined(TP_INPUTS_AT_PIXEL) || defined(TP_INPUTS_AT_CENTER)
+#define TP_IN in
+#else
+#define TP_IN sample in
+#endif
+#ifdef TP_INPUTS_AT_CENTER
+#define TP_INPUT(x) interpolateAtOffset(x, vec2(0.0))
+#else
+#define TP_INPUT(x) x
+#endif
+layout(location = 0) TP_IN vec3 inPosition; // camera-relative: world minus the eye (scene.vert)
+layout(location = 1) TP_IN vec3 inNormal;
+layout(location = 2) TP_IN vec2 inUv;
+layout(location = 3) TP_IN vec4 inTangent;
+layout(location = 4) TP_IN vec4 inColor;
+layout(location = 5) TP_IN float inOne; // 1, interpolated: see scene.vert
 
+// Every interpolant over the interpolated 1: a no-op (to an ulp) where the device
+// interpolates perspective-correctly at the sample; on lavapipe, which takes 1/w at the
+// pixel centre for a sample ((a/w)_s / (1/w)_centre), it restores (a/w)_s / (1/w)_s.
 MaterialSample evalFragmentMaterial() {
-    return evalMaterial(materials[draw.materialIndex], inPosition, inNormal, inUv, inTangent,
-                        inColor, gl_FrontFacing);
+    float k = 1.0 / TP_INPUT(inOne);
+    return evalMaterial(materials[draw.materialIndex], TP_INPUT(inPosition) * k, TP_INPUT(inNormal) * k,
+                        TP_INPUT(inUv) * k, TP_INPUT(inTangent) * k, TP_INPUT(inColor) * k, gl_FrontFacing);
 }

@@ -96,7 +96,7 @@ TP_STRUCT(FrameUniforms) {
     vec4 eyeWorld;    // xyz: the eye in world space (scene.vert's subtraction only), w unused
     vec4 ambient;        // rgb ambient radiance
     uvec4 viewport;      // width, height, light count, msaa samples
-    vec4 projParams;     // znear, zfar (0 = infinite), unused, unused
+    vec4 projParams;     // znear, zfar (0 = infinite), one (1.0: scene.vert's outOne), unused
 };
 
 // Push constant of every scene draw.

@@ -2,7 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // The reference: every light at every sample (per-sample shading is forced by the pipeline
 // state when MSAA is on), no culling, no intermediate storage. TP_ACCUM_FP64 accumulates
-// the light sum in double precision (shaderFloat64), otherwise in fp32.
+// the light sum in double precision (shaderFloat64), otherwise in fp32. Every sample reads
+// its inputs at its own location (supersampling: the ground truth at any MSAA level);
+// TP_INPUTS_AT_CENTER (the `center` MSAA shading) reads them at the pixel centre instead.
 #ifdef TP_ACCUM_FP64
 #extension GL_ARB_gpu_shader_fp64 : require
 #endif
