@@ -48,6 +48,7 @@ struct Knob {
     std::vector<std::string> readers, allowed;
     std::string SweepOptions::*list;
     void (*apply)(RenderSettings&, const std::string&);
+    bool msaaOnly = false; // changes nothing at 1x: only the first value runs there
 };
 
 const std::vector<Knob>& knobs() {
@@ -59,7 +60,7 @@ const std::vector<Knob>& knobs() {
         {"--gbuffer", {"deferred"}, {"compact", "wide"}, &SweepOptions::gbuffer,
          [](RenderSettings& s, const std::string& v) { s.gbuffer = v; }},
         {"--gbuffer-msaa", {"deferred"}, {"pixel", "sample"}, &SweepOptions::gbufferMsaa,
-         [](RenderSettings& s, const std::string& v) { s.gbufferMsaa = v; }},
+         [](RenderSettings& s, const std::string& v) { s.gbufferMsaa = v; }, true},
         {"--deferred-lighting", {"deferred"}, {"tiled", "volumes"}, &SweepOptions::deferredLighting,
          [](RenderSettings& s, const std::string& v) { s.deferredLighting = v; }},
         {"--accum", {"multipass_forward"}, {"fp16", "fp32"}, &SweepOptions::accum,
@@ -80,7 +81,9 @@ std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepO
     std::vector<RenderSettings> combos = {base};
     for (const Knob& k : knobs()) {
         std::vector<std::string> values = splitList(o.*k.list, k.option);
-        if (std::find(k.readers.begin(), k.readers.end(), pipeline) == k.readers.end()) values.resize(1);
+        if (std::find(k.readers.begin(), k.readers.end(), pipeline) == k.readers.end() ||
+            (k.msaaOnly && base.msaa == 1))
+            values.resize(1);
         std::vector<RenderSettings> next;
         for (const RenderSettings& c : combos)
             for (const std::string& v : values) {
@@ -222,8 +225,9 @@ int runSweep(const SweepOptions& o) {
         for (const std::string& m : splitList(o.msaa, "--msaa"))
             views.push_back({makeSettings(ViewOptions{r, toInt(m, "--msaa")}, *ctx, base), r});
     Progress progress;
-    for (const std::string& n : names) progress.total += knobCombos(n, o, base).size();
-    progress.total *= lightCounts.size() * views.size();
+    for (const View& view : views)
+        for (const std::string& n : names) progress.total += knobCombos(n, o, view.settings).size();
+    progress.total *= lightCounts.size();
     progress.references = o.referenceFrames > 0 ? lightCounts.size() * views.size() : 0;
     ensureDirectory(o.out);
     for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"}) std::remove((o.out + "/" + f).c_str());
