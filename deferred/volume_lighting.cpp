@@ -28,7 +28,7 @@ bool drawsCone(const gpu::LightGpu& light) {
 }
 
 VolumeLighting::~VolumeLighting() {
-    for (Stage* s : {&base_, &lights_, &expand_}) {
+    for (Stage* s : {&base_, &lights_, &sampleBase_}) {
         if (s->pipeline) vkDestroyPipeline(ctx_.device, s->pipeline, nullptr);
         if (s->layout) vkDestroyPipelineLayout(ctx_.device, s->layout, nullptr);
         destroyPassSet(ctx_, s->set);
@@ -46,26 +46,37 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
         t.volumeDepth = graph.createImage("volume_depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                            "nearest sample depth (1 on edges): volumes' depth test"});
     }
-    std::vector<PassUse> base, lights;
+    std::vector<PassUse> base, lights, sampleBase;
     for (ResourceHandle h : t.gbuffer) base.push_back({h, Use::Sampled});
     for (size_t i = 0; i < 3; ++i) lights.push_back({t.gbuffer[i], Use::Sampled}); // no emissive
     base.push_back({t.gbufferDepth, Use::Sampled});
     base.push_back({t.hdr, Use::ColorAttachment});
-    lights.push_back({t.hdr, Use::ColorAttachment});
+    if (perSampleHdr()) {
+        // Lit per sample into hdr_msaa, with no depth test (volume_light.frag says why).
+        sampleBase = base;
+        sampleBase.back() = {t.hdrMsaa, Use::ColorAttachment};
+        sampleBase.push_back({t.edgeMask, Use::Sampled});
+        lights.push_back({t.hdrMsaa, Use::ColorAttachment});
+        lights.push_back({t.gbufferDepth, Use::Sampled});
+        lights.push_back({t.edgeMask, Use::Sampled});
+    } else {
+        lights.push_back({t.hdr, Use::ColorAttachment});
+        if (msaa) {
+            lights.push_back({t.gbufferDepth, Use::Sampled});
+            lights.push_back({t.volumeDepth, Use::DepthTest});
+            lights.push_back({t.edgeMask, Use::Sampled});
+        } else {
+            lights.push_back({t.gbufferDepth, Use::DepthTest}); // tested and sampled
+        }
+    }
     if (msaa) {
         base.push_back({t.edgeMask, Use::ColorAttachment});
         base.push_back({t.volumeDepth, Use::DepthAttachment});
-        lights.push_back({t.gbufferDepth, Use::Sampled});
-        lights.push_back({t.volumeDepth, Use::DepthTest});
-        lights.push_back({t.edgeMask, Use::Sampled});
-    } else {
-        lights.push_back({t.gbufferDepth, Use::DepthTest}); // tested and sampled
     }
     graph.addPass("volume_base", base, [this](PassContext& pc) { recordBase(pc); });
+    if (perSampleHdr())
+        graph.addPass("volume_sample_base", sampleBase, [this](PassContext& pc) { recordSampleBase(pc); });
     graph.addPass("volume_lights", lights, [this](PassContext& pc) { recordLights(pc); });
-    if (t.hdrMsaa.valid())
-        graph.addPass("volume_expand", {{t.hdr, Use::Sampled}, {t.hdrMsaa, Use::ColorAttachment}},
-                      [this](PassContext& pc) { recordExpand(pc); });
 }
 
 void VolumeLighting::writeGBuffer(FrameGraph& graph, VkDescriptorSet set, bool emissive) {
@@ -101,7 +112,7 @@ void VolumeLighting::prepare(FrameGraph& graph) {
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
     prepareBase(graph);
     prepareLights(graph);
-    if (t_->hdrMsaa.valid()) prepareExpand(graph);
+    if (perSampleHdr()) prepareSampleBase(graph);
 }
 
 void VolumeLighting::prepareBase(FrameGraph& graph) {
@@ -141,7 +152,7 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     lights_.layout = scene_.createPipelineLayout(lights_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_volume_vert";
-    d.fragmentShader = std::string("deferred_volume_light_m") + (t_->msaa() ? "1" : "0") + "_frag";
+    d.fragmentShader = std::string("deferred_volume_light_m") + (perSampleHdr() ? "2" : t_->msaa() ? "1" : "0") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
@@ -151,23 +162,36 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     d.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL; // reverse-Z: back face at or behind the surface
     d.blend = BlendMode::Additive;
     d.layout = lights_.layout;
+    if (perSampleHdr()) {
+        d.samples = VkSampleCountFlagBits(t_->layout.samples);
+        d.sampleShading = true;
+        d.depthFormat = VK_FORMAT_UNDEFINED;
+        d.depthTest = false;
+    }
     lights_.pipeline = createGraphicsPipeline(ctx_, d);
 }
 
-void VolumeLighting::prepareExpand(FrameGraph& graph) {
-    expand_.set = createPassSet(ctx_, {{TP_DEF_BINDING_HDR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
-    writeImageDescriptor(ctx_, expand_.set.set, TP_DEF_BINDING_HDR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                         graph.image(t_->hdr).view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
-    expand_.layout = scene_.createPipelineLayout(expand_.set.layout);
+void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
+    std::vector<SetBinding> bindings = gbufferBindings(t_->gbuffer.size());
+    bindings.push_back({TP_DEF_BINDING_EDGE_MASK, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    sampleBase_.set = createPassSet(ctx_, bindings);
+    writeGBuffer(graph, sampleBase_.set.set, true);
+    writeImageDescriptor(ctx_, sampleBase_.set.set, TP_DEF_BINDING_EDGE_MASK, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                         graph.image(t_->edgeMask).view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
+    sampleBase_.layout = scene_.createPipelineLayout(sampleBase_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_fullscreen_vert";
-    d.fragmentShader = "deferred_volume_expand_frag";
+    d.fragmentShader = std::string("deferred_volume_sample_base_e") + (t_->layout.emissive ? "1" : "0") + "_frag";
+    d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+    d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+    d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
     d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
+    d.sampleShading = true;
     d.depthFormat = VK_FORMAT_UNDEFINED;
     d.depthTest = d.depthWrite = false;
-    d.layout = expand_.layout;
-    expand_.pipeline = createGraphicsPipeline(ctx_, d);
+    d.layout = sampleBase_.layout;
+    sampleBase_.pipeline = createGraphicsPipeline(ctx_, d);
 }
 
 void VolumeLighting::bind(VkCommandBuffer cmd, const Stage& stage) {
@@ -192,8 +216,12 @@ void VolumeLighting::recordBase(PassContext& pc) {
 }
 
 void VolumeLighting::recordLights(PassContext& pc) {
-    ResourceHandle depth = t_->msaa() ? t_->volumeDepth : t_->gbufferDepth;
-    beginRendering(pc, {ColorTarget{t_->hdr, {}, false}}, DepthTarget{depth, {}, false, true});
+    if (perSampleHdr()) {
+        beginRendering(pc, {ColorTarget{t_->hdrMsaa, {}, false}}, std::nullopt);
+    } else {
+        ResourceHandle depth = t_->msaa() ? t_->volumeDepth : t_->gbufferDepth;
+        beginRendering(pc, {ColorTarget{t_->hdr, {}, false}}, DepthTarget{depth, {}, false, true});
+    }
     bind(pc.cmd, lights_);
     vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_FRONT_BIT); // back faces only
     const std::vector<gpu::LightGpu>& lights = scene_.lightsGpu();
@@ -207,9 +235,9 @@ void VolumeLighting::recordLights(PassContext& pc) {
     endRendering(pc);
 }
 
-void VolumeLighting::recordExpand(PassContext& pc) {
+void VolumeLighting::recordSampleBase(PassContext& pc) {
     beginRendering(pc, {ColorTarget{t_->hdrMsaa}}, std::nullopt);
-    bind(pc.cmd, expand_);
+    bind(pc.cmd, sampleBase_);
     vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
     vkCmdDraw(pc.cmd, 3, 1, 0, 0);
     endRendering(pc);

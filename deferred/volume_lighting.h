@@ -4,8 +4,9 @@
 // volumes test against), then one draw per light rasterizes the back faces of its bounding
 // volume (sphere, cone or full-screen triangle) and adds that light (blend ONE + ONE) into
 // hdr. Shading is the tiled pass's code (shaders/deferred/gbuffer_read.glsl). A blended
-// scene under MSAA gets an expand pass that copies hdr to every sample of hdr_msaa for the
-// hybrid forward pass.
+// scene under MSAA is lit per sample into hdr_msaa, which the hybrid forward pass blends
+// into: volume_sample_base writes each sample's ambient + emissive there, and the volumes
+// run per sample against the G-buffer's per-sample depth.
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
@@ -39,17 +40,19 @@ class VolumeLighting {
     };
     void prepareBase(FrameGraph& graph);
     void prepareLights(FrameGraph& graph);
-    void prepareExpand(FrameGraph& graph);
+    void prepareSampleBase(FrameGraph& graph);
     void writeGBuffer(FrameGraph& graph, VkDescriptorSet set, bool emissive);
     void bind(VkCommandBuffer cmd, const Stage& stage);
     void recordBase(PassContext& pc);
     void recordLights(PassContext& pc);
-    void recordExpand(PassContext& pc);
+    void recordSampleBase(PassContext& pc);
+    // A blended scene under MSAA: lit per sample into hdr_msaa (the forward pass blends there).
+    bool perSampleHdr() const { return t_->hdrMsaa.valid(); }
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DeferredTargets* t_ = nullptr;
     VkSampler sampler_ = VK_NULL_HANDLE;
-    Stage base_, lights_, expand_;
+    Stage base_, lights_, sampleBase_;
 };
 
 } // namespace tp

@@ -41,16 +41,28 @@ triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp deferred_tiled_lists_
 # e = emissive target (the base pass adds it once).
 triptych_add_shader(SPVS ${SHADER_DIR}/fullscreen.vert deferred_fullscreen_vert)
 triptych_add_shader(SPVS ${SHADER_DIR}/volume.vert deferred_volume_vert)
-triptych_add_shader(SPVS ${SHADER_DIR}/volume_expand.frag deferred_volume_expand_frag)
-foreach(m 0 1)
+# m = 2: per-sample hdr (a blended scene under MSAA): the light pass runs per sample into
+# hdr_msaa after volume_sample_base wrote each sample's ambient + emissive there.
+foreach(m 0 1 2)
   set(msaa)
-  if(m)
+  if(m GREATER 0)
     set(msaa TP_MSAA=1)
+  endif()
+  if(m EQUAL 2)
+    list(APPEND msaa TP_HDR_MSAA=1)
   endif()
   triptych_add_shader(SPVS ${SHADER_DIR}/volume_light.frag deferred_volume_light_m${m}_frag
     DEFINES TP_EMISSIVE=0 ${msaa})
-  foreach(e 0 1)
+endforeach()
+foreach(e 0 1)
+  foreach(m 0 1)
+    set(msaa)
+    if(m)
+      set(msaa TP_MSAA=1)
+    endif()
     triptych_add_shader(SPVS ${SHADER_DIR}/volume_base.frag deferred_volume_base_m${m}_e${e}_frag
       DEFINES TP_EMISSIVE=${e} ${msaa})
   endforeach()
+  triptych_add_shader(SPVS ${SHADER_DIR}/volume_sample_base.frag deferred_volume_sample_base_e${e}_frag
+    DEFINES TP_EMISSIVE=${e})
 endforeach()

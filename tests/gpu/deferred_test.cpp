@@ -253,6 +253,17 @@ TEST(Deferred, VolumesAgreeWithTiled) {
             std::string what = "floor " + std::to_string(lights) + " lights " + std::to_string(msaa) + "x " + s.gbufferMsaa;
             expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, lights, msaa, what);
         }
+    // The courtyard has blended cloth: under MSAA both modes light hdr_msaa per sample and the
+    // hybrid forward pass blends into it (the same blend of the same values, so the same bound).
+    Scene courtyard = courtyardWithLights(64);
+    SceneGpu courtyardGpu(*ctx, courtyard);
+    for (const char* rate : {"pixel", "sample"}) {
+        RenderSettings s = small(4, "wide");
+        s.gbufferMsaa = rate;
+        RunResult tiled = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "tiled"));
+        RunResult volumes = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "volumes"));
+        expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, 64, 4, std::string("courtyard 64 lights 4x ") + rate);
+    }
     expectNoValidationMessages(*ctx);
 }
 
