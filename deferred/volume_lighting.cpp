@@ -46,15 +46,15 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
         t.volumeDepth = graph.createImage("volume_depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                            "nearest sample depth (1 on edges): volumes' depth test"});
     }
-    std::vector<PassUse> base, lights, sampleBase;
-    for (ResourceHandle h : t.gbuffer) base.push_back({h, Use::Sampled});
+    std::vector<PassUse> gbuffer, lights;
+    for (ResourceHandle h : t.gbuffer) gbuffer.push_back({h, Use::Sampled});
+    gbuffer.push_back({t.gbufferDepth, Use::Sampled});
     for (size_t i = 0; i < 3; ++i) lights.push_back({t.gbuffer[i], Use::Sampled}); // no emissive
-    base.push_back({t.gbufferDepth, Use::Sampled});
+    std::vector<PassUse> base = gbuffer, sampleBase = gbuffer;
     base.push_back({t.hdr, Use::ColorAttachment});
     if (perSampleHdr()) {
         // Lit per sample into hdr_msaa, with no depth test (volume_light.frag says why).
-        sampleBase = base;
-        sampleBase.back() = {t.hdrMsaa, Use::ColorAttachment};
+        sampleBase.push_back({t.hdrMsaa, Use::ColorAttachment});
         sampleBase.push_back({t.edgeMask, Use::Sampled});
         lights.push_back({t.hdrMsaa, Use::ColorAttachment});
         lights.push_back({t.gbufferDepth, Use::Sampled});
