@@ -277,6 +277,12 @@ RunOptions progressRunOptions(const std::string& label, int warmup, int frames) 
     return r;
 }
 
+std::string defaultPipelineList() {
+    std::string names;
+    for (const std::string& n : selectPipelines("")) names += (names.empty() ? "" : ",") + n;
+    return names;
+}
+
 std::vector<std::string> selectPipelines(const std::string& list) {
     std::vector<std::string> names;
     if (list.empty()) {

@@ -71,6 +71,8 @@ void checkFrameCounts(int frames, int warmup);
 // --pipelines: the named pipelines in order, without repeats (empty: every registered one
 // but the reference, which compare, sweep and stress always render).
 std::vector<std::string> selectPipelines(const std::string& list);
+// That default as the help texts show it: "forwardplus,deferred,...".
+std::string defaultPipelineList();
 // Exposure in EV: "auto" (log-average luminance of `image` to 0.18) or a number in [-64, 64].
 float parseExposure(const std::string& text, const ImageRGBA& image);
 // Warm-up then timed frames, one progress line per frame on stderr prefixed by `label`.

@@ -256,11 +256,8 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     addSceneOptions(*cmd, o->scene);
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
-    std::string names;
-    for (const RendererEntry& e : registeredRenderers())
-        if (e.name != "reference") names += (names.empty() ? "" : ",") + e.name;
     cmd->add_option("--pipelines", o->pipelines,
-                    "Comma-separated pipelines to compare with the reference (default: all: " + names + ")");
+                    "Comma-separated pipelines to compare with the reference (default: all: " + defaultPipelineList() + ")");
     cmd->add_option("--out", o->out,
                     "Output directory (created if missing) for the EXR/PNG images, difference maps, lights.json, "
                     "report.json and report.html; this run's files there are replaced")

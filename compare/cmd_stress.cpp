@@ -29,11 +29,8 @@ CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLi
         "3 validation messages (--validate), 2 bad input, 4 Vulkan failure");
     cmd->add_flag("--list", *list, "List the cases with what each stresses and expects, then exit");
     cmd->add_option("--case", o->cases, "Comma-separated case names (default: every case; see --list)");
-    std::string names;
-    for (const RendererEntry& e : registeredRenderers())
-        if (e.name != "reference") names += (names.empty() ? "" : ",") + e.name;
     cmd->add_option("--pipelines", o->pipelines,
-                    "Comma-separated pipelines to check against the reference (default: all: " + names + ")");
+                    "Comma-separated pipelines to check against the reference (default: all: " + defaultPipelineList() + ")");
     cmd->add_option("--out", o->out,
                     "Output directory (created if missing): CASE/NAME.exr|png, CASE/NAME_diff.exr|png, "
                     "stress.json, stress.html")

@@ -33,10 +33,7 @@ void BasePass::record(PassContext& pc, const Targets& t, bool resolve) {
     beginShading(pc, t, resolve, true);
     draws_ = 0;
     if (pipeline_) {
-        const SceneGpu& scene = env_.scene;
-        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-        scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        scene.bindIndexBuffer(pc.cmd);
+        bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const auto* list : {&env_.plan.opaque, &env_.plan.masked}) {
             for (const DrawItem* d : *list) recordDraw(pc.cmd, env_.layout, *d);
             draws_ += uint32_t(list->size());

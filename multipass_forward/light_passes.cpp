@@ -25,10 +25,7 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
     beginShading(pc, t, resolve, false);
     draws_ = 0;
     if (pipeline_) {
-        const SceneGpu& scene = env_.scene;
-        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-        scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        scene.bindIndexBuffer(pc.cmd);
+        bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const LightBatch& batch : env_.plan.batches) {
             setScissor(pc.cmd, batch.scissor);
             for (const DrawItem* d : batch.draws) recordDraw(pc.cmd, env_.layout, *d, batch.light);

@@ -47,6 +47,8 @@ void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear);
 GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
 // One scene draw; `light` goes to DrawPush.TP_MP_LIGHT_INDEX (ignored by non-light shaders).
 void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light = 0);
+// Binds `pipeline`, the scene set and the scene's index buffer: what every draw loop needs.
+void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline);
 void setScissor(VkCommandBuffer cmd, const ScreenRect& r);
 void destroyPipeline(GpuContext& ctx, VkPipeline& pipeline);
 

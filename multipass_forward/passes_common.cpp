@@ -36,6 +36,12 @@ void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d,
     vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
 }
 
+void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    env.scene.bindSceneSet(cmd, env.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    env.scene.bindIndexBuffer(cmd);
+}
+
 void setScissor(VkCommandBuffer cmd, const ScreenRect& r) {
     VkRect2D rect{{r.x0, r.y0}, {uint32_t(r.x1 - r.x0), uint32_t(r.y1 - r.y0)}};
     vkCmdSetScissor(cmd, 0, 1, &rect);

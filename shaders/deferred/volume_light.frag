@@ -38,29 +38,32 @@ vec3 lightSample(LightGpu light, ivec2 p, uint s, vec2 offset, float depth) {
     return evalLight(light, readSurface(p, s, position), kHasSpot);
 }
 
+#ifdef TP_MSAA
+// Sample s at its own position, or (one surface) the pixel at its centre with the mean depth.
+vec3 lightAtSample(LightGpu light, ivec2 p, uint s) {
+    float d = fetchDepth(p, s);
+    return d > 0.0 ? lightSample(light, p, s, sampleOffset(s), d) : vec3(0.0);
+}
+
+vec3 lightAtCentre(LightGpu light, ivec2 p) {
+    float d = meanDepth(p);
+    return d > 0.0 ? lightSample(light, p, 0u, vec2(0.5), d) : vec3(0.0);
+}
+#endif
+
 void main() {
     LightGpu light = lights[inLight];
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 c = vec3(0.0);
 #if defined(TP_HDR_MSAA)
     uint s = uint(gl_SampleID);
-    if (texelFetch(gEdge, p, 0).r > 0.5) {
-        float d = fetchDepth(p, s);
-        if (d > 0.0) c = lightSample(light, p, s, sampleOffset(s), d);
-    } else {
-        float d = meanDepth(p);
-        if (d > 0.0) c = lightSample(light, p, 0u, vec2(0.5), d);
-    }
+    c = texelFetch(gEdge, p, 0).r > 0.5 ? lightAtSample(light, p, s) : lightAtCentre(light, p);
 #elif defined(TP_MSAA)
     if (texelFetch(gEdge, p, 0).r > 0.5) {
-        for (uint s = 0u; s < kSamples; ++s) {
-            float d = fetchDepth(p, s);
-            if (d > 0.0) c += lightSample(light, p, s, sampleOffset(s), d);
-        }
+        for (uint s = 0u; s < kSamples; ++s) c += lightAtSample(light, p, s);
         c /= float(kSamples);
     } else {
-        float d = meanDepth(p);
-        if (d > 0.0) c = lightSample(light, p, 0u, vec2(0.5), d);
+        c = lightAtCentre(light, p);
     }
 #else
     float d = fetchDepth(p, 0u);
