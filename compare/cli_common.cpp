@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/reference/reference_renderer.h"
 #include "core/image/tonemap.h"
 #include "core/render/renderer.h"
 #include "core/scene/gltf_loader.h"
@@ -182,48 +183,27 @@ std::unique_ptr<GpuContext> createContext(const DeviceOptions& o) {
     return std::move(*ctx);
 }
 
-void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& referencePrecision) {
-    app.add_option("--tile", s.tileSize, "Tile edge in pixels for the tiled pipelines")
-        ->check(CLI::IsMember({8u, 16u, 32u}))
-        ->capture_default_str();
-    app.add_option("--light-lists", s.lightLists,
-                   "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed "
-                   "(fixed capacity per tile; drops are counted), linked (per-tile linked lists)")
-        ->check(CLI::IsMember({"compact", "fixed", "linked"}))
-        ->capture_default_str();
-    app.add_option("--tile-capacity", s.tileCapacity, "Light slots per tile of the 'fixed' layout")
-        ->check(CLI::Range(1u, 65536u))
-        ->capture_default_str();
-    app.add_option("--gbuffer", s.gbuffer, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)")
-        ->check(CLI::IsMember({"compact", "wide"}))
-        ->capture_default_str();
-    app.add_option("--gbuffer-msaa", s.gbufferMsaa,
-                   "Deferred G-buffer under MSAA: pixel (material evaluated once per pixel, written to the covered "
-                   "samples; only edges are lit per sample, Lauritzen 2010) or sample (material evaluated and lit at "
-                   "every sample: supersampled deferred, the reference's image at its cost)")
-        ->check(CLI::IsMember({"pixel", "sample"}))
-        ->capture_default_str();
-    app.add_option("--deferred-lighting", s.deferredLighting,
-                   "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")
-        ->check(CLI::IsMember({"tiled", "volumes"}))
-        ->capture_default_str();
-    app.add_option("--accum", s.accum, "Multipass forward accumulation target precision")
-        ->check(CLI::IsMember({"fp16", "fp32"}))
-        ->capture_default_str();
-    app.add_option("--reference-precision", referencePrecision,
-                   "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
-        ->check(CLI::IsMember({"fp32", "fp64"}))
-        ->capture_default_str();
-    addReferenceMsaaOption(app, s.referenceMsaaShading);
+void addKnobOptions(CLI::App& app, RenderSettings& s) {
+    for (const KnobReaders& k : allKnobs()) {
+        std::string& value = s.knobs[k.knob.name]; // a map node: the reference stays valid
+        value = k.knob.defaultValue;
+        app.add_option("--" + k.knob.name, value, knobHelp(k, false))->capture_default_str();
+    }
 }
 
-void addReferenceMsaaOption(CLI::App& app, std::string& shading) {
-    app.add_option("--reference-msaa", shading,
-                   "Reference under MSAA: sample (every sample shaded at its own location: supersampling, the "
-                   "ground truth) or center (every covered sample shaded with the inputs at the pixel centre: "
-                   "what shading once per pixel gives; the error against it leaves out the shading rate)")
-        ->check(CLI::IsMember({"sample", "center"}))
-        ->capture_default_str();
+std::string knobHelp(const KnobReaders& k, bool list) {
+    std::string readers;
+    for (const std::string& r : k.readers) readers += (readers.empty() ? "" : ", ") + r;
+    return (list ? "Comma-separated values. " : "") + k.knob.help + " [" + k.knob.allowedText() + "; read by " +
+           readers + (k.knob.msaaOnly ? "; matters only under MSAA" : "") + "]";
+}
+
+void checkKnobs(const RenderSettings& s) {
+    for (const KnobReaders& k : allKnobs()) {
+        auto it = s.knobs.find(k.knob.name);
+        if (it == s.knobs.end()) continue;
+        if (Status st = k.knob.check(it->second); !st) throw UsageError(st.error());
+    }
 }
 
 RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderSettings s) {
@@ -287,13 +267,13 @@ std::vector<std::string> selectPipelines(const std::string& list) {
     std::vector<std::string> names;
     if (list.empty()) {
         for (const RendererEntry& e : registeredRenderers())
-            if (e.name != "reference") names.push_back(e.name);
+            if (e.name != kReferenceRenderer) names.push_back(e.name);
         return names;
     }
     std::stringstream ss(list);
     std::string name;
     while (std::getline(ss, name, ',')) {
-        if (name == "reference") throw UsageError("--pipelines: the reference is always rendered; list the others");
+        if (name == kReferenceRenderer) throw UsageError("--pipelines: the reference is always rendered; list the others");
         Result<const RendererEntry*> e = findRenderer(name);
         if (!e) throw UsageError("--pipelines: " + e.error());
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);

@@ -10,6 +10,7 @@
 #include "core/gpu/context.h"
 #include "core/image/image.h"
 #include "core/render/frame_runner.h"
+#include "core/render/renderer.h"
 #include "core/render/settings.h"
 #include "core/scene/lights.h"
 #include "core/scene/scene.h"
@@ -49,11 +50,15 @@ void addSceneOptions(CLI::App& app, SceneOptions& o);
 CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
-// Pipeline knobs (tile size, list layout, G-buffer, lighting mode, accumulation, reference
-// precision) bound straight into the settings.
-void addPipelineOptions(CLI::App& app, RenderSettings& s, std::string& referencePrecision);
-// --reference-msaa sample|center (RenderSettings::referenceMsaaShading).
-void addReferenceMsaaOption(CLI::App& app, std::string& shading);
+// One option per knob of the registered renderers (core/render/knobs.h), bound into
+// s.knobs and set to the knob's default; checked by checkKnobs.
+void addKnobOptions(CLI::App& app, RenderSettings& s);
+// A knob's help text: what it does, its allowed values, who reads it, whether it matters
+// only under MSAA (list: sweep's comma-separated form).
+std::string knobHelp(const KnobReaders& k, bool list);
+// Every knob value in `s` against its declaration; UsageError (one line naming the knob and
+// its allowed values) on the first bad one. Commands call it before any GPU work.
+void checkKnobs(const RenderSettings& s);
 
 // Loads or builds the scene and sets its lights; warnings go to stderr.
 Scene loadScene(const SceneOptions& o);

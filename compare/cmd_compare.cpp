@@ -13,6 +13,7 @@
 #include "compare/compare.h"
 #include "compare/report_html.h"
 #include "compare/report_json.h"
+#include "core/reference/reference_renderer.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
 #include "core/image/image_io.h"
@@ -199,7 +200,6 @@ int runCompare(const CompareOptions& o) {
     r.options = &o;
     r.ctx = ctx.get();
     r.settings = makeSettings(o.view, *ctx, o.knobs);
-    r.settings.referenceFp64 = o.referencePrecision == "fp64";
     Scene scene = loadScene(o.scene);
     r.scene = &scene;
     r.features = analyzeScene(scene, r.settings.msaa);
@@ -217,7 +217,7 @@ int runCompare(const CompareOptions& o) {
 
     SceneGpu gpuScene(*ctx, scene);
     r.sharedMemory = ctx->ledger.entriesOf("scene");
-    r.reference = renderOne(*ctx, gpuScene, "reference", r, "[1/" + std::to_string(names.size() + 1) + "]");
+    r.reference = renderOne(*ctx, gpuScene, kReferenceRenderer, r, "[1/" + std::to_string(names.size() + 1) + "]");
     if (!r.reference.run) throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
@@ -268,8 +268,12 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     cmd->add_option("--exposure", o->exposure,
                     "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the reference)")
         ->capture_default_str();
-    addPipelineOptions(*cmd, o->knobs, o->referencePrecision);
-    return [o, cmd]() { return cmd->parsed() ? runCompare(*o) : -1; };
+    addKnobOptions(*cmd, o->knobs);
+    return [o, cmd]() {
+        if (!cmd->parsed()) return -1;
+        checkKnobs(o->knobs); // runCompare itself records a bad knob as that pipeline's failure
+        return runCompare(*o);
+    };
 }
 
 } // namespace tp::cli

@@ -18,6 +18,7 @@ struct InfoOptions {
     DeviceOptions device;
     ViewOptions view;
     bool devicesOnly = false;
+    RenderSettings knobs;
 };
 
 void printDevices() {
@@ -44,11 +45,22 @@ void printScene(const Scene& s, const SceneFeatures& f) {
 void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, const SceneFeatures& f,
                const RenderSettings& settings) {
     scene.setView(settings.width, settings.height, settings.msaa);
-    std::unique_ptr<Renderer> r = entry.factory({ctx, scene, f, settings});
+    std::printf("\nPipeline %s: %s\n", entry.name.c_str(), entry.description.c_str());
+    RenderSettings resolved = settings;
+    resolveKnobs(entry.knobs, resolved);
+    for (const Knob& k : entry.knobs)
+        std::printf("  --%s %s  (%s)\n", k.name.c_str(), resolved.text(k.name).c_str(), k.allowedText().c_str());
+    std::unique_ptr<Renderer> r;
     FrameGraph graph(ctx, entry.name, settings.width, settings.height);
-    r->plan(graph);
-    graph.compile();
-    std::printf("\nPipeline %s: %s\n  passes:", entry.name.c_str(), entry.description.c_str());
+    try {
+        r = createRenderer(entry, {ctx, scene, f, settings});
+        r->plan(graph);
+        graph.compile();
+    } catch (const RendererError& e) {
+        std::printf("  cannot be built here: %s\n", e.what());
+        return;
+    }
+    std::printf("  passes:");
     for (const std::string& p : graph.livePasses()) std::printf(" %s", p.c_str());
     for (const std::string& p : graph.culledPasses()) std::printf(" (%s: culled, output unused)", p.c_str());
     std::printf("\n");
@@ -64,10 +76,11 @@ void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, con
 }
 
 int run(InfoOptions& o) {
+    checkKnobs(o.knobs);
     printDevices();
     if (o.devicesOnly) return 0;
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
-    RenderSettings settings = makeSettings(o.view, *ctx);
+    RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
     Scene scene = loadScene(o.scene);
     SceneFeatures f = analyzeScene(scene, settings.msaa);
     printScene(scene, f);
@@ -82,11 +95,14 @@ int run(InfoOptions& o) {
 
 CommandRunner addInfoCommand(CLI::App& app) {
     auto o = std::make_shared<InfoOptions>();
-    CLI::App* cmd = app.add_subcommand("info", "Vulkan devices, scene statistics, and each pipeline's plan");
+    CLI::App* cmd = app.add_subcommand(
+        "info", "Vulkan devices, scene statistics, and each pipeline's knobs and plan (passes, resources, bytes) "
+                "for these settings, without rendering");
     addSceneOptions(*cmd, o->scene);
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
     cmd->add_flag("--devices", o->devicesOnly, "List the Vulkan devices only");
+    addKnobOptions(*cmd, o->knobs);
     return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
 }
 

@@ -6,6 +6,7 @@
 #include "compare/cli_common.h"
 #include "compare/commands.h"
 #include "compare/run_json.h"
+#include "core/reference/reference_renderer.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
@@ -20,13 +21,12 @@ struct RenderOptions {
     SceneOptions scene;
     DeviceOptions device;
     ViewOptions view;
-    std::string pipeline = "reference";
+    std::string pipeline = kReferenceRenderer;
     std::string out = "out";
     int frames = 3;
     int warmup = 1;
     std::string exposure = "auto";
     std::string exrType = "float";
-    std::string referencePrecision = "fp64";
     RenderSettings knobs;
 };
 
@@ -57,12 +57,12 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
 
 int run(RenderOptions& o) {
     checkFrameCounts(o.frames, o.warmup);
+    checkKnobs(o.knobs);
     Result<const RendererEntry*> entry = findRenderer(o.pipeline);
     if (!entry) throw UsageError("--pipeline: " + entry.error());
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
-    settings.referenceFp64 = o.referencePrecision == "fp64";
     Scene scene = loadScene(o.scene);
     ensureDirectory(o.out);
     SceneFeatures features = analyzeScene(scene, settings.msaa);
@@ -109,7 +109,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--exr-type", o->exrType, "EXR pixel type")
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
-    addPipelineOptions(*cmd, o->knobs, o->referencePrecision);
+    addKnobOptions(*cmd, o->knobs);
     cmd->add_flag("--debug", o->knobs.debug,
                   "Also write the pipeline's debug images (lights-per-tile heat map, tile depth bounds, "
                   "G-buffer channels, edge mask) as PIPELINE_debug_NAME.png");

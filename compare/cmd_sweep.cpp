@@ -15,6 +15,7 @@
 #include "compare/scene_hash.h"
 #include "compare/sweep.h"
 #include "compare/sweep_output.h"
+#include "core/reference/reference_renderer.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/tonemap.h"
 #include "core/render/scene_gpu.h"
@@ -42,53 +43,38 @@ int toInt(const std::string& s, const char* option) {
     return int(v);
 }
 
-// One list knob: its option, the pipelines that read it, its allowed values and where it goes.
-struct Knob {
-    const char* option;
-    std::vector<std::string> readers, allowed;
-    std::string SweepOptions::*list;
-    void (*apply)(RenderSettings&, const std::string&);
-    bool msaaOnly = false; // changes nothing at 1x: only the first value runs there
-};
-
-const std::vector<Knob>& knobs() {
-    static const std::vector<Knob> table = {
-        {"--tile", {"forwardplus", "deferred"}, {"8", "16", "32"}, &SweepOptions::tile,
-         [](RenderSettings& s, const std::string& v) { s.tileSize = uint32_t(std::stoi(v)); }},
-        {"--light-lists", {"forwardplus"}, {"compact", "fixed", "linked"}, &SweepOptions::lightLists,
-         [](RenderSettings& s, const std::string& v) { s.lightLists = v; }},
-        {"--gbuffer", {"deferred"}, {"compact", "wide"}, &SweepOptions::gbuffer,
-         [](RenderSettings& s, const std::string& v) { s.gbuffer = v; }},
-        {"--gbuffer-msaa", {"deferred"}, {"pixel", "sample"}, &SweepOptions::gbufferMsaa,
-         [](RenderSettings& s, const std::string& v) { s.gbufferMsaa = v; }, true},
-        {"--deferred-lighting", {"deferred"}, {"tiled", "volumes"}, &SweepOptions::deferredLighting,
-         [](RenderSettings& s, const std::string& v) { s.deferredLighting = v; }},
-        {"--accum", {"multipass_forward"}, {"fp16", "fp32"}, &SweepOptions::accum,
-         [](RenderSettings& s, const std::string& v) { s.accum = v; }}};
-    return table;
+// A knob's values in this sweep: the given list (or single value), else its default.
+std::vector<std::string> knobValues(const SweepOptions& o, const Knob& k) {
+    auto it = o.knobs.find(k.name);
+    if (it == o.knobs.end()) return {k.defaultValue};
+    if (!k.sweepable) return {it->second};
+    return splitList(it->second, ("--" + k.name).c_str());
 }
 
-void checkKnobValues(const SweepOptions& o) {
-    for (const Knob& k : knobs())
-        for (const std::string& v : splitList(o.*k.list, k.option))
-            if (std::find(k.allowed.begin(), k.allowed.end(), v) == k.allowed.end())
-                throw UsageError(std::string(k.option) + ": '" + v + "' is not one of the allowed values");
+// Every value of every knob against its declaration, before anything runs. Single values
+// (knobs the sweep does not vary) are checked by the CLI, like every command's knobs.
+void checkKnobLists(const SweepOptions& o) {
+    for (const KnobReaders& k : allKnobs()) {
+        if (!k.knob.sweepable) continue;
+        for (const std::string& v : knobValues(o, k.knob))
+            if (Status s = k.knob.check(v); !s) throw UsageError(s.error());
+    }
 }
 
 // A pipeline runs once per value of the knobs it reads, with the first value of the others,
 // so the sweep repeats no identical run.
 std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepOptions& o, const RenderSettings& base) {
     std::vector<RenderSettings> combos = {base};
-    for (const Knob& k : knobs()) {
-        std::vector<std::string> values = splitList(o.*k.list, k.option);
+    for (const KnobReaders& k : allKnobs()) {
+        std::vector<std::string> values = knobValues(o, k.knob);
         if (std::find(k.readers.begin(), k.readers.end(), pipeline) == k.readers.end() ||
-            (k.msaaOnly && base.msaa == 1))
+            (k.knob.msaaOnly && base.msaa == 1))
             values.resize(1);
         std::vector<RenderSettings> next;
         for (const RenderSettings& c : combos)
             for (const std::string& v : values) {
                 next.push_back(c);
-                k.apply(next.back(), v);
+                next.back().set(k.knob.name, v);
             }
         combos = std::move(next);
     }
@@ -118,7 +104,7 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
     row.bytesPerPixel = row.run["memory"]["bytes_per_pixel"].get<double>();
     for (const auto& [k, v] : r.stats.counters)
         if (k == "lights_dropped") row.dropped = v;
-    if (ref.run && name != "reference") {
+    if (ref.run && name != kReferenceRenderer) {
         MetricsOptions hdr;
         hdr.psnrPeak = ref.peak;
         row.hdr = computeError(r.hdr, ref.run->hdr, hdr);
@@ -139,7 +125,7 @@ struct Progress {
 
     void report(const SweepRow& row, const std::string& resText) {
         ++done;
-        bool isRef = row.pipeline == "reference";
+        bool isRef = row.pipeline == kReferenceRenderer;
         (isRef ? referenceSeconds : pipelineSeconds) += row.seconds;
         referencesDone += isRef;
         const size_t pipelinesDone = done - referencesDone, pipelinesTotal = total - references;
@@ -185,11 +171,11 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuC
     j["scene"]["files_hashed"] = files.files;
     j["scene"]["content_hash_fnv1a64"] = hashSceneContent(scene);
     j["device"] = deviceJson(ctx);
-    j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"tile", o.tile},
-                 {"light_lists", o.lightLists}, {"gbuffer", o.gbuffer}, {"gbuffer_msaa", o.gbufferMsaa},
-                 {"deferred_lighting", o.deferredLighting},
-                 {"accum", o.accum}, {"tile_capacity", o.tileCapacity}, {"light_types", o.scene.lightTypes},
-                 {"reference_precision", o.referencePrecision}, {"reference_msaa", o.referenceMsaa}};
+    j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"light_types", o.scene.lightTypes}};
+    for (const KnobReaders& k : allKnobs()) {
+        auto it = o.knobs.find(k.knob.name);
+        j["axes"][k.knob.key()] = it == o.knobs.end() ? k.knob.defaultValue : it->second;
+    }
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["reference_frames"] = o.referenceFrames;
@@ -210,16 +196,13 @@ void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows, cons
 int runSweep(const SweepOptions& o) {
     checkFrameCounts(o.frames, o.warmup);
     if (o.referenceFrames < 0 || o.referenceFrames > 1000) throw UsageError("--reference-frames must be between 0 and 1000");
-    checkKnobValues(o);
+    checkKnobLists(o);
     std::vector<std::string> names = selectPipelines(o.pipelines);
-    if (o.referenceFrames > 0) names.insert(names.begin(), "reference");
+    if (o.referenceFrames > 0) names.insert(names.begin(), kReferenceRenderer);
     std::vector<int> lightCounts;
     for (const std::string& s : splitList(o.lights, "--lights")) lightCounts.push_back(toInt(s, "--lights"));
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings base;
-    base.tileCapacity = o.tileCapacity;
-    base.referenceFp64 = o.referencePrecision == "fp64";
-    base.referenceMsaaShading = o.referenceMsaa;
     std::vector<View> views; // validated up front: bad input fails before any run
     for (const std::string& r : splitList(o.res, "--res"))
         for (const std::string& m : splitList(o.msaa, "--msaa"))
@@ -246,7 +229,7 @@ int runSweep(const SweepOptions& o) {
             Reference ref;
             for (const std::string& name : names)
                 for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
-                    const bool isRef = name == "reference";
+                    const bool isRef = name == kReferenceRenderer;
                     RunOptions ro = isRef ? progressRunOptions("reference", 0, o.referenceFrames) : RunOptions{};
                     if (!isRef) {
                         ro.warmupFrames = uint32_t(o.warmup);
@@ -287,7 +270,13 @@ CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLin
                  "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html. "
                  "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a run failed");
     addSweepOptions(*cmd, *o);
-    return [o, cmd]() { return cmd->parsed() ? runSweep(*o) : -1; };
+    return [o, cmd]() {
+        if (!cmd->parsed()) return -1;
+        for (const KnobReaders& k : allKnobs()) // the single values; lists are checked by runSweep
+            if (!k.knob.sweepable)
+                if (Status s = k.knob.check(o->knobs[k.knob.name]); !s) throw UsageError(s.error());
+        return runSweep(*o);
+    };
 }
 
 } // namespace tp::cli

@@ -20,7 +20,6 @@ struct CompareOptions {
     int frames = 3;
     int warmup = 1;
     std::string exposure = "auto";   // of every PNG; "auto" is taken from the reference
-    std::string referencePrecision = "fp64";
     RenderSettings knobs;
     std::vector<std::string> commandLine; // recorded in report.json
 };

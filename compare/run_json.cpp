@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/render/renderer.h"
+
 namespace tp::cli {
 
 nlohmann::json deviceJson(const GpuContext& ctx) {
@@ -17,18 +19,15 @@ nlohmann::json deviceJson(const GpuContext& ctx) {
 }
 
 nlohmann::json settingsJson(const RenderSettings& s) {
-    return {{"width", s.width},
-            {"height", s.height},
-            {"msaa", s.msaa},
-            {"reference_fp64", s.referenceFp64},
-            {"reference_msaa_shading", s.referenceMsaaShading},
-            {"tile_size", s.tileSize},
-            {"light_lists", s.lightLists},
-            {"tile_capacity", s.tileCapacity},
-            {"gbuffer", s.gbuffer},
-            {"gbuffer_msaa", s.gbufferMsaa},
-            {"deferred_lighting", s.deferredLighting},
-            {"accum", s.accum}};
+    nlohmann::json j = {{"width", s.width}, {"height", s.height}, {"msaa", s.msaa}};
+    // Every registered knob by its key, as the run had it (a knob nobody set: its default).
+    for (const KnobReaders& k : allKnobs()) {
+        auto it = s.knobs.find(k.knob.name);
+        const std::string& v = it == s.knobs.end() ? k.knob.defaultValue : it->second;
+        const bool number = k.knob.kind == Knob::Kind::Integer && k.knob.check(v);
+        j[k.knob.key()] = number ? nlohmann::json(std::stoull(v)) : nlohmann::json(v);
+    }
+    return j;
 }
 
 nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f) {

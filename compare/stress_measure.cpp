@@ -78,8 +78,11 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
     if (r.c->depthExact)
         check("depth pixels differing from the reference", double(p.depthMismatch), 0,
               "same triangles, same vertex shader (precise gl_Position), D32 reverse-Z");
-    for (const stress::CounterAtLeast& s : r.c->stressed) {
-        if (s.pipeline != p.name || !hasCounter(*p.run, s.counter)) continue;
+    const RendererEntry& entry = **findRenderer(p.name);
+    const std::vector<stress::CounterAtLeast> stressed =
+        entry.stressedCounters ? entry.stressedCounters(*r.c) : std::vector<stress::CounterAtLeast>{};
+    for (const stress::CounterAtLeast& s : stressed) {
+        if (!hasCounter(*p.run, s.counter)) continue;
         const double v = counter(*p.run, s.counter, 0);
         p.checks.push_back({"stressed: " + s.counter, v >= s.atLeast, v, s.atLeast, s.why});
     }
@@ -116,7 +119,10 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     p.lightsDropped = counter(*p.run, "lights_dropped", 0);
     p.depthMismatch = depthMismatch(p.run->depth, reference.run->depth);
     p.checkedMaxTonemapped = computeError(tonemapToDisplay(maskOverflow(p, ref), r.exposureEv), refDisplay).maxAbs;
-    p.bound = expectedBound(p.name, *r.c, scene, r.settings);
+    const RendererEntry& entry = **findRenderer(p.name);
+    RenderSettings settings = r.settings; // as the run saw it: its knobs' defaults filled in
+    resolveKnobs(entry.knobs, settings);
+    p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings});
     addChecks(p, r, ref);
     p.pass = true;
     for (const StressCheck& c : p.checks) p.pass &= c.pass;

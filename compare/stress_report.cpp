@@ -2,7 +2,7 @@
 #include "compare/stress_report.h"
 
 #include "compare/run_json.h"
-#include "compare/stress_expect.h"
+#include "core/render/error_model.h"
 
 namespace tp::cli {
 namespace {

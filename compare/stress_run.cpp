@@ -13,6 +13,7 @@
 #include "compare/stress_measure.h"
 #include "compare/stress_report.h"
 #include "compare/svg_plot.h"
+#include "core/reference/reference_renderer.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
 #include "core/image/image_io.h"
@@ -85,7 +86,7 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std
     std::filesystem::remove_all(dir);
     ensureDirectory(dir);
     SceneGpu gpuScene(ctx, scene);
-    r.reference = renderOne(ctx, gpuScene, "reference", scene, r.settings);
+    r.reference = renderOne(ctx, gpuScene, kReferenceRenderer, scene, r.settings);
     if (r.reference.run) {
         r.exposureEv = autoExposureEv(r.reference.run->hdr);
         countNonFinite(r.reference.run->hdr, r.reference.nanPixels, r.reference.infPixels);

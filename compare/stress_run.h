@@ -1,14 +1,14 @@
 #pragma once
 // triptych stress: every selected case of the catalogue (core/scene/stress_scenes.h) through
 // the reference and every registered pipeline, measured against the case's expectations
-// (compare/stress_expect.h), written as images, difference maps, stress.json and
+// (core/render/error_model.h and each pipeline's register.cpp), written as images, difference maps, stress.json and
 // stress.html (docs/stress.md).
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "compare/cli_common.h"
-#include "compare/stress_expect.h"
+#include "core/render/error_model.h"
 #include "core/image/metrics.h"
 #include "core/render/frame_runner.h"
 #include "core/scene/stress_scenes.h"

@@ -3,6 +3,7 @@
 // through the selected pipelines, the reference once per (light count, resolution, MSAA);
 // sweep.csv, sweep.json and sweep.html (docs/report.md). Exposed for the tests, which set
 // values the CLI would refuse.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,16 +14,15 @@ namespace tp::cli {
 struct SweepOptions {
     SceneOptions scene;   // lightCount is ignored: `lights` lists the counts
     DeviceOptions device;
-    // Comma-separated lists; each value of a knob is run only by the pipelines that read it.
-    std::string lights = "16,64,256", res = "320x180", msaa = "1", tile = "16", lightLists = "compact",
-                gbuffer = "compact", gbufferMsaa = "pixel", deferredLighting = "tiled", accum = "fp32";
+    // Comma-separated lists.
+    std::string lights = "16,64,256", res = "320x180", msaa = "1";
+    // Every registered knob by name: a comma-separated list for a sweepable knob (each value
+    // is run only by the pipelines that read it), one value for the others. Missing: default.
+    std::map<std::string, std::string> knobs;
     std::string pipelines; // empty: every registered one
     std::string out = "sweep";
     int frames = 2, warmup = 1;
     int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
-    uint32_t tileCapacity = 256;
-    std::string referencePrecision = "fp64";
-    std::string referenceMsaa = "sample"; // RenderSettings::referenceMsaaShading
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
 

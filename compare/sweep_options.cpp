@@ -1,6 +1,6 @@
 // The options of `triptych sweep`: lists where the sweep varies a setting, single values
 // where it does not. Each help text says what the option does, which pipelines read it
-// and its default.
+// and its default; the knob options come from the registered renderers' schemas.
 #include "compare/sweep.h"
 
 namespace tp::cli {
@@ -16,27 +16,12 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
     cmd.add_option("--res", o.res, "Comma-separated output resolutions WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--msaa", o.msaa, "Comma-separated samples per pixel (1, 2, 4, 8 as the device supports)")
         ->capture_default_str();
-    cmd.add_option("--tile", o.tile, "Comma-separated tile edges in pixels (8, 16, 32); read by forwardplus and deferred")
-        ->capture_default_str();
-    cmd.add_option("--light-lists", o.lightLists,
-                   "Comma-separated Forward+ light-list layouts (compact, fixed, linked); read by forwardplus")
-        ->capture_default_str();
-    cmd.add_option("--tile-capacity", o.tileCapacity, "Light slots per tile of the 'fixed' layout (one value)")
-        ->check(CLI::Range(1u, 65536u))
-        ->capture_default_str();
-    cmd.add_option("--gbuffer", o.gbuffer, "Comma-separated G-buffer layouts (compact, wide); read by deferred")
-        ->capture_default_str();
-    cmd.add_option("--gbuffer-msaa", o.gbufferMsaa,
-                   "Comma-separated deferred G-buffer rates under MSAA (pixel: material once per pixel, edges lit "
-                   "per sample; sample: material evaluated and lit at every sample); read by deferred")
-        ->capture_default_str();
-    cmd.add_option("--deferred-lighting", o.deferredLighting,
-                   "Comma-separated deferred lighting modes (tiled: compute with per-tile lists; volumes: one "
-                   "draw per light); read by deferred")
-        ->capture_default_str();
-    cmd.add_option("--accum", o.accum,
-                   "Comma-separated accumulation precisions (fp16, fp32); read by multipass_forward")
-        ->capture_default_str();
+    // One option per registered knob: a list where the sweep may vary it, else one value.
+    for (const KnobReaders& k : allKnobs()) {
+        std::string& value = o.knobs[k.knob.name];
+        value = k.knob.defaultValue;
+        cmd.add_option("--" + k.knob.name, value, knobHelp(k, k.knob.sweepable))->capture_default_str();
+    }
     cmd.add_option("--pipelines", o.pipelines,
                    "Comma-separated pipelines to run (default: every registered one); the reference runs anyway "
                    "unless --reference-frames 0");
@@ -49,11 +34,6 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
                    "count, resolution and MSAA. 0: no reference, no error figures")
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
-    cmd.add_option("--reference-precision", o.referencePrecision,
-                   "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
-        ->check(CLI::IsMember({"fp32", "fp64"}))
-        ->capture_default_str();
-    addReferenceMsaaOption(cmd, o.referenceMsaa);
     addSeedOption(cmd, o.scene.seed);
     cmd.add_option("--light-types", o.scene.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, e.g. point:3,spot:1")

@@ -9,6 +9,7 @@
 
 #include "compare/run_json.h"
 #include "compare/svg_plot.h"
+#include "core/render/renderer.h"
 
 namespace tp::cli {
 namespace {
@@ -36,16 +37,22 @@ std::string errorFields(const SweepRow& r, const ErrorReport& e) {
 } // namespace
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device) {
-    std::string t = "pipeline,lights,width,height,msaa,tile,light_lists,gbuffer,gbuffer_msaa,deferred_lighting,"
-                    "accum,status,"
-                    "frame_median_ms,frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,psnr_hdr,"
-                    "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,lights_dropped,device,error\n";
+    // One column per sweepable knob of the registered pipelines (their key), in registration order.
+    std::vector<Knob> columns;
+    for (const KnobReaders& k : allKnobs())
+        if (k.knob.sweepable) columns.push_back(k.knob);
+    std::string t = "pipeline,lights,width,height,msaa,";
+    for (const Knob& k : columns) t += k.key() + ",";
+    t += "status,frame_median_ms,frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,psnr_hdr,"
+         "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,lights_dropped,device,error\n";
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," + std::to_string(r.s.width) + "," +
-             std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + "," + std::to_string(r.s.tileSize) + "," +
-             csvField(r.s.lightLists) + "," + csvField(r.s.gbuffer) + "," + csvField(r.s.gbufferMsaa) + "," +
-             csvField(r.s.deferredLighting) + "," +
-             csvField(r.s.accum) + "," + r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
+             std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + ",";
+        for (const Knob& k : columns) {
+            auto it = r.s.knobs.find(k.name);
+            t += csvField(it == r.s.knobs.end() ? k.defaultValue : it->second) + ",";
+        }
+        t += r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
              number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) + "," +
              errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + number(r.dropped) + "," +
              csvField(device) + "," + csvField(r.error) + "\n";

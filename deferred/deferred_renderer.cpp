@@ -22,22 +22,16 @@ class DeferredRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
           gbuffer_(info.ctx, info.scene), lighting_(info.ctx, info.scene, info.settings.debug),
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
-        if (settings_.deferredLighting != "tiled" && settings_.deferredLighting != "volumes")
-            throw RendererError("--deferred-lighting must be tiled or volumes (got " +
-                                settings_.deferredLighting + ")");
-        useVolumes_ = settings_.deferredLighting == "volumes";
-        if (settings_.gbufferMsaa != "pixel" && settings_.gbufferMsaa != "sample")
-            throw RendererError("--gbuffer-msaa must be pixel or sample (got " + settings_.gbufferMsaa + ")");
+        // Values were checked against the schema (deferred/register.cpp) before this runs.
+        useVolumes_ = settings_.text("deferred-lighting") == "volumes";
     }
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, settings_);
-        t_.sampleRateGBuffer = settings_.gbufferMsaa == "sample";
-        // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels.
-        if (settings_.tileSize % 8 != 0 || settings_.tileSize == 0 || settings_.tileSize > 64)
-            throw std::runtime_error("deferred: --tile must be 8, 16, 32 or 64 (got " +
-                                     std::to_string(settings_.tileSize) + ")");
-        t_.tileSize = settings_.tileSize;
+        t_.sampleRateGBuffer = settings_.text("gbuffer-msaa") == "sample";
+        // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels:
+        // the tile knob's values (8, 16, 32) are all multiples of 8.
+        t_.tileSize = settings_.integer("tile");
         t_.tilesX = (graph.width() + t_.tileSize - 1) / t_.tileSize;
         t_.tilesY = (graph.height() + t_.tileSize - 1) / t_.tileSize;
         const uint32_t tiles = t_.tilesX * t_.tilesY;

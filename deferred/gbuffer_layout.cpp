@@ -26,7 +26,7 @@ uint32_t GBufferLayout::bytesPerSample() const {
 GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features,
                                 const RenderSettings& settings) {
     GBufferLayout g;
-    g.wide = settings.gbuffer == "wide";
+    g.wide = settings.text("gbuffer") == "wide";
     g.emissive = features.emissive;
     g.samples = settings.msaa;
     if (g.wide) {

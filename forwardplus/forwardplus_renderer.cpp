@@ -34,12 +34,8 @@ class ForwardPlusRenderer final : public Renderer {
   public:
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
-        if (settings_.tileSize != 8 && settings_.tileSize != 16 && settings_.tileSize != 32)
-            throw RendererError("tile size " + std::to_string(settings_.tileSize) + " (8, 16 or 32)");
-        layout_ = layoutFromName(settings_.lightLists);
-        if (layout_ == TP_FP_LAYOUT_FIXED && settings_.tileCapacity == 0)
-            throw RendererError("tile capacity must be at least 1");
-        grid_ = fp::makeTileGrid(settings_.width, settings_.height, settings_.tileSize);
+        layout_ = layoutFromName(settings_.text("light-lists"));
+        grid_ = fp::makeTileGrid(settings_.width, settings_.height, settings_.integer("tile"));
         // Two lists only when something is blended (and drawn).
         twoLists_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
         numLists_ = twoLists_ ? 2 : 1;
@@ -147,7 +143,7 @@ class ForwardPlusRenderer final : public Renderer {
     RendererStats stats() const override {
         RendererStats s;
         auto add = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
-        add("tile_size", settings_.tileSize);
+        add("tile_size", settings_.integer("tile"));
         add("tiles", grid_.count());
         add("light_lists", double(numLists_));
         add("directional_lights_unculled", double(classes_.directional.size()));
@@ -200,10 +196,10 @@ class ForwardPlusRenderer final : public Renderer {
     void sizeLists() {
         const uint64_t tileCount = grid_.count();
         if (layout_ == TP_FP_LAYOUT_FIXED) {
-            listStride_ = tileCount * settings_.tileCapacity;
+            listStride_ = tileCount * settings_.integer("tile-capacity");
             slotCount_ = listStride_ * numLists_;
             indexBytes_ = slotCount_ * 4;
-            indexPurpose_ = "light indices, " + std::to_string(settings_.tileCapacity) + " slots per tile" +
+            indexPurpose_ = "light indices, " + std::to_string(settings_.integer("tile-capacity")) + " slots per tile" +
                             (twoLists_ ? " and list" : "");
         } else {
             // The uploaded (camera-relative) view and lights: what the culling shader tests.
@@ -230,7 +226,7 @@ class ForwardPlusRenderer final : public Renderer {
         indexBytes_ = std::max<uint64_t>(indexBytes_, 16);
         const uint64_t limit = ctx_.caps.maxStorageBufferRange;
         if (indexBytes_ > limit || slotCount_ > 0xffffffffull)
-            throw RendererError("the '" + settings_.lightLists + "' light lists need " + std::to_string(indexBytes_) +
+            throw RendererError("the '" + settings_.text("light-lists") + "' light lists need " + std::to_string(indexBytes_) +
                                 " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
                                 ctx_.info.name + "; use a larger --tile, a lower --res, fewer lights" +
                                 (layout_ == TP_FP_LAYOUT_FIXED ? " or a smaller --tile-capacity" : ""));
@@ -247,7 +243,7 @@ class ForwardPlusRenderer final : public Renderer {
         const uint32_t offsetBase = uint32_t(data.size());
         if (layout_ == TP_FP_LAYOUT_COMPACT) data.insert(data.end(), tileOffsets_.begin(), tileOffsets_.end());
         data.push_back(0); // never empty
-        p.lights = glm::uvec4(dirCount, localCount, offsetBase, settings_.tileCapacity);
+        p.lights = glm::uvec4(dirCount, localCount, offsetBase, settings_.integer("tile-capacity"));
         p.lists = glm::uvec4(uint32_t(listStride_), uint32_t(poolNodes_), 0, 0);
         std::vector<uint8_t> bytes(sizeof(p) + data.size() * 4);
         std::memcpy(bytes.data(), &p, sizeof(p));
@@ -304,9 +300,9 @@ class ForwardPlusRenderer final : public Renderer {
             prepassMask_ = createGraphicsPipeline(ctx_, pre);
         }
 
-        std::string cullName = "fp_cull_" + settings_.lightLists + (msaa ? "_ms" : "") + "_comp";
+        std::string cullName = "fp_cull_" + settings_.text("light-lists") + (msaa ? "_ms" : "") + "_comp";
         std::vector<SpecConstant> cullSpec = scene_.specConstants(AlphaMode::Opaque);
-        cullSpec.push_back({TP_FP_SPEC_TILE_SIZE, settings_.tileSize});
+        cullSpec.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
         cullSpec.push_back({TP_FP_SPEC_SAMPLES, settings_.msaa});
         cullSpec.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
         cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_);
@@ -323,7 +319,7 @@ class ForwardPlusRenderer final : public Renderer {
             d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
             d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
             d.specConstants = scene_.specConstants(mode);
-            d.specConstants.push_back({TP_FP_SPEC_TILE_SIZE, settings_.tileSize});
+            d.specConstants.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
             d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
             d.specConstants.push_back({TP_FP_SPEC_LAYOUT, layout_});
             shade_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);

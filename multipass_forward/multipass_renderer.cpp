@@ -16,7 +16,7 @@ class MultipassForwardRenderer final : public Renderer {
   public:
     explicit MultipassForwardRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), settings_(info.settings),
-          accumFormat_(info.settings.accum == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT
+          accumFormat_(info.settings.text("accum") == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                     : VK_FORMAT_R32G32B32A32_SFLOAT),
           plan_(planLights(info.scene)) {}
 

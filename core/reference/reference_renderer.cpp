@@ -15,7 +15,7 @@ class ReferenceRenderer final : public Renderer {
   public:
     explicit ReferenceRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
-        fp64_ = settings_.referenceFp64 && ctx_.caps.float64;
+        fp64_ = (settings_.text("reference-precision") == "fp64") && ctx_.caps.float64;
     }
 
     ~ReferenceRenderer() override {
@@ -49,7 +49,7 @@ class ReferenceRenderer final : public Renderer {
     void prepare(FrameGraph&) override {
         layout_ = scene_.createPipelineLayout();
         GraphicsPipelineDesc d;
-        const bool center = settings_.msaa > 1 && settings_.referenceMsaaShading == "center";
+        const bool center = settings_.msaa > 1 && settings_.text("reference-msaa") == "center";
         d.fragmentShader = std::string(center ? "reference_center" : "reference") + (fp64_ ? "_fp64_frag" : "_frag");
         d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
         d.samples = VkSampleCountFlagBits(settings_.msaa);
@@ -69,9 +69,9 @@ class ReferenceRenderer final : public Renderer {
         s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});
         s.counters.push_back({"lights_evaluated_per_sample", double(scene_.lightCount())});
         if (settings_.msaa > 1)
-            s.counters.push_back({"shaded_at_pixel_center", settings_.referenceMsaaShading == "center" ? 1.0 : 0.0});
+            s.counters.push_back({"shaded_at_pixel_center", settings_.text("reference-msaa") == "center" ? 1.0 : 0.0});
         if (!fp64_)
-            s.leftOut.push_back({"fp64 accumulation", settings_.referenceFp64
+            s.leftOut.push_back({"fp64 accumulation", (settings_.text("reference-precision") == "fp64")
                                                           ? "device has no shaderFloat64"
                                                           : "fp32 chosen (--reference-precision fp32)"});
         if (settings_.msaa == 1)

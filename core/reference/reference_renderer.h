@@ -10,6 +10,10 @@
 
 namespace tp {
 
+// The registered name of the reference: compare, sweep and stress render it as the ground
+// truth whatever pipelines are selected.
+inline constexpr const char* kReferenceRenderer = "reference";
+
 std::unique_ptr<Renderer> createReferenceRenderer(const RendererCreateInfo& info);
 
 } // namespace tp

@@ -31,7 +31,7 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
     FrameGraph graph(ctx, entry.name, settings.width, settings.height);
     ResourceHandle hdr, depth;
     try {
-        renderer = entry.factory(info);
+        renderer = createRenderer(entry, info);
         renderer->plan(graph);
         hdr = graph.exported("hdr");
         depth = graph.exported("depth");

@@ -1,29 +1,41 @@
+// The name -> factory registry. Pipelines add themselves from their own folders with a
+// static RendererRegistration (the build links every object file, see CMakeLists.txt), so
+// nothing here or in the CLI lists them.
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/render/renderer.h"
 
 namespace tp {
-
-void registerBuiltinRenderers(); // compare/pipelines.cpp: the list of pipelines this build has
-
 namespace {
+
 std::vector<RendererEntry>& registry() {
     static std::vector<RendererEntry> entries;
     return entries;
 }
+
+void checkSharedKnobs(const RendererEntry& entry) {
+    for (const RendererEntry& other : registry())
+        for (const Knob& a : other.knobs)
+            for (const Knob& b : entry.knobs)
+                if (a.name == b.name && !(a == b))
+                    throw std::logic_error("knob '--" + a.name + "' is declared differently by " + other.name +
+                                           " and " + entry.name + ": a shared knob must be one declaration");
+}
+
 } // namespace
 
 void registerRenderer(RendererEntry entry) {
     auto& r = registry();
     std::erase_if(r, [&](const RendererEntry& e) { return e.name == entry.name; });
-    r.push_back(std::move(entry));
+    checkSharedKnobs(entry);
+    auto at = std::find_if(r.begin(), r.end(), [&](const RendererEntry& e) {
+        return e.order > entry.order || (e.order == entry.order && e.name > entry.name);
+    });
+    r.insert(at, std::move(entry));
 }
 
-const std::vector<RendererEntry>& registeredRenderers() {
-    static bool once = (registerBuiltinRenderers(), true);
-    (void)once;
-    return registry();
-}
+const std::vector<RendererEntry>& registeredRenderers() { return registry(); }
 
 Result<const RendererEntry*> findRenderer(const std::string& name) {
     for (const RendererEntry& e : registeredRenderers())
@@ -31,6 +43,22 @@ Result<const RendererEntry*> findRenderer(const std::string& name) {
     std::string names;
     for (const RendererEntry& e : registeredRenderers()) names += (names.empty() ? "" : ", ") + e.name;
     return Error{"unknown pipeline '" + name + "' (available: " + names + ")"};
+}
+
+std::vector<KnobReaders> allKnobs() {
+    std::vector<KnobReaders> all;
+    for (const RendererEntry& e : registeredRenderers())
+        for (const Knob& k : e.knobs) {
+            auto it = std::find_if(all.begin(), all.end(), [&](const KnobReaders& r) { return r.knob.name == k.name; });
+            if (it == all.end()) all.push_back({k, {e.name}});
+            else it->readers.push_back(e.name);
+        }
+    return all;
+}
+
+std::unique_ptr<Renderer> createRenderer(const RendererEntry& entry, RendererCreateInfo info) {
+    if (Status s = resolveKnobs(entry.knobs, info.settings); !s) throw RendererError(s.error());
+    return entry.factory(info);
 }
 
 } // namespace tp

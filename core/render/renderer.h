@@ -22,6 +22,8 @@
 #include <vector>
 
 #include "core/image/image.h"
+#include "core/render/error_model.h"
+#include "core/render/knobs.h"
 #include "core/render/settings.h"
 #include "core/scene/scene.h"
 #include "core/util/result.h"
@@ -78,14 +80,39 @@ struct RendererCreateInfo {
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const RendererCreateInfo&)>;
 
+// What a pipeline tells the rest of the program about itself, from its own folder
+// (register.cpp): nothing outside that folder spells its name or knows its knobs.
 struct RendererEntry {
     std::string name;
     std::string description;
     RendererFactory factory;
+    int order = 100;       // position in default lists and reports (the reference is 0)
+    KnobSchema knobs;      // every setting it reads (core/render/knobs.h)
+    // `triptych stress`: the pipeline's own precision terms and the counters a case must
+    // drive up for it (core/render/error_model.h); empty: a generic model.
+    ErrorModel errorModel;
+    StressedCounters stressedCounters;
 };
 
+// Adds or replaces the entry of that name. A knob declared by several renderers must be
+// declared identically: otherwise std::logic_error (a programming error, caught by the tests).
 void registerRenderer(RendererEntry entry);
-const std::vector<RendererEntry>& registeredRenderers(); // registers the built-ins on first use
+// A pipeline registers itself with one static object in its folder:
+//   static const tp::RendererRegistration registration{{"name", "...", factory, ...}};
+struct RendererRegistration {
+    explicit RendererRegistration(RendererEntry entry) { registerRenderer(std::move(entry)); }
+};
+const std::vector<RendererEntry>& registeredRenderers(); // in `order`, then by name
 Result<const RendererEntry*> findRenderer(const std::string& name);
+// Every knob of every registered renderer, once each, in registration order, with the
+// names of the renderers that read it.
+struct KnobReaders {
+    Knob knob;
+    std::vector<std::string> readers;
+};
+std::vector<KnobReaders> allKnobs();
+// Checks the entry's knobs in `info.settings`, fills in its defaults and builds it;
+// RendererError (one line naming the knob and its allowed values) on a bad value.
+std::unique_ptr<Renderer> createRenderer(const RendererEntry& entry, RendererCreateInfo info);
 
 } // namespace tp

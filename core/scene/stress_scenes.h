@@ -3,7 +3,8 @@
 // built to push one pipeline choice to its limit (a tile full of lights, a specular spike,
 // values beyond fp16, positions 10^6 from the origin, ...). Scenes are built in code, so a
 // case is the same on every machine; the expectations (error bounds and checks per
-// pipeline) live in compare/stress_expect.*, which reads the facts a case states here.
+// pipeline) come from each pipeline's error model (core/render/error_model.h), which reads
+// the facts a case states here.
 #include <functional>
 #include <string>
 #include <vector>
@@ -13,10 +14,10 @@
 
 namespace tp::stress {
 
-// A counter a pipeline must report for the case to have stressed what it claims
-// (e.g. the deferred shared light list overflowed). Pipelines without the counter skip it.
+// A counter a pipeline must report for the case to have stressed what it claims (e.g. a
+// shared light list overflowed); the pipeline names it from the case's facts
+// (RendererEntry::stressedCounters). Runs without the counter skip it.
 struct CounterAtLeast {
-    std::string pipeline;
     std::string counter;
     double atLeast = 0;
     std::string why;
@@ -38,7 +39,9 @@ struct StressCase {
     // Only directional lights and rough (roughness 1) dielectrics: the case where a
     // pipeline that shades a pixel once instead of per sample can be bounded.
     bool directionalRoughOnly = false;
-    std::vector<CounterAtLeast> stressed;
+    // Lights whose ranges all cover one tile: a pipeline with a per-tile limit checks that
+    // its overflow path ran (0: the case does not aim at tile capacity).
+    uint32_t lightsInOneTile = 0;
 };
 
 const std::vector<StressCase>& stressCases();

@@ -56,7 +56,7 @@ RenderSettings small(uint32_t msaa, const char* gbuffer) {
     s.width = 96;
     s.height = 64;
     s.msaa = msaa;
-    s.gbuffer = gbuffer;
+    s.set("gbuffer", gbuffer);
     return s;
 }
 
@@ -125,7 +125,7 @@ TEST(Deferred, SampleRateGBufferMatchesTheSupersampledReferenceAt4x) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     RenderSettings s = small(4, "wide");
-    s.gbufferMsaa = "sample";
+    s.set("gbuffer-msaa", "sample");
     for (uint32_t lights : {0u, 1u, 256u, 4096u}) {
         for (bool courtyard : {false, true}) {
             Pair p = renderBoth(*ctx, courtyard ? courtyardWithLights(lights) : floorWithLights(lights), s);
@@ -162,7 +162,7 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
         s.debug = true;
         RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", s);
         RunResult atSamples = runOrFail(*ctx, gpuScene, "reference", s);
-        s.referenceMsaaShading = "center";
+        s.set("reference-msaa", "center");
         RunResult atCentre = runOrFail(*ctx, gpuScene, "reference", s);
         const ImageRGBA* edges = nullptr;
         for (const DebugImage& d : deferred.debugImages)
@@ -211,7 +211,7 @@ TEST(Deferred, CompactWithinTheEncodingBound) {
 }
 
 RenderSettings withLighting(RenderSettings s, const char* lighting) {
-    s.deferredLighting = lighting;
+    s.set("deferred-lighting", lighting);
     return s;
 }
 
@@ -247,10 +247,10 @@ TEST(Deferred, VolumesAgreeWithTiled) {
             SceneGpu gpuScene(*ctx, scene);
             const uint32_t msaa = std::min(mode, 4u);
             RenderSettings s = small(msaa, "wide");
-            if (mode == 5u) s.gbufferMsaa = "sample";
+            if (mode == 5u) s.set("gbuffer-msaa", "sample");
             RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "tiled"));
             RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "volumes"));
-            std::string what = "floor " + std::to_string(lights) + " lights " + std::to_string(msaa) + "x " + s.gbufferMsaa;
+            std::string what = "floor " + std::to_string(lights) + " lights " + std::to_string(msaa) + "x " + (mode == 5u ? "sample" : "pixel");
             expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, lights, msaa, what);
         }
     // The courtyard has blended cloth: under MSAA both modes light hdr_msaa per sample and the
@@ -259,7 +259,7 @@ TEST(Deferred, VolumesAgreeWithTiled) {
     SceneGpu courtyardGpu(*ctx, courtyard);
     for (const char* rate : {"pixel", "sample"}) {
         RenderSettings s = small(4, "wide");
-        s.gbufferMsaa = rate;
+        s.set("gbuffer-msaa", rate);
         RunResult tiled = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "tiled"));
         RunResult volumes = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "volumes"));
         expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, 64, 4, std::string("courtyard 64 lights 4x ") + rate);
@@ -294,7 +294,7 @@ TEST(Deferred, TiledShadesEveryLightBeyondTheSharedListAndTheLoopLimit) {
     for (auto [tile, msaa] : {std::pair{32u, 1u}, std::pair{16u, 4u}}) {
         RenderSettings s = small(msaa, "wide");
         s.width = s.height = 32;
-        s.tileSize = tile;
+        s.set("tile", tile);
         RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "tiled"));
         RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "volumes"));
         std::string what = "floor " + std::to_string(lights) + " lights, tile " + std::to_string(tile) + ", " +

@@ -148,7 +148,7 @@ TEST(ForwardPlusReference, FloorTileSizes8And32) {
     for (uint32_t tile : {8u, 32u}) {
         SCOPED_TRACE(tile);
         RenderSettings s = small(80, 56, 1);
-        s.tileSize = tile;
+        s.set("tile", tile);
         expectMatchesReference(floorScene(256), s);
     }
 }
@@ -194,8 +194,10 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     scene.setView(settings.width, settings.height, settings.msaa);
     Result<const RendererEntry*> entry = findRenderer("forwardplus");
     EXPECT_TRUE(entry.ok());
-    RendererCreateInfo info{ctx, scene, analyzeScene(scene.scene(), settings.msaa), settings};
-    std::unique_ptr<Renderer> renderer = (*entry)->factory(info);
+    RenderSettings resolved = settings; // the knobs' defaults filled in, as the renderer sees them
+    EXPECT_TRUE(resolveKnobs((*entry)->knobs, resolved).ok());
+    RendererCreateInfo info{ctx, scene, analyzeScene(scene.scene(), settings.msaa), resolved};
+    std::unique_ptr<Renderer> renderer = createRenderer(**entry, info);
     FrameGraph graph(ctx, "forwardplus", settings.width, settings.height);
     renderer->plan(graph);
     graph.compile();
@@ -214,7 +216,7 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     std::vector<uint8_t> i = readbackBuffer(ctx, graph.buffer(graph.exported("fp_light_indices")));
     out.indices.resize(i.size() / 4);
     std::memcpy(out.indices.data(), i.data(), out.indices.size() * 4);
-    out.grid = fp::makeTileGrid(settings.width, settings.height, settings.tileSize);
+    out.grid = fp::makeTileGrid(settings.width, settings.height, resolved.integer("tile"));
     renderer->collectStats(graph);
     out.stats = renderer->stats();
     out.debug = renderer->debugImages(graph);
@@ -322,7 +324,7 @@ TEST(ForwardPlusCulling, LayoutsHoldTheSameListsAndHeatMapCountsMatch) {
     std::vector<ListRun> runs;
     for (const char* layout : {"compact", "fixed", "linked"}) {
         RenderSettings s = settings;
-        s.lightLists = layout;
+        s.set("light-lists", layout);
         s.debug = true;
         runs.push_back(runLists(*ctx, gpuScene, s));
     }
@@ -375,10 +377,10 @@ TEST(ForwardPlusLayouts, AllLayoutsGiveTheSameImage) {
     for (uint32_t msaa : {1u, 4u}) {
         RenderSettings s = small(96, 54, msaa);
         RunResult compact = runOrFail(*ctx, gpuScene, "forwardplus", s);
-        s.lightLists = "linked";
+        s.set("light-lists", "linked");
         RunResult linked = runOrFail(*ctx, gpuScene, "forwardplus", s);
-        s.lightLists = "fixed";
-        s.tileCapacity = 256;
+        s.set("light-lists", "fixed");
+        s.set("tile-capacity", 256);
         RunResult fixed = runOrFail(*ctx, gpuScene, "forwardplus", s);
         EXPECT_EQ(compact.hdr.rgba, linked.hdr.rgba) << msaa << "x";
         EXPECT_EQ(compact.hdr.rgba, fixed.hdr.rgba) << msaa << "x";
@@ -399,8 +401,8 @@ TEST(ForwardPlusLayouts, FixedWithTinyCapacityCountsDropsAndShowsThem) {
     s.debug = true;
     ListRun compact = runLists(*ctx, gpuScene, s);
     RunResult ref = runOrFail(*ctx, gpuScene, "reference", s);
-    s.lightLists = "fixed";
-    s.tileCapacity = 2;
+    s.set("light-lists", "fixed");
+    s.set("tile-capacity", 2);
     ListRun fixed = runLists(*ctx, gpuScene, s);
     RunResult fixedRun = runOrFail(*ctx, gpuScene, "forwardplus", s);
     uint64_t expectDropped = 0, overflowTiles = 0;
@@ -468,9 +470,9 @@ TEST(ForwardPlusPlan, RefusesListsBeyondMaxStorageBufferRange) {
     Scene scene = floorScene(4);
     SceneGpu gpuScene(*ctx, scene);
     RenderSettings s = small(4096, 4096, 1);
-    s.tileSize = 8;
-    s.lightLists = "fixed";
-    s.tileCapacity = 65536;
+    s.set("tile", 8);
+    s.set("light-lists", "fixed");
+    s.set("tile-capacity", 65536);
     Result<const RendererEntry*> entry = findRenderer("forwardplus");
     ASSERT_TRUE(entry.ok());
     RunOptions o;

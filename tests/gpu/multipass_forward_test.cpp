@@ -188,7 +188,7 @@ TEST(MultipassForward, Fp16ErrorWithinBoundAndLargerThanFp32) {
         s.height = 64;
         ImageRGBA ref = runOrFail(*ctx, gpu, "reference", s).hdr;
         ImageRGBA fp32 = runOrFail(*ctx, gpu, "multipass_forward", s).hdr;
-        s.accum = "fp16";
+        s.set("accum", "fp16");
         RunResult fp16 = runOrFail(*ctx, gpu, "multipass_forward", s);
         EXPECT_EQ(statOf(fp16, "accumulation_bits"), 16.0);
         std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());

@@ -1,0 +1,66 @@
+#pragma once
+// What `triptych stress` expects of a pipeline in a case: a per-pixel error bound against
+// the reference derived from how the pipeline computes (storage formats, summation,
+// G-buffer quantization), never from what it printed. The generic terms are here; each
+// pipeline adds its own from its folder (RendererEntry::errorModel). docs/stress.md
+// explains each term.
+//
+// The bound is |pipeline - reference| <= relative * |reference| + absolute per HDR channel.
+// The verdict checks it on tonemapped values (what a user sees, and where a relative bound
+// stays meaningful next to black pixels): the tonemap T (one exposure for both images)
+// changes by at most K * relative + S0 * 2^ev * absolute, with
+//   K  = sup_x x * T'(x)  (a relative change of x moves T by at most K times it),
+//   S0 = sup_x T'(x)      (an absolute change of x moves T by at most S0 times it),
+// both computed here from the tonemap operator itself (shaders/include/tonemap.h).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/render/settings.h"
+#include "core/scene/scene.h"
+#include "core/scene/stress_scenes.h"
+
+namespace tp {
+
+struct BoundTerm {
+    std::string name;
+    double relative = 0;
+    double absolute = 0;
+    std::string why;
+};
+
+struct ErrorBound {
+    bool bounded = true; // false: the method gives no per-pixel bound here (`why` says so)
+    std::string why;
+    std::vector<BoundTerm> terms;
+    double relative() const;
+    double absolute() const;
+    // Largest allowed |T(pipeline) - T(reference)| per channel at exposure `ev`.
+    double tonemapped(float ev) const;
+};
+
+// Rounding units the pipelines' models are written in.
+constexpr double kHalfUlp16 = 1.0 / 1024.0; // fp16 store: below one ulp, 2^-10 relative
+constexpr double kUlp32 = 1.0 / 16777216.0; // 2^-24
+
+// K and S0 of the header comment, from the tonemap at exposure 0 (K does not depend on
+// exposure; S0 scales with 2^ev).
+double tonemapRelativeSlope();
+double tonemapAbsoluteSlope();
+
+struct ErrorModelInput {
+    const stress::StressCase& stressCase;
+    const Scene& scene;
+    const RenderSettings& settings; // knobs resolved
+};
+
+// Adds the pipeline's own terms to `bound` (or marks it unbounded with the reason).
+using ErrorModel = std::function<void(ErrorBound& bound, const ErrorModelInput& in)>;
+// The counters a case must drive up for this pipeline to have stressed what the case claims.
+using StressedCounters = std::function<std::vector<stress::CounterAtLeast>(const stress::StressCase&)>;
+
+// The bound for a pipeline with model `model` (may be empty: a generic two-fp16-roundings
+// model) in a case: the shared terms (summation, same code in another shader) plus its own.
+ErrorBound expectedBound(const ErrorModel& model, const ErrorModelInput& in);
+
+} // namespace tp

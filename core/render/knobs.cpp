@@ -1,0 +1,74 @@
+#include "core/render/knobs.h"
+
+#include <algorithm>
+
+#include "core/render/renderer.h"
+
+namespace tp {
+namespace {
+
+bool wholeNumber(const std::string& text, uint32_t& out) {
+    if (text.empty() || text.size() > 10 || text.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    const unsigned long long v = std::stoull(text);
+    if (v > 0xffffffffull) return false;
+    out = uint32_t(v);
+    return true;
+}
+
+} // namespace
+
+std::string Knob::key() const {
+    std::string k = name;
+    std::replace(k.begin(), k.end(), '-', '_');
+    return k;
+}
+
+std::string Knob::allowedText() const {
+    if (kind == Kind::Integer && values.empty()) return std::to_string(min) + " to " + std::to_string(max);
+    std::string text;
+    for (const std::string& v : values) text += (text.empty() ? "" : ", ") + v;
+    return text;
+}
+
+Status Knob::check(const std::string& value) const {
+    uint32_t n = 0;
+    const bool listed = std::find(values.begin(), values.end(), value) != values.end();
+    const bool ok = kind == Kind::Choice ? listed
+                                          : wholeNumber(value, n) && (values.empty() ? n >= min && n <= max : listed);
+    if (ok) return {};
+    return Error{"--" + name + " '" + value + "': allowed values are " + allowedText()};
+}
+
+Status resolveKnobs(const KnobSchema& schema, RenderSettings& s) {
+    for (const Knob& k : schema) {
+        auto it = s.knobs.find(k.name);
+        if (it == s.knobs.end()) {
+            s.knobs[k.name] = k.defaultValue;
+            continue;
+        }
+        if (Status st = k.check(it->second); !st) return st;
+    }
+    return {};
+}
+
+const std::string& RenderSettings::text(const std::string& name) const {
+    auto it = knobs.find(name);
+    if (it == knobs.end()) throw RendererError("knob '" + name + "' has no value (not declared by this renderer?)");
+    return it->second;
+}
+
+uint32_t RenderSettings::integer(const std::string& name) const {
+    uint32_t n = 0;
+    if (!wholeNumber(text(name), n)) throw RendererError("knob '" + name + "': '" + text(name) + "' is not a whole number");
+    return n;
+}
+
+RenderSettings& RenderSettings::set(const std::string& name, const std::string& value) {
+    knobs[name] = value;
+    return *this;
+}
+
+RenderSettings& RenderSettings::set(const std::string& name, uint32_t value) { return set(name, std::to_string(value)); }
+
+} // namespace tp

@@ -1,0 +1,10 @@
+#pragma once
+// Deferred's precision model for `triptych stress` (docs/stress.md): positions from depth,
+// the compact G-buffer's quantization, and shading once per pixel under MSAA.
+#include "core/render/error_model.h"
+
+namespace tp {
+
+void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in);
+
+} // namespace tp

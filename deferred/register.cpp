@@ -1,0 +1,45 @@
+// G-buffer deferred as the rest of the program sees it: its name, its knobs, its precision
+// model for `triptych stress` (deferred/error_model.cpp).
+#include "core/lightassign/tile_knob.h"
+#include "core/render/renderer.h"
+#include "deferred/deferred_renderer.h"
+#include "deferred/error_model.h"
+#include "include/shared.h"
+
+namespace tp {
+namespace {
+
+Knob choice(const char* name, std::vector<std::string> values, const char* help, bool msaaOnly = false) {
+    Knob k;
+    k.name = name;
+    k.values = std::move(values);
+    k.defaultValue = k.values.front();
+    k.help = help;
+    k.msaaOnly = msaaOnly;
+    return k;
+}
+
+KnobSchema deferredKnobs() {
+    return {la::tileSizeKnob(),
+            choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),
+            choice("gbuffer-msaa", {"pixel", "sample"},
+                   "Deferred G-buffer under MSAA: pixel (material evaluated once per pixel, written to the covered "
+                   "samples; only edges are lit per sample, Lauritzen 2010) or sample (material evaluated and lit "
+                   "at every sample: supersampled deferred, the reference's image at its cost)",
+                   true),
+            choice("deferred-lighting", {"tiled", "volumes"},
+                   "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")};
+}
+
+std::vector<stress::CounterAtLeast> deferredStressed(const stress::StressCase& c) {
+    if (c.lightsInOneTile <= TP_DEF_TILE_LIGHT_CAPACITY) return {};
+    return {{"tiles_over_shared_capacity", 1, "the 4,096-light shared list must overflow (the case puts " +
+                                                  std::to_string(c.lightsInOneTile) + " in one tile)"}};
+}
+
+const RendererRegistration registration{
+    {"deferred", "G-buffer deferred: tiled compute lighting, hybrid forward pass for blended", createDeferredRenderer,
+     20, deferredKnobs(), deferredErrorModel, deferredStressed}};
+
+} // namespace
+} // namespace tp

@@ -1,0 +1,49 @@
+// Forward+ as the rest of the program sees it: its name, its knobs, its precision model for
+// `triptych stress`. This file is the only place outside forwardplus/ that needs to change
+// when Forward+ gains a knob: nowhere.
+#include "core/lightassign/tile_knob.h"
+#include "core/render/renderer.h"
+#include "forwardplus/forwardplus_renderer.h"
+
+namespace tp {
+namespace {
+
+KnobSchema forwardPlusKnobs() {
+    Knob lists;
+    lists.name = "light-lists";
+    lists.values = {"compact", "fixed", "linked"};
+    lists.defaultValue = "compact";
+    lists.help = "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "
+                 "capacity per tile; drops are counted), linked (per-tile linked lists)";
+    Knob capacity;
+    capacity.name = "tile-capacity";
+    capacity.kind = Knob::Kind::Integer;
+    capacity.min = 1;
+    capacity.max = 65536;
+    capacity.defaultValue = "256";
+    capacity.help = "Light slots per tile of the 'fixed' light-list layout";
+    capacity.sweepable = false;
+    return {la::tileSizeKnob(), lists, capacity};
+}
+
+// Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).
+void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
+    const int roundings = in.settings.msaa > 1 ? 2 : 1;
+    b.terms.push_back({"fp16 colour storage", roundings * kHalfUlp16, roundings * 6e-8,
+                       std::to_string(roundings) + " fp16 store(s) (sample, resolve): each below one ulp, 2^-10 "
+                       "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
+}
+
+std::vector<stress::CounterAtLeast> forwardPlusStressed(const stress::StressCase& c) {
+    if (c.lightsInOneTile <= 4096) return {};
+    return {{"lights_per_tile_max", 4097, "a tile list must hold more than 4,096 lights (the case puts " +
+                                              std::to_string(c.lightsInOneTile) + " in one tile)"}};
+}
+
+const RendererRegistration registration{{"forwardplus",
+                                         "Forward+: depth prepass, per-tile light lists in compute, forward shading",
+                                         createForwardPlusRenderer, 10, forwardPlusKnobs(), forwardPlusErrorModel,
+                                         forwardPlusStressed}};
+
+} // namespace
+} // namespace tp

@@ -1,0 +1,32 @@
+// Multipass forward as the rest of the program sees it: its name, its knobs, its precision
+// model for `triptych stress`.
+#include "core/render/renderer.h"
+#include "multipass_forward/multipass_renderer.h"
+
+namespace tp {
+namespace {
+
+KnobSchema multipassKnobs() {
+    Knob accum;
+    accum.name = "accum";
+    accum.values = {"fp16", "fp32"};
+    accum.defaultValue = "fp32";
+    accum.help = "Multipass forward accumulation target precision";
+    return {accum};
+}
+
+void multipassErrorModel(ErrorBound& b, const ErrorModelInput& in) {
+    const size_t lights = in.scene.lights.size();
+    if (in.settings.text("accum") == "fp16")
+        b.terms.push_back({"fp16 accumulation", double(lights + 2) * kHalfUlp16, double(lights + 2) * 6e-8,
+                           "one fp16 rounding per additive pass"});
+    else
+        b.terms.push_back({"fp32 accumulation", 0, 0, "each additive pass rounds in fp32: inside the summation term"});
+}
+
+const RendererRegistration registration{{"multipass_forward", "one additive pass per light after a depth prepass",
+                                         createMultipassForwardRenderer, 30, multipassKnobs(), multipassErrorModel,
+                                         {}}};
+
+} // namespace
+} // namespace tp
