@@ -5,6 +5,15 @@
 #include "core/render/renderer.h"
 
 namespace tp::cli {
+namespace {
+
+// An integer knob as a number, the others as text.
+nlohmann::json knobJson(const Knob& k, const std::string& value) {
+    const bool number = k.kind == Knob::Kind::Integer && k.check(value);
+    return number ? nlohmann::json(std::stoull(value)) : nlohmann::json(value);
+}
+
+} // namespace
 
 nlohmann::json deviceJson(const GpuContext& ctx) {
     nlohmann::json j;
@@ -18,14 +27,13 @@ nlohmann::json deviceJson(const GpuContext& ctx) {
     return j;
 }
 
+
 nlohmann::json settingsJson(const RenderSettings& s) {
     nlohmann::json j = {{"width", s.width}, {"height", s.height}, {"msaa", s.msaa}};
     // Every registered knob by its key, as the run had it (a knob nobody set: its default).
     for (const KnobReaders& k : allKnobs()) {
         auto it = s.knobs.find(k.knob.name);
-        const std::string& v = it == s.knobs.end() ? k.knob.defaultValue : it->second;
-        const bool number = k.knob.kind == Knob::Kind::Integer && k.knob.check(v);
-        j[k.knob.key()] = number ? nlohmann::json(std::stoull(v)) : nlohmann::json(v);
+        j[k.knob.key()] = knobJson(k.knob, it == s.knobs.end() ? k.knob.defaultValue : it->second);
     }
     return j;
 }
@@ -53,6 +61,8 @@ nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f) {
 nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     nlohmann::json j;
     j["pipeline"] = run.renderer;
+    j["knobs"] = nlohmann::json::object(); // the knobs this pipeline reads, as it ran
+    for (const auto& [knob, value] : run.knobs) j["knobs"][knob.key()] = knobJson(knob, value);
     nlohmann::json timings = nlohmann::json::array();
     for (const TimingStats& t : run.timings)
         timings.push_back({{"pass", t.name},

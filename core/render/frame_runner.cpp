@@ -25,8 +25,10 @@ void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler) 
 Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
                               const SceneFeatures& features, const RenderSettings& settings,
                               const RunOptions& options) {
+    RenderSettings resolved = settings;
+    if (Status s = resolveKnobs(entry.knobs, resolved); !s) return Error{"pipeline " + entry.name + ": " + s.error()};
     scene.setView(settings.width, settings.height, settings.msaa);
-    RendererCreateInfo info{ctx, scene, features, settings};
+    RendererCreateInfo info{ctx, scene, features, resolved};
     std::unique_ptr<Renderer> renderer;
     FrameGraph graph(ctx, entry.name, settings.width, settings.height);
     ResourceHandle hdr, depth;
@@ -59,6 +61,7 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
 
     RunResult result;
     result.renderer = entry.name;
+    for (const Knob& k : entry.knobs) result.knobs.push_back({k, resolved.text(k.name)});
     result.timings = profiler.stats();
     result.hdr = readbackColor(ctx, graph.image(hdr));
     result.depth = readbackDepth(ctx, graph.image(depth));

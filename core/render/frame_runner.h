@@ -22,6 +22,8 @@ struct RunOptions {
 
 struct RunResult {
     std::string renderer;
+    // The knobs this renderer declared, with the values it ran with (defaults filled in).
+    std::vector<std::pair<Knob, std::string>> knobs;
     ImageRGBA hdr;
     ImageR32 depth;
     std::vector<TimingStats> timings; // "frame" first, then each live pass in order
