@@ -72,10 +72,12 @@ void failUnrun(StressOutcome& p, const std::string& why) {
 }
 
 StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std::vector<std::string>& names,
-                         const std::string& out) {
+                         const StressOptions& o) {
+    const std::string& out = o.out;
     auto start = std::chrono::steady_clock::now();
     StressCaseResult r;
     r.c = &c;
+    r.settings = o.knobs;
     r.settings.width = c.width;
     r.settings.height = c.height;
     r.settings.msaa = c.msaa;
@@ -131,6 +133,7 @@ void printCase(const StressCaseResult& r) {
 int runStress(const StressOptions& o) {
     Result<std::vector<const stress::StressCase*>> cases = stress::selectStressCases(o.cases);
     if (!cases) throw UsageError(cases.error());
+    checkKnobs(o.knobs);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     for (const stress::StressCase* c : *cases)
@@ -139,7 +142,7 @@ int runStress(const StressOptions& o) {
     for (const char* f : {"stress.json", "stress.html"}) std::filesystem::remove(o.out + "/" + f);
     std::vector<StressCaseResult> results;
     for (const stress::StressCase* c : *cases) {
-        results.push_back(runCase(*ctx, *c, names, o.out));
+        results.push_back(runCase(*ctx, *c, names, o));
         printCase(results.back());
     }
     const std::vector<std::string> validation = ctx->validationMessages();

@@ -20,6 +20,7 @@ struct StressOptions {
     std::string pipelines;  // comma-separated; empty = every registered pipeline
     std::string out = "stress";
     DeviceOptions device;
+    RenderSettings knobs;   // the pipelines' knobs (each case sets resolution and MSAA)
     std::vector<std::string> commandLine;
 };
 
