@@ -9,26 +9,16 @@
 namespace tp {
 namespace {
 
-Knob choice(const char* name, std::vector<std::string> values, const char* help, bool msaaOnly = false) {
-    Knob k;
-    k.name = name;
-    k.values = std::move(values);
-    k.defaultValue = k.values.front();
-    k.help = help;
-    k.msaaOnly = msaaOnly;
-    return k;
-}
-
 KnobSchema deferredKnobs() {
     return {la::tileSizeKnob(),
-            choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),
-            choice("gbuffer-msaa", {"pixel", "sample"},
-                   "Deferred G-buffer under MSAA: pixel (material evaluated once per pixel, written to the covered "
-                   "samples; only edges are lit per sample, Lauritzen 2010) or sample (material evaluated and lit "
-                   "at every sample: supersampled deferred, the reference's image at its cost)",
-                   true),
-            choice("deferred-lighting", {"tiled", "volumes"},
-                   "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")};
+            Knob::choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),
+            Knob::choice("gbuffer-msaa", {"pixel", "sample"},
+                         "Deferred G-buffer under MSAA: pixel (material evaluated once per pixel, written to the "
+                         "covered samples; only edges are lit per sample, Lauritzen 2010) or sample (material "
+                         "evaluated and lit at every sample: supersampled deferred, the reference's image at its cost)")
+                .onlyUnderMsaa(),
+            Knob::choice("deferred-lighting", {"tiled", "volumes"},
+                         "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")};
 }
 
 std::vector<stress::CounterAtLeast> deferredStressed(const stress::StressCase& c) {

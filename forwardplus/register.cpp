@@ -9,21 +9,12 @@ namespace tp {
 namespace {
 
 KnobSchema forwardPlusKnobs() {
-    Knob lists;
-    lists.name = "light-lists";
-    lists.values = {"compact", "fixed", "linked"};
-    lists.defaultValue = "compact";
-    lists.help = "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "
-                 "capacity per tile; drops are counted), linked (per-tile linked lists)";
-    Knob capacity;
-    capacity.name = "tile-capacity";
-    capacity.kind = Knob::Kind::Integer;
-    capacity.min = 1;
-    capacity.max = 65536;
-    capacity.defaultValue = "256";
-    capacity.help = "Light slots per tile of the 'fixed' light-list layout";
-    capacity.sweepable = false;
-    return {la::tileSizeKnob(), lists, capacity};
+    return {la::tileSizeKnob(),
+            Knob::choice("light-lists", {"compact", "fixed", "linked"},
+                         "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "
+                         "capacity per tile; drops are counted), linked (per-tile linked lists)"),
+            Knob::integer("tile-capacity", 1, 65536, 256, "Light slots per tile of the 'fixed' light-list layout")
+                .fixed()};
 }
 
 // Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).

@@ -7,12 +7,7 @@ namespace tp {
 namespace {
 
 KnobSchema multipassKnobs() {
-    Knob accum;
-    accum.name = "accum";
-    accum.values = {"fp16", "fp32"};
-    accum.defaultValue = "fp32";
-    accum.help = "Multipass forward accumulation target precision";
-    return {accum};
+    return {Knob::choice("accum", {"fp32", "fp16"}, "Multipass forward accumulation target precision")};
 }
 
 void multipassErrorModel(ErrorBound& b, const ErrorModelInput& in) {

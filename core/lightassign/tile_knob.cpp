@@ -3,14 +3,8 @@
 namespace tp::la {
 
 Knob tileSizeKnob() {
-    Knob k;
-    k.name = "tile";
-    k.kind = Knob::Kind::Integer;
     // 8 to 32: one workgroup per tile within lavapipe's and every desktop GPU's limits.
-    k.values = {"8", "16", "32"};
-    k.defaultValue = "16";
-    k.help = "Tile edge in pixels of the tiled light assignment";
-    return k;
+    return Knob::integerOf("tile", {"8", "16", "32"}, "16", "Tile edge in pixels of the tiled light assignment");
 }
 
 } // namespace tp::la

@@ -7,22 +7,15 @@ namespace tp {
 namespace {
 
 KnobSchema referenceKnobs() {
-    Knob precision;
-    precision.name = "reference-precision";
-    precision.values = {"fp64", "fp32"};
-    precision.defaultValue = "fp64";
-    precision.help = "Light-sum accumulation of the reference (fp64 needs shaderFloat64)";
-    precision.sweepable = false;
-    Knob msaa;
-    msaa.name = "reference-msaa";
-    msaa.values = {"sample", "center"};
-    msaa.defaultValue = "sample";
-    msaa.help = "Reference under MSAA: sample (every sample shaded at its own location: supersampling, the ground "
-                "truth) or center (every covered sample shaded with the inputs at the pixel centre: what shading "
-                "once per pixel gives; the error against it leaves out the shading rate)";
-    msaa.msaaOnly = true;
-    msaa.sweepable = false;
-    return {precision, msaa};
+    return {Knob::choice("reference-precision", {"fp64", "fp32"},
+                         "Light-sum accumulation of the reference (fp64 needs shaderFloat64)")
+                .fixed(),
+            Knob::choice("reference-msaa", {"sample", "center"},
+                         "Reference under MSAA: sample (every sample shaded at its own location: supersampling, the "
+                         "ground truth) or center (every covered sample shaded with the inputs at the pixel centre: "
+                         "what shading once per pixel gives; the error against it leaves out the shading rate)")
+                .onlyUnderMsaa()
+                .fixed()};
 }
 
 // The reference is measured against itself: its model is never asked for.

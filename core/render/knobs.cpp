@@ -18,6 +18,31 @@ bool wholeNumber(const std::string& text, uint32_t& out) {
 
 } // namespace
 
+Knob Knob::choice(std::string name, std::vector<std::string> values, std::string help) {
+    Knob k;
+    k.name = std::move(name);
+    k.values = std::move(values);
+    k.defaultValue = k.values.empty() ? std::string() : k.values.front();
+    k.help = std::move(help);
+    return k;
+}
+
+Knob Knob::integer(std::string name, uint32_t min, uint32_t max, uint32_t defaultValue, std::string help) {
+    Knob k = choice(std::move(name), {}, std::move(help));
+    k.kind = Kind::Integer;
+    k.min = min;
+    k.max = max;
+    k.defaultValue = std::to_string(defaultValue);
+    return k;
+}
+
+Knob Knob::integerOf(std::string name, std::vector<std::string> values, std::string defaultValue, std::string help) {
+    Knob k = choice(std::move(name), std::move(values), std::move(help));
+    k.kind = Kind::Integer;
+    k.defaultValue = std::move(defaultValue);
+    return k;
+}
+
 std::string Knob::key() const {
     std::string k = name;
     std::replace(k.begin(), k.end(), '-', '_');

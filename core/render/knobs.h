@@ -23,6 +23,18 @@ struct Knob {
     bool msaaOnly = false;           // changes nothing at 1x (sweep runs one value there)
     bool sweepable = true;           // sweep may take a list of values
 
+    // Declarations read as one line each in a pipeline's register.cpp:
+    //   Knob::choice("accum", {"fp32", "fp16"}, "...")          default: the first value
+    //   Knob::integer("tile-capacity", 1, 65536, 256, "...").fixed()
+    static Knob choice(std::string name, std::vector<std::string> values, std::string help);
+    static Knob integer(std::string name, uint32_t min, uint32_t max, uint32_t defaultValue, std::string help);
+    // An integer from a list (e.g. tile sizes 8, 16, 32); default: `defaultValue`.
+    static Knob integerOf(std::string name, std::vector<std::string> values, std::string defaultValue,
+                          std::string help);
+    Knob& onlyUnderMsaa() { msaaOnly = true; return *this; }
+    Knob& fixed() { sweepable = false; return *this; } // one value per sweep
+    Knob& byDefault(std::string value) { defaultValue = std::move(value); return *this; }
+
     std::string key() const;         // report.json / sweep.csv name
     std::string allowedText() const; // "8, 16, 32" or "1 to 65536"
     // One line naming the knob and its allowed values when `value` is not allowed.

@@ -11,20 +11,11 @@
 namespace tp {
 namespace {
 
-Knob tileLike() {
-    Knob k;
-    k.name = "tile";
-    k.kind = Knob::Kind::Integer;
-    k.values = {"8", "16", "32"};
-    k.defaultValue = "16";
-    k.help = "tile edge";
-    return k;
-}
+Knob tileLike() { return Knob::integerOf("tile", {"8", "16", "32"}, "16", "tile edge"); }
 
 TEST(Knobs, ChecksChoiceListAndRange) {
-    Knob choice;
-    choice.name = "accum";
-    choice.values = {"fp16", "fp32"};
+    const Knob choice = Knob::choice("accum", {"fp16", "fp32"}, "precision");
+    EXPECT_EQ(choice.defaultValue, "fp16");
     EXPECT_TRUE(choice.check("fp16").ok());
     EXPECT_EQ(choice.check("fp8").error(), "--accum 'fp8': allowed values are fp16, fp32");
     EXPECT_FALSE(choice.check("").ok());
@@ -34,11 +25,7 @@ TEST(Knobs, ChecksChoiceListAndRange) {
     EXPECT_EQ(tile.check("12").error(), "--tile '12': allowed values are 8, 16, 32");
     EXPECT_FALSE(tile.check("016").ok()); // listed values are matched as written
 
-    Knob range;
-    range.name = "tile-capacity";
-    range.kind = Knob::Kind::Integer;
-    range.min = 1;
-    range.max = 65536;
+    const Knob range = Knob::integer("tile-capacity", 1, 65536, 256, "slots");
     EXPECT_TRUE(range.check("1").ok());
     EXPECT_TRUE(range.check("65536").ok());
     EXPECT_EQ(range.check("0").error(), "--tile-capacity '0': allowed values are 1 to 65536");
