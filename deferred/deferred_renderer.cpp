@@ -7,9 +7,12 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
+#include "core/lightassign/heat_map.h"
+#include "include/light_assign.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
 #include "deferred/tiled_lighting.h"
+#include "deferred/transparent_lists.h"
 #include "deferred/transparent_pass.h"
 #include "deferred/volume_lighting.h"
 
@@ -37,10 +40,8 @@ class DeferredRenderer final : public Renderer {
         if (settings_.tileSize % 8 != 0 || settings_.tileSize == 0 || settings_.tileSize > 64)
             throw std::runtime_error("deferred: --tile must be 8, 16, 32 or 64 (got " +
                                      std::to_string(settings_.tileSize) + ")");
-        t_.tileSize = settings_.tileSize;
-        t_.tilesX = (graph.width() + t_.tileSize - 1) / t_.tileSize;
-        t_.tilesY = (graph.height() + t_.tileSize - 1) / t_.tileSize;
-        const uint32_t tiles = t_.tilesX * t_.tilesY;
+        t_.grid = la::makeTileGrid(graph.width(), graph.height(), settings_.tileSize);
+        const uint32_t tiles = t_.grid.count();
         t_.hdr = graph.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                            "linear radiance (resolved)"});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
@@ -56,12 +57,14 @@ class DeferredRenderer final : public Renderer {
             t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
                                               "per tile: lights, transparent lights, edge pixels, overflow");
         if (blended_) {
-            // Capacity = every light, so no light is ever dropped, unless that exceeds the
-            // device's storage buffer range; then the list keeps what fits (counted).
-            uint64_t maxUints = ctx_.caps.maxStorageBufferRange / 4 / std::max(tiles, 1u);
-            t_.listStride = uint32_t(std::min<uint64_t>(scene_.lightCount() + 1, maxUints));
-            t_.transparentLists = graph.createBuffer("transparent_lists", uint64_t(tiles) * t_.listStride * 4,
-                                                     "per tile: count + transparent light indices");
+            // Compact: each tile's run is sized by a conservative bound, so nothing can drop
+            // (a drop would be counted in the tile's header, never silent).
+            TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
+                                                             ctx_.info.name);
+            t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
+                                                     "per tile: list header, then packed transparent light indices");
+            t_.listOffsets = std::move(lists.offsets);
+            transparentSlots_ = lists.slots;
         }
         if (settings_.debug && !useVolumes_)
             t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
@@ -74,6 +77,7 @@ class DeferredRenderer final : public Renderer {
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
+        if (blended_) graph.exportResource("transparent_lists", t_.transparentLists); // drop counters
         if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
@@ -93,6 +97,11 @@ class DeferredRenderer final : public Renderer {
             std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.tileStats));
             tileStats_.assign(raw.size() / 4, 0);
             std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
+        }
+        if (t_.transparentLists.valid()) {
+            std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.transparentLists));
+            listHeaders_.resize(t_.grid.count());
+            std::memcpy(listHeaders_.data(), raw.data(), listHeaders_.size() * sizeof(gpu::LaListHeader));
         }
         if (t_.edgeMask.valid()) {
             ImageRGBA mask = readbackColor(ctx_, graph.image(t_.edgeMask));
@@ -118,24 +127,15 @@ class DeferredRenderer final : public Renderer {
     VolumeLighting volumes_;
     TransparentPass transparent_;
     std::vector<uint32_t> tileStats_; // uvec4 per tile
+    std::vector<gpu::LaListHeader> listHeaders_; // transparent lists (blended scenes)
+    uint64_t transparentSlots_ = 0;
 };
 
-// Inferno-free heat map: black (0 lights) -> red -> yellow -> white (max).
-ImageRGBA lightsPerTileImage(const std::vector<uint32_t>& stats, const DeferredTargets& t, uint32_t w,
-                             uint32_t h) {
-    ImageRGBA img(w, h);
-    uint32_t maxCount = 1;
-    for (size_t i = 0; i + 3 < stats.size(); i += 4) maxCount = std::max(maxCount, stats[i]);
-    for (uint32_t y = 0; y < h; ++y)
-        for (uint32_t x = 0; x < w; ++x) {
-            float v = float(stats[((y / t.tileSize) * t.tilesX + x / t.tileSize) * 4]) / float(maxCount);
-            float* p = img.at(x, y);
-            p[0] = std::min(1.0f, 3.0f * v);
-            p[1] = std::clamp(3.0f * v - 1.0f, 0.0f, 1.0f);
-            p[2] = std::clamp(3.0f * v - 2.0f, 0.0f, 1.0f);
-            p[3] = 1.0f;
-        }
-    return img;
+// Column `c` of the per-tile statistics (uvec4 per tile).
+std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c) {
+    std::vector<uint32_t> out(stats.size() / 4);
+    for (size_t t = 0; t < out.size(); ++t) out[t] = stats[t * 4 + c];
+    return out;
 }
 
 std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
@@ -147,7 +147,15 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
         if (t_.edgeMask.valid()) out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
         return out;
     }
-    out.push_back({"lights_per_tile", lightsPerTileImage(tileStats_, t_, w, h), true});
+    out.push_back({"lights_per_tile", la::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
+    if (!listHeaders_.empty()) {
+        std::vector<uint32_t> kept(listHeaders_.size()), dropped(listHeaders_.size());
+        for (size_t t = 0; t < kept.size(); ++t) {
+            kept[t] = listHeaders_[t].count;
+            dropped[t] = listHeaders_[t].dropped;
+        }
+        out.push_back({"lights_per_tile_transparent", la::lightsPerTileHeatMap(t_.grid, kept, dropped), true});
+    }
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
     for (size_t i = 0; i < dbg.pixelCount(); ++i) {
@@ -190,6 +198,16 @@ RendererStats DeferredRenderer::stats() const {
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
+    if (blended_) {
+        double kept = 0, dropped = 0;
+        for (const gpu::LaListHeader& hdr : listHeaders_) {
+            kept += hdr.count;
+            dropped += hdr.dropped;
+        }
+        s.counters.push_back({"transparent_list_slots", double(transparentSlots_)});
+        s.counters.push_back({"transparent_lights_stored", kept});
+        s.counters.push_back({"transparent_lights_dropped", dropped}); // 0: the bound is conservative
+    }
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
     if (samples > 1) s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
     return s;

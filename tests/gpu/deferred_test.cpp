@@ -395,5 +395,36 @@ TEST(Deferred, LedgerHoldsTheLayoutsBytesAndNoUnneededTargets) {
     expectNoValidationMessages(*ctx);
 }
 
+uint64_t entryBytes(const RunResult& run, const std::string& name) {
+    for (const LedgerEntry& e : run.memory)
+        if (e.tag.name == name) return e.requestedBytes;
+    return 0;
+}
+
+// The transparent lists use light assignment's compact layout: one 16-byte header per tile,
+// then runs sized by the conservative bound (the same bound as Forward+'s compact lists, so
+// the same slots per list when no light is directional), far below tiles x lights, and no
+// list drops a light. Volumes lighting builds the same lists in its lists-only pass.
+TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const uint32_t lights = 256;
+    Scene yard = courtyardWithLights(lights);
+    SceneGpu yardGpu(*ctx, yard);
+    RenderSettings s = small(1, "compact");
+    const uint64_t tiles = (96 / 16) * (64 / 16);
+    RunResult fp = runOrFail(*ctx, yardGpu, "forwardplus", s);
+    for (const char* lighting : {"tiled", "volumes"}) {
+        RunResult r = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
+        const double slots = counter(r, "transparent_list_slots");
+        EXPECT_EQ(entryBytes(r, "transparent_lists"), tiles * 16 + uint64_t(slots) * 4) << lighting;
+        EXPECT_EQ(slots, counter(fp, "light_list_slots") / 2) << lighting;
+        EXPECT_LT(slots, double(tiles * lights)) << lighting;
+        EXPECT_GT(counter(r, "transparent_lights_stored"), 0.0) << lighting;
+        EXPECT_EQ(counter(r, "transparent_lights_dropped"), 0.0) << lighting;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 } // namespace
 } // namespace tp::test

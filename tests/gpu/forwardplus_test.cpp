@@ -25,7 +25,10 @@
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "forwardplus/forwardplus_debug.h"
-#include "forwardplus/tile_bounds.h"
+#include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_grid.h"
+#include "forwardplus/forwardplus_shared.h"
 #include "gpu_test_util.h"
 #include "include/light_model.h"
 
@@ -184,7 +187,7 @@ struct ListRun {
     ImageR32 depth;
     std::vector<gpu::FpTileLists> tiles;
     std::vector<uint32_t> indices;
-    fp::TileGrid grid;
+    la::TileGrid grid;
     RendererStats stats;
     std::vector<DebugImage> debug;
 };
@@ -214,7 +217,7 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     std::vector<uint8_t> i = readbackBuffer(ctx, graph.buffer(graph.exported("fp_light_indices")));
     out.indices.resize(i.size() / 4);
     std::memcpy(out.indices.data(), i.data(), out.indices.size() * 4);
-    out.grid = fp::makeTileGrid(settings.width, settings.height, settings.tileSize);
+    out.grid = la::makeTileGrid(settings.width, settings.height, settings.tileSize);
     renderer->collectStats(graph);
     out.stats = renderer->stats();
     out.debug = renderer->debugImages(graph);
@@ -326,7 +329,7 @@ TEST(ForwardPlusCulling, LayoutsHoldTheSameListsAndHeatMapCountsMatch) {
         s.debug = true;
         runs.push_back(runLists(*ctx, gpuScene, s));
     }
-    const fp::TileGrid& g = runs[0].grid;
+    const la::TileGrid& g = runs[0].grid;
     for (uint32_t tile = 0; tile < g.count(); ++tile)
         for (uint32_t list = 0; list < 2; ++list) {
             std::vector<uint32_t> a = listOf(runs[0], tile, list, "compact");
@@ -356,8 +359,8 @@ TEST(ForwardPlusCulling, CompactBoundIsAnUpperBound) {
     RenderSettings settings = small(96, 64, 1);
     ListRun r = runLists(*ctx, gpuScene, settings);
     const gpu::FrameUniforms& f = gpuScene.frame();
-    fp::LightClasses classes = fp::classifyLights(gpuScene.lightsGpu());
-    std::vector<uint32_t> bound = fp::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
+    la::LightClasses classes = la::classifyLights(gpuScene.lightsGpu());
+    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
     for (uint32_t tile = 0; tile < r.grid.count(); ++tile) {
         EXPECT_LE(r.tiles[tile].count[0], bound[tile]);
         EXPECT_EQ(r.tiles[tile].dropped[0], 0u);

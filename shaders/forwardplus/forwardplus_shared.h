@@ -1,7 +1,9 @@
 // Forward+: structs, set-1 bindings and constants shared by C++ and GLSL.
-// Included by shared.h; same rules (TP_STRUCT, static_asserts on the C++ side).
+// Included by this pipeline's C++ and GLSL only (never by shared.h); same rules as
+// shared.h (TP_STRUCT, static_asserts on the C++ side).
 #ifndef TP_FORWARDPLUS_SHARED_H
 #define TP_FORWARDPLUS_SHARED_H
+#include "include/shared.h"
 #ifndef TP_GLSL
 namespace tp::gpu {
 #endif
