@@ -15,9 +15,9 @@ TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t l
         bool sky = t.nearDepth <= 0.0f;
         s.skyTiles += sky;
         if (list == 1 || !sky) s.tested += double(localLights);
-        s.stored += t.count[list];
-        s.dropped += t.dropped[list];
-        s.max = std::max(s.max, t.count[list]);
+        s.stored += t.list[list].count;
+        s.dropped += t.list[list].dropped;
+        s.max = std::max(s.max, t.list[list].count);
     }
     s.passed = s.stored + s.dropped;
     s.mean = tiles.empty() ? 0.0 : s.stored / double(tiles.size());
@@ -27,8 +27,8 @@ TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t l
 ImageRGBA lightsPerTileHeatMap(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles, uint32_t list) {
     std::vector<uint32_t> counts(tiles.size()), dropped(tiles.size());
     for (size_t t = 0; t < tiles.size(); ++t) {
-        counts[t] = tiles[t].count[list];
-        dropped[t] = tiles[t].dropped[list];
+        counts[t] = tiles[t].list[list].count;
+        dropped[t] = tiles[t].list[list].dropped;
     }
     return la::lightsPerTileHeatMap(g, counts, dropped);
 }

@@ -245,15 +245,18 @@ void main() {
         FpTileLists t;
         for (uint l = 0u; l < 2u; ++l) {
 #ifdef TP_FP_CULL_LINKED
-            t.count[l] = sCount[l];
-            t.start[l] = sHead[l];
-            t.dropped[l] = sDropped[l];
+            t.list[l].count = sCount[l];
+            t.list[l].start = sHead[l];
+            t.list[l].dropped = sDropped[l];
 #else
-            t.count[l] = min(sCount[l], capacity);
-            t.start[l] = start[l];
-            t.dropped[l] = sCount[l] - t.count[l];
+            t.list[l].count = min(sCount[l], capacity);
+            t.list[l].start = start[l];
+            t.list[l].dropped = sCount[l] - t.list[l].count;
 #endif
+            t.list[l].found = t.list[l].count + t.list[l].dropped;
         }
+        t.pad0 = 0u;
+        t.pad1 = 0u;
         t.nearDepth = hasGeometry ? nearDepth : 0.0;
         t.farDepth = hasGeometry ? farDepth : 0.0;
         tiles[tileIndex] = t;

@@ -43,8 +43,8 @@ void main() {
 
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
     uint list = (kTwoLists && kAlphaMode == TP_ALPHA_BLEND) ? 1u : 0u;
-    uint count = tiles[tileIndex].count[list];
-    uint start = tiles[tileIndex].start[list];
+    uint count = tiles[tileIndex].list[list].count;
+    uint start = tiles[tileIndex].list[list].start;
     if (kLayout == TP_FP_LAYOUT_LINKED) {
         uint node = start;
         for (uint i = 0u; i < count; ++i) {
