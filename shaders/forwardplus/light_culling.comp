@@ -9,7 +9,8 @@
 //  2. Point/spot lights are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
 //     sub-frustum's bounding box and the sub-frustum itself (include/tile_culling.glsl via light_assign.glsl);
 //     survivors set a bit in shared memory.
-//  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts), so
+//  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts, then
+//     laStoreWord of include/light_assign.glsl for the compact and fixed layouts), so
 //     every layout stores the same lights in the same order and gives the same image.
 // Directional lights are never culled: the shading pass loops over them separately.
 // Layout (one shader variant each):
@@ -57,6 +58,8 @@ layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depth
 #else
 #define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, 0).r
 #endif
+// Candidate k is the k-th light of data[] (directional lights first, never culled).
+#define TP_LA_LIST_STORE(slot, k) indices[slot] = data[params.lights.x + (k)]
 #include "include/light_assign.glsl"
 #ifdef TP_FP_CULL_LINKED
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
@@ -223,16 +226,8 @@ void main() {
         }
         barrier();
 #else
-        if (compacts && bits != 0u) {
-            uint pos = running + prefix;
-            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-                int lsb = findLSB(bits);
-                bits &= bits - 1u;
-                if (pos < capacity)
-                    indices[start[list] + pos] = data[directionalCount + base + word * 32u + uint(lsb)];
-                ++pos;
-            }
-        }
+        if (compacts && bits != 0u)
+            laStoreWord(bits, base + word * 32u, start[list], running + prefix, capacity);
         running += chunkTotal;
 #endif
     }

@@ -48,6 +48,29 @@ uint laHeaderWord(uint tile, uint field) { return tile * TP_LA_HEADER_WORDS + fi
 // First light word of a tile whose run starts at `offset` (the compact layout's prefix sum).
 uint laListStart(uint tileCount, uint offset) { return tileCount * TP_LA_HEADER_WORDS + offset; }
 
+// ---- compact list fill in ascending light order (compute) ----
+// Lights are tested in chunks whose survivors form a bitmask of 32-light words; the
+// invocation that owns a word stores its lights after those of the words before it
+// (`pos` = survivors of the earlier chunks + popcounts of the earlier words), so a list
+// holds its lights in ascending order whatever the scheduling: deterministic lists, and
+// the same per-light summation order on every device. The includer defines
+// TP_LA_LIST_STORE(slot, k): write candidate light k (its light index, however the includer
+// maps it) into slot `slot`.
+#ifdef TP_LA_LIST_STORE
+// Stores the lights of one survivor word (candidates firstCandidate + bit) at
+// listStart + pos, pos + 1, ...; a light at or beyond `capacity` is not stored (the caller
+// counts it as dropped). Returns the next pos.
+uint laStoreWord(uint bits, uint firstCandidate, uint listStart, uint pos, uint capacity) {
+    for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+        int lsb = findLSB(bits);
+        bits &= bits - 1u;
+        if (pos < capacity) TP_LA_LIST_STORE(listStart + pos, firstCandidate + uint(lsb));
+        ++pos;
+    }
+    return pos;
+}
+#endif
+
 // ---- per-tile depth bounds (compute shaders that define TP_LA_DEPTH_FETCH) ----
 // TP_LA_DEPTH_FETCH(ivec2 pixel, uint sample) returns the depth of one sample. The workgroup
 // is 8 x 8 invocations whatever the tile size; each reads (tileSize / 8)^2 pixels, every
