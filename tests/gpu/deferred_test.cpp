@@ -426,5 +426,38 @@ TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
     expectNoValidationMessages(*ctx);
 }
 
+// A blended wall far behind the floor, seen over the sky, lit by a light beside it: the tiles
+// where the floor's far edge meets the sky hold floor pixels (their farthest opaque depth is
+// the floor's) and wall pixels 15 m further back. The transparent range must be unbounded
+// there (light assignment's laTransparentFarDepth: any sample without geometry), or the
+// wall's light is culled from those tiles and two rows of wall pixels lose it. Bound as on
+// the floor (WideMatchesReferenceOnTheFloor): 2.5e-4 relative per channel, floor 1e-4.
+TEST(Deferred, BlendedSurfaceOverTheSkyKeepsLightsBeyondTheOpaqueDepth) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Light light;
+    light.position = {0.0f, -6.5f, -19.0f}; // lights the wall just above the floor's far edge on screen
+    light.range = 4.0f;
+    light.intensity = 50.0f;
+    Scene scene = makeFloorScene({light});
+    Material glass;
+    glass.name = "glass";
+    glass.baseColorFactor = glm::vec4(0.6f, 0.7f, 0.9f, 0.5f);
+    glass.metallicFactor = 0.0f;
+    glass.roughnessFactor = 0.8f;
+    glass.alphaMode = AlphaMode::Blend;
+    scene.materials.push_back(glass);
+    Mesh wall;
+    wall.name = "wall";
+    wall.material = uint32_t(scene.materials.size() - 1);
+    addQuad(wall, {-20.0f, -12.0f, -20.0f}, {40.0f, 0.0f, 0.0f}, {0.0f, 30.0f, 0.0f}); // faces +z
+    scene.meshes.push_back(wall);
+    scene.computeBounds();
+    Pair p = renderBoth(*ctx, scene, small(1, "wide"));
+    EXPECT_EQ(p.error.nanInfCount, 0u);
+    EXPECT_LT(maxRelativeError(p.deferred.hdr, p.reference.hdr, 1e-4), 2.5e-4) << describe(p.error);
+    expectNoValidationMessages(*ctx);
+}
+
 } // namespace
 } // namespace tp::test
