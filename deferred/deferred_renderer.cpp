@@ -8,7 +8,6 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
 #include "core/lightassign/heat_map.h"
-#include "include/light_assign.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
 #include "deferred/tiled_lighting.h"
@@ -77,7 +76,6 @@ class DeferredRenderer final : public Renderer {
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
-        if (blended_) graph.exportResource("transparent_lists", t_.transparentLists); // drop counters
         if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
@@ -97,11 +95,6 @@ class DeferredRenderer final : public Renderer {
             std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.tileStats));
             tileStats_.assign(raw.size() / 4, 0);
             std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
-        }
-        if (t_.transparentLists.valid()) {
-            std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.transparentLists));
-            listHeaders_.resize(t_.grid.count());
-            std::memcpy(listHeaders_.data(), raw.data(), listHeaders_.size() * sizeof(gpu::LaListHeader));
         }
         if (t_.edgeMask.valid()) {
             ImageRGBA mask = readbackColor(ctx_, graph.image(t_.edgeMask));
@@ -127,9 +120,28 @@ class DeferredRenderer final : public Renderer {
     VolumeLighting volumes_;
     TransparentPass transparent_;
     std::vector<uint32_t> tileStats_; // uvec4 per tile
-    std::vector<gpu::LaListHeader> listHeaders_; // transparent lists (blended scenes)
     uint64_t transparentSlots_ = 0;
 };
+
+// Transparent lights per tile, kept and dropped: the tile statistics hold what each tile's
+// test found (the count before its list was cut), the compact layout each tile's run, so
+// these equal the list headers' count and dropped without reading the lists back.
+struct TransparentCounts {
+    std::vector<uint32_t> kept, dropped;
+};
+
+TransparentCounts transparentCounts(const std::vector<uint32_t>& stats, const std::vector<uint32_t>& offsets) {
+    TransparentCounts c;
+    const size_t tiles = std::min(stats.size() / 4, offsets.empty() ? 0 : offsets.size() - 1);
+    c.kept.resize(tiles);
+    c.dropped.resize(tiles);
+    for (size_t t = 0; t < tiles; ++t) {
+        uint32_t found = stats[t * 4 + 1], run = offsets[t + 1] - offsets[t];
+        c.kept[t] = std::min(found, run);
+        c.dropped[t] = found - c.kept[t];
+    }
+    return c;
+}
 
 // Column `c` of the per-tile statistics (uvec4 per tile).
 std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c) {
@@ -148,13 +160,9 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
         return out;
     }
     out.push_back({"lights_per_tile", la::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
-    if (!listHeaders_.empty()) {
-        std::vector<uint32_t> kept(listHeaders_.size()), dropped(listHeaders_.size());
-        for (size_t t = 0; t < kept.size(); ++t) {
-            kept[t] = listHeaders_[t].count;
-            dropped[t] = listHeaders_[t].dropped;
-        }
-        out.push_back({"lights_per_tile_transparent", la::lightsPerTileHeatMap(t_.grid, kept, dropped), true});
+    if (blended_) {
+        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
+        out.push_back({"lights_per_tile_transparent", la::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
     }
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
@@ -199,10 +207,11 @@ RendererStats DeferredRenderer::stats() const {
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
     if (blended_) {
+        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
         double kept = 0, dropped = 0;
-        for (const gpu::LaListHeader& hdr : listHeaders_) {
-            kept += hdr.count;
-            dropped += hdr.dropped;
+        for (size_t t = 0; t < c.kept.size(); ++t) {
+            kept += c.kept[t];
+            dropped += c.dropped[t];
         }
         s.counters.push_back({"transparent_list_slots", double(transparentSlots_)});
         s.counters.push_back({"transparent_lights_stored", kept});
