@@ -7,9 +7,11 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
+#include "core/lightassign/heat_map.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
 #include "deferred/tiled_lighting.h"
+#include "deferred/transparent_lists.h"
 #include "deferred/transparent_pass.h"
 #include "deferred/volume_lighting.h"
 
@@ -31,10 +33,8 @@ class DeferredRenderer final : public Renderer {
         t_.sampleRateGBuffer = settings_.text("gbuffer-msaa") == "sample";
         // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels:
         // the tile knob's values (8, 16, 32) are all multiples of 8.
-        t_.tileSize = settings_.integer("tile");
-        t_.tilesX = (graph.width() + t_.tileSize - 1) / t_.tileSize;
-        t_.tilesY = (graph.height() + t_.tileSize - 1) / t_.tileSize;
-        const uint32_t tiles = t_.tilesX * t_.tilesY;
+        t_.grid = la::makeTileGrid(graph.width(), graph.height(), settings_.integer("tile"));
+        const uint32_t tiles = t_.grid.count();
         t_.hdr = graph.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                            "linear radiance (resolved)"});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
@@ -50,12 +50,14 @@ class DeferredRenderer final : public Renderer {
             t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
                                               "per tile: lights, transparent lights, edge pixels, overflow");
         if (blended_) {
-            // Capacity = every light, so no light is ever dropped, unless that exceeds the
-            // device's storage buffer range; then the list keeps what fits (counted).
-            uint64_t maxUints = ctx_.caps.maxStorageBufferRange / 4 / std::max(tiles, 1u);
-            t_.listStride = uint32_t(std::min<uint64_t>(scene_.lightCount() + 1, maxUints));
-            t_.transparentLists = graph.createBuffer("transparent_lists", uint64_t(tiles) * t_.listStride * 4,
-                                                     "per tile: count + transparent light indices");
+            // Compact: each tile's run is sized by a conservative bound, so nothing can drop
+            // (a drop would be counted in the tile's header, never silent).
+            TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
+                                                             ctx_.info.name);
+            t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
+                                                     "per tile: list header, then packed transparent light indices");
+            t_.listOffsets = std::move(lists.offsets);
+            transparentSlots_ = lists.slots;
         }
         if (settings_.debug && !useVolumes_)
             t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
@@ -112,24 +114,34 @@ class DeferredRenderer final : public Renderer {
     VolumeLighting volumes_;
     TransparentPass transparent_;
     std::vector<uint32_t> tileStats_; // uvec4 per tile
+    uint64_t transparentSlots_ = 0;
 };
 
-// Inferno-free heat map: black (0 lights) -> red -> yellow -> white (max).
-ImageRGBA lightsPerTileImage(const std::vector<uint32_t>& stats, const DeferredTargets& t, uint32_t w,
-                             uint32_t h) {
-    ImageRGBA img(w, h);
-    uint32_t maxCount = 1;
-    for (size_t i = 0; i + 3 < stats.size(); i += 4) maxCount = std::max(maxCount, stats[i]);
-    for (uint32_t y = 0; y < h; ++y)
-        for (uint32_t x = 0; x < w; ++x) {
-            float v = float(stats[((y / t.tileSize) * t.tilesX + x / t.tileSize) * 4]) / float(maxCount);
-            float* p = img.at(x, y);
-            p[0] = std::min(1.0f, 3.0f * v);
-            p[1] = std::clamp(3.0f * v - 1.0f, 0.0f, 1.0f);
-            p[2] = std::clamp(3.0f * v - 2.0f, 0.0f, 1.0f);
-            p[3] = 1.0f;
-        }
-    return img;
+// Transparent lights per tile, kept and dropped: the tile statistics hold what each tile's
+// test found (the count before its list was cut), the compact layout each tile's run, so
+// these equal the list headers' count and dropped without reading the lists back.
+struct TransparentCounts {
+    std::vector<uint32_t> kept, dropped;
+};
+
+TransparentCounts transparentCounts(const std::vector<uint32_t>& stats, const std::vector<uint32_t>& offsets) {
+    TransparentCounts c;
+    const size_t tiles = std::min(stats.size() / 4, offsets.empty() ? 0 : offsets.size() - 1);
+    c.kept.resize(tiles);
+    c.dropped.resize(tiles);
+    for (size_t t = 0; t < tiles; ++t) {
+        uint32_t found = stats[t * 4 + 1], run = offsets[t + 1] - offsets[t];
+        c.kept[t] = std::min(found, run);
+        c.dropped[t] = found - c.kept[t];
+    }
+    return c;
+}
+
+// Column `c` of the per-tile statistics (uvec4 per tile).
+std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c) {
+    std::vector<uint32_t> out(stats.size() / 4);
+    for (size_t t = 0; t < out.size(); ++t) out[t] = stats[t * 4 + c];
+    return out;
 }
 
 std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
@@ -141,7 +153,11 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
         if (t_.edgeMask.valid()) out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
         return out;
     }
-    out.push_back({"lights_per_tile", lightsPerTileImage(tileStats_, t_, w, h), true});
+    out.push_back({"lights_per_tile", la::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
+    if (blended_) {
+        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
+        out.push_back({"lights_per_tile_transparent", la::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
+    }
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
     for (size_t i = 0; i < dbg.pixelCount(); ++i) {
@@ -184,6 +200,17 @@ RendererStats DeferredRenderer::stats() const {
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
+    if (blended_) {
+        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
+        double kept = 0, dropped = 0;
+        for (size_t t = 0; t < c.kept.size(); ++t) {
+            kept += c.kept[t];
+            dropped += c.dropped[t];
+        }
+        s.counters.push_back({"transparent_list_slots", double(transparentSlots_)});
+        s.counters.push_back({"transparent_lights_stored", kept});
+        s.counters.push_back({"transparent_lights_dropped", dropped}); // 0: the bound is conservative
+    }
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
     if (samples > 1) s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
     return s;

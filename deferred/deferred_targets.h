@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/gpu/frame_graph.h"
+#include "core/lightassign/tile_grid.h"
 #include "deferred/gbuffer_layout.h"
 
 namespace tp {
@@ -15,12 +16,12 @@ struct DeferredTargets {
     ResourceHandle hdr, depth;           // the standard single-sample outputs
     ResourceHandle hdrMsaa;              // per-sample radiance: blended scenes under MSAA only
     ResourceHandle tileStats;            // uvec4 per tile
-    ResourceHandle transparentLists;     // blended scenes only
+    ResourceHandle transparentLists;     // blended scenes only: compact (include/light_assign.h)
     ResourceHandle debug;                // --debug only (tiled lighting)
     ResourceHandle edgeMask;             // volumes lighting under MSAA: 1x edge mask
     ResourceHandle volumeDepth;          // volumes lighting under MSAA: 1x depth the volumes test
-    uint32_t tileSize = 16, tilesX = 0, tilesY = 0;
-    uint32_t listStride = 1;             // uints per transparent list: count + capacity
+    la::TileGrid grid;                   // the lighting tiles (one workgroup each)
+    std::vector<uint32_t> listOffsets;   // transparent lists: tileCount + 1 run offsets
     bool sampleRateGBuffer = false;      // --gbuffer-msaa sample: the material at every sample
     bool msaa() const { return layout.samples > 1; }
 };

@@ -4,6 +4,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/render/scene_gpu.h"
+#include "deferred/deferred_shared.h"
 
 namespace tp {
 

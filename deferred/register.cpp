@@ -4,7 +4,7 @@
 #include "core/render/renderer.h"
 #include "deferred/deferred_renderer.h"
 #include "deferred/error_model.h"
-#include "include/shared.h"
+#include "deferred/deferred_shared.h"
 
 namespace tp {
 namespace {

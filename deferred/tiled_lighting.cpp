@@ -4,6 +4,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
 #include "core/render/scene_gpu.h"
 
@@ -51,6 +52,7 @@ void TiledLighting::prepare(FrameGraph& graph) {
     if (!listsOnly_) bindings.push_back({TP_DEF_BINDING_HDR, storageImage});
     bindings.push_back({TP_DEF_BINDING_TILE_STATS, storageBuffer});
     if (t_->transparentLists.valid()) bindings.push_back({TP_DEF_BINDING_TRANSPARENT_LISTS, storageBuffer});
+    if (t_->transparentLists.valid()) bindings.push_back({TP_DEF_BINDING_LIST_OFFSETS, storageBuffer});
     if (t_->debug.valid()) bindings.push_back({TP_DEF_BINDING_DEBUG, storageImage});
     set_ = createPassSet(ctx_, bindings);
 
@@ -70,18 +72,24 @@ void TiledLighting::prepare(FrameGraph& graph) {
         writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_HDR, storageImage, graph.image(out).view,
                              VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
     writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TILE_STATS, graph.buffer(t_->tileStats).buffer);
-    if (t_->transparentLists.valid())
+    if (t_->transparentLists.valid()) {
         writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TRANSPARENT_LISTS,
                               graph.buffer(t_->transparentLists).buffer);
+        // Uploaded once per configuration: the compact layout's runs (deferred_renderer plans them).
+        listOffsets_ = createBufferWithData(ctx_, t_->listOffsets.data(), t_->listOffsets.size() * 4,
+                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            {"deferred", "", "transparent_list_offsets",
+                                             "per tile: first slot of its transparent list (prefix sum)"});
+        writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer);
+    }
     if (t_->debug.valid())
         writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_DEBUG, storageImage, graph.image(t_->debug).view,
                              VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
 
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
-    spec.push_back({TP_DEF_SPEC_TILE_SIZE, t_->tileSize});
+    spec.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
     spec.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
-    spec.push_back({TP_DEF_SPEC_LIST_STRIDE, t_->listStride});
     spec.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
     spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_);
@@ -97,7 +105,7 @@ void TiledLighting::dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end) 
     push.TP_DEF_LIGHT_FIRST = first;
     push.TP_DEF_LIGHT_END = end;
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-    vkCmdDispatch(cmd, t_->tilesX, t_->tilesY, 1);
+    vkCmdDispatch(cmd, t_->grid.tilesX, t_->grid.tilesY, 1);
 }
 
 void TiledLighting::record(PassContext& pc) {
@@ -107,7 +115,7 @@ void TiledLighting::record(PassContext& pc) {
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     const uint32_t lights = scene_.lightCount();
     // Lists only: no shading loop, one dispatch whatever the light count.
-    const uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_->tileSize, t_->layout.samples);
+    const uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_->grid.tileSize, t_->layout.samples);
     for (uint32_t first = 0; first == 0 || first < lights; first += batch) {
         if (first > 0) {
             // The next batch adds to hdr and the tile statistics that this one wrote.

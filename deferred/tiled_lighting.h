@@ -4,7 +4,9 @@
 // writes per-tile statistics and, for blended scenes, the transparent light lists.
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
+#include "deferred/deferred_shared.h"
 #include "core/gpu/descriptors.h"
+#include "core/gpu/resources.h"
 
 namespace tp {
 
@@ -39,6 +41,7 @@ class TiledLighting {
     bool listsOnly_ = false;
     const DeferredTargets* t_ = nullptr;
     PassSet set_;
+    Buffer listOffsets_; // transparent lists' per-tile offsets (blended scenes)
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

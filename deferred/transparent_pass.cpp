@@ -4,6 +4,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/render/scene_gpu.h"
+#include "deferred/deferred_shared.h"
 
 namespace tp {
 
@@ -32,8 +33,7 @@ void TransparentPass::prepare(FrameGraph& graph) {
     GraphicsPipelineDesc d;
     d.fragmentShader = "deferred_transparent_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
-    d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->tileSize});
-    d.specConstants.push_back({TP_DEF_SPEC_LIST_STRIDE, t_->listStride});
+    d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
     d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample

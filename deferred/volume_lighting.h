@@ -10,7 +10,7 @@
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
-#include "include/shared.h"
+#include "deferred/deferred_shared.h"
 
 namespace tp {
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/image/difference.h"
+#include "core/lightassign/heat_map.h"
 
 namespace tp::fp {
 
@@ -14,52 +15,25 @@ TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t l
         bool sky = t.nearDepth <= 0.0f;
         s.skyTiles += sky;
         if (list == 1 || !sky) s.tested += double(localLights);
-        s.stored += t.count[list];
-        s.dropped += t.dropped[list];
-        s.max = std::max(s.max, t.count[list]);
+        s.stored += t.list[list].count;
+        s.dropped += t.list[list].dropped;
+        s.max = std::max(s.max, t.list[list].count);
     }
     s.passed = s.stored + s.dropped;
     s.mean = tiles.empty() ? 0.0 : s.stored / double(tiles.size());
     return s;
 }
 
-namespace {
-
-void outlineTile(ImageRGBA& img, const TileGrid& g, uint32_t tx, uint32_t ty) {
-    uint32_t x0 = tx * g.tileSize, y0 = ty * g.tileSize;
-    uint32_t x1 = std::min(x0 + g.tileSize, g.width) - 1, y1 = std::min(y0 + g.tileSize, g.height) - 1;
-    for (uint32_t y = y0; y <= y1; ++y)
-        for (uint32_t x = x0; x <= x1; ++x) {
-            if (x != x0 && x != x1 && y != y0 && y != y1) continue;
-            float* p = img.at(x, y);
-            p[0] = 0.0f;
-            p[1] = 1.0f;
-            p[2] = 0.0f;
-            p[3] = 1.0f;
-        }
+ImageRGBA lightsPerTileHeatMap(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles, uint32_t list) {
+    std::vector<uint32_t> counts(tiles.size()), dropped(tiles.size());
+    for (size_t t = 0; t < tiles.size(); ++t) {
+        counts[t] = tiles[t].list[list].count;
+        dropped[t] = tiles[t].list[list].dropped;
+    }
+    return la::lightsPerTileHeatMap(g, counts, dropped);
 }
 
-} // namespace
-
-ImageRGBA lightsPerTileHeatMap(const TileGrid& g, const std::vector<gpu::FpTileLists>& tiles, uint32_t list) {
-    ImageRGBA values(g.width, g.height);
-    uint32_t maxCount = 0;
-    for (const gpu::FpTileLists& t : tiles) maxCount = std::max(maxCount, t.count[list]);
-    for (uint32_t y = 0; y < g.height; ++y)
-        for (uint32_t x = 0; x < g.width; ++x) {
-            const gpu::FpTileLists& t = tiles[(y / g.tileSize) * g.tilesX + x / g.tileSize];
-            float* p = values.at(x, y);
-            p[0] = p[1] = p[2] = float(t.count[list]);
-            p[3] = 1.0f;
-        }
-    ImageRGBA out = heatMap(values, float(std::max(1u, maxCount)));
-    for (uint32_t ty = 0; ty < g.tilesY; ++ty)
-        for (uint32_t tx = 0; tx < g.tilesX; ++tx)
-            if (tiles[ty * g.tilesX + tx].dropped[list] > 0) outlineTile(out, g, tx, ty);
-    return out;
-}
-
-ImageRGBA tileDepthBoundsImage(const TileGrid& g, const std::vector<gpu::FpTileLists>& tiles,
+ImageRGBA tileDepthBoundsImage(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles,
                                const glm::mat4& invProj) {
     auto distance = [&](float depth) {
         glm::vec4 v = invProj * glm::vec4(0.0f, 0.0f, depth, 1.0f);

@@ -6,8 +6,8 @@
 #include <glm/glm.hpp>
 
 #include "core/image/image.h"
-#include "forwardplus/tile_bounds.h"
-#include "include/shared.h"
+#include "core/lightassign/tile_grid.h"
+#include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {
 
@@ -23,14 +23,14 @@ struct TileListSummary {
 
 TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights);
 
-// Lights per tile (list 0 opaque, 1 transparent) on the inferno scale from 0 to the largest
-// count, with the shared legend under it; tiles that dropped lights are outlined in
-// bright green (overflow of the "fixed" layout).
-ImageRGBA lightsPerTileHeatMap(const TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles, uint32_t list);
+// Lights per tile (list 0 opaque, 1 transparent) on light assignment's one heat-map scale
+// (core/lightassign/heat_map.h); tiles that dropped lights (overflow of the "fixed" layout)
+// are outlined.
+ImageRGBA lightsPerTileHeatMap(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles, uint32_t list);
 
 // Tile depth bounds as view distance, nearest | farthest side by side on one scale (0 to
 // the farthest bound); tiles without geometry are magenta (the scale's "not a number").
-ImageRGBA tileDepthBoundsImage(const TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles,
+ImageRGBA tileDepthBoundsImage(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles,
                                const glm::mat4& invProj);
 
 } // namespace tp::fp

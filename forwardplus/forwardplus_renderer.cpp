@@ -14,8 +14,12 @@
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
 #include "core/render/scene_gpu.h"
+#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_debug.h"
-#include "forwardplus/tile_bounds.h"
+#include "forwardplus/forwardplus_shared.h"
 
 namespace tp {
 namespace {
@@ -35,11 +39,11 @@ class ForwardPlusRenderer final : public Renderer {
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
         layout_ = layoutFromName(settings_.text("light-lists"));
-        grid_ = fp::makeTileGrid(settings_.width, settings_.height, settings_.integer("tile"));
+        grid_ = la::makeTileGrid(settings_.width, settings_.height, settings_.integer("tile"));
         // Two lists only when something is blended (and drawn).
         twoLists_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
         numLists_ = twoLists_ ? 2 : 1;
-        classes_ = fp::classifyLights(scene_.lightsGpu());
+        classes_ = la::classifyLights(scene_.lightsGpu());
         sizeLists();
     }
 
@@ -204,14 +208,10 @@ class ForwardPlusRenderer final : public Renderer {
         } else {
             // The uploaded (camera-relative) view and lights: what the culling shader tests.
             const gpu::FrameUniforms& f = scene_.shadingFrame();
-            tileBound_ = fp::conservativeTileBound(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local);
-            tileOffsets_.assign(tileCount + 1, 0);
-            uint64_t total = 0;
-            for (uint64_t t = 0; t < tileCount; ++t) {
-                tileOffsets_[t] = uint32_t(std::min<uint64_t>(total, 0xffffffffu));
-                total += tileBound_[t];
-            }
-            tileOffsets_[tileCount] = uint32_t(std::min<uint64_t>(total, 0xffffffffu));
+            tileBound_ = la::conservativeTileBound(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local);
+            la::CompactLayout compact = la::makeCompactLayout(tileBound_);
+            tileOffsets_ = std::move(compact.offsets);
+            const uint64_t total = compact.slots;
             listStride_ = total;
             slotCount_ = total * numLists_;
             if (layout_ == TP_FP_LAYOUT_COMPACT) {
@@ -368,10 +368,10 @@ class ForwardPlusRenderer final : public Renderer {
     SceneFeatures features_;
     RenderSettings settings_;
     uint32_t layout_ = TP_FP_LAYOUT_COMPACT;
-    fp::TileGrid grid_;
+    la::TileGrid grid_;
     bool twoLists_ = false;
     uint32_t numLists_ = 1;
-    fp::LightClasses classes_;
+    la::LightClasses classes_;
     std::vector<uint32_t> tileBound_, tileOffsets_;
     uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
     std::string indexPurpose_;

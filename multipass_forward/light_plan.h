@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "core/render/scene_gpu.h"
+#include "multipass_forward/multipass_shared.h"
 
 namespace tp::mp {
 

@@ -12,6 +12,7 @@
 #include "core/gpu/resources.h"
 #include "core/render/settings.h"
 #include "multipass_forward/light_plan.h"
+#include "multipass_forward/multipass_shared.h"
 
 namespace tp {
 class GpuContext;

@@ -7,6 +7,7 @@
 // (--gbuffer-msaa sample; scene_inputs.glsl). TP_EMISSIVE: the scene emits, so target 3
 // exists (left out otherwise).
 #include "include/shared.h"
+#include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"

@@ -7,6 +7,7 @@
 #ifndef TP_GBUFFER_READ_GLSL
 #define TP_GBUFFER_READ_GLSL
 #include "include/gbuffer_encoding.h"
+#include "deferred/deferred_shared.h"
 #include "include/light_model.h"
 #include "include/tile_culling.glsl" // viewZFromDepth
 

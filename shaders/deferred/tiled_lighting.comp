@@ -7,7 +7,10 @@
 // is shaded from that list: the first batch writes hdr (with ambient and emissive), later
 // batches add to it. Under MSAA a pixel whose samples differ (an edge) is shaded per
 // sample, every other pixel once. Blended scenes also get each tile's transparent light
-// list (every light, first batch only), culled against [near plane, farthest opaque depth].
+// list (every light, first batch only), culled against [near plane, farthest opaque depth]
+// (unbounded where the tile sees the sky), stored in the compact layout of
+// include/light_assign.h: per-tile runs sized on the CPU by a conservative bound, so the
+// buffer grows with the lights the lists can hold, never with tiles x lights.
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
 //   TP_MSAA: the G-buffer is per-sample.  TP_HDR_MSAA: hdr is per-sample (the blended
 //   forward pass draws into it and resolves).  TP_TRANSPARENT: write transparent lists.
@@ -15,13 +18,15 @@
 //   TP_LISTS_ONLY: only the transparent lists and tile statistics (volumes lighting
 //   shades the opaque surfaces; the hybrid forward pass still needs the lists).
 #include "include/shared.h"
+#include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/light_model.h"
-#include "include/tile_culling.glsl"
 #ifdef TP_LISTS_ONLY
 #define TP_GBUFFER_DEPTH_ONLY
 #endif
 #include "deferred/gbuffer_read.glsl"
+#define TP_LA_DEPTH_FETCH(p, s) fetchDepth(p, s)
+#include "include/light_assign.glsl"
 
 // A fixed 8 x 8 group covers a tile of 8, 16 or 32 pixels, each invocation taking
 // (tileSize / 8)^2 pixels: a spec-constant workgroup size (LocalSizeId) would need
@@ -29,7 +34,6 @@
 #define TP_GROUP 8u
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
-layout(constant_id = TP_DEF_SPEC_LIST_STRIDE) const uint kListStride = 1u;
 
 #ifndef TP_LISTS_ONLY
 // Read back by the later batches, which add their lights to what the earlier ones wrote.
@@ -41,7 +45,10 @@ layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2D
 #endif
 #ifdef TP_TRANSPARENT
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_LISTS) buffer TransparentLists {
-    uint tLists[]; // per tile: count, then kListStride - 1 light indices
+    uint tLists[]; // LaListHeader per tile, then the tiles' runs of light indices
+};
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_LIST_OFFSETS) readonly buffer ListOffsets {
+    uint tOffsets[]; // tileCount + 1: tile t's run is [tOffsets[t], tOffsets[t + 1])
 };
 #endif
 #ifdef TP_DEBUG
@@ -51,8 +58,6 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TILE_STATS) buffer Ti
     uvec4 tileStats[]; // per tile: opaque lights, transparent lights, edge pixels, overflow
 };
 
-shared uint sMaxDepthBits; // nearest (reverse-Z: largest) depth
-shared uint sMinDepthBits; // farthest geometry
 shared uint sCount;
 shared uint sTransparentCount;
 shared uint sEdges;
@@ -116,14 +121,15 @@ bool shadePixel(ivec2 p) {
 void cull(uvec2 tile, bool hasGeometry) {
     uint groupSize = TP_GROUP * TP_GROUP;
     vec2 size = vec2(frame.viewport.xy);
-    float nearDepth = uintBitsToFloat(sMaxDepthBits), farDepth = uintBitsToFloat(sMinDepthBits);
-    TileFrustum f = makeTileFrustum(tile, kTileSize, size, frame.invProj, nearDepth, farDepth);
+    float nearDepth = laTileNearDepth(), farDepth = laTileFarDepth();
+    TileFrustum f = laOpaqueFrustum(tile, kTileSize, size, frame.invProj, nearDepth, farDepth);
 #ifdef TP_TRANSPARENT
-    // Transparent surfaces lie anywhere in front of the opaque ones: [near plane, farthest
-    // opaque]; a tile with no opaque geometry reaches to infinity (depth 0).
-    TileFrustum ft = makeTileFrustum(tile, kTileSize, size, frame.invProj, 1.0,
-                                     hasGeometry ? farDepth : 0.0);
-    uint listBase = (tile.y * gl_NumWorkGroups.x + tile.x) * kListStride;
+    TileFrustum ft = laTransparentFrustum(tile, kTileSize, size, frame.invProj,
+                                          laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth));
+    uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
+    uint offset = tOffsets[tileIndex];
+    uint capacity = tOffsets[tileIndex + 1u] - offset;
+    uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
 #endif
 #ifndef TP_LISTS_ONLY
     uint end = min(draw.TP_DEF_LIGHT_END, frame.viewport.z);
@@ -139,7 +145,7 @@ void cull(uvec2 tile, bool hasGeometry) {
     for (uint i = gl_LocalInvocationIndex; firstBatch() && i < frame.viewport.z; i += groupSize) {
         if (lightInTile(lights[i], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
-            if (slot + 1u < kListStride) tLists[listBase + 1u + slot] = i;
+            if (slot < capacity) tLists[start + slot] = i; // beyond: counted as dropped
         }
     }
 #endif
@@ -157,26 +163,16 @@ bool insideViewport(ivec2 p) { return all(lessThan(uvec2(p), frame.viewport.xy))
 void main() {
     uvec2 tile = gl_WorkGroupID.xy;
     uint pixelsPerInvocation = (kTileSize / TP_GROUP) * (kTileSize / TP_GROUP);
+    laDepthBoundsBegin();
     if (gl_LocalInvocationIndex == 0u) {
-        sMaxDepthBits = 0u;
-        sMinDepthBits = floatBitsToUint(1.0);
         sCount = 0u;
         sTransparentCount = 0u;
         sEdges = 0u;
     }
     barrier();
-    for (uint k = 0u; k < pixelsPerInvocation; ++k) {
-        ivec2 p = pixelOf(tile, k);
-        if (!insideViewport(p)) continue;
-        for (uint s = 0u; s < kSamples; ++s) {
-            float d = fetchDepth(p, s);
-            if (d <= 0.0) continue; // no geometry: does not bound the tile
-            atomicMax(sMaxDepthBits, floatBitsToUint(d)); // positive floats order as uints
-            atomicMin(sMinDepthBits, floatBitsToUint(d));
-        }
-    }
+    laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
     barrier();
-    cull(tile, sMaxDepthBits != 0u);
+    cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
     barrier();
     // A later batch with no light in this tile adds nothing (sCount is uniform here).
@@ -198,7 +194,13 @@ void main() {
         if (firstBatch()) {
             tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, 0u);
 #ifdef TP_TRANSPARENT
-            tLists[tileIndex * kListStride] = min(sTransparentCount, kListStride - 1u);
+            uint capacity = tOffsets[tileIndex + 1u] - tOffsets[tileIndex];
+            uint kept = min(sTransparentCount, capacity);
+            tLists[laHeaderWord(tileIndex, TP_LA_COUNT)] = kept;
+            tLists[laHeaderWord(tileIndex, TP_LA_START)] =
+                laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[tileIndex]);
+            tLists[laHeaderWord(tileIndex, TP_LA_DROPPED)] = sTransparentCount - kept;
+            tLists[laHeaderWord(tileIndex, TP_LA_FOUND)] = sTransparentCount;
 #endif
         } else {
             tileStats[tileIndex].x += sCount;

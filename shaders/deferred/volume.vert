@@ -11,6 +11,7 @@
 // misses the light's region, but one of whose MSAA samples meets it, still gets a fragment
 // (the shader then shades that edge pixel per sample).
 #include "include/shared.h"
+#include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 
 layout(constant_id = TP_DEF_SPEC_SPHERE_SCALE) const float kSphereScale = 1.0;

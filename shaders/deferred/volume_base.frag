@@ -7,6 +7,7 @@
 // front of its back face at every sample, so the back face is behind the nearest one), or
 // 1 on edge pixels, which then always pass and are shaded per sample.
 #include "include/shared.h"
+#include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "deferred/gbuffer_read.glsl"
 

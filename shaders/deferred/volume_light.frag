@@ -19,6 +19,7 @@
 // volume's one-pixel growth keeps every sample of a lit centre inside the silhouette, and
 // the range test below rejects surfaces in front of or behind the volume.
 #include "include/shared.h"
+#include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "deferred/gbuffer_read.glsl"
 

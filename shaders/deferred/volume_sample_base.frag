@@ -10,6 +10,7 @@
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
 #define TP_MSAA 1
 #include "include/shared.h"
+#include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "deferred/gbuffer_read.glsl"
 

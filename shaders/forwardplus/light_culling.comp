@@ -7,9 +7,10 @@
 //     when the scene has blended materials) spans the near plane to the tile's farthest
 //     depth, unbounded where any sample sees the sky.
 //  2. Point/spot lights are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
-//     sub-frustum's bounding box and the sub-frustum itself (include/tile_culling.glsl);
+//     sub-frustum's bounding box and the sub-frustum itself (include/tile_culling.glsl via light_assign.glsl);
 //     survivors set a bit in shared memory.
-//  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts), so
+//  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts, then
+//     laStoreWord of include/light_assign.glsl for the compact and fixed layouts), so
 //     every layout stores the same lights in the same order and gives the same image.
 // Directional lights are never culled: the shading pass loops over them separately.
 // Layout (one shader variant each):
@@ -21,8 +22,8 @@
 //           are processed last to first and prepended, so a walk of `count` nodes from the
 //           head visits lights in index order.
 #include "include/shared.h"
+#include "forwardplus/forwardplus_shared.h"
 #include "include/scene_bindings.glsl"
-#include "include/tile_culling.glsl"
 
 // One of TP_FP_CULL_COMPACT, TP_FP_CULL_FIXED, TP_FP_CULL_LINKED is defined (1) per variant.
 #if !defined(TP_FP_CULL_FIXED) && !defined(TP_FP_CULL_LINKED) && !defined(TP_FP_CULL_COMPACT)
@@ -52,13 +53,20 @@ layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2DMS dep
 #else
 layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depthImage;
 #endif
+#ifdef TP_FP_DEPTH_MS
+#define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, int(s)).r
+#else
+#define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, 0).r
+#endif
+// Candidate k is the k-th light of data[] (directional lights first, never culled).
+#define TP_LA_LIST_STORE(slot, k) indices[slot] = data[params.lights.x + (k)]
+#include "include/light_assign.glsl"
 #ifdef TP_FP_CULL_LINKED
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
     uint nodeCounter;
 };
 #endif
 
-shared uint sMinDepth, sMaxDepth, sAnySky;
 shared TileFrustum sFrustum[2]; // opaque, transparent
 shared TileBox sBox[2];         // their view-space bounding boxes
 // Survivor bitmasks, triple-buffered by chunk so that the compact/fixed layouts need a
@@ -81,10 +89,8 @@ void main() {
     const uint tileIndex = tile.y * params.tiles.x + tile.x;
     const uint numLists = kTwoLists ? 2u : 1u;
 
+    laDepthBoundsBegin();
     if (lid == 0u) {
-        sMinDepth = floatBitsToUint(2.0); // above any depth: no geometry yet
-        sMaxDepth = 0u;
-        sAnySky = 0u;
         for (uint l = 0u; l < 2u; ++l) {
             sCount[l] = 0u;
             sDropped[l] = 0u;
@@ -97,53 +103,22 @@ void main() {
     }
     barrier();
 
-    // 1. Depth bounds over every sample (depths are non-negative, so their bit patterns
-    //    order like the values).
+    // 1. Depth bounds over every sample (include/light_assign.glsl).
     uvec2 viewport = frame.viewport.xy;
-    {
-        float lo = 2.0, hi = 0.0;
-        bool sky = false;
-        const uint perSide = tileSize / gl_WorkGroupSize.x;
-        for (uint py = 0u; py < perSide; ++py) {
-            for (uint px = 0u; px < perSide; ++px) {
-                uvec2 pixel = tile * tileSize + uvec2(px, py) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
-                if (any(greaterThanEqual(pixel, viewport))) continue;
-                for (int s = 0; s < kSamples; ++s) {
-#ifdef TP_FP_DEPTH_MS
-                    float d = texelFetch(depthImage, ivec2(pixel), s).r;
-#else
-                    float d = texelFetch(depthImage, ivec2(pixel), 0).r;
-#endif
-                    if (d > 0.0) {
-                        lo = min(lo, d);
-                        hi = max(hi, d);
-                    } else {
-                        sky = true;
-                    }
-                }
-            }
-        }
-        if (hi > 0.0) {
-            atomicMin(sMinDepth, floatBitsToUint(lo));
-            atomicMax(sMaxDepth, floatBitsToUint(hi));
-        }
-        if (sky) atomicOr(sAnySky, 1u);
-    }
+    laDepthBoundsReduce(tile, tileSize, viewport, uint(kSamples));
     barrier();
 
-    const bool hasGeometry = sMaxDepth > 0u;
-    const float nearDepth = uintBitsToFloat(sMaxDepth);
-    const float farDepth = hasGeometry ? uintBitsToFloat(sMinDepth) : 0.0;
+    const bool hasGeometry = laTileHasGeometry();
+    const float nearDepth = laTileNearDepth();
+    const float farDepth = laTileFarDepth();
     // The sub-frusta are the same for the whole tile: one invocation builds them.
     if (lid == 0u) {
         const vec2 viewportSize = vec2(viewport);
-        sFrustum[0] = makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
-        // Transparent: from the near plane (depth 1) to the farthest opaque depth, or
-        // unbounded (depth 0) where the tile sees the sky.
-        float transparentFar = (sAnySky != 0u || !hasGeometry) ? 0.0 : farDepth;
+        sFrustum[0] = laOpaqueFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
+        float transparentFar = laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth);
         sBox[0] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[0]);
         if (kTwoLists) {
-            sFrustum[1] = makeTileFrustum(tile, tileSize, viewportSize, frame.invProj, 1.0, transparentFar);
+            sFrustum[1] = laTransparentFrustum(tile, tileSize, viewportSize, frame.invProj, transparentFar);
             sBox[1] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[1]);
         }
     }
@@ -251,16 +226,8 @@ void main() {
         }
         barrier();
 #else
-        if (compacts && bits != 0u) {
-            uint pos = running + prefix;
-            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-                int lsb = findLSB(bits);
-                bits &= bits - 1u;
-                if (pos < capacity)
-                    indices[start[list] + pos] = data[directionalCount + base + word * 32u + uint(lsb)];
-                ++pos;
-            }
-        }
+        if (compacts && bits != 0u)
+            laStoreWord(bits, base + word * 32u, start[list], running + prefix, capacity);
         running += chunkTotal;
 #endif
     }
@@ -273,15 +240,18 @@ void main() {
         FpTileLists t;
         for (uint l = 0u; l < 2u; ++l) {
 #ifdef TP_FP_CULL_LINKED
-            t.count[l] = sCount[l];
-            t.start[l] = sHead[l];
-            t.dropped[l] = sDropped[l];
+            t.list[l].count = sCount[l];
+            t.list[l].start = sHead[l];
+            t.list[l].dropped = sDropped[l];
 #else
-            t.count[l] = min(sCount[l], capacity);
-            t.start[l] = start[l];
-            t.dropped[l] = sCount[l] - t.count[l];
+            t.list[l].count = min(sCount[l], capacity);
+            t.list[l].start = start[l];
+            t.list[l].dropped = sCount[l] - t.list[l].count;
 #endif
+            t.list[l].found = t.list[l].count + t.list[l].dropped;
         }
+        t.pad0 = 0u;
+        t.pad1 = 0u;
         t.nearDepth = hasGeometry ? nearDepth : 0.0;
         t.farDepth = hasGeometry ? farDepth : 0.0;
         tiles[tileIndex] = t;

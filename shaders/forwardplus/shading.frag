@@ -6,9 +6,11 @@
 // transparent list. Every loop is bounded by an explicit count (never a sentinel): the
 // directional lights first, then the tile's list in light-index order.
 #include "include/shared.h"
+#include "forwardplus/forwardplus_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
+#include "include/light_assign.glsl"
 
 layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
@@ -39,11 +41,10 @@ void main() {
     for (uint i = 0u; i < directionalCount; ++i)
         sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
 
-    uvec2 tile = uvec2(gl_FragCoord.xy) / kTileSize;
-    uint tileIndex = min(tile.y, params.tiles.y - 1u) * params.tiles.x + min(tile.x, params.tiles.x - 1u);
+    uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
     uint list = (kTwoLists && kAlphaMode == TP_ALPHA_BLEND) ? 1u : 0u;
-    uint count = tiles[tileIndex].count[list];
-    uint start = tiles[tileIndex].start[list];
+    uint count = tiles[tileIndex].list[list].count;
+    uint start = tiles[tileIndex].list[list].start;
     if (kLayout == TP_FP_LAYOUT_LINKED) {
         uint node = start;
         for (uint i = 0u; i < count; ++i) {

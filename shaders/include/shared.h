@@ -123,8 +123,7 @@ static_assert(sizeof(DrawPush) == 16);
 } // namespace tp::gpu
 #endif
 
-// Each pipeline's own GPU structs, bindings (set TP_SET_PASS) and constants.
-#include "include/forwardplus_shared.h"
-#include "include/deferred_shared.h"
-#include "include/multipass_shared.h"
+// Pipeline-free: each pipeline's own structs, set-TP_SET_PASS bindings and constants live
+// in its own header beside its shaders (shaders/<pipeline>/<pipeline>_shared.h), included
+// by that pipeline's C++ and GLSL only.
 #endif

@@ -5,6 +5,7 @@
 // surfaces write it (depth EQUAL, no blending); blended surfaces composite it over what is
 // behind them (alpha blending), which is the "first pass" of their multipass sum.
 #include "include/shared.h"
+#include "multipass_forward/multipass_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"

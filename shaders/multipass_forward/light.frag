@@ -7,6 +7,7 @@
 // the same draw, so after all passes a blended draw holds exactly what shading all lights
 // at once and blending once gives (blended_pass.cpp, docs/multipass_forward.md).
 #include "include/shared.h"
+#include "multipass_forward/multipass_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"

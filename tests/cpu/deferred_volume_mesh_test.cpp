@@ -1,4 +1,4 @@
-// The light-volume meshes of `--deferred-lighting volumes` (shaders/include/deferred_shared.h):
+// The light-volume meshes of `--deferred-lighting volumes` (shaders/deferred/deferred_shared.h):
 // a volume must contain the light's whole region, or pixels inside it lose the light, and
 // its triangles must face outward, or culling front faces would drop the wrong half.
 #include <gtest/gtest.h>

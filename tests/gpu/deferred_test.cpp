@@ -395,5 +395,69 @@ TEST(Deferred, LedgerHoldsTheLayoutsBytesAndNoUnneededTargets) {
     expectNoValidationMessages(*ctx);
 }
 
+uint64_t entryBytes(const RunResult& run, const std::string& name) {
+    for (const LedgerEntry& e : run.memory)
+        if (e.tag.name == name) return e.requestedBytes;
+    return 0;
+}
+
+// The transparent lists use light assignment's compact layout: one 16-byte header per tile,
+// then runs sized by the conservative bound (the same bound as Forward+'s compact lists, so
+// the same slots per list when no light is directional), far below tiles x lights, and no
+// list drops a light. Volumes lighting builds the same lists in its lists-only pass.
+TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const uint32_t lights = 256;
+    Scene yard = courtyardWithLights(lights);
+    SceneGpu yardGpu(*ctx, yard);
+    RenderSettings s = small(1, "compact");
+    const uint64_t tiles = (96 / 16) * (64 / 16);
+    RunResult fp = runOrFail(*ctx, yardGpu, "forwardplus", s);
+    for (const char* lighting : {"tiled", "volumes"}) {
+        RunResult r = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
+        const double slots = counter(r, "transparent_list_slots");
+        EXPECT_EQ(entryBytes(r, "transparent_lists"), tiles * 16 + uint64_t(slots) * 4) << lighting;
+        EXPECT_EQ(slots, counter(fp, "light_list_slots") / 2) << lighting;
+        EXPECT_LT(slots, double(tiles * lights)) << lighting;
+        EXPECT_GT(counter(r, "transparent_lights_stored"), 0.0) << lighting;
+        EXPECT_EQ(counter(r, "transparent_lights_dropped"), 0.0) << lighting;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// A blended wall far behind the floor, seen over the sky, lit by a light beside it: the tiles
+// where the floor's far edge meets the sky hold floor pixels (their farthest opaque depth is
+// the floor's) and wall pixels 15 m further back. The transparent range must be unbounded
+// there (light assignment's laTransparentFarDepth: any sample without geometry), or the
+// wall's light is culled from those tiles and two rows of wall pixels lose it. Bound as on
+// the floor (WideMatchesReferenceOnTheFloor): 2.5e-4 relative per channel, floor 1e-4.
+TEST(Deferred, BlendedSurfaceOverTheSkyKeepsLightsBeyondTheOpaqueDepth) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Light light;
+    light.position = {0.0f, -6.5f, -19.0f}; // lights the wall just above the floor's far edge on screen
+    light.range = 4.0f;
+    light.intensity = 50.0f;
+    Scene scene = makeFloorScene({light});
+    Material glass;
+    glass.name = "glass";
+    glass.baseColorFactor = glm::vec4(0.6f, 0.7f, 0.9f, 0.5f);
+    glass.metallicFactor = 0.0f;
+    glass.roughnessFactor = 0.8f;
+    glass.alphaMode = AlphaMode::Blend;
+    scene.materials.push_back(glass);
+    Mesh wall;
+    wall.name = "wall";
+    wall.material = uint32_t(scene.materials.size() - 1);
+    addQuad(wall, {-20.0f, -12.0f, -20.0f}, {40.0f, 0.0f, 0.0f}, {0.0f, 30.0f, 0.0f}); // faces +z
+    scene.meshes.push_back(wall);
+    scene.computeBounds();
+    Pair p = renderBoth(*ctx, scene, small(1, "wide"));
+    EXPECT_EQ(p.error.nanInfCount, 0u);
+    EXPECT_LT(maxRelativeError(p.deferred.hdr, p.reference.hdr, 1e-4), 2.5e-4) << describe(p.error);
+    expectNoValidationMessages(*ctx);
+}
+
 } // namespace
 } // namespace tp::test

@@ -25,7 +25,10 @@
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "forwardplus/forwardplus_debug.h"
-#include "forwardplus/tile_bounds.h"
+#include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_grid.h"
+#include "forwardplus/forwardplus_shared.h"
 #include "gpu_test_util.h"
 #include "include/light_model.h"
 
@@ -184,7 +187,7 @@ struct ListRun {
     ImageR32 depth;
     std::vector<gpu::FpTileLists> tiles;
     std::vector<uint32_t> indices;
-    fp::TileGrid grid;
+    la::TileGrid grid;
     RendererStats stats;
     std::vector<DebugImage> debug;
 };
@@ -216,7 +219,7 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     std::vector<uint8_t> i = readbackBuffer(ctx, graph.buffer(graph.exported("fp_light_indices")));
     out.indices.resize(i.size() / 4);
     std::memcpy(out.indices.data(), i.data(), out.indices.size() * 4);
-    out.grid = fp::makeTileGrid(settings.width, settings.height, resolved.integer("tile"));
+    out.grid = la::makeTileGrid(settings.width, settings.height, resolved.integer("tile"));
     renderer->collectStats(graph);
     out.stats = renderer->stats();
     out.debug = renderer->debugImages(graph);
@@ -228,8 +231,8 @@ std::vector<uint32_t> listOf(const ListRun& r, uint32_t tile, uint32_t list, con
     const gpu::FpTileLists& t = r.tiles[tile];
     std::vector<uint32_t> out;
     if (layout == "linked") {
-        uint32_t node = t.start[list];
-        for (uint32_t i = 0; i < t.count[list]; ++i) {
+        uint32_t node = t.list[list].start;
+        for (uint32_t i = 0; i < t.list[list].count; ++i) {
             if (2 * size_t(node) + 1 >= r.indices.size()) {
                 ADD_FAILURE() << "node " << node << " outside the pool";
                 break;
@@ -238,7 +241,7 @@ std::vector<uint32_t> listOf(const ListRun& r, uint32_t tile, uint32_t list, con
             node = r.indices[2 * node + 1];
         }
     } else {
-        for (uint32_t i = 0; i < t.count[list]; ++i) out.push_back(r.indices.at(t.start[list] + i));
+        for (uint32_t i = 0; i < t.list[list].count; ++i) out.push_back(r.indices.at(t.list[list].start + i));
     }
     return out;
 }
@@ -291,7 +294,7 @@ TEST(ForwardPlusCulling, ConservativeOnEveryTileWithFalsePositiveRate) {
                 }
             if (!anyGeometry) {
                 ++skyTiles;
-                EXPECT_EQ(r.tiles[tile].count[0], 0u) << "sky tile " << tile << " has lights";
+                EXPECT_EQ(r.tiles[tile].list[0].count, 0u) << "sky tile " << tile << " has lights";
                 EXPECT_EQ(r.tiles[tile].nearDepth, 0.0f);
             }
             for (uint32_t li : contributing)
@@ -328,7 +331,7 @@ TEST(ForwardPlusCulling, LayoutsHoldTheSameListsAndHeatMapCountsMatch) {
         s.debug = true;
         runs.push_back(runLists(*ctx, gpuScene, s));
     }
-    const fp::TileGrid& g = runs[0].grid;
+    const la::TileGrid& g = runs[0].grid;
     for (uint32_t tile = 0; tile < g.count(); ++tile)
         for (uint32_t list = 0; list < 2; ++list) {
             std::vector<uint32_t> a = listOf(runs[0], tile, list, "compact");
@@ -341,7 +344,7 @@ TEST(ForwardPlusCulling, LayoutsHoldTheSameListsAndHeatMapCountsMatch) {
         const ListRun& r = runs[k];
         std::vector<gpu::FpTileLists> walked = r.tiles;
         for (uint32_t tile = 0; tile < g.count(); ++tile)
-            walked[tile].count[0] = uint32_t(listOf(r, tile, 0, k == 2 ? "linked" : "compact").size());
+            walked[tile].list[0].count = uint32_t(listOf(r, tile, 0, k == 2 ? "linked" : "compact").size());
         ImageRGBA expect = fp::lightsPerTileHeatMap(g, walked, 0);
         ASSERT_FALSE(r.debug.empty());
         EXPECT_EQ(r.debug[0].name, "lights_per_tile");
@@ -358,11 +361,11 @@ TEST(ForwardPlusCulling, CompactBoundIsAnUpperBound) {
     RenderSettings settings = small(96, 64, 1);
     ListRun r = runLists(*ctx, gpuScene, settings);
     const gpu::FrameUniforms& f = gpuScene.frame();
-    fp::LightClasses classes = fp::classifyLights(gpuScene.lightsGpu());
-    std::vector<uint32_t> bound = fp::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
+    la::LightClasses classes = la::classifyLights(gpuScene.lightsGpu());
+    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
     for (uint32_t tile = 0; tile < r.grid.count(); ++tile) {
-        EXPECT_LE(r.tiles[tile].count[0], bound[tile]);
-        EXPECT_EQ(r.tiles[tile].dropped[0], 0u);
+        EXPECT_LE(r.tiles[tile].list[0].count, bound[tile]);
+        EXPECT_EQ(r.tiles[tile].list[0].dropped, 0u);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -407,9 +410,9 @@ TEST(ForwardPlusLayouts, FixedWithTinyCapacityCountsDropsAndShowsThem) {
     RunResult fixedRun = runOrFail(*ctx, gpuScene, "forwardplus", s);
     uint64_t expectDropped = 0, overflowTiles = 0;
     for (uint32_t tile = 0; tile < compact.grid.count(); ++tile) {
-        uint32_t all = compact.tiles[tile].count[0];
-        EXPECT_EQ(fixed.tiles[tile].count[0], std::min(all, 2u));
-        EXPECT_EQ(fixed.tiles[tile].dropped[0], all - std::min(all, 2u));
+        uint32_t all = compact.tiles[tile].list[0].count;
+        EXPECT_EQ(fixed.tiles[tile].list[0].count, std::min(all, 2u));
+        EXPECT_EQ(fixed.tiles[tile].list[0].dropped, all - std::min(all, 2u));
         expectDropped += all - std::min(all, 2u);
         overflowTiles += all > 2;
         // The kept ones are the first lights of the full list.
@@ -430,7 +433,7 @@ TEST(ForwardPlusLayouts, FixedWithTinyCapacityCountsDropsAndShowsThem) {
         for (uint32_t tx = 0; tx < fixed.grid.tilesX; ++tx) {
             const float* p = heat.at(tx * 16, ty * 16); // the tile's top-left corner
             bool green = p[0] == 0.0f && p[1] == 1.0f && p[2] == 0.0f;
-            EXPECT_EQ(green, fixed.tiles[ty * fixed.grid.tilesX + tx].dropped[0] > 0) << tx << "," << ty;
+            EXPECT_EQ(green, fixed.tiles[ty * fixed.grid.tilesX + tx].list[0].dropped > 0) << tx << "," << ty;
             outlined += green;
         }
     EXPECT_EQ(outlined, overflowTiles);

@@ -18,8 +18,6 @@ void expectNoValidationMessages(const GpuContext& ctx) {
                                   << (messages.empty() ? "" : messages.front());
 }
 
-namespace {
-
 void addQuad(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v) {
     uint32_t base = uint32_t(m.positions.size());
     glm::vec3 n = glm::normalize(glm::cross(u, v));
@@ -34,8 +32,6 @@ void addQuad(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v) {
     }
     for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
 }
-
-} // namespace
 
 Scene makeFloorScene(const std::vector<Light>& lights) {
     Scene s;

@@ -18,6 +18,9 @@ std::unique_ptr<GpuContext> makeValidatedContext();
 // Asserts that the validation layers reported nothing so far.
 void expectNoValidationMessages(const GpuContext& ctx);
 
+// Appends the quad origin, origin + u, origin + u + v, origin + v to m, facing cross(u, v).
+void addQuad(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v);
+
 // A 10 x 10 floor at y = 0 (white dielectric, roughness 1) with a box on it, camera above
 // looking down at an angle; lights as given.
 Scene makeFloorScene(const std::vector<Light>& lights);

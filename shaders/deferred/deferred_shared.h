@@ -1,7 +1,9 @@
 // G-buffer deferred: structs, set-1 bindings and constants shared by C++ and GLSL.
-// Included by shared.h; same rules (TP_STRUCT, static_asserts on the C++ side).
+// Included by this pipeline's C++ and GLSL only (never by shared.h); same rules as
+// shared.h (TP_STRUCT, static_asserts on the C++ side).
 #ifndef TP_DEFERRED_SHARED_H
 #define TP_DEFERRED_SHARED_H
+#include "include/shared.h"
 #ifndef TP_GLSL
 #include <cmath>
 namespace tp::gpu {
@@ -17,18 +19,18 @@ using std::sin;
 #define TP_DEF_BINDING_EMISSIVE 3    // sampler: emissive rgb (only when the scene emits)
 #define TP_DEF_BINDING_DEPTH 4       // sampler: D32 depth (per sample under MSAA)
 #define TP_DEF_BINDING_HDR 5         // storage image: lit radiance (RGBA32F)
-#define TP_DEF_BINDING_TRANSPARENT_LISTS 6 // buffer: per-tile transparent light lists
+#define TP_DEF_BINDING_TRANSPARENT_LISTS 6 // buffer: transparent light lists, compact (include/light_assign.h)
 #define TP_DEF_BINDING_DEBUG 7       // storage image RGBA32F: edge mask, roughness, metallic
 #define TP_DEF_BINDING_TILE_STATS 8  // buffer uvec4 per tile: opaque lights, transparent lights, edge pixels, overflow
 #define TP_DEF_BINDING_EDGE_MASK 9   // sampler: 1x edge mask (volumes lighting under MSAA)
+#define TP_DEF_BINDING_LIST_OFFSETS 10 // buffer uint[tileCount + 1]: compact transparent lists' per-tile offsets
 
 // ---- set 1 of the hybrid forward pass (blended materials) ----
-#define TP_DEF_FWD_BINDING_LISTS 0   // buffer: per-tile transparent light lists
+#define TP_DEF_FWD_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
 
 // ---- specialization constants of the deferred shaders (ids after the scene's 0..2) ----
 #define TP_DEF_SPEC_TILE_SIZE 10     // tile edge in pixels (= workgroup edge)
 #define TP_DEF_SPEC_WIDE 11          // 1: wide (fp32, xyz normal) G-buffer, 0: compact
-#define TP_DEF_SPEC_LIST_STRIDE 12   // uints per transparent tile list: 1 (count) + capacity
 #define TP_DEF_SPEC_SAMPLES 13       // MSAA samples of the G-buffer
 #define TP_DEF_SPEC_SPHERE_SCALE 14  // float bits: volumeSphereVertex scale that circumscribes the unit sphere
 #define TP_DEF_SPEC_EVERY_SAMPLE 15  // 1: every pixel with geometry is lit per sample (--gbuffer-msaa sample)

@@ -1,7 +1,10 @@
 // Forward+: structs, set-1 bindings and constants shared by C++ and GLSL.
-// Included by shared.h; same rules (TP_STRUCT, static_asserts on the C++ side).
+// Included by this pipeline's C++ and GLSL only (never by shared.h); same rules as
+// shared.h (TP_STRUCT, static_asserts on the C++ side).
 #ifndef TP_FORWARDPLUS_SHARED_H
 #define TP_FORWARDPLUS_SHARED_H
+#include "include/shared.h"
+#include "include/light_assign.h"
 #ifndef TP_GLSL
 namespace tp::gpu {
 #endif
@@ -28,14 +31,18 @@ namespace tp::gpu {
 #define TP_FP_CHUNK_WORDS 32u
 #define TP_FP_CHUNK_LIGHTS (TP_FP_CHUNK_WORDS * 32u)
 
-// What the culling pass leaves for each tile. List 0 = opaque (bounded by the tile's
-// [min, max] depth), list 1 = transparent (near plane to the tile's farthest depth).
+// What the culling pass leaves for each tile. list[TP_LA_OPAQUE] is bounded by the tile's
+// [min, max] depth, list[TP_LA_TRANSPARENT] spans the near plane to the tile's farthest depth
+// (light assignment's two ranges). Each is light assignment's one list header
+// (include/light_assign.h): count kept (never more than the storage holds); start = first
+// slot in indices[] (compact, fixed) or the head node (linked: count bounds the walk);
+// dropped = passed the test but did not fit (fixed capacity, pool overflow); found = both.
 TP_STRUCT(FpTileLists) {
-    uint count[2];   // lights in each list (kept; never more than the storage holds)
-    uint start[2];   // compact/fixed: first slot in indices[]; linked: head node (count bounds the walk)
-    uint dropped[2]; // lights that passed the test but did not fit (fixed capacity, pool overflow)
+    LaListHeader list[2];
     float nearDepth; // opaque depth bounds, reverse-Z: nearDepth >= farDepth;
     float farDepth;  // nearDepth == 0: no geometry in the tile (sky), opaque list empty
+    uint pad0;
+    uint pad1;
 };
 
 // Uploaded once per configuration; followed in the same buffer by uint data[]:
@@ -49,8 +56,8 @@ TP_STRUCT(FpParams) {
 };
 
 #ifndef TP_GLSL
-static_assert(sizeof(FpTileLists) == 32);
-static_assert(offsetof(FpTileLists, nearDepth) == 24);
+static_assert(sizeof(FpTileLists) == 48);
+static_assert(offsetof(FpTileLists, nearDepth) == 32);
 static_assert(sizeof(FpParams) == 48);
 #endif
 

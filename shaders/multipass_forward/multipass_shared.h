@@ -1,9 +1,11 @@
 // multipass forward: structs, set-1 bindings and constants shared by C++ and GLSL.
-// Included by shared.h; same rules (TP_STRUCT, static_asserts on the C++ side).
+// Included by this pipeline's C++ and GLSL only (never by shared.h); same rules as
+// shared.h (TP_STRUCT, static_asserts on the C++ side).
 // The pipeline has no set-1 resources: everything per light travels in the scene's
 // DrawPush push constant and in specialization constants.
 #ifndef TP_MULTIPASS_SHARED_H
 #define TP_MULTIPASS_SHARED_H
+#include "include/shared.h"
 
 // Light passes carry the index of their light in DrawPush.pad0, so one pipeline object
 // serves every light and no per-light descriptor set exists.

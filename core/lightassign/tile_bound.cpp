@@ -1,26 +1,9 @@
-#include "forwardplus/tile_bounds.h"
+#include "core/lightassign/tile_bound.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace tp::fp {
-
-TileGrid makeTileGrid(uint32_t width, uint32_t height, uint32_t tileSize) {
-    TileGrid g;
-    g.width = width;
-    g.height = height;
-    g.tileSize = tileSize;
-    g.tilesX = (width + tileSize - 1) / tileSize;
-    g.tilesY = (height + tileSize - 1) / tileSize;
-    return g;
-}
-
-LightClasses classifyLights(const std::vector<gpu::LightGpu>& lights) {
-    LightClasses c;
-    for (uint32_t i = 0; i < lights.size(); ++i)
-        (lights[i].type == TP_LIGHT_DIRECTIONAL ? c.directional : c.local).push_back(i);
-    return c;
-}
+namespace tp::la {
 
 namespace {
 
@@ -96,4 +79,4 @@ std::vector<uint32_t> conservativeTileBound(const TileGrid& grid, const glm::mat
     return bound;
 }
 
-} // namespace tp::fp
+} // namespace tp::la

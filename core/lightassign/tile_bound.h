@@ -1,0 +1,26 @@
+#pragma once
+// A conservative per-tile upper bound on the number of local lights the GPU can keep in a
+// tile's list, used to size compact light lists so that they cannot overflow.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/lightassign/tile_grid.h"
+#include "include/shared.h"
+
+namespace tp::la {
+
+// For every tile, an upper bound on the local lights whose sphere meets the tile's
+// depth-unbounded frustum (the side planes x_ndc, y_ndc = tile edges). The GPU tests a
+// subset of that volume (its frustum is also bounded in depth, spot lights also by their
+// cone, optionally by the frustum's box) with a much smaller padding, so its count can
+// never exceed this bound - for either depth range (opaque or transparent).
+// Computed per light as a column range times a row range: O(lights * (tilesX + tilesY)).
+// view/proj/lights must be what the GPU tests (the uploaded, camera-relative ones).
+std::vector<uint32_t> conservativeTileBound(const TileGrid& grid, const glm::mat4& view,
+                                            const glm::mat4& proj,
+                                            const std::vector<gpu::LightGpu>& lights,
+                                            const std::vector<uint32_t>& local);
+
+} // namespace tp::la

@@ -1,0 +1,35 @@
+#include "deferred/transparent_lists.h"
+
+#include <string>
+
+#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/render/renderer.h"
+#include "core/render/scene_gpu.h"
+#include "include/light_assign.h"
+
+namespace tp {
+
+uint64_t TransparentListPlan::bytes() const {
+    const uint64_t tiles = offsets.empty() ? 0 : offsets.size() - 1;
+    return (tiles * TP_LA_HEADER_WORDS + slots) * 4;
+}
+
+TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene, uint64_t limit,
+                                         const std::string& deviceName) {
+    // The uploaded (camera-relative) view and lights: what the tiled pass tests.
+    const gpu::FrameUniforms& f = scene.shadingFrame();
+    const std::vector<gpu::LightGpu>& lights = scene.shadingLights();
+    la::LightClasses classes = la::classifyLights(lights);
+    std::vector<uint32_t> bound = la::conservativeTileBound(grid, f.view, f.proj, lights, classes.local);
+    la::CompactLayout compact = la::makeCompactLayout(bound, uint32_t(classes.directional.size()));
+    TransparentListPlan plan{std::move(compact.offsets), compact.slots};
+    if (plan.bytes() > limit || plan.slots > 0xffffffffull)
+        throw RendererError("deferred: the transparent light lists need " + std::to_string(plan.bytes()) +
+                            " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
+                            deviceName + "; use a larger --tile, a lower --res or fewer lights");
+    return plan;
+}
+
+} // namespace tp

@@ -1,0 +1,29 @@
+#pragma once
+// Deferred's per-tile transparent light lists (blended scenes), in light assignment's
+// compact layout (include/light_assign.h): one LaListHeader per tile, then each tile's run
+// of light indices, the runs sized by a conservative CPU bound (core/lightassign), so the
+// buffer grows with the lights the lists can hold, never with tiles x lights.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/lightassign/tile_grid.h"
+
+namespace tp {
+
+class SceneGpu;
+
+struct TransparentListPlan {
+    std::vector<uint32_t> offsets; // tileCount + 1: tile t's run is [offsets[t], offsets[t + 1])
+    uint64_t slots = 0;            // light index slots over every tile
+    uint64_t bytes() const;        // headers + slots
+};
+
+// Every light may enter a list (the tiled pass culls all of them against the transparent
+// range): directional lights reach every tile, point/spot lights at most the tiles of
+// la::conservativeTileBound. Throws RendererError when the buffer would exceed
+// maxStorageBufferRange (`limit`).
+TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene, uint64_t limit,
+                                         const std::string& deviceName);
+
+} // namespace tp

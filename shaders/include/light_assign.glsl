@@ -1,0 +1,124 @@
+// Light assignment shared by the tiled pipelines (Forward+ and tiled deferred); GLSL only.
+// Builds on tile_culling.glsl (the tile sub-frustum and its sphere, cone and box tests) with
+// what both pipelines need around those tests: the tile of a fragment, the per-tile depth
+// bounds (every sample under MSAA), the two depth ranges (opaque, transparent) and the
+// compact list layout of light_assign.h. The C++ half is core/lightassign/.
+#ifndef TP_LIGHT_ASSIGN_GLSL
+#define TP_LIGHT_ASSIGN_GLSL
+#include "include/shared.h"
+#include "include/light_assign.h"
+#include "include/tile_culling.glsl"
+
+// ---- the tile grid (core/lightassign/tile_grid.h) ----
+uint laTileCount1D(uint pixels, uint tileSize) { return (pixels + tileSize - 1u) / tileSize; }
+
+// Row-major tile of a pixel (e.g. uvec2(gl_FragCoord.xy)); clamped into the grid so that a
+// fragment on the viewport's edge can never index past the last tile.
+uint laTileIndex(uvec2 pixel, uint tileSize, uvec2 tiles) {
+    uvec2 t = min(pixel / tileSize, tiles - uvec2(1u));
+    return t.y * tiles.x + t.x;
+}
+
+// ---- the two depth ranges of a tile (reverse-Z: 1 = near plane, 0 = far/infinite) ----
+// Opaque: [nearest, farthest] depth of the tile's geometry (empty when it has none).
+// Transparent: blended surfaces lie anywhere in front of the opaque ones, so from the near
+// plane to the farthest opaque depth - unbounded (0) where any sample sees no geometry,
+// since a blended surface over the sky can be at any depth.
+float laTransparentFarDepth(bool hasGeometry, bool seesSky, float farDepth) {
+    return (seesSky || !hasGeometry) ? 0.0 : farDepth;
+}
+
+TileFrustum laOpaqueFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj, float nearDepth,
+                            float farDepth) {
+    return makeTileFrustum(tile, tileSize, viewportSize, invProj, nearDepth, farDepth);
+}
+
+TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj,
+                                 float transparentFarDepth) {
+    return makeTileFrustum(tile, tileSize, viewportSize, invProj, 1.0, transparentFarDepth);
+}
+
+// ---- compact lists (light_assign.h: LaListHeader) in a uint[] buffer ----
+// Word `field` of tile t's header; fields in LaListHeader order.
+#define TP_LA_COUNT 0u
+#define TP_LA_START 1u
+#define TP_LA_DROPPED 2u
+#define TP_LA_FOUND 3u
+uint laHeaderWord(uint tile, uint field) { return tile * TP_LA_HEADER_WORDS + field; }
+// First light word of a tile whose run starts at `offset` (the compact layout's prefix sum).
+uint laListStart(uint tileCount, uint offset) { return tileCount * TP_LA_HEADER_WORDS + offset; }
+
+// ---- compact list fill in ascending light order (compute) ----
+// Lights are tested in chunks whose survivors form a bitmask of 32-light words; the
+// invocation that owns a word stores its lights after those of the words before it
+// (`pos` = survivors of the earlier chunks + popcounts of the earlier words), so a list
+// holds its lights in ascending order whatever the scheduling: deterministic lists, and
+// the same per-light summation order on every device. The includer defines
+// TP_LA_LIST_STORE(slot, k): write candidate light k (its light index, however the includer
+// maps it) into slot `slot`.
+#ifdef TP_LA_LIST_STORE
+// Stores the lights of one survivor word (candidates firstCandidate + bit) at
+// listStart + pos, pos + 1, ...; a light at or beyond `capacity` is not stored (the caller
+// counts it as dropped). Returns the next pos.
+uint laStoreWord(uint bits, uint firstCandidate, uint listStart, uint pos, uint capacity) {
+    for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+        int lsb = findLSB(bits);
+        bits &= bits - 1u;
+        if (pos < capacity) TP_LA_LIST_STORE(listStart + pos, firstCandidate + uint(lsb));
+        ++pos;
+    }
+    return pos;
+}
+#endif
+
+// ---- per-tile depth bounds (compute shaders that define TP_LA_DEPTH_FETCH) ----
+// TP_LA_DEPTH_FETCH(ivec2 pixel, uint sample) returns the depth of one sample. The workgroup
+// is 8 x 8 invocations whatever the tile size; each reads (tileSize / 8)^2 pixels, every
+// sample of each. Usage: laDepthBoundsBegin(); barrier(); laDepthBoundsReduce(...);
+// barrier(); then laTile*() are uniform over the group.
+#ifdef TP_LA_DEPTH_FETCH
+shared uint laNearBits; // nearest geometry depth (reverse-Z: largest); 0: no geometry
+shared uint laFarBits;  // farthest geometry depth
+shared uint laSkyBits;  // 1: some sample of the tile has no geometry
+
+void laDepthBoundsBegin() {
+    if (gl_LocalInvocationIndex == 0u) {
+        laNearBits = 0u;
+        laFarBits = floatBitsToUint(2.0); // above any depth: no geometry yet
+        laSkyBits = 0u;
+    }
+}
+
+// Depths are non-negative, so their bit patterns order like the values: min/max on the bits.
+void laDepthBoundsReduce(uvec2 tile, uint tileSize, uvec2 viewport, uint samples) {
+    float lo = 2.0, hi = 0.0;
+    bool sky = false;
+    const uint perSide = tileSize / gl_WorkGroupSize.x;
+    for (uint py = 0u; py < perSide; ++py) {
+        for (uint px = 0u; px < perSide; ++px) {
+            uvec2 pixel = tile * tileSize + uvec2(px, py) * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
+            if (any(greaterThanEqual(pixel, viewport))) continue;
+            for (uint s = 0u; s < samples; ++s) {
+                float d = TP_LA_DEPTH_FETCH(ivec2(pixel), s);
+                if (d > 0.0) {
+                    lo = min(lo, d);
+                    hi = max(hi, d);
+                } else {
+                    sky = true;
+                }
+            }
+        }
+    }
+    if (hi > 0.0) {
+        atomicMin(laFarBits, floatBitsToUint(lo));
+        atomicMax(laNearBits, floatBitsToUint(hi));
+    }
+    if (sky) atomicOr(laSkyBits, 1u);
+}
+
+bool laTileHasGeometry() { return laNearBits > 0u; }
+bool laTileSeesSky() { return laSkyBits != 0u; }
+float laTileNearDepth() { return uintBitsToFloat(laNearBits); } // 0 without geometry
+float laTileFarDepth() { return laTileHasGeometry() ? uintBitsToFloat(laFarBits) : 0.0; }
+#endif
+#endif
