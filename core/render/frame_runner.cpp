@@ -41,6 +41,10 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
         renderer->prepare(graph);
     } catch (const RendererError& e) {
         return Error{"pipeline " + entry.name + ": " + e.what()};
+    } catch (const GraphError& e) {
+        // A pass's declarations disagree with each other or with its shaders: a bug in
+        // that pipeline, reported as one line so the other pipelines still run.
+        return Error{"pipeline " + entry.name + ": " + e.what()};
     }
 
     GpuProfiler profiler(ctx, 64);
