@@ -8,6 +8,9 @@ namespace tp {
 
 const Image& PassContext::image(ResourceHandle h) const { return graph.image(h); }
 const Buffer& PassContext::buffer(ResourceHandle h) const { return graph.buffer(h); }
+void PassContext::expectUse(ResourceHandle h, Use use) const {
+    if (pass != ~0u) graph.declarations().expectUse(pass, h, use);
+}
 
 FrameGraph::FrameGraph(GpuContext& ctx, std::string owner, uint32_t width, uint32_t height)
     : ctx_(ctx), owner_(std::move(owner)), width_(width), height_(height) {}
@@ -143,7 +146,7 @@ void FrameGraph::record(VkCommandBuffer cmd, GpuProfiler* profiler) {
         for (const PlanBarrier& b : p.barriers) recordBarrier(cmd, b);
         const std::string& name = decl_.passes()[p.pass].name;
         uint32_t scope = profiler ? profiler->beginScope(cmd, name) : 0;
-        PassContext pc{cmd, *this};
+        PassContext pc{cmd, *this, p.pass};
         executes_[p.pass](pc);
         if (profiler) profiler->endScope(cmd, scope);
     }

@@ -40,6 +40,9 @@ struct PassContext {
     FrameGraph& graph;
     const Image& image(ResourceHandle h) const;
     const Buffer& buffer(ResourceHandle h) const;
+    uint32_t pass = ~0u; // the pass being recorded (~0u: none, nothing is checked)
+    // Throws GraphError unless the pass declared this use (beginRendering's attachments).
+    void expectUse(ResourceHandle h, Use use) const;
 };
 
 // A buffer bound in a pass's set that the graph does not track: static data uploaded once,
@@ -81,6 +84,7 @@ class FrameGraph {
     const std::string& owner() const { return owner_; }
 
     const GraphPlan& plan() const { return plan_; }
+    const GraphDecl& declarations() const { return decl_; }
 
   private:
     struct ResourceNode {

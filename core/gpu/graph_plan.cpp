@@ -171,6 +171,15 @@ const GraphDecl::Pass& GraphDecl::pass(const std::string& name) const {
     throw GraphError("no pass named '" + name + "'");
 }
 
+void GraphDecl::expectUse(uint32_t pass, ResourceHandle h, Use use) const {
+    const Pass& p = passes_.at(pass);
+    for (const PassUse& u : p.uses)
+        if (u.resource.index == h.index && u.use == use) return;
+    const std::string name = h.index < resources_.size() ? resources_[h.index].name : "an unknown resource";
+    throw GraphError("pass '" + p.name + "' uses '" + name + "' as " + useName(use) +
+                     " without declaring it");
+}
+
 // Walks the passes backwards from the exports: a pass lives when it writes something needed.
 std::vector<bool> GraphDecl::cull() const {
     std::vector<bool> needed(resources_.size()), live(passes_.size());

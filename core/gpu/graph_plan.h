@@ -105,6 +105,9 @@ class GraphDecl {
     void addPass(const std::string& name, std::vector<PassUse> uses);
     void exportResource(const std::string& publicName, ResourceHandle h);
     GraphPlan plan() const;
+    // Throws unless pass `pass` declared `use` of `h`: for what a pass names again while
+    // recording (its attachments), so a use left out of the declaration is an error.
+    void expectUse(uint32_t pass, ResourceHandle h, Use use) const;
 
     struct Resource {
         std::string name;

@@ -49,7 +49,12 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
 
     GpuProfiler profiler(ctx, 64);
     VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    recordFrame(cmd, graph, profiler);
+    try {
+        recordFrame(cmd, graph, profiler);
+    } catch (const GraphError& e) { // a pass records an attachment it did not declare
+        ctx.freeCommandBuffer(cmd);
+        return Error{"pipeline " + entry.name + ": " + e.what()};
+    }
     const uint32_t total = options.warmupFrames + options.timedFrames;
     for (uint32_t f = 0; f < total; ++f) {
         auto start = std::chrono::steady_clock::now();

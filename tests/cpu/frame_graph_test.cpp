@@ -3,6 +3,7 @@
 // the reflection check of a pass's bindings against embedded shaders.
 #include <gtest/gtest.h>
 
+#include "core/gpu/embedded_shaders.h"
 #include "core/gpu/graph_plan.h"
 #include "core/gpu/shader_reflection.h"
 #include "include/shared.h"
@@ -166,6 +167,24 @@ TEST(FrameGraphPlan, BindingsAreCheckedAndGiveTheDescriptorTypes) {
     EXPECT_EQ(descriptorType(Use::DepthTest, true), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
     EXPECT_EQ(descriptorType(Use::StorageWrite, true), VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     EXPECT_EQ(descriptorType(Use::StorageRead, false), VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+}
+
+TEST(FrameGraphPlan, AnAttachmentRecordedButNotDeclaredIsAnError) {
+    GraphDecl g;
+    ResourceHandle hdr = g.addResource("hdr", true), hdrMsaa = g.addResource("hdr_msaa", true);
+    g.addPass("shade", {{hdrMsaa, Use::ColorAttachment}});
+    EXPECT_EQ(errorOf([&] { g.expectUse(0, hdrMsaa, Use::ColorAttachment); }), "");
+    EXPECT_EQ(errorOf([&] { g.expectUse(0, hdr, Use::ColorResolve); }),
+              "pass 'shade' uses 'hdr' as colour resolve without declaring it");
+}
+
+TEST(ShaderReflection, EveryEmbeddedShaderReflects) {
+    size_t withPassSet = 0;
+    for (const EmbeddedShader& s : embeddedShaders()) {
+        EXPECT_EQ(errorOf([&] { reflectShaderSet(s.name, TP_SET_PASS); }), "") << s.name;
+        withPassSet += reflectShaderSet(s.name, TP_SET_PASS).empty() ? 0 : 1;
+    }
+    EXPECT_GT(withPassSet, 0u);
 }
 
 TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
