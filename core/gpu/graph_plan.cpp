@@ -140,6 +140,9 @@ ResourceHandle GraphDecl::addResource(const std::string& name, bool isImage) {
 }
 
 void GraphDecl::addPass(const std::string& name, std::vector<PassUse> uses) {
+    // The name is the pass's key for its descriptor set, its timestamps and the report.
+    for (const Pass& p : passes_)
+        if (p.name == name) throw GraphError("pass '" + name + "' declared twice");
     std::set<uint32_t> bindings;
     for (const PassUse& u : uses) {
         if (u.resource.index >= resources_.size())

@@ -154,6 +154,7 @@ TEST(FrameGraphPlan, ABufferUsedAsAnImageIsAnError) {
               "pass 'draw' uses buffer 'tile_stats' as colour attachment, which needs an image");
     EXPECT_EQ(errorOf([&] { g.addPass("bad", {{ResourceHandle{7}, Use::Sampled}}); }),
               "pass 'bad' uses an unknown resource");
+    EXPECT_EQ(errorOf([&] { g.addPass("fill", {{stats, Use::StorageWrite}}); }), "pass 'fill' declared twice");
 }
 
 TEST(FrameGraphPlan, BindingsAreCheckedAndGiveTheDescriptorTypes) {
