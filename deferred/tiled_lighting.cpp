@@ -20,16 +20,25 @@ TiledLighting::~TiledLighting() {
 void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly) {
     t_ = &t;
     listsOnly_ = listsOnly;
+    // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
+    const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
+                                        TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
     std::vector<PassUse> uses;
     if (!listsOnly)
-        for (ResourceHandle h : t.gbuffer) uses.push_back({h, Use::Sampled});
-    uses.push_back({t.gbufferDepth, Use::Sampled});
-    if (!listsOnly) uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite});
-    uses.push_back({t.tileStats, Use::StorageWrite});
-    if (t.transparentLists.valid()) uses.push_back({t.transparentLists, Use::StorageWrite});
-    if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite});
-    graph.addPass(listsOnly ? "transparent_light_lists" : "tiled_lighting", uses,
-                  [this](PassContext& pc) { record(pc); });
+        for (size_t i = 0; i < t.gbuffer.size(); ++i)
+            uses.push_back({t.gbuffer[i], Use::Sampled, gbufferBindings[i]});
+    uses.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+    if (!listsOnly)
+        uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_DEF_BINDING_HDR});
+    uses.push_back({t.tileStats, Use::StorageWrite, TP_DEF_BINDING_TILE_STATS});
+    if (t.transparentLists.valid())
+        uses.push_back({t.transparentLists, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_LISTS});
+    if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_DEF_BINDING_DEBUG});
+    graph.addPass(passName(), uses, [this](PassContext& pc) { record(pc); });
+}
+
+std::string TiledLighting::passName() const {
+    return listsOnly_ ? "transparent_light_lists" : "tiled_lighting";
 }
 
 std::string TiledLighting::shaderName() const {
@@ -40,51 +49,21 @@ std::string TiledLighting::shaderName() const {
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {
-    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    const VkDescriptorType storageImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    const VkDescriptorType storageBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
-                                        TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
-    const size_t colors = listsOnly_ ? 0 : t_->gbuffer.size();
-    std::vector<SetBinding> bindings;
-    for (size_t i = 0; i < colors; ++i) bindings.push_back({gbufferBindings[i], sampled});
-    bindings.push_back({TP_DEF_BINDING_DEPTH, sampled});
-    if (!listsOnly_) bindings.push_back({TP_DEF_BINDING_HDR, storageImage});
-    bindings.push_back({TP_DEF_BINDING_TILE_STATS, storageBuffer});
-    if (t_->transparentLists.valid()) bindings.push_back({TP_DEF_BINDING_TRANSPARENT_LISTS, storageBuffer});
-    if (t_->transparentLists.valid()) bindings.push_back({TP_DEF_BINDING_LIST_OFFSETS, storageBuffer});
-    if (t_->debug.valid()) bindings.push_back({TP_DEF_BINDING_DEBUG, storageImage});
-    set_ = createPassSet(ctx_, bindings);
-
     // texelFetch only: the sampler's filtering is never used.
     VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     si.magFilter = si.minFilter = VK_FILTER_NEAREST;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
-    const VkImageLayout ro = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
-    for (size_t i = 0; i < colors; ++i)
-        writeImageDescriptor(ctx_, set_.set, gbufferBindings[i], sampled, graph.image(t_->gbuffer[i]).view,
-                             ro, sampler_);
-    writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_DEPTH, sampled, graph.image(t_->gbufferDepth).view,
-                         ro, sampler_);
-    ResourceHandle out = t_->hdrMsaa.valid() ? t_->hdrMsaa : t_->hdr;
-    if (!listsOnly_)
-        writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_HDR, storageImage, graph.image(out).view,
-                             VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
-    writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TILE_STATS, graph.buffer(t_->tileStats).buffer);
+    std::vector<ExternalBuffer> externals;
     if (t_->transparentLists.valid()) {
-        writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_TRANSPARENT_LISTS,
-                              graph.buffer(t_->transparentLists).buffer);
         // Uploaded once per configuration: the compact layout's runs (deferred_renderer plans them).
         listOffsets_ = createBufferWithData(ctx_, t_->listOffsets.data(), t_->listOffsets.size() * 4,
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                             {"deferred", "", "transparent_list_offsets",
                                              "per tile: first slot of its transparent list (prefix sum)"});
-        writeBufferDescriptor(ctx_, set_.set, TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer);
+        externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
     }
-    if (t_->debug.valid())
-        writeImageDescriptor(ctx_, set_.set, TP_DEF_BINDING_DEBUG, storageImage, graph.image(t_->debug).view,
-                             VK_IMAGE_LAYOUT_GENERAL, VK_NULL_HANDLE);
+    set_ = graph.createPassSet(passName(), sampler_, externals);
 
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
@@ -92,7 +71,7 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
     spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
-    pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_);
+    pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {

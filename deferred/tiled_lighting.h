@@ -34,6 +34,7 @@ class TiledLighting {
   private:
     void record(PassContext& pc);
     void dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end);
+    std::string passName() const;
     std::string shaderName() const;
     GpuContext& ctx_;
     SceneGpu& scene_;

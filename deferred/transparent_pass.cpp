@@ -16,7 +16,8 @@ TransparentPass::~TransparentPass() {
 
 void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t) {
     t_ = &t;
-    std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead}, {t.gbufferDepth, Use::DepthTest}};
+    std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
+                                 {t.gbufferDepth, Use::DepthTest}};
     if (t.msaa()) {
         uses.push_back({t.hdrMsaa, Use::ColorAttachment});
         uses.push_back({t.hdr, Use::ColorResolve});
@@ -27,8 +28,7 @@ void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t) {
 }
 
 void TransparentPass::prepare(FrameGraph& graph) {
-    set_ = createPassSet(ctx_, {{TP_DEF_FWD_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
-    writeBufferDescriptor(ctx_, set_.set, TP_DEF_FWD_BINDING_LISTS, graph.buffer(t_->transparentLists).buffer);
+    set_ = graph.createPassSet("transparent_forward");
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
     d.fragmentShader = "deferred_transparent_frag";
@@ -40,6 +40,7 @@ void TransparentPass::prepare(FrameGraph& graph) {
     d.depthWrite = false;
     d.blend = BlendMode::Alpha;
     d.layout = layout_;
+    d.passSet = &set_;
     pipeline_ = createGraphicsPipeline(ctx_, d);
 }
 

@@ -46,27 +46,30 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
         t.volumeDepth = graph.createImage("volume_depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                            "nearest sample depth (1 on edges): volumes' depth test"});
     }
+    // Each resource once, with the binding (set TP_SET_PASS) the shaders read it at.
+    const uint32_t numbers[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
+                                TP_DEF_BINDING_EMISSIVE};
     std::vector<PassUse> gbuffer, lights;
-    for (ResourceHandle h : t.gbuffer) gbuffer.push_back({h, Use::Sampled});
-    gbuffer.push_back({t.gbufferDepth, Use::Sampled});
-    for (size_t i = 0; i < 3; ++i) lights.push_back({t.gbuffer[i], Use::Sampled}); // no emissive
+    for (size_t i = 0; i < t.gbuffer.size(); ++i) gbuffer.push_back({t.gbuffer[i], Use::Sampled, numbers[i]});
+    gbuffer.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+    for (size_t i = 0; i < 3; ++i) lights.push_back({t.gbuffer[i], Use::Sampled, numbers[i]}); // no emissive
     std::vector<PassUse> base = gbuffer, sampleBase = gbuffer;
     base.push_back({t.hdr, Use::ColorAttachment});
     if (perSampleHdr()) {
         // Lit per sample into hdr_msaa, with no depth test (volume_light.frag says why).
         sampleBase.push_back({t.hdrMsaa, Use::ColorAttachment});
-        sampleBase.push_back({t.edgeMask, Use::Sampled});
+        sampleBase.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
         lights.push_back({t.hdrMsaa, Use::ColorAttachment});
-        lights.push_back({t.gbufferDepth, Use::Sampled});
-        lights.push_back({t.edgeMask, Use::Sampled});
+        lights.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+        lights.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
     } else {
         lights.push_back({t.hdr, Use::ColorAttachment});
         if (msaa) {
-            lights.push_back({t.gbufferDepth, Use::Sampled});
+            lights.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
             lights.push_back({t.volumeDepth, Use::DepthTest});
-            lights.push_back({t.edgeMask, Use::Sampled});
+            lights.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
         } else {
-            lights.push_back({t.gbufferDepth, Use::DepthTest}); // tested and sampled
+            lights.push_back({t.gbufferDepth, Use::DepthTest, TP_DEF_BINDING_DEPTH}); // tested and sampled
         }
     }
     if (msaa) {
@@ -78,31 +81,6 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
         graph.addPass("volume_sample_base", sampleBase, [this](PassContext& pc) { recordSampleBase(pc); });
     graph.addPass("volume_lights", lights, [this](PassContext& pc) { recordLights(pc); });
 }
-
-void VolumeLighting::writeGBuffer(FrameGraph& graph, VkDescriptorSet set, bool emissive) {
-    const uint32_t bindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
-                                 TP_DEF_BINDING_EMISSIVE};
-    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    const VkImageLayout ro = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
-    size_t count = emissive ? t_->gbuffer.size() : 3;
-    for (size_t i = 0; i < count; ++i)
-        writeImageDescriptor(ctx_, set, bindings[i], sampled, graph.image(t_->gbuffer[i]).view, ro, sampler_);
-    writeImageDescriptor(ctx_, set, TP_DEF_BINDING_DEPTH, sampled, graph.image(t_->gbufferDepth).view, ro,
-                         sampler_);
-}
-
-namespace {
-
-std::vector<SetBinding> gbufferBindings(size_t colors) {
-    const uint32_t numbers[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
-                                TP_DEF_BINDING_EMISSIVE};
-    std::vector<SetBinding> b;
-    for (size_t i = 0; i < colors; ++i) b.push_back({numbers[i], VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    b.push_back({TP_DEF_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    return b;
-}
-
-} // namespace
 
 void VolumeLighting::prepare(FrameGraph& graph) {
     // texelFetch only: the sampler's filtering is never used.
@@ -116,8 +94,7 @@ void VolumeLighting::prepare(FrameGraph& graph) {
 }
 
 void VolumeLighting::prepareBase(FrameGraph& graph) {
-    base_.set = createPassSet(ctx_, gbufferBindings(t_->gbuffer.size()));
-    writeGBuffer(graph, base_.set.set, true);
+    base_.set = graph.createPassSet("volume_base", sampler_);
     base_.layout = scene_.createPipelineLayout(base_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_fullscreen_vert";
@@ -137,18 +114,12 @@ void VolumeLighting::prepareBase(FrameGraph& graph) {
         d.depthCompare = VK_COMPARE_OP_ALWAYS;
     }
     d.layout = base_.layout;
+    d.passSet = &base_.set;
     base_.pipeline = createGraphicsPipeline(ctx_, d);
 }
 
 void VolumeLighting::prepareLights(FrameGraph& graph) {
-    std::vector<SetBinding> bindings = gbufferBindings(3);
-    if (t_->msaa()) bindings.push_back({TP_DEF_BINDING_EDGE_MASK, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    lights_.set = createPassSet(ctx_, bindings);
-    writeGBuffer(graph, lights_.set.set, false);
-    if (t_->msaa())
-        writeImageDescriptor(ctx_, lights_.set.set, TP_DEF_BINDING_EDGE_MASK,
-                             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graph.image(t_->edgeMask).view,
-                             VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
+    lights_.set = graph.createPassSet("volume_lights", sampler_);
     lights_.layout = scene_.createPipelineLayout(lights_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_volume_vert";
@@ -162,6 +133,7 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     d.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL; // reverse-Z: back face at or behind the surface
     d.blend = BlendMode::Additive;
     d.layout = lights_.layout;
+    d.passSet = &lights_.set;
     if (perSampleHdr()) {
         d.samples = VkSampleCountFlagBits(t_->layout.samples);
         d.sampleShading = true;
@@ -172,12 +144,7 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
 }
 
 void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
-    std::vector<SetBinding> bindings = gbufferBindings(t_->gbuffer.size());
-    bindings.push_back({TP_DEF_BINDING_EDGE_MASK, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    sampleBase_.set = createPassSet(ctx_, bindings);
-    writeGBuffer(graph, sampleBase_.set.set, true);
-    writeImageDescriptor(ctx_, sampleBase_.set.set, TP_DEF_BINDING_EDGE_MASK, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                         graph.image(t_->edgeMask).view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
+    sampleBase_.set = graph.createPassSet("volume_sample_base", sampler_);
     sampleBase_.layout = scene_.createPipelineLayout(sampleBase_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_fullscreen_vert";
@@ -191,6 +158,7 @@ void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
     d.depthFormat = VK_FORMAT_UNDEFINED;
     d.depthTest = d.depthWrite = false;
     d.layout = sampleBase_.layout;
+    d.passSet = &sampleBase_.set;
     sampleBase_.pipeline = createGraphicsPipeline(ctx_, d);
 }
 

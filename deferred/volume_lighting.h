@@ -41,7 +41,6 @@ class VolumeLighting {
     void prepareBase(FrameGraph& graph);
     void prepareLights(FrameGraph& graph);
     void prepareSampleBase(FrameGraph& graph);
-    void writeGBuffer(FrameGraph& graph, VkDescriptorSet set, bool emissive);
     void bind(VkCommandBuffer cmd, const Stage& stage);
     void recordBase(PassContext& pc);
     void recordLights(PassContext& pc);

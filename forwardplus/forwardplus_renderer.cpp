@@ -88,24 +88,26 @@ class ForwardPlusRenderer final : public Renderer {
                 vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
             });
 
-        std::vector<PassUse> cullUses = {{depthSrc, Use::Sampled},
-                                         {tiles_, Use::StorageWrite},
-                                         {indices_, Use::StorageWrite}};
-        if (layout_ == TP_FP_LAYOUT_LINKED) cullUses.push_back({counter_, Use::StorageWrite});
+        // Uses with a binding are also the pass's descriptor set (createDescriptors).
+        std::vector<PassUse> cullUses = {{depthSrc, Use::Sampled, TP_FP_BINDING_DEPTH},
+                                         {tiles_, Use::StorageWrite, TP_FP_BINDING_TILES},
+                                         {indices_, Use::StorageWrite, TP_FP_BINDING_INDICES}};
+        if (layout_ == TP_FP_LAYOUT_LINKED)
+            cullUses.push_back({counter_, Use::StorageWrite, TP_FP_BINDING_COUNTER});
         graph.addPass("light_culling", cullUses, [this](PassContext& pc) { recordCulling(pc); });
 
         std::vector<PassUse> opaqueUses = {{color, Use::ColorAttachment},
                                            {depthSrc, Use::DepthTest},
-                                           {tiles_, Use::StorageRead},
-                                           {indices_, Use::StorageRead}};
+                                           {tiles_, Use::StorageRead, TP_FP_BINDING_TILES},
+                                           {indices_, Use::StorageRead, TP_FP_BINDING_INDICES}};
         if (msaa && !twoLists_) opaqueUses.push_back({hdr_, Use::ColorResolve});
         graph.addPass("forward_opaque", opaqueUses, [this](PassContext& pc) { recordShading(pc, false); });
 
         if (twoLists_) {
             std::vector<PassUse> uses = {{color, Use::ColorAttachment},
                                          {depthSrc, Use::DepthTest},
-                                         {tiles_, Use::StorageRead},
-                                         {indices_, Use::StorageRead}};
+                                         {tiles_, Use::StorageRead, TP_FP_BINDING_TILES},
+                                         {indices_, Use::StorageRead, TP_FP_BINDING_INDICES}};
             if (msaa) uses.push_back({hdr_, Use::ColorResolve});
             graph.addPass("forward_transparent", uses, [this](PassContext& pc) { recordShading(pc, true); });
         }
@@ -255,30 +257,16 @@ class ForwardPlusRenderer final : public Renderer {
     }
 
     void createDescriptors(FrameGraph& graph) {
-        const bool msaa = settings_.msaa > 1;
         VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
         si.magFilter = si.minFilter = VK_FILTER_NEAREST;
         si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
         VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
 
-        const VkDescriptorType SB = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        std::vector<SetBinding> shade = {{TP_FP_BINDING_TILES, SB}, {TP_FP_BINDING_INDICES, SB},
-                                         {TP_FP_BINDING_PARAMS, SB}};
-        std::vector<SetBinding> cull = shade;
-        cull.push_back({TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-        if (layout_ == TP_FP_LAYOUT_LINKED) cull.push_back({TP_FP_BINDING_COUNTER, SB});
-        cullSet_ = createPassSet(ctx_, cull);
-        shadeSet_ = createPassSet(ctx_, shade);
-        for (VkDescriptorSet set : {cullSet_.set, shadeSet_.set}) {
-            writeBufferDescriptor(ctx_, set, TP_FP_BINDING_TILES, graph.buffer(tiles_).buffer);
-            writeBufferDescriptor(ctx_, set, TP_FP_BINDING_INDICES, graph.buffer(indices_).buffer);
-            writeBufferDescriptor(ctx_, set, TP_FP_BINDING_PARAMS, params_.buffer);
-        }
-        writeImageDescriptor(ctx_, cullSet_.set, TP_FP_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                             graph.image(msaa ? depthMsaa_ : depth_).view, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                             sampler_);
-        if (layout_ == TP_FP_LAYOUT_LINKED)
-            writeBufferDescriptor(ctx_, cullSet_.set, TP_FP_BINDING_COUNTER, graph.buffer(counter_).buffer);
+        // fp_params is uploaded once in prepare(), outside the graph.
+        const std::vector<ExternalBuffer> params = {{TP_FP_BINDING_PARAMS, params_.buffer}};
+        cullSet_ = graph.createPassSet("light_culling", sampler_, params);
+        // forward_transparent declares the same bound uses and shares this set.
+        shadeSet_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, params);
     }
 
     void createPipelines() {
@@ -305,7 +293,7 @@ class ForwardPlusRenderer final : public Renderer {
         cullSpec.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
         cullSpec.push_back({TP_FP_SPEC_SAMPLES, settings_.msaa});
         cullSpec.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
-        cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_);
+        cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_, &cullSet_);
 
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
             if (!scene_.hasDraws(DrawFilter(mode))) continue;
@@ -315,6 +303,7 @@ class ForwardPlusRenderer final : public Renderer {
             d.samples = samples;
             d.sampleShading = msaa; // per-sample shading, as the reference
             d.layout = shadeLayout_;
+            d.passSet = &shadeSet_;
             d.depthWrite = false;
             d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
             d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;

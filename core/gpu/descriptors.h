@@ -1,6 +1,9 @@
 #pragma once
 // A pass's own descriptor set (set 1): layout, pool and one set, made from a list of
-// bindings whose numbers come from the pipeline's shaders/include/<pipeline>_shared.h.
+// bindings whose numbers come from the pipeline's shaders/<pipeline>/<pipeline>_shared.h.
+// Passes make theirs with FrameGraph::createPassSet from their declared uses; these are the
+// Vulkan calls under it.
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -15,6 +18,8 @@ struct SetBinding {
 };
 
 struct PassSet {
+    std::string pass;               // the pass whose uses it was made from (FrameGraph::createPassSet)
+    std::vector<SetBinding> bindings; // what the pipelines' shaders are checked against
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;

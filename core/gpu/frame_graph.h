@@ -7,6 +7,8 @@
 //     owner and the pass that first writes them), with usage flags from the declarations,
 //   - records the barriers (synchronization2) between uses, and
 //   - wraps every pass in GPU timestamps.
+// The planning (culling, checks, barriers as data) is GraphDecl::plan() in graph_plan.h,
+// which needs no device; this class allocates and records from its plan.
 // The graph is built once per configuration and recorded once; the command buffer can be
 // submitted repeatedly (every frame starts by discarding the previous frame's contents).
 #include <functional>
@@ -15,30 +17,14 @@
 
 #include <vulkan/vulkan.h>
 
+#include "core/gpu/descriptors.h"
+#include "core/gpu/graph_plan.h"
 #include "core/gpu/resources.h"
 
 namespace tp {
 
 class GpuContext;
 class GpuProfiler;
-
-enum class Use {
-    ColorAttachment, // written (and read by blending)
-    ColorResolve,    // MSAA colour resolve target
-    DepthAttachment, // depth test and write
-    DepthResolve,    // MSAA depth resolve target
-    DepthTest,       // depth test without writes; may be sampled in the same pass
-    Sampled,         // sampled or texelFetch'd in fragment/compute shaders
-    StorageRead,
-    StorageWrite,    // write-only or read-write storage access
-    TransferSrc,
-    TransferDst,
-};
-
-struct ResourceHandle {
-    uint32_t index = ~0u;
-    bool valid() const { return index != ~0u; }
-};
 
 struct GraphImageInfo {
     VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -54,11 +40,16 @@ struct PassContext {
     FrameGraph& graph;
     const Image& image(ResourceHandle h) const;
     const Buffer& buffer(ResourceHandle h) const;
+    uint32_t pass = ~0u; // the pass being recorded (~0u: none, nothing is checked)
+    // Throws GraphError unless the pass declared this use (beginRendering's attachments).
+    void expectUse(ResourceHandle h, Use use) const;
 };
 
-struct PassUse {
-    ResourceHandle resource;
-    Use use;
+// A buffer bound in a pass's set that the graph does not track: static data uploaded once,
+// before any frame, so no barrier is needed between frames.
+struct ExternalBuffer {
+    uint32_t binding;
+    VkBuffer buffer;
 };
 
 class FrameGraph {
@@ -73,7 +64,13 @@ class FrameGraph {
     // An output read after the frame (readback, report): left in TRANSFER_SRC layout/access.
     void exportResource(const std::string& publicName, ResourceHandle h);
 
-    void compile();                                   // cull, allocate
+    // The pass's descriptor set (set TP_SET_PASS) from its uses that carry a binding: layout,
+    // descriptor types and writes (images in the layout of their use, sampled ones with
+    // `sampler`). After compile; the pass must be live.
+    PassSet createPassSet(const std::string& pass, VkSampler sampler = VK_NULL_HANDLE,
+                          const std::vector<ExternalBuffer>& externals = {}) const;
+
+    void compile();                                   // plan (cull, check, barriers), allocate
     void record(VkCommandBuffer cmd, GpuProfiler* profiler); // barriers, timestamps, passes
 
     const Image& image(ResourceHandle h) const;
@@ -86,18 +83,28 @@ class FrameGraph {
     uint32_t height() const { return height_; }
     const std::string& owner() const { return owner_; }
 
+    const GraphPlan& plan() const { return plan_; }
+    const GraphDecl& declarations() const { return decl_; }
+
   private:
-    struct ResourceNode;
-    struct PassNode;
-    struct State;
-    void barrier(VkCommandBuffer cmd, uint32_t resource, Use use, std::vector<State>& states);
+    struct ResourceNode {
+        GraphImageInfo imageInfo;
+        VkDeviceSize bufferSize = 0;
+        std::string purpose;
+        Image image;
+        Buffer buffer;
+    };
+    void checkOpen(const std::string& what) const;
+    void allocate();
+    void recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const;
 
     GpuContext& ctx_;
     std::string owner_;
     uint32_t width_, height_;
+    GraphDecl decl_;
+    GraphPlan plan_;
     std::vector<ResourceNode> resources_;
-    std::vector<PassNode> passes_;
-    std::vector<std::pair<std::string, ResourceHandle>> exports_;
+    std::vector<std::function<void(PassContext&)>> executes_;
     bool compiled_ = false;
 };
 

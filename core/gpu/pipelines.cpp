@@ -4,6 +4,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/embedded_shaders.h"
+#include "core/gpu/shader_reflection.h"
 #include "core/gpu/vk_check.h"
 
 namespace tp {
@@ -65,6 +66,9 @@ VkShaderModule createShaderModule(GpuContext& ctx, const std::string& name) {
 }
 
 VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d) {
+    std::vector<std::string> shaders = {d.vertexShader};
+    if (!d.fragmentShader.empty()) shaders.push_back(d.fragmentShader);
+    checkPassBindings(d.passSet, shaders);
     SpecData spec;
     fillSpec(spec, d.specConstants);
     std::vector<VkShaderModule> modules;
@@ -135,7 +139,9 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
 }
 
 VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
-                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout) {
+                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout,
+                                 const PassSet* passSet) {
+    checkPassBindings(passSet, {shader});
     SpecData spec;
     fillSpec(spec, specConstants);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};

@@ -2,7 +2,8 @@
 // Shader modules from the embedded SPIR-V, and graphics/compute pipeline creation from a
 // small description. All scene draws use dynamic rendering, a negative-height viewport
 // (so glTF's counter-clockwise front faces and +Y up hold as in OpenGL), reverse-Z depth
-// and dynamic cull mode (double-sided materials are a per-draw switch).
+// and dynamic cull mode (double-sided materials are a per-draw switch). Creation throws
+// BindingMismatch when a shader and the pass set in the layout disagree.
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 namespace tp {
 
 class GpuContext;
+struct PassSet;
 
 VkShaderModule createShaderModule(GpuContext& ctx, const std::string& name);
 
@@ -37,11 +39,15 @@ struct GraphicsPipelineDesc {
     // factors and write masks the named modes do not have).
     VkPipelineColorBlendAttachmentState customBlend{};
     VkPipelineLayout layout = VK_NULL_HANDLE;
+    // The pass set in `layout` (null: none). The shaders' set-TP_SET_PASS bindings are
+    // checked against it by reflection (core/gpu/shader_reflection.h).
+    const PassSet* passSet = nullptr;
 };
 
 VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& desc);
 VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
-                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout);
+                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout,
+                                 const PassSet* passSet = nullptr);
 
 // Viewport (negative height, depth 0..1) and scissor covering width x height.
 void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height);

@@ -6,6 +6,16 @@ namespace tp {
 
 void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
                     std::optional<DepthTarget> depth) {
+    // The attachments are named twice, in the pass's uses and here: a target the pass did
+    // not declare would get no barrier and a wrong layout, so it is an error.
+    for (const ColorTarget& c : colors) {
+        pc.expectUse(c.image, Use::ColorAttachment);
+        if (c.resolve.valid()) pc.expectUse(c.resolve, Use::ColorResolve);
+    }
+    if (depth) {
+        pc.expectUse(depth->image, depth->readOnly ? Use::DepthTest : Use::DepthAttachment);
+        if (depth->resolve.valid()) pc.expectUse(depth->resolve, Use::DepthResolve);
+    }
     std::vector<VkRenderingAttachmentInfo> colorInfos;
     for (const ColorTarget& c : colors) {
         VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};

@@ -43,11 +43,20 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
         renderer->prepare(graph);
     } catch (const RendererError& e) {
         return Error{"pipeline " + entry.name + ": " + e.what()};
+    } catch (const GraphError& e) {
+        // A pass's declarations disagree with each other or with its shaders: a bug in
+        // that pipeline, reported as one line so the other pipelines still run.
+        return Error{"pipeline " + entry.name + ": " + e.what()};
     }
 
     GpuProfiler profiler(ctx, 64);
     VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    recordFrame(cmd, graph, profiler);
+    try {
+        recordFrame(cmd, graph, profiler);
+    } catch (const GraphError& e) { // a pass records an attachment it did not declare
+        ctx.freeCommandBuffer(cmd);
+        return Error{"pipeline " + entry.name + ": " + e.what()};
+    }
     const uint32_t total = options.warmupFrames + options.timedFrames;
     for (uint32_t f = 0; f < total; ++f) {
         auto start = std::chrono::steady_clock::now();

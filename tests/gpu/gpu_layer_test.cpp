@@ -3,11 +3,15 @@
 #include <cstring>
 
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/shader_reflection.h"
 #include "core/gpu/profiler.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/image_io.h"
 #include "gpu_test_util.h"
+#include "deferred/deferred_shared.h"
+#include "include/shared.h"
 
 namespace tp::test {
 namespace {
@@ -81,6 +85,38 @@ TEST(GpuLayer, FrameGraphCullsUnusedPassesAndLedgersTransients) {
         EXPECT_EQ(img.at(3, 4)[0], 0.25f);
     }
     EXPECT_TRUE(ctx->ledger.entriesOf("graph_test").empty()); // freed with the graph
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(GpuLayer, FrameGraphMakesPassSetsFromUsesAndPipelinesCheckThemAgainstShaders) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    {
+        FrameGraph g(*ctx, "set_test", 16, 8);
+        ResourceHandle lists = g.createBuffer("lists", 256, "read through set 1");
+        ResourceHandle hdr = g.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT, "out"});
+        g.addPass("fill", {{lists, Use::TransferDst}}, [](PassContext&) {});
+        g.addPass("transparent_forward",
+                  {{lists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS}, {hdr, Use::ColorAttachment}},
+                  [](PassContext&) {});
+        g.exportResource("hdr", hdr);
+        g.compile();
+        EXPECT_THROW(g.addPass("late", {{hdr, Use::Sampled}}, [](PassContext&) {}), GraphError);
+
+        PassSet set = g.createPassSet("transparent_forward");
+        ASSERT_EQ(set.bindings.size(), 1u);
+        EXPECT_EQ(set.bindings[0].binding, uint32_t(TP_DEF_FWD_BINDING_LISTS));
+        EXPECT_EQ(set.bindings[0].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+        // The wrong shader for this set: refused before Vulkan sees it, naming pass and shader.
+        try {
+            createComputePipeline(*ctx, "deferred_tiled_lists_m0_comp", {}, VK_NULL_HANDLE, &set);
+            ADD_FAILURE() << "no BindingMismatch";
+        } catch (const BindingMismatch& e) {
+            EXPECT_NE(std::string(e.what()).find("pass 'transparent_forward'"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("deferred_tiled_lists_m0_comp"), std::string::npos) << e.what();
+        }
+        destroyPassSet(*ctx, set);
+    }
     expectNoValidationMessages(*ctx);
 }
 
