@@ -59,6 +59,9 @@ void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, con
     } catch (const RendererError& e) {
         std::printf("  cannot be built here: %s\n", e.what());
         return;
+    } catch (const GraphError& e) { // a declaration mistake: that pipeline only, as in the frame runner
+        std::printf("  cannot be built here: %s\n", e.what());
+        return;
     }
     std::printf("  passes:");
     for (const std::string& p : graph.livePasses()) std::printf(" %s", p.c_str());

@@ -43,7 +43,7 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
         s = d.display ? writePng(path + ".png", d.image) : writeExr(path + ".exr", d.image, ExrPixelType::Float);
     }
     nlohmann::json j;
-    j["schema"] = "triptych.render/1";
+    j["schema"] = "triptych.render/2";
     j["device"] = deviceJson(ctx);
     j["settings"] = settingsJson(settings);
     j["settings"]["exposure_ev"] = ev;

@@ -159,7 +159,7 @@ struct View {
 // Everything but the runs: enough to repeat the sweep and to know what it swept.
 nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuContext& ctx) {
     nlohmann::json j;
-    j["schema"] = "triptych.sweep/1";
+    j["schema"] = "triptych.sweep/2";
     j["command_line"] = o.commandLine;
     j["command"] = shellJoin(o.commandLine);
     j["seed"] = o.scene.seed;
@@ -230,7 +230,7 @@ int runSweep(const SweepOptions& o) {
             for (const std::string& name : names)
                 for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
                     const bool isRef = name == kReferenceRenderer;
-                    RunOptions ro = isRef ? progressRunOptions("reference", 0, o.referenceFrames) : RunOptions{};
+                    RunOptions ro = isRef ? progressRunOptions(kReferenceRenderer, 0, o.referenceFrames) : RunOptions{};
                     if (!isRef) {
                         ro.warmupFrames = uint32_t(o.warmup);
                         ro.timedFrames = uint32_t(o.frames);

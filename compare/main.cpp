@@ -16,12 +16,14 @@ int main(int argc, char** argv) {
                  "brute-force reference (Vulkan)"};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Help for every command");
-    std::vector<tp::cli::CommandRunner> commands = {
-        tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
-        tp::cli::addSweepCommand(app, std::vector<std::string>(argv, argv + argc)),
-        tp::cli::addStressCommand(app, std::vector<std::string>(argv, argv + argc)),
-        tp::cli::addRenderCommand(app), tp::cli::addInfoCommand(app)};
     try {
+        // Inside the try: the commands' options come from the registered pipelines' knobs, and
+        // a knob named like a command's own option is a one-line error, not a crash.
+        std::vector<tp::cli::CommandRunner> commands = {
+            tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
+            tp::cli::addSweepCommand(app, std::vector<std::string>(argv, argv + argc)),
+            tp::cli::addStressCommand(app, std::vector<std::string>(argv, argv + argc)),
+            tp::cli::addRenderCommand(app), tp::cli::addInfoCommand(app)};
         app.parse(argc, argv);
         for (auto& command : commands) {
             int code = command();

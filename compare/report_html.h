@@ -9,7 +9,7 @@
 
 namespace tp::cli {
 
-// `report` follows schema triptych.report/1; PNGs named in its "files" lists are read from
+// `report` follows schema triptych.report/2; PNGs named in its "files" lists are read from
 // outDir. Fails (naming the file) when a PNG cannot be read.
 Result<std::string> reportHtml(const nlohmann::json& report, const std::string& outDir);
 

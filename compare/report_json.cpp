@@ -54,7 +54,7 @@ nlohmann::json metricTableJson(const CompareRecord& r) {
 nlohmann::json reportJson(const CompareRecord& r) {
     const CompareOptions& o = *r.options;
     nlohmann::json j;
-    j["schema"] = "triptych.report/1";
+    j["schema"] = "triptych.report/2";
     j["command_line"] = o.commandLine;
     j["command"] = shellJoin(o.commandLine);
     bool allOk = std::all_of(r.pipelines.begin(), r.pipelines.end(), [](const PipelineOutcome& p) { return bool(p.run); });

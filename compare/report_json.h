@@ -1,6 +1,6 @@
 #pragma once
 // The compare run as data (what was rendered, how it went, how it measures up) and its
-// report.json (schema "triptych.report/1", documented in docs/report.md).
+// report.json (schema "triptych.report/2", documented in docs/report.md).
 #include <optional>
 #include <string>
 #include <vector>

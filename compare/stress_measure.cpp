@@ -63,7 +63,8 @@ uint64_t depthMismatch(const ImageR32& a, const ImageR32& b) {
     return n;
 }
 
-void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref) {
+void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref, const Scene& scene,
+               const RenderSettings& settings) {
     auto check = [&](std::string name, double measured, double limit, std::string why) {
         p.checks.push_back({std::move(name), measured <= limit, measured, limit, std::move(why)});
     };
@@ -80,7 +81,7 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
               "same triangles, same vertex shader (precise gl_Position), D32 reverse-Z");
     const RendererEntry& entry = **findRenderer(p.name);
     const std::vector<stress::CounterAtLeast> stressed =
-        entry.stressedCounters ? entry.stressedCounters(*r.c) : std::vector<stress::CounterAtLeast>{};
+        entry.stressedCounters ? entry.stressedCounters({*r.c, scene, settings}) : std::vector<stress::CounterAtLeast>{};
     for (const stress::CounterAtLeast& s : stressed) {
         if (!hasCounter(*p.run, s.counter)) continue;
         const double v = counter(*p.run, s.counter, 0);
@@ -120,10 +121,10 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     p.depthMismatch = depthMismatch(p.run->depth, reference.run->depth);
     p.checkedMaxTonemapped = computeError(tonemapToDisplay(maskOverflow(p, ref), r.exposureEv), refDisplay).maxAbs;
     const RendererEntry& entry = **findRenderer(p.name);
-    RenderSettings settings = r.settings; // as the run saw it: its knobs' defaults filled in
+    RenderSettings settings = r.settings; // as the run saw it: its knobs' defaults filled in (it ran, so they are valid)
     resolveKnobs(entry.knobs, settings);
     p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings});
-    addChecks(p, r, ref);
+    addChecks(p, r, ref, scene, settings);
     p.pass = true;
     for (const StressCheck& c : p.checks) p.pass &= c.pass;
 }

@@ -92,7 +92,7 @@ json stressJson(const StressOptions& o, const GpuContext& ctx, const std::vector
         if (!r.reference.run) failures.push_back(r.c->name + "/reference: " + r.reference.error);
     }
     json j;
-    j["schema"] = "triptych.stress/1";
+    j["schema"] = "triptych.stress/2";
     j["command_line"] = o.commandLine;
     j["command"] = quoted(o.commandLine);
     j["status"] = passed == results.size() ? "pass" : "fail";

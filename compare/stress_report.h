@@ -1,5 +1,5 @@
 #pragma once
-// stress.json (schema "triptych.stress/1", docs/stress.md) and stress.html (one offline
+// stress.json (schema "triptych.stress/2", docs/stress.md) and stress.html (one offline
 // page built from stress.json and the PNGs beside it, like compare's report.html).
 #include <string>
 #include <vector>

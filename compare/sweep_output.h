@@ -1,6 +1,6 @@
 #pragma once
 // What a sweep measured, run by run, and its three files: sweep.csv (one row per run, the
-// headline figures), sweep.json (schema triptych.sweep/1: per run every pass's timings, the
+// headline figures), sweep.json (schema triptych.sweep/2: per run every pass's timings, the
 // memory ledger, counters and every metric) and sweep.html (plots).
 #include <string>
 #include <vector>

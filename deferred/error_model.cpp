@@ -90,7 +90,9 @@ void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
                        "positions reconstructed from D32 depth with the inverse view-projection, fp32 sums in "
                        "tile order: docs/deferred.md's per-pixel bound (2.5e-4 of |r| + 1e-4)"});
     if (in.settings.text("gbuffer") == "compact") addCompactGBuffer(b, in);
-    if (in.settings.msaa == 1) return;
+    // At 1x, and with the sample-rate G-buffer (every sample's material evaluated and lit at
+    // that sample, as the supersampled reference does), nothing is shaded at the centre.
+    if (in.settings.msaa == 1 || in.settings.text("gbuffer-msaa") == "sample") return;
     if (!in.stressCase.directionalRoughOnly) {
         b.bounded = false;
         b.why = "non-edge pixels are shaded once at the centre while the reference averages per-sample "

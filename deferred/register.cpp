@@ -21,8 +21,9 @@ KnobSchema deferredKnobs() {
                          "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")};
 }
 
-std::vector<stress::CounterAtLeast> deferredStressed(const stress::StressCase& c) {
-    if (c.lightsInOneTile <= TP_DEF_TILE_LIGHT_CAPACITY) return {};
+std::vector<stress::CounterAtLeast> deferredStressed(const ErrorModelInput& in) {
+    const stress::StressCase& c = in.stressCase;
+    if (in.settings.text("deferred-lighting") != "tiled" || c.lightsInOneTile <= TP_DEF_TILE_LIGHT_CAPACITY) return {};
     return {{"tiles_over_shared_capacity", 1, "the 4,096-light shared list must overflow (the case puts " +
                                                   std::to_string(c.lightsInOneTile) + " in one tile)"}};
 }

@@ -59,7 +59,7 @@ void TiledLighting::prepare(FrameGraph& graph) {
         // Uploaded once per configuration: the compact layout's runs (deferred_renderer plans them).
         listOffsets_ = createBufferWithData(ctx_, t_->listOffsets.data(), t_->listOffsets.size() * 4,
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                            {"deferred", "", "transparent_list_offsets",
+                                            {graph.owner(), "", "transparent_list_offsets",
                                              "per tile: first slot of its transparent list (prefix sum)"});
         externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
     }

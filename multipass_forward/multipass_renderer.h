@@ -6,7 +6,7 @@
 //                  touches, scissored to its screen rectangle, depth EQUAL
 //   blended        blended draws back to front: composite, then each light composited
 //                  under the draw's own layers (exact for self-overlapping meshes)
-// The accumulation target is RGBA16F or RGBA32F (settings.accum); MSAA shades per sample
+// The accumulation target is RGBA16F or RGBA32F (the accum knob); MSAA shades per sample
 // and resolves into hdr. See docs/multipass_forward.md.
 #include <memory>
 

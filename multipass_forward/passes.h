@@ -35,7 +35,7 @@ struct PassEnv {
     const RenderSettings& settings;
     const LightPlan& plan;
     VkPipelineLayout layout;
-    VkFormat accumFormat; // RGBA16F or RGBA32F (settings.accum)
+    VkFormat accumFormat; // RGBA16F or RGBA32F (the accum knob)
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass

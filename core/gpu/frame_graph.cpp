@@ -89,6 +89,16 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
         bindings.push_back({u.binding, descriptorType(u.use, decl_.resources()[u.resource.index].isImage)});
     }
     for (const ExternalBuffer& e : externals) bindings.push_back({e.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    // Every check before anything is created (a PassSet owns nothing until it is destroyed).
+    for (size_t i = 0; i < bindings.size(); ++i) {
+        for (size_t j = 0; j < i; ++j)
+            if (bindings[j].binding == bindings[i].binding)
+                throw GraphError("pass '" + pass + "': binding " + std::to_string(bindings[i].binding) +
+                                 " is given twice (a use and an external buffer)");
+        if (bindings[i].type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER && !sampler)
+            throw GraphError("pass '" + pass + "' samples binding " + std::to_string(bindings[i].binding) +
+                             " but was given no sampler");
+    }
     PassSet set = tp::createPassSet(ctx_, bindings);
     set.pass = pass;
     set.bindings = bindings;
@@ -99,9 +109,6 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
             writeBufferDescriptor(ctx_, set.set, u.binding, buffer(u.resource).buffer);
         } else {
             VkSampler s = type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER ? sampler : VK_NULL_HANDLE;
-            if (type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER && !s)
-                throw GraphError("pass '" + pass + "' samples binding " + std::to_string(u.binding) +
-                                 " but was given no sampler");
             writeImageDescriptor(ctx_, set.set, u.binding, type, image(u.resource).view, useInfo(u.use).layout, s);
         }
     }

@@ -43,9 +43,14 @@ bool bindable(Use use) {
 // first use waits on all commands.
 struct State {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT; // what a later write waits for
     VkAccessFlags2 access = VK_ACCESS_2_MEMORY_WRITE_BIT;
     bool lastWasWrite = true;
+    // Since the last write (or layout change): the stages and accesses its barrier made the
+    // contents visible to. A later reader outside them needs a barrier of its own, chained
+    // after that one (its source stages), even though it reads in the same layout.
+    VkPipelineStageFlags2 visibleStages = 0;
+    VkAccessFlags2 visibleAccess = 0;
 };
 
 // Appends the barrier a use needs after the state `s`, if any, and moves `s` on.
@@ -53,7 +58,18 @@ void transition(uint32_t resource, bool isImage, Use use, State& s, std::vector<
     const UseInfo u = useInfo(use);
     const bool layoutChange = isImage && s.layout != u.layout;
     if (!layoutChange && !u.writes && !s.lastWasWrite) {
-        // Read after read: no barrier, but a later write must wait for this reader too.
+        // Read after read. Covered by the barrier after the last write: none. Otherwise (a
+        // depth test after a sampled read of the same depth: other stages, other access) a
+        // barrier chained after that one: its execution scope starts where the first ended,
+        // and the writes, already available, become visible to this reader.
+        if ((u.stages & ~s.visibleStages) || (u.access & ~s.visibleAccess)) {
+            out.push_back({resource, isImage, isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED,
+                           isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED, s.visibleStages, u.stages, 0,
+                           u.access});
+            s.visibleStages |= u.stages;
+            s.visibleAccess |= u.access;
+        }
+        // A later write must wait for this reader too.
         s.stages |= u.stages;
         s.access |= u.access;
         return;
@@ -62,7 +78,7 @@ void transition(uint32_t resource, bool isImage, Use use, State& s, std::vector<
                   isImage ? u.layout : VK_IMAGE_LAYOUT_UNDEFINED, s.stages, u.stages,
                   s.lastWasWrite ? s.access : VkAccessFlags2(0), u.access};
     out.push_back(b);
-    s = {u.layout, u.stages, u.access, u.writes};
+    s = {u.layout, u.stages, u.access, u.writes, u.stages, u.access};
 }
 
 } // namespace

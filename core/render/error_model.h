@@ -56,8 +56,9 @@ struct ErrorModelInput {
 
 // Adds the pipeline's own terms to `bound` (or marks it unbounded with the reason).
 using ErrorModel = std::function<void(ErrorBound& bound, const ErrorModelInput& in)>;
-// The counters a case must drive up for this pipeline to have stressed what the case claims.
-using StressedCounters = std::function<std::vector<stress::CounterAtLeast>(const stress::StressCase&)>;
+// The counters a case must drive up for this pipeline, as configured, to have stressed what
+// the case claims.
+using StressedCounters = std::function<std::vector<stress::CounterAtLeast>(const ErrorModelInput& in)>;
 
 // The bound for a pipeline with model `model` (may be empty: a generic two-fp16-roundings
 // model) in a case: the shared terms (summation, same code in another shader) plus its own.

@@ -1,7 +1,7 @@
 #pragma once
 // A renderer's knobs, declared once by the renderer and read by everything else: the CLI
 // builds its options, help and checks from them, sweep its axes and CSV columns, the reports
-// their settings, the viewer its controls. A knob declared by several renderers (the tile
+// their settings (and the coming viewer will build its controls from them). A knob declared by several renderers (the tile
 // size of the tiled pipelines) must be declared identically; the registry checks that.
 #include <cstdint>
 #include <string>
@@ -33,7 +33,6 @@ struct Knob {
                           std::string help);
     Knob& onlyUnderMsaa() { msaaOnly = true; return *this; }
     Knob& fixed() { sweepable = false; return *this; } // one value per sweep
-    Knob& byDefault(std::string value) { defaultValue = std::move(value); return *this; }
 
     std::string key() const;         // report.json / sweep.csv name
     std::string allowedText() const; // "8, 16, 32" or "1 to 65536"

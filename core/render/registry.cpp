@@ -16,7 +16,7 @@ std::vector<RendererEntry>& registry() {
 
 void checkSharedKnobs(const RendererEntry& entry) {
     for (const RendererEntry& other : registry())
-        for (const Knob& a : other.knobs)
+        for (const Knob& a : other.name == entry.name ? KnobSchema{} : other.knobs)
             for (const Knob& b : entry.knobs)
                 if (a.name == b.name && !(a == b))
                     throw std::logic_error("knob '--" + a.name + "' is declared differently by " + other.name +
@@ -27,8 +27,8 @@ void checkSharedKnobs(const RendererEntry& entry) {
 
 void registerRenderer(RendererEntry entry) {
     auto& r = registry();
+    checkSharedKnobs(entry); // before anything changes: a refused entry leaves the registry as it was
     std::erase_if(r, [&](const RendererEntry& e) { return e.name == entry.name; });
-    checkSharedKnobs(entry);
     auto at = std::find_if(r.begin(), r.end(), [&](const RendererEntry& e) {
         return e.order > entry.order || (e.order == entry.order && e.name > entry.name);
     });

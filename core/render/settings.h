@@ -1,7 +1,7 @@
 #pragma once
 // What a run is given: the view (resolution, MSAA, debug outputs) that every renderer reads,
 // and the pipeline knobs, which each renderer declares in its own schema (core/render/knobs.h)
-// and reads by name. The CLI, sweep, reports and viewer are built from those schemas; this
+// and reads by name. The CLI, sweep and reports are built from those schemas; this
 // file knows no pipeline.
 #include <cstdint>
 #include <map>

@@ -126,6 +126,39 @@ TEST(FrameGraphPlan, ReadAfterReadNeedsNoBarrierButTheNextWriteWaitsForBothReade
     EXPECT_EQ(barriersOn(3, lists)[0].dstStages, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
 }
 
+// Forward+'s depth: written by the prepass, sampled by the culling pass, then depth-tested by
+// the shading pass in the same layout. The depth test reads in other stages with other
+// access than the sampling barrier made visible: it needs a barrier of its own, chained.
+TEST(FrameGraphPlan, DepthTestAfterASampledReadGetsAChainedBarrier) {
+    GraphDecl g;
+    ResourceHandle depth = g.addResource("depth", true), lists = g.addResource("lists", false),
+                   hdr = g.addResource("hdr", true);
+    g.addPass("prepass", {{depth, Use::DepthAttachment}});
+    g.addPass("culling", {{depth, Use::Sampled, 0}, {lists, Use::StorageWrite, 1}});
+    g.addPass("shading", {{depth, Use::DepthTest}, {lists, Use::StorageRead, 0}, {hdr, Use::ColorAttachment}});
+    g.addPass("again", {{depth, Use::DepthTest}, {lists, Use::StorageRead, 0}, {hdr, Use::ColorAttachment}});
+    g.exportResource("hdr", hdr);
+    g.exportResource("depth", depth);
+    GraphPlan plan = g.plan();
+    ASSERT_EQ(plan.passes.size(), 4u);
+    auto onDepth = [&](size_t pass) {
+        std::vector<PlanBarrier> out;
+        for (const PlanBarrier& b : plan.passes[pass].barriers)
+            if (b.resource == depth.index) out.push_back(b);
+        return out;
+    };
+    ASSERT_EQ(onDepth(1).size(), 1u); // write -> sampled: layout change, shader stages
+    ASSERT_EQ(onDepth(2).size(), 1u);
+    const PlanBarrier chained = onDepth(2)[0];
+    EXPECT_EQ(chained.oldLayout, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    EXPECT_EQ(chained.newLayout, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    EXPECT_EQ(chained.srcStages, onDepth(1)[0].dstStages); // starts where the sampling barrier ended
+    EXPECT_EQ(chained.srcAccess, VkAccessFlags2(0));       // the writes are already available
+    EXPECT_TRUE(chained.dstStages & VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT);
+    EXPECT_TRUE(chained.dstAccess & VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    EXPECT_TRUE(onDepth(3).empty()); // the same depth test again: covered
+}
+
 TEST(FrameGraphPlan, ReadingWhatNoPassWroteIsAnErrorNamingPassAndResource) {
     GraphDecl g;
     ResourceHandle lists = g.addResource("light_lists", false), hdr = g.addResource("hdr", true);

@@ -94,7 +94,7 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
             EXPECT_TRUE(fs::exists(out + "/" + n + suffix)) << n << suffix;
 
     json r = json::parse(readText(out + "/report.json"));
-    EXPECT_EQ(r["schema"], "triptych.report/1");
+    EXPECT_EQ(r["schema"], "triptych.report/2");
     EXPECT_EQ(r["status"], "ok");
     EXPECT_EQ(r["seed"].get<uint64_t>(), 3u);
     EXPECT_EQ(r["scene"]["path"], "builtin:courtyard-small");
@@ -291,7 +291,7 @@ TEST(Compare, SweepWritesOneRowPerRun) {
 
     // sweep.json: one entry per row, with every pass's timings, the ledger and every metric.
     json j = json::parse(readText(out + "/sweep.json"));
-    EXPECT_EQ(j["schema"], "triptych.sweep/1");
+    EXPECT_EQ(j["schema"], "triptych.sweep/2");
     EXPECT_EQ(j["command_line"][1], "sweep");
     EXPECT_EQ(j["scene"]["content_hash_fnv1a64"].get<std::string>().size(), 16u);
     ASSERT_EQ(j["runs"].size(), rows.size());

@@ -66,7 +66,7 @@ TEST(Stress, EveryCaseGivesTodaysVerdicts) {
     ASSERT_TRUE(fs::exists(o.out + "/stress.json"));
     ASSERT_TRUE(fs::exists(o.out + "/stress.html"));
     const json r = readJson(o.out + "/stress.json");
-    EXPECT_EQ(r["schema"], "triptych.stress/1");
+    EXPECT_EQ(r["schema"], "triptych.stress/2");
     EXPECT_TRUE(r["validation_messages"].empty());
     ASSERT_EQ(r["cases"].size(), stress::stressCases().size());
 
