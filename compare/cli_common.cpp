@@ -183,11 +183,11 @@ std::unique_ptr<GpuContext> createContext(const DeviceOptions& o) {
     return std::move(*ctx);
 }
 
-void addKnobOptions(CLI::App& app, RenderSettings& s) {
+void addKnobOptions(CLI::App& app, std::map<std::string, std::string>& values, bool sweep) {
     for (const KnobReaders& k : allKnobs()) {
-        std::string& value = s.knobs[k.knob.name]; // a map node: the reference stays valid
+        std::string& value = values[k.knob.name]; // a map node: the reference stays valid
         value = k.knob.defaultValue;
-        app.add_option("--" + k.knob.name, value, knobHelp(k, false))->capture_default_str();
+        app.add_option("--" + k.knob.name, value, knobHelp(k, sweep && k.knob.sweepable))->capture_default_str();
     }
 }
 
@@ -198,11 +198,10 @@ std::string knobHelp(const KnobReaders& k, bool list) {
            readers + (k.knob.msaaOnly ? "; matters only under MSAA" : "") + "]";
 }
 
-void checkKnobs(const RenderSettings& s) {
+void checkKnobs(const std::map<std::string, std::string>& values, bool sweep) {
     for (const KnobReaders& k : allKnobs()) {
-        auto it = s.knobs.find(k.knob.name);
-        if (it == s.knobs.end()) continue;
-        if (Status st = k.knob.check(it->second); !st) throw UsageError(st.error());
+        if (sweep && k.knob.sweepable) continue; // a list: runSweep checks each value
+        if (Status st = k.knob.check(k.knob.valueIn(values)); !st) throw UsageError(st.error());
     }
 }
 

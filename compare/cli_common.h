@@ -51,14 +51,16 @@ CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
 // One option per knob of the registered renderers (core/render/knobs.h), bound into
-// s.knobs and set to the knob's default; checked by checkKnobs.
-void addKnobOptions(CLI::App& app, RenderSettings& s);
+// `values` (RenderSettings::knobs) and set to the knob's default; checked by checkKnobs.
+// sweep: a sweepable knob takes a comma-separated list.
+void addKnobOptions(CLI::App& app, std::map<std::string, std::string>& values, bool sweep = false);
 // A knob's help text: what it does, its allowed values, who reads it, whether it matters
 // only under MSAA (list: sweep's comma-separated form).
 std::string knobHelp(const KnobReaders& k, bool list);
 // Every knob value in `s` against its declaration; UsageError (one line naming the knob and
 // its allowed values) on the first bad one. Commands call it before any GPU work.
-void checkKnobs(const RenderSettings& s);
+// sweep: the lists of sweepable knobs are left to runSweep.
+void checkKnobs(const std::map<std::string, std::string>& values, bool sweep = false);
 
 // Loads or builds the scene and sets its lights; warnings go to stderr.
 Scene loadScene(const SceneOptions& o);

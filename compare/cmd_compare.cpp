@@ -268,10 +268,10 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     cmd->add_option("--exposure", o->exposure,
                     "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the reference)")
         ->capture_default_str();
-    addKnobOptions(*cmd, o->knobs);
+    addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;
-        checkKnobs(o->knobs); // runCompare itself records a bad knob as that pipeline's failure
+        checkKnobs(o->knobs.knobs); // runCompare itself records a bad knob as that pipeline's failure
         return runCompare(*o);
     };
 }

@@ -79,7 +79,7 @@ void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, con
 }
 
 int run(InfoOptions& o) {
-    checkKnobs(o.knobs);
+    checkKnobs(o.knobs.knobs);
     printDevices();
     if (o.devicesOnly) return 0;
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
@@ -105,7 +105,7 @@ CommandRunner addInfoCommand(CLI::App& app) {
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
     cmd->add_flag("--devices", o->devicesOnly, "List the Vulkan devices only");
-    addKnobOptions(*cmd, o->knobs);
+    addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
 }
 

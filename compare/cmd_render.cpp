@@ -57,7 +57,7 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
 
 int run(RenderOptions& o) {
     checkFrameCounts(o.frames, o.warmup);
-    checkKnobs(o.knobs);
+    checkKnobs(o.knobs.knobs);
     Result<const RendererEntry*> entry = findRenderer(o.pipeline);
     if (!entry) throw UsageError("--pipeline: " + entry.error());
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
@@ -109,7 +109,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--exr-type", o->exrType, "EXR pixel type")
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
-    addKnobOptions(*cmd, o->knobs);
+    addKnobOptions(*cmd, o->knobs.knobs);
     cmd->add_flag("--debug", o->knobs.debug,
                   "Also write the pipeline's debug images (lights-per-tile heat map, tile depth bounds, "
                   "G-buffer channels, edge mask) as PIPELINE_debug_NAME.png");

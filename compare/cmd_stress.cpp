@@ -36,7 +36,7 @@ CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLi
                     "stress.json, stress.html")
         ->capture_default_str();
     addDeviceOptions(*cmd, o->device);
-    addKnobOptions(*cmd, o->knobs); // the error models follow the knobs (e.g. --accum fp16 adds its term)
+    addKnobOptions(*cmd, o->knobs.knobs); // the error models follow the knobs (e.g. --accum fp16 adds its term)
     return [o, cmd, list]() {
         if (!cmd->parsed()) return -1;
         return *list ? listCases() : runStress(*o);

@@ -45,10 +45,8 @@ int toInt(const std::string& s, const char* option) {
 
 // A knob's values in this sweep: the given list (or single value), else its default.
 std::vector<std::string> knobValues(const SweepOptions& o, const Knob& k) {
-    auto it = o.knobs.find(k.name);
-    if (it == o.knobs.end()) return {k.defaultValue};
-    if (!k.sweepable) return {it->second};
-    return splitList(it->second, ("--" + k.name).c_str());
+    if (!k.sweepable) return {k.valueIn(o.knobs)};
+    return splitList(k.valueIn(o.knobs), ("--" + k.name).c_str());
 }
 
 // Every value of every knob against its declaration, before anything runs. Single values
@@ -172,10 +170,7 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuC
     j["scene"]["content_hash_fnv1a64"] = hashSceneContent(scene);
     j["device"] = deviceJson(ctx);
     j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"light_types", o.scene.lightTypes}};
-    for (const KnobReaders& k : allKnobs()) {
-        auto it = o.knobs.find(k.knob.name);
-        j["axes"][k.knob.key()] = it == o.knobs.end() ? k.knob.defaultValue : it->second;
-    }
+    for (const KnobReaders& k : allKnobs()) j["axes"][k.knob.key()] = k.knob.valueIn(o.knobs);
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["reference_frames"] = o.referenceFrames;
@@ -272,9 +267,7 @@ CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLin
     addSweepOptions(*cmd, *o);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;
-        for (const KnobReaders& k : allKnobs()) // the single values; lists are checked by runSweep
-            if (!k.knob.sweepable)
-                if (Status s = k.knob.check(o->knobs[k.knob.name]); !s) throw UsageError(s.error());
+        checkKnobs(o->knobs, true); // the single values; runSweep checks the lists
         return runSweep(*o);
     };
 }

@@ -32,8 +32,7 @@ nlohmann::json settingsJson(const RenderSettings& s) {
     nlohmann::json j = {{"width", s.width}, {"height", s.height}, {"msaa", s.msaa}};
     // Every registered knob by its key, as the run had it (a knob nobody set: its default).
     for (const KnobReaders& k : allKnobs()) {
-        auto it = s.knobs.find(k.knob.name);
-        j[k.knob.key()] = knobJson(k.knob, it == s.knobs.end() ? k.knob.defaultValue : it->second);
+        j[k.knob.key()] = knobJson(k.knob, k.knob.valueIn(s.knobs));
     }
     return j;
 }

@@ -133,7 +133,7 @@ void printCase(const StressCaseResult& r) {
 int runStress(const StressOptions& o) {
     Result<std::vector<const stress::StressCase*>> cases = stress::selectStressCases(o.cases);
     if (!cases) throw UsageError(cases.error());
-    checkKnobs(o.knobs);
+    checkKnobs(o.knobs.knobs);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     for (const stress::StressCase* c : *cases)

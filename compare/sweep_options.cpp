@@ -16,12 +16,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
     cmd.add_option("--res", o.res, "Comma-separated output resolutions WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--msaa", o.msaa, "Comma-separated samples per pixel (1, 2, 4, 8 as the device supports)")
         ->capture_default_str();
-    // One option per registered knob: a list where the sweep may vary it, else one value.
-    for (const KnobReaders& k : allKnobs()) {
-        std::string& value = o.knobs[k.knob.name];
-        value = k.knob.defaultValue;
-        cmd.add_option("--" + k.knob.name, value, knobHelp(k, k.knob.sweepable))->capture_default_str();
-    }
+    addKnobOptions(cmd, o.knobs, true); // a list where the sweep may vary a knob, else one value
     cmd.add_option("--pipelines", o.pipelines,
                    "Comma-separated pipelines to run (default: every registered one); the reference runs anyway "
                    "unless --reference-frames 0");

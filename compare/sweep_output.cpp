@@ -48,10 +48,7 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," + std::to_string(r.s.width) + "," +
              std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + ",";
-        for (const Knob& k : columns) {
-            auto it = r.s.knobs.find(k.name);
-            t += csvField(it == r.s.knobs.end() ? k.defaultValue : it->second) + ",";
-        }
+        for (const Knob& k : columns) t += csvField(k.valueIn(r.s.knobs)) + ",";
         t += r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
              number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) + "," +
              errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + number(r.dropped) + "," +

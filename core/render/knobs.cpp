@@ -43,6 +43,11 @@ Knob Knob::integerOf(std::string name, std::vector<std::string> values, std::str
     return k;
 }
 
+const std::string& Knob::valueIn(const std::map<std::string, std::string>& values) const {
+    auto it = values.find(name);
+    return it == values.end() ? defaultValue : it->second;
+}
+
 std::string Knob::key() const {
     std::string k = name;
     std::replace(k.begin(), k.end(), '-', '_');

@@ -4,6 +4,7 @@
 // their settings (and the coming viewer will build its controls from them). A knob declared by several renderers (the tile
 // size of the tiled pipelines) must be declared identically; the registry checks that.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,8 @@ struct Knob {
     Knob& fixed() { sweepable = false; return *this; } // one value per sweep
 
     std::string key() const;         // report.json / sweep.csv name
+    // Its value in `values` (knob name -> value), or its default when absent.
+    const std::string& valueIn(const std::map<std::string, std::string>& values) const;
     std::string allowedText() const; // "8, 16, 32" or "1 to 65536"
     // One line naming the knob and its allowed values when `value` is not allowed.
     Status check(const std::string& value) const;
