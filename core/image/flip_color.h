@@ -56,11 +56,6 @@ inline Vec3 mul3(const float* m, Vec3 v) {
             m[6] * v.x + m[7] * v.y + m[8] * v.z};
 }
 
-// sRGB transfer function (IEC 61966-2-1) decode: display value in [0,1] -> linear.
-inline float srgbToLinear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
 inline Vec3 linearRgbToXyz(Vec3 rgb) { return mul3(kColor.rgbToXyz, rgb); }
 inline Vec3 xyzToLinearRgb(Vec3 xyz) { return mul3(kColor.xyzToRgb, xyz); }
 
@@ -124,6 +119,11 @@ inline float fastExp2(float v) {
 inline float fastPow(float x, float y) {
     const float v = fastExp2(y * fastLog2(std::max(x, 1.17549435e-38f)));
     return x > 0.0f ? v : (y == 0.0f ? 1.0f : 0.0f);
+}
+
+// sRGB transfer function (IEC 61966-2-1) decode: display value in [0,1] -> linear.
+inline float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : fastPow((c + 0.055f) / 1.055f, 2.4f);
 }
 
 // CIE L*a*b* relative to the same white.

@@ -131,10 +131,10 @@ TP_FLIP_SIMD void convolveRow(const float* in, int width, const Kernel* const* k
     }
 }
 
-TP_FLIP_SIMD void convolveColumn(const float* plane, int width, int height, int y, const Kernel& kernel,
-                    float* out, float scale, bool accumulate) {
+TP_FLIP_SIMD void convolveColumn(const float* plane, int stride, int width, int height, int y,
+                                 const Kernel& kernel, float* out, float scale, bool accumulate) {
     const float* t = kernel.taps.data() + kernel.radius;
-    auto row = [&](int dy) { return plane + size_t(std::clamp(y + dy, 0, height - 1)) * size_t(width); };
+    auto row = [&](int dy) { return plane + size_t(std::clamp(y + dy, 0, height - 1)) * size_t(stride); };
     const Symmetry s = symmetryOf(kernel);
     // Sum into a local row first, then scale: one rounding pattern for both modes.
     thread_local std::vector<float> acc;

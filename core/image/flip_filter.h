@@ -56,10 +56,11 @@ FeatureFilters makeFeatureFilters(float ppd);
 void convolveRow(const float* in, int width, const Kernel* const* kernels, float* const* outs,
                  int count, std::vector<float>& padded);
 
-// out[x] = sum_k taps[k] * rows[clamp(y + k - radius)][x]: the column pass for output row y of
-// an image of `height` rows stored with `width` floats per row in `plane`. Accumulates
-// `scale` times the result into out when accumulate is set, else writes it.
-void convolveColumn(const float* plane, int width, int height, int y, const Kernel& kernel,
+// out[x] = sum_k taps[k] * rows[clamp(y + k - radius)][x] for x in [0, count): the column pass
+// for output row y of an image of `height` rows, `stride` floats apart, starting at `plane`
+// (offset it to filter a strip of columns). Accumulates `scale` times the result into out
+// when accumulate is set, else writes it.
+void convolveColumn(const float* plane, int stride, int count, int height, int y, const Kernel& kernel,
                     float* out, float scale = 1.0f, bool accumulate = false);
 
 // Runs fn(begin, end) on disjoint row ranges covering [0, rows), on the machine's cores.
