@@ -9,6 +9,8 @@
 #include <limits>
 #include <random>
 
+#include "compare/flip_measure.h"
+#include "core/image/difference.h"
 #include "core/image/flip.h"
 #include "core/image/flip_color.h"
 #include "core/image/flip_filter.h"
@@ -191,6 +193,34 @@ TEST(Flip, OnePixelSpikeGivesTheLocalMaximum) {
     }
     // Beyond the widest kernel (CSF radius 10 + feature radius 9) nothing changed.
     EXPECT_EQ(at(0, 0), 0.0f);
+}
+
+TEST(Flip, ErrorMapIsMagmaWithALegend) {
+    ImageR32 map{2, 1, {0.0f, 1.0f}};
+    ImageRGBA png = flipErrorMap(map, 0);
+    ASSERT_EQ(png.width, 2u);
+    ASSERT_EQ(png.height, 1u);
+    // magma's ends: #000004 and #fcfdbf.
+    EXPECT_NEAR(png.at(0, 0)[2], 4.0f / 255.0f, 1e-6f);
+    EXPECT_NEAR(png.at(1, 0)[0], 252.0f / 255.0f, 1e-6f);
+    EXPECT_NEAR(png.at(1, 0)[2], 191.0f / 255.0f, 1e-6f);
+    EXPECT_EQ(flipErrorMap(ImageR32{64, 8, std::vector<float>(64 * 8, 0.5f)}, 24).height, 8u + 24u);
+}
+
+// compare's FLIP: identical images measure 0 on both inputs; the distance option is checked.
+TEST(Flip, CompareMeasureAndDistanceOption) {
+    const ImageRGBA image = pattern(40, 30, 3.0f);
+    cli::FlipMeasure m = cli::measureFlip(image, image, 0.0f, 0.7f, /*keepMaps=*/true);
+    ASSERT_TRUE(m.measured);
+    EXPECT_EQ(m.ldr.max, 0.0);
+    EXPECT_EQ(m.hdr.max, 0.0);
+    EXPECT_EQ(m.hdrMap.r.size(), image.pixelCount());
+    EXPECT_TRUE(cli::flipJson(m)["hdr"]["exposures"].get<int>() >= 2);
+    EXPECT_THROW(cli::checkFlipDistance(0.05f), cli::UsageError);
+    EXPECT_THROW(cli::checkFlipDistance(11.0f), cli::UsageError);
+    EXPECT_NO_THROW(cli::checkFlipDistance(0.7f));
+    // Twice the distance, twice the pixels per degree.
+    EXPECT_NEAR(flipPixelsPerDegree(1.4f), 2.0f * flipPixelsPerDegree(0.7f), 1e-3f);
 }
 
 // ---- Cross-check against NVIDIA's reference implementation (v1.6, default options) -------
