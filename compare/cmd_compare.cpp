@@ -16,6 +16,7 @@
 #include "core/reference/reference_renderer.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
+#include "core/image/flip.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 #include "core/render/scene_gpu.h"
@@ -48,7 +49,9 @@ void writeDifference(const std::string& out, const std::string& stem, const Imag
 void removeStaleOutputs(const std::string& out, const std::vector<std::string>& names) {
     std::vector<std::string> files = {"report.json", "report.html", "lights.json", "reference.exr", "reference.png"};
     for (const std::string& n : names)
-        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png"}) files.push_back(n + suffix);
+        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr", "_flip.png", "_flip_ldr.exr",
+                                   "_flip_ldr.png"})
+            files.push_back(n + suffix);
     for (size_t i = 0; i < names.size(); ++i)
         for (size_t k = i + 1; k < names.size(); ++k)
             for (const char* suffix : {".exr", ".png"}) files.push_back(pairDiffStem(names[i], names[k]) + suffix);
@@ -102,6 +105,7 @@ std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
         p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
         diffs.push_back(signedDifference(p.run->hdr, ref));
         p.diffP99 = differencePercentile99(diffs.back());
+        p.flip = measureFlip(p.run->hdr, ref, r.exposureEv, r.options->flipDistance, /*keepMaps=*/true);
         r.diffScale = std::max(r.diffScale, p.diffP99);
     }
     // A scale of 0 (every pipeline equals the reference) would make the legend meaningless.
@@ -109,11 +113,30 @@ std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
     return diffs;
 }
 
+// A FLIP map as EXR (the values, grey) and as the magma PNG with its legend.
+void writeFlipMap(const std::string& out, const std::string& stem, const ImageR32& map, std::vector<std::string>& files) {
+    ImageRGBA grey(map.width, map.height);
+    for (size_t i = 0; i < map.r.size(); ++i) {
+        for (int c = 0; c < 3; ++c) grey.rgba[i * 4 + size_t(c)] = map.r[i];
+        grey.rgba[i * 4 + 3] = 1.0f;
+    }
+    check(writeExr(out + "/" + stem + ".exr", grey, ExrPixelType::Float));
+    check(writePng(out + "/" + stem + ".png", flipErrorMap(map, legendHeight(grey))));
+    files.push_back(stem + ".exr");
+    files.push_back(stem + ".png");
+}
+
 void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
     const std::string& out = r.options->out;
     for (size_t i = 0; i < r.pipelines.size(); ++i) {
         PipelineOutcome& p = r.pipelines[i];
-        if (p.run) writeDifference(out, p.name + "_diff", diffs[i], r.diffScale, p.files);
+        if (!p.run) continue;
+        writeDifference(out, p.name + "_diff", diffs[i], r.diffScale, p.files);
+        if (!p.flip.measured) continue;
+        writeFlipMap(out, p.name + "_flip", p.flip.hdrMap, p.files);
+        writeFlipMap(out, p.name + "_flip_ldr", p.flip.ldrMap, p.files);
+        p.flip.hdrMap = {};
+        p.flip.ldrMap = {};
     }
 }
 
@@ -145,24 +168,25 @@ double frameMedian(const RunResult& run) {
 
 void printSummary(const CompareRecord& r) {
     const std::string& device = r.ctx->info.name;
-    std::printf("%-18s %12s %12s %12s %14s %10s  %s\n", "pipeline", "frame ms", "memory MiB", "bytes/px",
-                "rmse (hdr)", "psnr (tm)", "status");
+    std::printf("%-18s %12s %12s %12s %14s %10s %11s  %s\n", "pipeline", "frame ms", "memory MiB", "bytes/px",
+                "rmse (hdr)", "psnr (tm)", "flip (hdr)", "status");
     auto row = [&](const PipelineOutcome& p, bool reference) {
         if (!p.run) {
-            std::printf("%-18s %12s %12s %12s %14s %10s  FAILED: %s\n", p.name.c_str(), "-", "-", "-", "-", "-",
-                        p.error.c_str());
+            std::printf("%-18s %12s %12s %12s %14s %10s %11s  FAILED: %s\n", p.name.c_str(), "-", "-", "-", "-", "-",
+                        "-", p.error.c_str());
             return;
         }
         uint64_t bytes = 0;
         for (const LedgerEntry& e : p.run->memory) bytes += e.bytes;
         double bpp = double(bytes) / double(std::max<size_t>(1, p.run->hdr.pixelCount()));
-        char rmse[32] = "-", psnr[32] = "-";
+        char rmse[32] = "-", psnr[32] = "-", flip[32] = "-";
         if (!reference) {
             std::snprintf(rmse, sizeof rmse, "%.3e", p.hdr.rmse);
             std::snprintf(psnr, sizeof psnr, std::isfinite(p.display.psnr) ? "%.2f" : "inf", p.display.psnr);
+            if (p.flip.measured) std::snprintf(flip, sizeof flip, "%.4f", p.flip.hdr.mean);
         }
-        std::printf("%-18s %12.3f %12.2f %12.1f %14s %10s  ok\n", p.name.c_str(), frameMedian(*p.run),
-                    double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr);
+        std::printf("%-18s %12.3f %12.2f %12.1f %14s %10s %11s  ok\n", p.name.c_str(), frameMedian(*p.run),
+                    double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr, flip);
     };
     row(r.reference, true);
     for (const PipelineOutcome& p : r.pipelines) row(p, false);
@@ -193,6 +217,7 @@ void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, cons
 
 int runCompare(const CompareOptions& o) {
     checkFrameCounts(o.frames, o.warmup);
+    checkFlipDistance(o.flipDistance);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
@@ -268,6 +293,7 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     cmd->add_option("--exposure", o->exposure,
                     "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the reference)")
         ->capture_default_str();
+    addFlipDistanceOption(*cmd, o->flipDistance);
     addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;

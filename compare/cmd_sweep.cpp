@@ -82,6 +82,7 @@ std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepO
 struct Reference {
     std::optional<RunResult> run;
     float ev = 0, peak = 1;
+    float flipDistance = 0.7f; // metres
 };
 
 SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s, const Result<RunResult>& result,
@@ -107,6 +108,7 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
         hdr.psnrPeak = ref.peak;
         row.hdr = computeError(r.hdr, ref.run->hdr, hdr);
         row.display = computeError(tonemapToDisplay(r.hdr, ref.ev), tonemapToDisplay(ref.run->hdr, ref.ev));
+        row.flip = measureFlip(r.hdr, ref.run->hdr, ref.ev, ref.flipDistance, /*keepMaps=*/false);
         row.measured = true;
         row.exposureEv = ref.ev;
         row.hdrPsnrPeak = ref.peak;
@@ -174,6 +176,7 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuC
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["reference_frames"] = o.referenceFrames;
+    j["flip"] = flipConditionsJson(o.flipDistance);
     j["files"] = {"sweep.csv", "sweep.json", "sweep.html"};
     return j;
 }
@@ -191,6 +194,7 @@ void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows, cons
 int runSweep(const SweepOptions& o) {
     checkFrameCounts(o.frames, o.warmup);
     if (o.referenceFrames < 0 || o.referenceFrames > 1000) throw UsageError("--reference-frames must be between 0 and 1000");
+    checkFlipDistance(o.flipDistance);
     checkKnobLists(o);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     if (o.referenceFrames > 0) names.insert(names.begin(), kReferenceRenderer);
@@ -222,6 +226,7 @@ int runSweep(const SweepOptions& o) {
         for (const View& view : views) {
             SceneFeatures features = analyzeScene(scene, view.settings.msaa);
             Reference ref;
+            ref.flipDistance = o.flipDistance;
             for (const std::string& name : names)
                 for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
                     const bool isRef = name == kReferenceRenderer;

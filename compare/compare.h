@@ -20,6 +20,7 @@ struct CompareOptions {
     int frames = 3;
     int warmup = 1;
     std::string exposure = "auto";   // of every PNG; "auto" is taken from the reference
+    float flipDistance = 0.7f;       // FLIP's viewing distance, metres (compare/flip_measure.h)
     RenderSettings knobs;
     std::vector<std::string> commandLine; // recorded in report.json
 };

@@ -30,7 +30,7 @@ details{margin:6px 0}summary{cursor:pointer;font-weight:bold}
 )";
 
 const char* kStyle = R"(
-.grid{display:grid;grid-template-columns:repeat(2,minmax(0,1fr));gap:12px}
+.grid{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:12px}
 table.pairs td{width:300px;vertical-align:top}table.pairs img{width:300px}
 )";
 
@@ -75,25 +75,71 @@ std::string header(const json& r) {
     return h;
 }
 
+// A pooled FLIP value of a pipeline, null when FLIP was not measured.
+json flipValue(const json& p, const char* kind, const char* key) {
+    const json& f = p["error_vs_reference"].value("flip", json(nullptr));
+    return f.is_object() ? f[kind][key] : json(nullptr);
+}
+
+const char* kFlipExplanation =
+    "FLIP (Andersson et al. 2020) estimates what a viewer flipping between the two images would notice, per "
+    "pixel in [0, 1]: both images are filtered by the eye's contrast sensitivity at the viewing distance, "
+    "compared in a perceptually uniform colour space, and the difference is raised where edges or points differ. "
+    "HDR-FLIP (2021) runs it on the linear images tonemapped at a range of exposures chosen from the reference "
+    "and keeps each pixel's worst. Read it next to RMSE: RMSE counts every unit of radiance equally, wherever it "
+    "lands, so a bright noisy highlight can dominate it while nobody would see it, and a faint banding step on a "
+    "flat wall barely moves it while everybody would. A mean FLIP near 0 means hard to tell apart; the weighted "
+    "median and quartiles say how large the errors that make up most of the total are; the map shows where.";
+
+std::string flipSection(const json& r) {
+    const json& c = r.value("flip", json(nullptr));
+    if (!c.is_object()) return "";
+    std::string h = "<h2>FLIP</h2>\n<p class=\"meta\">" + std::string(kFlipExplanation) + " Viewing distance " +
+                    formatNumber(c["viewing_distance_m"].get<double>()) + " m, " +
+                    formatNumber(c["pixels_per_degree"].get<double>()) + " pixels per degree (" + esc(c["monitor"]) +
+                    "); FLIP (tonemapped) on " + esc(c["ldr_input"]) + ", HDR-FLIP on " + esc(c["hdr_input"]) + ".</p>\n";
+    h += "<table><tr><th class=\"l\">pipeline</th><th class=\"l\">input</th><th>mean</th><th>weighted median</th>"
+         "<th>weighted Q1</th><th>weighted Q3</th><th>max</th><th>exposures</th></tr>\n";
+    for (const json& p : r["pipelines"]) {
+        if (!ok(p) || !flipValue(p, "hdr", "mean").is_number()) continue;
+        const json& f = p["error_vs_reference"]["flip"];
+        for (const char* kind : {"hdr", "ldr"}) {
+            const json& v = f[kind];
+            std::string exposures = "&mdash;";
+            if (std::string(kind) == "hdr")
+                exposures = std::to_string(v["exposures"].get<int>()) + " from " +
+                            formatNumber(v["start_exposure"].get<double>()) + " to " +
+                            formatNumber(v["stop_exposure"].get<double>()) + " EV";
+            h += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" +
+                 (std::string(kind) == "hdr" ? "HDR-FLIP (linear)" : "FLIP (tonemapped)") + "</td>" +
+                 numberCell(v["mean"]) + numberCell(v["weighted_median"]) + numberCell(v["weighted_q1"]) +
+                 numberCell(v["weighted_q3"]) + numberCell(v["max"]) + "<td>" + exposures + "</td></tr>\n";
+        }
+    }
+    return h + "</table>\n";
+}
+
 std::string summaryTable(const json& r) {
     std::string device = esc(r["device"]["name"]);
     std::string t = "<h2>Summary</h2>\n<table><tr><th class=\"l\">pipeline</th><th>frame median ms<br>(" + device +
                     ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>PSNR dB "
-                    "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>lights dropped</th></tr>\n";
+                    "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>HDR-FLIP mean</th><th>FLIP mean "
+                    "(tonemapped)</th><th>lights dropped</th></tr>\n";
     auto row = [&](const json& p, bool reference) {
         t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>";
         if (!ok(p)) {
-            t += "<td colspan=\"7\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
+            t += "<td colspan=\"9\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
             return;
         }
         const json& mem = p["run"]["memory"];
         t += "<td>" + formatNumber(frameMedian(p)) + "</td><td>" +
              formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" + numberCell(mem["bytes_per_pixel"]);
-        if (reference) t += "<td>0</td><td>inf</td><td>0</td>";
+        if (reference) t += "<td>0</td><td>inf</td><td>0</td><td>0</td><td>0</td>";
         else {
             const json& e = p["error_vs_reference"];
             t += numberCell(e["hdr"]["rmse"]) + numberCell(e["tonemapped"]["psnr"]) +
-                 numberCell(e["tonemapped"]["share_over_threshold"]);
+                 numberCell(e["tonemapped"]["share_over_threshold"]) + numberCell(flipValue(p, "hdr", "mean")) +
+                 numberCell(flipValue(p, "ldr", "mean"));
         }
         t += numberCell(p["lights_dropped"]) + "</tr>\n";
     };
@@ -109,10 +155,16 @@ std::string errorPlot(const json& r) {
     points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
     for (const json& p : r["pipelines"])
         if (ok(p)) points.push_back({p["name"].get<std::string>(), frameMedian(p), p["error_vs_reference"]["hdr"]["rmse"].get<double>()});
-    return "<h2>Error against run time</h2>\n" +
-           scatterLogLogSvg(points, "frame time, median ms on " + r["device"]["name"].get<std::string>(),
-                            "RMSE vs reference (linear HDR)") +
-           "<p class=\"meta\">Lower left is better: cheaper and closer to the reference.</p>\n";
+    std::vector<PlotPoint> flipPoints;
+    flipPoints.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
+    for (const json& p : r["pipelines"])
+        if (ok(p) && flipValue(p, "hdr", "mean").is_number())
+            flipPoints.push_back({p["name"].get<std::string>(), frameMedian(p), flipValue(p, "hdr", "mean").get<double>()});
+    const std::string xLabel = "frame time, median ms on " + r["device"]["name"].get<std::string>();
+    return "<h2>Error against run time</h2>\n" + scatterLogLogSvg(points, xLabel, "RMSE vs reference (linear HDR)") +
+           (flipPoints.size() > 1 ? scatterLogLogSvg(flipPoints, xLabel, "mean HDR-FLIP vs reference") : "") +
+           "<p class=\"meta\">Lower left is better: cheaper and closer to the reference (by RMSE, and by what a "
+           "viewer would see: HDR-FLIP).</p>\n";
 }
 
 Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption) {
@@ -123,13 +175,14 @@ Result<std::string> figure(const std::string& outDir, const std::string& file, c
 }
 
 Result<std::string> imagesSection(const json& r, const std::string& outDir) {
-    std::string h = "<h2>Images and differences</h2>\n<p class=\"meta\">Left: tonemapped image. Right: heat map of "
+    std::string h = "<h2>Images and differences</h2>\n<p class=\"meta\">Left: tonemapped image. Middle: heat map of "
                     "|pipeline &minus; reference| (max over RGB, linear), one scale for the whole report: 0 to " +
                     formatNumber(r["difference_scale"]["value"].get<double>()) + " (" +
-                    esc(r["difference_scale"]["rule"]) + "). Magenta: NaN/Inf.</p>\n<div class=\"grid\">\n";
+                    esc(r["difference_scale"]["rule"]) + "). Magenta: NaN/Inf. Right: the HDR-FLIP error map (0 to 1, magma as in FLIP; see FLIP below).</p>\n"
+                    "<div class=\"grid\">\n";
     Result<std::string> ref = figure(outDir, "reference.png", "reference");
     if (!ref) return ref;
-    h += *ref + "<figure><figcaption>The reference: every light at every sample.</figcaption></figure>\n";
+    h += *ref + "<figure><figcaption>The reference: every light at every sample.</figcaption></figure><figure></figure>\n";
     for (const json& p : r["pipelines"]) {
         if (!ok(p)) continue;
         const std::string name = p["name"];
@@ -141,6 +194,16 @@ Result<std::string> imagesSection(const json& r, const std::string& outDir) {
         if (!img) return img;
         if (!diff) return diff;
         h += *img + *diff;
+        if (flipValue(p, "hdr", "mean").is_number()) {
+            Result<std::string> flip = figure(
+                outDir, name + "_flip.png",
+                "HDR-FLIP " + escapeXml(name) + " vs reference (magma, 0 to 1): mean " +
+                    formatNumber(flipValue(p, "hdr", "mean").get<double>()) + ", weighted median " +
+                    formatNumber(flipValue(p, "hdr", "weighted_median").get<double>()) + "; FLIP of the PNGs: mean " +
+                    formatNumber(flipValue(p, "ldr", "mean").get<double>()) + " (" + escapeXml(name) + "_flip_ldr.png)");
+            if (!flip) return flip;
+            h += *flip;
+        } else h += "<figure></figure>\n";
     }
     return h + "</div>\n";
 }
@@ -308,7 +371,7 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     if (!images) return images;
     Result<std::string> pairs = pairwiseSection(r, outDir);
     if (!pairs) return pairs;
-    h += *images + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
+    h += *images + flipSection(r) + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
     return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n</body></html>\n";
 }
 

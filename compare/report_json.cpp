@@ -31,7 +31,9 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
     // Pipelines that cannot drop a light do not count drops: 0 for them.
     j["lights_dropped"] = counter(*p.run, "lights_dropped", 0.0);
     if (!isReference) {
-        j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)}, {"tonemapped", metricsJson(p.display)}};
+        j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)},
+                                   {"tonemapped", metricsJson(p.display)},
+                                   {"flip", flipJson(p.flip)}};
         j["difference_p99"] = p.diffP99;
     }
     return j;
@@ -82,6 +84,7 @@ nlohmann::json reportJson(const CompareRecord& r) {
                              {"unit", "linear radiance, max over RGB of |pipeline - reference|"},
                              {"rule", "largest 99th percentile of |difference| over the pipelines"}};
     j["metrics_table"] = metricTableJson(r);
+    j["flip"] = flipConditionsJson(o.flipDistance);
     j["shared_memory"] = ledgerJson(r.sharedMemory);
     j["shared_memory"]["owner"] = "scene";
     j["reference"] = outcomeJson(r.reference, *r.ctx, true);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/compare.h"
+#include "compare/flip_measure.h"
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
@@ -23,6 +24,7 @@ struct PipelineOutcome {
     ErrorReport hdr;              // against the reference, linear
     ErrorReport display;          // against the reference, tonemapped (same exposure)
     float diffP99 = 0;            // 99th percentile of max-channel |diff| (linear)
+    FlipMeasure flip;             // FLIP and HDR-FLIP against the reference
     std::vector<std::string> files; // written into --out, relative names
 };
 

@@ -23,6 +23,7 @@ struct SweepOptions {
     std::string out = "sweep";
     int frames = 2, warmup = 1;
     int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
+    float flipDistance = 0.7f; // FLIP's viewing distance, metres (compare/flip_measure.h)
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
 

@@ -3,6 +3,8 @@
 // and its default; the knob options come from the registered renderers' schemas.
 #include "compare/sweep.h"
 
+#include "compare/flip_measure.h"
+
 namespace tp::cli {
 
 void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
@@ -29,6 +31,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
                    "count, resolution and MSAA. 0: no reference, no error figures")
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
+    addFlipDistanceOption(cmd, o.flipDistance);
     addSeedOption(cmd, o.scene.seed);
     cmd.add_option("--light-types", o.scene.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, e.g. point:3,spot:1")

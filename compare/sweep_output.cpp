@@ -34,6 +34,12 @@ std::string errorFields(const SweepRow& r, const ErrorReport& e) {
     return number(e.rmse) + "," + number(e.psnr) + "," + number(e.maxAbs);
 }
 
+// Mean HDR-FLIP and mean FLIP of the tonemapped images; empty when not measured.
+std::string flipFields(const SweepRow& r) {
+    if (!r.measured || !r.flip.measured) return ",";
+    return number(r.flip.hdr.mean) + "," + number(r.flip.ldr.mean);
+}
+
 } // namespace
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device) {
@@ -44,14 +50,15 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
     std::string t = "pipeline,lights,width,height,msaa,";
     for (const Knob& k : columns) t += k.key() + ",";
     t += "status,frame_median_ms,frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,psnr_hdr,"
-         "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,lights_dropped,device,error\n";
+         "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,flip_hdr_mean,flip_tonemapped_mean,"
+         "lights_dropped,device,error\n";
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," + std::to_string(r.s.width) + "," +
              std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + ",";
         for (const Knob& k : columns) t += csvField(k.valueIn(r.s.knobs)) + ",";
         t += r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
              number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) + "," +
-             errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + number(r.dropped) + "," +
+             errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + flipFields(r) + "," + number(r.dropped) + "," +
              csvField(device) + "," + csvField(r.error) + "\n";
     }
     return t;
@@ -74,6 +81,7 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
         if (r.measured)
             j["error_vs_reference"] = {{"hdr", metricsJson(r.hdr)},
                                        {"tonemapped", metricsJson(r.display)},
+                                       {"flip", flipJson(r.flip)},
                                        {"exposure_ev", r.exposureEv},
                                        {"psnr_peak_hdr", r.hdrPsnrPeak}};
         else j["error_vs_reference"] = nullptr;
@@ -86,7 +94,7 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
 std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::string>& names,
                       const std::string& device, const std::string& command) {
     auto series = [&](const std::string& p) { return int(std::find(names.begin(), names.end(), p) - names.begin()); };
-    std::vector<PlotPoint> time, memory, error;
+    std::vector<PlotPoint> time, memory, error, flipError;
     std::set<std::string> firstOfKind;
     for (const SweepRow& r : rows) {
         if (r.status != "ok") continue;
@@ -97,13 +105,15 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::
             time.push_back({"", double(r.lights), r.frame.medianMs, si});
         memory.push_back({"", double(r.s.msaa), double(r.bytes), si});
         if (r.measured) error.push_back({"", r.frame.medianMs, r.hdr.rmse, si});
+        if (r.measured && r.flip.measured) flipError.push_back({"", r.frame.medianMs, r.flip.hdr.mean, si});
     }
     // Pareto front: no other run is both faster and closer to the reference.
-    for (PlotPoint& p : error) {
-        p.ring = std::none_of(error.begin(), error.end(), [&](const PlotPoint& q) {
-            return q.x <= p.x && q.y <= p.y && (q.x < p.x || q.y < p.y);
-        });
-    }
+    for (std::vector<PlotPoint>* points : {&error, &flipError})
+        for (PlotPoint& p : *points) {
+            p.ring = std::none_of(points->begin(), points->end(), [&](const PlotPoint& q) {
+                return q.x <= p.x && q.y <= p.y && (q.x < p.x || q.y < p.y);
+            });
+        }
     std::string failed;
     for (const SweepRow& r : rows)
         if (r.status != "ok")
@@ -122,7 +132,10 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::
            scatterLogLogSvg(time, "lights", "frame median ms", 720, 440, names) +
            "<h2>Memory against MSAA</h2>" + scatterLogLogSvg(memory, "MSAA samples", "pipeline bytes", 720, 440, names, false) +
            "<h2>Error against run time (circled: Pareto front)</h2>" +
-           scatterLogLogSvg(error, "frame median ms", "RMSE vs reference (HDR)", 720, 440, names, false) + "</body></html>\n";
+           scatterLogLogSvg(error, "frame median ms", "RMSE vs reference (HDR)", 720, 440, names, false) +
+           "<h2>Perceived error against run time: HDR-FLIP (circled: Pareto front)</h2>" +
+           scatterLogLogSvg(flipError, "frame median ms", "mean HDR-FLIP vs reference", 720, 440, names, false) +
+           "</body></html>\n";
 }
 
 } // namespace tp::cli

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/flip_measure.h"
 #include "core/image/metrics.h"
 #include "core/render/frame_runner.h"
 #include "core/render/settings.h"
@@ -22,6 +23,7 @@ struct SweepRow {
     double bytesPerPixel = 0, dropped = 0, seconds = 0;
     bool measured = false;         // error against the reference known
     ErrorReport hdr, display;      // against the reference: linear, and tonemapped
+    FlipMeasure flip;              // FLIP (tonemapped) and HDR-FLIP against the reference
     float exposureEv = 0, hdrPsnrPeak = 1;
     nlohmann::json run;            // runJson(): every pass, the ledger, counters, left-out
     std::string lightsHash;

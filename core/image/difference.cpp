@@ -28,6 +28,21 @@ constexpr std::array<Rgb, 10> kInferno = {{
     {0xf7 / 255.f, 0xd0 / 255.f, 0x3c / 255.f},
     {0xfc / 255.f, 0xff / 255.f, 0xa4 / 255.f},
 }};
+// Matplotlib's 'magma' sampled at 10 evenly spaced points (sRGB): the colour map FLIP's
+// error maps use, so ours read like the ones in the FLIP papers.
+constexpr std::array<Rgb, 10> kMagma = {{
+    {0x00 / 255.f, 0x00 / 255.f, 0x04 / 255.f},
+    {0x18 / 255.f, 0x0f / 255.f, 0x3d / 255.f},
+    {0x44 / 255.f, 0x0f / 255.f, 0x76 / 255.f},
+    {0x72 / 255.f, 0x1f / 255.f, 0x81 / 255.f},
+    {0x9e / 255.f, 0x2f / 255.f, 0x7f / 255.f},
+    {0xcd / 255.f, 0x40 / 255.f, 0x71 / 255.f},
+    {0xf1 / 255.f, 0x60 / 255.f, 0x5d / 255.f},
+    {0xfd / 255.f, 0x96 / 255.f, 0x68 / 255.f},
+    {0xfe / 255.f, 0xca / 255.f, 0x8d / 255.f},
+    {0xfc / 255.f, 0xfd / 255.f, 0xbf / 255.f},
+}};
+using Ramp = std::array<Rgb, 10>;
 constexpr Rgb kMagenta = {1.0f, 0.0f, 1.0f}; // NaN/Inf: not on the ramp, cannot be misread
 constexpr Rgb kLegendBackground = {0.2f, 0.2f, 0.2f};
 constexpr Rgb kLegendText = {1.0f, 1.0f, 1.0f};
@@ -55,13 +70,13 @@ constexpr std::array<Glyph, 14> kFont = {{
 }};
 constexpr int kGlyphW = 5, kGlyphH = 7, kGlyphAdvance = 6;
 
-Rgb ramp(float t) {
-    t = std::clamp(t, 0.0f, 1.0f) * float(kInferno.size() - 1);
-    size_t i = std::min(size_t(t), kInferno.size() - 2);
+Rgb ramp(float t, const Ramp& colours = kInferno) {
+    t = std::clamp(t, 0.0f, 1.0f) * float(colours.size() - 1);
+    size_t i = std::min(size_t(t), colours.size() - 2);
     float f = t - float(i);
     Rgb out;
     for (int c = 0; c < 3; ++c)
-        out[c] = kInferno[i][c] + f * (kInferno[i + 1][c] - kInferno[i][c]);
+        out[c] = colours[i][c] + f * (colours[i + 1][c] - colours[i][c]);
     return out;
 }
 
@@ -106,7 +121,7 @@ std::string formatScale(float value) {
 
 // Legend rows [top, top + height): a bar from 0 to scaleMax with the two labels under it.
 // Too short for text (under 14 px at scale 1) leaves only the bar.
-void drawLegend(ImageRGBA& image, uint32_t top, uint32_t height, float scaleMax) {
+void drawLegend(ImageRGBA& image, uint32_t top, uint32_t height, float scaleMax, const Ramp& colours = kInferno) {
     for (uint32_t y = top; y < top + height; ++y)
         for (uint32_t x = 0; x < image.width; ++x)
             setPixel(image, int(x), int(y), kLegendBackground);
@@ -121,7 +136,7 @@ void drawLegend(ImageRGBA& image, uint32_t top, uint32_t height, float scaleMax)
     const int barRight = int(image.width) - 1 - barLeft; // inclusive
     const float span = float(std::max(1, barRight - barLeft));
     for (int x = barLeft; x <= barRight; ++x) {
-        Rgb colour = ramp(float(x - barLeft) / span);
+        Rgb colour = ramp(float(x - barLeft) / span, colours);
         for (int y = barTop; y < barBottom; ++y)
             setPixel(image, x, y, colour);
     }
@@ -134,6 +149,18 @@ void drawLegend(ImageRGBA& image, uint32_t top, uint32_t height, float scaleMax)
 }
 
 } // namespace
+
+ImageRGBA flipErrorMap(const ImageR32& flipValues, uint32_t legendHeight) {
+    ImageRGBA out(flipValues.width, flipValues.height + legendHeight);
+    if (flipValues.r.size() != size_t(flipValues.width) * flipValues.height) return {};
+    for (uint32_t y = 0; y < flipValues.height; ++y)
+        for (uint32_t x = 0; x < flipValues.width; ++x) {
+            const float v = flipValues.r[size_t(y) * flipValues.width + x];
+            setPixel(out, int(x), int(y), std::isfinite(v) ? ramp(v, kMagma) : kMagenta);
+        }
+    if (legendHeight > 0 && out.width > 0) drawLegend(out, flipValues.height, legendHeight, 1.0f, kMagma);
+    return out;
+}
 
 ImageRGBA signedDifference(const ImageRGBA& test, const ImageRGBA& reference) {
     if (test.width != reference.width || test.height != reference.height) return {};

@@ -13,4 +13,8 @@ ImageRGBA signedDifference(const ImageRGBA& test, const ImageRGBA& reference);
 // Output is display-space RGBA ready for writePng; height = diff.height + legendHeight.
 ImageRGBA heatMap(const ImageRGBA& signedDiff, float scaleMax, uint32_t legendHeight = 24);
 
+// A FLIP error map (values in [0, 1]) in the magma colour map FLIP's tool uses, with the same
+// legend strip (0 to 1) under it; display-space RGBA for writePng.
+ImageRGBA flipErrorMap(const ImageR32& flipValues, uint32_t legendHeight = 24);
+
 } // namespace tp

@@ -1,6 +1,7 @@
-// stb_image_write behind image_io.h. Debian's libstb already exports the stb_image_write
-// symbols (nm -D libstb.so), so this file includes the header only and the build links stb
-// (defining STB_IMAGE_WRITE_IMPLEMENTATION here would clash with it once linked).
+// stb_image_write and stb_image behind image_io.h. Debian's libstb already exports their
+// symbols (nm -D libstb.so), so this file includes the headers only and the build links stb
+// (defining STB_IMAGE*_IMPLEMENTATION here would clash with it once linked).
+#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -79,6 +80,24 @@ Status writePng(const std::string& path, const ImageRGBA& display, bool keepAlph
         return Error{path + ": cannot rename temporary file: " + ec.message()};
     }
     return {};
+}
+
+Result<ImageRGBA> readPng(const std::string& path) {
+    int w = 0, h = 0, channels = 0;
+    const bool wide = stbi_is_16_bit(path.c_str());
+    void* data = wide ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 4))
+                      : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 4));
+    if (!data) {
+        const char* why = stbi_failure_reason();
+        return Error{path + ": cannot read PNG: " + (why ? why : "unknown error")};
+    }
+    ImageRGBA image(static_cast<uint32_t>(w), static_cast<uint32_t>(h));
+    const float scale = wide ? 1.0f / 65535.0f : 1.0f / 255.0f;
+    for (size_t i = 0; i < image.rgba.size(); ++i)
+        image.rgba[i] = scale * (wide ? float(static_cast<const uint16_t*>(data)[i])
+                                      : float(static_cast<const uint8_t*>(data)[i]));
+    stbi_image_free(data);
+    return image;
 }
 
 } // namespace tp

@@ -33,6 +33,8 @@ expect_error "inverted light radius range" render builtin:courtyard-small --ligh
 expect_error "unknown light type" render builtin:courtyard-small --light-types laser
 expect_error "zero frames" render --frames 0
 expect_error "bad exposure" render --exposure banana
+expect_error "FLIP viewing distance out of range" compare --flip-distance 0 --res 8x8
+expect_error "FLIP viewing distance not a number" sweep --flip-distance far --res 8x8
 expect_error "no such device" render --device 99 --res 8x8
 expect_error "scene that is a directory" render /tmp
 if [ -n "$scenes" ] && [ -d "$scenes/negative" ]; then

@@ -90,11 +90,13 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     for (const char* f : {"reference.exr", "reference.png", "lights.json", "report.json", "report.html"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     for (const std::string& n : names)
-        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png"})
+        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr", "_flip.png", "_flip_ldr.exr",
+                                   "_flip_ldr.png"})
             EXPECT_TRUE(fs::exists(out + "/" + n + suffix)) << n << suffix;
 
     json r = json::parse(readText(out + "/report.json"));
     EXPECT_EQ(r["schema"], "triptych.report/2");
+    EXPECT_NEAR(r["flip"]["pixels_per_degree"].get<double>(), 67.02, 0.01);
     EXPECT_EQ(r["status"], "ok");
     EXPECT_EQ(r["seed"].get<uint64_t>(), 3u);
     EXPECT_EQ(r["scene"]["path"], "builtin:courtyard-small");
@@ -123,6 +125,15 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
         for (const json& e : p["run"]["memory"]["resources"]) EXPECT_NE(e["name"], "vertices"); // scene is shared
         expectMetrics(p["error_vs_reference"]["hdr"], "hdr");
         expectMetrics(p["error_vs_reference"]["tonemapped"], "tonemapped");
+        for (const char* kind : {"ldr", "hdr"}) {
+            const json& f = p["error_vs_reference"]["flip"][kind];
+            for (const char* k : {"mean", "weighted_median", "weighted_q1", "weighted_q3", "min", "max"}) {
+                ASSERT_TRUE(f[k].is_number()) << kind << " " << k;
+                EXPECT_GE(f[k].get<double>(), 0.0);
+                EXPECT_LE(f[k].get<double>(), 1.0);
+            }
+        }
+        EXPECT_GE(p["error_vs_reference"]["flip"]["hdr"]["exposures"].get<int>(), 2);
         EXPECT_EQ(p["lights_dropped"].get<double>(), 0.0);
         largestP99 = std::max(largestP99, p["difference_p99"].get<float>());
     }
@@ -151,7 +162,8 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     EXPECT_EQ(count(html, "http://"), 0u);
     EXPECT_EQ(count(html, "https://"), 0u);
     const size_t pairs = names.size() * (names.size() - 1) / 2;
-    EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 1 + 2 * names.size() + pairs);
+    // The reference; per pipeline its image, difference map and HDR-FLIP map; per pair its map.
+    EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 1 + 3 * names.size() + pairs);
     EXPECT_GE(count(html, "<svg"), 2u); // timing bars and the error/time plot
     for (const std::string& n : names) EXPECT_NE(html.find(n), std::string::npos);
 }
@@ -215,7 +227,8 @@ TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
         EXPECT_TRUE(readText(e.path().string()) == readText(dirs[1] + "/" + name)) << name << " differs";
     }
     const size_t n = pipelinesButReference().size();
-    EXPECT_EQ(images, 1 + 2 + 4 * n + 2 * (n * (n - 1) / 2)); // lights, reference, pipelines, pairs
+    // lights, reference, pipelines (image, difference, FLIP and HDR-FLIP maps), pairs
+    EXPECT_EQ(images, 1 + 2 + 8 * n + 2 * (n * (n - 1) / 2));
 }
 
 TEST(Compare, BadPipelineNameFailsBeforeWritingAnything) {
@@ -278,7 +291,7 @@ TEST(Compare, SweepWritesOneRowPerRun) {
         if (row.at("pipeline") == "deferred") lighting.insert(row.at("deferred_lighting"));
         const bool pipeline = row.at("pipeline") != "reference";
         for (const char* column : {"rmse_hdr", "psnr_hdr", "max_abs_hdr", "rmse_tonemapped", "psnr_tonemapped",
-                                   "max_abs_tonemapped"})
+                                   "max_abs_tonemapped", "flip_hdr_mean", "flip_tonemapped_mean"})
             EXPECT_EQ(row.at(column).empty(), !pipeline) << row.at("pipeline") << " " << column;
     }
     for (const RendererEntry& e : registeredRenderers())
@@ -313,7 +326,7 @@ TEST(Compare, SweepWritesOneRowPerRun) {
     }
     const std::string html = readText(out + "/sweep.html");
     EXPECT_EQ(count(html, "http"), 0u);
-    EXPECT_EQ(count(html, "<svg"), 3u);
+    EXPECT_EQ(count(html, "<svg"), 4u); // time, memory, error (RMSE and HDR-FLIP) plots
 }
 
 // A configuration that cannot run is a failed row with its reason, the others still run and
