@@ -3,6 +3,7 @@
 // no NaN or Inf, and each pipeline within its derived error bound of the reference
 // (core/render/error_model.h, as `triptych stress` checks it).
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <unistd.h>
@@ -67,6 +68,10 @@ void renderEveryPipeline(const fs::path& path) {
         const ErrorBound bound = expectedBound(entry.errorModel, {c, scene, resolved});
         ASSERT_TRUE(bound.bounded) << bound.why;
         const double err = computeError(tonemapToDisplay(run.hdr, ev), refDisplay).maxAbs;
+        std::printf("[ bound    ] %-40s %-18s tonemapped max |p - r| %.3g <= %.3g\n",
+                    path.filename().string() == "scene.gltf" ? path.parent_path().filename().c_str()
+                                                             : path.filename().c_str(),
+                    entry.name.c_str(), err, bound.tonemapped(ev));
         EXPECT_LE(err, bound.tonemapped(ev)) << "tonemapped max |p - r|";
     }
     expectNoValidationMessages(*ctx);
