@@ -163,6 +163,7 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
     if (compressed) {
         Status d = decodeDraco(model, p, {kPosition, kNormal, kTangent, kUv, kColor}, draco);
         if (!d) return fail(d);
+        mode = TINYGLTF_MODE_TRIANGLES; // the bitstream's faces, whatever the mode (strips) said
     }
     // An attribute from the Draco bitstream when the extension lists it, else its accessor.
     auto fetch = [&](const AttributeSpec& spec, int index, bool keepNonFinite) -> Status {
