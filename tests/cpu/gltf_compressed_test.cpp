@@ -131,6 +131,44 @@ TEST_F(GltfCompressed, MeshoptSceneDecodesExactly) {
     EXPECT_TRUE(ta == tb);
 }
 
+// The .gltf as a .glb: buffer 0 becomes the BIN chunk (the meshopt fallback buffer keeps no uri).
+fs::path toGlb(const fs::path& gltfPath) {
+    json j = json::parse(std::ifstream(gltfPath));
+    std::vector<char> bin = readBytes(gltfPath.parent_path() / j["buffers"][0]["uri"].get<std::string>());
+    j["buffers"][0].erase("uri");
+    std::string text = j.dump();
+    while (text.size() % 4) text.push_back(' ');
+    while (bin.size() % 4) bin.push_back(0);
+    std::vector<char> glb;
+    auto u32 = [&](uint32_t v) {
+        for (int i = 0; i < 4; ++i) glb.push_back(char(v >> (8 * i)));
+    };
+    u32(0x46546C67u);
+    u32(2);
+    u32(uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+    u32(uint32_t(text.size()));
+    u32(0x4E4F534Au);
+    glb.insert(glb.end(), text.begin(), text.end());
+    u32(uint32_t(bin.size()));
+    u32(0x004E4942u);
+    glb.insert(glb.end(), bin.begin(), bin.end());
+    const fs::path out = gltfPath.parent_path() / "scene.glb";
+    std::ofstream(out, std::ios::binary).write(glb.data(), std::streamsize(glb.size()));
+    return out;
+}
+
+TEST_F(GltfCompressed, CompressedGlbFilesLoadAsTheirGltf) {
+    for (const fs::path& gltf : {test::writeMeshoptScene(dir_ / "meshopt"), test::writeDracoScene(dir_ / "draco")}) {
+        SCOPED_TRACE(gltf.string());
+        Loaded a = load(gltf), b = load(toGlb(gltf));
+        ASSERT_TRUE(a.scene.ok()) << a.scene.error();
+        ASSERT_TRUE(b.scene.ok()) << b.scene.error();
+        EXPECT_EQ(a.scene->extensions, b.scene->extensions);
+        EXPECT_EQ(a.scene->meshes[0].positions, b.scene->meshes[0].positions);
+        EXPECT_EQ(a.scene->meshes[0].indices, b.scene->meshes[0].indices);
+    }
+}
+
 TEST_F(GltfCompressed, RepairSceneIsRepairedAndListed) {
     test::RepairCounts counts;
     const fs::path path = test::writeRepairScene(dir_ / "repair", counts);
