@@ -147,7 +147,10 @@ class Writer {
     // A .gltf with tri.bin beside it.
     void gltf(Case c, const json& g, const Bytes& bin = triangleBin()) {
         const std::string binPath = (fs::path(c.scene).parent_path() / "tri.bin").string();
-        files(std::move(c), {{c.scene, text(g.dump(1))}, {binPath, bin}});
+        // Named before `c` is moved: clang evaluates the arguments left to right, so reading
+        // c.scene in the call read a moved-from string (the fuzz seeds lost their scenes).
+        const std::string scene = c.scene;
+        files(std::move(c), {{scene, text(g.dump(1))}, {binPath, bin}});
     }
     std::vector<Case> done() { return std::move(cases_); }
 
