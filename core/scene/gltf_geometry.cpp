@@ -208,8 +208,7 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
     std::vector<uint8_t> badNormal, badTangent;
     auto record = [&](const char* name, size_t count, const char* problem, const char* action) {
         if (count > 0)
-            out.repairs.push_back(
-                SceneRepair{name, attribute(name), count, n, problem, action});
+            out.repairs.push_back(SceneRepair{name, attribute(name), count, n, problem, action});
     };
     s = readOptional(kNormal, [&] {
         out.normals.resize(n);
@@ -217,7 +216,7 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
         for (size_t i = 0; i < n; ++i) {
             glm::vec3 v(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
             float len2 = glm::dot(v, v);
-            if ((!finite(&data[3 * i], 3) || !(len2 > 1e-30f) || !std::isfinite(len2))) {
+            if (!finite(&data[3 * i], 3) || !(len2 > 1e-30f) || !std::isfinite(len2)) {
                 if (badNormal.empty()) badNormal.assign(n, 0);
                 badNormal[i] = 1;
                 ++bad;
@@ -235,7 +234,7 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
             for (size_t i = 0; i < n; ++i) {
                 glm::vec3 t(data[4 * i], data[4 * i + 1], data[4 * i + 2]);
                 float len2 = glm::dot(t, t);
-                if ((!finite(&data[4 * i], 4) || !(len2 > 1e-30f) || !std::isfinite(len2))) {
+                if (!finite(&data[4 * i], 4) || !(len2 > 1e-30f) || !std::isfinite(len2)) {
                     if (badTangent.empty()) badTangent.assign(n, 0);
                     badTangent[i] = 1;
                     ++bad;
