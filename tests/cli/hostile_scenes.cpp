@@ -108,6 +108,24 @@ Bytes text(const std::string& s) {
     return Bytes(s.begin(), s.end());
 }
 
+// `bytes` as a base64 data URI: a scene with it needs no file beside it (fuzz seeds).
+std::string dataUri(const Bytes& bin) {
+    static const char* kAlphabet =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const size_t n = bin.size();
+    std::string uri = "data:application/octet-stream;base64,";
+    for (size_t i = 0; i < n; i += 3) {
+        uint32_t v = uint32_t(bin[i]) << 16;
+        if (i + 1 < n) v |= uint32_t(bin[i + 1]) << 8;
+        if (i + 2 < n) v |= bin[i + 2];
+        uri += kAlphabet[v >> 18 & 63];
+        uri += kAlphabet[v >> 12 & 63];
+        uri += i + 1 < n ? kAlphabet[v >> 6 & 63] : '=';
+        uri += i + 2 < n ? kAlphabet[v & 63] : '=';
+    }
+    return uri;
+}
+
 // A triangle whose material's base colour shows image 0 at `uri`.
 json texturedTriangle(const json& images) {
     json g = triangleJson();
@@ -443,6 +461,7 @@ void repairAndCompressedCases(Writer& w) {
         withAttribute("NORMAL", "VEC3", {0, 0, 1, nan, nan, nan, 0, 0, 1}, v, b);
         v["extensionsUsed"] = {"EXT_meshopt_compression"};
         v["extensionsRequired"] = {"EXT_meshopt_compression"};
+        v["buffers"][0]["uri"] = dataUri(b); // self-contained: every case's tri.bin is one file to the fuzzer
         w.gltf({"meshopt_triangle_nan_normal", "scene.gltf", W, "repaired NORMAL accessor 2: 1 of 3",
                 "a meshopt-compressed triangle (valid) with a NaN normal"}, v, b);
     }
@@ -467,22 +486,8 @@ std::vector<Case> writeHostileScenes(const fs::path& root) {
 }
 
 std::vector<uint8_t> validTriangleGltf() {
-    static const char* kAlphabet =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    const Bytes bin = triangleBin();
-    const size_t n = bin.size();
-    std::string uri = "data:application/octet-stream;base64,";
-    for (size_t i = 0; i < n; i += 3) {
-        uint32_t v = uint32_t(bin[i]) << 16;
-        if (i + 1 < n) v |= uint32_t(bin[i + 1]) << 8;
-        if (i + 2 < n) v |= bin[i + 2];
-        uri += kAlphabet[v >> 18 & 63];
-        uri += kAlphabet[v >> 12 & 63];
-        uri += i + 1 < n ? kAlphabet[v >> 6 & 63] : '=';
-        uri += i + 2 < n ? kAlphabet[v & 63] : '=';
-    }
     json g = triangleJson();
-    g["buffers"][0]["uri"] = uri;
+    g["buffers"][0]["uri"] = dataUri(triangleBin());
     return text(g.dump());
 }
 
