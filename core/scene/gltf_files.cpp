@@ -408,7 +408,8 @@ bool patchJson(json& root) {
             if (!buffer.is_object() || buffer.contains("uri")) continue;
             const json* ext = member(buffer, "extensions");
             ext = ext ? member(*ext, "EXT_meshopt_compression") : nullptr;
-            if (!ext || !ext->is_object() || ext->value("fallback", false) != true) continue;
+            const json* fallback = ext ? member(*ext, "fallback") : nullptr;
+            if (!fallback || !fallback->is_boolean() || !fallback->get<bool>()) continue;
             buffer["uri"] = "data:application/octet-stream;base64,AA=="; // one zero byte
             buffer["byteLength"] = 1;
             changed = true;

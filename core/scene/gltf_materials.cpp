@@ -410,6 +410,8 @@ UvTransform materialUvTransform(const tinygltf::Material& m) {
     for (const auto& [name, extensions] : slots) {
         if (!extensions) continue;
         auto it = extensions->find(kTextureTransform);
+        // Not an object: nothing to read (and tinygltf's Value::Get asserts on it).
+        if (it != extensions->end() && !it->second.IsObject()) it = extensions->end();
         const glm::mat3x2 t = it == extensions->end() ? glm::mat3x2(1.0f) : transformOf(it->second);
         if (it != extensions->end()) {
             r.present = true;

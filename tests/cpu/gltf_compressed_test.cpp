@@ -208,6 +208,16 @@ TEST_F(GltfCompressed, TextureTransformIsBakedIntoTheUvs) {
     }
 }
 
+TEST_F(GltfCompressed, TextureTransformThatIsNotAnObjectIsIgnored) {
+    fs::path path = test::writeTextureTransformScene(dir_ / "notobject");
+    json j = json::parse(std::ifstream(path));
+    j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = 7;
+    std::ofstream(path) << j.dump();
+    Loaded l = load(path);
+    ASSERT_TRUE(l.scene.ok()) << l.scene.error();
+    EXPECT_EQ(l.scene->meshes[0].uvs, plain_.scene->meshes[0].uvs);
+}
+
 TEST_F(GltfCompressed, TextureTransformsThatDifferWarn) {
     fs::path path = test::writeTextureTransformScene(dir_ / "differ");
     json j = json::parse(std::ifstream(path));
@@ -277,6 +287,9 @@ TEST_F(GltfCompressed, HostileMeshoptData) {
         expectOneLine(with([&](json& e, json&) { e["byteLength"] = cut; }), "EXT_meshopt_compression");
     }
     expectOneLine(with([](json& e, json&) { e["mode"] = "SPARKLES"; }), "unknown mode");
+    // A fallback flag that is not true: the buffer keeps no uri, which a .gltf cannot have.
+    expectOneLine(with([](json&, json& k) { k["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"] = "yes"; }),
+                  "buffer 1 has no uri");
     expectOneLine(with([](json& e, json&) { e["filter"] = "QUATERNION"; }), "filter QUATERNION");
     expectOneLine(with([](json& e, json&) { e["byteStride"] = 6; }), "byteLength");
     expectOneLine(with([](json& e, json&) { e["buffer"] = 9; }), "buffer 9 does not exist");
