@@ -113,6 +113,14 @@ void addSceneOptions(CLI::App& app, SceneOptions& o) {
     app.add_option("--lights-file", o.lightsFile,
                    "Read lights from this JSON file instead of generating them (see lights.json in any output)");
     app.add_flag("--no-scene-lights", o.dropSceneLights, "Ignore lights defined in the glTF file");
+    addStrictFlag(app, o.strict);
+}
+
+CLI::Option* addStrictFlag(CLI::App& app, bool& strict) {
+    return app.add_flag("--strict", strict,
+                        "Refuse a glTF file with NaN or infinite normals, tangents, uvs or colours "
+                        "instead of repairing them (repairs are warnings, and listed in the "
+                        "report)");
 }
 
 CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed) {
@@ -157,6 +165,7 @@ Scene loadScene(const SceneOptions& o) {
         std::vector<std::string> warnings;
         GltfLoadOptions options;
         options.warnings = &warnings;
+        options.strict = o.strict;
         Result<Scene> s = loadGltf(name, options);
         if (!s) throw UsageError(s.error());
         for (const std::string& w : warnings) std::fprintf(stderr, "triptych: warning: %s\n", w.c_str());

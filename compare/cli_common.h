@@ -32,6 +32,7 @@ struct SceneOptions {
     std::string lightRadius;  // "MIN,MAX" in scene units; empty = from the scene bounds
     std::string lightIntensity; // "MIN,MAX" candela; empty = from the radius
     bool dropSceneLights = false;
+    bool strict = false; // glTF: refuse non-finite attributes instead of repairing them
 };
 
 struct DeviceOptions {
@@ -48,6 +49,8 @@ void addSceneOptions(CLI::App& app, SceneOptions& o);
 // --seed with its check (CLI11 alone would wrap "-1" to 2^64-1); for commands that add the
 // scene options one by one (sweep).
 CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed);
+// --strict (SceneOptions::strict), likewise.
+CLI::Option* addStrictFlag(CLI::App& app, bool& strict);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
 // One option per knob of the registered renderers (core/render/knobs.h), bound into

@@ -40,6 +40,13 @@ void printScene(const Scene& s, const SceneFeatures& f) {
                 "point=%d spot=%d directional=%d\n",
                 f.blended, f.masked, f.normalMaps, f.emissive, f.textures, f.vertexColors, f.pointLights,
                 f.spotLights, f.directionalLights);
+    std::string extensions;
+    for (const std::string& e : s.extensions) extensions += (extensions.empty() ? "" : ", ") + e;
+    std::printf("  glTF extensions decoded or applied: %s\n", extensions.empty() ? "none" : extensions.c_str());
+    std::printf("  repairs: %zu accessor(s)\n", s.repairs.size());
+    for (const SceneRepair& r : s.repairs)
+        std::printf("    %s accessor %d: %zu of %zu values were %s; %s\n", r.attribute.c_str(), r.accessor,
+                    r.count, r.total, r.problem.c_str(), r.action.c_str());
 }
 
 void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, const SceneFeatures& f,

@@ -38,7 +38,17 @@ nlohmann::json settingsJson(const RenderSettings& s) {
 }
 
 nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f) {
+    nlohmann::json repairs = nlohmann::json::array();
+    for (const SceneRepair& r : scene.repairs)
+        repairs.push_back({{"attribute", r.attribute},
+                           {"accessor", r.accessor},
+                           {"count", r.count},
+                           {"total", r.total},
+                           {"problem", r.problem},
+                           {"action", r.action}});
     return {{"source", scene.source},
+            {"repairs", repairs},
+            {"extensions", scene.extensions},
             {"meshes", scene.meshes.size()},
             {"triangles", scene.triangleCount()},
             {"vertices", scene.vertexCount()},

@@ -106,7 +106,7 @@ struct Located {
     const uint8_t* sparseValues = nullptr;
 };
 
-Status locate(const tinygltf::Model& model, size_t index, Located& out) {
+Status locate(const tinygltf::Model& model, size_t index, Located& out, bool compressed = false) {
     if (index >= model.accessors.size())
         return Error{"accessor " + std::to_string(index) + " does not exist (the file has " +
                      std::to_string(model.accessors.size()) + ")"};
@@ -119,13 +119,14 @@ Status locate(const tinygltf::Model& model, size_t index, Located& out) {
     if (a.count > kMaxElements)
         return accessorError(index, "count " + std::to_string(a.count) + " is absurd (over 2^" +
                                         std::to_string(kMaxElementsLog2) + ")");
-    if (a.bufferView == -1 && a.count > kMaxZeroFilled)
+    if (a.bufferView == -1 && a.count > kMaxZeroFilled && !compressed)
         return accessorError(index, "has no bufferView yet declares " + std::to_string(a.count) +
                                         " elements (zeros; at most 2^" +
                                         std::to_string(kMaxZeroFilledLog2) +
                                         " without data in the file)");
     out.elementSize = out.componentSize * comps;
     out.stride = out.elementSize;
+    if (compressed) return {}; // its data is in a Draco bitstream, never read through a view
     if (a.bufferView != -1 && a.count > 0) {
         if (a.bufferView >= 0 && size_t(a.bufferView) < model.bufferViews.size()) {
             size_t byteStride = model.bufferViews[size_t(a.bufferView)].byteStride;
@@ -205,13 +206,13 @@ uint32_t decodeIndex(const uint8_t* p, int type) {
 
 } // namespace
 
-Status checkAccessor(const tinygltf::Model& model, size_t index) {
+Status checkAccessor(const tinygltf::Model& model, size_t index, bool compressed) {
     Located loc;
-    return locate(model, index, loc);
+    return locate(model, index, loc, compressed);
 }
 
 Status readFloats(const tinygltf::Model& model, int index, const AttributeSpec& spec,
-                  std::vector<float>& out, size_t& comps) {
+                  std::vector<float>& out, size_t& comps, bool keepNonFinite) {
     Located loc;
     Status s = locate(model, size_t(index), loc);
     if (!s) return s;
@@ -249,8 +250,9 @@ Status readFloats(const tinygltf::Model& model, int index, const AttributeSpec& 
             decodeElement(loc.sparseValues + k * loc.elementSize, &out[target * comps]);
         }
     }
-    for (float v : out)
-        if (!std::isfinite(v)) return Error{what + " holds a NaN or infinite value"};
+    if (!keepNonFinite)
+        for (float v : out)
+            if (!std::isfinite(v)) return Error{what + " holds a NaN or infinite value"};
     return {};
 }
 

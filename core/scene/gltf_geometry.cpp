@@ -158,12 +158,34 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
         "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}, true};
     std::vector<float> data;
     size_t comps = 0;
-    Status s = readFloats(model, attribute("POSITION"), kPosition, data, comps);
+    DracoPrimitive draco;
+    const bool compressed = hasDraco(p);
+    if (compressed) {
+        Status d = decodeDraco(model, p, {kPosition, kNormal, kTangent, kUv, kColor}, draco);
+        if (!d) return fail(d);
+        mode = TINYGLTF_MODE_TRIANGLES; // the bitstream's faces, whatever the mode (strips) said
+    }
+    // An attribute from the Draco bitstream when the extension lists it, else its accessor.
+    auto fetch = [&](const AttributeSpec& spec, int index, bool keepNonFinite) -> Status {
+        auto it = draco.attributes.find(spec.name);
+        if (it == draco.attributes.end())
+            return readFloats(model, index, spec, data, comps, keepNonFinite);
+        data = std::move(it->second);
+        comps = draco.comps[spec.name];
+        if (!keepNonFinite)
+            for (float v : data)
+                if (!std::isfinite(v))
+                    return Error{std::string(spec.name) + " accessor " + std::to_string(index) +
+                                 " (Draco) holds a NaN or infinite value"};
+        return {};
+    };
+    Status s = fetch(kPosition, attribute("POSITION"), false);
     if (!s) return fail(s);
     const size_t n = data.size() / 3;
     out.positions.resize(n);
     for (size_t i = 0; i < n; ++i) // a loop, not memcpy: data.data() is null when n == 0
         out.positions[i] = glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
+    const bool keep = !options.strict; // non-finite values are repaired below, not refused
     auto readOptional = [&](const AttributeSpec& spec, auto&& store) -> Status {
         int index = attribute(spec.name);
         if (index < 0) return {};
@@ -172,42 +194,93 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
             return Error{std::string(spec.name) + " has " +
                          std::to_string(model.accessors[size_t(index)].count) +
                          " elements but POSITION has " + std::to_string(n)};
-        Status r = readFloats(model, index, spec, data, comps);
+        Status r = fetch(spec, index, keep);
         if (!r) return r;
         store();
         return {};
     };
+    auto finite = [](const float* v, size_t k) {
+        for (size_t c = 0; c < k; ++c)
+            if (!std::isfinite(v[c])) return false;
+        return true;
+    };
+    // Vertices whose value must be replaced, per attribute (empty: none).
+    std::vector<uint8_t> badNormal, badTangent;
+    auto record = [&](const char* name, size_t count, const char* problem, const char* action) {
+        if (count > 0)
+            out.repairs.push_back(SceneRepair{name, attribute(name), count, n, problem, action});
+    };
     s = readOptional(kNormal, [&] {
         out.normals.resize(n);
-        for (size_t i = 0; i < n; ++i)
-            out.normals[i] = safeNormalize(glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]),
-                                           glm::vec3(0, 1, 0));
+        size_t bad = 0;
+        for (size_t i = 0; i < n; ++i) {
+            glm::vec3 v(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
+            float len2 = glm::dot(v, v);
+            if (!finite(&data[3 * i], 3) || !(len2 > 1e-30f) || !std::isfinite(len2)) {
+                if (badNormal.empty()) badNormal.assign(n, 0);
+                badNormal[i] = 1;
+                ++bad;
+            }
+            out.normals[i] = safeNormalize(v, glm::vec3(0, 1, 0));
+        }
+        record("NORMAL", bad, "NaN, infinite or zero-length",
+               "replaced by the area-weighted average of the face normals of the triangles using "
+               "the vertex");
     });
     if (s)
         s = readOptional(kTangent, [&] {
             out.tangents.resize(n);
-            for (size_t i = 0; i < n; ++i)
-                out.tangents[i] =
-                    glm::vec4(glm::vec3(data[4 * i], data[4 * i + 1], data[4 * i + 2]),
-                              data[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
+            size_t bad = 0;
+            for (size_t i = 0; i < n; ++i) {
+                glm::vec3 t(data[4 * i], data[4 * i + 1], data[4 * i + 2]);
+                float len2 = glm::dot(t, t);
+                if (!finite(&data[4 * i], 4) || !(len2 > 1e-30f) || !std::isfinite(len2)) {
+                    if (badTangent.empty()) badTangent.assign(n, 0);
+                    badTangent[i] = 1;
+                    ++bad;
+                }
+                out.tangents[i] = glm::vec4(t, data[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
+            }
+            record("TANGENT", bad, "NaN, infinite or zero-length",
+                   "regenerated from the positions, normals and uvs");
         });
     if (s)
         s = readOptional(kUv, [&] {
             out.uvs.resize(n);
-            for (size_t i = 0; i < n; ++i)
+            size_t bad = 0;
+            for (size_t i = 0; i < n; ++i) {
                 out.uvs[i] = glm::vec2(data[2 * i], data[2 * i + 1]);
+                if (!finite(&data[2 * i], 2)) {
+                    out.uvs[i] = glm::vec2(0.0f);
+                    ++bad;
+                }
+            }
+            record("TEXCOORD_0", bad, "NaN or infinite", "set to (0, 0)");
         });
     if (s)
         s = readOptional(kColor, [&] {
             out.colors.resize(n);
-            for (size_t i = 0; i < n; ++i)
+            size_t bad = 0;
+            for (size_t i = 0; i < n; ++i) {
                 out.colors[i] = glm::vec4(data[comps * i], data[comps * i + 1], data[comps * i + 2],
                                           comps == 4 ? data[comps * i + 3] : 1.0f);
+                if (!finite(&data[comps * i], comps)) {
+                    out.colors[i] = glm::vec4(1.0f);
+                    ++bad;
+                }
+            }
+            record("COLOR_0", bad, "NaN or infinite", "set to white, opaque");
         });
     if (!s) return fail(s);
 
     std::vector<uint32_t> indices;
-    if (p.indices >= 0) {
+    if (compressed) {
+        indices = std::move(draco.indices);
+        for (uint32_t i : indices)
+            if (i >= n)
+                return fail(Error{"Draco index " + std::to_string(i) + " is out of range (" +
+                                  std::to_string(n) + " vertices)"});
+    } else if (p.indices >= 0) {
         s = readIndices(model, p.indices, n, indices);
         if (!s) return fail(s);
     } else {
@@ -227,23 +300,48 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
 
     if (out.uvs.empty()) out.uvs.assign(n, glm::vec2(0.0f));
     if (out.colors.empty()) out.colors.assign(n, glm::vec4(1.0f));
+    if (p.material >= 0 && size_t(p.material) < model.materials.size()) {
+        const UvTransform t = materialUvTransform(model.materials[size_t(p.material)]);
+        if (t.present)
+            for (glm::vec2& uv : out.uvs) {
+                uv = t.matrix * glm::vec3(uv, 1.0f);
+                // Huge (finite) uvs times a scale can overflow: no texel is meant there.
+                if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
+            }
+    }
+    if (!badNormal.empty()) {
+        std::vector<glm::vec3> smooth;
+        makeSmoothNormals(out.positions, out.indices, smooth);
+        for (size_t i = 0; i < n; ++i)
+            if (badNormal[i]) out.normals[i] = smooth[i];
+    }
     if (out.normals.empty()) {
         // The spec asks for flat normals; smooth ones are an option.
-        if (options.smoothNormals)
+        if (options.smoothNormals) {
             makeSmoothNormals(out.positions, out.indices, out.normals);
-        else
-            makeFlatNormals(out);
-    }
-    if (out.tangents.empty()) {
-        bool normalMapped = p.material >= 0 && size_t(p.material) < model.materials.size() &&
-                            model.materials[size_t(p.material)].normalTexture.index >= 0;
-        if (normalMapped) {
-            makeTangents(out.positions, out.normals, out.uvs, out.indices, out.tangents);
         } else {
-            out.tangents.resize(out.positions.size());
-            for (size_t i = 0; i < out.positions.size(); ++i)
-                out.tangents[i] = glm::vec4(anyPerpendicular(out.normals[i]), 1.0f);
+            if (!badTangent.empty()) deindex(badTangent, out.indices);
+            makeFlatNormals(out);
         }
+    }
+    const bool normalMapped = p.material >= 0 && size_t(p.material) < model.materials.size() &&
+                              model.materials[size_t(p.material)].normalTexture.index >= 0;
+    auto generateTangents = [&](std::vector<glm::vec4>& tangents) {
+        if (normalMapped) {
+            makeTangents(out.positions, out.normals, out.uvs, out.indices, tangents);
+        } else {
+            tangents.resize(out.positions.size());
+            for (size_t i = 0; i < out.positions.size(); ++i)
+                tangents[i] = glm::vec4(anyPerpendicular(out.normals[i]), 1.0f);
+        }
+    };
+    if (out.tangents.empty()) {
+        generateTangents(out.tangents);
+    } else if (!badTangent.empty()) {
+        std::vector<glm::vec4> generated;
+        generateTangents(generated);
+        for (size_t i = 0; i < out.tangents.size(); ++i)
+            if (badTangent[i]) out.tangents[i] = generated[i];
     }
     return {};
 }

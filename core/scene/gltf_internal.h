@@ -73,6 +73,14 @@ Status checkGlb(const std::vector<unsigned char>& bytes, std::string_view& jsonT
 // imageProblems[i], later a placeholder); fills `access` with the files that passed.
 Status prescan(std::string_view jsonText, const std::filesystem::path& folder, bool binary,
                FileAccess& access, std::vector<std::string>& imageProblems, const WarnFn& warn);
+// Rewrites what tinygltf 2.7 refuses in compressed files, before it parses (`bytes` and
+// `jsonText` replaced; for a GLB, its JSON chunk; a no-op for other files):
+// - an EXT_meshopt_compression fallback buffer without a uri (its bytes exist only compressed)
+//   gets a one-byte data URI;
+// - a KHR_draco_mesh_compression primitive's index accessor without a bufferView (its indices
+//   are in the bitstream) names the Draco bufferView, which tinygltf demands of any index
+//   accessor; checkAccessor(compressed) never reads through it.
+Status patchForTinygltf(std::vector<unsigned char>& bytes, bool binary, std::string_view& jsonText);
 // Routes tinygltf's file access through `access` (which must outlive the load) and makes it
 // keep images encoded (tinygltf::Image::as_is) for loadMaterials to decode.
 void confine(tinygltf::TinyGLTF& loader, FileAccess& access);
@@ -97,8 +105,10 @@ void placeCamera(const tinygltf::Model& model, const std::vector<Instance>& inst
 // --- gltf_accessors.cpp ------------------------------------------------------------------
 
 // Checks one accessor (and its sparse part) against the bufferViews and the buffer bytes
-// tinygltf actually loaded. loadGltf runs it on every accessor, used or not.
-Status checkAccessor(const tinygltf::Model& model, size_t index);
+// tinygltf actually loaded. loadGltf runs it on every accessor, used or not. `compressed`: a
+// Draco primitive's accessor, whose data comes from the bitstream: only its type and count
+// are checked (the 2^24 limit; not the 2^20 one of zero-filled accessors, which it is not).
+Status checkAccessor(const tinygltf::Model& model, size_t index, bool compressed = false);
 
 // What an attribute may hold.
 struct AttributeSpec {
@@ -110,12 +120,37 @@ struct AttributeSpec {
 
 // Reads a float attribute (integers converted, normalized ones to [0,1] or [-1,1]; sparse
 // values applied); `comps` receives the element width (3 or 4 for COLOR_0). Errors name the
-// attribute and accessor; NaN and infinity are errors.
+// attribute and accessor; NaN and infinity are errors unless `keepNonFinite` (the caller
+// repairs them).
 Status readFloats(const tinygltf::Model& model, int index, const AttributeSpec& spec,
-                  std::vector<float>& out, size_t& comps);
+                  std::vector<float>& out, size_t& comps, bool keepNonFinite = false);
 // Reads an index accessor; every index must be below vertexCount.
 Status readIndices(const tinygltf::Model& model, int index, size_t vertexCount,
                    std::vector<uint32_t>& out);
+
+// --- gltf_draco.cpp ---------------------------------------------------------------------
+
+// A KHR_draco_mesh_compression primitive, decoded: float attributes by glTF name (integers
+// converted as readFloats does), triangle-list indices.
+struct DracoPrimitive {
+    size_t points = 0;
+    std::map<std::string, std::vector<float>> attributes;
+    std::map<std::string, size_t> comps;
+    std::vector<uint32_t> indices;
+};
+
+bool hasDraco(const tinygltf::Primitive& p);
+// Decodes the primitive's bitstream: the attributes of `specs` the extension lists. The
+// decoded vertex and index counts must equal those of the POSITION and index accessors.
+Status decodeDraco(const tinygltf::Model& model, const tinygltf::Primitive& p,
+                   const std::vector<AttributeSpec>& specs, DracoPrimitive& out);
+
+// --- gltf_meshopt.cpp --------------------------------------------------------------------
+
+// Decodes every EXT_meshopt_compression bufferView into a buffer of its own and points the
+// view at it (before checkAccessor). Truncated or corrupt data, and a view declaring more
+// than its compressed bytes can hold, are errors. `any`: some view was decoded.
+Status decodeMeshopt(tinygltf::Model& model, bool& any);
 
 // --- gltf_geometry.cpp -------------------------------------------------------------------
 
@@ -129,14 +164,18 @@ struct LocalPrimitive {
     std::vector<glm::vec4> colors;
     std::vector<uint32_t> indices;
     int material = -1; // as in the file, unchecked
+    std::vector<SceneRepair> repairs; // what readPrimitive replaced, one per attribute
 };
 
 struct PrimitiveOptions {
     bool smoothNormals = false; // missing normals: area-weighted smooth instead of flat
+    bool strict = false;        // non-finite attribute values are errors, not repairs
 };
 
 // Reads primitive `prim` of mesh `mesh` (indices already checked by the caller), converting
-// strips and fans and generating what is missing. Returns an error for invalid data; sets
+// strips and fans and generating what is missing. Zero-length normals and tangents and,
+// unless options.strict (then an error), NaN/infinite normals, tangents, uvs and colours are
+// replaced and listed in out.repairs (the caller warns). Returns an error for invalid data; sets
 // `out.positions` empty (with a warning) for a primitive that is skipped (points, lines, no
 // POSITION).
 Status readPrimitive(const tinygltf::Model& model, int mesh, int prim,
@@ -171,6 +210,19 @@ bool toRgba8(const unsigned char* data, size_t size, int width, int height, int 
 
 // Reads the width and height from a PNG or JPEG header without decoding it.
 bool peekImageSize(const unsigned char* bytes, size_t size, int& width, int& height);
+
+// KHR_texture_transform of a material, baked into the vertex uvs by readPrimitive. A vertex
+// has one uv set, so this is faithful only when every texture of the material has the same
+// transform (a texture without the extension has the identity); otherwise `problem` says which
+// slot's `matrix` is applied to all (the first textured one: base colour, metal-rough, normal,
+// occlusion, emissive) and loadMaterials warns once per material.
+constexpr const char* kTextureTransform = "KHR_texture_transform";
+struct UvTransform {
+    bool present = false;          // some texture of the material has the extension
+    glm::mat3x2 matrix{1.0f};      // uv' = matrix * vec3(uv, 1)
+    std::string problem;           // non-empty: what is not applied faithfully (one line)
+};
+UvTransform materialUvTransform(const tinygltf::Material& m);
 
 // Fills scene.materials (one per glTF material, in order) and scene.textures (one per
 // (image, sRGB) pair actually used, images decoded in parallel). Images the file could not

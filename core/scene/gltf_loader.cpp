@@ -50,6 +50,16 @@ Status checkDeclaredSize(const tinygltf::Model& model, const std::vector<Instanc
     return {};
 }
 
+// One warning line per repaired accessor, however many primitives share it.
+void noteRepair(SceneRepair r, Scene& scene, const WarnFn& warn) {
+    for (const SceneRepair& seen : scene.repairs)
+        if (seen.attribute == r.attribute && seen.accessor == r.accessor) return;
+    warn("repaired " + r.attribute + " accessor " + std::to_string(r.accessor) + ": " +
+         std::to_string(r.count) + " of " + std::to_string(r.total) + " values were " +
+         r.problem + "; " + r.action + " (--strict refuses the file instead)");
+    scene.repairs.push_back(std::move(r));
+}
+
 Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances,
                    const GltfLoadOptions& options, Scene& scene, const WarnFn& warn) {
     std::vector<size_t> usesLeft(model.meshes.size(), 0);
@@ -61,6 +71,7 @@ Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& in
     uint64_t vertices = 0, indices = 0;
     PrimitiveOptions primitiveOptions;
     primitiveOptions.smoothNormals = options.smoothMissingNormals;
+    primitiveOptions.strict = options.strict;
     for (const Instance& inst : instances) {
         if (inst.node >= 0) addLight(model, inst, scene, warn);
         if (inst.mesh < 0) continue;
@@ -72,6 +83,7 @@ Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& in
                 Status s =
                     readPrimitive(model, inst.mesh, int(p), primitiveOptions, prims[p], warn);
                 if (!s) return s;
+                for (SceneRepair& r : prims[p].repairs) noteRepair(std::move(r), scene, warn);
             }
         }
         for (size_t p = 0; p < prims.size(); ++p) {
@@ -117,6 +129,7 @@ Result<Scene> parse(std::vector<unsigned char>& bytes, const std::string& name,
     std::string_view jsonText(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (binary)
         if (Status s = checkGlb(bytes, jsonText); !s) return Error{s.error()};
+    if (Status s = patchForTinygltf(bytes, binary, jsonText); !s) return Error{s.error()};
     FileAccess access;
     std::vector<std::string> imageProblems;
     if (Status s = prescan(jsonText, folder, binary, access, imageProblems, warn); !s)
@@ -138,18 +151,33 @@ Result<Scene> parse(std::vector<unsigned char>& bytes, const std::string& name,
         return Error{"tinygltf: " + (line.empty() ? "cannot load the file" : line)};
     }
     bytes = {};
+    Scene scene;
+    scene.source = name;
     imageProblems.resize(model.images.size());
     for (size_t i = 0; i < model.images.size(); ++i)
         if (imageProblems[i].empty() && model.images[i].image.empty())
             imageProblems[i] = "could not be read (" + firstLine(tinyWarn) + ")";
 
+    bool anyMeshopt = false;
+    if (Status s = decodeMeshopt(model, anyMeshopt); !s) return Error{s.error()};
+    if (anyMeshopt) scene.extensions.push_back("EXT_meshopt_compression (meshoptimizer)");
+    std::vector<uint8_t> dracoAccessor(model.accessors.size(), 0);
+    bool anyDraco = false;
+    for (const tinygltf::Mesh& mesh : model.meshes)
+        for (const tinygltf::Primitive& p : mesh.primitives) {
+            if (!hasDraco(p)) continue;
+            anyDraco = true;
+            for (const auto& [name, index] : p.attributes)
+                if (index >= 0 && size_t(index) < dracoAccessor.size()) dracoAccessor[size_t(index)] = 1;
+            if (p.indices >= 0 && size_t(p.indices) < dracoAccessor.size())
+                dracoAccessor[size_t(p.indices)] = 1;
+        }
+    if (anyDraco) scene.extensions.push_back("KHR_draco_mesh_compression (libdraco)");
     for (size_t i = 0; i < model.accessors.size(); ++i)
-        if (Status s = checkAccessor(model, i); !s) return Error{s.error()};
+        if (Status s = checkAccessor(model, i, dracoAccessor[i] != 0); !s) return Error{s.error()};
     std::vector<Instance> instances;
     if (Status s = collectInstances(model, instances); !s) return Error{s.error()};
     if (Status s = checkDeclaredSize(model, instances); !s) return Error{s.error()};
-    Scene scene;
-    scene.source = name;
     if (Status s = loadMaterials(model, imageProblems, scene, warn); !s) return Error{s.error()};
     if (Status s = buildMeshes(model, instances, options, scene, warn); !s) return Error{s.error()};
     for (const tinygltf::Node& node : model.nodes)

@@ -16,6 +16,9 @@ struct GltfLoadOptions {
     // Missing NORMALs: the spec's flat normals (false: vertices are split per triangle) or
     // area-weighted smooth ones (true).
     bool smoothMissingNormals = false;
+    // Refuse, instead of repairing, NaN/infinite normals, tangents, uvs and colours
+    // (Scene::repairs lists what was repaired; zero-length normals and tangents always are).
+    bool strict = false;
 };
 
 Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options = {});

@@ -3,6 +3,7 @@
 // images that cannot be had.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <map>
 #include <thread>
 
@@ -355,9 +356,81 @@ Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string
             warn("material " + std::to_string(i) + " uses TEXCOORD_" + std::to_string(texCoord) +
                  "; only TEXCOORD_0 is read");
         }
+        UvTransform transform = materialUvTransform(src);
+        if (!transform.problem.empty())
+            warn("material " + std::to_string(i) + ": KHR_texture_transform " + transform.problem);
+        if (transform.present && std::find(scene.extensions.begin(), scene.extensions.end(),
+                                           kTextureTransform) == scene.extensions.end())
+            scene.extensions.push_back(kTextureTransform);
         scene.materials.push_back(std::move(m));
     }
     return {};
+}
+
+namespace {
+
+// The spec's matrix, T * R * S, as a 2x3 (column-major: three columns of two).
+glm::mat3x2 transformOf(const tinygltf::Value& ext) {
+    auto number = [&](const tinygltf::Value& v, float fallback) {
+        return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? float(v.GetNumberAsDouble())
+                                                                     : fallback;
+    };
+    auto pair = [&](const char* key, glm::vec2 fallback) {
+        const tinygltf::Value& a = ext.Get(key);
+        if (!a.IsArray() || a.ArrayLen() != 2) return fallback;
+        return glm::vec2(number(a.Get(0), fallback.x), number(a.Get(1), fallback.y));
+    };
+    const glm::vec2 offset = pair("offset", glm::vec2(0.0f));
+    const glm::vec2 scale = pair("scale", glm::vec2(1.0f));
+    const float rotation = number(ext.Get("rotation"), 0.0f);
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    // u' = offset.x + c * scale.x * u + s * scale.y * v; v' = offset.y - s * scale.x * u + c *
+    // scale.y * v.
+    return glm::mat3x2(glm::vec2(c * scale.x, -s * scale.x), glm::vec2(s * scale.y, c * scale.y),
+                       offset);
+}
+
+} // namespace
+
+UvTransform materialUvTransform(const tinygltf::Material& m) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    const std::pair<const char*, const tinygltf::ExtensionMap*> slots[] = {
+        {"baseColorTexture", pbr.baseColorTexture.index >= 0 ? &pbr.baseColorTexture.extensions
+                                                             : nullptr},
+        {"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index >= 0
+                                         ? &pbr.metallicRoughnessTexture.extensions
+                                         : nullptr},
+        {"normalTexture", m.normalTexture.index >= 0 ? &m.normalTexture.extensions : nullptr},
+        {"occlusionTexture",
+         m.occlusionTexture.index >= 0 ? &m.occlusionTexture.extensions : nullptr},
+        {"emissiveTexture", m.emissiveTexture.index >= 0 ? &m.emissiveTexture.extensions : nullptr},
+    };
+    UvTransform r;
+    const char* first = nullptr;
+    for (const auto& [name, extensions] : slots) {
+        if (!extensions) continue;
+        auto it = extensions->find(kTextureTransform);
+        // Not an object: nothing to read (and tinygltf's Value::Get asserts on it).
+        if (it != extensions->end() && !it->second.IsObject()) it = extensions->end();
+        const glm::mat3x2 t = it == extensions->end() ? glm::mat3x2(1.0f) : transformOf(it->second);
+        if (it != extensions->end()) {
+            r.present = true;
+            const tinygltf::Value& texCoord = it->second.Get("texCoord");
+            if (texCoord.IsNumber() && texCoord.GetNumberAsInt() != 0 && r.problem.empty())
+                r.problem = std::string("on ") + name + " selects TEXCOORD_" +
+                            std::to_string(texCoord.GetNumberAsInt()) +
+                            ", which is ignored (only TEXCOORD_0 is read)";
+        }
+        if (!first) {
+            first = name;
+            r.matrix = t;
+        } else if (t != r.matrix && r.problem.find("differs") == std::string::npos) {
+            // One uv set per vertex: the transform is baked into it, so it can only be one.
+            r.problem = std::string("differs between ") + first + " and " + name + "; only " +
+                        first + "'s is applied, to every texture of the material";
+        }
+    }
+    return r;
 }
 
 } // namespace tp::gltf

@@ -98,8 +98,21 @@ struct Camera {
     float zfar = 0.0f;
 };
 
+// One attribute accessor whose values the glTF loader replaced (docs/hostile_input.md,
+// "Repaired, not refused"): `count` of its `total` elements were replaced as `action` says.
+struct SceneRepair {
+    std::string attribute; // NORMAL, TANGENT, TEXCOORD_0, COLOR_0
+    int accessor = -1;
+    size_t count = 0;
+    size_t total = 0;
+    std::string problem; // what was wrong with them
+    std::string action;  // what replaced them
+};
+
 struct Scene {
     std::string source; // file path, or "builtin:courtyard" etc.
+    std::vector<SceneRepair> repairs;    // loader repairs, one per accessor
+    std::vector<std::string> extensions; // glTF extensions the loader decoded or applied
     std::vector<Mesh> meshes;
     std::vector<Material> materials; // never empty once loaded (a default material is added)
     std::vector<Texture> textures;

@@ -64,6 +64,15 @@ while IFS=$'\t' read -r name scene expect mention what; do
     report "scene $name ($what)" "$problem"
 done <"$scenes/CASES.tsv"
 [ "$(snapshot)" = "$before" ] || { echo "FAIL something was written beside the scenes"; fail=$((fail + 1)); }
+# --strict: what is repaired above is refused, for every command that loads a scene.
+strict_nan="NORMAL accessor 2 holds a NaN or infinite value"
+for cmd in render compare; do
+    expect_refusal "$cmd --strict on a NaN normal" "$strict_nan" \
+        $cmd "$scenes/nan_normals/scene.gltf" --strict "${fast[@]}" --out "$out"
+done
+expect_refusal "info --strict on a NaN normal" "$strict_nan" info "$scenes/nan_normals/scene.gltf" --strict
+expect_refusal "sweep --strict on a NaN normal" "$strict_nan" \
+    sweep "$scenes/nan_normals/scene.gltf" --strict --lights 1 --res 16x16 --out "$out"
 
 # --- Options of every command -------------------------------------------------------------
 o=(--out "$out")

@@ -3,10 +3,12 @@
 // 64-bit) sum or product would have wrapped to.
 #include "tests/cli/hostile_scenes.h"
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
 
+#include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
 namespace tp::hostile {
@@ -106,6 +108,24 @@ Bytes text(const std::string& s) {
     return Bytes(s.begin(), s.end());
 }
 
+// `bytes` as a base64 data URI: a scene with it needs no file beside it (fuzz seeds).
+std::string dataUri(const Bytes& bin) {
+    static const char* kAlphabet =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const size_t n = bin.size();
+    std::string uri = "data:application/octet-stream;base64,";
+    for (size_t i = 0; i < n; i += 3) {
+        uint32_t v = uint32_t(bin[i]) << 16;
+        if (i + 1 < n) v |= uint32_t(bin[i + 1]) << 8;
+        if (i + 2 < n) v |= bin[i + 2];
+        uri += kAlphabet[v >> 18 & 63];
+        uri += kAlphabet[v >> 12 & 63];
+        uri += i + 1 < n ? kAlphabet[v >> 6 & 63] : '=';
+        uri += i + 2 < n ? kAlphabet[v & 63] : '=';
+    }
+    return uri;
+}
+
 // A triangle whose material's base colour shows image 0 at `uri`.
 json texturedTriangle(const json& images) {
     json g = triangleJson();
@@ -145,7 +165,10 @@ class Writer {
     // A .gltf with tri.bin beside it.
     void gltf(Case c, const json& g, const Bytes& bin = triangleBin()) {
         const std::string binPath = (fs::path(c.scene).parent_path() / "tri.bin").string();
-        files(std::move(c), {{c.scene, text(g.dump(1))}, {binPath, bin}});
+        // Named before `c` is moved: clang evaluates the arguments left to right, so reading
+        // c.scene in the call read a moved-from string (the fuzz seeds lost their scenes).
+        const std::string scene = c.scene;
+        files(std::move(c), {{scene, text(g.dump(1))}, {binPath, bin}});
     }
     std::vector<Case> done() { return std::move(cases_); }
 
@@ -358,6 +381,96 @@ void fileCases(Writer& w) {
 
 } // namespace
 
+// Non-finite attributes (repaired with a warning, positions refused) and compressed data that
+// is garbage (refused with the extension's name).
+void repairAndCompressedCases(Writer& w) {
+    auto withAttribute = [](const char* name, const char* type, const std::vector<float>& values,
+                            json& g, Bytes& bin) {
+        const size_t offset = bin.size();
+        bin.resize(offset + values.size() * 4);
+        std::memcpy(bin.data() + offset, values.data(), values.size() * 4);
+        g["buffers"][0]["byteLength"] = bin.size();
+        g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
+        g["accessors"].push_back({{"bufferView", g["bufferViews"].size() - 1},
+                                  {"componentType", 5126},
+                                  {"count", 3},
+                                  {"type", type}});
+        g["meshes"][0]["primitives"][0]["attributes"][name] = g["accessors"].size() - 1;
+    };
+    const float nan = std::nanf(""), inf = INFINITY;
+    json g = triangleJson();
+    Bytes bin = triangleBin();
+    withAttribute("NORMAL", "VEC3", {nan, 0, 1, 0, 0, 1, 0, 0, 0}, g, bin);
+    w.gltf({"nan_normals", "scene.gltf", W, "repaired NORMAL accessor 2: 2 of 3",
+            "a NaN and a zero-length normal (repaired with the face normal)"}, g, bin);
+    g = triangleJson();
+    bin = triangleBin();
+    withAttribute("TEXCOORD_0", "VEC2", {0, 0, inf, 1, 1, nan}, g, bin);
+    withAttribute("TANGENT", "VEC4", {1, 0, 0, 1, nan, 0, 0, 1, 1, 0, 0, inf}, g, bin);
+    w.gltf({"nan_uvs_and_tangents", "scene.gltf", W, "repaired TEXCOORD_0 accessor 2: 2 of 3",
+            "infinite and NaN uvs, NaN tangent xyz and infinite w (repaired)"}, g, bin);
+    bin = triangleBin();
+    const float position = nan;
+    std::memcpy(bin.data() + 16, &position, 4);
+    w.gltf({"nan_position", "scene.gltf", E, "POSITION accessor 0 holds a NaN",
+            "a NaN position (the geometry is unknowable: refused)"}, triangleJson(), bin);
+
+    // 36 bytes of triangleBin()'s positions read as a Draco bitstream.
+    g = triangleJson();
+    g["accessors"][0].erase("bufferView");
+    g["accessors"][1].erase("bufferView");
+    g["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"] = {
+        {"bufferView", 0}, {"attributes", {{"POSITION", 0}}}};
+    g["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    g["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    w.gltf({"draco_garbage", "scene.gltf", E, "KHR_draco_mesh_compression",
+            "a Draco primitive whose bitstream is 36 bytes of floats"}, g);
+    bin = triangleBin();
+    const char draco[] = "DRACO\x02\x02\x01\x01\x00";
+    std::memcpy(bin.data(), draco, 10); // a valid header, then the floats: truncated
+    w.gltf({"draco_truncated", "scene.gltf", E, "KHR_draco_mesh_compression",
+            "a Draco header (2.2, edgebreaker) followed by 26 bytes of floats"}, g, bin);
+
+    // The positions' view meshopt-compressed, its bytes the plain floats: not meshopt data.
+    g = triangleJson();
+    g["buffers"].push_back({{"byteLength", 36}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+    g["bufferViews"][0] = {{"buffer", 1}, {"byteLength", 36}, {"byteStride", 12},
+                           {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteLength", 36},
+                                                                         {"byteStride", 12}, {"count", 3},
+                                                                         {"mode", "ATTRIBUTES"}}}}}};
+    g["extensionsUsed"] = {"EXT_meshopt_compression"};
+    g["extensionsRequired"] = {"EXT_meshopt_compression"};
+    w.gltf({"meshopt_garbage", "scene.gltf", E, "EXT_meshopt_compression",
+            "a meshopt ATTRIBUTES view whose bytes are plain floats"}, g);
+    // A valid meshopt triangle with a NaN normal: decoded, then repaired (a seed for the fuzzer).
+    {
+        json v = triangleJson();
+        Bytes b = triangleBin();
+        std::vector<uint8_t> encoded(meshopt_encodeVertexBufferBound(3, 12));
+        encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), b.data(), 3, 12));
+        const size_t offset = b.size();
+        b.insert(b.end(), encoded.begin(), encoded.end());
+        v["buffers"][0]["byteLength"] = b.size();
+        v["buffers"].push_back({{"byteLength", 36}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+        v["bufferViews"][0] = {{"buffer", 1}, {"byteLength", 36}, {"byteStride", 12},
+                               {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteOffset", offset},
+                                                                             {"byteLength", encoded.size()},
+                                                                             {"byteStride", 12}, {"count", 3},
+                                                                             {"mode", "ATTRIBUTES"}}}}}};
+        while (b.size() % 4) b.push_back(0);
+        withAttribute("NORMAL", "VEC3", {0, 0, 1, nan, nan, nan, 0, 0, 1}, v, b);
+        v["extensionsUsed"] = {"EXT_meshopt_compression"};
+        v["extensionsRequired"] = {"EXT_meshopt_compression"};
+        v["buffers"][0]["uri"] = dataUri(b); // self-contained: every case's tri.bin is one file to the fuzzer
+        w.gltf({"meshopt_triangle_nan_normal", "scene.gltf", W, "repaired NORMAL accessor 2: 1 of 3",
+                "a meshopt-compressed triangle (valid) with a NaN normal"}, v, b);
+    }
+    g["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["count"] = 1 << 24;
+    g["bufferViews"][0]["byteLength"] = 12 << 24;
+    w.gltf({"meshopt_count_bomb", "scene.gltf", E, "cannot hold",
+            "a meshopt view of 36 compressed bytes declaring 2^24 vertices (192 MiB)"}, g);
+}
+
 std::vector<Case> writeHostileScenes(const fs::path& root) {
     fs::create_directories(root);
     Writer w(root);
@@ -368,26 +481,13 @@ std::vector<Case> writeHostileScenes(const fs::path& root) {
     uriCases(w);
     textureCases(w);
     zeroFillCases(w);
+    repairAndCompressedCases(w);
     return w.done();
 }
 
 std::vector<uint8_t> validTriangleGltf() {
-    static const char* kAlphabet =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    const Bytes bin = triangleBin();
-    const size_t n = bin.size();
-    std::string uri = "data:application/octet-stream;base64,";
-    for (size_t i = 0; i < n; i += 3) {
-        uint32_t v = uint32_t(bin[i]) << 16;
-        if (i + 1 < n) v |= uint32_t(bin[i + 1]) << 8;
-        if (i + 2 < n) v |= bin[i + 2];
-        uri += kAlphabet[v >> 18 & 63];
-        uri += kAlphabet[v >> 12 & 63];
-        uri += i + 1 < n ? kAlphabet[v >> 6 & 63] : '=';
-        uri += i + 2 < n ? kAlphabet[v & 63] : '=';
-    }
     json g = triangleJson();
-    g["buffers"][0]["uri"] = uri;
+    g["buffers"][0]["uri"] = dataUri(triangleBin());
     return text(g.dump());
 }
 

@@ -626,11 +626,13 @@ TEST_F(GltfGenerated, RequiredUnknownExtension) {
 }
 
 TEST_F(GltfGenerated, UsedUnsupportedExtensionWarns) {
-    gltf_["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_clearcoat"};
+    gltf_["extensionsUsed"] = {"KHR_materials_sheen", "KHR_materials_clearcoat",
+                               "KHR_texture_transform"};
     Loaded l = load(write());
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
-    EXPECT_TRUE(anyContains(l.warnings, "KHR_texture_transform"));
+    EXPECT_TRUE(anyContains(l.warnings, "KHR_materials_sheen"));
     EXPECT_TRUE(anyContains(l.warnings, "KHR_materials_clearcoat"));
+    EXPECT_FALSE(anyContains(l.warnings, "KHR_texture_transform")); // read since issue 14
 }
 
 TEST_F(GltfGenerated, BufferUriThatLeavesTheFolder) {
@@ -682,6 +684,111 @@ TEST_F(GltfGenerated, GlbHeaderChecks) {
     std::memcpy(badChunk.data() + 12, &tooLong, 4);
     writeGlb(badChunk);
     expectOneLineError(load(path), path, "JSON chunk");
+}
+
+// ---- Repairs (docs/hostile_input.md, "Repaired, not refused") ------------------------------
+
+// The triangle with NORMAL (NaN at 0, zero-length at 1), TANGENT (infinite at 2), TEXCOORD_0
+// (NaN at 1) and COLOR_0 (NaN at 0): every one repaired, one line and one record each.
+TEST_F(GltfGenerated, NonFiniteAttributesAreRepairedLoudly) {
+    const float nan = std::nanf(""), inf = INFINITY;
+    float normals[9] = {nan, 0, 1, 0, 0, 0, 0, 0, 1};
+    float tangents[12] = {1, 0, 0, 1, 1, 0, 0, -1, inf, 0, 0, 1};
+    float uvs[6] = {0, 0, nan, 1, 1, 1};
+    float colors[12] = {nan, 1, 1, 1, 0.5f, 0.5f, 0.5f, 1, 1, 1, 1, 1};
+    auto& attributes = gltf_["meshes"][0]["primitives"][0]["attributes"];
+    auto add = [&](const void* data, size_t size, const char* type) {
+        return addAccessor({{"bufferView", addView(data, size)},
+                            {"componentType", 5126},
+                            {"count", 3},
+                            {"type", type}});
+    };
+    attributes["NORMAL"] = add(normals, sizeof normals, "VEC3");
+    attributes["TANGENT"] = add(tangents, sizeof tangents, "VEC4");
+    attributes["TEXCOORD_0"] = add(uvs, sizeof uvs, "VEC2");
+    attributes["COLOR_0"] = add(colors, sizeof colors, "VEC4");
+    fs::path path = write();
+    Loaded l = load(path);
+    ASSERT_TRUE(l.scene.ok()) << l.scene.error();
+    const Scene& s = *l.scene;
+    expectSaneAttributes(s);
+    const Mesh& m = s.meshes[0];
+    for (size_t i = 0; i < 3; ++i) {
+        // The triangle's face normal, +z.
+        EXPECT_NEAR(glm::length(m.normals[i] - glm::vec3(0, 0, 1)), 0.0f, 1e-6f) << i;
+        EXPECT_TRUE(std::isfinite(glm::dot(m.tangents[i], m.tangents[i]))) << i;
+        EXPECT_NEAR(glm::length(glm::vec3(m.tangents[i])), 1.0f, 1e-5f) << i;
+    }
+    EXPECT_EQ(m.tangents[0], glm::vec4(1, 0, 0, 1)); // good ones are kept
+    EXPECT_EQ(m.tangents[1].w, -1.0f);
+    EXPECT_EQ(m.uvs[1], glm::vec2(0.0f));
+    EXPECT_EQ(m.uvs[2], glm::vec2(1.0f));
+    EXPECT_EQ(m.colors[0], glm::vec4(1.0f));
+    EXPECT_EQ(m.colors[1], glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    ASSERT_EQ(s.repairs.size(), 4u);
+    std::map<std::string, SceneRepair> byName;
+    for (const SceneRepair& r : s.repairs)
+        byName[r.attribute] = r;
+    EXPECT_EQ(byName["NORMAL"].count, 2u);
+    EXPECT_EQ(byName["NORMAL"].total, 3u);
+    EXPECT_EQ(byName["NORMAL"].accessor, int(attributes["NORMAL"]));
+    EXPECT_EQ(byName["TANGENT"].count, 1u);
+    EXPECT_EQ(byName["TEXCOORD_0"].count, 1u);
+    EXPECT_EQ(byName["COLOR_0"].count, 1u);
+    ASSERT_EQ(l.warnings.size(), 4u);
+    for (const std::string& w : l.warnings) {
+        EXPECT_EQ(w.find('\n'), std::string::npos) << w;
+        EXPECT_NE(w.find("scene.gltf: repaired "), std::string::npos) << w;
+    }
+    EXPECT_TRUE(anyContains(l.warnings, "repaired NORMAL accessor " +
+                                            std::to_string(int(attributes["NORMAL"])) +
+                                            ": 2 of 3 values"));
+
+    // --strict: today's refusal, naming the attribute and accessor.
+    GltfLoadOptions strict;
+    strict.strict = true;
+    expectOneLineError(load(path, strict), path, "NORMAL accessor");
+}
+
+TEST_F(GltfGenerated, RepairedNormalsAreTheFaceNormalsAroundTheVertex) {
+    // Two triangles of a quad folded 90 degrees along the x axis, sharing vertices 0 and 1:
+    // the shared vertices' repaired normal is the area-weighted mean of +z and +y.
+    float positions[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -1};
+    uint16_t indices[6] = {0, 1, 2, 0, 1, 3};
+    const float nan = std::nanf("");
+    float normals[12] = {nan, nan, nan, nan, nan, nan, 0, 0, 1, 0, 1, 0};
+    gltf_["accessors"][0] = {{"bufferView", addView(positions, sizeof positions)},
+                             {"componentType", 5126},
+                             {"count", 4},
+                             {"type", "VEC3"},
+                             {"min", {0, 0, -1}},
+                             {"max", {1, 1, 0}}};
+    gltf_["accessors"][1] = {{"bufferView", addView(indices, sizeof indices)},
+                             {"componentType", 5123},
+                             {"count", 6},
+                             {"type", "SCALAR"}};
+    gltf_["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] =
+        addAccessor({{"bufferView", addView(normals, sizeof normals)},
+                     {"componentType", 5126},
+                     {"count", 4},
+                     {"type", "VEC3"}});
+    Loaded l = load(write());
+    ASSERT_TRUE(l.scene.ok()) << l.scene.error();
+    const Mesh& m = l.scene->meshes[0];
+    const glm::vec3 mean = glm::normalize(glm::vec3(0, 1, 1));
+    EXPECT_NEAR(glm::length(m.normals[0] - mean), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(m.normals[1] - mean), 0.0f, 1e-6f);
+    EXPECT_EQ(m.normals[2], glm::vec3(0, 0, 1));
+    EXPECT_EQ(m.normals[3], glm::vec3(0, 1, 0));
+    ASSERT_EQ(l.scene->repairs.size(), 1u);
+    EXPECT_EQ(l.scene->repairs[0].count, 2u);
+}
+
+TEST_F(GltfGenerated, NonFinitePositionsStayAnError) {
+    float positions[9] = {0, 0, 0, 1, 0, 0, 0, INFINITY, 0};
+    gltf_["accessors"][0]["bufferView"] = addView(positions, sizeof positions);
+    fs::path path = write();
+    expectOneLineError(load(path), path, "POSITION accessor 0 holds a NaN or infinite value");
 }
 
 TEST(GltfImages, ToRgba8ConvertsChannelsAndDepths) {

@@ -30,7 +30,12 @@ void checkScene(const tp::Scene& s) {
         if (m.material >= s.materials.size()) broken("loaded", m.name + ": no such material");
         for (size_t i = 0; i < n; ++i)
             if (!std::isfinite(m.positions[i].x + m.positions[i].y + m.positions[i].z))
-                broken("loaded", m.name + ": a position that is not finite");
+                broken("loaded", m.name + ": a position that is not finite");        // Non-finite normals, tangents and uvs are repaired or refused, never passed on.
+        for (size_t i = 0; i < n; ++i)
+            if (!std::isfinite(m.normals[i].x + m.normals[i].y + m.normals[i].z +
+                               m.tangents[i].x + m.tangents[i].y + m.tangents[i].z +
+                               m.tangents[i].w + m.uvs[i].x + m.uvs[i].y))
+                broken("loaded", m.name + ": a normal, tangent or uv that is not finite");
     }
     for (const tp::Material& m : s.materials)
         for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
@@ -55,6 +60,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     tp::GltfLoadOptions options;
     options.warnings = &warnings;
     options.smoothMissingNormals = size % 2 == 1; // both normal generators, from the length
+    options.strict = size % 4 >= 2;              // repairs and refusals, likewise
     tp::Result<tp::Scene> scene = tp::gltf::loadGltfBytes(
         std::vector<unsigned char>(data, data + size), "fuzz.gltf", gFolder, false, options);
     if (scene.ok())

@@ -43,14 +43,18 @@ link() { # OUTPUT SOURCES...
     local out=$1 objs=()
     shift
     for s in "$@"; do objs+=("$(compile "$root/$s")"); done
-    nice -n 10 clang++ "${sanitize[@]}" -fsanitize=fuzzer "${objs[@]}" -o "$build/$out" -lpthread
+    # libdraco and meshoptimizer are the Debian builds (not instrumented): the sanitizers see
+    # what the loader hands them and what it does with their output.
+    nice -n 10 clang++ "${sanitize[@]}" -fsanitize=fuzzer "${objs[@]}" -o "$build/$out" -lpthread \
+        -ldraco -lmeshoptimizer
 }
 link fuzz_gltf core/scene/gltf_loader.cpp core/scene/gltf_files.cpp core/scene/gltf_accessors.cpp \
     core/scene/gltf_geometry.cpp core/scene/gltf_materials.cpp core/scene/gltf_nodes.cpp \
+    core/scene/gltf_draco.cpp core/scene/gltf_meshopt.cpp \
     core/scene/scene.cpp tests/fuzz/tinygltf_impl.cpp tests/fuzz/fuzz_gltf.cpp
 link fuzz_lights core/scene/lights.cpp core/scene/scene.cpp tests/fuzz/fuzz_lights.cpp
 nice -n 10 clang++ "${common[@]}" -O0 "$root/tests/cli/make_hostile_scenes.cpp" \
-    "$root/tests/cli/hostile_scenes.cpp" -o "$build/make_hostile_scenes"
+    "$root/tests/cli/hostile_scenes.cpp" -o "$build/make_hostile_scenes" -lmeshoptimizer
 
 # Seeds: the hostile scenes, the shared scenes (small ones; their buffers and small images go
 # to files/, where the target resolves URIs), and a few lights files.

@@ -1,0 +1,110 @@
+// Scenes the loader decodes or repairs (Draco, meshopt, repaired attributes, texture
+// transform; written by gltf_test_scenes.h) rendered by every pipeline and the reference:
+// no NaN or Inf, and each pipeline within its derived error bound of the reference
+// (core/render/error_model.h, as `triptych stress` checks it).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <unistd.h>
+
+#include "core/image/metrics.h"
+#include "core/image/tonemap.h"
+#include "core/render/error_model.h"
+#include "core/render/knobs.h"
+#include "core/render/renderer.h"
+#include "core/scene/gltf_loader.h"
+#include "core/scene/lights.h"
+#include "core/scene/stress_scenes.h"
+#include "gltf_test_scenes.h"
+#include "gpu_test_util.h"
+
+namespace tp::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+void renderEveryPipeline(const fs::path& path) {
+    SCOPED_TRACE(path.string());
+    std::vector<std::string> warnings;
+    GltfLoadOptions options;
+    options.warnings = &warnings;
+    Result<Scene> loaded = loadGltf(path.string(), options);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    Scene scene = std::move(*loaded);
+    LightGenOptions g;
+    g.count = 24;
+    g.seed = 5;
+    std::vector<Light> lights = generateLights(scene.bounds, g);
+    scene.lights.insert(scene.lights.end(), lights.begin(), lights.end());
+
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 64;
+    // The textured surfaces' base colour is not in the compact G-buffer's model (which
+    // bounds 8-bit storage by the material factors): the wide one stores it in fp32.
+    settings.set("gbuffer", "wide");
+    const RunResult ref = runOrFail(*ctx, gpuScene, "reference", settings);
+    ASSERT_EQ(countNonFinitePixels(ref.hdr), 0u);
+    const float ev = autoExposureEv(ref.hdr);
+    const ImageRGBA refDisplay = tonemapToDisplay(ref.hdr, ev);
+    double lit = 0;
+    for (size_t i = 0; i < ref.hdr.pixelCount(); ++i) lit += ref.hdr.rgba[i * 4 + 1];
+    EXPECT_GT(lit, 0.0) << "the reference is black";
+
+    stress::StressCase c;
+    c.name = "gltf";
+    c.freeNormals = true; // a sphere: normals in every direction
+    for (const RendererEntry& entry : registeredRenderers()) {
+        if (entry.name == "reference") continue;
+        SCOPED_TRACE(entry.name);
+        const RunResult run = runOrFail(*ctx, gpuScene, entry.name, settings);
+        EXPECT_EQ(countNonFinitePixels(run.hdr), 0u);
+        RenderSettings resolved = settings;
+        ASSERT_TRUE(resolveKnobs(entry.knobs, resolved).ok());
+        const ErrorBound bound = expectedBound(entry.errorModel, {c, scene, resolved});
+        ASSERT_TRUE(bound.bounded) << bound.why;
+        const double err = computeError(tonemapToDisplay(run.hdr, ev), refDisplay).maxAbs;
+        std::printf("[ bound    ] %-40s %-18s tonemapped max |p - r| %.3g <= %.3g\n",
+                    path.filename().string() == "scene.gltf" ? path.parent_path().filename().c_str()
+                                                             : path.filename().c_str(),
+                    entry.name.c_str(), err, bound.tonemapped(ev));
+        EXPECT_LE(err, bound.tonemapped(ev)) << "tonemapped max |p - r|";
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+class GltfScenesRender : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("triptych_gltf_gpu_" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+TEST_F(GltfScenesRender, Draco) { renderEveryPipeline(writeDracoScene(dir_ / "draco")); }
+
+TEST_F(GltfScenesRender, Meshopt) { renderEveryPipeline(writeMeshoptScene(dir_ / "meshopt")); }
+
+TEST_F(GltfScenesRender, Repaired) {
+    RepairCounts counts;
+    renderEveryPipeline(writeRepairScene(dir_ / "repair", counts));
+}
+
+TEST_F(GltfScenesRender, TextureTransform) {
+    renderEveryPipeline(writeTextureTransformScene(dir_ / "transform"));
+}
+
+TEST(GltfSharedScenesRender, DuckDraco) {
+    const fs::path path = fs::path(TP_SHARED_SCENES) / "Duck-Draco/glTF-Draco/Duck.gltf";
+    if (!fs::exists(path)) GTEST_SKIP() << path << " not found; skipping";
+    renderEveryPipeline(path);
+}
+
+} // namespace
+} // namespace tp::test
