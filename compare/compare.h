@@ -21,6 +21,9 @@ struct CompareOptions {
     int warmup = 1;
     std::string exposure = "auto";   // of every PNG; "auto" is taken from the reference
     RenderSettings knobs;
+    // Under MSAA: also render the reference with --reference-msaa center and measure every
+    // pipeline against it (one more reference render; --no-center-reference turns it off).
+    bool centerReference = true;
     std::vector<std::string> commandLine; // recorded in report.json
 };
 

@@ -23,6 +23,9 @@ struct SweepOptions {
     std::string out = "sweep";
     int frames = 2, warmup = 1;
     int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
+    // Under MSAA, the reference also with --reference-msaa center (as many frames), and the
+    // error against it beside the error against the supersampled one.
+    bool centerReference = true;
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
 

@@ -22,6 +22,8 @@ struct SweepRow {
     double bytesPerPixel = 0, dropped = 0, seconds = 0;
     bool measured = false;         // error against the reference known
     ErrorReport hdr, display;      // against the reference: linear, and tonemapped
+    bool measuredCenter = false;   // under MSAA: error against the centre reference known
+    ErrorReport hdrCenter, displayCenter; // against --reference-msaa center
     float exposureEv = 0, hdrPsnrPeak = 1;
     nlohmann::json run;            // runJson(): every pass, the ledger, counters, left-out
     std::string lightsHash;
