@@ -47,7 +47,8 @@ void writeDifference(const std::string& out, const std::string& stem, const Imag
 
 // A previous run's report must not survive next to this run's partial output.
 void removeStaleOutputs(const std::string& out, const std::vector<std::string>& names) {
-    std::vector<std::string> files = {"report.json", "report.html", "lights.json", "reference.exr", "reference.png"};
+    std::vector<std::string> files = {"report.json", "report.html", "lights.json", "reference.exr", "reference.png",
+                                      "reference_center.exr", "reference_center.png"};
     for (const std::string& n : names)
         for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr", "_flip.png", "_flip_ldr.exr",
                                    "_flip_ldr.png"})
@@ -213,6 +214,33 @@ void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, cons
     }
 }
 
+// Under MSAA, the second error: the reference rendered once more with --reference-msaa center
+// (every sample shaded at the pixel centre), and each pipeline measured against it. The error
+// against the supersampled reference is the total; against this one, the method alone.
+void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
+    if (r.settings.msaa == 1 || !r.options->centerReference) return;
+    CompareRecord c; // what renderOne reads, with the reference's centre mode
+    c.options = r.options;
+    c.features = r.features;
+    c.settings = r.settings;
+    c.settings.set("reference-msaa", "center");
+    PipelineOutcome& centre = r.centerReference;
+    centre = renderOne(ctx, gpuScene, kReferenceRenderer, c, "[center reference]");
+    centre.name = "reference_center";
+    if (!centre.run) return;
+    writeImages(r.options->out, centre, r.exposureEv);
+    MetricsOptions hdr;
+    hdr.psnrPeak = r.hdrPsnrPeak;
+    const ImageRGBA centreDisplay = tonemapToDisplay(centre.run->hdr, r.exposureEv);
+    centre.hdr = computeError(centre.run->hdr, r.reference.run->hdr, hdr);
+    centre.display = computeError(centreDisplay, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
+    for (PipelineOutcome& p : r.pipelines) {
+        if (!p.run) continue;
+        p.hdrVsCenter = computeError(p.run->hdr, centre.run->hdr, hdr);
+        p.displayVsCenter = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), centreDisplay);
+    }
+}
+
 } // namespace
 
 int runCompare(const CompareOptions& o) {
@@ -253,6 +281,7 @@ int runCompare(const CompareOptions& o) {
     std::vector<ImageRGBA> diffs = measure(r, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
     writeDifferences(r, diffs);
     measurePairs(r);
+    measureAgainstCenterReference(r, *ctx, gpuScene);
     r.validationMessages = ctx->validationMessages();
 
     nlohmann::json report = reportJson(r);
@@ -293,6 +322,9 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     cmd->add_option("--exposure", o->exposure,
                     "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the reference)")
         ->capture_default_str();
+    cmd->add_flag("--no-center-reference{false}", o->centerReference,
+                  "Under MSAA, skip the second reference (--reference-msaa center, one more reference render) and "
+                  "the error against it");
     addFlipDistanceOption(*cmd, o->flipDistance);
     addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() {

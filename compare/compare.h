@@ -22,6 +22,9 @@ struct CompareOptions {
     std::string exposure = "auto";   // of every PNG; "auto" is taken from the reference
     float flipDistance = 0.7f;       // FLIP's viewing distance, metres (compare/flip_measure.h)
     RenderSettings knobs;
+    // Under MSAA: also render the reference with --reference-msaa center and measure every
+    // pipeline against it (one more reference render; --no-center-reference turns it off).
+    bool centerReference = true;
     std::vector<std::string> commandLine; // recorded in report.json
 };
 

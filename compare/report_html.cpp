@@ -150,21 +150,71 @@ std::string summaryTable(const json& r) {
     return t;
 }
 
-std::string errorPlot(const json& r) {
+// True when the report holds the second error (MSAA, centre reference rendered).
+bool hasCenterReference(const json& r) {
+    return r.contains("center_reference") && r["center_reference"].value("rendered", false);
+}
+
+// `key`: error_vs_reference or error_vs_center_reference.
+std::string errorScatter(const json& r, const std::string& key, const std::string& yLabel) {
     std::vector<PlotPoint> points;
     points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
     for (const json& p : r["pipelines"])
-        if (ok(p)) points.push_back({p["name"].get<std::string>(), frameMedian(p), p["error_vs_reference"]["hdr"]["rmse"].get<double>()});
-    std::vector<PlotPoint> flipPoints;
-    flipPoints.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
+        if (ok(p) && p.contains(key)) points.push_back({p["name"].get<std::string>(), frameMedian(p), p[key]["hdr"]["rmse"].get<double>()});
+    return scatterLogLogSvg(points, "frame time, median ms on " + r["device"]["name"].get<std::string>(), yLabel);
+}
+
+// Under MSAA with the centre reference: both errors per pipeline, one sentence on what
+// separates them, the extra cost, and a switch (radio buttons, no script) between two plots.
+std::string twoReferences(const json& r) {
+    const json& c = r["center_reference"];
+    std::string t = "<h2>Two errors under MSAA</h2>\n<p class=\"meta\">Against the supersampled reference the error "
+                    "is the total; against the centre reference (<code>--reference-msaa center</code>: every sample "
+                    "shaded at the pixel centre) it is the method alone, because the shading rate is left out: their "
+                    "difference is what shading once per pixel costs. The centre reference itself is RMSE " +
+                    formatNumber(c["error_vs_reference"]["hdr"]["rmse"].get<double>()) +
+                    " from the supersampled one; it cost one more reference render (frame median " +
+                    formatNumber(frameMedian(c)) + " ms; <code>--no-center-reference</code> skips it).</p>\n"
+                    "<table><tr><th class=\"l\">pipeline</th><th class=\"l\">MSAA shading</th><th>RMSE (HDR) vs "
+                    "supersampled: total</th><th>RMSE (HDR) vs centre: method</th><th>PSNR dB (tonemapped) vs "
+                    "supersampled</th><th>PSNR dB (tonemapped) vs centre</th></tr>\n";
+    for (const json& p : r["pipelines"]) {
+        if (!ok(p) || !p.contains("error_vs_center_reference")) continue;
+        const json &a = p["error_vs_reference"], &b = p["error_vs_center_reference"];
+        t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" +
+             (p["run"].contains("msaa_shading") ? esc(p["run"]["msaa_shading"]) : std::string("&ndash;")) + "</td>" +
+             numberCell(a["hdr"]["rmse"]) + numberCell(b["hdr"]["rmse"]) + numberCell(a["tonemapped"]["psnr"]) +
+             numberCell(b["tonemapped"]["psnr"]) + "</tr>\n";
+    }
+    return t + "</table>\n";
+}
+
+// Mean HDR-FLIP against frame time: what a viewer would see, beside the RMSE plots.
+std::string flipScatter(const json& r) {
+    std::vector<PlotPoint> points;
+    points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
     for (const json& p : r["pipelines"])
         if (ok(p) && flipValue(p, "hdr", "mean").is_number())
-            flipPoints.push_back({p["name"].get<std::string>(), frameMedian(p), flipValue(p, "hdr", "mean").get<double>()});
-    const std::string xLabel = "frame time, median ms on " + r["device"]["name"].get<std::string>();
-    return "<h2>Error against run time</h2>\n" + scatterLogLogSvg(points, xLabel, "RMSE vs reference (linear HDR)") +
-           (flipPoints.size() > 1 ? scatterLogLogSvg(flipPoints, xLabel, "mean HDR-FLIP vs reference") : "") +
-           "<p class=\"meta\">Lower left is better: cheaper and closer to the reference (by RMSE, and by what a "
-           "viewer would see: HDR-FLIP).</p>\n";
+            points.push_back({p["name"].get<std::string>(), frameMedian(p), flipValue(p, "hdr", "mean").get<double>()});
+    if (points.size() < 2) return "";
+    return scatterLogLogSvg(points, "frame time, median ms on " + r["device"]["name"].get<std::string>(),
+                            "mean HDR-FLIP vs reference");
+}
+
+std::string errorPlot(const json& r) {
+    const std::string note = "<p class=\"meta\">Lower left is better: cheaper and closer to the reference (by "
+                             "RMSE, and by what a viewer would see: HDR-FLIP).</p>\n";
+    if (!hasCenterReference(r))
+        return "<h2>Error against run time</h2>\n" +
+               errorScatter(r, "error_vs_reference", "RMSE vs reference (linear HDR)") + flipScatter(r) + note;
+    return "<h2>Error against run time</h2>\n<style>#ep-c:checked~.ep-s,#ep-s:checked~.ep-c{display:none}</style>"
+           "<input type=\"radio\" name=\"ep\" id=\"ep-s\" checked><label for=\"ep-s\">against the supersampled "
+           "reference (total)</label> <input type=\"radio\" name=\"ep\" id=\"ep-c\"><label for=\"ep-c\">against "
+           "the centre reference (method alone)</label>\n<div class=\"ep-s\">" +
+           errorScatter(r, "error_vs_reference", "RMSE vs supersampled reference (linear HDR)") +
+           "</div><div class=\"ep-c\">" +
+           errorScatter(r, "error_vs_center_reference", "RMSE vs centre reference (linear HDR)") + "</div>\n" +
+           flipScatter(r) + note;
 }
 
 Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption) {
@@ -366,7 +416,7 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych compare</title>\n<style>";
     h += kBaseStyle;
     h += kStyle;
-    h += "</style></head><body>\n" + header(r) + summaryTable(r) + errorPlot(r);
+    h += "</style></head><body>\n" + header(r) + summaryTable(r) + (hasCenterReference(r) ? twoReferences(r) : "") + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
     if (!images) return images;
     Result<std::string> pairs = pairwiseSection(r, outDir);

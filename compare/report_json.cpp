@@ -35,7 +35,25 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
                                    {"tonemapped", metricsJson(p.display)},
                                    {"flip", flipJson(p.flip)}};
         j["difference_p99"] = p.diffP99;
+        if (p.hdrVsCenter)
+            j["error_vs_center_reference"] = {{"hdr", metricsJson(*p.hdrVsCenter)},
+                                              {"tonemapped", metricsJson(*p.displayVsCenter)}};
     }
+    return j;
+}
+
+// The second reference under MSAA: whether it ran, what it cost, how far it is from the first.
+nlohmann::json centerReferenceJson(const CompareRecord& r) {
+    const PipelineOutcome& c = r.centerReference;
+    if (r.settings.msaa == 1) return {{"rendered", false}, {"why", "MSAA is 1x: both references are one image"}};
+    if (!r.options->centerReference) return {{"rendered", false}, {"why", "--no-center-reference"}};
+    if (!c.run) return {{"rendered", false}, {"why", "failed: " + c.error}};
+    nlohmann::json j = {{"rendered", true}, {"knob", "reference-msaa center"}, {"files", c.files}};
+    j["run"] = runJson(*c.run, *r.ctx);
+    j["error_vs_reference"] = {{"hdr", metricsJson(c.hdr)}, {"tonemapped", metricsJson(c.display)}};
+    j["meaning"] = "error against the supersampled reference = total; against the centre reference = the method "
+                   "alone (the shading rate left out); the centre reference's own error is the cost of shading once "
+                   "per pixel";
     return j;
 }
 
@@ -91,6 +109,7 @@ nlohmann::json reportJson(const CompareRecord& r) {
     nlohmann::json pipelines = nlohmann::json::array();
     for (const PipelineOutcome& p : r.pipelines) pipelines.push_back(outcomeJson(p, *r.ctx, false));
     j["pipelines"] = pipelines;
+    j["center_reference"] = centerReferenceJson(r);
     nlohmann::json pairs = nlohmann::json::array();
     for (const PairOutcome& p : r.pairs)
         pairs.push_back({{"a", p.a},

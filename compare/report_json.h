@@ -26,6 +26,8 @@ struct PipelineOutcome {
     float diffP99 = 0;            // 99th percentile of max-channel |diff| (linear)
     FlipMeasure flip;             // FLIP and HDR-FLIP against the reference
     std::vector<std::string> files; // written into --out, relative names
+    // Under MSAA, against the reference shaded at the pixel centre (--reference-msaa center).
+    std::optional<ErrorReport> hdrVsCenter, displayVsCenter;
 };
 
 struct PairOutcome {
@@ -50,6 +52,9 @@ struct CompareRecord {
     float hdrPsnrPeak = 1;        // brightest finite reference channel
     std::vector<LedgerEntry> sharedMemory; // owner "scene": counted once
     PipelineOutcome reference;
+    // Under MSAA (unless --no-center-reference): the reference with --reference-msaa center;
+    // its hdr/display are its own distance from the supersampled reference. No run: not rendered.
+    PipelineOutcome centerReference;
     std::vector<PipelineOutcome> pipelines;
     std::vector<PairOutcome> pairs;
     std::vector<std::string> validationMessages;

@@ -72,6 +72,10 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     j["pipeline"] = run.renderer;
     j["knobs"] = nlohmann::json::object(); // the knobs this pipeline reads, as it ran
     for (const auto& [knob, value] : run.knobs) j["knobs"][knob.key()] = knobJson(knob, value);
+    // The shading rate it ran (docs/shading.md): "pixel" or "sample" under MSAA for a
+    // pipeline with the msaa-shading knob, "1x" without MSAA.
+    for (const auto& [knob, value] : run.knobs)
+        if (knob.name == "msaa-shading") j["msaa_shading"] = run.msaa > 1 ? value : std::string("1x");
     nlohmann::json timings = nlohmann::json::array();
     for (const TimingStats& t : run.timings)
         timings.push_back({{"pass", t.name},

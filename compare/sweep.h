@@ -24,6 +24,9 @@ struct SweepOptions {
     int frames = 2, warmup = 1;
     int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
     float flipDistance = 0.7f; // FLIP's viewing distance, metres (compare/flip_measure.h)
+    // Under MSAA, the reference also with --reference-msaa center (as many frames), and the
+    // error against it beside the error against the supersampled one.
+    bool centerReference = true;
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
 

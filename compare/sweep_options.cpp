@@ -32,6 +32,9 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
     addFlipDistanceOption(cmd, o.flipDistance);
+    cmd.add_flag("--no-center-reference{false}", o.centerReference,
+                 "Under MSAA, skip the second reference (--reference-msaa center, one more reference render per light "
+                 "count, resolution and MSAA) and the *_center error columns");
     addSeedOption(cmd, o.scene.seed);
     cmd.add_option("--light-types", o.scene.lightTypes,
                    "Generated light type mix: point, spot, directional with optional weights, e.g. point:3,spot:1")

@@ -40,6 +40,12 @@ std::string flipFields(const SweepRow& r) {
     return number(r.flip.hdr.mean) + "," + number(r.flip.ldr.mean);
 }
 
+// The same against the centre reference (MSAA only).
+std::string centerErrorFields(const SweepRow& r, const ErrorReport& e) {
+    if (!r.measuredCenter) return ",,";
+    return number(e.rmse) + "," + number(e.psnr) + "," + number(e.maxAbs);
+}
+
 } // namespace
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device) {
@@ -51,14 +57,17 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
     for (const Knob& k : columns) t += k.key() + ",";
     t += "status,frame_median_ms,frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,psnr_hdr,"
          "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,flip_hdr_mean,flip_tonemapped_mean,"
-         "lights_dropped,device,error\n";
+         "rmse_hdr_center,psnr_hdr_center,max_abs_hdr_center,rmse_tonemapped_center,psnr_tonemapped_center,"
+         "max_abs_tonemapped_center,lights_dropped,device,error\n";
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," + std::to_string(r.s.width) + "," +
              std::to_string(r.s.height) + "," + std::to_string(r.s.msaa) + ",";
         for (const Knob& k : columns) t += csvField(k.valueIn(r.s.knobs)) + ",";
         t += r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
              number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) + "," +
-             errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + flipFields(r) + "," + number(r.dropped) + "," +
+             errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + flipFields(r) + "," +
+             centerErrorFields(r, r.hdrCenter) + "," + centerErrorFields(r, r.displayCenter) + "," +
+             number(r.dropped) + "," +
              csvField(device) + "," + csvField(r.error) + "\n";
     }
     return t;
@@ -85,6 +94,8 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
                                        {"exposure_ev", r.exposureEv},
                                        {"psnr_peak_hdr", r.hdrPsnrPeak}};
         else j["error_vs_reference"] = nullptr;
+        if (r.measuredCenter)
+            j["error_vs_center_reference"] = {{"hdr", metricsJson(r.hdrCenter)}, {"tonemapped", metricsJson(r.displayCenter)}};
         runs.push_back(std::move(j));
     }
     header["runs"] = std::move(runs);

@@ -24,6 +24,8 @@ struct SweepRow {
     bool measured = false;         // error against the reference known
     ErrorReport hdr, display;      // against the reference: linear, and tonemapped
     FlipMeasure flip;              // FLIP (tonemapped) and HDR-FLIP against the reference
+    bool measuredCenter = false;   // under MSAA: error against the centre reference known
+    ErrorReport hdrCenter, displayCenter; // against --reference-msaa center
     float exposureEv = 0, hdrPsnrPeak = 1;
     nlohmann::json run;            // runJson(): every pass, the ledger, counters, left-out
     std::string lightsHash;

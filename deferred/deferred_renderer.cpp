@@ -30,7 +30,7 @@ class DeferredRenderer final : public Renderer {
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, settings_);
-        t_.sampleRateGBuffer = settings_.text("gbuffer-msaa") == "sample";
+        t_.sampleRateGBuffer = settings_.text("msaa-shading") == "sample";
         // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels:
         // the tile knob's values (8, 16, 32) are all multiples of 8.
         t_.grid = la::makeTileGrid(graph.width(), graph.height(), settings_.integer("tile"));

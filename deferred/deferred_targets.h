@@ -22,7 +22,7 @@ struct DeferredTargets {
     ResourceHandle volumeDepth;          // volumes lighting under MSAA: 1x depth the volumes test
     la::TileGrid grid;                   // the lighting tiles (one workgroup each)
     std::vector<uint32_t> listOffsets;   // transparent lists: tileCount + 1 run offsets
-    bool sampleRateGBuffer = false;      // --gbuffer-msaa sample: the material at every sample
+    bool sampleRateGBuffer = false;      // --msaa-shading sample: the material at every sample
     bool msaa() const { return layout.samples > 1; }
 };
 

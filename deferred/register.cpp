@@ -1,6 +1,7 @@
 // G-buffer deferred as the rest of the program sees it: its name, its knobs, its precision
 // model for `triptych stress` (deferred/error_model.cpp).
 #include "core/lightassign/tile_knob.h"
+#include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
 #include "deferred/deferred_renderer.h"
 #include "deferred/error_model.h"
@@ -12,11 +13,7 @@ namespace {
 KnobSchema deferredKnobs() {
     return {la::tileSizeKnob(),
             Knob::choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),
-            Knob::choice("gbuffer-msaa", {"pixel", "sample"},
-                         "Deferred G-buffer under MSAA: pixel (material evaluated once per pixel, written to the "
-                         "covered samples; only edges are lit per sample, Lauritzen 2010) or sample (material "
-                         "evaluated and lit at every sample: supersampled deferred, the reference's image at its cost)")
-                .onlyUnderMsaa(),
+            msaaShadingKnob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
             Knob::choice("deferred-lighting", {"tiled", "volumes"},
                          "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")};
 }

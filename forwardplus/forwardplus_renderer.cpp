@@ -13,6 +13,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
+#include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
 #include "core/lightassign/compact_layout.h"
 #include "core/lightassign/light_classes.h"
@@ -298,10 +299,13 @@ class ForwardPlusRenderer final : public Renderer {
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
             if (!scene_.hasDraws(DrawFilter(mode))) continue;
             GraphicsPipelineDesc d;
-            d.fragmentShader = "fp_shading_frag";
+            // --msaa-shading: pixel runs once per pixel at its centre (no `sample` inputs, no
+            // sample shading; the EQUAL depth test against the per-sample prepass gives each
+            // sample its coverage, masked materials included); sample shades every sample.
+            d.fragmentShader = shadesPerPixelUnderMsaa(settings_) ? "fp_shading_pixel_frag" : "fp_shading_frag";
             d.colorFormats = {kHdrFormat};
             d.samples = samples;
-            d.sampleShading = msaa; // per-sample shading, as the reference
+            d.sampleShading = shadesPerSample(settings_);
             d.layout = shadeLayout_;
             d.passSet = &shadeSet_;
             d.depthWrite = false;

@@ -2,6 +2,7 @@
 // `triptych stress`. This file is the only place outside forwardplus/ that needs to change
 // when Forward+ gains a knob: nowhere.
 #include "core/lightassign/tile_knob.h"
+#include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
 #include "forwardplus/forwardplus_renderer.h"
 
@@ -10,6 +11,7 @@ namespace {
 
 KnobSchema forwardPlusKnobs() {
     return {la::tileSizeKnob(),
+            msaaShadingKnob(),
             Knob::choice("light-lists", {"compact", "fixed", "linked"},
                          "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "
                          "capacity per tile; drops are counted), linked (per-tile linked lists)"),
@@ -23,6 +25,7 @@ void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     b.terms.push_back({"fp16 colour storage", roundings * kHalfUlp16, roundings * 6e-8,
                        std::to_string(roundings) + " fp16 store(s) (sample, resolve): each below one ulp, 2^-10 "
                        "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
+    addPixelRateErrorTerm(b, in);
 }
 
 // A case that crowds one tile must find Forward+'s list holding all of them (the compact and

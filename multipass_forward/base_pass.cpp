@@ -21,7 +21,7 @@ BasePass::BasePass(const PassEnv& env) : env_(env) {
     // the sample, so one pipeline serves both alpha modes.
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Opaque);
     for (SpecConstant c : directionalSpec(env.plan)) d.specConstants.push_back(c);
-    d.fragmentShader = "mp_base_frag";
+    d.fragmentShader = fragmentShader(env, "base");
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     pipeline_ = createGraphicsPipeline(env.ctx, d);

@@ -52,11 +52,11 @@ BlendedPass::BlendedPass(const PassEnv& env) : env_(env) {
     d.depthWrite = false;
     GraphicsPipelineDesc base = d;
     for (SpecConstant c : directionalSpec(env.plan)) base.specConstants.push_back(c);
-    base.fragmentShader = "mp_base_frag";
+    base.fragmentShader = fragmentShader(env, "base");
     base.blend = BlendMode::Alpha;
     base_ = createGraphicsPipeline(env.ctx, base);
     d.blend = BlendMode::Custom;
-    d.fragmentShader = "mp_light_frag";
+    d.fragmentShader = fragmentShader(env, "light");
     d.customBlend = underBlend();
     light_ = createGraphicsPipeline(env.ctx, d);
     d.fragmentShader = "mp_alpha_reset_frag";

@@ -12,7 +12,7 @@ namespace tp::mp {
 LightPasses::LightPasses(const PassEnv& env) : env_(env) {
     if (env.plan.batches.empty()) return;
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Opaque); // masked too: EQUAL test
-    d.fragmentShader = "mp_light_frag";
+    d.fragmentShader = fragmentShader(env, "light");
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.blend = BlendMode::Additive;

@@ -3,6 +3,7 @@
 // light_passes.cpp, blended_pass.cpp. Each creates its pipelines in its constructor (after
 // the graph allocated resources) and records into the targets below. They share the scene's
 // pipeline layout (set 0 + DrawPush); nothing has a set 1.
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -43,8 +44,12 @@ struct PassEnv {
 std::vector<PassUse> shadingUses(const Targets& t, bool resolve);
 // beginRendering for those uses (`clear`: the base pass starts the accumulation).
 void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear);
-// Pipeline description shared by the shading passes: per-sample shading under MSAA (as the
-// reference, so both shade the same points), scene layout, accumulation format.
+// The fragment shader `mp_STEM_frag`, or its once-per-pixel variant `mp_STEM_pixel_frag`
+// (inputs at the pixel centre) under MSAA with --msaa-shading pixel.
+std::string fragmentShader(const PassEnv& env, const std::string& stem);
+// Pipeline description shared by the shading passes: per-sample shading under MSAA with
+// --msaa-shading sample (the reference's rate), else once per pixel; scene layout,
+// accumulation format.
 GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
 // One scene draw; `light` goes to DrawPush.TP_MP_LIGHT_INDEX (ignored by non-light shaders).
 void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light = 0);

@@ -2,6 +2,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/render/msaa_knob.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -23,9 +24,13 @@ GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode) {
     d.specConstants = env.scene.specConstants(mode);
     d.colorFormats = {env.accumFormat};
     d.samples = VkSampleCountFlagBits(env.settings.msaa);
-    d.sampleShading = env.settings.msaa > 1;
+    d.sampleShading = shadesPerSample(env.settings); // --msaa-shading sample
     d.layout = env.layout;
     return d;
+}
+
+std::string fragmentShader(const PassEnv& env, const std::string& stem) {
+    return "mp_" + stem + (shadesPerPixelUnderMsaa(env.settings) ? "_pixel" : "") + "_frag";
 }
 
 void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light) {

@@ -1,5 +1,6 @@
 // Multipass forward as the rest of the program sees it: its name, its knobs, its precision
 // model for `triptych stress`.
+#include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
 #include "multipass_forward/multipass_renderer.h"
 
@@ -7,7 +8,8 @@ namespace tp {
 namespace {
 
 KnobSchema multipassKnobs() {
-    return {Knob::choice("accum", {"fp32", "fp16"}, "Multipass forward accumulation target precision")};
+    return {msaaShadingKnob(),
+            Knob::choice("accum", {"fp32", "fp16"}, "Multipass forward accumulation target precision")};
 }
 
 void multipassErrorModel(ErrorBound& b, const ErrorModelInput& in) {
@@ -17,6 +19,7 @@ void multipassErrorModel(ErrorBound& b, const ErrorModelInput& in) {
                            "one fp16 rounding per additive pass"});
     else
         b.terms.push_back({"fp32 accumulation", 0, 0, "each additive pass rounds in fp32: inside the summation term"});
+    addPixelRateErrorTerm(b, in);
 }
 
 const RendererRegistration registration{{"multipass_forward", "one additive pass per light after a depth prepass",

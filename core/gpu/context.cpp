@@ -140,6 +140,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     DeviceCaps c;
     c.float64 = f.shaderFloat64;
     c.sampleRateShading = f.sampleRateShading;
+    c.pipelineStatisticsQuery = f.pipelineStatisticsQuery;
     c.storageImageMultisample = f.shaderStorageImageMultisample;
     c.fragmentStoresAndAtomics = f.fragmentStoresAndAtomics;
     c.colorSampleCounts = p.limits.framebufferColorSampleCounts &
@@ -238,6 +239,7 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
     features.features.shaderFloat64 = ctx->caps.float64;
     features.features.sampleRateShading = ctx->caps.sampleRateShading;
+    features.features.pipelineStatisticsQuery = ctx->caps.pipelineStatisticsQuery;
     features.features.shaderStorageImageMultisample = ctx->caps.storageImageMultisample;
     features.features.fragmentStoresAndAtomics = ctx->caps.fragmentStoresAndAtomics;
     features.features.independentBlend = VK_TRUE;

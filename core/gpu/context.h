@@ -31,6 +31,7 @@ struct ContextOptions {
 struct DeviceCaps {
     bool float64 = false;
     bool sampleRateShading = false;
+    bool pipelineStatisticsQuery = false; // fragment-shader invocation counts (frame_runner)
     bool storageImageMultisample = false;
     bool fragmentStoresAndAtomics = false;
     uint32_t colorSampleCounts = 1; // VkSampleCountFlags supported for colour and depth

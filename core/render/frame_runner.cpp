@@ -11,11 +11,53 @@
 namespace tp {
 namespace {
 
-void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler) {
+// Counts the fragment-shader invocations of a whole frame (every pass) with a pipeline
+// statistics query, where the device has them (lavapipe does): the measure of the MSAA
+// shading rate (--msaa-shading pixel runs about one invocation per covered pixel and
+// primitive, sample about one per covered sample).
+class InvocationCounter {
+  public:
+    explicit InvocationCounter(GpuContext& ctx) : ctx_(ctx) {
+        if (!ctx.caps.pipelineStatisticsQuery) return;
+        VkQueryPoolCreateInfo ci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        ci.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+        ci.queryCount = 1;
+        ci.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT;
+        VK_CHECK(vkCreateQueryPool(ctx.device, &ci, nullptr, &pool_));
+    }
+    ~InvocationCounter() {
+        if (pool_) vkDestroyQueryPool(ctx_.device, pool_, nullptr);
+    }
+    InvocationCounter(const InvocationCounter&) = delete;
+    InvocationCounter& operator=(const InvocationCounter&) = delete;
+
+    void begin(VkCommandBuffer cmd) {
+        if (!pool_) return;
+        vkCmdResetQueryPool(cmd, pool_, 0, 1);
+        vkCmdBeginQuery(cmd, pool_, 0, 0);
+    }
+    void end(VkCommandBuffer cmd) {
+        if (pool_) vkCmdEndQuery(cmd, pool_, 0);
+    }
+    // The last submitted frame's count; false without the query.
+    bool read(uint64_t& out) {
+        if (!pool_) return false;
+        return vkGetQueryPoolResults(ctx_.device, pool_, 0, 1, sizeof(out), &out, sizeof(out),
+                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS;
+    }
+
+  private:
+    GpuContext& ctx_;
+    VkQueryPool pool_ = VK_NULL_HANDLE;
+};
+
+void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler, InvocationCounter& counter) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
     profiler.beginFrame(cmd);
+    counter.begin(cmd);
     graph.record(cmd, &profiler);
+    counter.end(cmd);
     profiler.endFrame(cmd);
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
@@ -50,9 +92,10 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
     }
 
     GpuProfiler profiler(ctx, 64);
+    InvocationCounter invocations(ctx);
     VkCommandBuffer cmd = ctx.allocateCommandBuffer();
     try {
-        recordFrame(cmd, graph, profiler);
+        recordFrame(cmd, graph, profiler, invocations);
     } catch (const GraphError& e) { // a pass records an attachment it did not declare
         ctx.freeCommandBuffer(cmd);
         return Error{"pipeline " + entry.name + ": " + e.what()};
@@ -70,6 +113,7 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
 
     RunResult result;
     result.renderer = entry.name;
+    result.msaa = settings.msaa;
     for (const Knob& k : entry.knobs) result.knobs.push_back({k, resolved.text(k.name)});
     result.timings = profiler.stats();
     result.hdr = readbackColor(ctx, graph.image(hdr));
@@ -77,6 +121,11 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
     renderer->collectStats(graph);
     if (settings.debug) result.debugImages = renderer->debugImages(graph);
     result.stats = renderer->stats();
+    if (uint64_t n = 0; invocations.read(n)) {
+        result.stats.counters.push_back({"fragment_shader_invocations", double(n)});
+        result.stats.counters.push_back(
+            {"fragment_invocations_per_pixel", double(n) / double(settings.width * settings.height)});
+    }
     result.memory = ctx.ledger.entriesOf(entry.name);
     result.passes = graph.livePasses();
     result.culledPasses = graph.culledPasses();

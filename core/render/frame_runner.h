@@ -22,6 +22,7 @@ struct RunOptions {
 
 struct RunResult {
     std::string renderer;
+    uint32_t msaa = 1; // samples per pixel it ran with
     // The knobs this renderer declared, with the values it ran with (defaults filled in).
     std::vector<std::pair<Knob, std::string>> knobs;
     ImageRGBA hdr;

@@ -33,7 +33,7 @@ using std::sin;
 #define TP_DEF_SPEC_WIDE 11          // 1: wide (fp32, xyz normal) G-buffer, 0: compact
 #define TP_DEF_SPEC_SAMPLES 13       // MSAA samples of the G-buffer
 #define TP_DEF_SPEC_SPHERE_SCALE 14  // float bits: volumeSphereVertex scale that circumscribes the unit sphere
-#define TP_DEF_SPEC_EVERY_SAMPLE 15  // 1: every pixel with geometry is lit per sample (--gbuffer-msaa sample)
+#define TP_DEF_SPEC_EVERY_SAMPLE 15  // 1: every pixel with geometry is lit per sample (--msaa-shading sample)
 
 // Lights one tile can hold in shared memory: 4096 uints = 16 KiB of the 32 KiB lavapipe
 // offers. The tiled lighting pass never meets more: it takes the lights in batches of at

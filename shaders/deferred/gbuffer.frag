@@ -1,10 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // G-buffer pass: the material at this fragment, stored in the layout the renderer planned.
-// TP_INPUTS_AT_PIXEL (--gbuffer-msaa pixel, the default): evaluated once per pixel at its
+// TP_INPUTS_AT_PIXEL (--msaa-shading pixel, the default): evaluated once per pixel at its
 // centre and written to every covered sample, which is what makes samples of one surface
 // compare equal in the edge test. Without it every sample is evaluated at its own location
-// (--gbuffer-msaa sample; scene_inputs.glsl). TP_EMISSIVE: the scene emits, so target 3
+// (--msaa-shading sample; scene_inputs.glsl). TP_EMISSIVE: the scene emits, so target 3
 // exists (left out otherwise).
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"

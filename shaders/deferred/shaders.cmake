@@ -1,5 +1,5 @@
 # G-buffer deferred shaders (names are what deferred/*.cpp asks core/gpu/pipelines for).
-# G-buffer: once per pixel (TP_INPUTS_AT_PIXEL) or at every sample (--gbuffer-msaa sample).
+# G-buffer: once per pixel (TP_INPUTS_AT_PIXEL) or at every sample (--msaa-shading sample).
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_emissive_frag
   DEFINES TP_EMISSIVE=1 TP_INPUTS_AT_PIXEL=1)

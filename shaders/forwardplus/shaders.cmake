@@ -1,5 +1,7 @@
 # Forward+ shaders (included by shaders/CMakeLists.txt with SHADER_DIR set).
 triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_frag)
+# --msaa-shading pixel under MSAA: once per pixel, inputs at the pixel centre (scene_inputs.glsl).
+triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 # Culling: one variant per list layout, single-sample and multisampled depth.
 foreach(layout compact fixed linked)
   string(TOUPPER ${layout} LAYOUT_UPPER)

@@ -2,4 +2,7 @@
 # prepass shader is shared).
 triptych_add_shader(SPVS ${SHADER_DIR}/base.frag mp_base_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_frag)
+# --msaa-shading pixel under MSAA: once per pixel, inputs at the pixel centre (scene_inputs.glsl).
+triptych_add_shader(SPVS ${SHADER_DIR}/base.frag mp_base_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/alpha_reset.frag mp_alpha_reset_frag)

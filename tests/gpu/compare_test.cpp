@@ -329,6 +329,46 @@ TEST(Compare, SweepWritesOneRowPerRun) {
     EXPECT_EQ(count(html, "<svg"), 4u); // time, memory, error (RMSE and HDR-FLIP) plots
 }
 
+// Under MSAA: the second reference (--reference-msaa center), each pipeline's error against
+// both, the rate it ran, both plots in report.html, and the *_center columns in sweep.csv;
+// --no-center-reference leaves it out.
+TEST(Compare, MsaaReportsErrorAgainstBothReferences) {
+    const std::string out = freshDir("compare_msaa");
+    ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--msaa", "4", "--lights", "8", "--frames", "1",
+                      "--warmup", "0", "--validate", "--out", out}),
+              0);
+    EXPECT_TRUE(fs::exists(out + "/reference_center.exr"));
+    json r = json::parse(readText(out + "/report.json"));
+    ASSERT_TRUE(r["center_reference"]["rendered"].get<bool>());
+    EXPECT_GT(r["center_reference"]["error_vs_reference"]["hdr"]["rmse"].get<double>(), 0.0);
+    for (const json& p : r["pipelines"]) {
+        SCOPED_TRACE(p["name"].get<std::string>());
+        expectMetrics(p["error_vs_center_reference"]["hdr"], "hdr");
+        EXPECT_EQ(p["run"]["msaa_shading"], "pixel");
+    }
+    const std::string html = readText(out + "/report.html");
+    EXPECT_NE(html.find("Two errors under MSAA"), std::string::npos);
+    EXPECT_GE(count(html, "<svg"), 3u); // timing bars and the two error/time plots
+
+    const std::string off = freshDir("compare_msaa_off");
+    ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--msaa", "4", "--lights", "8", "--frames", "1",
+                      "--warmup", "0", "--pipelines", "forwardplus", "--no-center-reference", "--out", off}),
+              0);
+    EXPECT_FALSE(fs::exists(off + "/reference_center.exr"));
+    EXPECT_FALSE(json::parse(readText(off + "/report.json"))["center_reference"]["rendered"].get<bool>());
+
+    const std::string sweep = freshDir("sweep_msaa");
+    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4", "--res", "96x54", "--msaa", "4",
+                           "--pipelines", "forwardplus", "--msaa-shading", "pixel,sample", "--frames", "1",
+                           "--warmup", "0", "--out", sweep}),
+              0);
+    for (const auto& row : readCsv(sweep + "/sweep.csv")) {
+        const bool pipeline = row.at("pipeline") != "reference";
+        EXPECT_EQ(row.at("rmse_hdr_center").empty(), !pipeline) << row.at("pipeline");
+        EXPECT_EQ(row.at("psnr_tonemapped_center").empty(), !pipeline) << row.at("pipeline");
+    }
+}
+
 // A configuration that cannot run is a failed row with its reason, the others still run and
 // the files are written; exit code 5. Without a reference (--reference-frames 0) there are
 // no error figures.

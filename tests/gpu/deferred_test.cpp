@@ -109,7 +109,7 @@ TEST(Deferred, WideMatchesReferenceOnTheCourtyard) {
     expectNoValidationMessages(*ctx);
 }
 
-// 4x MSAA, --gbuffer-msaa sample: the material is evaluated at every sample, so every
+// 4x MSAA, --msaa-shading sample: the material is evaluated at every sample, so every
 // sample is lit from its own G-buffer values at its own position (reconstructed from its
 // depth at the standard sample location), which is exactly what the supersampled reference
 // computes. What remains is the 1x sources: D32 reconstruction and fp32 summation in another
@@ -125,7 +125,7 @@ TEST(Deferred, SampleRateGBufferMatchesTheSupersampledReferenceAt4x) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     RenderSettings s = small(4, "wide");
-    s.set("gbuffer-msaa", "sample");
+    s.set("msaa-shading", "sample");
     for (uint32_t lights : {0u, 1u, 256u, 4096u}) {
         for (bool courtyard : {false, true}) {
             Pair p = renderBoth(*ctx, courtyard ? courtyardWithLights(lights) : floorWithLights(lights), s);
@@ -142,7 +142,7 @@ TEST(Deferred, SampleRateGBufferMatchesTheSupersampledReferenceAt4x) {
     expectNoValidationMessages(*ctx);
 }
 
-// 4x MSAA, --gbuffer-msaa pixel (Lauritzen 2010, the default) on the floor scene, whose
+// 4x MSAA, --msaa-shading pixel (Lauritzen 2010, the default) on the floor scene, whose
 // materials and face normals are constant per triangle, so a per-pixel G-buffer value is
 // exactly the value at any sample of that triangle:
 //  - a pixel the edge mask leaves out is lit once at its centre: it must equal the
@@ -247,7 +247,7 @@ TEST(Deferred, VolumesAgreeWithTiled) {
             SceneGpu gpuScene(*ctx, scene);
             const uint32_t msaa = std::min(mode, 4u);
             RenderSettings s = small(msaa, "wide");
-            if (mode == 5u) s.set("gbuffer-msaa", "sample");
+            if (mode == 5u) s.set("msaa-shading", "sample");
             RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "tiled"));
             RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "volumes"));
             std::string what = "floor " + std::to_string(lights) + " lights " + std::to_string(msaa) + "x " + (mode == 5u ? "sample" : "pixel");
@@ -259,7 +259,7 @@ TEST(Deferred, VolumesAgreeWithTiled) {
     SceneGpu courtyardGpu(*ctx, courtyard);
     for (const char* rate : {"pixel", "sample"}) {
         RenderSettings s = small(4, "wide");
-        s.set("gbuffer-msaa", rate);
+        s.set("msaa-shading", rate);
         RunResult tiled = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "tiled"));
         RunResult volumes = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "volumes"));
         expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, 64, 4, std::string("courtyard 64 lights 4x ") + rate);

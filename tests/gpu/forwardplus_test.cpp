@@ -130,11 +130,14 @@ void expectMatchesReference(const Scene& scene, RenderSettings settings, uint32_
     expectNoValidationMessages(*ctx);
 }
 
+// Under MSAA these tests shade every sample (--msaa-shading sample), as the supersampled
+// reference does; the pixel rate has its own tests (ForwardPlusPixelRate).
 RenderSettings small(uint32_t w, uint32_t h, uint32_t msaa) {
     RenderSettings s;
     s.width = w;
     s.height = h;
     s.msaa = msaa;
+    if (msaa > 1) s.set("msaa-shading", "sample");
     return s;
 }
 
@@ -167,6 +170,82 @@ TEST(ForwardPlusReference, Courtyard4096LightsTiny) {
 }
 TEST(ForwardPlusReference, Courtyard4096LightsTinyMsaa4) {
     expectMatchesReference(courtyardScene(4096), small(48, 27, 4), 4);
+}
+
+// 4x, --msaa-shading pixel (the default): one invocation per pixel and primitive with its
+// inputs at the pixel centre, its value stored to the samples that primitive covers and that
+// pass the EQUAL test against the per-sample prepass. The reference with --reference-msaa
+// center shades every sample with the inputs at the pixel centre of the surface that sample
+// sees. So on a pixel whose samples all see one surface both store the same value at the
+// same point: the 1x bound holds (two fp16 roundings, as under MSAA). On an edge pixel each
+// sample still holds the value of the surface it sees, evaluated at the pixel centre in both
+// (extrapolated from the triangle's plane where the centre lies outside it: both use the
+// centre, not the centroid), and the resolve averages the same samples: the same bound
+// holds, and the test checks edge pixels against it too (docs/forwardplus.md). Edge pixels
+// are found with deferred's edge mask (samples whose G-buffer differs), a fact about the scene.
+void expectPixelRateMatchesCentreReference(const Scene& scene, RenderSettings settings, uint32_t blendLayers) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    settings.set("msaa-shading", "pixel");
+    settings.set("reference-msaa", "center");
+    settings.debug = true;
+    RunResult ref = runOrFail(*ctx, gpuScene, "reference", settings);
+    RunResult fp = runOrFail(*ctx, gpuScene, "forwardplus", settings);
+    RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", settings);
+    settings.set("msaa-shading", "sample");
+    RunResult fpSample = runOrFail(*ctx, gpuScene, "forwardplus", settings);
+    const ImageRGBA* edges = nullptr;
+    for (const DebugImage& d : deferred.debugImages)
+        if (d.name == "edge_mask") edges = &d.image;
+    ASSERT_NE(edges, nullptr);
+    ImageRGBA interior = ref.hdr, edge = ref.hdr, fpInterior = fp.hdr, fpEdge = fp.hdr;
+    size_t edgeCount = 0;
+    for (size_t i = 0; i < ref.hdr.pixelCount(); ++i) {
+        const bool isEdge = edges->rgba[i * 4] > 0.5f;
+        edgeCount += isEdge;
+        for (int c = 0; c < 4; ++c) {
+            (isEdge ? interior : edge).rgba[i * 4 + c] = 0.0f; // the other class: 0 in both
+            (isEdge ? fpInterior : fpEdge).rgba[i * 4 + c] = 0.0f;
+        }
+    }
+    const uint32_t lights = uint32_t(scene.lights.size());
+    Comparison in = compare(fpInterior, interior, lights, settings.msaa, blendLayers);
+    Comparison ed = compare(fpEdge, edge, lights, settings.msaa, blendLayers);
+    EXPECT_EQ(in.nonFinite + ed.nonFinite, 0u);
+    EXPECT_GT(edgeCount, 0u);
+    EXPECT_LE(in.worstRatio, 1.0) << "interior: worst pixel " << in.worstX << "," << in.worstY << ": got "
+                                  << in.worstGot << ", centre reference " << in.worstRef;
+    EXPECT_LE(ed.worstRatio, 1.0) << "edge: worst pixel " << ed.worstX << "," << ed.worstY << ": got " << ed.worstGot
+                                  << ", centre reference " << ed.worstRef;
+    // The counter (a pipeline-statistics query over the frame). Lavapipe counts one invocation
+    // per pixel fragment at both rates (it loops over the samples inside one invocation), so
+    // only its presence and order are checked here (docs/shading.md).
+    const double pixel = statOf(fp, "fragment_shader_invocations");
+    const double sample = statOf(fpSample, "fragment_shader_invocations");
+    EXPECT_GT(pixel, 0.0);
+    EXPECT_GE(sample, pixel);
+    std::printf("[ forwardplus ] 4x pixel rate, %u lights: interior worst |d|/tol %.3g, %zu edge pixels worst %.3g; "
+                "fragment invocations pixel %.0f, sample %.0f\n",
+                lights, in.worstRatio, edgeCount, ed.worstRatio, pixel, sample);
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusPixelRate, Floor256LightsMsaa4MatchesCentreReference) {
+    expectPixelRateMatchesCentreReference(floorScene(256), small(96, 64, 4), 0);
+}
+// The courtyard's alpha-masked materials (grille, leaves) made opaque: at pixel rate a masked
+// surface keeps its per-sample coverage (the prepass alpha-tests each sample), while the centre
+// reference takes the centre's alpha for every sample, so along an alpha-test boundary the two
+// cover different samples: a coverage difference, not a shading one (docs/forwardplus.md).
+Scene withoutMasks(Scene s) {
+    for (Material& m : s.materials)
+        if (m.alphaMode == AlphaMode::Mask) m.alphaMode = AlphaMode::Opaque;
+    return s;
+}
+
+TEST(ForwardPlusPixelRate, Courtyard256LightsMsaa4MatchesCentreReference) {
+    expectPixelRateMatchesCentreReference(withoutMasks(courtyardScene(256)), small(96, 54, 4), 4);
 }
 
 TEST(ForwardPlusReference, DirectionalLightsAreShadedUnculled) {

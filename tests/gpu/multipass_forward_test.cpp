@@ -130,8 +130,13 @@ struct Case {
 };
 
 // Renders the scene with each case's lights through both renderers and checks the fp32
-// bound on every pixel, blended ones included (with their layers' roundings).
-void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w, uint32_t h) {
+// bound on every pixel, blended ones included (with their layers' roundings). Under MSAA,
+// `rate` sample is checked against the supersampled reference; pixel (one invocation per
+// pixel, inputs at its centre) against the reference with --reference-msaa center, which
+// shades each sample at the pixel centre of the surface it sees: the same values at the same
+// points, on edge pixels too (docs/multipass_forward.md), so the same bound holds everywhere.
+void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w, uint32_t h,
+                  const char* rate = "sample") {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     for (const Case& c : cases) {
@@ -143,6 +148,8 @@ void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w,
         s.width = w;
         s.height = h;
         s.msaa = c.msaa;
+        s.set("msaa-shading", rate);
+        if (std::string(rate) == "pixel") s.set("reference-msaa", "center");
         RunResult ref = runOrFail(*ctx, gpu, "reference", s);
         RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
         ASSERT_EQ(mp.hdr.rgba.size(), ref.hdr.rgba.size());
@@ -154,8 +161,8 @@ void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w,
             EXPECT_GT(statOf(mp, "light_passes_draws"), 0.0);
         }
         expectConsistentStats(mp);
-        std::printf("[   info   ] %u lights %ux: worst/bound %.3g, max abs %.3g, rmse %.3g; without the "
-                    "blended layers' share: worst/bound %.3g\n", c.lights, c.msaa, b.worstRatio, b.maxAbs,
+        std::printf("[   info   ] %s rate, %u lights %ux: worst/bound %.3g, max abs %.3g, rmse %.3g; without the "
+                    "blended layers' share: worst/bound %.3g\n", rate, c.lights, c.msaa, b.worstRatio, b.maxAbs,
                     b.rmse, checkBound(mp.hdr, ref.hdr, c.lights, kEps32).worstRatio);
     }
     expectNoValidationMessages(*ctx);
@@ -170,6 +177,21 @@ TEST(MultipassForward, MatchesReferenceOnCourtyardFp32) {
     Result<Scene> scene = makeBuiltinScene("courtyard-small");
     ASSERT_TRUE(scene.ok());
     compareCases(*scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96, 64);
+}
+
+TEST(MultipassForward, PixelRateMatchesCentreReferenceOnFloor) {
+    compareCases(makeFloorScene({}), {{1, 4}, {256, 4}}, 96, 64, "pixel");
+}
+
+// Alpha-masked materials made opaque: along an alpha-test boundary the pixel rate keeps
+// per-sample coverage (the prepass alpha-tests each sample) while the centre reference takes
+// the centre's alpha for every sample, a coverage difference (docs/multipass_forward.md).
+TEST(MultipassForward, PixelRateMatchesCentreReferenceOnCourtyard) {
+    Result<Scene> scene = makeBuiltinScene("courtyard-small");
+    ASSERT_TRUE(scene.ok());
+    for (Material& m : scene->materials)
+        if (m.alphaMode == AlphaMode::Mask) m.alphaMode = AlphaMode::Opaque;
+    compareCases(*scene, {{0, 4}, {64, 4}, {256, 4}}, 96, 64, "pixel");
 }
 
 // fp16 accumulation: within (n + 4) * 2^-11 * ref, and measurably worse than fp32.
@@ -275,6 +297,7 @@ TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
         s.width = 96;
         s.height = 64;
         s.msaa = msaa;
+        s.set("msaa-shading", "sample"); // against the supersampled reference
         RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
         RunResult ref = runOrFail(*ctx, gpu, "reference", s);
         // 3 composites + every light on every pane, each a light draw and a transmittance reset.
@@ -331,6 +354,7 @@ TEST(MultipassForward, BlendedMeshOverlappingItselfCompositesLikeTheReference) {
         s.width = 96;
         s.height = 64;
         s.msaa = msaa;
+        s.set("msaa-shading", "sample"); // against the supersampled reference
         RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
         RunResult ref = runOrFail(*ctx, gpu, "reference", s);
         EXPECT_EQ(statOf(mp, "blended_draws"), 2.0 + 2.0 * 4.0);

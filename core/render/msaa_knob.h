@@ -1,0 +1,31 @@
+#pragma once
+// The MSAA shading-rate knob of every pipeline (`--msaa-shading pixel|sample`). Declared here,
+// once, so Forward+, deferred and multipass forward share one option with one meaning; the
+// registry refuses two different declarations of a name.
+//   pixel  (default) one fragment invocation per pixel and primitive, inputs at the pixel
+//          centre, coverage and depth per sample, then the resolve (deferred: the G-buffer
+//          once per pixel, edge pixels lit per sample: Lauritzen 2010).
+//   sample every sample shaded on its own (supersampling): the reference's rate.
+#include "core/render/error_model.h"
+#include "core/render/knobs.h"
+
+namespace tp {
+
+Knob msaaShadingKnob();
+
+// True when a pipeline must shade every sample: MSAA on and `--msaa-shading sample`. At 1x
+// there is one sample, and the pipelines keep their 1x shaders (the knob changes nothing).
+bool shadesPerSample(const RenderSettings& s);
+// True when MSAA is on and the pipeline shades once per pixel (`--msaa-shading pixel`).
+bool shadesPerPixelUnderMsaa(const RenderSettings& s);
+
+// The bound of shading a pixel once at its centre instead of at each 4x sample, where the
+// shading depends on the sample only through the view direction (directional lights,
+// roughness-1 dielectrics, flat surfaces): the largest relative change of brdfCos over a move
+// from the centre to the farthest standard 4x sample.
+double centreShadingBound(const RenderSettings& s, const Scene& scene);
+// For a pipeline's error model (stress): under MSAA at --msaa-shading pixel, that term, or
+// "unbounded" where the case has local lights. Nothing at 1x or at the sample rate.
+void addPixelRateErrorTerm(ErrorBound& b, const ErrorModelInput& in);
+
+} // namespace tp
