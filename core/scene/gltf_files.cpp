@@ -18,9 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-uint32_t readLe32(const unsigned char* p) {
-    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-}
 
 // tinygltf's own decoding (dlib::urldecode, '+' included), so that what is checked here is the
 // path tinygltf then asks for.
@@ -176,26 +173,14 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
-const json* member(const json& object, const char* key) {
-    if (!object.is_object()) return nullptr;
-    auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-}
-
-const json& array(const json& root, const char* key) {
-    static const json kEmpty = json::array();
-    const json* a = member(root, key);
-    return a && a->is_array() ? *a : kEmpty;
-}
-
 // Fully supported extensions; any other one in extensionsRequired is an error.
 const char* const kSupportedExtensions[] = {
     "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_mesh_quantization",
     "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_texture_transform"};
 
 Status checkAssetAndExtensions(const json& root, const WarnFn& warn) {
-    const json* asset = member(root, "asset");
-    const json* version = asset ? member(*asset, "version") : nullptr;
+    const json* asset = jsonMember(root, "asset");
+    const json* version = asset ? jsonMember(*asset, "version") : nullptr;
     if (!version || !version->is_string()) return Error{"asset.version is missing"};
     std::string v = version->get<std::string>();
     if (v.substr(0, v.find('.')) != "2")
@@ -206,14 +191,14 @@ Status checkAssetAndExtensions(const json& root, const WarnFn& warn) {
         return false;
     };
     std::string unsupported;
-    for (const json& e : array(root, "extensionsRequired")) {
+    for (const json& e : jsonArray(root, "extensionsRequired")) {
         std::string name = e.is_string() ? e.get<std::string>() : e.dump();
         if (!supported(name)) unsupported += (unsupported.empty() ? "" : ", ") + name;
     }
     if (!unsupported.empty())
         return Error{"requires extension " + unsupported + ", which this loader does not support"};
     std::string ignored;
-    for (const json& e : array(root, "extensionsUsed"))
+    for (const json& e : jsonArray(root, "extensionsUsed"))
         if (e.is_string() && !supported(e.get<std::string>()))
             ignored += (ignored.empty() ? "" : ", ") + e.get<std::string>();
     if (!ignored.empty()) warn("ignoring extension " + ignored + " (used, not required)");
@@ -221,7 +206,7 @@ Status checkAssetAndExtensions(const json& root, const WarnFn& warn) {
 }
 
 uint64_t unsignedMember(const json& object, const char* key, uint64_t fallback) {
-    const json* m = member(object, key);
+    const json* m = jsonMember(object, key);
     return m && m->is_number_unsigned() ? m->get<uint64_t>() : fallback;
 }
 
@@ -229,10 +214,10 @@ uint64_t unsignedMember(const json& object, const char* key, uint64_t fallback) 
 // byteLength bytes. Images: a problem there is a placeholder later, so it is only recorded.
 Status prescanUris(const json& root, const fs::path& folder, bool binary, FileAccess& access,
                    std::vector<std::string>& imageProblems) {
-    const json& buffers = array(root, "buffers");
+    const json& buffers = jsonArray(root, "buffers");
     for (size_t i = 0; i < buffers.size(); ++i) {
         std::string label = "buffer " + std::to_string(i);
-        const json* uri = member(buffers[i], "uri");
+        const json* uri = jsonMember(buffers[i], "uri");
         if (!uri) {
             if (binary) continue; // the GLB's BIN chunk
             return Error{label + " has no uri"};
@@ -247,7 +232,7 @@ Status prescanUris(const json& root, const fs::path& folder, bool binary, FileAc
         fs::path resolved;
         if (std::string problem = uriProblem(text, folder, resolved); !problem.empty())
             return Error{label + ": the URI " + problem + "; refusing to read it"};
-        const json* length = member(buffers[i], "byteLength");
+        const json* length = jsonMember(buffers[i], "byteLength");
         if (!length || !length->is_number_unsigned())
             return Error{label + ": byteLength is missing or not a whole number"};
         uint64_t byteLength = length->get<uint64_t>();
@@ -261,11 +246,11 @@ Status prescanUris(const json& root, const fs::path& folder, bool binary, FileAc
         access.allowed[resolved.string()] = byteLength;
     }
 
-    const json& images = array(root, "images");
-    const json& views = array(root, "bufferViews");
+    const json& images = jsonArray(root, "images");
+    const json& views = jsonArray(root, "bufferViews");
     imageProblems.assign(images.size(), "");
     for (size_t i = 0; i < images.size(); ++i) {
-        if (const json* view = member(images[i], "bufferView")) {
+        if (const json* view = jsonMember(images[i], "bufferView")) {
             // tinygltf hands &buffer.data[view.byteOffset] to the image loader unchecked.
             uint64_t v = view->is_number_unsigned() ? view->get<uint64_t>() : UINT64_MAX;
             std::string label = "image " + std::to_string(i) + ": bufferView";
@@ -279,7 +264,7 @@ Status prescanUris(const json& root, const fs::path& folder, bool binary, FileAc
                 return Error{label + " lies outside its buffer"};
             continue;
         }
-        const json* uri = member(images[i], "uri");
+        const json* uri = jsonMember(images[i], "uri");
         if (!uri || !uri->is_string()) continue;
         std::string text = uri->get<std::string>();
         if (decodableDataUri(text)) {
@@ -393,79 +378,6 @@ Status checkGlb(const std::vector<unsigned char>& b, std::string_view& jsonText)
     return {};
 }
 
-namespace {
-
-void appendLe32(std::vector<unsigned char>& out, uint32_t v) {
-    for (int i = 0; i < 4; ++i)
-        out.push_back(uint8_t(v >> (8 * i)));
-}
-
-// The patches of patchForTinygltf on the parsed JSON; true if anything changed.
-bool patchJson(json& root) {
-    bool changed = false;
-    if (root.contains("buffers") && root["buffers"].is_array())
-        for (json& buffer : root["buffers"]) {
-            if (!buffer.is_object() || buffer.contains("uri")) continue;
-            const json* ext = member(buffer, "extensions");
-            ext = ext ? member(*ext, "EXT_meshopt_compression") : nullptr;
-            const json* fallback = ext ? member(*ext, "fallback") : nullptr;
-            if (!fallback || !fallback->is_boolean() || !fallback->get<bool>()) continue;
-            buffer["uri"] = "data:application/octet-stream;base64,AA=="; // one zero byte
-            buffer["byteLength"] = 1;
-            changed = true;
-        }
-    if (!root.contains("accessors") || !root["accessors"].is_array()) return changed;
-    json& accessors = root["accessors"];
-    for (const json& mesh : array(root, "meshes"))
-        for (const json& p : array(mesh, "primitives")) {
-            const json* ext = member(p, "extensions");
-            ext = ext ? member(*ext, "KHR_draco_mesh_compression") : nullptr;
-            const json* indices = member(p, "indices");
-            const json* view = ext ? member(*ext, "bufferView") : nullptr;
-            if (!indices || !indices->is_number_unsigned() || !view || !view->is_number_unsigned() ||
-                indices->get<uint64_t>() >= accessors.size())
-                continue;
-            json& a = accessors[indices->get<size_t>()];
-            if (!a.is_object() || a.contains("bufferView")) continue;
-            a["bufferView"] = *view;
-            changed = true;
-        }
-    return changed;
-}
-
-} // namespace
-
-Status patchForTinygltf(std::vector<unsigned char>& bytes, bool binary, std::string_view& jsonText) {
-    if (jsonText.find("EXT_meshopt_compression") == std::string_view::npos &&
-        jsonText.find("KHR_draco_mesh_compression") == std::string_view::npos)
-        return {};
-    json root = json::parse(jsonText.begin(), jsonText.end(), nullptr, false);
-    if (root.is_discarded() || !root.is_object()) return {}; // prescan says what is wrong
-    if (!patchJson(root)) return {};
-    std::string text = root.dump();
-    if (!binary) {
-        bytes.assign(text.begin(), text.end());
-        jsonText = std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-        return {};
-    }
-    // The GLB again, its JSON chunk replaced (checkGlb has checked the old layout).
-    const uint64_t binStart = 20 + ((uint64_t(readLe32(&bytes[12])) + 3) & ~3ull);
-    while (text.size() % 4)
-        text.push_back(' ');
-    const uint64_t rest = binStart < bytes.size() ? bytes.size() - binStart : 0;
-    const uint64_t total = 12 + 8 + text.size() + rest;
-    if (total >= (1ull << 32)) return Error{"file is over 4 GiB once its JSON is rewritten"};
-    std::vector<unsigned char> glb(bytes.begin(), bytes.begin() + 8);
-    appendLe32(glb, uint32_t(total));
-    appendLe32(glb, uint32_t(text.size()));
-    appendLe32(glb, 0x4E4F534Au);
-    glb.insert(glb.end(), text.begin(), text.end());
-    if (rest) glb.insert(glb.end(), bytes.begin() + int64_t(binStart), bytes.end());
-    bytes.swap(glb);
-    jsonText = std::string_view(reinterpret_cast<const char*>(&bytes[20]), text.size());
-    return {};
-}
-
 Status prescan(std::string_view jsonText, const fs::path& folder, bool binary, FileAccess& access,
                std::vector<std::string>& imageProblems, const WarnFn& warn) {
     json root;
@@ -491,6 +403,23 @@ std::string firstLine(const std::string& text) {
         begin = end + 1;
     }
     return "";
+}
+
+// Shared with gltf_patch.cpp (declared in gltf_internal.h).
+uint32_t readLe32(const unsigned char* p) {
+    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
+
+const json* jsonMember(const json& object, const char* key) {
+    if (!object.is_object()) return nullptr;
+    auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+}
+
+const json& jsonArray(const json& root, const char* key) {
+    static const json kEmpty = json::array();
+    const json* a = jsonMember(root, key);
+    return a && a->is_array() ? *a : kEmpty;
 }
 
 } // namespace tp::gltf

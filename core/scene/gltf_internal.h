@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
@@ -81,6 +83,12 @@ Status prescan(std::string_view jsonText, const std::filesystem::path& folder, b
 //   are in the bitstream) names the Draco bufferView, which tinygltf demands of any index
 //   accessor; checkAccessor(compressed) never reads through it.
 Status patchForTinygltf(std::vector<unsigned char>& bytes, bool binary, std::string_view& jsonText);
+
+// Small readers shared by gltf_files.cpp and gltf_patch.cpp: a little-endian word of a GLB,
+// an object's member (null when absent or not an object), an array member (empty when absent).
+uint32_t readLe32(const unsigned char* p);
+const nlohmann::json* jsonMember(const nlohmann::json& object, const char* key);
+const nlohmann::json& jsonArray(const nlohmann::json& root, const char* key);
 // Routes tinygltf's file access through `access` (which must outlive the load) and makes it
 // keep images encoded (tinygltf::Image::as_is) for loadMaterials to decode.
 void confine(tinygltf::TinyGLTF& loader, FileAccess& access);
