@@ -367,6 +367,10 @@ TEST(Compare, MsaaReportsErrorAgainstBothReferences) {
         EXPECT_EQ(row.at("rmse_hdr_center").empty(), !pipeline) << row.at("pipeline");
         EXPECT_EQ(row.at("psnr_tonemapped_center").empty(), !pipeline) << row.at("pipeline");
     }
+    // sweep.html: time, memory, RMSE and HDR-FLIP plots, and the error against the centre reference.
+    const std::string sweepPage = readText(sweep + "/sweep.html");
+    EXPECT_EQ(count(sweepPage, "<svg"), 5u);
+    EXPECT_NE(sweepPage.find("RMSE vs centre reference"), std::string::npos);
 }
 
 // A configuration that cannot run is a failed row with its reason, the others still run and
