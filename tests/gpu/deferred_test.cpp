@@ -164,9 +164,7 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
         RunResult atSamples = runOrFail(*ctx, gpuScene, "reference", s);
         s.set("reference-msaa", "center");
         RunResult atCentre = runOrFail(*ctx, gpuScene, "reference", s);
-        const ImageRGBA* edges = nullptr;
-        for (const DebugImage& d : deferred.debugImages)
-            if (d.name == "edge_mask") edges = &d.image;
+        const ImageRGBA* edges = debugImageOf(deferred, "edge_mask");
         ASSERT_NE(edges, nullptr);
         double worst[2] = {0, 0}, shadingRate = 0;
         size_t count[2] = {0, 0};

@@ -195,9 +195,7 @@ void expectPixelRateMatchesCentreReference(const Scene& scene, RenderSettings se
     RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", settings);
     settings.set("msaa-shading", "sample");
     RunResult fpSample = runOrFail(*ctx, gpuScene, "forwardplus", settings);
-    const ImageRGBA* edges = nullptr;
-    for (const DebugImage& d : deferred.debugImages)
-        if (d.name == "edge_mask") edges = &d.image;
+    const ImageRGBA* edges = debugImageOf(deferred, "edge_mask");
     ASSERT_NE(edges, nullptr);
     ImageRGBA interior = ref.hdr, edge = ref.hdr, fpInterior = fp.hdr, fpEdge = fp.hdr;
     size_t edgeCount = 0;

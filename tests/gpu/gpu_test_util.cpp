@@ -82,4 +82,10 @@ RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipelin
     return run.ok() ? std::move(*run) : RunResult{};
 }
 
+const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name) {
+    for (const DebugImage& d : run.debugImages)
+        if (d.name == name) return &d.image;
+    return nullptr;
+}
+
 } // namespace tp::test

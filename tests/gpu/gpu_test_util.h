@@ -28,4 +28,7 @@ Scene makeFloorScene(const std::vector<Light>& lights);
 RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
                     const RenderSettings& settings, uint32_t frames = 1);
 
+// The run's debug image of that name (settings.debug), or null.
+const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name);
+
 } // namespace tp::test
