@@ -97,6 +97,7 @@ std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
     MetricsOptions hdrOptions;
     hdrOptions.psnrPeak = r.hdrPsnrPeak;
     std::vector<ImageRGBA> diffs;
+    const FlipReference flipRef = prepareFlipReference(ref, r.exposureEv, r.options->flipDistance);
     for (PipelineOutcome& p : r.pipelines) {
         if (!p.run) {
             diffs.emplace_back();
@@ -106,7 +107,7 @@ std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
         p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
         diffs.push_back(signedDifference(p.run->hdr, ref));
         p.diffP99 = differencePercentile99(diffs.back());
-        p.flip = measureFlip(p.run->hdr, ref, r.exposureEv, r.options->flipDistance, /*keepMaps=*/true);
+        p.flip = measureFlip(p.run->hdr, flipRef, /*keepMaps=*/true);
         r.diffScale = std::max(r.diffScale, p.diffP99);
     }
     // A scale of 0 (every pipeline equals the reference) would make the legend meaningless.

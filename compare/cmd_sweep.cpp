@@ -83,7 +83,7 @@ struct Reference {
     std::optional<RunResult> run;
     std::optional<RunResult> center; // under MSAA: --reference-msaa center
     float ev = 0, peak = 1;
-    float flipDistance = 0.7f; // metres
+    FlipReference flip; // FLIP's share of the reference, prepared once (points into run)
 };
 
 SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s, const Result<RunResult>& result,
@@ -109,7 +109,7 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
         hdr.psnrPeak = ref.peak;
         row.hdr = computeError(r.hdr, ref.run->hdr, hdr);
         row.display = computeError(tonemapToDisplay(r.hdr, ref.ev), tonemapToDisplay(ref.run->hdr, ref.ev));
-        row.flip = measureFlip(r.hdr, ref.run->hdr, ref.ev, ref.flipDistance, /*keepMaps=*/false);
+        row.flip = measureFlip(r.hdr, ref.flip, /*keepMaps=*/false);
         row.measured = true;
         row.exposureEv = ref.ev;
         row.hdrPsnrPeak = ref.peak;
@@ -243,7 +243,6 @@ int runSweep(const SweepOptions& o) {
         for (const View& view : views) {
             SceneFeatures features = analyzeScene(scene, view.settings.msaa);
             Reference ref;
-            ref.flipDistance = o.flipDistance;
             for (const std::string& name : names)
                 for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
                     const bool isRef = name == kReferenceRenderer;
@@ -258,6 +257,7 @@ int runSweep(const SweepOptions& o) {
                         ref.run = result.value();
                         ref.ev = autoExposureEv(ref.run->hdr);
                         ref.peak = brightestFiniteChannel(ref.run->hdr);
+                        ref.flip = prepareFlipReference(ref.run->hdr, ref.ev, o.flipDistance);
                         ref.center = centerReference(o, *ctx, gpuScene, features, s, ro);
                     }
                     rows.push_back(measureRun(name, lights, s, result, ref, *ctx));

@@ -3,16 +3,11 @@
 
 #include <cmath>
 
+#include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 
 namespace tp::cli {
 namespace {
-
-// What writePng stores: [0,1] to 0..255 rounded, read back / 255.
-ImageRGBA asEightBit(ImageRGBA display) {
-    for (float& v : display.rgba) v = !(v > 0.0f) ? 0.0f : v >= 1.0f ? 1.0f : float(std::lround(v * 255.0f)) / 255.0f;
-    return display;
-}
 
 nlohmann::json pooledJson(const FlipStats& s) {
     return {{"mean", s.mean},         {"weighted_median", s.weightedMedian}, {"weighted_q1", s.weightedQ1},
@@ -21,13 +16,21 @@ nlohmann::json pooledJson(const FlipStats& s) {
 
 } // namespace
 
-FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear, float exposureEv,
-                        float distanceMetres, bool keepMaps) {
+FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float exposureEv, float distanceMetres) {
+    FlipReference r;
+    r.linear = &referenceLinear;
+    r.display = asStoredInPng(tonemapToDisplay(referenceLinear, exposureEv));
+    r.exposures = flipAutoExposures(referenceLinear);
+    r.exposureEv = exposureEv;
+    r.ppd = flipPixelsPerDegree(distanceMetres);
+    return r;
+}
+
+FlipMeasure measureFlip(const ImageRGBA& testLinear, const FlipReference& reference, bool keepMaps) {
     FlipMeasure m;
-    const float ppd = flipPixelsPerDegree(distanceMetres);
-    FlipResult ldr = ldrFlip(asEightBit(tonemapToDisplay(testLinear, exposureEv)),
-                             asEightBit(tonemapToDisplay(referenceLinear, exposureEv)), ppd);
-    FlipResult hdr = hdrFlip(testLinear, referenceLinear, ppd);
+    FlipResult ldr = ldrFlip(asStoredInPng(tonemapToDisplay(testLinear, reference.exposureEv)), reference.display,
+                             reference.ppd);
+    FlipResult hdr = hdrFlip(testLinear, *reference.linear, reference.ppd, &reference.exposures);
     if (ldr.map.r.empty() || hdr.map.r.empty()) return m;
     m.measured = true;
     m.ldr = ldr.stats;
@@ -38,6 +41,11 @@ FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceL
         m.hdrMap = std::move(hdr.map);
     }
     return m;
+}
+
+FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear, float exposureEv,
+                        float distanceMetres, bool keepMaps) {
+    return measureFlip(testLinear, prepareFlipReference(referenceLinear, exposureEv, distanceMetres), keepMaps);
 }
 
 nlohmann::json flipJson(const FlipMeasure& m) {

@@ -17,6 +17,18 @@ struct FlipMeasure {
     ImageR32 hdrMap, ldrMap; // kept only when asked for
 };
 
+// What FLIP needs of the reference, computed once for all the images measured against it:
+// its display image as its PNG holds it, and HDR-FLIP's exposure range.
+struct FlipReference {
+    const ImageRGBA* linear = nullptr;
+    ImageRGBA display;
+    FlipExposures exposures;
+    float exposureEv = 0, ppd = 0;
+};
+FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float exposureEv, float distanceMetres);
+
+FlipMeasure measureFlip(const ImageRGBA& testLinear, const FlipReference& reference, bool keepMaps);
+// One image against a reference measured once (tests).
 FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear, float exposureEv,
                         float distanceMetres, bool keepMaps);
 

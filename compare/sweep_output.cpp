@@ -29,8 +29,8 @@ std::string number(double v) {
 }
 
 // RMSE, PSNR and max |difference|; empty when there is no reference to compare with.
-std::string errorFields(const SweepRow& r, const ErrorReport& e) {
-    if (!r.measured) return ",,";
+std::string errorFields(bool measured, const ErrorReport& e) {
+    if (!measured) return ",,";
     return number(e.rmse) + "," + number(e.psnr) + "," + number(e.maxAbs);
 }
 
@@ -38,12 +38,6 @@ std::string errorFields(const SweepRow& r, const ErrorReport& e) {
 std::string flipFields(const SweepRow& r) {
     if (!r.measured || !r.flip.measured) return ",";
     return number(r.flip.hdr.mean) + "," + number(r.flip.ldr.mean);
-}
-
-// The same against the centre reference (MSAA only).
-std::string centerErrorFields(const SweepRow& r, const ErrorReport& e) {
-    if (!r.measuredCenter) return ",,";
-    return number(e.rmse) + "," + number(e.psnr) + "," + number(e.maxAbs);
 }
 
 } // namespace
@@ -65,8 +59,8 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
         for (const Knob& k : columns) t += csvField(k.valueIn(r.s.knobs)) + ",";
         t += r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
              number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) + "," +
-             errorFields(r, r.hdr) + "," + errorFields(r, r.display) + "," + flipFields(r) + "," +
-             centerErrorFields(r, r.hdrCenter) + "," + centerErrorFields(r, r.displayCenter) + "," +
+             errorFields(r.measured, r.hdr) + "," + errorFields(r.measured, r.display) + "," + flipFields(r) + "," +
+             errorFields(r.measuredCenter, r.hdrCenter) + "," + errorFields(r.measuredCenter, r.displayCenter) + "," +
              number(r.dropped) + "," +
              csvField(device) + "," + csvField(r.error) + "\n";
     }

@@ -27,6 +27,15 @@ uint8_t quantize(float v) {
     return uint8_t(std::lround(v * 255.0f));
 }
 
+} // namespace
+
+ImageRGBA asStoredInPng(ImageRGBA display) {
+    for (float& v : display.rgba) v = float(quantize(v)) / 255.0f;
+    return display;
+}
+
+namespace {
+
 std::vector<uint8_t> quantizeImage(const ImageRGBA& display, bool keepAlpha) {
     std::vector<uint8_t> bytes(display.rgba.size());
     for (size_t i = 0; i < bytes.size(); ++i) {
