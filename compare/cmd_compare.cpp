@@ -226,7 +226,10 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
     c.settings = r.settings;
     c.settings.set("reference-msaa", "center");
     PipelineOutcome& centre = r.centerReference;
-    centre = renderOne(ctx, gpuScene, kReferenceRenderer, c, "[center reference]");
+    // A reference already run with --reference-msaa center is the centre reference: not again.
+    const auto mode = r.settings.knobs.find("reference-msaa");
+    const bool alreadyCentre = mode != r.settings.knobs.end() && mode->second == "center";
+    centre = alreadyCentre ? r.reference : renderOne(ctx, gpuScene, kReferenceRenderer, c, "[center reference]");
     centre.name = "reference_center";
     if (!centre.run) return;
     writeImages(r.options->out, centre, r.exposureEv);

@@ -258,7 +258,12 @@ int runSweep(const SweepOptions& o) {
                         ref.ev = autoExposureEv(ref.run->hdr);
                         ref.peak = brightestFiniteChannel(ref.run->hdr);
                         ref.flip = prepareFlipReference(ref.run->hdr, ref.ev, o.flipDistance);
-                        ref.center = centerReference(o, *ctx, gpuScene, features, s, ro);
+                        // Already at --reference-msaa center: that run is the centre reference.
+                        const auto mode = s.knobs.find("reference-msaa");
+                        ref.center = mode != s.knobs.end() && mode->second == "center" && s.msaa > 1 &&
+                                             o.centerReference
+                                         ? ref.run
+                                         : centerReference(o, *ctx, gpuScene, features, s, ro);
                     }
                     rows.push_back(measureRun(name, lights, s, result, ref, *ctx));
                     rows.back().seconds = std::chrono::duration<double>(Clock::now() - start).count();
