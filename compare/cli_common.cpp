@@ -291,3 +291,8 @@ std::vector<std::string> selectPipelines(const std::string& list) {
 }
 
 } // namespace tp::cli
+
+namespace tp::cli {
+// The viewer regenerates lights without reloading the scene.
+LightGenOptions generatorOptions(const SceneOptions& o) { return lightOptions(o); }
+} // namespace tp::cli

@@ -67,6 +67,9 @@ void checkKnobs(const std::map<std::string, std::string>& values, bool sweep = f
 
 // Loads or builds the scene and sets its lights; warnings go to stderr.
 Scene loadScene(const SceneOptions& o);
+// The light generator's options from `o` (UsageError on a bad one): the viewer regenerates
+// the lights of a loaded scene when only they change.
+LightGenOptions generatorOptions(const SceneOptions& o);
 std::unique_ptr<GpuContext> createContext(const DeviceOptions& o);
 // Resolution and MSAA checked against the device's limits.
 // `base` carries the pipeline knobs; the result adds resolution and MSAA.

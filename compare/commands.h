@@ -17,5 +17,7 @@ CommandRunner addInfoCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLine);
+// viewer/view_command.cpp: the interactive viewer (commandLine: to find this program for export).
+CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine);
 
 } // namespace tp::cli

@@ -41,7 +41,7 @@ bool layerPresent(const char* name) {
     return false;
 }
 
-Result<VkInstance> createInstance(bool validate) {
+Result<VkInstance> createInstance(bool validate, const std::vector<std::string>& extra) {
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "triptych";
     app.apiVersion = VK_API_VERSION_1_3;
@@ -61,6 +61,7 @@ Result<VkInstance> createInstance(bool validate) {
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         info.pNext = &features;
     }
+    for (const std::string& e : extra) extensions.push_back(e.c_str());
     info.enabledLayerCount = uint32_t(layers.size());
     info.ppEnabledLayerNames = layers.data();
     info.enabledExtensionCount = uint32_t(extensions.size());
@@ -168,7 +169,7 @@ VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
 }
 
 Result<std::vector<DeviceInfo>> GpuContext::listDevices() {
-    Result<VkInstance> instance = createInstance(false);
+    Result<VkInstance> instance = createInstance(false, {});
     if (!instance) return Error{instance.error()};
     std::vector<DeviceInfo> out;
     std::vector<VkPhysicalDevice> devices = physicalDevices(*instance);
@@ -179,7 +180,7 @@ Result<std::vector<DeviceInfo>> GpuContext::listDevices() {
 
 Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& options) {
     std::unique_ptr<GpuContext> ctx(new GpuContext());
-    Result<VkInstance> instance = createInstance(options.validate);
+    Result<VkInstance> instance = createInstance(options.validate, options.instanceExtensions);
     if (!instance) return Error{instance.error()};
     ctx->instance = *instance;
     ctx->validationEnabled_ = options.validate;
@@ -247,6 +248,11 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
+    const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    if (options.swapchain) {
+        deviceInfo.enabledExtensionCount = 1;
+        deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
+    }
     VkResult r = vkCreateDevice(ctx->physical, &deviceInfo, nullptr, &ctx->device);
     if (r != VK_SUCCESS)
         return Error{"cannot create a Vulkan device on '" + ctx->info.name + "': " + vkResultName(r)};

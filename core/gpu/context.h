@@ -1,7 +1,8 @@
 #pragma once
 // Headless Vulkan 1.3 context: instance (optionally with validation + synchronization
 // validation), one physical device, one graphics+compute queue, a command pool, and the
-// memory ledger every allocation goes through. No window, no surface.
+// memory ledger every allocation goes through. No window of its own; the viewer asks for the
+// instance extensions and the swapchain extension it needs (ContextOptions).
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -26,6 +27,10 @@ struct DeviceInfo {
 struct ContextOptions {
     bool validate = false; // Khronos validation + synchronization validation
     std::string device;    // "" = best (discrete > integrated > virtual > cpu), an index, or a name substring
+    // For a window (the viewer): the surface extensions GLFW asks for, and VK_KHR_swapchain
+    // on the device. Empty/false: a headless context, as every other command uses.
+    std::vector<std::string> instanceExtensions;
+    bool swapchain = false;
 };
 
 struct DeviceCaps {

@@ -1,0 +1,34 @@
+#!/bin/bash
+# triptych view in a real window under Xvfb (GLFW + swapchain, validation on), and with no
+# display at all: one line suggesting --headless or an X server, exit 2.
+bin=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/cli_lib.sh"
+
+# No display: the one line, no window, no crash.
+(cd "$work/cwd" && env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view builtin:courtyard-small --lights 4) \
+    >"$work/stdout" 2>"$work/stderr"
+code=$?
+lines=$(grep -c '' "$work/stderr")
+first=$(head -n 1 "$work/stderr")
+report "view without a display" "$(error_problem "" "--headless" 2)"
+[[ "$first" == *"X server"* ]] || report "view without a display" "the message does not suggest an X server"
+
+if ! command -v xvfb-run >/dev/null; then
+    echo "SKIP view in a window: xvfb-run is not installed (apt-get install xvfb xauth)"
+else
+    # A short script in the window: select, render, switch mode, flip; close after it.
+    printf 'split 0.3\nwait\nmode difference\nkey f\nwait\nframes 5\n' >"$work/script.txt"
+    (cd "$work/cwd" && timeout 240 xvfb-run -a -s "-screen 0 1280x720x24" "$bin" view builtin:courtyard-small \
+        --lights 8 --res 160x90 --validate --no-reference --script "$work/script.txt" --out "$work/out" \
+        --quit-after 10) >"$work/stdout" 2>"$work/stderr"
+    code=$?
+    if [ "$code" -ne 0 ]; then
+        report "view in a window under Xvfb" "exit code $code"
+    else
+        report "view in a window under Xvfb" ""
+    fi
+fi
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

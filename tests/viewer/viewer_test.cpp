@@ -1,0 +1,197 @@
+// triptych view --headless on the default device (lavapipe) with validation on: scripts drive
+// the same UI code a user sees, and the tests check what the screenshots and stats show.
+// Small: 160x90 of the small built-in scene, the reference only where a test needs it.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/image/image_io.h"
+#include "core/reference/reference_renderer.h"
+#include "core/render/renderer.h"
+#include "viewer/composite.h"
+#include "viewer/view_loop.h"
+
+namespace tp::view {
+namespace {
+
+constexpr uint32_t kW = 160, kH = 90;
+
+// The first two registered pipelines (never spelled: the registry decides).
+std::string pipeline(size_t i) {
+    std::vector<std::string> names;
+    for (const RendererEntry& e : registeredRenderers())
+        if (e.name != kReferenceRenderer) names.push_back(e.name);
+    return names.at(std::min(i, names.size() - 1));
+}
+
+struct Run {
+    int code = -1;
+    std::string out;
+    ImageRGBA shot(const std::string& name) const {
+        Result<ImageRGBA> r = readPng(out + "/" + name);
+        EXPECT_TRUE(r) << (r ? "" : r.error());
+        return r ? *r : ImageRGBA{};
+    }
+    nlohmann::json stats(const std::string& name) const {
+        std::ifstream in(out + "/" + name);
+        return nlohmann::json::parse(in);
+    }
+};
+
+Run runScript(const std::string& name, const std::string& script, bool reference = false) {
+    Run run;
+    run.out = (std::filesystem::temp_directory_path() / ("triptych_view_" + name)).string();
+    std::filesystem::remove_all(run.out);
+    std::filesystem::create_directories(run.out);
+    const std::string path = run.out + "/script.txt";
+    std::ofstream(path) << script;
+    LoopSetup setup;
+    Result<std::vector<ScriptLine>> lines = readScript(path);
+    EXPECT_TRUE(lines) << (lines ? "" : lines.error());
+    if (!lines) return run;
+    setup.script = *lines;
+    setup.scriptPath = path;
+    setup.out = run.out;
+    setup.waitLimitSeconds = 300;
+    ViewState& s = setup.viewer.initial;
+    s.scene.scene = "builtin:courtyard-small";
+    s.scene.lightCount = 16;
+    s.width = kW, s.height = kH;
+    s.pipelineA = pipeline(0);
+    s.pipelineB = pipeline(1);
+    s.reference = reference;
+    setup.viewer.context.validate = true;
+    run.code = runHeadless(setup);
+    return run;
+}
+
+bool isDivider(const ImageRGBA& img, uint32_t x, uint32_t y) {
+    const float* p = img.at(x, y);
+    return std::lround(p[0] * 255) == kDividerRgb[0] && std::lround(p[1] * 255) == kDividerRgb[1] &&
+           std::lround(p[2] * 255) == kDividerRgb[2];
+}
+
+uint32_t dividerRows(const ImageRGBA& img, uint32_t x) {
+    uint32_t n = 0;
+    for (uint32_t y = 0; y < kH; ++y) n += isDivider(img, x, y);
+    return n;
+}
+
+TEST(Viewer, SplitLineSitsWhereTheScriptAndTheDragPutIt) {
+    Run r = runScript("split", "split 0.25\nwait\nscreenshot split.png\nstats split.json\n"
+                               "drag 40 45 120 45\nwait\nscreenshot dragged.png\nstats dragged.json\n");
+    ASSERT_EQ(r.code, 0);
+    ImageRGBA shot = r.shot("split.png");
+    ASSERT_GE(shot.width, kW + 300); // the scene area and the panel beside it
+    EXPECT_EQ(dividerRows(shot, 40), kH) << "the divider at 0.25 of 160 pixels is column 40";
+    for (uint32_t x : {0u, 39u, 41u, 100u}) EXPECT_EQ(dividerRows(shot, x), 0u) << "column " << x;
+    // The UI is in the screenshot: the panel right of the scene area is not one flat colour.
+    const float* a = shot.at(kW + 40, 8);
+    bool varied = false;
+    for (uint32_t y = 0; y < 200 && !varied; ++y)
+        for (uint32_t x = kW + 1; x < shot.width; x += 3) varied |= shot.at(x, y)[0] != a[0];
+    EXPECT_TRUE(varied);
+    EXPECT_EQ(r.stats("split.json")["split_column"], 40);
+    ImageRGBA dragged = r.shot("dragged.png");
+    EXPECT_EQ(dividerRows(dragged, 120), kH) << "dragged from column 40 to 120";
+    EXPECT_EQ(dividerRows(dragged, 40), 0u);
+    EXPECT_EQ(r.stats("dragged.json")["split_column"], 120);
+}
+
+TEST(Viewer, DifferenceOfAPipelineAgainstItselfIsZero) {
+    Run r = runScript("diff_self", "pipeline b " + pipeline(0) + "\nmode difference\nwait\nscreenshot diff.png\n"
+                                   "stats diff.json\n");
+    ASSERT_EQ(r.code, 0);
+    ImageRGBA shot = r.shot("diff.png");
+    nlohmann::json stats = r.stats("diff.json");
+    // compare's rule: a scale of 0 becomes 1e-6 (the legend needs a non-zero end).
+    EXPECT_FLOAT_EQ(stats["difference_scale"].get<float>(), 1e-6f);
+    // Every pixel of the map is the colour of 0: the first pixel's, and not the divider's.
+    const float* zero = shot.at(0, 0);
+    uint32_t other = 0;
+    for (uint32_t y = 0; y < kH; ++y)
+        for (uint32_t x = 0; x < kW; ++x)
+            for (int c = 0; c < 3; ++c) other += shot.at(x, y)[c] != zero[c];
+    EXPECT_EQ(other, 0u);
+    EXPECT_FALSE(isDivider(shot, 0, 0));
+}
+
+TEST(Viewer, DifferenceOfTwoPipelinesIsNotBlank) {
+    if (pipeline(0) == pipeline(1)) GTEST_SKIP() << "one pipeline registered";
+    Run r = runScript("diff_two", "mode difference\nwait\nstats diff.json\n");
+    ASSERT_EQ(r.code, 0);
+    EXPECT_GT(r.stats("diff.json")["difference_scale"].get<float>(), 1e-6f);
+}
+
+TEST(Viewer, FlipShowsBWhereAWas) {
+    if (pipeline(0) == pipeline(1)) GTEST_SKIP() << "one pipeline registered";
+    Run r = runScript("flip", "split 1\nwait\nscreenshot a.png\nkey f\nwait\nscreenshot flipped.png\n"
+                              "pipeline a " + pipeline(1) + "\nflip off\nwait\nscreenshot b.png\n");
+    ASSERT_EQ(r.code, 0);
+    ImageRGBA a = r.shot("a.png"), flipped = r.shot("flipped.png"), b = r.shot("b.png");
+    auto sceneDiffers = [](const ImageRGBA& x, const ImageRGBA& y) {
+        uint32_t n = 0;
+        for (uint32_t row = 0; row < kH; ++row)
+            for (uint32_t col = 0; col < kW; ++col)
+                for (int c = 0; c < 3; ++c) n += x.at(col, row)[c] != y.at(col, row)[c];
+        return n;
+    };
+    EXPECT_EQ(sceneDiffers(flipped, b), 0u) << "flip shows B over the whole split-at-1 view";
+    EXPECT_GT(sceneDiffers(a, flipped), 0u) << "the two pipelines' images differ somewhere";
+}
+
+TEST(Viewer, InspectorReadsThePixelUnderTheCursor) {
+    Run r = runScript("hover", "pipeline b " + pipeline(0) + "\nwait\nhover 100 50\nstats hover.json\n"
+                               "screenshot hover.png\n");
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json s = r.stats("hover.json");
+    ASSERT_TRUE(s.contains("inspection"));
+    EXPECT_EQ(s["inspection"]["x"], 100);
+    EXPECT_EQ(s["inspection"]["y"], 50);
+    EXPECT_EQ(s["inspection"]["a"], s["inspection"]["b"]); // one pipeline on both sides
+    double sum = 0;
+    for (double v : s["inspection"]["a"]) sum += v;
+    EXPECT_GT(sum, 0.0) << "a lit courtyard pixel";
+}
+
+TEST(Viewer, ReferenceInTheBackgroundIsMarkedStaleWhenTheViewMoves) {
+    Run r = runScript("reference", "wait\nstats fresh.json\ncamera orbit 20 0\nframes 1\nstats moved.json\n"
+                                   "wait\nstats again.json\n", /*reference=*/true);
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json fresh = r.stats("fresh.json"), moved = r.stats("moved.json"), again = r.stats("again.json");
+    EXPECT_FALSE(fresh["reference_stale"].get<bool>());
+    ASSERT_TRUE(fresh.contains("a_vs_reference"));
+    EXPECT_GT(fresh["a_vs_reference"]["psnr"].get<double>(), 20.0);
+    EXPECT_TRUE(moved["reference_stale"].get<bool>());
+    EXPECT_FALSE(moved.contains("a_vs_reference")) << "no metric against another view's reference";
+    EXPECT_FALSE(again["reference_stale"].get<bool>());
+    EXPECT_NE(fresh["camera"]["position"], again["camera"]["position"]);
+}
+
+TEST(Viewer, ASceneThatFailsToLoadKeepsTheViewerOpenWithTheError) {
+    Run r = runScript("bad_scene", "scene /nonexistent/scene.gltf\nwait\nexpect-error nonexistent\n"
+                                   "screenshot error.png\nscene builtin:courtyard-small\nwait\nstats ok.json\n");
+    ASSERT_EQ(r.code, 0);
+    EXPECT_EQ(r.stats("ok.json")["error"], "");
+}
+
+TEST(Viewer, OverlayShowsADebugImageOfA) {
+    Run r = runScript("overlay", "mode overlay\nwait\nstats overlay.json\nscreenshot overlay.png\n");
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json s = r.stats("overlay.json");
+    EXPECT_FALSE(s["pipeline_a"]["debug_images"].empty());
+}
+
+TEST(Viewer, ABadScriptLineIsOneErrorAndNoRun) {
+    const std::string path = (std::filesystem::temp_directory_path() / "triptych_view_bad.txt").string();
+    std::ofstream(path) << "split 0.5\nteleport 1 2\n";
+    Result<std::vector<ScriptLine>> lines = readScript(path);
+    ASSERT_FALSE(lines);
+    EXPECT_NE(lines.error().find(":2: unknown command 'teleport'"), std::string::npos) << lines.error();
+}
+
+} // namespace
+} // namespace tp::view

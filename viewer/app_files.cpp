@@ -1,0 +1,77 @@
+// What the viewer writes and reads: camera bookmarks (the camera file format every command
+// reads with --camera) and exports.
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/reference/reference_renderer.h"
+#include "viewer/viewer_app.h"
+#if __has_include("core/render/camera_file.h")
+#include "core/render/camera_file.h"
+#define TP_HAVE_CAMERA_FILE 1
+#endif
+
+namespace tp::view {
+#ifdef TP_HAVE_CAMERA_FILE
+
+void ViewerApp::saveBookmark(const std::string& path) {
+    Status s = writeCameraFile(path, userCamera());
+    error_ = s ? "" : s.error();
+}
+
+void ViewerApp::loadBookmark(const std::string& path) {
+    Result<Camera> c = readCameraFile(path);
+    if (!c) {
+        // A list of bookmarks: the first.
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(path, ec)) {
+            try {
+                std::ifstream in(path);
+                nlohmann::json j = nlohmann::json::parse(in);
+                if (j.is_array() && !j.empty()) c = cameraFromJson(j.front(), path + "[0]");
+            } catch (const std::exception&) {
+            }
+        }
+    }
+    if (!c) {
+        error_ = c.error();
+        return;
+    }
+    setCamera(*c);
+    error_.clear();
+}
+
+void ViewerApp::startExport(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) {
+        error_ = "export: cannot create " + dir + " (" + ec.message() + ")";
+        return;
+    }
+    const std::string camera = dir + "/camera.json";
+    if (Status s = writeCameraFile(camera, userCamera()); !s) {
+        error_ = s.error();
+        return;
+    }
+    const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
+    std::vector<std::string> render = exportArguments(state_, "render", camera, ev);
+    render.insert(render.begin(), options_.exe);
+    render.insert(render.end(), {"--pipeline", state_.pipelineA, "--out", dir + "/render"});
+    std::vector<std::string> compare = exportArguments(state_, "compare", camera, ev);
+    compare.insert(compare.begin(), options_.exe);
+    std::string pipelines;
+    for (const std::string& p : {state_.pipelineA, state_.pipelineB})
+        if (p != kReferenceRenderer && pipelines.find(p) == std::string::npos)
+            pipelines += (pipelines.empty() ? "" : ",") + p;
+    if (pipelines.empty()) pipelines = cli::defaultPipelineList();
+    compare.insert(compare.end(), {"--pipelines", pipelines, "--out", dir + "/compare"});
+    if (!exporter_.start({render, compare}, dir + "/export.log")) error_ = "an export is still running";
+}
+#else
+void ViewerApp::saveBookmark(const std::string&) { error_ = "bookmarks: camera files are not in this build yet"; }
+void ViewerApp::loadBookmark(const std::string&) { error_ = "bookmarks: camera files are not in this build yet"; }
+void ViewerApp::startExport(const std::string&) { error_ = "export: camera files are not in this build yet"; }
+#endif
+
+} // namespace tp::view

@@ -1,0 +1,14 @@
+#pragma once
+// The viewer's keys, one table for the window (GLFW key codes of letters are their ASCII
+// upper case) and for scripts (`key F`): F flips A and B, W/A/S/D/Q/E fly, R renders the
+// reference now, 1/2/3 pick split / difference / overlay.
+namespace tp::view {
+
+class ViewerApp;
+
+// True when `key` is one of the viewer's keys (it was applied).
+bool applyKey(ViewerApp& app, int key);
+// Keys held down move the camera every frame (fly), not once per press.
+bool isHeldKey(int key);
+
+} // namespace tp::view

@@ -1,0 +1,168 @@
+#include "viewer/render_worker.h"
+
+#include <chrono>
+
+#include "core/render/scene_gpu.h"
+#include "core/scene/lights.h"
+
+namespace tp::view {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
+RenderWorker::RenderWorker(ContextOptions options, std::string label)
+    : options_(std::move(options)), label_(std::move(label)) {
+    thread_ = std::thread([this] { loop(); });
+}
+
+RenderWorker::~RenderWorker() { stop(); }
+
+std::vector<std::string> RenderWorker::stop() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        quit_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+    return messages_;
+}
+
+void RenderWorker::submit(RenderJob job) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        pending_ = std::move(job);
+    }
+    wake_.notify_all();
+}
+
+std::optional<RenderOutcome> RenderWorker::take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<RenderOutcome> out = std::move(done_);
+    done_.reset();
+    return out;
+}
+
+bool RenderWorker::idle() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return !pending_ && !running_ && !done_;
+}
+
+void RenderWorker::loop() {
+    Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(options_);
+    if (ctx) ctx_ = std::move(*ctx);
+    else contextError_ = ctx.error();
+    for (;;) {
+        RenderJob job;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [this] { return quit_ || pending_; });
+            if (quit_) break;
+            job = std::move(*pending_);
+            pending_.reset();
+            running_ = true;
+        }
+        RenderOutcome outcome = runJob(job);
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_ = std::move(outcome);
+        running_ = false;
+    }
+    // Everything on this device is released here, on its own thread, before its messages are read.
+    gpuScene_.reset();
+    if (ctx_) messages_ = ctx_->validationMessages();
+    ctx_.reset();
+}
+
+// Loads the scene when its key changed, regenerates the lights when theirs did.
+void RenderWorker::prepareScene(const RenderJob& job, RenderOutcome& out) {
+    const ViewState& s = job.state;
+    auto start = std::chrono::steady_clock::now();
+    if (sceneKey(s) != sceneKey_) {
+        gpuScene_.reset();
+        scene_.reset();
+        sceneKey_.clear();
+        lightsKey_.clear();
+        cli::SceneOptions plain = s.scene; // the scene's own lights; generated ones follow
+        plain.lightCount = 0;
+        plain.lightsFile.clear();
+        plain.dropSceneLights = false;
+        scene_ = std::make_unique<Scene>(cli::loadScene(plain));
+        sceneLights_ = scene_->lights;
+        gpuScene_ = std::make_unique<SceneGpu>(*ctx_, *scene_);
+        sceneKey_ = sceneKey(s);
+        out.rebuilt = "scene";
+    }
+    if (lightsKey(s) != lightsKey_) {
+        std::vector<Light> lights = s.scene.dropSceneLights ? std::vector<Light>{} : sceneLights_;
+        if (!s.scene.lightsFile.empty()) {
+            Result<std::vector<Light>> file = readLightsFile(s.scene.lightsFile);
+            if (!file) throw cli::UsageError(file.error());
+            lights = std::move(*file);
+        } else {
+            std::vector<Light> generated = generateLights(scene_->bounds, cli::generatorOptions(s.scene));
+            lights.insert(lights.end(), generated.begin(), generated.end());
+        }
+        scene_->lights = std::move(lights);
+        gpuScene_->setLights(scene_->lights);
+        lightsKey_ = lightsKey(s);
+        if (out.rebuilt.empty()) out.rebuilt = "lights";
+    }
+    if (out.rebuilt.empty()) out.rebuilt = "renderer";
+    out.sceneMs = out.rebuilt == "renderer" ? 0.0 : msSince(start);
+}
+
+RenderOutcome RenderWorker::runJob(const RenderJob& job) {
+    RenderOutcome out;
+    out.id = job.id;
+    out.key = job.key;
+    auto start = std::chrono::steady_clock::now();
+    if (!ctx_) {
+        out.error = contextError_;
+        return out;
+    }
+    try {
+        prepareScene(job, out);
+    } catch (const std::exception& e) { // cli::UsageError: a scene or lights file that fails to load
+        out.error = e.what();
+        sceneKey_.clear();
+        return out;
+    }
+    out.sceneCamera = scene_->camera;
+    if (!job.state.cameraFromScene) scene_->camera = job.state.camera;
+    out.lightCount = scene_->lights.size();
+    out.triangleCount = scene_->triangleCount();
+    out.sceneMemory = ctx_->ledger.entriesOf("scene");
+    RenderSettings settings;
+    settings.width = job.state.width;
+    settings.height = job.state.height;
+    settings.msaa = job.state.msaa;
+    settings.debug = job.debug;
+    settings.knobs = job.state.knobs;
+    SceneFeatures features = analyzeScene(*scene_, settings.msaa);
+    RunOptions runOptions;
+    runOptions.warmupFrames = 0;
+    runOptions.timedFrames = job.timedFrames;
+    for (const std::string& name : job.pipelines) {
+        PipelineImage image;
+        image.pipeline = name;
+        auto runStart = std::chrono::steady_clock::now();
+        Result<const RendererEntry*> entry = findRenderer(name);
+        try {
+            Result<RunResult> run = entry ? runRenderer(*ctx_, *gpuScene_, **entry, features, settings, runOptions)
+                                          : Result<RunResult>(Error{entry.error()});
+            if (run) image.run = std::move(*run);
+            else image.error = run.error();
+        } catch (const std::exception& e) { // a Vulkan failure: shown in the viewer, not a crash
+            image.error = name + ": " + e.what();
+        }
+        image.buildMs = msSince(runStart);
+        out.images.push_back(std::move(image));
+    }
+    out.totalMs = msSince(start);
+    return out;
+}
+
+} // namespace tp::view

@@ -1,0 +1,94 @@
+#pragma once
+// A background renderer with its own Vulkan device, scene copy and thread, so the UI never
+// waits on a rebuild or on the reference (seconds on lavapipe). The UI submits jobs; a job
+// not yet started is replaced by a newer one (only the latest view matters), and the UI
+// takes finished outcomes when it draws its next frame.
+//
+// Rebuilds only what a job's state needs (view_state.h): a new scene key reloads and uploads
+// the scene, a new lights key regenerates and uploads only the lights; the renderers are
+// built again for every job, because they bake camera-dependent data at plan time (tile
+// bounds, light scissors, transparent lists).
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/gpu/context.h"
+#include "core/render/frame_runner.h"
+#include "viewer/view_state.h"
+
+namespace tp::view {
+
+struct RenderJob {
+    uint64_t id = 0;
+    ViewState state;
+    std::vector<std::string> pipelines;
+    bool debug = false;   // renderers export their debug images (overlays)
+    std::string key;      // renderKey/referenceKey of `state`: tags the outcome
+    uint32_t timedFrames = 1;
+};
+
+struct PipelineImage {
+    std::string pipeline;
+    std::string error; // empty: `run` holds the result
+    RunResult run;
+    double buildMs = 0; // wall time of the whole run: build, frames, readback
+};
+
+struct RenderOutcome {
+    uint64_t id = 0;
+    std::string key;
+    std::string error;   // the scene failed to load or the device failed: shown, viewer stays open
+    std::string rebuilt; // "scene", "lights" or "renderer": the widest rebuild this job needed
+    double sceneMs = 0;  // scene load + upload, or light regeneration + upload
+    double totalMs = 0;  // the whole job
+    std::vector<PipelineImage> images;
+    std::vector<LedgerEntry> sceneMemory; // the shared scene upload (owner "scene")
+    Camera sceneCamera;  // the scene's own camera (for "reset camera")
+    size_t lightCount = 0;
+    size_t triangleCount = 0;
+};
+
+class RenderWorker {
+  public:
+    RenderWorker(ContextOptions options, std::string label);
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    void submit(RenderJob job);
+    std::optional<RenderOutcome> take();
+    bool idle() const; // nothing queued, running, or finished and not yet taken
+    const std::string& label() const { return label_; }
+    // After the destructor's join would be too late: stops the thread, returns its context's
+    // validation messages (empty without --validate).
+    std::vector<std::string> stop();
+
+  private:
+    void loop();
+    RenderOutcome runJob(const RenderJob& job);
+    void prepareScene(const RenderJob& job, RenderOutcome& out);
+
+    ContextOptions options_;
+    std::string label_;
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<RenderJob> pending_;
+    std::optional<RenderOutcome> done_;
+    bool running_ = false, quit_ = false;
+    std::vector<std::string> messages_;
+    std::thread thread_;
+
+    // Owned by the worker thread only.
+    std::unique_ptr<GpuContext> ctx_;
+    std::string contextError_;
+    std::unique_ptr<Scene> scene_;
+    std::unique_ptr<SceneGpu> gpuScene_;
+    std::vector<Light> sceneLights_; // the scene file's own lights
+    std::string sceneKey_, lightsKey_;
+};
+
+} // namespace tp::view

@@ -1,0 +1,270 @@
+#include "viewer/script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/image/image_io.h"
+#include "core/render/renderer.h"
+#include "core/util/files.h"
+#include "viewer/keys.h"
+#include "viewer/viewer_app.h"
+
+namespace tp::view {
+namespace {
+
+struct CommandSpec {
+    size_t minArgs, maxArgs;
+    const char* usage;
+};
+
+// Every command, its argument count and its usage line (docs/viewer.md has the same list).
+const std::map<std::string, CommandSpec>& commands() {
+    static const std::map<std::string, CommandSpec> table = {
+        {"pipeline", {2, 2, "pipeline a|b NAME"}},
+        {"knob", {2, 2, "knob NAME VALUE"}},
+        {"lights", {2, 2, "lights count|seed|types|range|intensity VALUE"}},
+        {"msaa", {1, 1, "msaa N"}},
+        {"res", {1, 1, "res WIDTHxHEIGHT"}},
+        {"exposure", {1, 1, "exposure auto|EV"}},
+        {"camera", {1, 3, "camera move F R U | orbit YAW PITCH | turn YAW PITCH | reset | load FILE | save FILE"}},
+        {"split", {1, 1, "split SHARE (0 to 1)"}},
+        {"flip", {0, 1, "flip [on|off]"}},
+        {"mode", {1, 2, "mode split|difference|overlay [DEBUG_IMAGE]"}},
+        {"hover", {2, 2, "hover X Y"}},
+        {"drag", {4, 4, "drag X0 Y0 X1 Y1"}},
+        {"key", {1, 1, "key LETTER"}},
+        {"reference", {1, 1, "reference on|off|now"}},
+        {"scene", {1, 1, "scene FILE|builtin:NAME"}},
+        {"wait", {0, 0, "wait"}},
+        {"frames", {1, 1, "frames N"}},
+        {"screenshot", {1, 1, "screenshot FILE.png"}},
+        {"stats", {1, 1, "stats FILE.json"}},
+        {"export", {1, 1, "export DIR"}},
+        {"bench", {2, 2, "bench RENDERS FILE.json"}},
+        {"expect-error", {1, 1, "expect-error TEXT"}},
+    };
+    return table;
+}
+
+float number(const std::string& text, bool& ok) {
+    char* end = nullptr;
+    float v = std::strtof(text.c_str(), &end);
+    ok = end && *end == '\0' && !text.empty() && std::isfinite(v);
+    return v;
+}
+
+
+} // namespace
+
+Result<std::vector<ScriptLine>> readScript(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return Error{"--script " + path + ": cannot open the file"};
+    std::vector<ScriptLine> lines;
+    std::string text;
+    for (int n = 1; std::getline(in, text); ++n) {
+        if (size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
+        std::istringstream words(text);
+        ScriptLine line{n, {}};
+        for (std::string w; words >> w;) line.words.push_back(w);
+        if (line.words.empty()) continue;
+        auto it = commands().find(line.words[0]);
+        const std::string where = path + ":" + std::to_string(n) + ": ";
+        if (it == commands().end()) return Error{where + "unknown command '" + line.words[0] + "'"};
+        size_t args = line.words.size() - 1;
+        if (args < it->second.minArgs || args > it->second.maxArgs)
+            return Error{where + "expected '" + it->second.usage + "'"};
+        lines.push_back(std::move(line));
+    }
+    return lines;
+}
+
+ScriptRunner::ScriptRunner(std::vector<ScriptLine> lines, std::string path, std::string outDir,
+                           double waitLimitSeconds, bool screenshots)
+    : lines_(std::move(lines)), path_(std::move(path)), out_(std::move(outDir)), waitLimit_(waitLimitSeconds),
+      screenshots_(screenshots) {}
+
+void ScriptRunner::fail(const ScriptLine& line, const std::string& message) const {
+    throw ScriptError(path_ + ":" + std::to_string(line.number) + ": " + message);
+}
+
+void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {
+    while (true) {
+        if (blocked() && stillWaiting(app, mouse)) return;
+        if (next_ >= lines_.size()) return;
+        current_ = &lines_[next_++];
+        waitStart_ = std::chrono::steady_clock::now();
+        apply(app, mouse, *current_);
+    }
+}
+
+// False when the current wait is over (the next line may run).
+bool ScriptRunner::stillWaiting(ViewerApp& app, ScriptMouse& mouse) {
+    double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+    if (waited > waitLimit_)
+        fail(*current_, "still waiting after " + std::to_string(int(waitLimit_)) + " s (--wait-limit)");
+    switch (wait_) {
+    case Wait::Frames:
+    case Wait::Screenshot:
+        if (framesLeft_ > 0) return true;
+        break;
+    case Wait::Settled:
+        // Two frames after settling: the panels show what the new images say.
+        if (!app.settled()) {
+            framesLeft_ = 2;
+            return true;
+        }
+        if (framesLeft_ > 0) return true;
+        break;
+    case Wait::Export:
+        if (app.exporting()) return true;
+        if (app.exportStatus().find("failed") != std::string::npos) fail(*current_, app.exportStatus());
+        break;
+    case Wait::Drag:
+        if (dragStage_ == 1) { // pressed last frame: move
+            mouse.x = dragTo_[0], mouse.y = dragTo_[1];
+            dragStage_ = 2;
+            return true;
+        }
+        if (dragStage_ == 2) { // moved: release
+            mouse.down = false;
+            dragStage_ = 3;
+            return true;
+        }
+        break;
+    case Wait::Bench:
+        if (!app.settled()) return true;
+        if (benchStep(app)) return true;
+        break;
+    case Wait::None: break;
+    }
+    wait_ = Wait::None;
+    return false;
+}
+
+void ScriptRunner::afterFrame(ViewerApp&, const ImageRGBA* frame, double frameMs) {
+    if (wait_ == Wait::Bench) benchUiMs_.push_back(frameMs);
+    if (framesLeft_ > 0) --framesLeft_;
+    if (screenshotDue_ && frame) {
+        screenshotDue_ = false;
+        if (Status s = writePng(screenshotFile_, *frame); !s) fail(*current_, s.error());
+    }
+    // The screenshot is of the frame after the layout settled (ImGui sizes windows in a frame).
+    if (wait_ == Wait::Screenshot && framesLeft_ == 1 && screenshots_) screenshotDue_ = true;
+}
+
+void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line) {
+    const std::vector<std::string>& w = line.words;
+    const std::string& cmd = w[0];
+    ViewState& s = app.state();
+    bool ok = true;
+    auto num = [&](size_t i) {
+        float v = number(w[i], ok);
+        if (!ok) fail(line, "'" + w[i] + "' is not a number");
+        return v;
+    };
+    if (cmd == "pipeline") {
+        if (w[1] != "a" && w[1] != "b") fail(line, "expected 'pipeline a|b NAME'");
+        if (Result<const RendererEntry*> e = findRenderer(w[2]); !e) fail(line, e.error());
+        (w[1] == "a" ? s.pipelineA : s.pipelineB) = w[2];
+    } else if (cmd == "knob") {
+        bool found = false;
+        for (const KnobReaders& k : allKnobs())
+            if (k.knob.name == w[1]) {
+                if (Status c = k.knob.check(w[2]); !c) fail(line, c.error());
+                found = true;
+            }
+        if (!found) fail(line, "no pipeline has a knob '" + w[1] + "'");
+        s.knobs[w[1]] = w[2];
+    } else if (cmd == "lights") {
+        cli::SceneOptions o = s.scene;
+        if (w[1] == "count") o.lightCount = int(num(2));
+        else if (w[1] == "seed") o.seed = uint64_t(num(2));
+        else if (w[1] == "types") o.lightTypes = w[2];
+        else if (w[1] == "range") o.lightRadius = w[2];
+        else if (w[1] == "intensity") o.lightIntensity = w[2];
+        else fail(line, "expected 'lights count|seed|types|range|intensity VALUE'");
+        try {
+            (void)cli::generatorOptions(o);
+        } catch (const std::exception& e) {
+            fail(line, e.what());
+        }
+        s.scene = o;
+    } else if (cmd == "msaa") {
+        uint32_t n = uint32_t(num(1));
+        if (n != 1 && n != 2 && n != 4 && n != 8) fail(line, "msaa must be 1, 2, 4 or 8");
+        s.msaa = n; // a count the device lacks fails in the renderer: the status line says so
+    } else if (cmd == "res") {
+        unsigned rw = 0, rh = 0;
+        if (std::sscanf(w[1].c_str(), "%ux%u", &rw, &rh) != 2 || rw < 8 || rh < 8 || rw > 8192 || rh > 8192)
+            fail(line, "expected 'res WIDTHxHEIGHT', each side 8 to 8192");
+        s.width = rw, s.height = rh;
+    } else if (cmd == "exposure") {
+        s.autoExposure = w[1] == "auto";
+        if (!s.autoExposure) s.exposureEv = num(1);
+    } else if (cmd == "camera") {
+        if (w[1] == "reset") app.resetCamera();
+        else if (w[1] == "move" && w.size() == 5) app.moveCamera(num(2), num(3), num(4));
+        else if (w[1] == "orbit" && w.size() == 4) app.orbitCamera(num(2), num(3));
+        else if (w[1] == "turn" && w.size() == 4) app.turnCamera(num(2), num(3));
+        else if (w[1] == "load" && w.size() == 3) app.loadBookmark(w[2]);
+        else if (w[1] == "save" && w.size() == 3) app.saveBookmark(w[2]);
+        else fail(line, std::string("expected '") + commands().at("camera").usage + "'");
+        if (!app.lastError().empty()) fail(line, app.lastError());
+    } else if (cmd == "split") {
+        float v = num(1);
+        if (v < 0.0f || v > 1.0f) fail(line, "split must be between 0 and 1");
+        app.setSplit(v);
+    } else if (cmd == "flip") {
+        bool want = w.size() == 1 ? !s.flip : w[1] == "on";
+        if (want != s.flip) app.toggleFlip();
+    } else if (cmd == "mode") {
+        if (w[1] == "split") s.mode = DisplayMode::Split;
+        else if (w[1] == "difference") s.mode = DisplayMode::Difference;
+        else if (w[1] == "overlay") s.mode = DisplayMode::Overlay;
+        else fail(line, "expected 'mode split|difference|overlay [DEBUG_IMAGE]'");
+        if (w.size() == 3) s.overlay = w[2];
+    } else if (cmd == "hover") {
+        mouse.x = num(1), mouse.y = num(2);
+        wait_ = Wait::Frames, framesLeft_ = 1;
+    } else if (cmd == "drag") {
+        mouse.x = num(1), mouse.y = num(2), mouse.down = true;
+        dragTo_[0] = num(3), dragTo_[1] = num(4);
+        wait_ = Wait::Drag, dragStage_ = 1;
+    } else if (cmd == "key") {
+        if (w[1].size() != 1 || !applyKey(app, std::toupper(static_cast<unsigned char>(w[1][0]))))
+            fail(line, "no such key '" + w[1] + "' (docs/viewer.md lists the keys)");
+    } else if (cmd == "reference") {
+        if (w[1] == "now") app.requestReference();
+        else s.reference = w[1] == "on";
+    } else if (cmd == "scene") {
+        s.scene.scene = w[1];
+        s.cameraFromScene = true;
+    } else if (cmd == "wait") {
+        wait_ = Wait::Settled, framesLeft_ = 2;
+    } else if (cmd == "frames") {
+        wait_ = Wait::Frames, framesLeft_ = std::max(1, int(num(1)));
+    } else if (cmd == "screenshot") {
+        screenshotFile_ = out_ + "/" + w[1];
+        wait_ = Wait::Screenshot, framesLeft_ = screenshots_ ? 3 : 1;
+    } else if (cmd == "stats") {
+        writeStats(app, out_ + "/" + w[1]);
+    } else if (cmd == "export") {
+        app.startExport(out_ + "/" + w[1]);
+        if (!app.lastError().empty()) fail(line, app.lastError());
+        wait_ = Wait::Export;
+    } else if (cmd == "bench") {
+        benchTotal_ = benchLeft_ = std::max(1, int(num(1)));
+        benchFile_ = out_ + "/" + w[2];
+        benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear();
+        benchRecordDue_ = false;
+        wait_ = Wait::Bench;
+    } else if (cmd == "expect-error") {
+        if (app.lastError().find(w[1]) == std::string::npos)
+            fail(line, "expected an error containing '" + w[1] + "', the viewer shows '" + app.lastError() + "'");
+    }
+}
+
+} // namespace tp::view

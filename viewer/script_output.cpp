@@ -1,0 +1,105 @@
+// What a script writes besides screenshots: `stats` (the viewer's state and numbers, for
+// tests) and `bench` (render and UI frame times over a camera orbit, for the closing note).
+#include <algorithm>
+#include <chrono>
+
+#include "core/reference/reference_renderer.h"
+#include "core/util/files.h"
+#include "viewer/script.h"
+#include "viewer/viewer_app.h"
+
+namespace tp::view {
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+double frameGpuMs(const Shown* s) {
+    if (!s || !s->run) return 0;
+    for (const TimingStats& t : s->run->timings)
+        if (t.name == "frame") return t.medianMs;
+    return 0;
+}
+
+nlohmann::json shownJson(const Shown* s) {
+    if (!s) return nullptr;
+    nlohmann::json j;
+    j["pipeline"] = s->pipeline;
+    j["error"] = s->error;
+    j["build_ms"] = s->buildMs;
+    if (s->run) {
+        j["gpu_frame_ms"] = frameGpuMs(s);
+        j["debug_images"] = nlohmann::json::array();
+        for (const DebugImage& d : s->run->debugImages) j["debug_images"].push_back(d.name);
+        for (const auto& [name, value] : s->run->stats.counters) j["counters"][name] = value;
+    }
+    return j;
+}
+
+} // namespace
+
+void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
+    const ViewState& s = app.state();
+    const Composite& c = app.scene();
+    nlohmann::json j;
+    j["schema"] = "triptych.view-stats/1";
+    j["device"] = app.deviceName();
+    j["pipeline_a"] = shownJson(app.shownA());
+    j["pipeline_b"] = shownJson(app.shownB());
+    j["mode"] = s.mode == DisplayMode::Split ? "split" : s.mode == DisplayMode::Difference ? "difference" : "overlay";
+    j["split"] = s.split;
+    j["split_column"] = dividerColumn(s.split, c.width ? c.width : s.width);
+    j["flip"] = s.flip;
+    j["scene_area"] = {c.width, c.height};
+    j["difference_scale"] = c.diffScale;
+    j["error"] = app.lastError();
+    j["reference_stale"] = app.referenceStale();
+    j["last_render_ms"] = app.lastRenderMs();
+    if (const auto& e = app.errorVsReference(); e) j["a_vs_reference"] = {{"rmse", e->rmse}, {"psnr", e->psnr}, {"max_abs", e->maxAbs}};
+    const Inspection& i = app.inspection();
+    if (i.valid)
+        j["inspection"] = {{"x", i.x}, {"y", i.y}, {"a", {i.a[0], i.a[1], i.a[2]}}, {"b", {i.b[0], i.b[1], i.b[2]}}};
+    const Camera& cam = app.state().camera;
+    j["camera"] = {{"position", {cam.position.x, cam.position.y, cam.position.z}},
+                   {"target", {cam.target.x, cam.target.y, cam.target.z}}};
+    if (Status st = writeTextFile(file, j.dump(2) + "\n"); !st) fail(*current_, st.error());
+}
+
+bool ScriptRunner::benchStep(ViewerApp& app) {
+    if (benchRecordDue_) {
+        benchRenderMs_.push_back(app.lastRenderMs());
+        benchGpuMs_.push_back(frameGpuMs(app.shownA()));
+        benchRecordDue_ = false;
+    }
+    if (benchLeft_ > 0) {
+        app.orbitCamera(360.0f / float(benchTotal_), 0.0f);
+        --benchLeft_;
+        benchRecordDue_ = true;
+        return true;
+    }
+    const ViewState& s = app.state();
+    nlohmann::json j;
+    j["schema"] = "triptych.view-bench/1";
+    j["device"] = app.deviceName();
+    j["pipeline"] = s.pipelineA;
+    j["resolution"] = std::to_string(s.width) + "x" + std::to_string(s.height);
+    j["msaa"] = s.msaa;
+    j["renders"] = benchRenderMs_.size();
+    j["what"] = "each render: a camera step, the renderer built again, its frame on the GPU, readback; "
+                "the UI frames draw the panels and the scene area meanwhile";
+    j["render_ms"] = benchRenderMs_;
+    j["render_ms_median"] = median(benchRenderMs_);
+    j["renders_per_second"] = median(benchRenderMs_) > 0 ? 1000.0 / median(benchRenderMs_) : 0.0;
+    j["gpu_frame_ms"] = benchGpuMs_;
+    j["gpu_frame_ms_median"] = median(benchGpuMs_);
+    j["ui_frames"] = benchUiMs_.size();
+    j["ui_frame_ms_median"] = median(benchUiMs_);
+    j["ui_frames_per_second"] = median(benchUiMs_) > 0 ? 1000.0 / median(benchUiMs_) : 0.0;
+    if (Status st = writeTextFile(benchFile_, j.dump(2) + "\n"); !st) fail(*current_, st.error());
+    return false;
+}
+
+} // namespace tp::view

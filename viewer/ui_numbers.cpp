@@ -1,0 +1,130 @@
+// The live numbers (per-pass GPU times over the last frames, memory ledger, counters, error
+// against the reference), the pixel inspector and export.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "core/reference/reference_renderer.h"
+#include "viewer/ui_panels.h"
+#include "viewer/viewer_app.h"
+
+namespace tp::view {
+namespace {
+
+struct Spread {
+    double median = 0, min = 0, max = 0;
+};
+
+Spread spreadOf(const std::deque<double>& values) {
+    std::vector<double> v(values.begin(), values.end());
+    if (v.empty()) return {};
+    std::sort(v.begin(), v.end());
+    return {v[v.size() / 2], v.front(), v.back()};
+}
+
+void timingGraph(const std::string& pipeline, const TimingHistory& h, const std::string& device) {
+    ImGui::Text("%s: GPU ms over the last %zu renders on %s", pipeline.c_str(),
+                h.passes.count("frame") ? h.passes.at("frame").size() : size_t(0), device.c_str());
+    if (ImGui::BeginTable(("timing" + pipeline).c_str(), 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
+        for (const char* c : {"pass", "median", "min", "max"}) ImGui::TableSetupColumn(c);
+        ImGui::TableHeadersRow();
+        for (const std::string& name : h.order) {
+            Spread s = spreadOf(h.passes.at(name));
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(name.c_str());
+            for (double v : {s.median, s.min, s.max}) {
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", v);
+            }
+        }
+        ImGui::EndTable();
+    }
+    if (h.passes.count("frame")) {
+        std::vector<float> values(h.passes.at("frame").begin(), h.passes.at("frame").end());
+        ImGui::PlotLines(("frame ms##" + pipeline).c_str(), values.data(), int(values.size()), 0, nullptr, 0.0f,
+                         FLT_MAX, ImVec2(0, 48));
+    }
+}
+
+void ledgerTable(const char* id, const std::vector<LedgerEntry>& entries) {
+    uint64_t total = 0;
+    for (const LedgerEntry& e : entries) total += e.bytes;
+    ImGui::Text("%s: %.2f MiB", id, double(total) / (1 << 20));
+    if (!ImGui::BeginTable(id, 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) return;
+    for (const char* c : {"pass", "resource", "KiB"}) ImGui::TableSetupColumn(c);
+    ImGui::TableHeadersRow();
+    for (const LedgerEntry& e : entries) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(e.tag.pass.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(e.tag.name.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tag.purpose.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.1f", double(e.bytes) / 1024.0);
+    }
+    ImGui::EndTable();
+}
+
+void errorLine(const char* what, const std::optional<ErrorReport>& e) {
+    if (e) ImGui::Text("%s: RMSE %.4g, PSNR %.2f dB, max %.3g", what, e->rmse, e->psnr, e->maxAbs);
+}
+
+} // namespace
+
+void Panels::numbers(ViewerApp& app) {
+    if (!ImGui::CollapsingHeader("Numbers")) return;
+    const Shown* a = app.shownA();
+    if (app.errorVsReference_) {
+        errorLine("A vs reference, linear", app.errorVsReference_);
+        errorLine("A vs reference, tonemapped", app.errorVsReferenceDisplay_);
+    } else {
+        ImGui::TextDisabled(app.referenceStale() ? "A vs reference: no reference of this view yet"
+                                                 : "A vs reference: waiting for A of this view");
+    }
+    for (const Shown* s : {a, app.shownB()}) {
+        if (!s || !s->run) continue;
+        if (app.history_.count(s->pipeline)) timingGraph(s->pipeline, app.history_.at(s->pipeline), app.deviceName_);
+        for (const auto& [name, value] : s->run->stats.counters) ImGui::Text("  %s: %.6g", name.c_str(), value);
+        ledgerTable(("memory of " + s->pipeline).c_str(), s->run->memory);
+        if (s == app.shownB()) break;
+    }
+    ledgerTable("memory of the scene (shared)", app.sceneMemory_);
+}
+
+void Panels::inspector(ViewerApp& app) {
+    if (!ImGui::CollapsingHeader("Pixel under the cursor", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const Inspection& i = app.inspection_;
+    if (!i.valid) {
+        ImGui::TextDisabled("(move the cursor over the image)");
+        return;
+    }
+    ImGui::Text("pixel %u, %u", i.x, i.y);
+    ImGui::Text("A %.5g %.5g %.5g", i.a[0], i.a[1], i.a[2]);
+    ImGui::Text("B %.5g %.5g %.5g", i.b[0], i.b[1], i.b[2]);
+    ImGui::Text("A-B %.5g %.5g %.5g", i.a[0] - i.b[0], i.a[1] - i.b[1], i.a[2] - i.b[2]);
+    // The tile's lights: the lights-per-tile debug image of A holds the count as its colour
+    // scale; shown when the overlay has been rendered.
+    if (const Shown* a = app.shownA(); a && a->run)
+        for (const DebugImage& d : a->run->debugImages)
+            if (d.name == "lights_per_tile" && i.x < d.image.width && i.y < d.image.height) {
+                const float* p = d.image.at(i.x, i.y);
+                ImGui::Text("lights-per-tile map here: %.3f %.3f %.3f", p[0], p[1], p[2]);
+            }
+}
+
+void Panels::exporting(ViewerApp& app) {
+    if (!ImGui::CollapsingHeader("Export")) return;
+    ImGui::InputText("folder", &app.exportDir_);
+    ImGui::BeginDisabled(app.exporter_.busy());
+    if (ImGui::Button("render A and compare A, B")) app.startExport(app.exportDir_);
+    ImGui::EndDisabled();
+    std::string status = app.exporter_.status();
+    if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
+}
+
+} // namespace tp::view

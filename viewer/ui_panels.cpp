@@ -1,0 +1,226 @@
+// The control panels: pipelines and display mode, knobs (from the schema), view, lights,
+// scene, camera. A change edits ViewerApp::state_; the next frame submits what it needs.
+#include "viewer/ui_panels.h"
+
+#include <algorithm>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "core/reference/reference_renderer.h"
+#include "core/render/renderer.h"
+#include "viewer/viewer_app.h"
+
+namespace tp::view {
+namespace {
+
+bool pipelineCombo(const char* label, std::string& value) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value.c_str())) {
+        for (const RendererEntry& e : registeredRenderers()) {
+            if (ImGui::Selectable(e.name.c_str(), e.name == value)) {
+                value = e.name;
+                changed = true;
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.description.c_str());
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool valueCombo(const char* label, std::string& value, const std::vector<std::string>& values) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value.c_str())) {
+        for (const std::string& v : values)
+            if (ImGui::Selectable(v.c_str(), v == value)) {
+                value = v;
+                changed = true;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// One knob's control, from its declaration: a list of values is a combo, a range an integer field.
+void knobControl(const Knob& k, std::string& value) {
+    if (!k.values.empty()) {
+        valueCombo(k.name.c_str(), value, k.values);
+    } else {
+        // Applied on Enter or a step button: a half-typed number would rebuild the renderer.
+        int v = std::atoi(value.c_str());
+        if (ImGui::InputInt(k.name.c_str(), &v, 1, 16, ImGuiInputTextFlags_EnterReturnsTrue))
+            value = std::to_string(std::clamp<int64_t>(v, k.min, k.max));
+    }
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s\nallowed: %s; default %s", k.help.c_str(), k.allowedText().c_str(), k.defaultValue.c_str());
+}
+
+} // namespace
+
+void Panels::pipelines(ViewerApp& app) {
+    ViewState& s = app.state_;
+    if (!ImGui::CollapsingHeader("Pipelines and display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    pipelineCombo("A (left)", s.pipelineA);
+    pipelineCombo("B (right)", s.pipelineB);
+    int mode = int(s.mode);
+    ImGui::RadioButton("split", &mode, int(DisplayMode::Split));
+    ImGui::SameLine();
+    ImGui::RadioButton("|A - B|", &mode, int(DisplayMode::Difference));
+    ImGui::SameLine();
+    ImGui::RadioButton("overlay of A", &mode, int(DisplayMode::Overlay));
+    if (mode != int(s.mode)) {
+        s.mode = DisplayMode(mode);
+        app.sceneInputsChanged_ = true;
+    }
+    float split = s.split;
+    if (ImGui::SliderFloat("split", &split, 0.0f, 1.0f, "%.3f")) app.setSplit(split);
+    bool flip = s.flip;
+    if (ImGui::Checkbox("flip A/B (key F)", &flip)) app.toggleFlip();
+    if (s.mode == DisplayMode::Overlay) {
+        std::vector<std::string> names;
+        if (const Shown* a = app.shownA(); a && a->run)
+            for (const DebugImage& d : a->run->debugImages) names.push_back(d.name);
+        if (names.empty()) ImGui::TextDisabled("(debug images of A: rendering...)");
+        else valueCombo("overlay", s.overlay, names);
+        if (s.overlay.empty() && !names.empty()) s.overlay = names.front();
+    }
+}
+
+void Panels::knobs(ViewerApp& app) {
+    ViewState& s = app.state_;
+    if (!ImGui::CollapsingHeader("Knobs of A and B", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    for (const KnobReaders& k : allKnobs()) {
+        bool read = std::find(k.readers.begin(), k.readers.end(), s.pipelineA) != k.readers.end() ||
+                    std::find(k.readers.begin(), k.readers.end(), s.pipelineB) != k.readers.end();
+        if (!read) continue;
+        // A knob that changes nothing at 1x is greyed there, with the reason.
+        const bool disabled = k.knob.msaaOnly && s.msaa == 1;
+        ImGui::BeginDisabled(disabled);
+        std::string& value = s.knobs[k.knob.name];
+        if (value.empty()) value = k.knob.defaultValue;
+        knobControl(k.knob, value);
+        ImGui::EndDisabled();
+        if (disabled) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("(only under MSAA)");
+        }
+    }
+}
+
+void Panels::view(ViewerApp& app) {
+    ViewState& s = app.state_;
+    if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    // MSAA: every count is listed; the device's unsupported ones are greyed with the reason.
+    if (ImGui::BeginCombo("MSAA", (std::to_string(s.msaa) + "x").c_str())) {
+        for (uint32_t n : {1u, 2u, 4u, 8u}) {
+            const bool supported = (app.sampleCounts_ & n) != 0;
+            std::string label = std::to_string(n) + "x" + (supported ? "" : "  (not supported by " + app.deviceName_ + ")");
+            ImGuiSelectableFlags flags = supported ? 0 : ImGuiSelectableFlags_Disabled;
+            if (ImGui::Selectable(label.c_str(), n == s.msaa, flags)) s.msaa = n;
+        }
+        ImGui::EndCombo();
+    }
+    int size[2] = {int(app.draft_.width), int(app.draft_.height)};
+    ImGui::InputInt2("resolution", size);
+    uint32_t maxDim = std::min<uint32_t>(app.ui_.caps.maxImageDimension2D, 8192);
+    app.draft_.width = uint32_t(std::clamp(size[0], 8, int(maxDim)));
+    app.draft_.height = uint32_t(std::clamp(size[1], 8, int(maxDim)));
+    ImGui::SameLine();
+    if (ImGui::Button("apply##res")) {
+        s.width = app.draft_.width;
+        s.height = app.draft_.height;
+    }
+    ImGui::Checkbox("auto exposure", &s.autoExposure);
+    ImGui::BeginDisabled(s.autoExposure);
+    ImGui::SliderFloat("exposure EV", &s.exposureEv, -16.0f, 16.0f, "%.2f");
+    ImGui::EndDisabled();
+    ImGui::Checkbox("render the reference in the background", &s.reference);
+    if (!s.reference && ImGui::Button("render the reference now")) app.requestReference();
+}
+
+void Panels::lights(ViewerApp& app) {
+    if (!ImGui::CollapsingHeader("Lights")) return;
+    cli::SceneOptions& d = app.draft_.scene;
+    ImGui::InputInt("count", &d.lightCount);
+    d.lightCount = std::clamp(d.lightCount, 0, 1 << 20);
+    int seed = int(d.seed);
+    ImGui::InputInt("seed", &seed);
+    d.seed = uint64_t(std::max(seed, 0));
+    ImGui::InputText("types", &d.lightTypes);
+    ImGui::InputText("range MIN,MAX", &d.lightRadius);
+    ImGui::InputText("intensity MIN,MAX", &d.lightIntensity);
+    if (ImGui::Button("apply##lights")) {
+        // Checked here, so a bad value is a message and not a failed render.
+        try {
+            (void)cli::generatorOptions(d);
+            cli::SceneOptions& s = app.state_.scene;
+            s.lightCount = d.lightCount, s.seed = d.seed, s.lightTypes = d.lightTypes;
+            s.lightRadius = d.lightRadius, s.lightIntensity = d.lightIntensity;
+            app.error_.clear();
+        } catch (const std::exception& e) {
+            app.error_ = e.what();
+        }
+    }
+}
+
+void Panels::scene(ViewerApp& app) {
+    if (!ImGui::CollapsingHeader("Scene")) return;
+    ImGui::InputText("file or builtin:NAME", &app.draft_.scene.scene);
+    if (ImGui::Button("load")) {
+        app.state_.scene.scene = app.draft_.scene.scene;
+        app.state_.cameraFromScene = true;
+    }
+    ImGui::Text("%zu triangles, %zu lights", app.triangleCount_, app.lightCount_);
+}
+
+void Panels::camera(ViewerApp& app) {
+    if (!ImGui::CollapsingHeader("Camera")) return;
+    const Camera& c = app.state_.camera;
+    ImGui::Text("eye %.3g %.3g %.3g", c.position.x, c.position.y, c.position.z);
+    ImGui::Text("target %.3g %.3g %.3g", c.target.x, c.target.y, c.target.z);
+    ImGui::TextDisabled("left drag: orbit; right drag: look; wheel: dolly; WASD/QE: fly");
+    if (ImGui::Button("scene camera")) app.resetCamera();
+    ImGui::InputText("bookmark", &app.bookmarkPath_);
+    if (ImGui::Button("save bookmark")) app.saveBookmark(app.bookmarkPath_);
+    ImGui::SameLine();
+    if (ImGui::Button("load bookmark")) app.loadBookmark(app.bookmarkPath_);
+}
+
+void Panels::status(ViewerApp& app) {
+    ImGui::Text("%s", app.deviceName_.c_str());
+    if (!app.error_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s", app.error_.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::Text("last rebuild: %s, %.0f ms (scene/lights %.0f ms)", app.lastRebuilt_.c_str(), app.lastRenderMs_,
+                app.lastSceneMs_);
+    for (const Shown* s : {app.shownA(), app.shownB()})
+        if (s) ImGui::Text("%s: %.0f ms to build and render%s", s->pipeline.c_str(), s->buildMs,
+                           s->pipeline == kReferenceRenderer && app.referenceStale() ? " (STALE: another view)" : "");
+    if (!app.worker_->idle()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "rendering...");
+    if (!app.referenceWorker_->idle()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "reference rendering in the background...");
+    if (!app.composite_.note.empty()) ImGui::TextDisabled("%s", app.composite_.note.c_str());
+}
+
+void ViewerApp::drawPanels() {
+    ImGuiIO& io = ImGui::GetIO();
+    const float width = float(options_.panelWidth);
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
+    ImGui::Begin("triptych view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    Panels::status(*this);
+    Panels::pipelines(*this);
+    Panels::knobs(*this);
+    Panels::view(*this);
+    Panels::inspector(*this);
+    Panels::numbers(*this);
+    Panels::lights(*this);
+    Panels::scene(*this);
+    Panels::camera(*this);
+    Panels::exporting(*this);
+    ImGui::End();
+}
+
+} // namespace tp::view

@@ -1,0 +1,146 @@
+// triptych view: the interactive viewer (a window), or offscreen with a script (--headless).
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+#include <imgui.h>
+
+#include "compare/cli_common.h"
+#include "compare/commands.h"
+#include "core/reference/reference_renderer.h"
+#include "viewer/view_loop.h"
+
+namespace tp::view {
+
+void createImGuiContext() {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // the layout is the program's, not a file left in the working directory
+    io.LogFilename = nullptr;
+    ImGui::StyleColorsDark();
+}
+
+void surfaceSize(const ViewerApp& app, uint32_t& width, uint32_t& height) {
+    uint32_t sceneW = std::max(app.scene().width, app.const_state().width);
+    uint32_t sceneH = std::max(app.scene().height, app.const_state().height + kLegendHeight);
+    width = sceneW + app.panelWidth();
+    height = std::max(sceneH, 520u);
+}
+
+int finish(ViewerApp& app, const GpuContext& ui, const std::string& scriptError) {
+    std::vector<std::string> messages = app.stop();
+    std::vector<std::string> own = ui.validationMessages();
+    messages.insert(messages.end(), own.begin(), own.end());
+    if (!scriptError.empty()) {
+        std::fprintf(stderr, "triptych: %s\n", scriptError.c_str());
+        return 2;
+    }
+    if (!messages.empty()) {
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(), messages.front().c_str());
+        return 3;
+    }
+    return 0;
+}
+
+} // namespace tp::view
+
+namespace tp::cli {
+namespace {
+
+struct ViewCommandOptions {
+    SceneOptions scene;
+    DeviceOptions device;
+    ViewOptions view;
+    std::map<std::string, std::string> knobs;
+    std::string pipelineA, pipelineB = kReferenceRenderer;
+    bool headless = false;
+    std::string script;
+    std::string out = "view_out";
+    int frames = 1;
+    double waitLimit = 600;
+    int quitAfter = 0;
+    bool noReference = false;
+};
+
+std::string firstPipeline() {
+    for (const RendererEntry& e : registeredRenderers())
+        if (e.name != kReferenceRenderer) return e.name;
+    return kReferenceRenderer;
+}
+
+int runView(ViewCommandOptions& o, const std::string& exe) {
+    checkKnobs(o.knobs);
+    for (const std::string& p : {o.pipelineA, o.pipelineB})
+        if (Result<const RendererEntry*> e = findRenderer(p); !e) throw UsageError("--a/--b: " + e.error());
+    if (o.headless && o.script.empty()) throw UsageError("view --headless needs --script FILE (docs/viewer.md)");
+    if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be between 1 and 1000");
+    view::LoopSetup setup;
+    if (!o.script.empty()) {
+        Result<std::vector<view::ScriptLine>> lines = view::readScript(o.script);
+        if (!lines) throw UsageError(lines.error());
+        setup.script = std::move(*lines);
+        setup.scriptPath = o.script;
+        ensureDirectory(o.out);
+    }
+    (void)generatorOptions(o.scene); // a bad light option is a usage error before any window opens
+    view::ViewState& s = setup.viewer.initial;
+    s.scene = o.scene;
+    unsigned w = 0, h = 0;
+    if (std::sscanf(o.view.resolution.c_str(), "%ux%u", &w, &h) != 2 || w < 8 || h < 8 || w > 8192 || h > 8192)
+        throw UsageError("--res '" + o.view.resolution + "': expected WIDTHxHEIGHT, each side 8 to 8192");
+    s.width = w, s.height = h;
+    if (o.view.msaa != 1 && o.view.msaa != 2 && o.view.msaa != 4 && o.view.msaa != 8)
+        throw UsageError("--msaa " + std::to_string(o.view.msaa) + ": must be 1, 2, 4 or 8");
+    s.msaa = uint32_t(o.view.msaa);
+    s.knobs = o.knobs;
+    s.pipelineA = o.pipelineA;
+    s.pipelineB = o.pipelineB;
+    s.reference = !o.noReference;
+    setup.viewer.context.device = o.device.device;
+    setup.viewer.context.validate = o.device.validate;
+    setup.viewer.timedFrames = uint32_t(o.frames);
+    setup.viewer.exe = exe;
+    setup.out = o.out;
+    setup.waitLimitSeconds = o.waitLimit;
+    setup.quitAfterFrames = o.quitAfter;
+    return o.headless ? view::runHeadless(setup) : view::runWindow(setup);
+}
+
+// This program's path, for export (it runs `render` and `compare` on the current view).
+std::string selfPath(const std::string& argv0) {
+    std::error_code ec;
+    std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? argv0 : p.string();
+}
+
+} // namespace
+
+CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine) {
+    auto o = std::make_shared<ViewCommandOptions>();
+    o->pipelineA = firstPipeline();
+    CLI::App* cmd = app.add_subcommand("view", "Interactive viewer: pipelines side by side, live knobs, "
+                                               "difference view, pixel inspector (Dear ImGui)");
+    addSceneOptions(*cmd, o->scene);
+    addViewOptions(*cmd, o->view);
+    addDeviceOptions(*cmd, o->device);
+    addKnobOptions(*cmd, o->knobs);
+    cmd->add_option("--a", o->pipelineA, "Pipeline left of the divider (A)")->capture_default_str();
+    cmd->add_option("--b", o->pipelineB, "Pipeline right of the divider (B)")->capture_default_str();
+    cmd->add_flag("--headless", o->headless, "No window: run --script offscreen (screenshots hold the UI)");
+    cmd->add_option("--script", o->script, "Actions to run, one per line (docs/viewer.md)");
+    cmd->add_option("--out", o->out, "Folder for the script's screenshots, stats and exports")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Timed GPU frames per render (the timing graph's samples)")
+        ->capture_default_str();
+    cmd->add_option("--wait-limit", o->waitLimit, "Seconds a script line may wait before it fails")
+        ->capture_default_str();
+    cmd->add_option("--quit-after", o->quitAfter, "Window: close after this many frames (0: never)")
+        ->capture_default_str();
+    cmd->add_flag("--no-reference", o->noReference,
+                  "Do not render the reference of each view in the background (render it on request: key R)");
+    const std::string exe = selfPath(commandLine.empty() ? "triptych" : commandLine.front());
+    return [o, cmd, exe]() { return cmd->parsed() ? runView(*o, exe) : -1; };
+}
+
+} // namespace tp::cli

@@ -1,0 +1,43 @@
+#pragma once
+// Everything a user of the viewer can change, in one value, and the keys that say what a
+// change must rebuild (docs/viewer.md, "What rebuilds what"):
+//   sceneKey   scene file or builtin name        -> reload the scene and upload it again
+//   lightsKey  light count/seed/types/range/...  -> regenerate lights, upload only them
+//   renderKey  + camera, resolution, MSAA, knobs -> build the renderer again and render
+//   everything else (split, flip, difference, exposure, overlay) is display only: no render.
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "compare/cli_common.h"
+#include "core/scene/scene.h"
+
+namespace tp::view {
+
+enum class DisplayMode { Split, Difference, Overlay };
+
+struct ViewState {
+    cli::SceneOptions scene;
+    uint32_t width = 320, height = 180, msaa = 1;
+    std::map<std::string, std::string> knobs; // every registered knob, defaults filled in
+    std::string pipelineA, pipelineB;         // B may be the reference
+    Camera camera;
+    bool cameraFromScene = true; // not yet moved: take the scene's camera when it loads
+    bool autoExposure = true;
+    float exposureEv = 0.0f;
+    DisplayMode mode = DisplayMode::Split;
+    float split = 0.5f;          // divider position, share of the width from the left
+    bool flip = false;           // A and B swapped (the flip key)
+    std::string overlay;         // debug image name shown in Overlay mode
+    bool reference = true;       // keep a reference of the current view rendering in the background
+};
+
+std::string sceneKey(const ViewState& s);
+std::string lightsKey(const ViewState& s);
+// What a pipeline's image depends on (pipeline name excluded; debug: overlays requested).
+std::string renderKey(const ViewState& s, bool debug);
+// What the reference depends on: a reference whose key differs from the current one is stale.
+std::string referenceKey(const ViewState& s);
+std::string cameraText(const Camera& c);
+
+} // namespace tp::view

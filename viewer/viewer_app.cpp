@@ -1,0 +1,254 @@
+#include "viewer/viewer_app.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "core/image/tonemap.h"
+#include "core/reference/reference_renderer.h"
+#include "viewer/camera_control.h"
+
+namespace tp::view {
+namespace {
+
+// How close (pixels) to the divider a press grabs it instead of orbiting the camera.
+constexpr float kGrabDistance = 4.0f;
+
+std::string ptrKey(const void* p) {
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%p", p);
+    return buf;
+}
+
+} // namespace
+
+void TimingHistory::add(const std::vector<TimingStats>& timings) {
+    for (const TimingStats& t : timings) {
+        if (!passes.count(t.name)) order.push_back(t.name);
+        std::deque<double>& h = passes[t.name];
+        h.push_back(t.medianMs);
+        while (h.size() > kHistory) h.pop_front();
+    }
+}
+
+ViewerApp::ViewerApp(const GpuContext& uiContext, ViewerOptions options)
+    : ui_(uiContext), options_(std::move(options)), state_(options_.initial), draft_(options_.initial) {
+    deviceName_ = ui_.info.name;
+    sampleCounts_ = ui_.caps.colorSampleCounts;
+    worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines");
+    referenceWorker_ = std::make_unique<RenderWorker>(options_.context, "reference");
+}
+
+ViewerApp::~ViewerApp() { stop(); }
+
+std::vector<std::string> ViewerApp::stop() {
+    std::vector<std::string> messages;
+    for (auto* w : {&worker_, &referenceWorker_}) {
+        if (!*w) continue;
+        std::vector<std::string> m = (*w)->stop();
+        messages.insert(messages.end(), m.begin(), m.end());
+        w->reset();
+    }
+    return messages;
+}
+
+void ViewerApp::setSplit(float share) {
+    state_.split = std::clamp(share, 0.0f, 1.0f);
+    sceneInputsChanged_ = true;
+}
+
+const Shown* ViewerApp::shownFor(const std::string& pipeline) const {
+    if (pipeline == kReferenceRenderer) return reference_ ? &*reference_ : nullptr;
+    auto it = shown_.find(pipeline);
+    return it == shown_.end() ? nullptr : &it->second;
+}
+const Shown* ViewerApp::shownA() const { return shownFor(state_.pipelineA); }
+const Shown* ViewerApp::shownB() const { return shownFor(state_.pipelineB); }
+
+bool ViewerApp::referenceStale() const { return !reference_ || reference_->key != referenceKey(state_); }
+
+bool ViewerApp::settled() const {
+    if (!worker_->idle() || !referenceWorker_->idle()) return false;
+    // A finished outcome not yet taken, or a state change not yet submitted.
+    bool debug = state_.mode == DisplayMode::Overlay;
+    if (submittedKey_ != renderKey(state_, debug)) return false;
+    bool wantReference = state_.reference || state_.pipelineA == kReferenceRenderer ||
+                         state_.pipelineB == kReferenceRenderer;
+    if (wantReference && submittedReferenceKey_ != referenceKey(state_)) return false;
+    return shownA() != nullptr && !sceneDirty_;
+}
+
+void ViewerApp::takeOutcomes() {
+    if (std::optional<RenderOutcome> o = worker_->take()) {
+        error_ = o->error;
+        lastRebuilt_ = o->rebuilt;
+        lastRenderMs_ = o->totalMs;
+        lastSceneMs_ = o->sceneMs;
+        if (o->error.empty()) {
+            sceneMemory_ = o->sceneMemory;
+            lightCount_ = o->lightCount;
+            triangleCount_ = o->triangleCount;
+            sceneCamera_ = o->sceneCamera;
+            if (state_.cameraFromScene) state_.camera = sceneCamera_;
+        }
+        for (PipelineImage& image : o->images) {
+            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs};
+            if (image.error.empty()) {
+                history_[image.pipeline].add(image.run.timings);
+                s.run = std::make_shared<const RunResult>(std::move(image.run));
+            } else {
+                error_ = image.error;
+            }
+            shown_[image.pipeline] = std::move(s);
+        }
+        sceneInputsChanged_ = true;
+    }
+    if (std::optional<RenderOutcome> o = referenceWorker_->take()) {
+        if (!o->error.empty() && error_.empty()) error_ = o->error;
+        for (PipelineImage& image : o->images) {
+            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs};
+            if (image.error.empty()) s.run = std::make_shared<const RunResult>(std::move(image.run));
+            reference_ = std::move(s);
+        }
+        sceneInputsChanged_ = true;
+    }
+}
+
+void ViewerApp::submitJobs() {
+    const bool debug = state_.mode == DisplayMode::Overlay;
+    std::vector<std::string> pipelines;
+    for (const std::string& p : {state_.pipelineA, state_.pipelineB})
+        if (p != kReferenceRenderer && std::find(pipelines.begin(), pipelines.end(), p) == pipelines.end())
+            pipelines.push_back(p);
+    const std::string key = renderKey(state_, debug);
+    if (key != submittedKey_ || pipelines != submittedPipelines_) {
+        RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames};
+        // Debug images of a pipeline only when an overlay is shown: they cost readbacks.
+        worker_->submit(std::move(job));
+        submittedKey_ = key;
+        submittedPipelines_ = pipelines;
+    }
+    bool wantReference = state_.reference || referenceRequested_ || state_.pipelineA == kReferenceRenderer ||
+                         state_.pipelineB == kReferenceRenderer;
+    const std::string refKey = referenceKey(state_);
+    if (wantReference && refKey != submittedReferenceKey_) {
+        RenderJob job{nextJob_++, state_, {kReferenceRenderer}, false, refKey, 1};
+        referenceWorker_->submit(std::move(job));
+        submittedReferenceKey_ = refKey;
+    }
+    referenceRequested_ = false;
+}
+
+void ViewerApp::recompose() {
+    const Shown* a = shownA();
+    const Shown* b = shownB();
+    const RunResult* runA = a && a->run ? a->run.get() : nullptr;
+    const RunResult* runB = b && b->run ? b->run.get() : nullptr;
+    if (runA && state_.autoExposure) autoEv_ = autoExposureEv(runA->hdr);
+    const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
+    const ImageRGBA* overlay = nullptr;
+    if (runA)
+        for (const DebugImage& d : runA->debugImages)
+            if (d.name == state_.overlay && d.display) overlay = &d.image;
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "|%d|%.6f|%d|%.6f|%ux%u", int(state_.mode), state_.split, int(state_.flip), ev,
+                  state_.width, state_.height);
+    std::string key = ptrKey(runA) + ptrKey(runB) + ptrKey(overlay) + buf;
+    if (key == composedFor_) return;
+    CompositeInput in{runA ? &runA->hdr : nullptr, runB ? &runB->hdr : nullptr, overlay, state_.mode,
+                      state_.split, state_.flip, ev};
+    // The images' own size: a render of the previous resolution stays shown until the new one lands.
+    uint32_t w = runA ? runA->hdr.width : state_.width, h = runA ? runA->hdr.height : state_.height;
+    composite_ = compose(in, w, h);
+    composedFor_ = key;
+    sceneDirty_ = true;
+}
+
+bool ViewerApp::takeSceneDirty() {
+    bool d = sceneDirty_;
+    sceneDirty_ = false;
+    return d;
+}
+
+void ViewerApp::measureAgainstReference() {
+    errorVsReference_.reset();
+    errorVsReferenceDisplay_.reset();
+    const Shown* a = shownA();
+    if (!a || !a->run || referenceStale() || !reference_->run) return;
+    if (a->key != submittedKey_) return; // A is of an older view than the reference
+    const ImageRGBA& ref = reference_->run->hdr;
+    if (ref.width != a->run->hdr.width || ref.height != a->run->hdr.height) return;
+    MetricsOptions hdr;
+    hdr.psnrPeak = brightestFiniteChannel(ref); // compare's HDR PSNR peak
+    errorVsReference_ = computeError(a->run->hdr, ref, hdr);
+    const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
+    errorVsReferenceDisplay_ = computeError(tonemapToDisplay(a->run->hdr, ev), tonemapToDisplay(ref, ev));
+}
+
+void ViewerApp::handleSceneMouse() {
+    ImGuiIO& io = ImGui::GetIO();
+    const float w = float(composite_.width), h = float(composite_.height);
+    const ImVec2 m = io.MousePos;
+    const bool inside = m.x >= 0 && m.y >= 0 && m.x < w && m.y < h && !io.WantCaptureMouse;
+    inspection_.valid = false;
+    if (inside && m.y < float(state_.height)) {
+        inspection_.valid = true;
+        inspection_.x = uint32_t(m.x);
+        inspection_.y = uint32_t(m.y);
+        for (auto [shown, out] : {std::pair{shownA(), inspection_.a}, std::pair{shownB(), inspection_.b}}) {
+            std::fill(out, out + 4, 0.0f);
+            if (shown && shown->run && inspection_.x < shown->run->hdr.width && inspection_.y < shown->run->hdr.height)
+                std::copy_n(shown->run->hdr.at(inspection_.x, inspection_.y), 4, out);
+        }
+    }
+    if (!io.MouseDown[0]) dragging_ = false;
+    if (inside && io.MouseClicked[0] && state_.mode == DisplayMode::Split &&
+        std::abs(m.x - float(dividerColumn(state_.split, composite_.width))) <= kGrabDistance)
+        dragging_ = true;
+    if (dragging_) {
+        setSplit(m.x / w);
+        return;
+    }
+    if (!inside) return;
+    // Camera: left drag orbits, right drag turns the view (fly), the wheel dollies.
+    const ImVec2 d = io.MouseDelta;
+    if (io.MouseDown[0] && (d.x != 0 || d.y != 0)) orbitCamera(d.x * 0.3f, d.y * 0.3f);
+    else if (io.MouseDown[1] && (d.x != 0 || d.y != 0)) turnCamera(d.x * 0.2f, d.y * 0.2f);
+    if (io.MouseWheel != 0) {
+        userCamera();
+        dolly(state_.camera, io.MouseWheel * 0.1f);
+    }
+}
+
+Camera& ViewerApp::userCamera() {
+    if (state_.cameraFromScene) {
+        state_.camera = sceneCamera_;
+        state_.cameraFromScene = false;
+    }
+    return state_.camera;
+}
+
+void ViewerApp::moveCamera(float forward, float right, float up) {
+    Camera& c = userCamera();
+    float step = moveStep(c);
+    flyMove(c, forward * step, right * step, up * step);
+}
+void ViewerApp::turnCamera(float yaw, float pitch) { flyTurn(userCamera(), yaw, pitch); }
+void ViewerApp::orbitCamera(float yaw, float pitch) { orbit(userCamera(), yaw, pitch); }
+void ViewerApp::resetCamera() {
+    state_.cameraFromScene = true;
+    state_.camera = sceneCamera_;
+}
+
+void ViewerApp::frame() {
+    takeOutcomes();
+    recompose();
+    handleSceneMouse();
+    drawPanels();
+    submitJobs();
+    measureAgainstReference();
+    recompose();
+}
+
+} // namespace tp::view

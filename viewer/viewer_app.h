@@ -1,0 +1,150 @@
+#pragma once
+// The viewer itself, independent of where its frames go (a window or the offscreen target):
+// the state, the two background workers (the pipelines; the reference), what each change
+// must rebuild, the composed scene area, and the ImGui panels drawn from the registry and
+// the knob schema. The window and the headless script runner both drive this one class, so
+// the tests exercise the code a user sees.
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/gpu/context.h"
+#include "core/image/metrics.h"
+#include "viewer/composite.h"
+#include "viewer/exporter.h"
+#include "viewer/render_worker.h"
+#include "viewer/view_state.h"
+
+namespace tp::view {
+
+struct ViewerOptions {
+    ViewState initial;
+    ContextOptions context;     // each worker opens its own device with these
+    uint32_t timedFrames = 1;   // frames per render (the timing graph's samples)
+    uint32_t panelWidth = 380;  // the control panel, right of the scene area
+    std::string exe;            // this program, for export (it runs `render` / `compare`)
+};
+
+// A finished render of one pipeline, as the UI keeps it.
+struct Shown {
+    std::string pipeline;
+    std::string key;      // renderKey (pipelines) or referenceKey (the reference) it was made for
+    std::string error;
+    std::shared_ptr<const RunResult> run;
+    double buildMs = 0;
+};
+
+// Per-pass GPU times of the last frames of one pipeline (the graph and its median/min/max).
+struct TimingHistory {
+    std::map<std::string, std::deque<double>> passes; // name -> last kHistory times (ms)
+    std::vector<std::string> order;                    // "frame" first, then passes
+    static constexpr size_t kHistory = 64;
+    void add(const std::vector<TimingStats>& timings);
+};
+
+// The pixel inspector's readout for the pixel under the cursor.
+struct Inspection {
+    bool valid = false;
+    uint32_t x = 0, y = 0;
+    float a[4] = {}, b[4] = {};
+};
+
+class ViewerApp {
+  public:
+    ViewerApp(const GpuContext& uiContext, ViewerOptions options);
+    ~ViewerApp();
+
+    // One UI frame, between ImGui::NewFrame() and ImGui::Render(): takes finished renders,
+    // submits what the state now needs, handles the mouse over the scene area, draws the panels.
+    void frame();
+    // The scene area, recomposed when its inputs changed; sceneDirty() until taken.
+    const Composite& scene() const { return composite_; }
+    bool takeSceneDirty();
+    uint32_t panelWidth() const { return options_.panelWidth; }
+
+    ViewState& state() { return state_; }
+    const ViewState& const_state() const { return state_; }
+    // Nothing rendering or queued, and (when enabled) the reference of this view present.
+    bool settled() const;
+    // Actions shared by the panels, the keys and the script runner.
+    void toggleFlip() { state_.flip = !state_.flip; sceneInputsChanged_ = true; }
+    void setSplit(float share);
+    void requestReference() { referenceRequested_ = true; }
+    // Camera moves (scene units are steps of moveStep; angles in degrees). The first move
+    // takes over the scene's camera.
+    Camera& userCamera();
+    void moveCamera(float forward, float right, float up);
+    void turnCamera(float yaw, float pitch);
+    void orbitCamera(float yaw, float pitch);
+    void resetCamera();
+    // A frame after a camera load or bookmark: the camera given, no longer the scene's.
+    void setCamera(const Camera& c) { state_.camera = c; state_.cameraFromScene = false; }
+    // Bookmarks: one camera file each (core/render/camera_file.h), or a list of them (load
+    // takes the first). Errors go to the status line.
+    void saveBookmark(const std::string& path);
+    void loadBookmark(const std::string& path);
+    // `render` of A and `compare` of A and B into DIR/render and DIR/compare (exporter.h).
+    void startExport(const std::string& dir);
+    std::string exportStatus() const { return exporter_.status(); }
+    bool exporting() const { return exporter_.busy(); }
+    bool sceneLoaded() const { return triangleCount_ > 0 || !shown_.empty(); }
+    const Inspection& inspection() const { return inspection_; }
+    const std::string& lastError() const { return error_; }
+    void setError(std::string e) { error_ = std::move(e); }
+    // Render statistics for scripts and the benchmark.
+    const Shown* shownA() const;
+    const Shown* shownB() const;
+    double lastRenderMs() const { return lastRenderMs_; }
+    const std::optional<ErrorReport>& errorVsReference() const { return errorVsReference_; }
+    bool referenceStale() const;
+    const std::string& deviceName() const { return deviceName_; }
+    // Stops the workers; their devices' validation messages.
+    std::vector<std::string> stop();
+
+  private:
+    friend struct Panels;
+    void takeOutcomes();
+    void submitJobs();
+    void recompose();
+    void handleSceneMouse();
+    void measureAgainstReference();
+    void drawPanels(); // ui_panels.cpp
+    const Shown* shownFor(const std::string& pipeline) const;
+
+    const GpuContext& ui_;
+    ViewerOptions options_;
+    ViewState state_;
+    std::string deviceName_;
+    uint32_t sampleCounts_ = 1;
+    std::unique_ptr<RenderWorker> worker_, referenceWorker_;
+    uint64_t nextJob_ = 1;
+    std::string submittedKey_, submittedReferenceKey_;
+    std::vector<std::string> submittedPipelines_;
+    std::map<std::string, Shown> shown_;        // latest finished image per pipeline
+    std::optional<Shown> reference_;
+    std::map<std::string, TimingHistory> history_;
+    std::optional<ErrorReport> errorVsReference_, errorVsReferenceDisplay_;
+    std::string lastRebuilt_;
+    double lastRenderMs_ = 0, lastSceneMs_ = 0;
+    std::vector<LedgerEntry> sceneMemory_;
+    size_t lightCount_ = 0, triangleCount_ = 0;
+    Camera sceneCamera_;
+    Composite composite_;
+    bool sceneDirty_ = true, sceneInputsChanged_ = true;
+    std::string composedFor_;
+    bool referenceRequested_ = false;
+    bool dragging_ = false;
+    Inspection inspection_;
+    std::string error_;
+    std::string exportStatus_;
+    std::string exportDir_ = "view_export";
+    std::string bookmarkPath_ = "bookmark.json";
+    ViewState draft_; // what the panels' text fields edit until "Apply" (lights, scene, size)
+    float autoEv_ = 0.0f;
+    Exporter exporter_;
+};
+
+} // namespace tp::view
