@@ -39,12 +39,13 @@ void drawDivider(Composite& out, uint32_t column, uint32_t height) {
 void composeSplit(const CompositeInput& in, Composite& out, uint32_t height) {
     const ImageRGBA* left = in.flip ? in.b : in.a;
     const ImageRGBA* right = in.flip ? in.a : in.b;
-    uint32_t column = dividerColumn(in.split, out.width);
-    if (left) blit(tonemapToDisplay(*left, in.exposureEv), out, height, 0, column);
-    if (right) blit(tonemapToDisplay(*right, in.exposureEv), out, height, column, out.width);
+    // A's columns end where B's begin; at split 1 that is past the last column (A whole).
+    const uint32_t boundary = std::min(out.width, uint32_t(std::floor(std::clamp(in.split, 0.0f, 1.0f) * float(out.width))));
+    if (left) blit(tonemapToDisplay(*left, in.exposureEv), out, height, 0, boundary);
+    if (right) blit(tonemapToDisplay(*right, in.exposureEv), out, height, boundary, out.width);
     if (!left || !right) out.note = "rendering...";
     // The divider only where both sides show something (at 0 or 1 the whole image is one side).
-    if (in.split > 0.0f && in.split < 1.0f) drawDivider(out, column, height);
+    if (in.split > 0.0f && in.split < 1.0f) drawDivider(out, dividerColumn(in.split, out.width), height);
 }
 
 void composeDifference(const CompositeInput& in, Composite& out) {

@@ -97,6 +97,7 @@ void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {
         current_ = &lines_[next_++];
         waitStart_ = std::chrono::steady_clock::now();
         apply(app, mouse, *current_);
+        if (blocked()) return; // a line that waits sees at least one frame first
     }
 }
 

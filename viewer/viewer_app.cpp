@@ -76,7 +76,8 @@ bool ViewerApp::settled() const {
     bool wantReference = state_.reference || state_.pipelineA == kReferenceRenderer ||
                          state_.pipelineB == kReferenceRenderer;
     if (wantReference && submittedReferenceKey_ != referenceKey(state_)) return false;
-    return shownA() != nullptr && !sceneDirty_;
+    // A scene that failed to load settles on its error (no image will come).
+    return (shownA() != nullptr || !error_.empty()) && !sceneDirty_;
 }
 
 void ViewerApp::takeOutcomes() {
