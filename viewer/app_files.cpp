@@ -6,14 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/reference/reference_renderer.h"
-#include "viewer/viewer_app.h"
-#if __has_include("core/render/camera_file.h")
 #include "core/render/camera_file.h"
-#define TP_HAVE_CAMERA_FILE 1
-#endif
+#include "viewer/viewer_app.h"
 
 namespace tp::view {
-#ifdef TP_HAVE_CAMERA_FILE
 
 void ViewerApp::saveBookmark(const std::string& path) {
     Status s = writeCameraFile(path, userCamera());
@@ -68,10 +64,5 @@ void ViewerApp::startExport(const std::string& dir) {
     compare.insert(compare.end(), {"--pipelines", pipelines, "--out", dir + "/compare"});
     if (!exporter_.start({render, compare}, dir + "/export.log")) error_ = "an export is still running";
 }
-#else
-void ViewerApp::saveBookmark(const std::string&) { error_ = "bookmarks: camera files are not in this build yet"; }
-void ViewerApp::loadBookmark(const std::string&) { error_ = "bookmarks: camera files are not in this build yet"; }
-void ViewerApp::startExport(const std::string&) { error_ = "export: camera files are not in this build yet"; }
-#endif
 
 } // namespace tp::view

@@ -91,6 +91,7 @@ void RenderWorker::prepareScene(const RenderJob& job, RenderOutcome& out) {
         plain.dropSceneLights = false;
         scene_ = std::make_unique<Scene>(cli::loadScene(plain));
         sceneLights_ = scene_->lights;
+        sceneCamera_ = scene_->camera;
         gpuScene_ = std::make_unique<SceneGpu>(*ctx_, *scene_);
         sceneKey_ = sceneKey(s);
         out.rebuilt = "scene";
@@ -130,8 +131,8 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
         sceneKey_.clear();
         return out;
     }
-    out.sceneCamera = scene_->camera;
-    if (!job.state.cameraFromScene) scene_->camera = job.state.camera;
+    out.sceneCamera = sceneCamera_;
+    scene_->camera = job.state.cameraFromScene ? sceneCamera_ : job.state.camera;
     out.lightCount = scene_->lights.size();
     out.triangleCount = scene_->triangleCount();
     out.sceneMemory = ctx_->ledger.entriesOf("scene");

@@ -88,6 +88,7 @@ class RenderWorker {
     std::unique_ptr<Scene> scene_;
     std::unique_ptr<SceneGpu> gpuScene_;
     std::vector<Light> sceneLights_; // the scene file's own lights
+    Camera sceneCamera_;             // and its own camera (the user's replaces it per job)
     std::string sceneKey_, lightsKey_;
 };
 

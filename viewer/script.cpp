@@ -94,8 +94,9 @@ void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {
     while (true) {
         if (blocked() && stillWaiting(app, mouse)) return;
         if (next_ >= lines_.size()) return;
+        if (next_ != startedLine_) waitStart_ = std::chrono::steady_clock::now(); // not when a line runs again
+        startedLine_ = next_;
         current_ = &lines_[next_++];
-        waitStart_ = std::chrono::steady_clock::now();
         apply(app, mouse, *current_);
         if (blocked()) return; // a line that waits sees at least one frame first
     }
@@ -156,6 +157,11 @@ void ScriptRunner::afterFrame(ViewerApp&, const ImageRGBA* frame, double frameMs
     if (wait_ == Wait::Screenshot && framesLeft_ == 1 && screenshots_) screenshotDue_ = true;
 }
 
+// Files a script names are in --out unless given as absolute paths.
+std::string ScriptRunner::inOut(const std::string& file) const {
+    return !file.empty() && file[0] == '/' ? file : out_ + "/" + file;
+}
+
 void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line) {
     const std::vector<std::string>& w = line.words;
     const std::string& cmd = w[0];
@@ -206,12 +212,20 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         s.autoExposure = w[1] == "auto";
         if (!s.autoExposure) s.exposureEv = num(1);
     } else if (cmd == "camera") {
+        if (!app.sceneLoaded()) { // a move needs the scene's camera: run this line again next frame
+            if (!app.lastError().empty() && app.settled()) fail(line, "no scene to move in: " + app.lastError());
+            double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+            if (waited > waitLimit_) fail(line, "the scene did not load in " + std::to_string(int(waitLimit_)) + " s");
+            --next_;
+            wait_ = Wait::Frames, framesLeft_ = 1;
+            return;
+        }
         if (w[1] == "reset") app.resetCamera();
         else if (w[1] == "move" && w.size() == 5) app.moveCamera(num(2), num(3), num(4));
         else if (w[1] == "orbit" && w.size() == 4) app.orbitCamera(num(2), num(3));
         else if (w[1] == "turn" && w.size() == 4) app.turnCamera(num(2), num(3));
-        else if (w[1] == "load" && w.size() == 3) app.loadBookmark(w[2]);
-        else if (w[1] == "save" && w.size() == 3) app.saveBookmark(w[2]);
+        else if (w[1] == "load" && w.size() == 3) app.loadBookmark(inOut(w[2]));
+        else if (w[1] == "save" && w.size() == 3) app.saveBookmark(inOut(w[2]));
         else fail(line, std::string("expected '") + commands().at("camera").usage + "'");
         if (!app.lastError().empty()) fail(line, app.lastError());
     } else if (cmd == "split") {
@@ -248,17 +262,17 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
     } else if (cmd == "frames") {
         wait_ = Wait::Frames, framesLeft_ = std::max(1, int(num(1)));
     } else if (cmd == "screenshot") {
-        screenshotFile_ = out_ + "/" + w[1];
+        screenshotFile_ = inOut(w[1]);
         wait_ = Wait::Screenshot, framesLeft_ = screenshots_ ? 3 : 1;
     } else if (cmd == "stats") {
-        writeStats(app, out_ + "/" + w[1]);
+        writeStats(app, inOut(w[1]));
     } else if (cmd == "export") {
-        app.startExport(out_ + "/" + w[1]);
+        app.startExport(inOut(w[1]));
         if (!app.lastError().empty()) fail(line, app.lastError());
         wait_ = Wait::Export;
     } else if (cmd == "bench") {
         benchTotal_ = benchLeft_ = std::max(1, int(num(1)));
-        benchFile_ = out_ + "/" + w[2];
+        benchFile_ = inOut(w[2]);
         benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear();
         benchRecordDue_ = false;
         wait_ = Wait::Bench;

@@ -3,6 +3,7 @@
 // keys (docs/viewer.md lists them). `triptych view --headless --script FILE` runs it offscreen
 // and its screenshots hold the UI; the window runs it too (without screenshots).
 #include <chrono>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,6 +54,7 @@ class ScriptRunner {
     bool stillWaiting(ViewerApp& app, ScriptMouse& mouse);
     [[noreturn]] void fail(const ScriptLine& line, const std::string& message) const;
     void writeStats(ViewerApp& app, const std::string& file) const;
+    std::string inOut(const std::string& file) const;
     bool benchStep(ViewerApp& app); // true while renders remain
 
     std::vector<ScriptLine> lines_;
@@ -60,6 +62,7 @@ class ScriptRunner {
     double waitLimit_;
     bool screenshots_;
     size_t next_ = 0;
+    size_t startedLine_ = SIZE_MAX;
     const ScriptLine* current_ = nullptr;
     Wait wait_ = Wait::None;
     int framesLeft_ = 0;

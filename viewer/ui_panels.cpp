@@ -210,6 +210,7 @@ void ViewerApp::drawPanels() {
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
     ImGui::Begin("triptych view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-150.0f); // room for the knobs' names
     Panels::status(*this);
     Panels::pipelines(*this);
     Panels::knobs(*this);
@@ -220,6 +221,7 @@ void ViewerApp::drawPanels() {
     Panels::scene(*this);
     Panels::camera(*this);
     Panels::exporting(*this);
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

@@ -26,7 +26,7 @@ void surfaceSize(const ViewerApp& app, uint32_t& width, uint32_t& height) {
     uint32_t sceneW = std::max(app.scene().width, app.const_state().width);
     uint32_t sceneH = std::max(app.scene().height, app.const_state().height + kLegendHeight);
     width = sceneW + app.panelWidth();
-    height = std::max(sceneH, 520u);
+    height = std::max(sceneH, 600u);
 }
 
 int finish(ViewerApp& app, const GpuContext& ui, const std::string& scriptError) {

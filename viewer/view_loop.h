@@ -27,7 +27,7 @@ int runWindow(const LoopSetup& setup);
 // Shared by both: the ImGui context (no imgui.ini written), and the end of a run.
 void createImGuiContext();
 int finish(ViewerApp& app, const GpuContext& ui, const std::string& scriptError);
-// The UI surface for the scene area at its size: the area plus the panel, at least 520 high.
+// The UI surface for the scene area at its size: the area plus the panel, at least 600 high.
 void surfaceSize(const ViewerApp& app, uint32_t& width, uint32_t& height);
 
 } // namespace tp::view

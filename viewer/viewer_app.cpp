@@ -91,6 +91,7 @@ void ViewerApp::takeOutcomes() {
             lightCount_ = o->lightCount;
             triangleCount_ = o->triangleCount;
             sceneCamera_ = o->sceneCamera;
+            hasSceneCamera_ = true;
             if (state_.cameraFromScene) state_.camera = sceneCamera_;
         }
         for (PipelineImage& image : o->images) {
@@ -216,7 +217,7 @@ void ViewerApp::handleSceneMouse() {
     const ImVec2 d = io.MouseDelta;
     if (io.MouseDown[0] && (d.x != 0 || d.y != 0)) orbitCamera(d.x * 0.3f, d.y * 0.3f);
     else if (io.MouseDown[1] && (d.x != 0 || d.y != 0)) turnCamera(d.x * 0.2f, d.y * 0.2f);
-    if (io.MouseWheel != 0) {
+    if (io.MouseWheel != 0 && hasSceneCamera_) {
         userCamera();
         dolly(state_.camera, io.MouseWheel * 0.1f);
     }
@@ -231,12 +232,17 @@ Camera& ViewerApp::userCamera() {
 }
 
 void ViewerApp::moveCamera(float forward, float right, float up) {
+    if (!hasSceneCamera_) return;
     Camera& c = userCamera();
     float step = moveStep(c);
     flyMove(c, forward * step, right * step, up * step);
 }
-void ViewerApp::turnCamera(float yaw, float pitch) { flyTurn(userCamera(), yaw, pitch); }
-void ViewerApp::orbitCamera(float yaw, float pitch) { orbit(userCamera(), yaw, pitch); }
+void ViewerApp::turnCamera(float yaw, float pitch) {
+    if (hasSceneCamera_) flyTurn(userCamera(), yaw, pitch);
+}
+void ViewerApp::orbitCamera(float yaw, float pitch) {
+    if (hasSceneCamera_) orbit(userCamera(), yaw, pitch);
+}
 void ViewerApp::resetCamera() {
     state_.cameraFromScene = true;
     state_.camera = sceneCamera_;

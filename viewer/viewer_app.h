@@ -24,7 +24,7 @@ struct ViewerOptions {
     ViewState initial;
     ContextOptions context;     // each worker opens its own device with these
     uint32_t timedFrames = 1;   // frames per render (the timing graph's samples)
-    uint32_t panelWidth = 380;  // the control panel, right of the scene area
+    uint32_t panelWidth = 420;  // the control panel, right of the scene area
     std::string exe;            // this program, for export (it runs `render` / `compare`)
 };
 
@@ -90,7 +90,8 @@ class ViewerApp {
     void startExport(const std::string& dir);
     std::string exportStatus() const { return exporter_.status(); }
     bool exporting() const { return exporter_.busy(); }
-    bool sceneLoaded() const { return triangleCount_ > 0 || !shown_.empty(); }
+    // The scene's camera has arrived (camera moves before it would move a default camera).
+    bool sceneLoaded() const { return hasSceneCamera_; }
     const Inspection& inspection() const { return inspection_; }
     const std::string& lastError() const { return error_; }
     void setError(std::string e) { error_ = std::move(e); }
@@ -132,6 +133,7 @@ class ViewerApp {
     std::vector<LedgerEntry> sceneMemory_;
     size_t lightCount_ = 0, triangleCount_ = 0;
     Camera sceneCamera_;
+    bool hasSceneCamera_ = false;
     Composite composite_;
     bool sceneDirty_ = true, sceneInputsChanged_ = true;
     std::string composedFor_;

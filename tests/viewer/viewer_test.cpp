@@ -188,6 +188,18 @@ TEST(Viewer, OverlayShowsADebugImageOfA) {
     EXPECT_FALSE(s["pipeline_a"]["debug_images"].empty());
 }
 
+TEST(Viewer, ABookmarkBringsTheCameraBack) {
+    ViewRun r = runScript("bookmark", "pipeline b " + pipeline(0) + "\ncamera orbit 30 10\ncamera save b.json\n"
+                                      "wait\nstats saved.json\ncamera reset\nwait\nstats reset.json\n"
+                                      "camera load b.json\nwait\nstats loaded.json\n");
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json saved = r.stats("saved.json"), reset = r.stats("reset.json"), loaded = r.stats("loaded.json");
+    EXPECT_NE(saved["camera"], reset["camera"]);
+    for (const char* k : {"position", "target"})
+        for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(saved["camera"][k][i].get<double>(), loaded["camera"][k][i].get<double>(), 1e-5) << k;
+}
+
 TEST(Viewer, ABadScriptLineIsOneErrorAndNoRun) {
     const std::string path = (std::filesystem::temp_directory_path() / "triptych_view_bad.txt").string();
     std::ofstream(path) << "split 0.5\nteleport 1 2\n";
