@@ -15,11 +15,8 @@ namespace {
 // How close (pixels) to the divider a press grabs it instead of orbiting the camera.
 constexpr float kGrabDistance = 4.0f;
 
-std::string ptrKey(const void* p) {
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%p", p);
-    return buf;
-}
+// Which image a composite or a metric was made from (an address could be reused).
+std::string serialKey(const Shown* s) { return s && s->run ? std::to_string(s->serial) + "|" : "-|"; }
 
 } // namespace
 
@@ -95,7 +92,7 @@ void ViewerApp::takeOutcomes() {
             if (state_.cameraFromScene) state_.camera = sceneCamera_;
         }
         for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs};
+            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++};
             if (image.error.empty()) {
                 history_[image.pipeline].add(image.run.timings);
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
@@ -109,7 +106,7 @@ void ViewerApp::takeOutcomes() {
     if (std::optional<RenderOutcome> o = referenceWorker_->take()) {
         if (!o->error.empty() && error_.empty()) error_ = o->error;
         for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs};
+            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++};
             if (image.error.empty()) s.run = std::make_shared<const RunResult>(std::move(image.run));
             reference_ = std::move(s);
         }
@@ -147,7 +144,10 @@ void ViewerApp::recompose() {
     const Shown* b = shownB();
     const RunResult* runA = a && a->run ? a->run.get() : nullptr;
     const RunResult* runB = b && b->run ? b->run.get() : nullptr;
-    if (runA && state_.autoExposure) autoEv_ = autoExposureEv(runA->hdr);
+    if (runA && a->serial != autoEvFor_) { // once per image, not per UI frame
+        autoEv_ = autoExposureEv(runA->hdr);
+        autoEvFor_ = a->serial;
+    }
     const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
     const ImageRGBA* overlay = nullptr;
     if (runA)
@@ -156,7 +156,7 @@ void ViewerApp::recompose() {
     char buf[160];
     std::snprintf(buf, sizeof(buf), "|%d|%.6f|%d|%.6f|%ux%u", int(state_.mode), state_.split, int(state_.flip), ev,
                   state_.width, state_.height);
-    std::string key = ptrKey(runA) + ptrKey(runB) + ptrKey(overlay) + buf;
+    std::string key = serialKey(a) + serialKey(b) + (overlay ? state_.overlay : std::string("-")) + buf;
     if (key == composedFor_) return;
     CompositeInput in{runA ? &runA->hdr : nullptr, runB ? &runB->hdr : nullptr, overlay, state_.mode,
                       state_.split, state_.flip, ev};
@@ -174,17 +174,23 @@ bool ViewerApp::takeSceneDirty() {
 }
 
 void ViewerApp::measureAgainstReference() {
+    const Shown* a = shownA();
+    const bool valid = a && a->run && !referenceStale() && reference_->run && a->key == submittedKey_;
+    const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
+    // Measured once per pair of images (and exposure), not per UI frame.
+    char evText[32];
+    std::snprintf(evText, sizeof(evText), "|%.6f", ev);
+    const std::string key = valid ? serialKey(a) + serialKey(&*reference_) + evText : "";
+    if (key == measuredFor_) return;
+    measuredFor_ = key;
     errorVsReference_.reset();
     errorVsReferenceDisplay_.reset();
-    const Shown* a = shownA();
-    if (!a || !a->run || referenceStale() || !reference_->run) return;
-    if (a->key != submittedKey_) return; // A is of an older view than the reference
+    if (!valid) return; // no reference of this view, or A is of an older one
     const ImageRGBA& ref = reference_->run->hdr;
     if (ref.width != a->run->hdr.width || ref.height != a->run->hdr.height) return;
     MetricsOptions hdr;
     hdr.psnrPeak = brightestFiniteChannel(ref); // compare's HDR PSNR peak
     errorVsReference_ = computeError(a->run->hdr, ref, hdr);
-    const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
     errorVsReferenceDisplay_ = computeError(tonemapToDisplay(a->run->hdr, ev), tonemapToDisplay(ref, ev));
 }
 

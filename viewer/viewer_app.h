@@ -35,6 +35,7 @@ struct Shown {
     std::string error;
     std::shared_ptr<const RunResult> run;
     double buildMs = 0;
+    uint64_t serial = 0;  // unique per image: what the composite and metrics were made from
 };
 
 // Per-pass GPU times of the last frames of one pipeline (the graph and its median/min/max).
@@ -128,6 +129,7 @@ class ViewerApp {
     std::optional<Shown> reference_;
     std::map<std::string, TimingHistory> history_;
     std::optional<ErrorReport> errorVsReference_, errorVsReferenceDisplay_;
+    std::string measuredFor_;
     std::string lastRebuilt_;
     double lastRenderMs_ = 0, lastSceneMs_ = 0;
     std::vector<LedgerEntry> sceneMemory_;
@@ -146,6 +148,8 @@ class ViewerApp {
     std::string bookmarkPath_ = "bookmark.json";
     ViewState draft_; // what the panels' text fields edit until "Apply" (lights, scene, size)
     float autoEv_ = 0.0f;
+    uint64_t autoEvFor_ = 0;
+    uint64_t nextSerial_ = 1;
     Exporter exporter_;
 };
 

@@ -8,7 +8,7 @@ fail=0
 for reg in */register.cpp; do
   name=$(dirname "$reg")
   hits=$(grep -rIn --include='*.cpp' --include='*.h' --include='*.glsl' --include='*.comp' \
-           --include='*.frag' --include='*.vert' "\"$name\"" core compare shaders | grep -v "^shaders/$name/")
+           --include='*.frag' --include='*.vert' "\"$name\"" core compare shaders viewer | grep -v "^shaders/$name/")
   if [ -n "$hits" ]; then echo "pipeline name \"$name\" spelled outside $name/:"; echo "$hits"; fail=1; fi
 done
 [ $fail = 0 ] && echo "no pipeline name outside its folder ($(ls */register.cpp | wc -l) pipelines)"
