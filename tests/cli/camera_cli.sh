@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# --camera FILE and `info --print-camera` end to end, without a GPU: the printed camera is a
-# camera file that reads back as the same camera, an edited one replaces the scene's, and every
-# command refuses an unusable file with one line naming --camera and the file, before any
-# output. Usage: camera_cli.sh TRIPTYCH
+# --camera FILE and `info --print-camera` end to end: the printed camera is a camera file that
+# reads back as the same camera, an edited one replaces the scene's (in a 16x16 render on the
+# default device too: render.json and camera.json record it), and every command refuses an
+# unusable file with one line naming --camera and the file, before any output or GPU work.
+# Usage: camera_cli.sh TRIPTYCH
 set -u
 bin=$1
 work=$(mktemp -d)
@@ -55,6 +56,27 @@ run_each() {
     run_triptych info builtin:courtyard-small "$@" --print-camera
     report "info --print-camera: $what" "$(refusal "" "$mention")"
 }
+
+# render records the camera it used: camera.json is what --print-camera prints for the same
+# options, and render.json holds the camera and its source.
+render_camera() { # description, kind, args...
+    local what=$1 kind=$2
+    shift 2
+    rm -rf "$work/render"
+    run_triptych render builtin:courtyard-small --res 16x16 --frames 1 --warmup 0 --lights 1 "$@" --out "$work/render"
+    local problem=""
+    if [ "$code" -ne 0 ]; then problem="exit code $code"
+    elif ! cmp -s "$work/render/camera.json" "$work/printed.json"; then problem="camera.json is not the camera printed"
+    elif ! grep -q "\"kind\": \"$kind\"" "$work/render/render.json"; then problem="render.json: camera_source is not $kind"
+    elif ! grep -q '"yfov_degrees": ' "$work/render/render.json"; then problem="render.json holds no camera"
+    fi
+    first=$(tail -n 1 "$work/stderr")
+    report "$what" "$problem"
+}
+print_camera builtin:courtyard-small
+render_camera "render records the scene's camera" scene
+print_camera builtin:courtyard-small --camera "$work/edited.json"
+render_camera "render records the --camera file's camera" file --camera "$work/edited.json"
 
 expect_camera_error() { # description, mention, file contents
     printf '%s' "$3" >"$work/bad.json"
