@@ -125,8 +125,9 @@ CLI::Option* addCameraOption(CLI::App& app, std::string& path) {
         "Camera bookmark FILE replacing the scene's camera (its glTF camera or the built-in one) for this run: "
         "JSON {\"schema\":\"triptych.camera/1\",\"position\":[x,y,z],\"target\":[x,y,z],\"up\":[x,y,z],"
         "\"yfov_degrees\":f,\"znear\":f,\"zfar\":f} (zfar 0: infinite). 'triptych info --print-camera' "
-        "writes a scene's camera in this form; so does every run, as camera.json and as the \"camera\" "
-        "object of its report.json / render.json");
+        "writes a scene's camera in this form; render and compare write the camera they used as camera.json, and "
+        "report.json, render.json and sweep.json hold it as their \"camera\" object")
+        ->type_name("FILE");
 }
 
 Camera readCameraOption(const std::string& path) {
