@@ -41,7 +41,7 @@ flips.forEach(function(img){
   img.addEventListener('click',function(){flip(img);});
 });
 document.addEventListener('keydown',function(e){
-  if(e.key!=='f'&&e.key!=='F')return;
+  if((e.key!=='f'&&e.key!=='F')||e.ctrlKey||e.metaKey||e.altKey)return; // Ctrl+F is the browser's find
   if(hovered&&hovered.classList.contains('flip'))flip(hovered);else flips.forEach(flip);
 });
 var loupe=document.createElement('div');loupe.id='loupe';

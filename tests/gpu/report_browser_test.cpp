@@ -57,6 +57,8 @@ try{
   var r=img.getBoundingClientRect(),px=30,py=20;
   img.dispatchEvent(new MouseEvent('mousemove',{bubbles:true,clientX:r.left+(px+0.5)*r.width/img.naturalWidth,
                                                 clientY:r.top+(py+0.5)*r.height/img.naturalHeight}));
+  document.dispatchEvent(new KeyboardEvent('keydown',{key:'f',ctrlKey:true,bubbles:true}));
+  check('Ctrl+F (find) does not flip',img.dataset.showing==='reference');
   document.dispatchEvent(new KeyboardEvent('keydown',{key:'f',bubbles:true}));
   check('F over the image flips it back',img.getAttribute('src')===own&&img.dataset.showing==='pipeline');
   var loupe=document.getElementById('loupe');
@@ -165,7 +167,7 @@ TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
         EXPECT_EQ(line.find("FAIL"), std::string::npos) << line;
         passed += line.find("PASS ") != std::string::npos;
     }
-    EXPECT_EQ(passed, 12u) << results;
+    EXPECT_EQ(passed, 13u) << results;
     if (!HasFailure()) fs::remove_all(dir);
 }
 
