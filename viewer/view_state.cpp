@@ -23,7 +23,7 @@ std::string cameraText(const Camera& c) {
 }
 
 std::string sceneKey(const ViewState& s) {
-    return s.scene.scene + "|" + (s.scene.strict ? "strict" : "repair");
+    return s.scene.scene + "|" + (s.scene.strict ? "strict" : "repair") + "|" + s.scene.cameraFile;
 }
 
 std::string lightsKey(const ViewState& s) {

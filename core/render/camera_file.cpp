@@ -1,6 +1,9 @@
 #include "core/render/camera_file.h"
 
 #include <array>
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -31,7 +34,27 @@ const std::array<const char*, 7> kKeys = {"schema", "position", "target", "up",
 // Shortest round-trip text of a number (std::to_string would print "180.000000").
 std::string num(double v) { return json(v).dump(); }
 
-json vecJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+// The shortest decimal that reads back as the same float: 1.8, not 1.7999999523162842 (the
+// file is for people to read and edit too).
+double shortest(float f) {
+    char text[32];
+    const std::to_chars_result r = std::to_chars(text, text + sizeof text, f);
+    return std::strtod(std::string(text, r.ptr).c_str(), nullptr);
+}
+
+// Degrees with as few digits as give back exactly `radians` when read.
+double shortestDegrees(float radians) {
+    const double exact = double(radians) * 180.0 / glm::pi<double>();
+    for (int digits = 6; digits < 17; ++digits) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.*g", digits, exact);
+        const double degrees = std::strtod(text, nullptr);
+        if (float(degrees * glm::pi<double>() / 180.0) == radians) return degrees;
+    }
+    return exact;
+}
+
+json vecJson(const glm::vec3& v) { return json::array({shortest(v.x), shortest(v.y), shortest(v.z)}); }
 
 // A JSON number that is also a finite float (1e300 is finite as a double, not as a float).
 bool finiteFloat(const json& v, double& out) {
@@ -107,16 +130,16 @@ Result<Camera> parseCamera(const json& j, const std::string& where) {
 } // namespace
 
 json cameraToJson(const Camera& camera) {
-    // Degrees in the file (what people type), radians in Camera; double keeps the round trip
-    // exact for every float.
+    // Degrees in the file (what people type), radians in Camera; every number reads back as
+    // exactly the float it was written from.
     json j = json::object();
     j["schema"] = kCameraSchema;
     j["position"] = vecJson(camera.position);
     j["target"] = vecJson(camera.target);
     j["up"] = vecJson(camera.up);
-    j["yfov_degrees"] = double(camera.yfov) * 180.0 / glm::pi<double>();
-    j["znear"] = camera.znear;
-    j["zfar"] = camera.zfar > 0.0f ? camera.zfar : 0.0f; // Camera's "zfar <= 0" is the file's 0
+    j["yfov_degrees"] = shortestDegrees(camera.yfov);
+    j["znear"] = shortest(camera.znear);
+    j["zfar"] = camera.zfar > 0.0f ? shortest(camera.zfar) : 0.0; // Camera's "zfar <= 0" is the file's 0
     return j;
 }
 

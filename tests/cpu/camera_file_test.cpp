@@ -62,6 +62,36 @@ TEST(CameraFile, JsonRoundTripIsExact) {
     expectSame(oddCamera(), *back);
 }
 
+// Random cameras, random bits: every float comes back exactly (degrees included), and the
+// numbers are written as short as that allows (1.8, not 1.7999999523162842).
+TEST(CameraFile, RoundTripIsExactForManyCameras) {
+    uint64_t state = 12345;
+    auto next = [&state](float lo, float hi) { // splitmix64, as lights.cpp: the same numbers everywhere
+        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return lo + (hi - lo) * float((z ^ (z >> 31)) >> 40) * (1.0f / 16777216.0f);
+    };
+    for (int i = 0; i < 2000; ++i) {
+        Camera c;
+        c.position = {next(-1e4f, 1e4f), next(-1e4f, 1e4f), next(-1e4f, 1e4f)};
+        c.target = c.position + glm::vec3(next(0.1f, 1.0f), next(-1.0f, 1.0f), next(0.1f, 1.0f));
+        c.up = {next(-0.1f, 0.1f), next(0.5f, 2.0f), next(-0.1f, 0.1f)};
+        c.yfov = next(0.01f, 3.1f);
+        c.znear = next(1e-5f, 1.0f);
+        c.zfar = i % 2 ? 0.0f : c.znear * next(2.0f, 1e6f);
+        Result<Camera> back = cameraFromJson(json::parse(cameraToJson(c).dump()), "x");
+        ASSERT_TRUE(back.ok()) << back.error();
+        expectSame(c, *back);
+    }
+    Camera c;
+    c.position = {0.0f, 1.8f, 25.0f};
+    c.yfov = 1.0f;
+    const std::string text = cameraToJson(c).dump();
+    EXPECT_NE(text.find("[0.0,1.8,25.0]"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"yfov_degrees\":57.29578,"), std::string::npos) << text;
+}
+
 TEST(CameraFile, FieldsAreNamedAsDocumented) {
     json j = validJson();
     EXPECT_EQ(j["schema"], "triptych.camera/1");
