@@ -64,6 +64,7 @@ ViewRun runScript(const std::string& name, const std::string& script, bool refer
     s.pipelineB = pipeline(1);
     s.reference = reference;
     setup.viewer.context.validate = true;
+    setup.viewer.exe = TP_TRIPTYCH_EXE;
     run.code = runHeadless(setup);
     return run;
 }
@@ -198,6 +199,22 @@ TEST(Viewer, ABookmarkBringsTheCameraBack) {
     for (const char* k : {"position", "target"})
         for (int i = 0; i < 3; ++i)
             EXPECT_NEAR(saved["camera"][k][i].get<double>(), loaded["camera"][k][i].get<double>(), 1e-5) << k;
+}
+
+TEST(Viewer, ExportWritesRenderAndCompareOfTheCurrentView) {
+    ViewRun r = runScript("export", "pipeline b " + pipeline(0) + "\ncamera orbit 15 0\nwait\nstats view.json\n"
+                                    "export exported\n");
+    ASSERT_EQ(r.code, 0);
+    const std::string dir = r.out + "/exported";
+    EXPECT_TRUE(std::filesystem::exists(dir + "/render/" + pipeline(0) + ".png"));
+    EXPECT_TRUE(std::filesystem::exists(dir + "/render/render.json"));
+    EXPECT_TRUE(std::filesystem::exists(dir + "/compare/report.html"));
+    // The moved camera, not the scene's: what the commands used is what the viewer showed.
+    nlohmann::json view = r.stats("view.json");
+    std::ifstream in(dir + "/render/camera.json");
+    nlohmann::json used = nlohmann::json::parse(in);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(used["position"][i].get<double>(), view["camera"]["position"][i].get<double>(), 1e-5);
 }
 
 TEST(Viewer, ABadScriptLineIsOneErrorAndNoRun) {
