@@ -202,7 +202,9 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
     } else if (cmd == "msaa") {
         uint32_t n = uint32_t(num(1));
         if (n != 1 && n != 2 && n != 4 && n != 8) fail(line, "msaa must be 1, 2, 4 or 8");
-        s.msaa = n; // a count the device lacks fails in the renderer: the status line says so
+        // The panel greys such a count out; a script is refused with the same reason.
+        if (!app.supportsMsaa(n)) fail(line, "msaa " + w[1] + ": not supported by " + app.deviceName());
+        s.msaa = n;
     } else if (cmd == "res") {
         unsigned rw = 0, rh = 0;
         if (std::sscanf(w[1].c_str(), "%ux%u", &rw, &rh) != 2 || rw < 8 || rh < 8 || rw > 8192 || rh > 8192)

@@ -101,10 +101,7 @@ void Panels::knobs(ViewerApp& app) {
         if (value.empty()) value = k.knob.defaultValue;
         knobControl(k.knob, value);
         ImGui::EndDisabled();
-        if (disabled) {
-            ImGui::SameLine();
-            ImGui::TextDisabled("(only under MSAA)");
-        }
+        if (disabled) ImGui::TextDisabled("  %s changes nothing at 1x: only under MSAA", k.knob.name.c_str());
     }
 }
 

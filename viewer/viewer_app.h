@@ -103,6 +103,7 @@ class ViewerApp {
     const std::optional<ErrorReport>& errorVsReference() const { return errorVsReference_; }
     bool referenceStale() const;
     const std::string& deviceName() const { return deviceName_; }
+    bool supportsMsaa(uint32_t samples) const { return (sampleCounts_ & samples) != 0; }
     // Stops the workers; their devices' validation messages.
     std::vector<std::string> stop();
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/gpu/context.h"
 #include "core/image/image_io.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
@@ -215,6 +216,20 @@ TEST(Viewer, ExportWritesRenderAndCompareOfTheCurrentView) {
     nlohmann::json used = nlohmann::json::parse(in);
     for (int i = 0; i < 3; ++i)
         EXPECT_NEAR(used["position"][i].get<double>(), view["camera"]["position"][i].get<double>(), 1e-5);
+}
+
+TEST(Viewer, AnMsaaCountTheDeviceLacksIsRefusedWithTheReason) {
+    // lavapipe has 1x and 4x; 8x is refused (the panel greys it out with the same reason).
+    Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create({});
+    ASSERT_TRUE(ctx);
+    const uint32_t counts = (*ctx)->caps.colorSampleCounts;
+    ctx->reset();
+    if (!(counts & 4) || (counts & 8)) GTEST_SKIP() << "the device does not have 4x without 8x";
+    ViewRun ok = runScript("msaa4", "msaa 4\nwait\nstats four.json\n");
+    ASSERT_EQ(ok.code, 0);
+    EXPECT_EQ(ok.stats("four.json")["error"], "");
+    ViewRun refused = runScript("msaa8", "wait\nmsaa 8\nwait\n");
+    EXPECT_EQ(refused.code, 2);
 }
 
 TEST(Viewer, ABadScriptLineIsOneErrorAndNoRun) {
