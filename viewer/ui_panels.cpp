@@ -185,7 +185,7 @@ void Panels::camera(ViewerApp& app) {
 }
 
 void Panels::status(ViewerApp& app) {
-    ImGui::Text("%s", app.deviceName_.c_str());
+    ImGui::Text("%s, UI %.0f frames/s", app.deviceName_.c_str(), ImGui::GetIO().Framerate);
     if (!app.error_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
         ImGui::TextWrapped("%s", app.error_.c_str());

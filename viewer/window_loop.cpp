@@ -1,4 +1,5 @@
 // The window: GLFW for input and the surface, the swapchain, the same frame as headless.
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -94,6 +95,7 @@ int runWindow(const LoopSetup& setup) {
             for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
                 glfwPollEvents();
                 if (runner) runner->beforeFrame(app, scriptMouse);
+                auto start = std::chrono::steady_clock::now();
                 ImGui_ImplVulkan_NewFrame();
                 ImGui_ImplGlfw_NewFrame();
                 ImGui::NewFrame();
@@ -104,7 +106,9 @@ int runWindow(const LoopSetup& setup) {
                 int fw = 0, fh = 0;
                 glfwGetFramebufferSize(window, &fw, &fh);
                 swapchain.draw(ui, ImGui::GetDrawData(), uint32_t(fw), uint32_t(fh));
-                if (runner) runner->afterFrame(app, nullptr, 0.0);
+                // The frame's work, present included (FIFO: paced by the display where it has one).
+                double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+                if (runner) runner->afterFrame(app, nullptr, frameMs);
                 bool scriptDone = !runner || runner->done();
                 if (setup.quitAfterFrames > 0 && frame + 1 >= setup.quitAfterFrames && scriptDone) break;
             }
