@@ -134,6 +134,8 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     out.sceneCamera = sceneCamera_;
     scene_->camera = job.state.cameraFromScene ? sceneCamera_ : job.state.camera;
     out.lightCount = scene_->lights.size();
+    out.lights = std::make_shared<const std::vector<Light>>(scene_->lights);
+    out.camera = scene_->camera;
     out.triangleCount = scene_->triangleCount();
     out.sceneMemory = ctx_->ledger.entriesOf("scene");
     RenderSettings settings;

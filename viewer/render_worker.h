@@ -49,6 +49,8 @@ struct RenderOutcome {
     std::vector<LedgerEntry> sceneMemory; // the shared scene upload (owner "scene")
     Camera sceneCamera;  // the scene's own camera (for "reset camera")
     size_t lightCount = 0;
+    std::shared_ptr<const std::vector<Light>> lights; // the job's lights (the inspector's)
+    Camera camera;                                     // the camera it rendered with
     size_t triangleCount = 0;
 };
 

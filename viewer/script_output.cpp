@@ -61,7 +61,8 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
     if (const auto& e = app.errorVsReference(); e) j["a_vs_reference"] = {{"rmse", e->rmse}, {"psnr", e->psnr}, {"max_abs", e->maxAbs}};
     const Inspection& i = app.inspection();
     if (i.valid)
-        j["inspection"] = {{"x", i.x}, {"y", i.y}, {"a", {i.a[0], i.a[1], i.a[2]}}, {"b", {i.b[0], i.b[1], i.b[2]}}};
+        j["inspection"] = {{"x", i.x}, {"y", i.y}, {"a", {i.a[0], i.a[1], i.a[2]}}, {"b", {i.b[0], i.b[1], i.b[2]}},
+                           {"surface", i.surface}, {"lights", i.lights}};
     const Camera& cam = app.state().camera;
     j["camera"] = {{"position", {cam.position.x, cam.position.y, cam.position.z}},
                    {"target", {cam.target.x, cam.target.y, cam.target.z}}};

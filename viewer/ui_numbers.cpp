@@ -107,14 +107,15 @@ void Panels::inspector(ViewerApp& app) {
     ImGui::Text("A %.5g %.5g %.5g", i.a[0], i.a[1], i.a[2]);
     ImGui::Text("B %.5g %.5g %.5g", i.b[0], i.b[1], i.b[2]);
     ImGui::Text("A-B %.5g %.5g %.5g", i.a[0] - i.b[0], i.a[1] - i.b[1], i.a[2] - i.b[2]);
-    // The tile's lights: the lights-per-tile debug image of A holds the count as its colour
-    // scale; shown when the overlay has been rendered.
-    if (const Shown* a = app.shownA(); a && a->run)
-        for (const DebugImage& d : a->run->debugImages)
-            if (d.name == "lights_per_tile" && i.x < d.image.width && i.y < d.image.height) {
-                const float* p = d.image.at(i.x, i.y);
-                ImGui::Text("lights-per-tile map here: %.3f %.3f %.3f", p[0], p[1], p[2]);
-            }
+    if (!i.surface) {
+        ImGui::TextDisabled("(no surface: the sky)");
+        return;
+    }
+    // The lights every pipeline must shade here; a tile's list may hold more (its conservatism).
+    std::string list;
+    for (size_t k = 0; k < i.lights.size() && k < 12; ++k) list += (k ? ", " : "") + std::to_string(i.lights[k]);
+    if (i.lights.size() > 12) list += ", ...";
+    ImGui::TextWrapped("lights reaching this surface: %zu%s%s", i.lights.size(), list.empty() ? "" : ": ", list.c_str());
 }
 
 void Panels::exporting(ViewerApp& app) {

@@ -8,6 +8,7 @@
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
 #include "viewer/camera_control.h"
+#include "viewer/pixel_lights.h"
 
 namespace tp::view {
 namespace {
@@ -92,7 +93,7 @@ void ViewerApp::takeOutcomes() {
             if (state_.cameraFromScene) state_.camera = sceneCamera_;
         }
         for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++};
+            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++, o->lights, o->camera};
             if (image.error.empty()) {
                 history_[image.pipeline].add(image.run.timings);
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
@@ -106,7 +107,7 @@ void ViewerApp::takeOutcomes() {
     if (std::optional<RenderOutcome> o = referenceWorker_->take()) {
         if (!o->error.empty() && error_.empty()) error_ = o->error;
         for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++};
+            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++, o->lights, o->camera};
             if (image.error.empty()) s.run = std::make_shared<const RunResult>(std::move(image.run));
             reference_ = std::move(s);
         }
@@ -209,6 +210,7 @@ void ViewerApp::handleSceneMouse() {
             if (shown && shown->run && inspection_.x < shown->run->hdr.width && inspection_.y < shown->run->hdr.height)
                 std::copy_n(shown->run->hdr.at(inspection_.x, inspection_.y), 4, out);
         }
+        inspectLights();
     }
     if (!io.MouseDown[0]) dragging_ = false;
     if (inside && io.MouseClicked[0] && state_.mode == DisplayMode::Split &&
@@ -227,6 +229,22 @@ void ViewerApp::handleSceneMouse() {
         userCamera();
         dolly(state_.camera, io.MouseWheel * 0.1f);
     }
+}
+
+// The lights reaching the surface under the cursor, from A's depth, camera and lights; kept
+// while the cursor stays on one pixel of one image.
+void ViewerApp::inspectLights() {
+    const Shown* a = shownA();
+    std::string key = serialKey(a) + std::to_string(inspection_.x) + "," + std::to_string(inspection_.y);
+    if (key == inspectedFor_) return;
+    inspectedFor_ = key;
+    inspection_.surface = false;
+    inspection_.lights.clear();
+    if (!a || !a->run || !a->lights) return;
+    std::optional<glm::dvec3> p = surfaceAt(a->camera, a->run->depth, inspection_.x, inspection_.y);
+    if (!p) return;
+    inspection_.surface = true;
+    inspection_.lights = lightsReaching(*a->lights, *p);
 }
 
 Camera& ViewerApp::userCamera() {

@@ -36,6 +36,8 @@ struct Shown {
     std::shared_ptr<const RunResult> run;
     double buildMs = 0;
     uint64_t serial = 0;  // unique per image: what the composite and metrics were made from
+    std::shared_ptr<const std::vector<Light>> lights; // what it was rendered with
+    Camera camera;
 };
 
 // Per-pass GPU times of the last frames of one pipeline (the graph and its median/min/max).
@@ -51,6 +53,8 @@ struct Inspection {
     bool valid = false;
     uint32_t x = 0, y = 0;
     float a[4] = {}, b[4] = {};
+    bool surface = false;         // A shows a surface there (not the sky)
+    std::vector<uint32_t> lights; // lights reaching that surface (pixel_lights.h)
 };
 
 class ViewerApp {
@@ -114,6 +118,7 @@ class ViewerApp {
     void recompose();
     void handleSceneMouse();
     void measureAgainstReference();
+    void inspectLights();
     void drawPanels(); // ui_panels.cpp
     const Shown* shownFor(const std::string& pipeline) const;
 
@@ -143,6 +148,7 @@ class ViewerApp {
     bool referenceRequested_ = false;
     bool dragging_ = false;
     Inspection inspection_;
+    std::string inspectedFor_;
     std::string error_;
     std::string exportStatus_;
     std::string exportDir_ = "view_export";

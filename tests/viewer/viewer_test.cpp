@@ -162,6 +162,18 @@ TEST(Viewer, InspectorReadsThePixelUnderTheCursor) {
     EXPECT_GT(sum, 0.0) << "a lit courtyard pixel";
 }
 
+TEST(Viewer, InspectorListsTheLightsReachingTheSurface) {
+    // Directional lights reach every surface and no sky: the list is all of them or empty.
+    ViewRun r = runScript("pixel_lights", "pipeline b " + pipeline(0) + "\nlights types directional\nlights count 3\n"
+                                          "wait\nhover 80 85\nstats floor.json\nhover 80 0\nstats sky.json\n");
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json floor = r.stats("floor.json")["inspection"], sky = r.stats("sky.json")["inspection"];
+    EXPECT_TRUE(floor["surface"].get<bool>());
+    EXPECT_EQ(floor["lights"], nlohmann::json::array({0, 1, 2}));
+    EXPECT_FALSE(sky["surface"].get<bool>());
+    EXPECT_TRUE(sky["lights"].empty());
+}
+
 TEST(Viewer, ReferenceInTheBackgroundIsMarkedStaleWhenTheViewMoves) {
     ViewRun r = runScript("reference", "wait\nstats fresh.json\ncamera orbit 20 0\nframes 1\nstats moved.json\n"
                                    "wait\nstats again.json\n", /*reference=*/true);

@@ -1,0 +1,43 @@
+#include "viewer/pixel_lights.h"
+
+#include <cmath>
+
+#include "core/render/camera.h"
+
+namespace tp::view {
+
+std::optional<glm::dvec3> surfaceAt(const Camera& camera, const ImageR32& depth, uint32_t x, uint32_t y) {
+    if (x >= depth.width || y >= depth.height) return std::nullopt;
+    const double d = depth.r[size_t(y) * depth.width + x];
+    if (!(d > 0.0)) return std::nullopt; // the far plane / sky
+    const double aspect = double(depth.width) / double(depth.height);
+    glm::dmat4 proj(reverseZPerspective(camera.yfov, float(aspect), camera.znear, camera.zfar));
+    glm::dmat4 inverse = glm::inverse(proj * viewMatrixWorld(camera));
+    // Pixel centre to NDC; clip-space Y is up, row 0 is the top row.
+    glm::dvec4 ndc((x + 0.5) / depth.width * 2.0 - 1.0, 1.0 - (y + 0.5) / depth.height * 2.0, d, 1.0);
+    glm::dvec4 world = inverse * ndc;
+    if (std::abs(world.w) < 1e-300) return std::nullopt;
+    return glm::dvec3(world) / world.w;
+}
+
+std::vector<uint32_t> lightsReaching(const std::vector<Light>& lights, const glm::dvec3& p) {
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        const Light& l = lights[i];
+        if (l.type == LightType::Directional) {
+            out.push_back(i);
+            continue;
+        }
+        glm::dvec3 toSurface = p - glm::dvec3(l.position);
+        double distance = glm::length(toSurface);
+        if (distance >= l.range) continue; // the window is exactly zero at the range
+        if (l.type == LightType::Spot && distance > 0.0) {
+            double c = glm::dot(toSurface / distance, glm::normalize(glm::dvec3(l.direction)));
+            if (c <= std::cos(double(l.outerConeAngle))) continue;
+        }
+        out.push_back(i);
+    }
+    return out;
+}
+
+} // namespace tp::view
