@@ -7,8 +7,10 @@
 #include <sstream>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "core/reference/reference_renderer.h"
+#include "core/render/camera_file.h"
 #include "core/image/tonemap.h"
 #include "core/render/renderer.h"
 #include "core/scene/gltf_loader.h"
@@ -114,6 +116,24 @@ void addSceneOptions(CLI::App& app, SceneOptions& o) {
                    "Read lights from this JSON file instead of generating them (see lights.json in any output)");
     app.add_flag("--no-scene-lights", o.dropSceneLights, "Ignore lights defined in the glTF file");
     addStrictFlag(app, o.strict);
+    addCameraOption(app, o.cameraFile);
+}
+
+CLI::Option* addCameraOption(CLI::App& app, std::string& path) {
+    return app.add_option(
+        "--camera", path,
+        "Camera bookmark FILE replacing the scene's camera (its glTF camera or the built-in one) for this run: "
+        "JSON {\"schema\":\"triptych.camera/1\",\"position\":[x,y,z],\"target\":[x,y,z],\"up\":[x,y,z],"
+        "\"yfov_degrees\":f,\"znear\":f,\"zfar\":f} (zfar 0: infinite). 'triptych info --print-camera' "
+        "writes a scene's camera in this form; render and compare write the camera they used as camera.json, and "
+        "report.json, render.json and sweep.json hold it as their \"camera\" object")
+        ->type_name("FILE");
+}
+
+Camera readCameraOption(const std::string& path) {
+    Result<Camera> camera = readCameraFile(path);
+    if (!camera) throw UsageError("--camera: " + camera.error());
+    return *camera;
 }
 
 CLI::Option* addStrictFlag(CLI::App& app, bool& strict) {
@@ -153,8 +173,11 @@ void addViewOptions(CLI::App& app, ViewOptions& o) {
         ->capture_default_str();
 }
 
-Scene loadScene(const SceneOptions& o) {
+Scene loadScene(const SceneOptions& o, CameraSource* cameraSource) {
     const LightGenOptions g = lightOptions(o);
+    std::optional<Camera> camera; // read first: a bad file fails before a large scene loads
+    if (!o.cameraFile.empty()) camera = readCameraOption(o.cameraFile);
+    CameraSource source;
     Scene scene;
     std::string name = o.scene.empty() ? "builtin:courtyard" : o.scene;
     if (name.rfind("builtin:", 0) == 0) {
@@ -166,11 +189,18 @@ Scene loadScene(const SceneOptions& o) {
         GltfLoadOptions options;
         options.warnings = &warnings;
         options.strict = o.strict;
+        options.cameraIndex = &source.gltfCamera;
         Result<Scene> s = loadGltf(name, options);
         if (!s) throw UsageError(s.error());
         for (const std::string& w : warnings) std::fprintf(stderr, "triptych: warning: %s\n", w.c_str());
         scene = std::move(*s);
+        source.kind = source.gltfCamera >= 0 ? "gltf" : "framed";
     }
+    if (camera) {
+        scene.camera = *camera;
+        source = {"file", -1, o.cameraFile};
+    }
+    if (cameraSource) *cameraSource = source;
     if (o.dropSceneLights) scene.lights.clear();
     if (!o.lightsFile.empty()) {
         Result<std::vector<Light>> lights = readLightsFile(o.lightsFile);

@@ -33,6 +33,16 @@ struct SceneOptions {
     std::string lightIntensity; // "MIN,MAX" candela; empty = from the radius
     bool dropSceneLights = false;
     bool strict = false; // glTF: refuse non-finite attributes instead of repairing them
+    std::string cameraFile; // --camera: a camera bookmark replacing the scene's camera
+};
+
+// Where the camera of a run came from, for report.json / render.json / sweep.json.
+struct CameraSource {
+    // "scene": a built-in scene's own camera; "gltf": the file's camera `gltfCamera`;
+    // "framed": a glTF with no usable camera, framed from its bounds; "file": --camera `path`.
+    std::string kind = "scene";
+    int gltfCamera = -1;
+    std::string path;
 };
 
 struct DeviceOptions {
@@ -65,8 +75,16 @@ std::string knobHelp(const KnobReaders& k, bool list);
 // sweep: the lists of sweepable knobs are left to runSweep.
 void checkKnobs(const std::map<std::string, std::string>& values, bool sweep = false);
 
-// Loads or builds the scene and sets its lights; warnings go to stderr.
-Scene loadScene(const SceneOptions& o);
+// --camera FILE (SceneOptions::cameraFile), for commands that add the scene options one by
+// one (sweep).
+CLI::Option* addCameraOption(CLI::App& app, std::string& path);
+// Reads --camera's file; UsageError naming the option and the file when it is unusable.
+// Commands call it (through loadScene, or first thing where the scene loads late) before
+// any GPU work.
+Camera readCameraOption(const std::string& path);
+// Loads or builds the scene, replaces its camera when --camera is given and sets its lights;
+// warnings go to stderr. `cameraSource`, if given, says where the camera came from.
+Scene loadScene(const SceneOptions& o, CameraSource* cameraSource = nullptr);
 std::unique_ptr<GpuContext> createContext(const DeviceOptions& o);
 // Resolution and MSAA checked against the device's limits.
 // `base` carries the pipeline knobs; the result adds resolution and MSAA.

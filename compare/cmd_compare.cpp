@@ -19,6 +19,7 @@
 #include "core/image/flip.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
+#include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
 
@@ -47,7 +48,7 @@ void writeDifference(const std::string& out, const std::string& stem, const Imag
 
 // A previous run's report must not survive next to this run's partial output.
 void removeStaleOutputs(const std::string& out, const std::vector<std::string>& names) {
-    std::vector<std::string> files = {"report.json", "report.html", "lights.json", "reference.exr", "reference.png",
+    std::vector<std::string> files = {"report.json", "report.html", "lights.json", "camera.json", "reference.exr", "reference.png",
                                       "reference_center.exr", "reference_center.png"};
     for (const std::string& n : names)
         for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr", "_flip.png", "_flip_ldr.exr",
@@ -252,12 +253,13 @@ int runCompare(const CompareOptions& o) {
     checkFlipDistance(o.flipDistance);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
+    if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // likewise
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     CompareRecord r;
     r.options = &o;
     r.ctx = ctx.get();
     r.settings = makeSettings(o.view, *ctx, o.knobs);
-    Scene scene = loadScene(o.scene);
+    Scene scene = loadScene(o.scene, &r.cameraSource);
     r.scene = &scene;
     r.features = analyzeScene(scene, r.settings.msaa);
     if (scene.source.rfind("builtin:", 0) != 0) {
@@ -280,6 +282,7 @@ int runCompare(const CompareOptions& o) {
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
     writeImages(o.out, r.reference, r.exposureEv);
     check(writeLightsFile(o.out + "/lights.json", scene.lights));
+    check(writeCameraFile(o.out + "/camera.json", scene.camera)); // ready for --camera
 
     renderPipelines(r, *ctx, gpuScene, names);
     std::vector<ImageRGBA> diffs = measure(r, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));

@@ -1,12 +1,13 @@
 // triptych info: Vulkan devices, scene statistics and features, and the plan each pipeline
 // builds for this scene (passes recorded and culled, resources with the bytes allocated,
-// what it left out).
+// what it left out). --print-camera: the scene's camera as a camera file.
 #include <cstdio>
 #include <memory>
 
 #include "compare/cli_common.h"
 #include "compare/commands.h"
 #include "core/gpu/frame_graph.h"
+#include "core/render/camera_file.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 
@@ -18,6 +19,7 @@ struct InfoOptions {
     DeviceOptions device;
     ViewOptions view;
     bool devicesOnly = false;
+    bool printCamera = false;
     RenderSettings knobs;
 };
 
@@ -87,6 +89,11 @@ void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, con
 
 int run(InfoOptions& o) {
     checkKnobs(o.knobs.knobs);
+    if (o.printCamera) { // stdout is the camera file alone, so `> view.json` saves it; no GPU needed
+        Scene scene = loadScene(o.scene);
+        std::printf("%s\n", cameraToJson(scene.camera).dump(2).c_str());
+        return 0;
+    }
     printDevices();
     if (o.devicesOnly) return 0;
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
@@ -112,6 +119,9 @@ CommandRunner addInfoCommand(CLI::App& app) {
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
     cmd->add_flag("--devices", o->devicesOnly, "List the Vulkan devices only");
+    cmd->add_flag("--print-camera", o->printCamera,
+                  "Print the scene's camera (or --camera's) as a camera file on stdout and nothing else, e.g. "
+                  "'triptych info builtin:courtyard --print-camera > view.json': a start for --camera");
     addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
 }

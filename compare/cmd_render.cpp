@@ -1,5 +1,6 @@
 // triptych render: one pipeline, one image (linear EXR + tonemapped PNG), its timings,
-// memory and statistics (render.json) and the lights used (lights.json).
+// memory and statistics (render.json), the lights used (lights.json) and the camera used
+// (camera.json, a --camera file).
 #include <cstdio>
 #include <memory>
 
@@ -10,6 +11,7 @@
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
+#include "core/render/camera_file.h"
 #include "core/render/frame_runner.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
@@ -30,13 +32,14 @@ struct RenderOptions {
     RenderSettings knobs;
 };
 
-void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& run,
+void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource& camera, const RunResult& run,
                   const GpuContext& ctx, const RenderSettings& settings, const SceneFeatures& features) {
     const std::string base = o.out + "/" + run.renderer;
     float ev = parseExposure(o.exposure, run.hdr);
     Status s = writeExr(base + ".exr", run.hdr, o.exrType == "half" ? ExrPixelType::Half : ExrPixelType::Float);
     if (s) s = writePng(base + ".png", tonemapToDisplay(run.hdr, ev));
     if (s) s = writeLightsFile(o.out + "/lights.json", scene.lights);
+    if (s) s = writeCameraFile(o.out + "/camera.json", scene.camera); // ready for --camera
     for (const DebugImage& d : run.debugImages) {
         if (!s) break;
         const std::string path = base + "_debug_" + d.name;
@@ -49,6 +52,8 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const RunResult& r
     j["settings"]["exposure_ev"] = ev;
     j["settings"]["seed"] = o.scene.seed;
     j["scene"] = sceneJson(scene, features);
+    j["camera"] = cameraToJson(scene.camera);
+    j["camera_source"] = cameraSourceJson(camera);
     j["run"] = runJson(run, ctx);
     j["nan_inf_pixels"] = countNonFinitePixels(run.hdr);
     if (s) s = writeTextFile(o.out + "/render.json", j.dump(2) + "\n");
@@ -61,9 +66,11 @@ int run(RenderOptions& o) {
     Result<const RendererEntry*> entry = findRenderer(o.pipeline);
     if (!entry) throw UsageError("--pipeline: " + entry.error());
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
+    if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // likewise
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
-    Scene scene = loadScene(o.scene);
+    CameraSource camera;
+    Scene scene = loadScene(o.scene, &camera);
     ensureDirectory(o.out);
     SceneFeatures features = analyzeScene(scene, settings.msaa);
     std::fprintf(stderr, "triptych: %s, %zu triangles, %zu lights, %ux%u, %ux MSAA on %s\n",
@@ -73,11 +80,11 @@ int run(RenderOptions& o) {
     RunOptions runOptions = progressRunOptions(o.pipeline, o.warmup, o.frames);
     Result<RunResult> result = runRenderer(*ctx, gpuScene, **entry, features, settings, runOptions);
     if (!result) throw UsageError(result.error());
-    writeOutputs(o, scene, *result, *ctx, settings, features);
+    writeOutputs(o, scene, camera, *result, *ctx, settings, features);
     for (const TimingStats& t : result->timings)
         std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)\n", t.name.c_str(),
                      t.medianMs, t.minMs, t.maxMs, t.frames, ctx->info.name.c_str());
-    std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json\n", o.out.c_str(),
+    std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n", o.out.c_str(),
                  o.pipeline.c_str());
     std::vector<std::string> messages = ctx->validationMessages();
     if (!messages.empty()) {

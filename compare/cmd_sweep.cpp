@@ -18,6 +18,7 @@
 #include "core/reference/reference_renderer.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/tonemap.h"
+#include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
 
@@ -174,7 +175,8 @@ struct View {
 };
 
 // Everything but the runs: enough to repeat the sweep and to know what it swept.
-nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuContext& ctx) {
+nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const CameraSource& camera,
+                           const GpuContext& ctx) {
     nlohmann::json j;
     j["schema"] = "triptych.sweep/2";
     j["command_line"] = o.commandLine;
@@ -187,6 +189,9 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const GpuC
     j["scene"]["files_hash_fnv1a64"] = files.hash.empty() ? nlohmann::json(nullptr) : nlohmann::json(files.hash);
     j["scene"]["files_hashed"] = files.files;
     j["scene"]["content_hash_fnv1a64"] = hashSceneContent(scene);
+    j["scene"]["camera_hash_fnv1a64"] = hashCamera(scene.camera);
+    j["camera"] = cameraToJson(scene.camera); // a camera file, as in report.json
+    j["camera_source"] = cameraSourceJson(camera);
     j["device"] = deviceJson(ctx);
     j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"light_types", o.scene.lightTypes}};
     for (const KnobReaders& k : allKnobs()) j["axes"][k.knob.key()] = k.knob.valueIn(o.knobs);
@@ -215,6 +220,7 @@ int runSweep(const SweepOptions& o) {
     checkKnobLists(o);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     if (o.referenceFrames > 0) names.insert(names.begin(), kReferenceRenderer);
+    if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // refuse before any GPU work
     std::vector<int> lightCounts;
     for (const std::string& s : splitList(o.lights, "--lights")) lightCounts.push_back(toInt(s, "--lights"));
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
@@ -236,8 +242,9 @@ int runSweep(const SweepOptions& o) {
     for (int lights : lightCounts) {
         SceneOptions so = o.scene;
         so.lightCount = lights;
-        Scene scene = loadScene(so);
-        if (header.is_null()) header = sweepHeader(o, scene, *ctx);
+        CameraSource camera;
+        Scene scene = loadScene(so, &camera);
+        if (header.is_null()) header = sweepHeader(o, scene, camera, *ctx);
         const std::string lightsHash = hashLights(scene.lights);
         SceneGpu gpuScene(*ctx, scene);
         for (const View& view : views) {

@@ -1,5 +1,5 @@
-// report.html from report.json: what a person reads first. Everything is inline so the page
-// opens offline from any directory; numbers come from report.json only, so the page and the
+// report.html from report.json: what a person reads first. Everything is inline (images as
+// data URIs, CSS, SVG, the flip/loupe script) so the page opens offline from any directory; numbers come from report.json only, so the page and the
 // JSON cannot disagree.
 #include "compare/report_html.h"
 
@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "compare/report_viewer_js.h"
 #include "compare/svg_plot.h"
 
 namespace tp::cli {
@@ -66,7 +67,9 @@ std::string header(const json& r) {
          " triangles; " + std::to_string(s["warmup"].get<int>()) + " warm-up + " +
          std::to_string(s["frames"].get<int>()) + " timed frames per pipeline; exposure " +
          formatNumber(s["exposure_ev"].get<double>()) + " EV for every PNG.<br>Device: <b>" +
-         esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) + ")<br>Command: <code>" +
+         esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) + ")<br>Camera: " +
+         (r.contains("camera_source") ? esc(r["camera_source"]["description"]) : std::string("&ndash;")) +
+         " (as a <code>--camera</code> file: camera.json)<br>Command: <code>" +
          esc(r["command"]) + "</code></p>\n";
     if (r["device"].contains("note")) h += "<div class=\"note\">" + esc(r["device"]["note"]) + ".</div>\n";
     for (const json& p : r["pipelines"])
@@ -217,27 +220,33 @@ std::string errorPlot(const json& r) {
            flipScatter(r) + note;
 }
 
-Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption) {
+// `attributes`: more of the <img> tag, e.g. the hooks of the flip script (report_viewer_js.h).
+Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption,
+                           const std::string& attributes = "") {
     Result<std::string> bytes = readBinary(outDir + "/" + file);
     if (!bytes) return Error{bytes.error()};
-    return "<figure><img alt=\"" + escapeXml(file) + "\" src=\"data:image/png;base64," + base64(*bytes) +
-           "\"><figcaption>" + caption + "</figcaption></figure>\n";
+    return "<figure><img alt=\"" + escapeXml(file) + "\"" + attributes + " src=\"data:image/png;base64," +
+           base64(*bytes) + "\"><figcaption>" + caption + "</figcaption></figure>\n";
 }
 
 Result<std::string> imagesSection(const json& r, const std::string& outDir) {
     std::string h = "<h2>Images and differences</h2>\n<p class=\"meta\">Left: tonemapped image. Middle: heat map of "
                     "|pipeline &minus; reference| (max over RGB, linear), one scale for the whole report: 0 to " +
                     formatNumber(r["difference_scale"]["value"].get<double>()) + " (" +
-                    esc(r["difference_scale"]["rule"]) + "). Magenta: NaN/Inf. Right: the HDR-FLIP error map (0 to 1, magma as in FLIP; see FLIP below).</p>\n"
+                    esc(r["difference_scale"]["rule"]) + "). Magenta: NaN/Inf. Right: the HDR-FLIP error map (0 to 1, magma as in FLIP; see FLIP below). "
+                    "<b>Flip</b>: click a pipeline's image, or press F over it, to swap it in place with the reference "
+                    "(F elsewhere flips them all). <b>Loupe</b>: hover any image for its pixels, magnified.</p>\n"
                     "<div class=\"grid\">\n";
-    Result<std::string> ref = figure(outDir, "reference.png", "reference");
+    Result<std::string> ref = figure(outDir, "reference.png", "reference", " id=\"img-reference\"");
     if (!ref) return ref;
     h += *ref + "<figure><figcaption>The reference: every light at every sample.</figcaption></figure><figure></figure>\n";
     for (const json& p : r["pipelines"]) {
         if (!ok(p)) continue;
         const std::string name = p["name"];
         const json& e = p["error_vs_reference"];
-        Result<std::string> img = figure(outDir, name + ".png", escapeXml(name));
+        Result<std::string> img = figure(outDir, name + ".png",
+                                         escapeXml(name) + " <span class=\"flip-state\"></span>",
+                                         " class=\"flip\" data-pipeline=\"" + escapeXml(name) + "\"");
         Result<std::string> diff = figure(outDir, name + "_diff.png",
                                           escapeXml(name) + " &minus; reference: RMSE " + formatNumber(e["hdr"]["rmse"].get<double>()) +
                                               ", max " + formatNumber(e["hdr"]["max_abs"].get<double>()) + " (HDR)");
@@ -416,13 +425,15 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych compare</title>\n<style>";
     h += kBaseStyle;
     h += kStyle;
+    h += reportViewerStyle();
     h += "</style></head><body>\n" + header(r) + summaryTable(r) + (hasCenterReference(r) ? twoReferences(r) : "") + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
     if (!images) return images;
     Result<std::string> pairs = pairwiseSection(r, outDir);
     if (!pairs) return pairs;
     h += *images + flipSection(r) + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
-    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n</body></html>\n";
+    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n" +
+           reportViewerScript() + "</body></html>\n";
 }
 
 const char* reportPageStyle() { return kBaseStyle; }

@@ -1,6 +1,8 @@
 #pragma once
 // report.html: one self-contained page made from report.json and the PNGs beside it
-// (embedded as base64 data URIs; inline CSS and SVG; no script, no network).
+// (embedded as base64 data URIs; inline CSS, SVG and script; no network). The script only
+// adds flip and a magnifier to the images (compare/report_viewer_js.h); without it the page
+// reads the same.
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "compare/run_json.h"
+#include "core/render/camera_file.h"
 
 namespace tp::cli {
 namespace {
@@ -89,6 +90,10 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["scene"]["files_missing"] = r.sceneFiles.missing;
     j["scene"]["content_hash_fnv1a64"] = r.contentHash;
     j["scene"]["lights_hash_fnv1a64"] = r.lightsHash;
+    j["scene"]["camera_hash_fnv1a64"] = hashCamera(r.scene->camera);
+    j["camera"] = cameraToJson(r.scene->camera); // a camera file: `jq .camera report.json` is a --camera FILE
+    j["camera_source"] = cameraSourceJson(r.cameraSource);
+    j["camera_file"] = "camera.json";
     j["scene"]["lights_file"] = "lights.json";
     j["settings"] = settingsJson(r.settings);
     j["settings"]["frames"] = o.frames;

@@ -47,6 +47,7 @@ struct CompareRecord {
     FileHashes sceneFiles;        // the file and every file it references; empty for built-ins
     std::string contentHash;      // the loaded geometry, materials, textures, camera (any scene)
     std::string lightsHash;       // the lights rendered (file lights and generated ones)
+    CameraSource cameraSource;    // where scene->camera came from (--camera, glTF, built-in)
     float exposureEv = 0;
     float diffScale = 0;          // shared heat-map scale
     float hdrPsnrPeak = 1;        // brightest finite reference channel

@@ -67,6 +67,23 @@ nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f) {
               {"directional_lights", f.directionalLights}}}};
 }
 
+nlohmann::json cameraSourceJson(const CameraSource& s) {
+    nlohmann::json j = {{"kind", s.kind}};
+    if (s.kind == "gltf") {
+        j["gltf_camera"] = s.gltfCamera;
+        j["description"] = "the glTF file's camera " + std::to_string(s.gltfCamera) + " (its first perspective camera "
+                           "on a drawn node)";
+    } else if (s.kind == "file") {
+        j["path"] = s.path;
+        j["description"] = "--camera " + s.path;
+    } else if (s.kind == "framed") {
+        j["description"] = "framed from the scene's bounds: the glTF file has no perspective camera on a drawn node";
+    } else {
+        j["description"] = "the built-in scene's camera";
+    }
+    return j;
+}
+
 nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     nlohmann::json j;
     j["pipeline"] = run.renderer;

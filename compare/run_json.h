@@ -3,6 +3,7 @@
 // `render` (render.json) and the report writers.
 #include <nlohmann/json.hpp>
 
+#include "compare/cli_common.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
 #include "core/render/frame_runner.h"
@@ -14,6 +15,9 @@ namespace tp::cli {
 nlohmann::json deviceJson(const GpuContext& ctx);
 nlohmann::json settingsJson(const RenderSettings& s);
 nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f);
+// Where a run's camera came from: {kind, gltf_camera | path, description}. The camera itself
+// is written by cameraToJson (core/render/camera_file.h), so that object is a camera file.
+nlohmann::json cameraSourceJson(const CameraSource& source);
 // Timings carry the device's name beside every figure set.
 // Memory: {resources, total_bytes, bytes_per_pixel} (per output pixel).
 nlohmann::json runJson(const RunResult& run, const GpuContext& ctx);

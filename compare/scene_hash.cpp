@@ -91,6 +91,12 @@ std::vector<fs::path> referencedFiles(const std::string& json, const fs::path& f
     return files;
 }
 
+void hashCameraInto(Fnv1a64& h, const Camera& c) {
+    for (float f : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
+                    c.up.z, c.yfov, c.znear, c.zfar})
+        h.f32(f);
+}
+
 } // namespace
 
 FileHashes hashSceneFiles(const std::string& path) {
@@ -150,10 +156,14 @@ std::string hashSceneContent(const Scene& scene) {
         h.u64(t.srgb);
         h.array(t.rgba8);
     }
-    const Camera& c = scene.camera;
-    for (float f : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
-                    c.up.z, c.yfov, c.znear, c.zfar, scene.ambient.x, scene.ambient.y, scene.ambient.z})
-        h.f32(f);
+    hashCameraInto(h, scene.camera);
+    for (float f : {scene.ambient.x, scene.ambient.y, scene.ambient.z}) h.f32(f);
+    return h.hex();
+}
+
+std::string hashCamera(const Camera& camera) {
+    Fnv1a64 h;
+    hashCameraInto(h, camera);
     return h.hex();
 }
 

@@ -21,8 +21,13 @@ struct FileHashes {
 FileHashes hashSceneFiles(const std::string& path);
 
 // Geometry (every mesh attribute and index), materials, textures (texels), camera and ambient,
-// in a fixed field order; lights are not included (see hashLights).
+// in a fixed field order; lights are not included (see hashLights). The camera is the one the
+// run used: a --camera file's when given, so a changed view changes this hash.
 std::string hashSceneContent(const Scene& scene);
+// The camera alone, every field bit for bit: tells "same scene, other view" from "other scene"
+// (the file and content hashes cannot: the file hash never sees --camera, the content hash
+// sees both).
+std::string hashCamera(const Camera& camera);
 std::string hashLights(const std::vector<Light>& lights);
 
 } // namespace tp::cli

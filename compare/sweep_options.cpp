@@ -45,6 +45,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
                    "MIN,MAX intensity in candela (default: derived from the radius)");
     cmd.add_flag("--no-scene-lights", o.scene.dropSceneLights, "Ignore lights defined in the glTF file");
     addStrictFlag(cmd, o.scene.strict);
+    addCameraOption(cmd, o.scene.cameraFile);
     cmd.add_option("--out", o.out,
                    "Output directory (created if missing) for sweep.csv, sweep.json and sweep.html")
         ->capture_default_str();

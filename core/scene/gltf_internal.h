@@ -107,7 +107,8 @@ Status collectInstances(const tinygltf::Model& model, std::vector<Instance>& out
 // Adds the node's KHR_lights_punctual light, if any, placed by its world matrix.
 void addLight(const tinygltf::Model& model, const Instance& inst, Scene& scene, const WarnFn& warn);
 // The file's first perspective camera on a drawn node, else one framing scene.bounds.
-void placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
+// Returns that camera's index into the file's "cameras", or -1 when it framed the bounds.
+int placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
                  Scene& scene);
 
 // --- gltf_accessors.cpp ------------------------------------------------------------------

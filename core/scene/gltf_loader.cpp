@@ -189,7 +189,8 @@ Result<Scene> parse(std::vector<unsigned char>& bytes, const std::string& name,
     if (scene.triangleCount() == 0)
         return Error{model.meshes.empty() ? "nothing to draw: the file has no meshes"
                                           : "nothing to draw: the scene has no triangles"};
-    placeCamera(model, instances, scene);
+    const int camera = placeCamera(model, instances, scene);
+    if (options.cameraIndex) *options.cameraIndex = camera;
     return scene;
 }
 

@@ -19,6 +19,10 @@ struct GltfLoadOptions {
     // Refuse, instead of repairing, NaN/infinite normals, tangents, uvs and colours
     // (Scene::repairs lists what was repaired; zero-length normals and tangents always are).
     bool strict = false;
+    // Set to the index (into the file's "cameras") of the camera Scene::camera was taken
+    // from, or -1 when the file has no usable one and the camera frames the bounds: reports
+    // say where their view came from.
+    int* cameraIndex = nullptr;
 };
 
 Result<Scene> loadGltf(const std::string& path, const GltfLoadOptions& options = {});

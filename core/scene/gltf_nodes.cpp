@@ -161,7 +161,7 @@ void addLight(const tinygltf::Model& model, const Instance& inst, Scene& scene,
 }
 
 // The file's first perspective camera on a drawn node, else one framing the bounds.
-void placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
+int placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
                  Scene& scene) {
     Camera& cam = scene.camera;
     const glm::vec3 center = scene.bounds.center();
@@ -184,7 +184,7 @@ void placeCamera(const tinygltf::Model& model, const std::vector<Instance>& inst
         cam.znear = p.znear > 0.0 ? float(p.znear)
                                   : std::min(std::max(1e-3f, 0.005f * radius), 0.1f * radius);
         cam.zfar = p.zfar > p.znear ? float(p.zfar) : 0.0f;
-        return;
+        return c;
     }
     cam.yfov = 0.8f;
     const glm::vec3 direction = glm::normalize(glm::vec3(0.3f, 0.35f, 1.0f));
@@ -194,6 +194,7 @@ void placeCamera(const tinygltf::Model& model, const std::vector<Instance>& inst
     // 1 mm at least, but never so far that a tiny scene (radius under ~7 mm) is clipped.
     cam.znear = std::min(std::max(1e-3f, 0.005f * radius), 0.1f * radius);
     cam.zfar = 0.0f;
+    return -1;
 }
 
 } // namespace tp::gltf

@@ -7,7 +7,10 @@
 #include <fstream>
 #include <unistd.h>
 
+#include <cmath>
+
 #include "compare/scene_hash.h"
+#include "core/render/camera_file.h"
 #include "core/scene/procedural.h"
 
 using namespace tp;
@@ -117,4 +120,29 @@ TEST(SceneHash, GlbHashesItsJsonReferences) {
     ASSERT_EQ(h.files.size(), 2u);
     EXPECT_EQ(fs::path(h.files[1]).filename(), "albedo.png");
     fs::remove_all(dir);
+}
+
+// The camera's own hash (report.json camera_hash_fnv1a64): every field counts, a camera file's
+// round trip keeps it, and the content hash follows the camera a run used (--camera).
+TEST(SceneHash, CameraHashSeesEveryFieldAndSurvivesACameraFile) {
+    Scene scene = makeBuiltinScene("courtyard-small").value();
+    const Camera c = scene.camera;
+    const std::string hash = cli::hashCamera(c);
+    EXPECT_EQ(hash.size(), 16u);
+    for (int field = 0; field < 12; ++field) {
+        Camera d = c;
+        float* values[] = {&d.position.x, &d.position.y, &d.position.z, &d.target.x, &d.target.y, &d.target.z,
+                           &d.up.x,       &d.up.y,       &d.up.z,       &d.yfov,     &d.znear,    &d.zfar};
+        *values[field] = std::nextafter(*values[field], 1e9f); // one ulp
+        EXPECT_NE(cli::hashCamera(d), hash) << "field " << field;
+        Scene moved = scene;
+        moved.camera = d;
+        EXPECT_NE(cli::hashSceneContent(moved), cli::hashSceneContent(scene)) << "field " << field;
+    }
+    const std::string path = (fs::temp_directory_path() / ("triptych_camera_hash_" + std::to_string(getpid()))).string();
+    ASSERT_TRUE(writeCameraFile(path, c).ok());
+    Result<Camera> back = readCameraFile(path);
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_EQ(cli::hashCamera(*back), hash);
+    fs::remove(path);
 }

@@ -21,6 +21,7 @@
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
+#include "core/render/camera_file.h"
 #include "core/render/renderer.h"
 
 namespace tp::test {
@@ -327,6 +328,66 @@ TEST(Compare, SweepWritesOneRowPerRun) {
     const std::string html = readText(out + "/sweep.html");
     EXPECT_EQ(count(html, "http"), 0u);
     EXPECT_EQ(count(html, "<svg"), 4u); // time, memory, error (RMSE and HDR-FLIP) plots
+}
+
+// --camera FILE: the view changes (another image, another camera and content hash), report.json
+// and sweep.json record the camera and its source, and the report's "camera" object (or
+// camera.json) is itself a camera file that gives back the same images.
+TEST(Compare, CameraFileChangesTheViewAndRoundTrips) {
+    const std::string pipeline = pipelinesButReference().front();
+    const std::vector<std::string> common = {"builtin:courtyard-small", "--res", "64x36", "--lights", "8",
+                                             "--frames", "1", "--warmup", "0", "--pipelines", pipeline};
+    auto compareInto = [&](const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), extra.begin(), extra.end());
+        args.insert(args.end(), {"--validate", "--out", out});
+        EXPECT_EQ(runCli(args), 0) << out;
+        return json::parse(readText(out + "/report.json"));
+    };
+    const std::string base = freshDir("camera_default"), moved = freshDir("camera_file"),
+                      again = freshDir("camera_again");
+    json a = compareInto(base, {});
+    EXPECT_EQ(a["camera_source"]["kind"], "scene");
+    Result<Camera> defaultCamera = cameraFromJson(a["camera"], "report.json camera");
+    ASSERT_TRUE(defaultCamera.ok()) << defaultCamera.error();
+    Result<Camera> written = readCameraFile(base + "/camera.json");
+    ASSERT_TRUE(written.ok()) << written.error();
+    EXPECT_EQ(cameraToJson(*written), a["camera"]);
+
+    Camera view = *defaultCamera; // turned and moved: another view of the same scene
+    view.position += glm::vec3(1.5f, 0.5f, -3.0f);
+    view.yfov *= 0.8f;
+    const std::string file = fs::path(moved).parent_path().string() + "/triptych_view_" + std::to_string(getpid()) + ".json";
+    ASSERT_TRUE(writeCameraFile(file, view).ok());
+    json b = compareInto(moved, {"--camera", file});
+    EXPECT_EQ(b["camera"], cameraToJson(view));
+    EXPECT_EQ(b["camera_source"]["kind"], "file");
+    EXPECT_EQ(b["camera_source"]["path"], file);
+    EXPECT_NE(b["scene"]["camera_hash_fnv1a64"], a["scene"]["camera_hash_fnv1a64"]);
+    EXPECT_NE(b["scene"]["content_hash_fnv1a64"], a["scene"]["content_hash_fnv1a64"]);
+    EXPECT_EQ(b["scene"]["lights_hash_fnv1a64"], a["scene"]["lights_hash_fnv1a64"]); // only the view changed
+    for (const std::string& image : {std::string("reference.exr"), pipeline + ".exr"})
+        EXPECT_FALSE(readText(base + "/" + image) == readText(moved + "/" + image)) << image << ": same image";
+
+    // The report's camera object as the next run's --camera: the same view, bit for bit.
+    const std::string fromReport = file + ".from_report.json";
+    std::ofstream(fromReport) << b["camera"].dump(2);
+    json c = compareInto(again, {"--camera", fromReport});
+    EXPECT_EQ(c["scene"]["camera_hash_fnv1a64"], b["scene"]["camera_hash_fnv1a64"]);
+    EXPECT_EQ(c["scene"]["content_hash_fnv1a64"], b["scene"]["content_hash_fnv1a64"]);
+    for (const std::string& image : {std::string("reference.exr"), pipeline + ".exr"})
+        EXPECT_TRUE(readText(moved + "/" + image) == readText(again + "/" + image)) << image << " differs";
+
+    const std::string sweep = freshDir("camera_sweep");
+    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--res", "64x36", "--lights", "4", "--frames", "1", "--warmup",
+                           "0", "--reference-frames", "0", "--pipelines", pipeline, "--camera", file, "--out", sweep}),
+              0);
+    json s = json::parse(readText(sweep + "/sweep.json"));
+    EXPECT_EQ(s["camera"], cameraToJson(view));
+    EXPECT_EQ(s["camera_source"]["kind"], "file");
+    EXPECT_EQ(s["scene"]["camera_hash_fnv1a64"], b["scene"]["camera_hash_fnv1a64"]);
+    if (!HasFailure())
+        for (const std::string& p : {base, moved, again, sweep, file, fromReport}) fs::remove_all(p);
 }
 
 // Under MSAA: the second reference (--reference-msaa center), each pipeline's error against
