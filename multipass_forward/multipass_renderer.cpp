@@ -109,6 +109,9 @@ RendererStats MultipassForwardRenderer::stats() const {
         s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend) ? "no blended draw on screen"
                                                                                : "no blended materials"});
     if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+    if (!plan_.blended.empty() && settings_.text("blended-lights") == "additive")
+        s.leftOut.push_back({"blended_indices_reversed and transmittance resets",
+                             "--blended-lights additive (the textbook pass: not exact where a blended mesh overlaps itself)"});
     if (plan_.masked.empty()) s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
     return s;
 }
