@@ -10,7 +10,9 @@
 // layers drawn after it exactly as in the reference's single shade-and-blend. Simply adding
 // alpha * light instead (the textbook multipass) overcounts by a_near * a_far * L_far per
 // self-overlap (docs/multipass_forward.md: 48.9 dB instead of 157 dB on the courtyard);
-// --blended-lights additive keeps that textbook pass, to measure the difference.
+// --blended-lights additive keeps that textbook pass, to measure the difference;
+// --blended-lights one-pass draws only the composite, with every light in it
+// (one_pass.frag), as engines light transparent objects.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/render/renderer.h"
@@ -47,16 +49,18 @@ VkPipelineColorBlendAttachmentState alphaOnly() {
 } // namespace
 
 BlendedPass::BlendedPass(const PassEnv& env)
-    : env_(env), additive_(env.settings.text("blended-lights") == "additive") {
+    : env_(env), additive_(env.settings.text("blended-lights") == "additive"),
+      onePass_(env.settings.text("blended-lights") == "one-pass") {
     if (env.plan.blended.empty()) return;
     // Depth GREATER against the opaque depth, no writes: as the reference draws them.
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Blend);
     d.depthWrite = false;
     GraphicsPipelineDesc base = d;
     for (SpecConstant c : directionalSpec(env.plan)) base.specConstants.push_back(c);
-    base.fragmentShader = fragmentShader(env, "base");
+    base.fragmentShader = fragmentShader(env, onePass_ ? "one_pass" : "base");
     base.blend = BlendMode::Alpha;
     base_ = createGraphicsPipeline(env.ctx, base);
+    if (onePass_) return; // the composite is everything (the plan gave blended draws no lights)
     d.fragmentShader = fragmentShader(env, "light");
     if (additive_) { // --blended-lights additive: alpha * light added, no transmittance
         d.blend = BlendMode::Additive;

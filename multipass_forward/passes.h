@@ -120,6 +120,7 @@ class BlendedPass {
 
     const PassEnv env_;
     const bool additive_; // --blended-lights additive: the textbook pass, no reversed order
+    const bool onePass_;  // --blended-lights one-pass: every light in the composite, no light draws
     VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
     Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
     std::vector<uint32_t> reversedFirst_; // per plan.blended entry: its first index there
