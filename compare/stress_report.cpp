@@ -47,7 +47,13 @@ json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool r
     if (reference) return j;
     j["bound"] = boundJson(p.bound, ev);
     j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)}, {"tonemapped", metricsJson(p.display)}};
+    j["max_tonemapped"] = p.rawMaxTonemapped;
     j["checked_max_tonemapped"] = p.checkedMaxTonemapped;
+    if (!p.bound.perPixel.name.empty())
+        j["per_pixel_allowance"] = {{"name", p.bound.perPixel.name},
+                                    {"why", p.bound.perPixel.why},
+                                    {"widened_pixels", p.allowancePixels},
+                                    {"unchecked_pixels", p.unboundedPixels}};
     j["lights_dropped"] = p.lightsDropped;
     j["fp16_storage"] = p.fp16Storage;
     j["beyond_half_float"] = {{"reference_channels", p.overflowChannels},
@@ -97,6 +103,8 @@ json stressJson(const StressOptions& o, const GpuContext& ctx, const std::vector
     j["command"] = quoted(o.commandLine);
     j["status"] = passed == results.size() ? "pass" : "fail";
     j["device"] = deviceJson(ctx);
+    // Deferred's per-pixel allowance depends on it (docs/stress.md, "Position from depth next to a light").
+    j["device"]["sub_pixel_precision_bits"] = ctx.properties.limits.subPixelPrecisionBits;
     j["tonemap_slopes"] = {{"relative_K", tonemapRelativeSlope()},
                            {"absolute_S0", tonemapAbsoluteSlope()},
                            {"rule", "tonemapped bound = K * relative + S0 * 2^ev * absolute"}};

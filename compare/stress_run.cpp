@@ -81,6 +81,7 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std
     r.settings.width = c.width;
     r.settings.height = c.height;
     r.settings.msaa = c.msaa;
+    r.subPixelBits = ctx.properties.limits.subPixelPrecisionBits;
     const Scene scene = c.build();
     r.lights = scene.lights.size();
     r.triangles = scene.triangleCount();

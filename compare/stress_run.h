@@ -46,7 +46,10 @@ struct StressOutcome {
     bool fp16Storage = false;     // its "hdr" target is RGBA16F (from the memory ledger)
     uint64_t depthMismatch = 0;   // pixels whose depth differs from the reference's
     double lightsDropped = 0;
-    double checkedMaxTonemapped = 0; // |T(p) - T(r)| max outside the fp16-overflow channels
+    double rawMaxTonemapped = 0;     // |T(p) - T(r)| max outside the fp16-overflow channels
+    double checkedMaxTonemapped = 0; // the same less each pixel's allowance (ErrorBound::perPixel)
+    uint64_t allowancePixels = 0;    // pixels the allowance widened
+    uint64_t unboundedPixels = 0;    // pixels the allowance leaves unchecked (+Inf)
     ErrorBound bound;
     std::vector<StressCheck> checks;
     bool pass = false;
@@ -60,6 +63,7 @@ struct StressCaseResult {
     RenderSettings settings;
     float exposureEv = 0;
     float diffScale = 0;
+    uint32_t subPixelBits = 8; // the device's VkPhysicalDeviceLimits::subPixelPrecisionBits
     double seconds = 0;
     StressOutcome reference;
     std::vector<StressOutcome> pipelines;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/render/msaa_knob.h"
+#include "deferred/position_allowance.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 
@@ -54,6 +55,12 @@ void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     b.terms.push_back({"position from depth", 2.5e-4, 2.5e-8,
                        "positions reconstructed from D32 depth with the inverse view-projection, fp32 sums in "
                        "tile order: docs/deferred.md's per-pixel bound (2.5e-4 of |r| + 1e-4)"});
+    if (in.referenceDepth)
+        b.perPixel = {"position from depth next to lights",
+                      "the reconstructed point is up to sqrt(2) * 2^-(" + std::to_string(in.subPixelBits) +
+                          " + 1) pixel widths off the shaded surface (vertex snapping before the depth plane); "
+                          "per pixel, that times a bound on the gradient of every light term reaching it",
+                      positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits)};
     if (in.settings.text("gbuffer") == "compact") addCompactGBuffer(b, in);
     // Non-edge pixels shaded once at the centre under --msaa-shading pixel (the Lauritzen
     // path); nothing at 1x or at the sample rate, where every sample is lit at itself.

@@ -9,7 +9,10 @@
 // draw that overlaps itself (cloth folds, several panels in one mesh) is attenuated by the
 // layers drawn after it exactly as in the reference's single shade-and-blend. Simply adding
 // alpha * light instead (the textbook multipass) overcounts by a_near * a_far * L_far per
-// self-overlap (docs/multipass_forward.md: 48.9 dB instead of 157 dB on the courtyard).
+// self-overlap (docs/multipass_forward.md: 48.9 dB instead of 157 dB on the courtyard);
+// --blended-lights additive keeps that textbook pass, to measure the difference;
+// --blended-lights one-pass draws only the composite, with every light in it
+// (one_pass.frag), as engines light transparent objects.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/render/renderer.h"
@@ -45,18 +48,26 @@ VkPipelineColorBlendAttachmentState alphaOnly() {
 
 } // namespace
 
-BlendedPass::BlendedPass(const PassEnv& env) : env_(env) {
+BlendedPass::BlendedPass(const PassEnv& env)
+    : env_(env), additive_(env.settings.text("blended-lights") == "additive"),
+      onePass_(env.settings.text("blended-lights") == "one-pass") {
     if (env.plan.blended.empty()) return;
     // Depth GREATER against the opaque depth, no writes: as the reference draws them.
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Blend);
     d.depthWrite = false;
     GraphicsPipelineDesc base = d;
     for (SpecConstant c : directionalSpec(env.plan)) base.specConstants.push_back(c);
-    base.fragmentShader = fragmentShader(env, "base");
+    base.fragmentShader = fragmentShader(env, onePass_ ? "one_pass" : "base");
     base.blend = BlendMode::Alpha;
     base_ = createGraphicsPipeline(env.ctx, base);
-    d.blend = BlendMode::Custom;
+    if (onePass_) return; // the composite is everything (the plan gave blended draws no lights)
     d.fragmentShader = fragmentShader(env, "light");
+    if (additive_) { // --blended-lights additive: alpha * light added, no transmittance
+        d.blend = BlendMode::Additive;
+        light_ = createGraphicsPipeline(env.ctx, d);
+        return;
+    }
+    d.blend = BlendMode::Custom;
     d.customBlend = underBlend();
     light_ = createGraphicsPipeline(env.ctx, d);
     d.fragmentShader = "mp_alpha_reset_frag";
@@ -102,6 +113,35 @@ void BlendedPass::createReversedIndices() {
                                              "lit blended meshes' triangles in reverse order (light passes)"});
 }
 
+// The exact light passes: each light's triangles of the draw in reverse order, composited
+// under the layers already passed (transmittance in the target's alpha), then T reset to 1.
+void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd, size_t index) {
+    if (bd.lights.empty()) return;
+    vkCmdBindIndexBuffer(pc.cmd, reversedIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+    DrawItem reversed = *bd.draw;
+    reversed.firstIndex = reversedFirst_[index];
+    for (const auto& [light, scissor] : bd.lights) {
+        setScissor(pc.cmd, scissor);
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
+        recordDraw(pc.cmd, env_.layout, reversed, light);
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, reset_);
+        recordDraw(pc.cmd, env_.layout, reversed);
+    }
+}
+
+// The textbook blended light pass (--blended-lights additive): each light adds alpha * light
+// of every layer, in the scene's triangle order, so a far layer's share lands after the near
+// layer of the same draw was blended over it and escapes its (1 - alpha). Kept to measure
+// what the exact passes buy (docs/multipass_forward.md).
+void BlendedPass::recordAdditiveLights(PassContext& pc, const BlendedDraw& bd) {
+    if (bd.lights.empty()) return;
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
+    for (const auto& [light, scissor] : bd.lights) {
+        setScissor(pc.cmd, scissor);
+        recordDraw(pc.cmd, env_.layout, *bd.draw, light);
+    }
+}
+
 void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
     beginShading(pc, t, resolve, false);
     const SceneGpu& scene = env_.scene;
@@ -114,18 +154,12 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
         scene.bindIndexBuffer(pc.cmd);
         setScissor(pc.cmd, full);
         recordDraw(pc.cmd, env_.layout, *bd.draw);
-        if (!bd.lights.empty())
-            vkCmdBindIndexBuffer(pc.cmd, reversedIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        DrawItem reversed = *bd.draw;
-        reversed.firstIndex = reversedFirst_[b];
-        for (const auto& [light, scissor] : bd.lights) {
-            setScissor(pc.cmd, scissor);
-            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
-            recordDraw(pc.cmd, env_.layout, reversed, light);
-            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, reset_);
-            recordDraw(pc.cmd, env_.layout, reversed);
-        }
-        draws_ += 1 + 2 * uint32_t(bd.lights.size());
+        if (additive_)
+            recordAdditiveLights(pc, bd);
+        else
+            recordUnderLights(pc, bd, b);
+        // A composite, then per light one draw (additive) or a light draw and a reset (under).
+        draws_ += 1 + (additive_ ? 1u : 2u) * uint32_t(bd.lights.size());
         lightDraws_ += uint32_t(bd.lights.size());
     }
     endRendering(pc);

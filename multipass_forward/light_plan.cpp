@@ -128,7 +128,7 @@ bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleD
 
 } // namespace
 
-LightPlan planLights(const SceneGpu& scene) {
+LightPlan planLights(const SceneGpu& scene, bool lightBlended) {
     LightPlan plan;
     const gpu::FrameUniforms& f = scene.shadingFrame();
     auto opaque = visibleDraws(scene, DrawFilter::Opaque);
@@ -155,7 +155,7 @@ LightPlan planLights(const SceneGpu& scene) {
                 for (const VisibleDraw& v : *list)
                     if (touches(l, batch.scissor, v, boxTest)) batch.draws.push_back(v.draw);
             meshes = uint32_t(batch.draws.size());
-            for (size_t b = 0; b < blended.size(); ++b)
+            for (size_t b = 0; lightBlended && b < blended.size(); ++b)
                 if (touches(l, batch.scissor, blended[b], boxTest)) {
                     plan.blended[b].lights.push_back({i, batch.scissor});
                     ++meshes;

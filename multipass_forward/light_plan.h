@@ -56,6 +56,8 @@ struct LightPlan {
     uint64_t meshesPerLightSum = 0; // over every local light (skipped ones count 0)
 };
 
-LightPlan planLights(const SceneGpu& scene);
+// `lightBlended` false: blended draws get no light passes (they are lit in one pass, so no
+// light counts them among its meshes).
+LightPlan planLights(const SceneGpu& scene, bool lightBlended = true);
 
 } // namespace tp::mp

@@ -18,7 +18,7 @@ class MultipassForwardRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), settings_(info.settings),
           accumFormat_(info.settings.text("accum") == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                     : VK_FORMAT_R32G32B32A32_SFLOAT),
-          plan_(planLights(info.scene)) {}
+          plan_(planLights(info.scene, info.settings.text("blended-lights") != "one-pass")) {}
 
     ~MultipassForwardRenderer() override {
         prepass_.reset();
@@ -109,6 +109,12 @@ RendererStats MultipassForwardRenderer::stats() const {
         s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend) ? "no blended draw on screen"
                                                                                : "no blended materials"});
     if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+    const std::string blendedLights = settings_.text("blended-lights");
+    if (!plan_.blended.empty() && blendedLights == "additive")
+        s.leftOut.push_back({"blended_indices_reversed and transmittance resets",
+                             "--blended-lights additive (the textbook pass: not exact where a blended mesh overlaps itself)"});
+    if (!plan_.blended.empty() && blendedLights == "one-pass")
+        s.leftOut.push_back({"blended light passes", "--blended-lights one-pass: every light in the blended composite"});
     if (plan_.masked.empty()) s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
     return s;
 }

@@ -111,12 +111,16 @@ class BlendedPass {
     ~BlendedPass();
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
-    uint32_t lightDraws() const { return lightDraws_; } // of draws(); each has a reset too
+    uint32_t lightDraws() const { return lightDraws_; } // of draws(); under: each has a reset too
 
   private:
     void createReversedIndices();
+    void recordUnderLights(PassContext& pc, const BlendedDraw& bd, size_t index);
+    void recordAdditiveLights(PassContext& pc, const BlendedDraw& bd);
 
     const PassEnv env_;
+    const bool additive_; // --blended-lights additive: the textbook pass, no reversed order
+    const bool onePass_;  // --blended-lights one-pass: every light in the composite, no light draws
     VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
     Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
     std::vector<uint32_t> reversedFirst_; // per plan.blended entry: its first index there

@@ -9,7 +9,13 @@ namespace {
 
 KnobSchema multipassKnobs() {
     return {msaaShadingKnob(),
-            Knob::choice("accum", {"fp32", "fp16"}, "Multipass forward accumulation target precision")};
+            Knob::choice("accum", {"fp32", "fp16"}, "Multipass forward accumulation target precision"),
+            Knob::choice("blended-lights", {"under", "additive", "one-pass"},
+                         "Multipass forward lights on blended surfaces: under (a pass per light, composited under "
+                         "the draw's own nearer layers: exact where a mesh overlaps itself), additive (the textbook "
+                         "pass per light, alpha * light added: too bright by a_near * a_far * L_far where it does) or "
+                         "one-pass (every light in the blended draw's one shading pass, as forward engines light "
+                         "transparent objects)")};;
 }
 
 void multipassErrorModel(ErrorBound& b, const ErrorModelInput& in) {

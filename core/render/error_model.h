@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image/image.h"
 #include "core/render/settings.h"
 #include "core/scene/scene.h"
 #include "core/scene/stress_scenes.h"
@@ -29,10 +30,21 @@ struct BoundTerm {
     std::string why;
 };
 
+// An allowance that depends on where a pixel is (e.g. next to a light), on top of the
+// uniform terms: per pixel, the largest |pipeline - reference| in HDR radiance (any
+// channel) it explains; +Inf where the model bounds nothing at that pixel. The verdict
+// widens each pixel's tonemapped limit by what this radiance moves the tonemap there.
+struct PixelAllowance {
+    std::string name; // empty: none
+    std::string why;
+    ImageR32 radiance;
+};
+
 struct ErrorBound {
     bool bounded = true; // false: the method gives no per-pixel bound here (`why` says so)
     std::string why;
     std::vector<BoundTerm> terms;
+    PixelAllowance perPixel;
     double relative() const;
     double absolute() const;
     // Largest allowed |T(pipeline) - T(reference)| per channel at exposure `ev`.
@@ -52,6 +64,9 @@ struct ErrorModelInput {
     const stress::StressCase& stressCase;
     const Scene& scene;
     const RenderSettings& settings; // knobs resolved
+    // What the device and the reference run add for models that need them (may be absent).
+    const ImageR32* referenceDepth = nullptr; // the reference's published D32 reverse-Z depth
+    uint32_t subPixelBits = 8;                // VkPhysicalDeviceLimits::subPixelPrecisionBits
 };
 
 // Adds the pipeline's own terms to `bound` (or marks it unbounded with the reason).

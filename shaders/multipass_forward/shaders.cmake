@@ -1,4 +1,4 @@
-# multipass forward: base pass, one-light pass, blended transmittance reset (the masked
+# multipass forward: base pass, one-light pass, blended transmittance reset, blended one-pass (the masked
 # prepass shader is shared).
 triptych_add_shader(SPVS ${SHADER_DIR}/base.frag mp_base_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_frag)
@@ -6,3 +6,6 @@ triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/base.frag mp_base_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/alpha_reset.frag mp_alpha_reset_frag)
+# --blended-lights one-pass: blended surfaces lit by every light in one pass.
+triptych_add_shader(SPVS ${SHADER_DIR}/one_pass.frag mp_one_pass_frag)
+triptych_add_shader(SPVS ${SHADER_DIR}/one_pass.frag mp_one_pass_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)

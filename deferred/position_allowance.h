@@ -1,0 +1,42 @@
+#pragma once
+// Deferred's position-from-depth error next to lights, per pixel (docs/stress.md,
+// "Position from depth next to a light").
+//
+// Deferred shades the point on the ray through the pixel centre at the depth the rasterizer
+// stored. A rasterizer snaps vertices to a grid of 2^-subPixelBits pixel before it sets up
+// the depth plane, so that depth is the depth of the surface point up to
+// eps = sqrt(2) * 2^-(subPixelBits + 1) pixel widths away across the view ray: the
+// reconstructed point lies up to eps (at its view depth) off the surface the reference
+// shades. Far from lights this is a tiny relative change; next to a light it is a change of
+// the light direction and distance of eps / d, large when a light hugs a surface. The
+// allowance is, per pixel, eps times a bound on the gradient of every light term reaching
+// it: inverse-square falloff, range window, spot cone and a sampled Lipschitz bound of the
+// BRDF over the scene's materials.
+#include <cstdint>
+#include <vector>
+
+#include "core/image/image.h"
+#include "core/scene/scene.h"
+
+namespace tp {
+
+// The per-sample lateral displacement bound eps, in units of the pixel width at the
+// sample's view depth.
+double snappedPositionPixels(uint32_t subPixelBits);
+
+// Largest brdfCos and its Lipschitz constant with respect to the light direction and the
+// view direction (per radian), over the scene's materials (base colour at its largest
+// channel, 1 where textured), sampled; both times 1.25 for the sampling's gaps. One per
+// 2-degree bucket of the angle between the view direction and the normal (0 to 90).
+struct BrdfLimits {
+    double maxValue = 0;
+    double lipschitz = 0;
+};
+std::vector<BrdfLimits> brdfLimits(const Scene& scene);
+
+// HDR radiance allowance per pixel for an image of depth.width x depth.height rendered
+// with the scene's camera (0 where the pixel has no geometry or no local light reaches it;
+// +Inf where a light is closer to the shaded point than 2 eps: nothing is bounded there).
+ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth, uint32_t subPixelBits);
+
+} // namespace tp
