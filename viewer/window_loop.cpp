@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <thread>
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -109,6 +110,8 @@ int runWindow(const LoopSetup& setup) {
                 // The frame's work, present included (FIFO: paced by the display where it has one).
                 double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
                 if (runner) runner->afterFrame(app, nullptr, frameMs);
+                // On a CPU device the renders run on the same cores: leave them the CPU while they work.
+                if (ctx.isCpuDevice() && !app.settled()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
                 bool scriptDone = !runner || runner->done();
                 if (setup.quitAfterFrames > 0 && frame + 1 >= setup.quitAfterFrames && scriptDone) break;
             }

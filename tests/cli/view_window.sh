@@ -15,6 +15,15 @@ first=$(head -n 1 "$work/stderr")
 report "view without a display" "$(error_problem "" "--headless" 2)"
 [[ "$first" == *"X server"* ]] || report "view without a display" "the message does not suggest an X server"
 
+# Bad input to view: one line, exit 2, before any device or window.
+run_triptych view --headless
+report "view --headless without a script" "$(error_problem "" "--script" 2)"
+run_triptych view --headless --script "$work/missing.txt"
+report "view with a missing script" "$(error_problem "" "missing.txt" 2)"
+printf 'split 0.5\nteleport 1 2\n' >"$work/bad.txt"
+run_triptych view --headless --script "$work/bad.txt"
+report "view with a bad script line" "$(error_problem "" "bad.txt:2" 2)"
+
 if ! command -v xvfb-run >/dev/null; then
     echo "SKIP view in a window: xvfb-run is not installed (apt-get install xvfb xauth)"
 else
@@ -27,6 +36,7 @@ else
     if [ "$code" -ne 0 ]; then
         report "view in a window under Xvfb" "exit code $code"
     else
+        first="exit code 0, validation clean"
         report "view in a window under Xvfb" ""
     fi
 fi
