@@ -131,8 +131,7 @@ TEST(Viewer, DifferenceOfTwoPipelinesIsNotBlank) {
 TEST(Viewer, FlipShowsBWhereAWas) {
     if (pipeline(0) == pipeline(1)) GTEST_SKIP() << "one pipeline registered";
     // A fixed exposure (auto exposure follows A's image), and one render of each pipeline:
-    // split 0 shows B whole, from the same render the flip shows (a second render may differ
-    // in the last bit where a pipeline accumulates in a nondeterministic order).
+    // split 0 shows B whole, from the same render the flip shows.
     ViewRun r = runScript("flip", "exposure 0\nsplit 1\nwait\nscreenshot a.png\nkey f\nwait\n"
                                   "screenshot flipped.png\nflip off\nsplit 0\nwait\nscreenshot b.png\n");
     ASSERT_EQ(r.code, 0);
