@@ -6,7 +6,7 @@
 //     a tile with no geometry (sky) gets an empty opaque list. The transparent list (only
 //     when the scene has blended materials) spans the near plane to the tile's farthest
 //     depth, unbounded where any sample sees the sky.
-//  2. Point/spot lights are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
+//  2. Point/spot lights (every one, or only the tile's binned candidates) are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
 //     sub-frustum's bounding box and the sub-frustum itself (include/tile_culling.glsl via light_assign.glsl);
 //     survivors set a bit in shared memory.
 //  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts, then
@@ -37,6 +37,15 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_SAMPLES) const int kSamples = 1;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
+// Binned (--light-cull binned): the tile tests only its candidates, the lights whose
+// conservative tile rectangle covers it (core/lightassign/tile_candidates.h, ascending);
+// otherwise every local light. Same test, same order: the same lists either way.
+layout(constant_id = TP_FP_SPEC_BINNED) const bool kBinned = false;
+// Clustered (TP_FP_CLUSTERED, compact layout only): one list per tile over its depth span
+// (the near plane or its nearest depth, to its farthest), and per depth slice a bitmask
+// over that list: bit i of slice s is set when light i of the list can reach the slice.
+layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
+layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
 
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) writeonly buffer TileBlock {
     FpTileLists tiles[];
@@ -58,9 +67,39 @@ layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depth
 #else
 #define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, 0).r
 #endif
-// Candidate k is the k-th light of data[] (directional lights first, never culled).
-#define TP_LA_LIST_STORE(slot, k) indices[slot] = data[params.lights.x + (k)]
+// Candidate k of this tile is data[gCandidateBase + k]: the k-th local light (after the
+// directional ones, never culled), or the k-th of the tile's binned candidates.
+uint gCandidateBase;
+#define TP_LA_LIST_STORE(slot, k) indices[slot] = data[gCandidateBase + (k)]
 #include "include/light_assign.glsl"
+#ifdef TP_FP_CLUSTERED
+// Cleared to 0 before this pass (cluster_mask_clear); bits are set with atomicOr, whose
+// result does not depend on the order of the invocations.
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) buffer MaskBlock {
+    uint masks[];
+};
+
+// Like laStoreWord, and also sets the survivors' bits in the slices their sphere reaches.
+uint clusterStoreWord(uint bits, uint firstCandidate, uint listStart, uint pos, uint capacity, uint maskBase,
+                      uint maskStride, float sliceNear, float sliceScale) {
+    for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+        int lsb = findLSB(bits);
+        bits &= bits - 1u;
+        if (pos < capacity) {
+            uint lightIndex = data[gCandidateBase + firstCandidate + uint(lsb)];
+            indices[listStart + pos] = lightIndex;
+            LightGpu light = lights[lightIndex];
+            vec3 c = (frame.view * vec4(light.position, 1.0)).xyz;
+            float r = light.range + TP_TILE_CULL_PAD * (light.range + length(c)); // lightInTile's padding
+            uvec2 range = laLightSlices(c, r, sliceNear, sliceScale, kSlices);
+            for (uint sl = range.x; sl <= range.y; ++sl)
+                atomicOr(masks[maskBase + sl * maskStride + (pos >> 5u)], 1u << (pos & 31u));
+        }
+        ++pos;
+    }
+    return pos;
+}
+#endif
 #ifdef TP_FP_CULL_LINKED
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
     uint nodeCounter;
@@ -112,10 +151,26 @@ void main() {
     const float nearDepth = laTileNearDepth();
     const float farDepth = laTileFarDepth();
     // The sub-frusta are the same for the whole tile: one invocation builds them.
+    float transparentFar = laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth);
+#ifdef TP_FP_CLUSTERED
+    // The span: the opaque range, or from the near plane (blended surfaces lie anywhere in
+    // front of the opaque ones). Slices are exponential from its near end to the farthest
+    // opaque depth (to 1,000 x the near end without geometry); the last one is unbounded.
+    const bool listTests = kSpanFromNear || hasGeometry;
+    const float spanNearDepth = kSpanFromNear ? 1.0 : nearDepth;
+    const float spanFarDepth = kSpanFromNear ? transparentFar : farDepth;
+    const float sliceNear = max(-viewZFromDepth(spanNearDepth, frame.invProj), 1e-30);
+    const float sliceFar = hasGeometry ? -viewZFromDepth(farDepth, frame.invProj) : 1000.0 * sliceNear;
+    const float sliceScale = laSliceScale(sliceNear, sliceFar, kSlices);
+    const uint maskBase = data[params.lists.w + tileIndex];
+    const uint maskStride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
+#else
+    const bool listTests = hasGeometry;
+    const float spanNearDepth = nearDepth, spanFarDepth = farDepth;
+#endif
     if (lid == 0u) {
         const vec2 viewportSize = vec2(viewport);
-        sFrustum[0] = laOpaqueFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
-        float transparentFar = laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth);
+        sFrustum[0] = laOpaqueFrustum(tile, tileSize, viewportSize, frame.invProj, spanNearDepth, spanFarDepth);
         sBox[0] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[0]);
         if (kTwoLists) {
             sFrustum[1] = laTransparentFrustum(tile, tileSize, viewportSize, frame.invProj, transparentFar);
@@ -129,7 +184,13 @@ void main() {
     const TileBox transparentBox = sBox[kTwoLists ? 1 : 0];
 
     const uint directionalCount = params.lights.x;
-    const uint localCount = params.lights.y;
+    uint localCount = params.lights.y; // candidates of this tile
+    gCandidateBase = directionalCount;
+    if (kBinned) {
+        const uint first = data[params.lights.z + tileIndex];
+        localCount = data[params.lights.z + tileIndex + 1u] - first;
+        gCandidateBase = params.lists.z + first;
+    }
     uint capacity;
     uint start[2];
 #if defined(TP_FP_CULL_COMPACT)
@@ -168,9 +229,9 @@ void main() {
         // 2. Test this chunk's lights, groupSize at a time.
         const uint inChunk = min(TP_FP_CHUNK_LIGHTS, localCount - base);
         for (uint i = lid; i < inChunk; i += groupSize) {
-            LightGpu light = lights[data[directionalCount + base + i]];
+            LightGpu light = lights[data[gCandidateBase + base + i]];
             uint bit = 1u << (i & 31u);
-            if (hasGeometry && lightInTileBox(light, opaqueBox, frame.view) &&
+            if (listTests && lightInTileBox(light, opaqueBox, frame.view) &&
                 lightInTile(light, opaqueFrustum, frame.view))
                 atomicOr(sBits[buf][0][i >> 5u], bit);
             if (kTwoLists && lightInTileBox(light, transparentBox, frame.view) &&
@@ -213,7 +274,7 @@ void main() {
                 bits &= bits - 1u;
                 if (rank < kept) {
                     uint node = nodeBase + rank;
-                    indices[2u * node] = data[directionalCount + base + word * 32u + uint(lsb)];
+                    indices[2u * node] = data[gCandidateBase + base + word * 32u + uint(lsb)];
                     indices[2u * node + 1u] = rank + 1u < kept ? node + 1u : oldHead;
                 }
                 ++rank;
@@ -226,8 +287,14 @@ void main() {
         }
         barrier();
 #else
+#ifdef TP_FP_CLUSTERED
+        if (compacts && bits != 0u)
+            clusterStoreWord(bits, base + word * 32u, start[list], running + prefix, capacity, maskBase, maskStride,
+                             sliceNear, sliceScale);
+#else
         if (compacts && bits != 0u)
             laStoreWord(bits, base + word * 32u, start[list], running + prefix, capacity);
+#endif
         running += chunkTotal;
 #endif
     }
@@ -250,8 +317,13 @@ void main() {
 #endif
             t.list[l].found = t.list[l].count + t.list[l].dropped;
         }
-        t.pad0 = 0u;
-        t.pad1 = 0u;
+#ifdef TP_FP_CLUSTERED
+        t.sliceNear = sliceNear;
+        t.sliceScale = sliceScale;
+#else
+        t.sliceNear = 0.0;
+        t.sliceScale = 0.0;
+#endif
         t.nearDepth = hasGeometry ? nearDepth : 0.0;
         t.farDepth = hasGeometry ? farDepth : 0.0;
         tiles[tileIndex] = t;
