@@ -415,7 +415,10 @@ class ForwardPlusRenderer final : public Renderer {
             d.specConstants.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
             d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
             d.specConstants.push_back({TP_FP_SPEC_LAYOUT, layout_});
-            if (clustered_) d.specConstants.push_back({TP_FP_SPEC_SLICES, slices_});
+            if (clustered_) {
+                d.specConstants.push_back({TP_FP_SPEC_SLICES, slices_});
+                d.specConstants.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, blendPass_ ? 1u : 0u});
+            }
             shade_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
         }
     }
@@ -435,7 +438,8 @@ class ForwardPlusRenderer final : public Renderer {
         scene_.bindSceneSet(pc.cmd, cullLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
         vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_.set, 0,
                                 nullptr);
-        vkCmdDispatch(pc.cmd, grid_.tilesX, grid_.tilesY, 1);
+        // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
+        vkCmdDispatch(pc.cmd, (grid_.tilesX + 7) / 8, (grid_.tilesY + 7) / 8, 1);
     }
 
     void recordShading(PassContext& pc, bool transparent) {

@@ -45,8 +45,8 @@ TP_STRUCT(FpTileLists) {
     LaListHeader list[2];
     float nearDepth; // opaque depth bounds, reverse-Z: nearDepth >= farDepth;
     float farDepth;  // nearDepth == 0: no geometry in the tile (sky), opaque list empty
-    float sliceNear;  // clustered: view distance where slice 0 starts (light_assign.glsl: laSliceOf)
-    float sliceScale; // clustered: slices per unit of log(distance / sliceNear); 0 when tiled
+    float sliceNear;  // clustered: view distance of the nearest opaque depth (1e30 without geometry; light_assign.glsl: laSliceOf)
+    float sliceScale; // clustered: range slices per unit of log(distance / sliceNear); 0 when tiled
 };
 
 // Uploaded once per configuration; followed in the same buffer by uint data[]:

@@ -29,6 +29,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
 
 #ifdef TP_FP_CLUSTERED
 layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
+layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonly buffer MaskBlock {
     uint masks[];
 };
@@ -40,7 +41,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonl
 vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
     FpTileLists t = tiles[tileIndex];
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    uint slice = laSliceOf(dist, t.sliceNear, t.sliceScale, kSlices);
+    uint slice = laSliceOf(dist, t.sliceNear, t.sliceScale, kSlices, kSpanFromNear);
     uint maskBase = data[params.lists.w + tileIndex];
     uint stride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
     uint words = (t.list[0].count + 31u) / 32u;

@@ -38,28 +38,35 @@ TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, m
     return makeTileFrustum(tile, tileSize, viewportSize, invProj, 1.0, transparentFarDepth);
 }
 
-// ---- clustered: depth slices of a tile's span (docs/clustered.md) ----
-// Slice s of a tile covers view distances [near * ratio^(s/S), near * ratio^((s+1)/S)) with
-// ratio = far / near of the tile's span: exponential, so every slice is as deep relative to
-// its distance. The first slice also takes everything nearer and the last everything
-// farther, so a span that is unbounded (a blended surface over the sky) still has a finite
-// far for its slicing. The culling and the shading compute a slice with these same two
-// functions; a light's slice range is padded (laLightSlices), so rounding cannot separate them.
-float laSliceScale(float spanNear, float spanFar, uint slices) {
-    return float(slices) / log(max(spanFar / spanNear, 1.001));
+// ---- clustered: depth slices of a tile (docs/clustered.md) ----
+// The slices follow the tile's opaque depth range [nearest, farthest] (view distances
+// sliceNear, sliceFar): exponential between them, so every slice is as deep relative to
+// its distance and each lies inside the range a tiled opaque list is culled against. With
+// a front slice (the scene has blended surfaces), slice 0 holds everything nearer than
+// sliceNear (blended surfaces in front of the opaque ones) and slices 1 .. S-1 the range;
+// otherwise slices 0 .. S-1 do. The first range slice also takes anything nearer, the last
+// everything farther (blended surfaces over the sky). A tile without geometry has
+// sliceNear = sliceFar = 1e30: everything is in slice 0. The culling and the shading both
+// use laSliceOf; a light's slice range is padded (laLightSlices), so rounding cannot
+// separate them.
+float laSliceScale(float sliceNear, float sliceFar, uint slices, bool front) {
+    return float(slices - (front ? 1u : 0u)) / log(max(sliceFar / sliceNear, 1.001));
 }
 
 // The slice of view distance `dist` (> 0 in front of the eye).
-uint laSliceOf(float dist, float spanNear, float sliceScale, uint slices) {
-    float s = log(max(dist / spanNear, 1.0)) * sliceScale;
-    return uint(clamp(s, 0.0, float(slices - 1u))); // s >= 0: the cast floors
+uint laSliceOf(float dist, float sliceNear, float sliceScale, uint slices, bool front) {
+    if (front && dist < sliceNear) return 0u;
+    uint first = front ? 1u : 0u;
+    float s = log(max(dist / sliceNear, 1.0)) * sliceScale;
+    return first + uint(clamp(s, 0.0, float(slices - 1u - first))); // s >= 0: the cast floors
 }
 
 // The slices [x, y] that a sphere (view-space centre c, padded radius r) can reach.
-uvec2 laLightSlices(vec3 c, float r, float spanNear, float sliceScale, uint slices) {
+uvec2 laLightSlices(vec3 c, float r, float sliceNear, float sliceScale, uint slices, bool front) {
     float d0 = (-c.z - r) * (1.0 - TP_TILE_CULL_PAD);
     float d1 = (-c.z + r) * (1.0 + TP_TILE_CULL_PAD);
-    return uvec2(laSliceOf(d0, spanNear, sliceScale, slices), laSliceOf(d1, spanNear, sliceScale, slices));
+    return uvec2(laSliceOf(d0, sliceNear, sliceScale, slices, front),
+                 laSliceOf(d1, sliceNear, sliceScale, slices, front));
 }
 
 // ---- compact lists (light_assign.h: LaListHeader) in a uint[] buffer ----
