@@ -103,11 +103,6 @@ class ForwardPlusRenderer final : public Renderer {
                 vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
             });
 
-        if (clustered_) // the culling ORs bits into the masks
-            graph.addPass("cluster_mask_clear", {{masks_, Use::TransferDst}}, [this](PassContext& pc) {
-                vkCmdFillBuffer(pc.cmd, pc.buffer(masks_).buffer, 0, VK_WHOLE_SIZE, 0);
-            });
-
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
         std::vector<PassUse> cullUses = {{depthSrc, Use::Sampled, TP_FP_BINDING_DEPTH},
                                          {tiles_, Use::StorageWrite, TP_FP_BINDING_TILES},
@@ -187,6 +182,7 @@ class ForwardPlusRenderer final : public Renderer {
         add("light_list_slots", double(slotCount_));
         // CPU, once per configuration: the tile rectangles (and binned candidates).
         add("light_bins_cpu_ms", boundMs_);
+        add("culling_dispatches", double(cullDispatches_)); // batches of candidates (lavapipe's loop limit)
         if (binned_) add("binned_candidates", double(candidates_.size()));
         if (clustered_) {
             add("slices", double(slices_));
@@ -433,13 +429,48 @@ class ForwardPlusRenderer final : public Renderer {
         endRendering(pc);
     }
 
+    // Candidates per culling dispatch: one invocation culls a whole tile, and lavapipe ends
+    // an invocation after 65,535 loop iterations (forwardplus_shared.h); a candidate costs
+    // one iteration (two for linked: count, then fill), plus, clustered, up to one per slice
+    // and a slice row write per 32 stored.
+    uint32_t cullBatch() const {
+        const uint32_t perCandidate = (layout_ == TP_FP_LAYOUT_LINKED ? 2 : 1) + (clustered_ ? slices_ + 1 : 0);
+        return std::max(1u, TP_FP_CULL_LOOP_BUDGET / perCandidate);
+    }
+
     void recordCulling(PassContext& pc) {
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
         scene_.bindSceneSet(pc.cmd, cullLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
         vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_.set, 0,
                                 nullptr);
-        // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
-        vkCmdDispatch(pc.cmd, (grid_.tilesX + 7) / 8, (grid_.tilesY + 7) / 8, 1);
+        const uint32_t most = binned_ ? (tileBound_.empty() ? 0 : *std::max_element(tileBound_.begin(), tileBound_.end()))
+                                      : uint32_t(classes_.local.size());
+        const uint32_t batch = cullBatch();
+        const uint32_t batches = std::max(1u, (most + batch - 1) / batch);
+        for (uint32_t i = 0; i < batches; ++i) {
+            if (i > 0) {
+                // Hand-written (the graph orders passes, not dispatches within one): the next
+                // batch continues the lists, counts and slice words this one wrote.
+                VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+                mb.srcStageMask = mb.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+                mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+                mb.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+                dep.memoryBarrierCount = 1;
+                dep.pMemoryBarriers = &mb;
+                vkCmdPipelineBarrier2(pc.cmd, &dep);
+            }
+            // linked prepends each batch, so it takes them last to first.
+            const uint32_t b = layout_ == TP_FP_LAYOUT_LINKED ? batches - 1 - i : i;
+            gpu::DrawPush push{0, 0, 0, 0};
+            push.TP_FP_CULL_FIRST = b * batch;
+            push.TP_FP_CULL_END = b + 1 == batches ? 0xffffffffu : (b + 1) * batch;
+            push.TP_FP_CULL_INITIAL = i == 0 ? 1u : 0u;
+            vkCmdPushConstants(pc.cmd, cullLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+            // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
+            vkCmdDispatch(pc.cmd, (grid_.tilesX + 7) / 8, (grid_.tilesY + 7) / 8, 1);
+        }
+        cullDispatches_ = batches;
     }
 
     void recordShading(PassContext& pc, bool transparent) {
@@ -479,6 +510,7 @@ class ForwardPlusRenderer final : public Renderer {
     std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
     uint64_t boundSlots_ = 0;
     double boundMs_ = 0.0; // CPU time of boundLists()
+    uint32_t cullDispatches_ = 0;
     uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
     std::string indexPurpose_;
 

@@ -30,10 +30,16 @@ namespace tp::gpu {
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted
 #define TP_FP_LAYOUT_LINKED 2u  // head per tile + node pool with an atomic counter
 
-// Lights are tested in chunks of TP_FP_CHUNK_WORDS * 32; each chunk's survivors are a
-// bitmask in shared memory, compacted in light-index order (deterministic lists).
-#define TP_FP_CHUNK_WORDS 32u
-#define TP_FP_CHUNK_LIGHTS (TP_FP_CHUNK_WORDS * 32u)
+// The culling takes each tile's candidates in batches, one dispatch each, in the scene's
+// DrawPush push constant: candidates [first, end), and initial = 1 on the pass's first
+// dispatch (the lists start empty). lavapipe ends an invocation after 65,535 loop iterations
+// in total (deferred/tiled_lighting.h), and one invocation culls a whole tile.
+#define TP_FP_CULL_FIRST pad0
+#define TP_FP_CULL_END pad1
+#define TP_FP_CULL_INITIAL pad2
+// Loop iterations one culling dispatch may spend on its candidates: half of lavapipe's
+// limit (the depth bounds take at most 32 * 32 * 4 + 32 * 32 + 32 more).
+#define TP_FP_CULL_LOOP_BUDGET 32768u
 
 // What the culling pass leaves for each tile. list[TP_LA_OPAQUE] is bounded by the tile's
 // [min, max] depth, list[TP_LA_TRANSPARENT] spans the near plane to the tile's farthest depth

@@ -45,7 +45,8 @@ layout(constant_id = TP_FP_SPEC_BINNED) const bool kBinned = false;
 layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
 layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
 
-layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) writeonly buffer TileBlock {
+// Read back by the later dispatches of the pass (their lists continue these).
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) buffer TileBlock {
     FpTileLists tiles[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_INDICES) writeonly buffer IndexBlock {
@@ -69,11 +70,16 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer Counte
 };
 #endif
 #ifdef TP_FP_CLUSTERED
-// Cleared to 0 before this pass (cluster_mask_clear); each tile's rows belong to one
-// invocation, so plain read-modify-writes suffice.
+// Each tile's rows belong to its invocation, which writes every word the shading reads
+// (words [0, ceil(count / 32)) of every slice row): no clear pass. A later dispatch reads
+// back the word an earlier one left partial.
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) buffer MaskBlock {
     uint masks[];
 };
+// The bits of the current 32-slot word for every slice, written out once per word: a
+// survivor reaches several slices, and one store per slice and word is far cheaper on
+// lavapipe than a read-modify-write of the buffer per slice and light.
+uint gWordBits[64]; // kSlices <= 64 (core/lightassign/assign_knob.cpp)
 #endif
 
 const uint kNoNode = 0xffffffffu;
@@ -106,36 +112,64 @@ bool passes(LightGpu light, vec4 sphere, ListVolume v) {
 // never holds more than the tiled opaque list; the front slice (blended surfaces nearer
 // than the opaque range) and, where the tile sees the sky, the last one take it from the
 // span test alone.
-void markSlices(vec4 sphere, uint pos, uint maskBase, uint maskStride, float sliceNear, float sliceScale,
-                bool inOpaque, bool openEnd) {
+void markSlices(vec4 sphere, uint pos, float sliceNear, float sliceScale, bool inOpaque, bool openEnd) {
     uvec2 range = laLightSlices(sphere.xyz, sphere.w, sliceNear, sliceScale, kSlices, kSpanFromNear);
     for (uint sl = range.x; sl <= range.y; ++sl) {
         bool front = kSpanFromNear && sl == 0u;
-        if (front || inOpaque || (openEnd && sl == kSlices - 1u))
-            masks[maskBase + sl * maskStride + (pos >> 5u)] |= 1u << (pos & 31u);
+        if (front || inOpaque || (openEnd && sl == kSlices - 1u)) gWordBits[sl] |= 1u << (pos & 31u);
+    }
+}
+
+// Writes word `word` of every slice row and clears the bits for the next word.
+void flushWord(uint word, uint maskBase, uint maskStride) {
+    for (uint sl = 0u; sl < kSlices; ++sl) {
+        masks[maskBase + sl * maskStride + word] = gWordBits[sl];
+        gWordBits[sl] = 0u;
     }
 }
 #endif
 
 // Stores light `lightIndex` at position `pos` of a list (compact/fixed: slot start + pos
-// when within capacity; linked: node start + pos, chained to the next, when within kept).
-void store(uint lightIndex, uint pos, uint start, uint capacity) {
+// when within capacity; linked: node start + pos, chained to the next - the last kept one
+// to `tail` - when within this batch's kept nodes).
+void store(uint lightIndex, uint pos, uint start, uint capacity, uint tail) {
 #ifdef TP_FP_CULL_LINKED
     if (pos < capacity) {
         indices[2u * (start + pos)] = lightIndex;
-        indices[2u * (start + pos) + 1u] = pos + 1u < capacity ? start + pos + 1u : kNoNode;
+        indices[2u * (start + pos) + 1u] = pos + 1u < capacity ? start + pos + 1u : tail;
     }
 #else
     if (pos < capacity) indices[start + pos] = lightIndex;
 #endif
 }
 
+LaListHeader emptyHeader() {
+    LaListHeader h;
+    h.count = 0u;
+    h.start = kNoNode; // linked: no head yet
+    h.dropped = 0u;
+    h.found = 0u;
+    return h;
+}
+
+// compact/fixed: `found` survivors so far, the first `capacity` stored from `start`.
 LaListHeader header(uint found, uint start, uint capacity) {
     LaListHeader h;
     h.count = min(found, capacity);
     h.start = start;
     h.dropped = found - h.count;
     h.found = found;
+    return h;
+}
+
+// linked: this batch's `found` survivors, `kept` of them in nodes from `base`, in front of
+// what the earlier batches (`prev`) left.
+LaListHeader prepend(LaListHeader prev, uint found, uint base, uint kept) {
+    LaListHeader h;
+    h.count = prev.count + kept;
+    h.start = kept > 0u ? base : prev.start;
+    h.dropped = prev.dropped + found - kept;
+    h.found = prev.found + found;
     return h;
 }
 
@@ -183,56 +217,93 @@ void main() {
         candidateBase = params.lists.z + first;
     }
 
+    // This dispatch's candidates [first, end) (forwardplus_renderer.cpp: recordCulling) and
+    // what the earlier dispatches of the pass left in the tile's record.
+    const uint batchFirst = draw.TP_FP_CULL_FIRST;
+    const uint batchEnd = min(draw.TP_FP_CULL_END, candidateCount);
+    LaListHeader prev0 = emptyHeader(), prev1 = emptyHeader();
+    if (draw.TP_FP_CULL_INITIAL == 0u) {
+        prev0 = tiles[tileIndex].list[0];
+        prev1 = tiles[tileIndex].list[1];
+    }
+
 #if defined(TP_FP_CULL_COMPACT)
     const uint offset = data[params.lights.z + tileIndex];
     const uint capacity0 = data[params.lights.z + tileIndex + 1u] - offset, capacity1 = capacity0;
     const uint start0 = offset, start1 = params.lists.x + offset;
+    uint count0 = prev0.found, count1 = prev1.found; // positions continue the earlier batches'
+    const uint tail0 = kNoNode, tail1 = kNoNode;
 #elif defined(TP_FP_CULL_FIXED)
     const uint capacity0 = params.lights.w, capacity1 = capacity0;
     const uint start0 = tileIndex * capacity0, start1 = params.lists.x + tileIndex * capacity0;
+    uint count0 = prev0.found, count1 = prev1.found;
+    const uint tail0 = kNoNode, tail1 = kNoNode;
 #else
-    // Linked: count the survivors, then allocate consecutive nodes per list (one atomic
-    // add each); nodes past the pool are dropped and counted (the pool is sized so that it
-    // cannot happen). `capacity` is then the nodes kept.
+    // Linked: count this batch's survivors, then allocate consecutive nodes per list (one
+    // atomic add each); nodes past the pool are dropped and counted (the pool is sized so
+    // that it cannot happen). The batches run last to first and each is prepended: its
+    // last node continues with the earlier head (tail), so a walk visits lights in order.
+    // `capacity` is this batch's kept nodes, positions count from 0.
     uint found0 = 0u, found1 = 0u;
-    for (uint k = 0u; k < candidateCount; ++k) {
+    for (uint k = batchFirst; k < batchEnd; ++k) {
         LightGpu light = lights[data[candidateBase + k]];
         vec4 sphere = lightSphereView(light, frame.view);
         if (passes(light, sphere, volume0)) ++found0;
         if (kTwoLists && passes(light, sphere, volume1)) ++found1;
     }
     const uint pool = params.lists.y;
-    const uint base0 = found0 > 0u ? atomicAdd(nodeCounter, found0) : 0u;
-    const uint base1 = found1 > 0u ? atomicAdd(nodeCounter, found1) : 0u;
-    const uint capacity0 = min(found0, base0 < pool ? pool - base0 : 0u);
-    const uint capacity1 = min(found1, base1 < pool ? pool - base1 : 0u);
-    const uint start0 = capacity0 > 0u ? base0 : kNoNode, start1 = capacity1 > 0u ? base1 : kNoNode;
+    const uint start0 = found0 > 0u ? atomicAdd(nodeCounter, found0) : 0u;
+    const uint start1 = found1 > 0u ? atomicAdd(nodeCounter, found1) : 0u;
+    const uint capacity0 = min(found0, start0 < pool ? pool - start0 : 0u);
+    const uint capacity1 = min(found1, start1 < pool ? pool - start1 : 0u);
+    uint count0 = 0u, count1 = 0u;
+    const uint tail0 = prev0.start, tail1 = prev1.start;
 #endif
 
     // 3. Test and append in candidate (ascending light) order.
-    uint count0 = 0u, count1 = 0u;
-    for (uint k = 0u; k < candidateCount; ++k) {
+#ifdef TP_FP_CLUSTERED
+    // A word left partial by the previous batch is continued, not restarted.
+    const uint storedBefore = min(count0, capacity0);
+    for (uint sl = 0u; sl < kSlices; ++sl)
+        gWordBits[sl] = (storedBefore & 31u) != 0u ? masks[maskBase + sl * maskStride + (storedBefore >> 5u)] : 0u;
+    bool dirty = false; // gWordBits holds bits this batch has not written out yet
+#endif
+    for (uint k = batchFirst; k < batchEnd; ++k) {
         const uint lightIndex = data[candidateBase + k];
         LightGpu light = lights[lightIndex];
         const vec4 sphere = lightSphereView(light, frame.view);
         if (passes(light, sphere, volume0)) {
-            store(lightIndex, count0, start0, capacity0);
+            store(lightIndex, count0, start0, capacity0, tail0);
 #ifdef TP_FP_CLUSTERED
-            if (count0 < capacity0)
-                markSlices(sphere, count0, maskBase, maskStride, sliceNear, sliceScale,
-                           !kSpanFromNear || passes(light, sphere, volume1), openEnd);
+            if (count0 < capacity0) {
+                if (dirty && (count0 & 31u) == 0u) {
+                    flushWord((count0 >> 5u) - 1u, maskBase, maskStride);
+                    dirty = false;
+                }
+                markSlices(sphere, count0, sliceNear, sliceScale, !kSpanFromNear || passes(light, sphere, volume1),
+                           openEnd);
+                dirty = true;
+            }
 #endif
             ++count0;
         }
         if (kTwoLists && passes(light, sphere, volume1)) {
-            store(lightIndex, count1, start1, capacity1);
+            store(lightIndex, count1, start1, capacity1, tail1);
             ++count1;
         }
     }
 
+#ifdef TP_FP_CLUSTERED
+    if (dirty) flushWord((min(count0, capacity0) - 1u) >> 5u, maskBase, maskStride); // the last, partial word
+#endif
     FpTileLists t;
+#ifdef TP_FP_CULL_LINKED
+    t.list[0] = prepend(prev0, found0, start0, capacity0);
+    t.list[1] = prepend(prev1, found1, start1, capacity1);
+#else
     t.list[0] = header(count0, start0, capacity0);
     t.list[1] = header(count1, start1, capacity1);
+#endif
     t.nearDepth = depth.hasGeometry ? depth.nearDepth : 0.0;
     t.farDepth = depth.farDepth;
 #ifdef TP_FP_CLUSTERED

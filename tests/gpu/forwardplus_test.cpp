@@ -507,6 +507,40 @@ TEST(ForwardPlusCulling, BinnedListsEqualBruteForceOnFloorTile32) {
     expectBinnedEqualsBruteForce(floorScene(2048), s);
 }
 
+// More candidates in a tile than one culling dispatch takes (32,768: lavapipe ends an
+// invocation after 65,535 loop iterations, and one invocation culls a tile): the lists
+// continue over several dispatches, for every layout (linked prepends them last to first),
+// and still equal binned culling's.
+TEST(ForwardPlusCulling, ListsContinueOverSeveralDispatches) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(40000);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings = small(32, 24, 1);
+    settings.set("light-cull", "binned");
+    ListRun binned = runLists(*ctx, gpuScene, settings);
+    settings.set("light-cull", "all");
+    for (const char* layout : {"compact", "fixed", "linked"}) {
+        RenderSettings s = settings;
+        s.set("light-lists", layout);
+        s.set("tile-capacity", 65536);
+        ListRun all = runLists(*ctx, gpuScene, s);
+        double dispatches = -1.0;
+        for (const auto& [n, v] : all.stats.counters)
+            if (n == "culling_dispatches") dispatches = v;
+        EXPECT_GE(dispatches, 2.0) << layout;
+        uint64_t listed = 0;
+        for (uint32_t tile = 0; tile < all.grid.count(); ++tile) {
+            std::vector<uint32_t> a = listOf(all, tile, 0, layout);
+            EXPECT_EQ(a, listOf(binned, tile, 0, "compact")) << layout << " tile " << tile;
+            EXPECT_EQ(all.tiles[tile].list[0].dropped, 0u) << layout;
+            listed += a.size();
+        }
+        EXPECT_GT(listed, 1000u) << layout;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 // ---- clustered (--light-assign clustered) ----
 
 RenderSettings clustered(RenderSettings s, uint32_t slices = 16) {
@@ -521,6 +555,12 @@ TEST(ForwardPlusClustered, CourtyardMatchesReference) {
 TEST(ForwardPlusClustered, CourtyardMatchesReferenceMsaa4Slices64) {
     expectMatchesReference(courtyardScene(256), clustered(small(96, 54, 4), 64), 4);
 }
+// 64 slices: a culling dispatch takes 32,768 / 66 = 496 candidates (lavapipe's loop limit),
+// so a tile's list and its slice words continue over 9 dispatches.
+TEST(ForwardPlusClustered, Floor4096LightsTinySlices64ManyDispatches) {
+    expectMatchesReference(floorScene(4096), clustered(small(40, 24, 1), 64));
+}
+
 TEST(ForwardPlusClustered, Floor4096LightsTinyTile8Slices4) {
     RenderSettings s = clustered(small(40, 24, 1), 4);
     s.set("tile", 8);
