@@ -198,10 +198,8 @@ RendererStats DeferredRenderer::stats() const {
         s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
     }
     if (t_.tileStats.valid()) {
-        // Light-vs-tile tests of the tiled pass's culling (binned: the candidates), and the
-        // CPU time of the candidates (once per configuration).
+        // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).
         s.counters.push_back({"light_candidates", double(lighting_.candidates())});
-        s.counters.push_back({"light_bins_cpu_ms", lighting_.binsCpuMs()});
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)

@@ -1,7 +1,6 @@
 #include "deferred/tiled_lighting.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -90,7 +89,6 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
     std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
     const uint32_t tiles = t_->grid.count();
     if (binned_) {
-        const auto t0 = std::chrono::steady_clock::now();
         const gpu::FrameUniforms& f = scene_.shadingFrame();
         const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
         la::LightClasses classes = la::classifyLights(lights);
@@ -107,7 +105,6 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         words.insert(words.end(), runs.begin(), runs.end());
         maxCandidates_ = directional + (bound.empty() ? 0 : *std::max_element(bound.begin(), bound.end()));
         candidateCount_ = uint64_t(directional) * tiles + runs.size();
-        binsCpuMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (words.size() * 4 > ctx_.caps.maxStorageBufferRange)
             throw RendererError("deferred: the binned light candidates need " + std::to_string(words.size() * 4) +
                                 " bytes, more than maxStorageBufferRange (" +

@@ -33,10 +33,8 @@ class TiledLighting {
     // (and the tile statistics) are built here.
     void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false);
     void prepare(FrameGraph& graph);
-    // Light-vs-tile tests the culling makes per dispatch set (binned: the candidates; all:
-    // lights x tiles) and the CPU time of the candidates.
+    // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
-    double binsCpuMs() const { return binsCpuMs_; }
 
   private:
     void record(PassContext& pc);
@@ -51,7 +49,6 @@ class TiledLighting {
     uint32_t slices_ = 0;
     bool listsOnly_ = false;
     uint32_t maxCandidates_ = 0; // binned: the most candidates of any tile (the batches' range)
-    double binsCpuMs_ = 0.0;     // CPU time of the candidates (once per configuration)
     uint64_t candidateCount_ = 0;
     const DeferredTargets* t_ = nullptr;
     PassSet set_;

@@ -1,7 +1,6 @@
 #include "forwardplus/forwardplus_renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -180,8 +179,6 @@ class ForwardPlusRenderer final : public Renderer {
         add("local_lights", double(classes_.local.size()));
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(slotCount_));
-        // CPU, once per configuration: the tile rectangles (and binned candidates).
-        add("light_bins_cpu_ms", boundMs_);
         add("culling_dispatches", double(cullDispatches_)); // batches of candidates (lavapipe's loop limit)
         if (binned_) add("binned_candidates", double(candidates_.size()));
         if (clustered_) {
@@ -247,7 +244,6 @@ class ForwardPlusRenderer final : public Renderer {
     // lights and the camera are fixed for a run), counted per tile: the compact layout's
     // bound; with binned culling also each tile's candidates, in ascending light order.
     void boundLists() {
-        const auto t0 = std::chrono::steady_clock::now();
         // The uploaded (camera-relative) view and lights: what the culling shader tests.
         const gpu::FrameUniforms& f = scene_.shadingFrame();
         std::vector<la::TileRect> rects =
@@ -263,7 +259,6 @@ class ForwardPlusRenderer final : public Renderer {
                                 "fewer lights");
         if (binned_) candidates_ = la::tileCandidates(grid_, rects, classes_.local, tileOffsets_);
         if (clustered_) sizeMasks();
-        boundMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     }
 
     // Clustered: per tile, `slices` rows of ceil(bound / 32) words (a bit per slot of its list).
@@ -509,7 +504,6 @@ class ForwardPlusRenderer final : public Renderer {
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
     std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
     uint64_t boundSlots_ = 0;
-    double boundMs_ = 0.0; // CPU time of boundLists()
     uint32_t cullDispatches_ = 0;
     uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
     std::string indexPurpose_;

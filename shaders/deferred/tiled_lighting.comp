@@ -126,8 +126,12 @@ void markSlices() {
     uint n = min(sCount, TP_DEF_TILE_LIGHT_CAPACITY);
     uint words = (n + 31u) / 32u;
     for (uint i = gl_LocalInvocationIndex; i < n; i += TP_GROUP * TP_GROUP) {
-        vec4 sphere = lightSphereView(lights[sLights[i]], frame.view);
-        uvec2 range = laLightSlices(sphere.xyz, sphere.w, sSliceNear, sSliceScale, kSlices, false);
+        LightGpu light = lights[sLights[i]];
+        vec4 sphere = lightSphereView(light, frame.view);
+        // The shared list holds the directional lights too: they reach every slice.
+        uvec2 range = light.type == TP_LIGHT_DIRECTIONAL
+                          ? uvec2(0u, kSlices - 1u)
+                          : laLightSlices(sphere.xyz, sphere.w, sSliceNear, sSliceScale, kSlices, false);
         for (uint sl = range.x; sl <= range.y; ++sl) atomicOr(sMask[sl * words + (i >> 5u)], 1u << (i & 31u));
     }
 }
