@@ -211,6 +211,9 @@ RendererStats DeferredRenderer::stats() const {
     const bool clustered = settings_.text("light-assign") == "clustered";
     if (!clustered)
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
+    else if (useVolumes_)
+        s.leftOut.push_back({"depth slices and their bitmasks",
+                             "volumes lighting draws each light's volume; --light-assign applies to tiled lighting"});
     else if (blended_)
         s.leftOut.push_back({"clusters for blended surfaces",
                              "deferred clusters the opaque lighting only; blended surfaces keep their per-tile "
