@@ -22,7 +22,11 @@ class DeferredRenderer final : public Renderer {
   public:
     explicit DeferredRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
-          gbuffer_(info.ctx, info.scene), lighting_(info.ctx, info.scene, info.settings.debug),
+          gbuffer_(info.ctx, info.scene), lighting_(info.ctx, info.scene, info.settings.debug,
+                                                       info.settings.text("light-cull") == "binned",
+                                                       info.settings.text("light-assign") == "clustered"
+                                                           ? info.settings.integer("slices")
+                                                           : 0u),
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = settings_.text("deferred-lighting") == "volumes";
@@ -193,6 +197,10 @@ RendererStats DeferredRenderer::stats() const {
         s.counters.push_back({"lights_per_tile_max", maxLights});
         s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
     }
+    if (t_.tileStats.valid()) {
+        // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).
+        s.counters.push_back({"light_candidates", double(lighting_.candidates())});
+    }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)
         s.leftOut.push_back({"exact MSAA sample positions",
@@ -200,6 +208,16 @@ RendererStats DeferredRenderer::stats() const {
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
+    const bool clustered = settings_.text("light-assign") == "clustered";
+    if (!clustered)
+        s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
+    else if (useVolumes_)
+        s.leftOut.push_back({"depth slices and their bitmasks",
+                             "volumes lighting draws each light's volume; --light-assign applies to tiled lighting"});
+    else if (blended_)
+        s.leftOut.push_back({"clusters for blended surfaces",
+                             "deferred clusters the opaque lighting only; blended surfaces keep their per-tile "
+                             "transparent list (from the near plane to the farthest opaque depth)"});
     if (blended_) {
         TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
         double kept = 0, dropped = 0;

@@ -1,5 +1,7 @@
 // G-buffer deferred as the rest of the program sees it: its name, its knobs, its precision
 // model for `triptych stress` (deferred/error_model.cpp).
+#include "core/lightassign/assign_knob.h"
+#include "core/lightassign/cull_knob.h"
 #include "core/lightassign/tile_knob.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
@@ -12,6 +14,9 @@ namespace {
 
 KnobSchema deferredKnobs() {
     return {la::tileSizeKnob(),
+            la::lightCullKnob(),
+            la::lightAssignKnob(),
+            la::slicesKnob(),
             Knob::choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),
             msaaShadingKnob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
             Knob::choice("deferred-lighting", {"tiled", "volumes"},

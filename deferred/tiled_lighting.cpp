@@ -6,6 +6,10 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
+#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_candidates.h"
+#include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 
 namespace tp {
@@ -63,6 +67,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
                                              "per tile: first slot of its transparent list (prefix sum)"});
         externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
     }
+    uploadCandidates(graph);
+    externals.push_back({TP_DEF_BINDING_CANDIDATES, candidates_.buffer});
     set_ = graph.createPassSet(passName(), sampler_, externals);
 
     layout_ = scene_.createPipelineLayout(set_.layout);
@@ -71,7 +77,46 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
     spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
+    spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
+    spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
+}
+
+// Binned: per tile, the point/spot lights whose conservative tile rectangle covers it (CPU,
+// once per configuration: the lights and the camera are fixed for a run), after the
+// directional lights, which every tile takes. Otherwise a header saying "no candidates".
+void TiledLighting::uploadCandidates(FrameGraph& graph) {
+    std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
+    const uint32_t tiles = t_->grid.count();
+    if (binned_) {
+        const gpu::FrameUniforms& f = scene_.shadingFrame();
+        const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
+        la::LightClasses classes = la::classifyLights(lights);
+        std::vector<la::TileRect> rects = la::conservativeTileRects(t_->grid, f.view, f.proj, lights, classes.local);
+        std::vector<uint32_t> bound = la::countTileRects(t_->grid, rects);
+        la::CompactLayout layout = la::makeCompactLayout(bound);
+        std::vector<uint32_t> runs = la::tileCandidates(t_->grid, rects, classes.local, layout.offsets);
+        const uint32_t directional = uint32_t(classes.directional.size());
+        words[TP_DEF_CAND_DIRECTIONAL] = directional;
+        words[TP_DEF_CAND_OFFSETS] = TP_DEF_CAND_HEADER + directional;
+        words[TP_DEF_CAND_RUNS] = TP_DEF_CAND_HEADER + directional + tiles + 1;
+        words.insert(words.end(), classes.directional.begin(), classes.directional.end());
+        words.insert(words.end(), layout.offsets.begin(), layout.offsets.end());
+        words.insert(words.end(), runs.begin(), runs.end());
+        maxCandidates_ = directional + (bound.empty() ? 0 : *std::max_element(bound.begin(), bound.end()));
+        candidateCount_ = uint64_t(directional) * tiles + runs.size();
+        if (words.size() * 4 > ctx_.caps.maxStorageBufferRange)
+            throw RendererError("deferred: the binned light candidates need " + std::to_string(words.size() * 4) +
+                                " bytes, more than maxStorageBufferRange (" +
+                                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
+                                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
+    } else {
+        candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
+    }
+    candidates_ = createBufferWithData(ctx_, words.data(), words.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                       {graph.owner(), "", "light_candidates",
+                                        binned_ ? "binned culling: directional lights, per-tile offsets, candidates"
+                                                : "binned culling off (--light-cull all): header only"});
 }
 
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {
@@ -92,9 +137,12 @@ void TiledLighting::record(PassContext& pc) {
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0,
                             nullptr);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    const uint32_t lights = scene_.lightCount();
+    // Binned: batches over each tile's candidates, up to the fullest tile's.
+    const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();
     // Lists only: no shading loop, one dispatch whatever the light count.
-    const uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_->grid.tileSize, t_->layout.samples);
+    uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_->grid.tileSize, t_->layout.samples);
+    // Clustered: the slice bitmasks of a batch fit the shared array (deferred_shared.h).
+    if (slices_ > 0 && !listsOnly_) batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / slices_);
     for (uint32_t first = 0; first == 0 || first < lights; first += batch) {
         if (first > 0) {
             // The next batch adds to hdr and the tile statistics that this one wrote.

@@ -24,25 +24,36 @@ class SceneGpu;
 
 class TiledLighting {
   public:
-    TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug) : ctx_(ctx), scene_(scene), debug_(debug) {}
+    // binned (--light-cull binned): each tile tests only its candidates (core/lightassign/tile_candidates.h).
+    // slices > 0 (--light-assign clustered): each sample takes only its depth slice's lights.
+    TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices)
+        : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices) {}
     ~TiledLighting();
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
     void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false);
     void prepare(FrameGraph& graph);
+    // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
+    uint64_t candidates() const { return candidateCount_; }
 
   private:
     void record(PassContext& pc);
     void dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end);
     std::string passName() const;
     std::string shaderName() const;
+    void uploadCandidates(FrameGraph& graph);
     GpuContext& ctx_;
     SceneGpu& scene_;
     bool debug_;
+    bool binned_ = true;
+    uint32_t slices_ = 0;
     bool listsOnly_ = false;
+    uint32_t maxCandidates_ = 0; // binned: the most candidates of any tile (the batches' range)
+    uint64_t candidateCount_ = 0;
     const DeferredTargets* t_ = nullptr;
     PassSet set_;
     Buffer listOffsets_; // transparent lists' per-tile offsets (blended scenes)
+    Buffer candidates_;  // binned culling's candidates (a 16-byte header otherwise)
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -1,6 +1,7 @@
 #include "forwardplus/forwardplus_debug.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -9,18 +10,45 @@
 
 namespace tp::fp {
 
-TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights) {
+TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights,
+                          const std::vector<uint32_t>& candidates) {
     TileListSummary s;
-    for (const gpu::FpTileLists& t : tiles) {
+    for (size_t i = 0; i < tiles.size(); ++i) {
+        const gpu::FpTileLists& t = tiles[i];
         bool sky = t.nearDepth <= 0.0f;
         s.skyTiles += sky;
-        if (list == 1 || !sky) s.tested += double(localLights);
+        if (list == 1 || !sky) s.tested += double(candidates.empty() ? localLights : candidates[i]);
         s.stored += t.list[list].count;
         s.dropped += t.list[list].dropped;
         s.max = std::max(s.max, t.list[list].count);
     }
     s.passed = s.stored + s.dropped;
     s.mean = tiles.empty() ? 0.0 : s.stored / double(tiles.size());
+    return s;
+}
+
+ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
+                                 const std::vector<uint32_t>& masks, uint32_t slices) {
+    ClusterSummary s;
+    double clusters = 0.0, inClusters = 0.0;
+    for (size_t t = 0; t + 1 < maskOffsets.size() && t < tiles.size(); ++t) {
+        const uint32_t stride = (maskOffsets[t + 1] - maskOffsets[t]) / slices;
+        const uint32_t words = std::min((tiles[t].list[0].count + 31) / 32, stride);
+        for (uint32_t sl = 0; sl < slices; ++sl) {
+            uint32_t n = 0;
+            for (uint32_t w = 0; w < words; ++w) {
+                size_t i = size_t(maskOffsets[t]) + size_t(sl) * stride + w;
+                if (i < masks.size()) n += uint32_t(std::popcount(masks[i]));
+            }
+            s.bits += n;
+            s.max = std::max(s.max, n);
+            if (tiles[t].nearDepth > 0.0f) {
+                clusters += 1.0;
+                inClusters += n;
+            }
+        }
+    }
+    s.mean = clusters > 0.0 ? inClusters / clusters : 0.0;
     return s;
 }
 

@@ -21,7 +21,20 @@ struct TileListSummary {
     double dropped = 0.0;
 };
 
-TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights);
+// `candidates`: per tile, the lights it tests (binned culling); empty: every tile tests all
+// `localLights`.
+TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights,
+                          const std::vector<uint32_t>& candidates = {});
+
+// Clustered: lights per (tile, slice) cluster from the read-back bitmasks, over the
+// clusters of tiles with geometry (a sky tile's clusters only serve blended surfaces).
+struct ClusterSummary {
+    double mean = 0.0; // lights per cluster
+    uint32_t max = 0;
+    double bits = 0.0; // set bits in all masks
+};
+ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
+                                 const std::vector<uint32_t>& masks, uint32_t slices);
 
 // Lights per tile (list 0 opaque, 1 transparent) on light assignment's one heat-map scale
 // (core/lightassign/heat_map.h); tiles that dropped lights (overflow of the "fixed" layout)

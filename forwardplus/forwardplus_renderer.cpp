@@ -18,6 +18,7 @@
 #include "core/lightassign/compact_layout.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_candidates.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -40,11 +41,20 @@ class ForwardPlusRenderer final : public Renderer {
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
         layout_ = layoutFromName(settings_.text("light-lists"));
+        binned_ = settings_.text("light-cull") == "binned";
+        clustered_ = settings_.text("light-assign") == "clustered";
+        slices_ = settings_.integer("slices");
+        if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
+            throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
+                                settings_.text("light-lists") + "')");
         grid_ = la::makeTileGrid(settings_.width, settings_.height, settings_.integer("tile"));
-        // Two lists only when something is blended (and drawn).
-        twoLists_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
+        // Two lists only when something is blended (and drawn); clustered has one list per
+        // tile whose span covers the blended surfaces too.
+        blendPass_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
+        twoLists_ = blendPass_ && !clustered_;
         numLists_ = twoLists_ ? 2 : 1;
         classes_ = la::classifyLights(scene_.lightsGpu());
+        if (layout_ != TP_FP_LAYOUT_FIXED || binned_) boundLists();
         sizeLists();
     }
 
@@ -79,6 +89,9 @@ class ForwardPlusRenderer final : public Renderer {
         indices_ = graph.createBuffer("light_indices", indexBytes_, indexPurpose_);
         if (layout_ == TP_FP_LAYOUT_LINKED)
             counter_ = graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
+        if (clustered_)
+            masks_ = graph.createBuffer("cluster_masks", std::max<uint64_t>(maskWords_ * 4, 16),
+                                        "per tile and depth slice: a bitmask over the tile's list");
 
         std::vector<PassUse> prepassUses = {{depthSrc, Use::DepthAttachment}};
         if (msaa) prepassUses.push_back({depth_, Use::DepthResolve});
@@ -95,20 +108,23 @@ class ForwardPlusRenderer final : public Renderer {
                                          {indices_, Use::StorageWrite, TP_FP_BINDING_INDICES}};
         if (layout_ == TP_FP_LAYOUT_LINKED)
             cullUses.push_back({counter_, Use::StorageWrite, TP_FP_BINDING_COUNTER});
+        if (clustered_) cullUses.push_back({masks_, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
         graph.addPass("light_culling", cullUses, [this](PassContext& pc) { recordCulling(pc); });
 
         std::vector<PassUse> opaqueUses = {{color, Use::ColorAttachment},
                                            {depthSrc, Use::DepthTest},
                                            {tiles_, Use::StorageRead, TP_FP_BINDING_TILES},
                                            {indices_, Use::StorageRead, TP_FP_BINDING_INDICES}};
-        if (msaa && !twoLists_) opaqueUses.push_back({hdr_, Use::ColorResolve});
+        if (clustered_) opaqueUses.push_back({masks_, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
+        if (msaa && !blendPass_) opaqueUses.push_back({hdr_, Use::ColorResolve});
         graph.addPass("forward_opaque", opaqueUses, [this](PassContext& pc) { recordShading(pc, false); });
 
-        if (twoLists_) {
+        if (blendPass_) {
             std::vector<PassUse> uses = {{color, Use::ColorAttachment},
                                          {depthSrc, Use::DepthTest},
                                          {tiles_, Use::StorageRead, TP_FP_BINDING_TILES},
                                          {indices_, Use::StorageRead, TP_FP_BINDING_INDICES}};
+            if (clustered_) uses.push_back({masks_, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
             if (msaa) uses.push_back({hdr_, Use::ColorResolve});
             graph.addPass("forward_transparent", uses, [this](PassContext& pc) { recordShading(pc, true); });
         }
@@ -118,6 +134,7 @@ class ForwardPlusRenderer final : public Renderer {
         graph.exportResource("fp_tile_lists", tiles_);
         graph.exportResource("fp_light_indices", indices_);
         if (layout_ == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
+        if (clustered_) graph.exportResource("fp_cluster_masks", masks_);
     }
 
     void prepare(FrameGraph& graph) override {
@@ -133,6 +150,11 @@ class ForwardPlusRenderer final : public Renderer {
         if (layout_ == TP_FP_LAYOUT_LINKED) {
             std::vector<uint8_t> c = readbackBuffer(ctx_, graph.buffer(counter_));
             std::memcpy(&nodesUsed_, c.data(), sizeof(uint32_t));
+        }
+        if (clustered_) {
+            std::vector<uint8_t> m = readbackBuffer(ctx_, graph.buffer(masks_));
+            maskBits_.resize(m.size() / 4);
+            std::memcpy(maskBits_.data(), m.data(), maskBits_.size() * 4);
         }
         collected_ = true;
     }
@@ -157,33 +179,52 @@ class ForwardPlusRenderer final : public Renderer {
         add("local_lights", double(classes_.local.size()));
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(slotCount_));
+        add("culling_dispatches", double(cullDispatches_)); // batches of candidates (lavapipe's loop limit)
+        if (binned_) add("binned_candidates", double(candidates_.size()));
+        if (clustered_) {
+            add("slices", double(slices_));
+            add("cluster_mask_words", double(maskWords_));
+        }
+        const std::vector<uint32_t> none, &tested = binned_ ? tileBound_ : none;
         if (collected_) {
-            fp::TileListSummary o = fp::summarize(tileLists_, 0, classes_.local.size());
+            fp::TileListSummary o = fp::summarize(tileLists_, 0, classes_.local.size(), tested);
             add("lights_per_tile_mean", o.mean);
             add("lights_per_tile_max", double(o.max));
             add("tiles_without_geometry", double(o.skyTiles));
-            double tested = o.tested, kept = o.passed, dropped = o.dropped, stored = o.stored;
+            double testedSum = o.tested, kept = o.passed, dropped = o.dropped, stored = o.stored;
             if (twoLists_) {
-                fp::TileListSummary t = fp::summarize(tileLists_, 1, classes_.local.size());
+                fp::TileListSummary t = fp::summarize(tileLists_, 1, classes_.local.size(), tested);
                 add("transparent_lights_per_tile_mean", t.mean);
                 add("transparent_lights_per_tile_max", double(t.max));
-                tested += t.tested;
+                testedSum += t.tested;
                 kept += t.passed;
                 dropped += t.dropped;
                 stored += t.stored;
             }
-            add("lights_tested", tested);
+            add("lights_tested", testedSum);
             add("lights_kept", kept);
             add("lights_stored", stored);
             add("lights_dropped", dropped);
+            if (clustered_) {
+                fp::ClusterSummary c = fp::summarizeClusters(tileLists_, maskOffsets_, maskBits_, slices_);
+                add("lights_per_cluster_mean", c.mean);
+                add("lights_per_cluster_max", double(c.max));
+                add("cluster_light_bits", c.bits);
+            }
             if (layout_ == TP_FP_LAYOUT_LINKED) {
                 add("linked_nodes_used", double(nodesUsed_));
                 add("linked_pool_nodes", double(poolNodes_));
             }
         }
-        if (!twoLists_)
+        if (!blendPass_)
             s.leftOut.push_back({"transparent light list, forward_transparent pass and their memory",
                                  "the scene has no blended materials"});
+        else if (clustered_)
+            s.leftOut.push_back({"the second (transparent) light list per tile",
+                                 "clustered: one list spans the tile from the near plane, and blended surfaces "
+                                 "look up their own depth slice"});
+        if (!clustered_)
+            s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
         if (settings_.msaa == 1)
             s.leftOut.push_back({"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
         if (!scene_.hasDraws(DrawFilter::Mask))
@@ -199,6 +240,44 @@ class ForwardPlusRenderer final : public Renderer {
     }
 
   private:
+    // The conservative tile rectangle of every local light (CPU, once per configuration: the
+    // lights and the camera are fixed for a run), counted per tile: the compact layout's
+    // bound; with binned culling also each tile's candidates, in ascending light order.
+    void boundLists() {
+        // The uploaded (camera-relative) view and lights: what the culling shader tests.
+        const gpu::FrameUniforms& f = scene_.shadingFrame();
+        std::vector<la::TileRect> rects =
+            la::conservativeTileRects(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local);
+        tileBound_ = la::countTileRects(grid_, rects);
+        la::CompactLayout compact = la::makeCompactLayout(tileBound_);
+        tileOffsets_ = std::move(compact.offsets);
+        boundSlots_ = compact.slots;
+        // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
+        if (boundSlots_ > 0xffffffffull - classes_.local.size() - grid_.count() - 64)
+            throw RendererError("the tile lists need " + std::to_string(boundSlots_) +
+                                " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
+                                "fewer lights");
+        if (binned_) candidates_ = la::tileCandidates(grid_, rects, classes_.local, tileOffsets_);
+        if (clustered_) sizeMasks();
+    }
+
+    // Clustered: per tile, `slices` rows of ceil(bound / 32) words (a bit per slot of its list).
+    void sizeMasks() {
+        maskOffsets_.assign(grid_.count() + 1, 0);
+        uint64_t words = 0;
+        for (size_t t = 0; t < tileBound_.size(); ++t) {
+            maskOffsets_[t] = uint32_t(std::min<uint64_t>(words, 0xffffffffu));
+            words += uint64_t(slices_) * ((tileBound_[t] + 31) / 32);
+        }
+        maskOffsets_.back() = uint32_t(std::min<uint64_t>(words, 0xffffffffu));
+        maskWords_ = words;
+        if (maskWords_ * 4 > ctx_.caps.maxStorageBufferRange)
+            throw RendererError("the cluster bitmasks need " + std::to_string(maskWords_ * 4) +
+                                " bytes, more than maxStorageBufferRange (" +
+                                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
+                                "; use fewer --slices, a larger --tile, a lower --res or fewer lights");
+    }
+
     // Sizes the index buffer of the chosen layout, against maxStorageBufferRange.
     void sizeLists() {
         const uint64_t tileCount = grid_.count();
@@ -209,12 +288,7 @@ class ForwardPlusRenderer final : public Renderer {
             indexPurpose_ = "light indices, " + std::to_string(settings_.integer("tile-capacity")) + " slots per tile" +
                             (twoLists_ ? " and list" : "");
         } else {
-            // The uploaded (camera-relative) view and lights: what the culling shader tests.
-            const gpu::FrameUniforms& f = scene_.shadingFrame();
-            tileBound_ = la::conservativeTileBound(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local);
-            la::CompactLayout compact = la::makeCompactLayout(tileBound_);
-            tileOffsets_ = std::move(compact.offsets);
-            const uint64_t total = compact.slots;
+            const uint64_t total = boundSlots_;
             listStride_ = total;
             slotCount_ = total * numLists_;
             if (layout_ == TP_FP_LAYOUT_COMPACT) {
@@ -244,17 +318,29 @@ class ForwardPlusRenderer final : public Renderer {
         data.insert(data.end(), classes_.directional.begin(), classes_.directional.end());
         data.insert(data.end(), classes_.local.begin(), classes_.local.end());
         const uint32_t offsetBase = uint32_t(data.size());
-        if (layout_ == TP_FP_LAYOUT_COMPACT) data.insert(data.end(), tileOffsets_.begin(), tileOffsets_.end());
+        if (layout_ == TP_FP_LAYOUT_COMPACT || binned_)
+            data.insert(data.end(), tileOffsets_.begin(), tileOffsets_.end());
+        const uint32_t candidateBase = uint32_t(data.size());
+        data.insert(data.end(), candidates_.begin(), candidates_.end());
+        const uint32_t maskOffsetBase = uint32_t(data.size());
+        data.insert(data.end(), maskOffsets_.begin(), maskOffsets_.end());
         data.push_back(0); // never empty
+        const uint64_t limit = ctx_.caps.maxStorageBufferRange;
+        if (sizeof(p) + data.size() * 4 > limit)
+            throw RendererError("fp_params (light classes, tile offsets, binned candidates) needs " +
+                                std::to_string(sizeof(p) + data.size() * 4) + " bytes, more than maxStorageBufferRange (" +
+                                std::to_string(limit) + ") of " + ctx_.info.name +
+                                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
         p.lights = glm::uvec4(dirCount, localCount, offsetBase, settings_.integer("tile-capacity"));
-        p.lists = glm::uvec4(uint32_t(listStride_), uint32_t(poolNodes_), 0, 0);
+        p.lists = glm::uvec4(uint32_t(listStride_), uint32_t(poolNodes_), candidateBase, maskOffsetBase);
         std::vector<uint8_t> bytes(sizeof(p) + data.size() * 4);
         std::memcpy(bytes.data(), &p, sizeof(p));
         std::memcpy(bytes.data() + sizeof(p), data.data(), data.size() * 4);
         params_ = createBufferWithData(ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        {"forwardplus", "", "fp_params",
                                         "tile grid, light classes" +
-                                            std::string(layout_ == TP_FP_LAYOUT_COMPACT ? ", per-tile offsets" : "")});
+                                            std::string(layout_ == TP_FP_LAYOUT_COMPACT || binned_ ? ", per-tile offsets" : "") +
+                                            std::string(binned_ ? ", binned candidates per tile" : "")});
     }
 
     void createDescriptors(FrameGraph& graph) {
@@ -289,11 +375,15 @@ class ForwardPlusRenderer final : public Renderer {
             prepassMask_ = createGraphicsPipeline(ctx_, pre);
         }
 
-        std::string cullName = "fp_cull_" + settings_.text("light-lists") + (msaa ? "_ms" : "") + "_comp";
+        std::string cullName = "fp_cull_" + settings_.text("light-lists") + (clustered_ ? "_clustered" : "") +
+                               (msaa ? "_ms" : "") + "_comp";
         std::vector<SpecConstant> cullSpec = scene_.specConstants(AlphaMode::Opaque);
         cullSpec.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
         cullSpec.push_back({TP_FP_SPEC_SAMPLES, settings_.msaa});
         cullSpec.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
+        cullSpec.push_back({TP_FP_SPEC_BINNED, binned_ ? 1u : 0u});
+        cullSpec.push_back({TP_FP_SPEC_SLICES, slices_});
+        cullSpec.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, blendPass_ ? 1u : 0u});
         cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_, &cullSet_);
 
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
@@ -302,7 +392,8 @@ class ForwardPlusRenderer final : public Renderer {
             // --msaa-shading: pixel runs once per pixel at its centre (no `sample` inputs, no
             // sample shading; the EQUAL depth test against the per-sample prepass gives each
             // sample its coverage, masked materials included); sample shades every sample.
-            d.fragmentShader = shadesPerPixelUnderMsaa(settings_) ? "fp_shading_pixel_frag" : "fp_shading_frag";
+            d.fragmentShader = std::string(clustered_ ? "fp_shading_clustered" : "fp_shading") +
+                               (shadesPerPixelUnderMsaa(settings_) ? "_pixel_frag" : "_frag");
             d.colorFormats = {kHdrFormat};
             d.samples = samples;
             d.sampleShading = shadesPerSample(settings_);
@@ -315,6 +406,10 @@ class ForwardPlusRenderer final : public Renderer {
             d.specConstants.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
             d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
             d.specConstants.push_back({TP_FP_SPEC_LAYOUT, layout_});
+            if (clustered_) {
+                d.specConstants.push_back({TP_FP_SPEC_SLICES, slices_});
+                d.specConstants.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, blendPass_ ? 1u : 0u});
+            }
             shade_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
         }
     }
@@ -329,19 +424,55 @@ class ForwardPlusRenderer final : public Renderer {
         endRendering(pc);
     }
 
+    // Candidates per culling dispatch: one invocation culls a whole tile, and lavapipe ends
+    // an invocation after 65,535 loop iterations (forwardplus_shared.h); a candidate costs
+    // one iteration (two for linked: count, then fill), plus, clustered, up to one per slice
+    // and a slice row write per 32 stored.
+    uint32_t cullBatch() const {
+        const uint32_t perCandidate = (layout_ == TP_FP_LAYOUT_LINKED ? 2 : 1) + (clustered_ ? slices_ + 1 : 0);
+        return std::max(1u, TP_FP_CULL_LOOP_BUDGET / perCandidate);
+    }
+
     void recordCulling(PassContext& pc) {
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
         scene_.bindSceneSet(pc.cmd, cullLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
         vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_.set, 0,
                                 nullptr);
-        vkCmdDispatch(pc.cmd, grid_.tilesX, grid_.tilesY, 1);
+        const uint32_t most = binned_ ? (tileBound_.empty() ? 0 : *std::max_element(tileBound_.begin(), tileBound_.end()))
+                                      : uint32_t(classes_.local.size());
+        const uint32_t batch = cullBatch();
+        const uint32_t batches = std::max(1u, (most + batch - 1) / batch);
+        for (uint32_t i = 0; i < batches; ++i) {
+            if (i > 0) {
+                // Hand-written (the graph orders passes, not dispatches within one): the next
+                // batch continues the lists, counts and slice words this one wrote.
+                VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+                mb.srcStageMask = mb.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+                mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+                mb.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+                dep.memoryBarrierCount = 1;
+                dep.pMemoryBarriers = &mb;
+                vkCmdPipelineBarrier2(pc.cmd, &dep);
+            }
+            // linked prepends each batch, so it takes them last to first.
+            const uint32_t b = layout_ == TP_FP_LAYOUT_LINKED ? batches - 1 - i : i;
+            gpu::DrawPush push{0, 0, 0, 0};
+            push.TP_FP_CULL_FIRST = b * batch;
+            push.TP_FP_CULL_END = b + 1 == batches ? 0xffffffffu : (b + 1) * batch;
+            push.TP_FP_CULL_INITIAL = i == 0 ? 1u : 0u;
+            vkCmdPushConstants(pc.cmd, cullLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+            // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
+            vkCmdDispatch(pc.cmd, (grid_.tilesX + 7) / 8, (grid_.tilesY + 7) / 8, 1);
+        }
+        cullDispatches_ = batches;
     }
 
     void recordShading(PassContext& pc, bool transparent) {
         const bool msaa = settings_.msaa > 1;
         ColorTarget color;
         color.image = msaa ? hdrMsaa_ : hdr_;
-        const bool lastPass = transparent || !twoLists_;
+        const bool lastPass = transparent || !blendPass_;
         if (msaa && lastPass) color.resolve = hdr_;
         color.clear = !transparent;
         DepthTarget depth{msaa ? depthMsaa_ : depth_, {}, false, true};
@@ -365,7 +496,15 @@ class ForwardPlusRenderer final : public Renderer {
     bool twoLists_ = false;
     uint32_t numLists_ = 1;
     la::LightClasses classes_;
-    std::vector<uint32_t> tileBound_, tileOffsets_;
+    bool binned_ = true, clustered_ = false, blendPass_ = false;
+    uint32_t slices_ = 16;
+    std::vector<uint32_t> maskOffsets_;
+    uint64_t maskWords_ = 0;
+    ResourceHandle masks_;
+    std::vector<uint32_t> maskBits_; // read back: clustered statistics
+    std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
+    uint64_t boundSlots_ = 0;
+    uint32_t cullDispatches_ = 0;
     uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
     std::string indexPurpose_;
 

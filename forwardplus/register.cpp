@@ -1,6 +1,8 @@
 // Forward+ as the rest of the program sees it: its name, its knobs, its precision model for
 // `triptych stress`. This file is the only place outside forwardplus/ that needs to change
 // when Forward+ gains a knob: nowhere.
+#include "core/lightassign/assign_knob.h"
+#include "core/lightassign/cull_knob.h"
 #include "core/lightassign/tile_knob.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
@@ -11,6 +13,9 @@ namespace {
 
 KnobSchema forwardPlusKnobs() {
     return {la::tileSizeKnob(),
+            la::lightCullKnob(),
+            la::lightAssignKnob(),
+            la::slicesKnob(),
             msaaShadingKnob(),
             Knob::choice("light-lists", {"compact", "fixed", "linked"},
                          "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "

@@ -18,6 +18,21 @@ namespace tp::la {
 // never exceed this bound - for either depth range (opaque or transparent).
 // Computed per light as a column range times a row range: O(lights * (tilesX + tilesY)).
 // view/proj/lights must be what the GPU tests (the uploaded, camera-relative ones).
+// The tiles a light may touch: columns [x0, x1] x rows [y0, y1] (empty when x0 > x1).
+struct TileRect {
+    int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+    bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+// Per local light (in `local` order), the rectangle of tiles whose depth-unbounded frustum
+// its padded sphere meets; conservativeTileBound counts these rectangles per tile.
+std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view, const glm::mat4& proj,
+                                            const std::vector<gpu::LightGpu>& lights,
+                                            const std::vector<uint32_t>& local);
+
+// How many of `rects` cover each tile.
+std::vector<uint32_t> countTileRects(const TileGrid& grid, const std::vector<TileRect>& rects);
+
 std::vector<uint32_t> conservativeTileBound(const TileGrid& grid, const glm::mat4& view,
                                             const glm::mat4& proj,
                                             const std::vector<gpu::LightGpu>& lights,

@@ -24,6 +24,7 @@ using std::sin;
 #define TP_DEF_BINDING_TILE_STATS 8  // buffer uvec4 per tile: opaque lights, transparent lights, edge pixels, overflow
 #define TP_DEF_BINDING_EDGE_MASK 9   // sampler: 1x edge mask (volumes lighting under MSAA)
 #define TP_DEF_BINDING_LIST_OFFSETS 10 // buffer uint[tileCount + 1]: compact transparent lists' per-tile offsets
+#define TP_DEF_BINDING_CANDIDATES 11   // buffer uint[]: binned culling's per-tile candidates (TP_DEF_CAND_*)
 
 // ---- set 1 of the hybrid forward pass (blended materials) ----
 #define TP_DEF_FWD_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
@@ -34,13 +35,31 @@ using std::sin;
 #define TP_DEF_SPEC_SAMPLES 13       // MSAA samples of the G-buffer
 #define TP_DEF_SPEC_SPHERE_SCALE 14  // float bits: volumeSphereVertex scale that circumscribes the unit sphere
 #define TP_DEF_SPEC_EVERY_SAMPLE 15  // 1: every pixel with geometry is lit per sample (--msaa-shading sample)
+#define TP_DEF_SPEC_BINNED 16        // 1: a tile tests only its candidates (--light-cull binned), 0: every light
+#define TP_DEF_SPEC_SLICES 17        // clustered: depth slices per tile; 0: tiled (--light-assign tiled)
+
+// Clustered deferred: per slice, a bitmask over the tile's shared list of this batch, in
+// shared memory (8 KiB beside the 16 KiB list): slices * ceil(lights / 32) words, so a
+// batch holds at most TP_DEF_CLUSTER_MASK_WORDS * 32 / slices lights.
+#define TP_DEF_CLUSTER_MASK_WORDS 2048u
+
+// The candidates buffer (uploaded once per configuration, core/lightassign/tile_candidates.h):
+// word TP_DEF_CAND_DIRECTIONAL = D, the directional lights (every tile's first candidates);
+// TP_DEF_CAND_OFFSETS = first word of the tileCount + 1 run offsets; TP_DEF_CAND_RUNS = first
+// word of the runs; the D directional light indices start at word TP_DEF_CAND_HEADER. Tile
+// t's candidate p is directional p when p < D, else run word offsets[t] + p - D.
+#define TP_DEF_CAND_DIRECTIONAL 0u
+#define TP_DEF_CAND_OFFSETS 1u
+#define TP_DEF_CAND_RUNS 2u
+#define TP_DEF_CAND_HEADER 4u
 
 // Lights one tile can hold in shared memory: 4096 uints = 16 KiB of the 32 KiB lavapipe
 // offers. The tiled lighting pass never meets more: it takes the lights in batches of at
 // most this many, one dispatch each (deferred/tiled_lighting.cpp says why and how big).
 #define TP_DEF_TILE_LIGHT_CAPACITY 4096u
 // The batch of one tiled lighting dispatch: lights [first, end) of the scene's light
-// buffer, in the scene's DrawPush push constant (the dispatches share one pipeline).
+// buffer (binned: candidates [first, end) of each tile), in the scene's DrawPush push
+// constant (the dispatches share one pipeline).
 #define TP_DEF_LIGHT_FIRST pad0
 #define TP_DEF_LIGHT_END pad1
 

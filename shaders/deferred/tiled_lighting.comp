@@ -54,6 +54,27 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_LIST_OFFSETS) readonl
 #ifdef TP_DEBUG
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEBUG, rgba32f) uniform writeonly image2D debugOut;
 #endif
+// Binned culling (--light-cull binned): a tile tests only its candidates (the directional
+// lights, then the point/spot lights whose conservative tile rectangle covers it);
+// otherwise every light of the scene.
+layout(constant_id = TP_DEF_SPEC_BINNED) const bool kBinned = false;
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_CANDIDATES) readonly buffer Candidates {
+    uint cand[]; // deferred_shared.h: TP_DEF_CAND_*
+};
+
+uint candidateCount(uint tileIndex) {
+    if (!kBinned) return frame.viewport.z;
+    uint offsets = cand[TP_DEF_CAND_OFFSETS];
+    return cand[TP_DEF_CAND_DIRECTIONAL] + cand[offsets + tileIndex + 1u] - cand[offsets + tileIndex];
+}
+
+uint candidateLight(uint tileIndex, uint p) {
+    if (!kBinned) return p;
+    uint directional = cand[TP_DEF_CAND_DIRECTIONAL];
+    if (p < directional) return cand[TP_DEF_CAND_HEADER + p];
+    return cand[cand[TP_DEF_CAND_RUNS] + cand[cand[TP_DEF_CAND_OFFSETS] + tileIndex] + p - directional];
+}
+
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TILE_STATS) buffer TileStats {
     uvec4 tileStats[]; // per tile: opaque lights, transparent lights, edge pixels, overflow
 };
@@ -62,6 +83,12 @@ shared uint sCount;
 shared uint sTransparentCount;
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
+// Clustered (kSlices > 0): bit i of slice s's row is set when sLights[i] can reach the
+// slice (include/light_assign.glsl: laSliceOf over the tile's opaque depth range, no front
+// slice: only opaque surfaces are lit here). Rows are ceil(count / 32) words.
+layout(constant_id = TP_DEF_SPEC_SLICES) const uint kSlices = 0u;
+shared uint sMask[TP_DEF_CLUSTER_MASK_WORDS];
+shared float sSliceNear, sSliceScale;
 
 // The first batch writes hdr, the tile statistics and the transparent lists; later
 // batches add to them.
@@ -74,8 +101,39 @@ vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
     SurfaceSample ss = readSurface(p, s, reconstructPosition(p, offset, depth));
     vec3 sum = firstBatch() ? ambientEmissive(p, s) : vec3(0.0);
     uint n = min(sCount, TP_DEF_TILE_LIGHT_CAPACITY);
+    if (kSlices > 0u) {
+        // The lights of this sample's cluster: its slice's bits over the tile list.
+        float dist = -(frame.view * vec4(ss.position, 1.0)).z;
+        uint words = (n + 31u) / 32u;
+        uint row = laSliceOf(dist, sSliceNear, sSliceScale, kSlices, false) * words;
+        for (uint w = 0u; w < words; ++w) {
+            uint bits = sMask[row + w];
+            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+                int lsb = findLSB(bits);
+                bits &= bits - 1u;
+                sum += evalLight(lights[sLights[w * 32u + uint(lsb)]], ss, kHasSpot);
+            }
+        }
+        return sum;
+    }
     for (uint i = 0u; i < n; ++i) sum += evalLight(lights[sLights[i]], ss, kHasSpot);
     return sum;
+}
+
+// Clustered: the slices each light of the shared list reaches (after the culling's barrier;
+// a barrier must follow before shading).
+void markSlices() {
+    uint n = min(sCount, TP_DEF_TILE_LIGHT_CAPACITY);
+    uint words = (n + 31u) / 32u;
+    for (uint i = gl_LocalInvocationIndex; i < n; i += TP_GROUP * TP_GROUP) {
+        LightGpu light = lights[sLights[i]];
+        vec4 sphere = lightSphereView(light, frame.view);
+        // The shared list holds the directional lights too: they reach every slice.
+        uvec2 range = light.type == TP_LIGHT_DIRECTIONAL
+                          ? uvec2(0u, kSlices - 1u)
+                          : laLightSlices(sphere.xyz, sphere.w, sSliceNear, sSliceScale, kSlices, false);
+        for (uint sl = range.x; sl <= range.y; ++sl) atomicOr(sMask[sl * words + (i >> 5u)], 1u << (i & 31u));
+    }
 }
 
 void writeHdr(ivec2 p, uint s, vec3 c) {
@@ -123,29 +181,32 @@ void cull(uvec2 tile, bool hasGeometry) {
     vec2 size = vec2(frame.viewport.xy);
     float nearDepth = laTileNearDepth(), farDepth = laTileFarDepth();
     TileFrustum f = laOpaqueFrustum(tile, kTileSize, size, frame.invProj, nearDepth, farDepth);
+    uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
+    uint candidates = candidateCount(tileIndex);
 #ifdef TP_TRANSPARENT
     TileFrustum ft = laTransparentFrustum(tile, kTileSize, size, frame.invProj,
                                           laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth));
-    uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
     uint offset = tOffsets[tileIndex];
     uint capacity = tOffsets[tileIndex + 1u] - offset;
     uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
 #endif
 #ifndef TP_LISTS_ONLY
-    uint end = min(draw.TP_DEF_LIGHT_END, frame.viewport.z);
+    uint end = min(draw.TP_DEF_LIGHT_END, candidates);
     for (uint i = draw.TP_DEF_LIGHT_FIRST + gl_LocalInvocationIndex; hasGeometry && i < end; i += groupSize) {
-        if (lightInTile(lights[i], f, frame.view)) {
+        uint light = candidateLight(tileIndex, i);
+        if (lightInTile(lights[light], f, frame.view)) {
             uint slot = atomicAdd(sCount, 1u);
-            if (slot < TP_DEF_TILE_LIGHT_CAPACITY) sLights[slot] = i;
+            if (slot < TP_DEF_TILE_LIGHT_CAPACITY) sLights[slot] = light;
         }
     }
 #endif
 #ifdef TP_TRANSPARENT
-    // Every light, once (first batch): a loop of lights / 64 iterations per invocation.
-    for (uint i = gl_LocalInvocationIndex; firstBatch() && i < frame.viewport.z; i += groupSize) {
-        if (lightInTile(lights[i], ft, frame.view)) {
+    // Every candidate, once (first batch): a loop of candidates / 64 iterations per invocation.
+    for (uint i = gl_LocalInvocationIndex; firstBatch() && i < candidates; i += groupSize) {
+        uint light = candidateLight(tileIndex, i);
+        if (lightInTile(lights[light], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
-            if (slot < capacity) tLists[start + slot] = i; // beyond: counted as dropped
+            if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
         }
     }
 #endif
@@ -169,12 +230,25 @@ void main() {
         sTransparentCount = 0u;
         sEdges = 0u;
     }
+    if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
+        for (uint i = gl_LocalInvocationIndex; i < TP_DEF_CLUSTER_MASK_WORDS; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
     barrier();
     laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
     barrier();
+    if (kSlices > 0u && gl_LocalInvocationIndex == 0u) {
+        // Slices over the tile's opaque range (laSliceOf; nothing to slice without geometry).
+        bool geometry = laTileHasGeometry();
+        sSliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
+        float far = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
+        sSliceScale = laSliceScale(sSliceNear, far, kSlices, false);
+    }
     cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
     barrier();
+    if (kSlices > 0u) {
+        markSlices();
+        barrier();
+    }
     // A later batch with no light in this tile adds nothing (sCount is uniform here).
     uint shadedPixels = firstBatch() || sCount > 0u ? pixelsPerInvocation : 0u;
     for (uint k = 0u; k < shadedPixels; ++k) {

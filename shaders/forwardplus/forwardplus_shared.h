@@ -15,21 +15,31 @@ namespace tp::gpu {
 #define TP_FP_BINDING_PARAMS 2  // buffer FpParams + uint data[] (uploaded once per configuration)
 #define TP_FP_BINDING_DEPTH 3   // culling only: the prepass depth (sampler2D, or sampler2DMS with MSAA)
 #define TP_FP_BINDING_COUNTER 4 // culling only, "linked" layout: node-pool allocation counter
+#define TP_FP_BINDING_CLUSTER_MASKS 5 // clustered only: buffer uint[]: per tile and slice, a bitmask over the tile list
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TILE_SIZE 12 // tile size in pixels (8, 16, 32), culling and shading
 #define TP_FP_SPEC_SAMPLES 13   // culling: depth samples per pixel
 #define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
 #define TP_FP_SPEC_LAYOUT 15    // TP_FP_LAYOUT_*
+#define TP_FP_SPEC_BINNED 16    // culling: 1 = test each tile's candidates (--light-cull binned), 0 = every light
+#define TP_FP_SPEC_SLICES 17    // clustered: depth slices per tile
+#define TP_FP_SPEC_SPAN_FROM_NEAR 18 // clustered: 1 = a tile's span starts at the near plane (blended surfaces)
 
 #define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted
 #define TP_FP_LAYOUT_LINKED 2u  // head per tile + node pool with an atomic counter
 
-// Lights are tested in chunks of TP_FP_CHUNK_WORDS * 32; each chunk's survivors are a
-// bitmask in shared memory, compacted in light-index order (deterministic lists).
-#define TP_FP_CHUNK_WORDS 32u
-#define TP_FP_CHUNK_LIGHTS (TP_FP_CHUNK_WORDS * 32u)
+// The culling takes each tile's candidates in batches, one dispatch each, in the scene's
+// DrawPush push constant: candidates [first, end), and initial = 1 on the pass's first
+// dispatch (the lists start empty). lavapipe ends an invocation after 65,535 loop iterations
+// in total (deferred/tiled_lighting.h), and one invocation culls a whole tile.
+#define TP_FP_CULL_FIRST pad0
+#define TP_FP_CULL_END pad1
+#define TP_FP_CULL_INITIAL pad2
+// Loop iterations one culling dispatch may spend on its candidates: half of lavapipe's
+// limit (the depth bounds take at most 32 * 32 * 4 + 32 * 32 + 32 more).
+#define TP_FP_CULL_LOOP_BUDGET 32768u
 
 // What the culling pass leaves for each tile. list[TP_LA_OPAQUE] is bounded by the tile's
 // [min, max] depth, list[TP_LA_TRANSPARENT] spans the near plane to the tile's farthest depth
@@ -41,18 +51,22 @@ TP_STRUCT(FpTileLists) {
     LaListHeader list[2];
     float nearDepth; // opaque depth bounds, reverse-Z: nearDepth >= farDepth;
     float farDepth;  // nearDepth == 0: no geometry in the tile (sky), opaque list empty
-    uint pad0;
-    uint pad1;
+    float sliceNear;  // clustered: view distance of the nearest opaque depth (1e30 without geometry; light_assign.glsl: laSliceOf)
+    float sliceScale; // clustered: range slices per unit of log(distance / sliceNear); 0 when tiled
 };
 
 // Uploaded once per configuration; followed in the same buffer by uint data[]:
 //   data[0 .. directionalCount)                     directional light indices (shaded by every fragment)
 //   data[directionalCount .. + localCount)          point/spot light indices (culled)
-//   data[tileOffsetBase .. + tileCount + 1)         compact layout: first slot of each tile (prefix sum)
+//   data[tileOffsetBase .. + tileCount + 1)         compact layout or binned culling: first slot of each
+//                                                   tile (prefix sum of the conservative bound)
+//   data[candidateBase + offset[t] .. + offset[t+1]) binned culling: tile t's candidate light indices, ascending
+//   data[maskOffsetBase .. + tileCount + 1)         clustered: first word of tile t's slice bitmasks in the
+//                                                   mask buffer; (next - first) / slices words per slice
 TP_STRUCT(FpParams) {
     uvec4 tiles;  // tilesX, tilesY, tileCount, tileSize
     uvec4 lights; // directionalCount, localCount, tileOffsetBase, tileCapacity (fixed layout)
-    uvec4 lists;  // listStride (slots of list 0 before list 1), poolNodes (linked), unused, unused
+    uvec4 lists;  // listStride (slots of list 0 before list 1), poolNodes (linked), candidateBase (binned), maskOffsetBase (clustered)
 };
 
 #ifndef TP_GLSL

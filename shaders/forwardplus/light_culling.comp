@@ -1,26 +1,27 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Forward+ light culling: one workgroup per tile (tile size 8, 16 or 32: a specialization
-// constant), 64 invocations.
-//  1. Depth bounds: min/max over every sample of every pixel that has geometry (depth > 0);
-//     a tile with no geometry (sky) gets an empty opaque list. The transparent list (only
-//     when the scene has blended materials) spans the near plane to the tile's farthest
-//     depth, unbounded where any sample sees the sky.
-//  2. Point/spot lights are tested in chunks of TP_FP_CHUNK_LIGHTS against the tile
-//     sub-frustum's bounding box and the sub-frustum itself (include/tile_culling.glsl via light_assign.glsl);
-//     survivors set a bit in shared memory.
-//  3. Each chunk's bitmask is compacted in light-index order (a prefix of popcounts, then
-//     laStoreWord of include/light_assign.glsl for the compact and fixed layouts), so
-//     every layout stores the same lights in the same order and gives the same image.
+// Forward+ light culling: one invocation per tile (tile size 8, 16 or 32: a specialization
+// constant), 8 x 8 tiles per workgroup, no shared memory and no barrier.
+//  1. Depth bounds: min/max over every sample of every pixel of the tile that has geometry
+//     (depth > 0); a tile with no geometry (sky) gets an empty opaque list. The transparent
+//     list (only when the scene has blended materials) spans the near plane to the tile's
+//     farthest depth, unbounded where any sample sees the sky.
+//  2. The tile's candidates - every local light, or with binned culling only those whose
+//     conservative tile rectangle covers it (core/lightassign/tile_candidates.h), both in
+//     ascending light order - are tested against the sub-frustum's bounding box and the
+//     sub-frustum itself (include/tile_culling.glsl); survivors are appended in that order,
+//     so every layout and both culling modes store the same lights in the same order.
 // Directional lights are never culled: the shading pass loops over them separately.
 // Layout (one shader variant each):
 //  compact: the tile's slots [offset[t], offset[t+1]) come from a conservative CPU bound
 //           (sphere vs the depth-unbounded tile frustum), so nothing can be dropped; a
 //           count that exceeded it anyway would be reported in `dropped`, never silent.
 //  fixed:   tileCapacity slots per tile; lights beyond it are counted in `dropped`.
-//  linked:  nodes {light, next} from a pool with one atomic allocation per chunk; chunks
-//           are processed last to first and prepended, so a walk of `count` nodes from the
-//           head visits lights in index order.
+//  linked:  nodes {light, next} from a pool: the survivors are counted first, then one
+//           atomic allocation per list gives consecutive nodes, chained in light order.
+// Why one invocation per tile: lavapipe runs a workgroup as 8-lane coroutines that switch at
+// every barrier; with a workgroup per tile the barriers and the per-tile setup cost more
+// than the tests themselves (docs/clustered.md has the measurements).
 #include "include/shared.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "include/scene_bindings.glsl"
@@ -30,15 +31,22 @@
 #define TP_FP_CULL_COMPACT 1
 #endif
 
-// 64 invocations whatever the tile size: enough for the compaction (2 lists x 32 words),
-// and few enough that a barrier is cheap on lavapipe (it runs a workgroup as 8-lane
-// coroutines that switch at every barrier). Each invocation reads (tile / 8)^2 pixels.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 8, local_size_y = 8) in; // 8 x 8 tiles
 layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_SAMPLES) const int kSamples = 1;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
+// Binned (--light-cull binned): the tile tests only its candidates; otherwise every local
+// light. Same test, same order: the same lists either way.
+layout(constant_id = TP_FP_SPEC_BINNED) const bool kBinned = false;
+// Clustered (TP_FP_CLUSTERED, compact layout only): one list per tile over its depth span
+// (from the near plane when blended surfaces exist, else from its nearest depth, to its
+// farthest), and per depth slice (include/light_assign.glsl: laSliceOf) a bitmask over that
+// list: bit i of slice s is set when light i of the list can reach the slice.
+layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
+layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
 
-layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) writeonly buffer TileBlock {
+// Read back by the later dispatches of the pass (their lists continue these).
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) buffer TileBlock {
     FpTileLists tiles[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_INDICES) writeonly buffer IndexBlock {
@@ -50,210 +58,260 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
 };
 #ifdef TP_FP_DEPTH_MS
 layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2DMS depthImage;
-#else
-layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depthImage;
-#endif
-#ifdef TP_FP_DEPTH_MS
 #define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, int(s)).r
 #else
+layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depthImage;
 #define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, 0).r
 #endif
-// Candidate k is the k-th light of data[] (directional lights first, never culled).
-#define TP_LA_LIST_STORE(slot, k) indices[slot] = data[params.lights.x + (k)]
 #include "include/light_assign.glsl"
 #ifdef TP_FP_CULL_LINKED
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
     uint nodeCounter;
 };
 #endif
-
-shared TileFrustum sFrustum[2]; // opaque, transparent
-shared TileBox sBox[2];         // their view-space bounding boxes
-// Survivor bitmasks, triple-buffered by chunk so that the compact/fixed layouts need a
-// single barrier per chunk (buffer (c+1)%3 is cleared while chunk c is tested; its last
-// readers, chunk c-2's compaction, finished before chunk c-1's barrier).
-shared uint sBits[3][2][TP_FP_CHUNK_WORDS];
-shared uint sCount[2];   // survivors so far (kept + dropped)
-shared uint sDropped[2];
-shared uint sNodeBase[2]; // linked: first node of this chunk
-shared uint sKept[2];     // linked: nodes of this chunk that fit in the pool
-shared uint sHead[2];     // linked: current head
+#ifdef TP_FP_CLUSTERED
+// Each tile's rows belong to its invocation, which writes every word the shading reads
+// (words [0, ceil(count / 32)) of every slice row): no clear pass. A later dispatch reads
+// back the word an earlier one left partial.
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) buffer MaskBlock {
+    uint masks[];
+};
+// The bits of the current 32-slot word for every slice, written out once per word: a
+// survivor reaches several slices, and one store per slice and word is far cheaper on
+// lavapipe than a read-modify-write of the buffer per slice and light.
+uint gWordBits[64]; // kSlices <= 64 (core/lightassign/assign_knob.cpp)
+#endif
 
 const uint kNoNode = 0xffffffffu;
 
-void main() {
-    const uint groupSize = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-    const uint tileSize = kTileSize;
-    const uint lid = gl_LocalInvocationIndex;
-    const uvec2 tile = gl_WorkGroupID.xy;
-    const uint tileIndex = tile.y * params.tiles.x + tile.x;
-    const uint numLists = kTwoLists ? 2u : 1u;
+// The culling volumes of one list: sub-frustum and its view-space box.
+struct ListVolume {
+    TileFrustum frustum;
+    TileBox box;
+    bool tests; // false: the list stays empty (opaque list of a sky tile)
+};
 
-    laDepthBoundsBegin();
-    if (lid == 0u) {
-        for (uint l = 0u; l < 2u; ++l) {
-            sCount[l] = 0u;
-            sDropped[l] = 0u;
-            sHead[l] = kNoNode;
-        }
+ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
+    const vec2 viewportSize = vec2(frame.viewport.xy);
+    ListVolume v;
+    v.frustum = makeTileFrustum(tile, kTileSize, viewportSize, frame.invProj, nearDepth, farDepth);
+    v.box = makeTileBox(tile, kTileSize, viewportSize, frame.invProj, v.frustum);
+    v.tests = tests;
+    return v;
+}
+
+// `sphere`: lightSphereView(light), computed once per candidate for both lists.
+bool passes(LightGpu light, vec4 sphere, ListVolume v) {
+    return v.tests && sphereInTileBox(sphere, v.box) && lightSphereInTile(light, sphere, v.frustum, frame.view);
+}
+
+#ifdef TP_FP_CLUSTERED
+// Sets list slot `pos`'s bit in every slice its light's sphere (lightSphereView) reaches.
+// The slices inside the opaque range take the light only when it meets the tile's opaque
+// volume (`inOpaque`, the test a tiled opaque list makes), so an opaque fragment's cluster
+// never holds more than the tiled opaque list; the front slice (blended surfaces nearer
+// than the opaque range) and, where the tile sees the sky, the last one take it from the
+// span test alone.
+void markSlices(vec4 sphere, uint pos, float sliceNear, float sliceScale, bool inOpaque, bool openEnd) {
+    uvec2 range = laLightSlices(sphere.xyz, sphere.w, sliceNear, sliceScale, kSlices, kSpanFromNear);
+    for (uint sl = range.x; sl <= range.y; ++sl) {
+        bool front = kSpanFromNear && sl == 0u;
+        if (front || inOpaque || (openEnd && sl == kSlices - 1u)) gWordBits[sl] |= 1u << (pos & 31u);
     }
-    if (lid < TP_FP_CHUNK_WORDS) {
-        sBits[0][0][lid] = 0u;
-        sBits[0][1][lid] = 0u;
+}
+
+// Writes word `word` of every slice row and clears the bits for the next word.
+void flushWord(uint word, uint maskBase, uint maskStride) {
+    for (uint sl = 0u; sl < kSlices; ++sl) {
+        masks[maskBase + sl * maskStride + word] = gWordBits[sl];
+        gWordBits[sl] = 0u;
     }
-    barrier();
+}
+#endif
+
+// Stores light `lightIndex` at position `pos` of a list (compact/fixed: slot start + pos
+// when within capacity; linked: node start + pos, chained to the next - the last kept one
+// to `tail` - when within this batch's kept nodes).
+void store(uint lightIndex, uint pos, uint start, uint capacity, uint tail) {
+#ifdef TP_FP_CULL_LINKED
+    if (pos < capacity) {
+        indices[2u * (start + pos)] = lightIndex;
+        indices[2u * (start + pos) + 1u] = pos + 1u < capacity ? start + pos + 1u : tail;
+    }
+#else
+    if (pos < capacity) indices[start + pos] = lightIndex;
+#endif
+}
+
+LaListHeader emptyHeader() {
+    LaListHeader h;
+    h.count = 0u;
+    h.start = kNoNode; // linked: no head yet
+    h.dropped = 0u;
+    h.found = 0u;
+    return h;
+}
+
+// compact/fixed: `found` survivors so far, the first `capacity` stored from `start`.
+LaListHeader header(uint found, uint start, uint capacity) {
+    LaListHeader h;
+    h.count = min(found, capacity);
+    h.start = start;
+    h.dropped = found - h.count;
+    h.found = found;
+    return h;
+}
+
+// linked: this batch's `found` survivors, `kept` of them in nodes from `base`, in front of
+// what the earlier batches (`prev`) left.
+LaListHeader prepend(LaListHeader prev, uint found, uint base, uint kept) {
+    LaListHeader h;
+    h.count = prev.count + kept;
+    h.start = kept > 0u ? base : prev.start;
+    h.dropped = prev.dropped + found - kept;
+    h.found = prev.found + found;
+    return h;
+}
+
+void main() {
+    const uvec2 tile = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(tile, params.tiles.xy))) return;
+    const uint tileIndex = tile.y * params.tiles.x + tile.x;
 
     // 1. Depth bounds over every sample (include/light_assign.glsl).
-    uvec2 viewport = frame.viewport.xy;
-    laDepthBoundsReduce(tile, tileSize, viewport, uint(kSamples));
-    barrier();
+    const LaTileDepth depth = laTileDepthSerial(tile, kTileSize, frame.viewport.xy, uint(kSamples));
+    const float transparentFar = laTransparentFarDepth(depth.hasGeometry, depth.seesSky, depth.farDepth);
+#ifdef TP_FP_CLUSTERED
+    // The span: the opaque range, or from the near plane (blended surfaces lie anywhere in
+    // front of the opaque ones) to the farthest opaque depth, unbounded over the sky.
+    // Slices follow the opaque range (include/light_assign.glsl: laSliceOf).
+    const bool spanTests = kSpanFromNear || depth.hasGeometry;
+    const float spanNearDepth = kSpanFromNear ? 1.0 : depth.nearDepth;
+    const float spanFarDepth = kSpanFromNear ? transparentFar : depth.farDepth;
+    const bool openEnd = kSpanFromNear && transparentFar == 0.0;
+    const float sliceNear = depth.hasGeometry ? max(-viewZFromDepth(depth.nearDepth, frame.invProj), 1e-30) : 1e30;
+    const float sliceFar = depth.hasGeometry ? -viewZFromDepth(depth.farDepth, frame.invProj) : 1e30;
+    const float sliceScale = laSliceScale(sliceNear, sliceFar, kSlices, kSpanFromNear);
+    const uint maskBase = data[params.lists.w + tileIndex];
+    const uint maskStride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
+    const ListVolume volume0 = makeVolume(tile, spanNearDepth, spanFarDepth, spanTests);
+#else
+    const ListVolume volume0 = makeVolume(tile, depth.nearDepth, depth.farDepth, depth.hasGeometry);
+#endif
+    // Two plain variables, not an array: lavapipe's compiler keeps a dynamically indexed
+    // array of structs in memory. Tiled: the transparent list's; clustered with blended
+    // surfaces: the opaque range (markSlices).
+#ifdef TP_FP_CLUSTERED
+    const ListVolume volume1 = makeVolume(tile, depth.nearDepth, depth.farDepth, kSpanFromNear && depth.hasGeometry);
+#else
+    const ListVolume volume1 = makeVolume(tile, 1.0, transparentFar, kTwoLists);
+#endif
 
-    const bool hasGeometry = laTileHasGeometry();
-    const float nearDepth = laTileNearDepth();
-    const float farDepth = laTileFarDepth();
-    // The sub-frusta are the same for the whole tile: one invocation builds them.
-    if (lid == 0u) {
-        const vec2 viewportSize = vec2(viewport);
-        sFrustum[0] = laOpaqueFrustum(tile, tileSize, viewportSize, frame.invProj, nearDepth, farDepth);
-        float transparentFar = laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth);
-        sBox[0] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[0]);
-        if (kTwoLists) {
-            sFrustum[1] = laTransparentFrustum(tile, tileSize, viewportSize, frame.invProj, transparentFar);
-            sBox[1] = makeTileBox(tile, tileSize, viewportSize, frame.invProj, sFrustum[1]);
-        }
+    // 2. The candidates: every local light (after the directional ones in data[]), or the
+    //    tile's binned run.
+    uint candidateBase = params.lights.x;
+    uint candidateCount = params.lights.y;
+    if (kBinned) {
+        const uint first = data[params.lights.z + tileIndex];
+        candidateCount = data[params.lights.z + tileIndex + 1u] - first;
+        candidateBase = params.lists.z + first;
     }
-    barrier();
-    const TileFrustum opaqueFrustum = sFrustum[0];
-    const TileFrustum transparentFrustum = sFrustum[kTwoLists ? 1 : 0];
-    const TileBox opaqueBox = sBox[0];
-    const TileBox transparentBox = sBox[kTwoLists ? 1 : 0];
 
-    const uint directionalCount = params.lights.x;
-    const uint localCount = params.lights.y;
-    uint capacity;
-    uint start[2];
+    // This dispatch's candidates [first, end) (forwardplus_renderer.cpp: recordCulling) and
+    // what the earlier dispatches of the pass left in the tile's record.
+    const uint batchFirst = draw.TP_FP_CULL_FIRST;
+    const uint batchEnd = min(draw.TP_FP_CULL_END, candidateCount);
+    LaListHeader prev0 = emptyHeader(), prev1 = emptyHeader();
+    if (draw.TP_FP_CULL_INITIAL == 0u) {
+        prev0 = tiles[tileIndex].list[0];
+        prev1 = tiles[tileIndex].list[1];
+    }
+
 #if defined(TP_FP_CULL_COMPACT)
-    uint offset = data[params.lights.z + tileIndex];
-    capacity = data[params.lights.z + tileIndex + 1u] - offset;
-    start[0] = offset;
-    start[1] = params.lists.x + offset;
+    const uint offset = data[params.lights.z + tileIndex];
+    const uint capacity0 = data[params.lights.z + tileIndex + 1u] - offset, capacity1 = capacity0;
+    const uint start0 = offset, start1 = params.lists.x + offset;
+    uint count0 = prev0.found, count1 = prev1.found; // positions continue the earlier batches'
+    const uint tail0 = kNoNode, tail1 = kNoNode;
 #elif defined(TP_FP_CULL_FIXED)
-    capacity = params.lights.w;
-    start[0] = tileIndex * capacity;
-    start[1] = params.lists.x + tileIndex * capacity;
+    const uint capacity0 = params.lights.w, capacity1 = capacity0;
+    const uint start0 = tileIndex * capacity0, start1 = params.lists.x + tileIndex * capacity0;
+    uint count0 = prev0.found, count1 = prev1.found;
+    const uint tail0 = kNoNode, tail1 = kNoNode;
 #else
-    capacity = 0xffffffffu; // bounded by the pool instead
-    start[0] = 0u;
-    start[1] = 0u;
+    // Linked: count this batch's survivors, then allocate consecutive nodes per list (one
+    // atomic add each); nodes past the pool are dropped and counted (the pool is sized so
+    // that it cannot happen). The batches run last to first and each is prepended: its
+    // last node continues with the earlier head (tail), so a walk visits lights in order.
+    // `capacity` is this batch's kept nodes, positions count from 0.
+    uint found0 = 0u, found1 = 0u;
+    for (uint k = batchFirst; k < batchEnd; ++k) {
+        LightGpu light = lights[data[candidateBase + k]];
+        vec4 sphere = lightSphereView(light, frame.view);
+        if (passes(light, sphere, volume0)) ++found0;
+        if (kTwoLists && passes(light, sphere, volume1)) ++found1;
+    }
+    const uint pool = params.lists.y;
+    const uint start0 = found0 > 0u ? atomicAdd(nodeCounter, found0) : 0u;
+    const uint start1 = found1 > 0u ? atomicAdd(nodeCounter, found1) : 0u;
+    const uint capacity0 = min(found0, start0 < pool ? pool - start0 : 0u);
+    const uint capacity1 = min(found1, start1 < pool ? pool - start1 : 0u);
+    uint count0 = 0u, count1 = 0u;
+    const uint tail0 = prev0.start, tail1 = prev1.start;
 #endif
 
-    const uint list = lid / TP_FP_CHUNK_WORDS; // compaction: invocation (list, word)
-    const uint word = lid % TP_FP_CHUNK_WORDS;
-    const bool compacts = list < numLists;
-    uint running = 0u; // compact/fixed: survivors of this invocation's list so far
-    const uint chunkCount = (localCount + TP_FP_CHUNK_LIGHTS - 1u) / TP_FP_CHUNK_LIGHTS;
-    for (uint step = 0u; step < chunkCount; ++step) {
-        const uint buf = step % 3u;
-#ifdef TP_FP_CULL_LINKED
-        const uint chunk = chunkCount - 1u - step; // prepend: last chunk first
-#else
-        const uint chunk = step;
+    // 3. Test and append in candidate (ascending light) order.
+#ifdef TP_FP_CLUSTERED
+    // A word left partial by the previous batch is continued, not restarted.
+    const uint storedBefore = min(count0, capacity0);
+    for (uint sl = 0u; sl < kSlices; ++sl)
+        gWordBits[sl] = (storedBefore & 31u) != 0u ? masks[maskBase + sl * maskStride + (storedBefore >> 5u)] : 0u;
+    bool dirty = false; // gWordBits holds bits this batch has not written out yet
 #endif
-        const uint base = chunk * TP_FP_CHUNK_LIGHTS;
-        if (lid < TP_FP_CHUNK_WORDS) {
-            sBits[(step + 1u) % 3u][0][lid] = 0u;
-            sBits[(step + 1u) % 3u][1][lid] = 0u;
-        }
-
-        // 2. Test this chunk's lights, groupSize at a time.
-        const uint inChunk = min(TP_FP_CHUNK_LIGHTS, localCount - base);
-        for (uint i = lid; i < inChunk; i += groupSize) {
-            LightGpu light = lights[data[directionalCount + base + i]];
-            uint bit = 1u << (i & 31u);
-            if (hasGeometry && lightInTileBox(light, opaqueBox, frame.view) &&
-                lightInTile(light, opaqueFrustum, frame.view))
-                atomicOr(sBits[buf][0][i >> 5u], bit);
-            if (kTwoLists && lightInTileBox(light, transparentBox, frame.view) &&
-                lightInTile(light, transparentFrustum, frame.view))
-                atomicOr(sBits[buf][1][i >> 5u], bit);
-        }
-        barrier();
-
-        // 3. Compaction: invocation (list, word) writes the survivors of one 32-light word
-        //    after those of the words before it.
-        uint prefix = 0u, bits = 0u, chunkTotal = 0u;
-        if (compacts) {
-            for (uint j = 0u; j < TP_FP_CHUNK_WORDS; ++j) {
-                uint n = bitCount(sBits[buf][list][j]);
-                prefix += j < word ? n : 0u;
-                chunkTotal += n;
-            }
-            bits = sBits[buf][list][word];
-        }
-#ifdef TP_FP_CULL_LINKED
-        // One allocation per chunk and list; nodes past the pool are dropped and counted
-        // (the pool is sized so that it cannot happen).
-        if (compacts && word == TP_FP_CHUNK_WORDS - 1u) {
-            uint nodeBase = chunkTotal > 0u ? atomicAdd(nodeCounter, chunkTotal) : 0u;
-            uint pool = params.lists.y;
-            uint room = nodeBase < pool ? pool - nodeBase : 0u;
-            uint kept = min(chunkTotal, room);
-            sNodeBase[list] = nodeBase;
-            sKept[list] = kept;
-            sDropped[list] += chunkTotal - kept;
-        }
-        barrier();
-        if (compacts && bits != 0u) {
-            uint nodeBase = sNodeBase[list];
-            uint kept = sKept[list];
-            uint oldHead = sHead[list];
-            uint rank = prefix;
-            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-                int lsb = findLSB(bits);
-                bits &= bits - 1u;
-                if (rank < kept) {
-                    uint node = nodeBase + rank;
-                    indices[2u * node] = data[directionalCount + base + word * 32u + uint(lsb)];
-                    indices[2u * node + 1u] = rank + 1u < kept ? node + 1u : oldHead;
+    for (uint k = batchFirst; k < batchEnd; ++k) {
+        const uint lightIndex = data[candidateBase + k];
+        LightGpu light = lights[lightIndex];
+        const vec4 sphere = lightSphereView(light, frame.view);
+        if (passes(light, sphere, volume0)) {
+            store(lightIndex, count0, start0, capacity0, tail0);
+#ifdef TP_FP_CLUSTERED
+            if (count0 < capacity0) {
+                if (dirty && (count0 & 31u) == 0u) {
+                    flushWord((count0 >> 5u) - 1u, maskBase, maskStride);
+                    dirty = false;
                 }
-                ++rank;
+                markSlices(sphere, count0, sliceNear, sliceScale, !kSpanFromNear || passes(light, sphere, volume1),
+                           openEnd);
+                dirty = true;
             }
-        }
-        barrier();
-        if (compacts && word == TP_FP_CHUNK_WORDS - 1u && sKept[list] > 0u) {
-            sHead[list] = sNodeBase[list];
-            sCount[list] += sKept[list];
-        }
-        barrier();
-#else
-        if (compacts && bits != 0u)
-            laStoreWord(bits, base + word * 32u, start[list], running + prefix, capacity);
-        running += chunkTotal;
 #endif
+            ++count0;
+        }
+        if (kTwoLists && passes(light, sphere, volume1)) {
+            store(lightIndex, count1, start1, capacity1, tail1);
+            ++count1;
+        }
     }
-#ifndef TP_FP_CULL_LINKED
-    if (compacts && word == 0u) sCount[list] = running;
-#endif
-    barrier();
 
-    if (lid == 0u) {
-        FpTileLists t;
-        for (uint l = 0u; l < 2u; ++l) {
-#ifdef TP_FP_CULL_LINKED
-            t.list[l].count = sCount[l];
-            t.list[l].start = sHead[l];
-            t.list[l].dropped = sDropped[l];
-#else
-            t.list[l].count = min(sCount[l], capacity);
-            t.list[l].start = start[l];
-            t.list[l].dropped = sCount[l] - t.list[l].count;
+#ifdef TP_FP_CLUSTERED
+    if (dirty) flushWord((min(count0, capacity0) - 1u) >> 5u, maskBase, maskStride); // the last, partial word
 #endif
-            t.list[l].found = t.list[l].count + t.list[l].dropped;
-        }
-        t.pad0 = 0u;
-        t.pad1 = 0u;
-        t.nearDepth = hasGeometry ? nearDepth : 0.0;
-        t.farDepth = hasGeometry ? farDepth : 0.0;
-        tiles[tileIndex] = t;
-    }
+    FpTileLists t;
+#ifdef TP_FP_CULL_LINKED
+    t.list[0] = prepend(prev0, found0, start0, capacity0);
+    t.list[1] = prepend(prev1, found1, start1, capacity1);
+#else
+    t.list[0] = header(count0, start0, capacity0);
+    t.list[1] = header(count1, start1, capacity1);
+#endif
+    t.nearDepth = depth.hasGeometry ? depth.nearDepth : 0.0;
+    t.farDepth = depth.farDepth;
+#ifdef TP_FP_CLUSTERED
+    t.sliceNear = sliceNear;
+    t.sliceScale = sliceScale;
+#else
+    t.sliceNear = 0.0;
+    t.sliceScale = 0.0;
+#endif
+    tiles[tileIndex] = t;
 }

@@ -10,3 +10,12 @@ foreach(layout compact fixed linked)
   triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_${layout}_ms_comp
     DEFINES TP_FP_CULL_${LAYOUT_UPPER}=1 TP_FP_DEPTH_MS=1)
 endforeach()
+# Clustered (--light-assign clustered, compact layout): a list per tile over its depth span
+# and per-slice bitmasks over it; the mask buffer binding exists only in these variants.
+triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_frag DEFINES TP_FP_CLUSTERED=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_pixel_frag
+  DEFINES TP_FP_CLUSTERED=1 TP_INPUTS_AT_PIXEL=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_compact_clustered_comp
+  DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_compact_clustered_ms_comp
+  DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1 TP_FP_DEPTH_MS=1)

@@ -27,6 +27,38 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     uint data[];
 };
 
+#ifdef TP_FP_CLUSTERED
+layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
+layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonly buffer MaskBlock {
+    uint masks[];
+};
+
+// Clustered: the lights of the tile list whose bit is set in this fragment's slice, one
+// 32-light word at a time: (list length / 32) words plus the cluster's lights, in list
+// (ascending) order. The slice comes from the shading point's own view distance, for
+// opaque and blended surfaces alike.
+vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
+    FpTileLists t = tiles[tileIndex];
+    float dist = -(frame.view * vec4(surface.position, 1.0)).z;
+    uint slice = laSliceOf(dist, t.sliceNear, t.sliceScale, kSlices, kSpanFromNear);
+    uint maskBase = data[params.lists.w + tileIndex];
+    uint stride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
+    uint words = (t.list[0].count + 31u) / 32u;
+    uint row = maskBase + slice * stride;
+    vec3 sum = vec3(0.0);
+    for (uint w = 0u; w < words; ++w) {
+        uint bits = masks[row + w];
+        for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+            int lsb = findLSB(bits);
+            bits &= bits - 1u;
+            sum += evalLight(lights[indices[t.list[0].start + w * 32u + uint(lsb)]], surface, kHasSpot);
+        }
+    }
+    return sum;
+}
+#endif
+
 layout(location = 0) out vec4 outColor;
 
 // Largest finite half: the hdr target is RGBA16F, so larger values saturate instead of
@@ -42,6 +74,11 @@ void main() {
         sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
 
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
+#ifdef TP_FP_CLUSTERED
+    sum += clusterLights(tileIndex, ms.surface);
+    outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
+    return;
+#endif
     uint list = (kTwoLists && kAlphaMode == TP_ALPHA_BLEND) ? 1u : 0u;
     uint count = tiles[tileIndex].list[list].count;
     uint start = tiles[tileIndex].list[list].start;

@@ -38,6 +38,37 @@ TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, m
     return makeTileFrustum(tile, tileSize, viewportSize, invProj, 1.0, transparentFarDepth);
 }
 
+// ---- clustered: depth slices of a tile (docs/clustered.md) ----
+// The slices follow the tile's opaque depth range [nearest, farthest] (view distances
+// sliceNear, sliceFar): exponential between them, so every slice is as deep relative to
+// its distance and each lies inside the range a tiled opaque list is culled against. With
+// a front slice (the scene has blended surfaces), slice 0 holds everything nearer than
+// sliceNear (blended surfaces in front of the opaque ones) and slices 1 .. S-1 the range;
+// otherwise slices 0 .. S-1 do. The first range slice also takes anything nearer, the last
+// everything farther (blended surfaces over the sky). A tile without geometry has
+// sliceNear = sliceFar = 1e30: everything is in slice 0. The culling and the shading both
+// use laSliceOf; a light's slice range is padded (laLightSlices), so rounding cannot
+// separate them.
+float laSliceScale(float sliceNear, float sliceFar, uint slices, bool front) {
+    return float(slices - (front ? 1u : 0u)) / log(max(sliceFar / sliceNear, 1.001));
+}
+
+// The slice of view distance `dist` (> 0 in front of the eye).
+uint laSliceOf(float dist, float sliceNear, float sliceScale, uint slices, bool front) {
+    if (front && dist < sliceNear) return 0u;
+    uint first = front ? 1u : 0u;
+    float s = log(max(dist / sliceNear, 1.0)) * sliceScale;
+    return first + uint(clamp(s, 0.0, float(slices - 1u - first))); // s >= 0: the cast floors
+}
+
+// The slices [x, y] that a sphere (view-space centre c, padded radius r) can reach.
+uvec2 laLightSlices(vec3 c, float r, float sliceNear, float sliceScale, uint slices, bool front) {
+    float d0 = (-c.z - r) * (1.0 - TP_TILE_CULL_PAD);
+    float d1 = (-c.z + r) * (1.0 + TP_TILE_CULL_PAD);
+    return uvec2(laSliceOf(d0, sliceNear, sliceScale, slices, front),
+                 laSliceOf(d1, sliceNear, sliceScale, slices, front));
+}
+
 // ---- compact lists (light_assign.h: LaListHeader) in a uint[] buffer ----
 // Word `field` of tile t's header; fields in LaListHeader order.
 #define TP_LA_COUNT 0u
@@ -114,6 +145,41 @@ void laDepthBoundsReduce(uvec2 tile, uint tileSize, uvec2 viewport, uint samples
         atomicMax(laNearBits, floatBitsToUint(hi));
     }
     if (sky) atomicOr(laSkyBits, 1u);
+}
+
+// The same bounds computed by one invocation for its whole tile, without shared memory or
+// barriers (Forward+'s culling runs one invocation per tile: on lavapipe a barrier
+// switches every 8-lane coroutine of a workgroup, which cost more than the tests).
+struct LaTileDepth {
+    float nearDepth; // nearest geometry depth (reverse-Z: largest); 0 without geometry
+    float farDepth;  // farthest geometry depth; 0 without geometry
+    bool hasGeometry;
+    bool seesSky;    // some sample of the tile has no geometry
+};
+
+LaTileDepth laTileDepthSerial(uvec2 tile, uint tileSize, uvec2 viewport, uint samples) {
+    float lo = 2.0, hi = 0.0;
+    bool sky = false;
+    uvec2 p0 = tile * tileSize, p1 = min(p0 + uvec2(tileSize), viewport);
+    for (uint y = p0.y; y < p1.y; ++y) {
+        for (uint x = p0.x; x < p1.x; ++x) {
+            for (uint s = 0u; s < samples; ++s) {
+                float d = TP_LA_DEPTH_FETCH(ivec2(x, y), s);
+                if (d > 0.0) {
+                    lo = min(lo, d);
+                    hi = max(hi, d);
+                } else {
+                    sky = true;
+                }
+            }
+        }
+    }
+    LaTileDepth t;
+    t.hasGeometry = hi > 0.0;
+    t.nearDepth = hi;
+    t.farDepth = t.hasGeometry ? lo : 0.0;
+    t.seesSky = sky;
+    return t;
 }
 
 bool laTileHasGeometry() { return laNearBits > 0u; }

@@ -97,13 +97,28 @@ float coneMaxSignedDistance(vec4 plane, vec3 tip, vec3 axis, float h, float rb) 
     return max(atTip, rim);
 }
 
+// A point or spot light's sphere in view space: xyz = centre, w = range padded by
+// TP_TILE_CULL_PAD * (range + distance). Computed once per light and tile by a caller that
+// tests several volumes (lightSphereInTile, sphereInTileBox).
+vec4 lightSphereView(LightGpu light, mat4 view) {
+    vec3 c = (view * vec4(light.position, 1.0)).xyz;
+    return vec4(c, light.range + TP_TILE_CULL_PAD * (light.range + length(c)));
+}
+
+bool lightSphereInTile(LightGpu light, vec4 sphere, TileFrustum f, mat4 view);
+
 bool lightInTile(LightGpu light, TileFrustum f, mat4 view) {
     if (light.type == TP_LIGHT_DIRECTIONAL) return true;
-    vec3 c = (view * vec4(light.position, 1.0)).xyz;
-    float pad = TP_TILE_CULL_PAD * (light.range + length(c));
-    float r = light.range + pad;
+    return lightSphereInTile(light, lightSphereView(light, view), f, view);
+}
+
+// lightInTile for a point or spot light whose lightSphereView is `sphere`.
+bool lightSphereInTile(LightGpu light, vec4 sphere, TileFrustum f, mat4 view) {
+    vec3 c = sphere.xyz;
+    float r = sphere.w;
     if (!tileSphereTest(c, r, f)) return false;
     if (light.type != TP_LIGHT_SPOT) return true;
+    float pad = TP_TILE_CULL_PAD * (light.range + length(c)); // as lightSphereView
 
     // Spot: the lit region (distance < range, angle < outer) lies inside the cone of height
     // range and base radius range * tan(outer). Wide cones (outer > ~80 degrees) keep the
@@ -157,11 +172,13 @@ TileBox makeTileBox(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj, 
 }
 
 // Sphere of a point or spot light (position, range) against the box; directional: true.
+bool sphereInTileBox(vec4 sphere, TileBox b) {
+    vec3 d = max(max(b.lo - sphere.xyz, sphere.xyz - b.hi), vec3(0.0));
+    return dot(d, d) <= sphere.w * sphere.w;
+}
+
 bool lightInTileBox(LightGpu light, TileBox b, mat4 view) {
     if (light.type == TP_LIGHT_DIRECTIONAL) return true;
-    vec3 c = (view * vec4(light.position, 1.0)).xyz;
-    float r = light.range + TP_TILE_CULL_PAD * (light.range + length(c));
-    vec3 d = max(max(b.lo - c, c - b.hi), vec3(0.0));
-    return dot(d, d) <= r * r;
+    return sphereInTileBox(lightSphereView(light, view), b);
 }
 #endif

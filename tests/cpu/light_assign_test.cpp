@@ -10,6 +10,7 @@
 #include "core/lightassign/heat_map.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_candidates.h"
 #include "core/lightassign/tile_grid.h"
 
 using namespace tp;
@@ -129,6 +130,42 @@ TEST(LightAssign, ConservativeBoundSkipsLightsBehindTheEye) {
     std::vector<gpu::LightGpu> lights = {pointLight({0.0f, 0.0f, 5.0f}, 1.0f)};
     std::vector<uint32_t> bound = la::conservativeTileBound(g, glm::mat4(1.0f), proj, lights, {0});
     for (uint32_t b : bound) EXPECT_EQ(b, 0u);
+}
+
+// Binned culling's candidates: each tile's run holds exactly the lights whose rectangle
+// covers it, ascending, and the runs are the compact layout of the rectangle counts.
+TEST(LightAssign, TileCandidatesAreEachTilesCoveringLightsAscending) {
+    la::TileGrid g = la::makeTileGrid(200, 120, 16); // 13 x 8 tiles
+    glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f), r(0.2f, 4.0f);
+    std::vector<gpu::LightGpu> lights;
+    for (int i = 0; i < 200; ++i) lights.push_back(pointLight({x(rng), y(rng), z(rng)}, r(rng)));
+    // Local lights are a subset (as when directional lights are interleaved), not 0..n-1.
+    std::vector<uint32_t> local;
+    for (uint32_t i = 0; i < lights.size(); i += 2) local.push_back(i);
+    std::vector<la::TileRect> rects = la::conservativeTileRects(g, glm::mat4(1.0f), proj, lights, local);
+    ASSERT_EQ(rects.size(), local.size());
+    std::vector<uint32_t> counts = la::countTileRects(g, rects);
+    EXPECT_EQ(counts, la::conservativeTileBound(g, glm::mat4(1.0f), proj, lights, local));
+    la::CompactLayout layout = la::makeCompactLayout(counts);
+    std::vector<uint32_t> cand = la::tileCandidates(g, rects, local, layout.offsets);
+    ASSERT_EQ(cand.size(), layout.slots);
+    uint64_t covered = 0;
+    for (uint32_t ty = 0; ty < g.tilesY; ++ty)
+        for (uint32_t tx = 0; tx < g.tilesX; ++tx) {
+            uint32_t t = ty * g.tilesX + tx;
+            std::vector<uint32_t> expect;
+            for (size_t k = 0; k < rects.size(); ++k)
+                if (int(tx) >= rects[k].x0 && int(tx) <= rects[k].x1 && int(ty) >= rects[k].y0 &&
+                    int(ty) <= rects[k].y1)
+                    expect.push_back(local[k]);
+            std::vector<uint32_t> got(cand.begin() + layout.offsets[t], cand.begin() + layout.offsets[t + 1]);
+            EXPECT_EQ(got, expect) << "tile " << t;
+            covered += expect.size();
+        }
+    EXPECT_GT(covered, 0u);
+    EXPECT_LT(covered, uint64_t(local.size()) * g.count() / 2); // binning skips most pairs here
 }
 
 TEST(LightAssign, HeatMapHasOneScaleFromZeroToTheLargestCount) {

@@ -264,6 +264,7 @@ struct ListRun {
     ImageR32 depth;
     std::vector<gpu::FpTileLists> tiles;
     std::vector<uint32_t> indices;
+    std::vector<uint32_t> masks; // clustered: the per-slice bitmasks
     la::TileGrid grid;
     RendererStats stats;
     std::vector<DebugImage> debug;
@@ -296,6 +297,11 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     std::vector<uint8_t> i = readbackBuffer(ctx, graph.buffer(graph.exported("fp_light_indices")));
     out.indices.resize(i.size() / 4);
     std::memcpy(out.indices.data(), i.data(), out.indices.size() * 4);
+    if (ResourceHandle m = graph.exported("fp_cluster_masks"); m.valid()) {
+        std::vector<uint8_t> b = readbackBuffer(ctx, graph.buffer(m));
+        out.masks.resize(b.size() / 4);
+        std::memcpy(out.masks.data(), b.data(), out.masks.size() * 4);
+    }
     out.grid = la::makeTileGrid(settings.width, settings.height, resolved.integer("tile"));
     renderer->collectStats(graph);
     out.stats = renderer->stats();
@@ -445,6 +451,194 @@ TEST(ForwardPlusCulling, CompactBoundIsAnUpperBound) {
         EXPECT_EQ(r.tiles[tile].list[0].dropped, 0u);
     }
     expectNoValidationMessages(*ctx);
+}
+
+// Binned culling (--light-cull binned) tests each tile's candidates only; its lists must be
+// exactly brute-force culling's (--light-cull all): the same lights in the same order, for
+// every tile and both lists, hence the same image, with far fewer tests.
+void expectBinnedEqualsBruteForce(const Scene& scene, RenderSettings settings) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    settings.set("light-cull", "all");
+    ListRun all = runLists(*ctx, gpuScene, settings);
+    settings.set("light-cull", "binned");
+    ListRun binned = runLists(*ctx, gpuScene, settings);
+    ASSERT_EQ(all.tiles.size(), binned.tiles.size());
+    uint64_t listed = 0;
+    for (uint32_t tile = 0; tile < all.grid.count(); ++tile)
+        for (uint32_t list = 0; list < 2; ++list) {
+            std::vector<uint32_t> a = listOf(all, tile, list, "compact");
+            EXPECT_EQ(a, listOf(binned, tile, list, "compact")) << "tile " << tile << " list " << list;
+            EXPECT_EQ(all.tiles[tile].list[list].found, binned.tiles[tile].list[list].found);
+            listed += a.size();
+        }
+    EXPECT_GT(listed, 0u);
+    auto counter = [](const ListRun& r, const std::string& name) {
+        for (const auto& [n, v] : r.stats.counters)
+            if (n == name) return v;
+        ADD_FAILURE() << "no counter " << name;
+        return -1.0;
+    };
+    EXPECT_EQ(counter(binned, "lights_dropped"), 0.0);
+    EXPECT_LT(counter(binned, "lights_tested"), counter(all, "lights_tested"));
+    std::printf("[ forwardplus ] binned culling: %.0f tests against %.0f for every light, %llu listed\n",
+                counter(binned, "lights_tested"), counter(all, "lights_tested"), (unsigned long long)listed);
+    RunResult ra = runOrFail(*ctx, gpuScene, "forwardplus", settings);
+    settings.set("light-cull", "all");
+    RunResult rb = runOrFail(*ctx, gpuScene, "forwardplus", settings);
+    EXPECT_EQ(ra.hdr.rgba, rb.hdr.rgba);
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusCulling, BinnedListsEqualBruteForceOnCourtyard) {
+    expectBinnedEqualsBruteForce(courtyardScene(512), small(128, 72, 1));
+}
+
+TEST(ForwardPlusCulling, BinnedListsEqualBruteForceMsaa4Tile8) {
+    RenderSettings s = small(96, 54, 4);
+    s.set("tile", 8);
+    expectBinnedEqualsBruteForce(courtyardScene(256), s);
+}
+
+TEST(ForwardPlusCulling, BinnedListsEqualBruteForceOnFloorTile32) {
+    RenderSettings s = small(160, 96, 1);
+    s.set("tile", 32);
+    expectBinnedEqualsBruteForce(floorScene(2048), s);
+}
+
+// More candidates in a tile than one culling dispatch takes (32,768: lavapipe ends an
+// invocation after 65,535 loop iterations, and one invocation culls a tile): the lists
+// continue over several dispatches, for every layout (linked prepends them last to first),
+// and still equal binned culling's.
+TEST(ForwardPlusCulling, ListsContinueOverSeveralDispatches) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(40000);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings = small(32, 24, 1);
+    settings.set("light-cull", "binned");
+    ListRun binned = runLists(*ctx, gpuScene, settings);
+    settings.set("light-cull", "all");
+    for (const char* layout : {"compact", "fixed", "linked"}) {
+        RenderSettings s = settings;
+        s.set("light-lists", layout);
+        s.set("tile-capacity", 65536);
+        ListRun all = runLists(*ctx, gpuScene, s);
+        double dispatches = -1.0;
+        for (const auto& [n, v] : all.stats.counters)
+            if (n == "culling_dispatches") dispatches = v;
+        EXPECT_GE(dispatches, 2.0) << layout;
+        uint64_t listed = 0;
+        for (uint32_t tile = 0; tile < all.grid.count(); ++tile) {
+            std::vector<uint32_t> a = listOf(all, tile, 0, layout);
+            EXPECT_EQ(a, listOf(binned, tile, 0, "compact")) << layout << " tile " << tile;
+            EXPECT_EQ(all.tiles[tile].list[0].dropped, 0u) << layout;
+            listed += a.size();
+        }
+        EXPECT_GT(listed, 1000u) << layout;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// ---- clustered (--light-assign clustered) ----
+
+RenderSettings clustered(RenderSettings s, uint32_t slices = 16) {
+    s.set("light-assign", "clustered");
+    s.set("slices", slices);
+    return s;
+}
+
+TEST(ForwardPlusClustered, CourtyardMatchesReference) {
+    expectMatchesReference(courtyardScene(256), clustered(small(96, 54, 1)), 4);
+}
+TEST(ForwardPlusClustered, CourtyardMatchesReferenceMsaa4Slices64) {
+    expectMatchesReference(courtyardScene(256), clustered(small(96, 54, 4), 64), 4);
+}
+// 64 slices: a culling dispatch takes 32,768 / 66 = 496 candidates (lavapipe's loop limit),
+// so a tile's list and its slice words continue over 9 dispatches.
+TEST(ForwardPlusClustered, Floor4096LightsTinySlices64ManyDispatches) {
+    expectMatchesReference(floorScene(4096), clustered(small(40, 24, 1), 64));
+}
+
+TEST(ForwardPlusClustered, Floor4096LightsTinyTile8Slices4) {
+    RenderSettings s = clustered(small(40, 24, 1), 4);
+    s.set("tile", 8);
+    expectMatchesReference(floorScene(4096), s);
+}
+
+// Every light that reaches a pixel's surface point has its bit set in the pixel's cluster
+// (tile, slice of its view distance): the clusters are conservative. Prints how much
+// smaller a cluster is than the tile's span list.
+TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings settings = clustered(small(128, 72, 1));
+    ListRun r = runLists(*ctx, gpuScene, settings);
+    ASSERT_FALSE(r.masks.empty());
+    ListRun tiled = runLists(*ctx, gpuScene, small(128, 72, 1));
+    const gpu::FrameUniforms& f = gpuScene.frame();
+    const auto& lights = gpuScene.lightsGpu();
+    la::LightClasses classes = la::classifyLights(lights);
+    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, lights, classes.local);
+    std::vector<uint32_t> maskBase(bound.size() + 1, 0);
+    for (size_t t = 0; t < bound.size(); ++t) maskBase[t + 1] = maskBase[t] + 16 * ((bound[t] + 31) / 32);
+    ASSERT_EQ(size_t(maskBase.back()), r.masks.size());
+    uint64_t missing = 0, pixels = 0, inCluster = 0, inList = 0, inTiled = 0;
+    for (uint32_t y = 0; y < settings.height; ++y)
+        for (uint32_t x = 0; x < settings.width; ++x) {
+            float d = r.depth.r[y * r.depth.width + x];
+            if (d <= 0.0f) continue;
+            uint32_t tile = (y / 16) * r.grid.tilesX + x / 16;
+            const gpu::FpTileLists& t = r.tiles[tile];
+            glm::vec3 p = unproject(f, x, y, d);
+            float dist = -(f.view * glm::vec4(p, 1.0f)).z;
+            // laSliceOf with a front slice (the courtyard has blended surfaces).
+            uint32_t slice = 0;
+            if (dist >= t.sliceNear)
+                slice = 1 + uint32_t(std::clamp(std::log(std::max(dist / t.sliceNear, 1.0f)) * t.sliceScale, 0.0f, 14.0f));
+            uint32_t stride = (maskBase[tile + 1] - maskBase[tile]) / 16;
+            std::vector<uint32_t> list = listOf(r, tile, 0, "compact");
+            std::set<uint32_t> cluster;
+            for (uint32_t i = 0; i < list.size(); ++i)
+                if (r.masks[maskBase[tile] + slice * stride + i / 32] & (1u << (i % 32))) cluster.insert(list[i]);
+            for (uint32_t li = 0; li < lights.size(); ++li)
+                if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], p) && !cluster.count(li)) {
+                    if (++missing < 10)
+                        ADD_FAILURE() << "pixel " << x << "," << y << " slice " << slice << ": light " << li
+                                      << " reaches it but is not in its cluster";
+                }
+            ++pixels;
+            inTiled += tiled.tiles[tile].list[0].count;
+            inCluster += cluster.size();
+            inList += list.size();
+        }
+    EXPECT_EQ(missing, 0u);
+    EXPECT_GT(pixels, 0u);
+    EXPECT_LT(inCluster, inList); // the slices do cut the span list
+    std::printf("[ forwardplus ] clustered: %.2f lights per pixel's cluster against %.2f in its tile's span list "
+                "and %.2f in the tiled opaque list\n",
+                double(inCluster) / double(pixels), double(inList) / double(pixels), double(inTiled) / double(pixels));
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(ForwardPlusClustered, RefusesLayoutsOtherThanCompact) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = floorScene(4);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = clustered(small(32, 32, 1));
+    s.set("light-lists", "linked");
+    Result<const RendererEntry*> entry = findRenderer("forwardplus");
+    ASSERT_TRUE(entry.ok());
+    RunOptions o;
+    o.warmupFrames = 0;
+    o.timedFrames = 1;
+    Result<RunResult> r = runRenderer(*ctx, gpuScene, **entry, analyzeScene(scene, 1), s, o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().find("--light-assign clustered needs --light-lists compact"), std::string::npos) << r.error();
 }
 
 // ---- layouts: same image when nothing overflows; drops counted and visible ----

@@ -109,6 +109,35 @@ TEST(Stress, EveryCaseGivesTodaysVerdicts) {
     fs::remove_all(o.out);
 }
 
+// Clustered light assignment (--light-assign clustered) on the cases that stress light
+// assignment, through both pipelines that have it: every verdict must pass, with the same
+// error models (bounds) as tiled.
+TEST(Stress, ClusteredPassesTheLightAssignmentCases) {
+    cli::StressOptions o;
+    o.out = freshDir("stress_clustered");
+    o.device.validate = true;
+    o.cases = "tile-overflow,depth-discontinuity,lights-65536,lights-whole-screen,lights-subpixel,far-from-origin";
+    o.pipelines = "forwardplus,deferred";
+    o.knobs.set("light-assign", "clustered");
+    o.commandLine = {"triptych", "stress", "--validate", "--light-assign", "clustered", "--out", o.out};
+    const int code = cli::runStress(o);
+    ASSERT_TRUE(fs::exists(o.out + "/stress.json"));
+    const json r = readJson(o.out + "/stress.json");
+    EXPECT_TRUE(r["validation_messages"].empty());
+    EXPECT_EQ(r["cases"].size(), 6u);
+    for (const json& c : r["cases"])
+        for (const json& p : c["pipelines"]) {
+            std::string failed;
+            for (const json& k : p["checks"])
+                if (!k["pass"].get<bool>())
+                    failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
+            EXPECT_EQ(p["verdict"], "pass") << c["name"].get<std::string>() << "/" << p["name"].get<std::string>()
+                                            << ": " << failed;
+        }
+    EXPECT_EQ(code, 0);
+    fs::remove_all(o.out);
+}
+
 TEST(Stress, UnknownCaseIsRefusedBeforeWriting) {
     cli::StressOptions o;
     o.out = freshDir("stress_bad");
