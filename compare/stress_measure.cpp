@@ -112,6 +112,10 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
               "the pipeline's derived bound (relative " + std::to_string(p.bound.relative()) + ", absolute " +
                   std::to_string(p.bound.absolute()) + ") through the tonemap" +
                   (p.bound.perPixel.name.empty() ? "" : "; each pixel's limit widened by " + p.bound.perPixel.name));
+    if (p.bound.bounded && !p.bound.perPixel.name.empty())
+        check("pixels the per-pixel allowance leaves unchecked", double(p.unboundedPixels), 0,
+              "a light within the position error of a shaded point bounds nothing there; no case may have one "
+              "unnoticed");
     if (r.c->depthExact)
         check("depth pixels differing from the reference", double(p.depthMismatch), 0,
               "same triangles, same vertex shader (precise gl_Position), D32 reverse-Z");

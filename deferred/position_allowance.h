@@ -35,8 +35,9 @@ struct BrdfLimits {
 std::vector<BrdfLimits> brdfLimits(const Scene& scene);
 
 // HDR radiance allowance per pixel for an image of depth.width x depth.height rendered
-// with the scene's camera (0 where the pixel has no geometry or no local light reaches it;
-// +Inf where a light is closer to the shaded point than 2 eps: nothing is bounded there).
+// with the scene's camera: 0 where the pixel has no geometry; directional lights add their
+// (small) view-direction term everywhere; +Inf where a local light may lie within 1.01 eps of
+// the shaded point (nothing is bounded there).
 ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth, uint32_t subPixelBits);
 
 } // namespace tp

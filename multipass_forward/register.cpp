@@ -15,7 +15,7 @@ KnobSchema multipassKnobs() {
                          "the draw's own nearer layers: exact where a mesh overlaps itself), additive (the textbook "
                          "pass per light, alpha * light added: too bright by a_near * a_far * L_far where it does) or "
                          "one-pass (every light in the blended draw's one shading pass, as forward engines light "
-                         "transparent objects)")};;
+                         "transparent objects)")};
 }
 
 void multipassErrorModel(ErrorBound& b, const ErrorModelInput& in) {

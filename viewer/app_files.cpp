@@ -39,6 +39,11 @@ void ViewerApp::loadBookmark(const std::string& path) {
 }
 
 void ViewerApp::startExport(const std::string& dir) {
+    // Before anything is written: a running export's compare still has to read camera.json.
+    if (exporter_.busy()) {
+        error_ = "an export is still running";
+        return;
+    }
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) {

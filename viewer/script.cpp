@@ -1,6 +1,8 @@
 #include "viewer/script.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -172,6 +174,16 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         if (!ok) fail(line, "'" + w[i] + "' is not a number");
         return v;
     };
+    // Counts and seeds are read as integers: through float a seed above 2^24 would change.
+    auto integer = [&](size_t i, uint64_t lo, uint64_t hi) {
+        uint64_t v = 0;
+        const char* b = w[i].data();
+        const char* e = b + w[i].size();
+        auto [end, err] = std::from_chars(b, e, v);
+        if (err != std::errc() || end != e || v < lo || v > hi)
+            fail(line, "'" + w[i] + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+        return v;
+    };
     if (cmd == "pipeline") {
         if (w[1] != "a" && w[1] != "b") fail(line, "expected 'pipeline a|b NAME'");
         if (Result<const RendererEntry*> e = findRenderer(w[2]); !e) fail(line, e.error());
@@ -187,8 +199,8 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         s.knobs[w[1]] = w[2];
     } else if (cmd == "lights") {
         cli::SceneOptions o = s.scene;
-        if (w[1] == "count") o.lightCount = int(num(2));
-        else if (w[1] == "seed") o.seed = uint64_t(num(2));
+        if (w[1] == "count") o.lightCount = int(integer(2, 0, 1u << 30));
+        else if (w[1] == "seed") o.seed = integer(2, 0, UINT64_MAX);
         else if (w[1] == "types") o.lightTypes = w[2];
         else if (w[1] == "range") o.lightRadius = w[2];
         else if (w[1] == "intensity") o.lightIntensity = w[2];
@@ -200,7 +212,7 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         }
         s.scene = o;
     } else if (cmd == "msaa") {
-        uint32_t n = uint32_t(num(1));
+        uint32_t n = uint32_t(integer(1, 1, 8));
         if (n != 1 && n != 2 && n != 4 && n != 8) fail(line, "msaa must be 1, 2, 4 or 8");
         // The panel greys such a count out; a script is refused with the same reason.
         if (!app.supportsMsaa(n)) fail(line, "msaa " + w[1] + ": not supported by " + app.deviceName());
@@ -262,7 +274,7 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
     } else if (cmd == "wait") {
         wait_ = Wait::Settled, framesLeft_ = 2;
     } else if (cmd == "frames") {
-        wait_ = Wait::Frames, framesLeft_ = std::max(1, int(num(1)));
+        wait_ = Wait::Frames, framesLeft_ = int(integer(1, 1, 100000));
     } else if (cmd == "screenshot") {
         screenshotFile_ = inOut(w[1]);
         wait_ = Wait::Screenshot, framesLeft_ = screenshots_ ? 3 : 1;
@@ -273,7 +285,7 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         if (!app.lastError().empty()) fail(line, app.lastError());
         wait_ = Wait::Export;
     } else if (cmd == "bench") {
-        benchTotal_ = benchLeft_ = std::max(1, int(num(1)));
+        benchTotal_ = benchLeft_ = int(integer(1, 1, 100000));
         benchFile_ = inOut(w[2]);
         benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear();
         benchRecordDue_ = false;

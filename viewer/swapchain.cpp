@@ -48,6 +48,7 @@ void Swapchain::destroy() {
 void Swapchain::create(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(ctx_.device);
     destroy();
+    requested_ = {width, height};
     VkSurfaceCapabilitiesKHR caps;
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(ctx_.physical, surface_, &caps));
     extent_ = caps.currentExtent.width != UINT32_MAX
@@ -93,7 +94,7 @@ void Swapchain::create(uint32_t width, uint32_t height) {
 
 void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t height) {
     if (width == 0 || height == 0) return; // minimised
-    if (!swapchain_ || stale_ || width != extent_.width || height != extent_.height) create(width, height);
+    if (!swapchain_ || stale_ || width != requested_.width || height != requested_.height) create(width, height);
     uint32_t index = 0;
     VkResult r = vkAcquireNextImageKHR(ctx_.device, swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {

@@ -38,6 +38,9 @@ class Swapchain {
     const UiRenderer& ui_;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkExtent2D extent_{0, 0};
+    // The framebuffer size the swapchain was last made for: the surface may clamp or fix
+    // extent_ to something else, which must not make every frame rebuild the swapchain.
+    VkExtent2D requested_{0, 0};
     std::vector<VkImage> images_;
     std::vector<VkImageView> views_;
     std::vector<VkFramebuffer> framebuffers_;

@@ -79,7 +79,7 @@ int runWindow(const LoopSetup& setup) {
     ImGui_ImplGlfw_InitForVulkan(window, true);
     if (!presentable) {
         code = noDisplay(ctx.info.name + " cannot present to this window");
-    } else {
+    } else try { // a Vulkan failure ends the window below with its cleanup, as one line (exit 4)
         VkFormat format = chooseSurfaceFormat(ctx, surface);
         UiRenderer ui(ctx, format, 3, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
         Swapchain swapchain(ctx, surface, format, ui);
@@ -119,6 +119,9 @@ int runWindow(const LoopSetup& setup) {
             scriptError = e.what();
         }
         code = finish(app, ctx, scriptError);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "triptych: view: %s\n", e.what());
+        code = 4;
     }
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
