@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "core/render/camera.h"
@@ -101,6 +102,7 @@ TEST(PositionAllowance, CoversEveryDisplacementWithinEps) {
                 viewMatrixWorld(s.camera));
             const double pixelPerDepth = 2.0 * std::tan(0.4) / kH;
             int checked = 0;
+            std::vector<std::pair<double, double>> shares; // light sum, allowance
             for (uint32_t y = 0; y < kH; ++y)
                 for (uint32_t x = 0; x < kW; ++x) {
                     const size_t i = size_t(y) * kW + x;
@@ -119,9 +121,23 @@ TEST(PositionAllowance, CoversEveryDisplacementWithinEps) {
                         ASSERT_LE(std::abs(f1 - f0), double(allow.r[i]) + 1e-6 * f0)
                             << "pixel " << x << "," << y << " height " << height << " roughness " << roughness;
                     }
+                    shares.push_back({f0, double(allow.r[i])});
                     ++checked;
                 }
             EXPECT_GT(checked, 1000);
+            // Not vacuous: where the lights shine (a tenth of the brightest pixel or more), the
+            // allowance is a fraction of the light sum.
+            double brightest = 0, worstShare = 0;
+            for (auto [f, a] : shares) brightest = std::max(brightest, f);
+            for (auto [f, a] : shares)
+                if (f >= 0.1 * brightest) worstShare = std::max(worstShare, a / f);
+            // Measured allowance / light sum there: 0.24 at 5 mm, 0.06 at 2 cm, 0.0055 at 50 cm
+            // for roughness 1; 2.2, 0.55, 0.055 for roughness 0.5, where the BRDF's sampled slope
+            // dominates (docs/stress.md). The limits keep a third of margin: a looser allowance
+            // fails here.
+            const double limit = (roughness == 1.0f ? 1.0 : 9.0) * (height < 0.01f ? 0.32 : height < 0.1f ? 0.08 : 0.0075);
+            EXPECT_LT(worstShare, limit) << "height " << height << " roughness " << roughness;
+            std::printf("height %.3f roughness %.1f: allowance / light sum <= %.3g\n", height, roughness, worstShare);
         }
 }
 
