@@ -89,6 +89,8 @@ shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 layout(constant_id = TP_DEF_SPEC_SLICES) const uint kSlices = 0u;
 shared uint sMask[TP_DEF_CLUSTER_MASK_WORDS];
 shared float sSliceNear, sSliceScale;
+// The tile's slices: the opaque range only (no front slices: blended surfaces are not lit here).
+LaSlicing rangeSlicing() { return laSlicing(1.0, sSliceNear, sSliceScale, kSlices, 0u); }
 
 // The first batch writes hdr, the tile statistics and the transparent lists; later
 // batches add to them.
@@ -105,7 +107,7 @@ vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
         // The lights of this sample's cluster: its slice's bits over the tile list.
         float dist = -(frame.view * vec4(ss.position, 1.0)).z;
         uint words = (n + 31u) / 32u;
-        uint row = laSliceOf(dist, sSliceNear, sSliceScale, kSlices, false) * words;
+        uint row = laSliceOf(dist, rangeSlicing()) * words;
         for (uint w = 0u; w < words; ++w) {
             uint bits = sMask[row + w];
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
@@ -131,7 +133,7 @@ void markSlices() {
         // The shared list holds the directional lights too: they reach every slice.
         uvec2 range = light.type == TP_LIGHT_DIRECTIONAL
                           ? uvec2(0u, kSlices - 1u)
-                          : laLightSlices(sphere.xyz, sphere.w, sSliceNear, sSliceScale, kSlices, false);
+                          : laLightSlices(sphere.xyz, sphere.w, rangeSlicing());
         for (uint sl = range.x; sl <= range.y; ++sl) atomicOr(sMask[sl * words + (i >> 5u)], 1u << (i & 31u));
     }
 }
@@ -240,7 +242,7 @@ void main() {
         bool geometry = laTileHasGeometry();
         sSliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
         float far = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
-        sSliceScale = laSliceScale(sSliceNear, far, kSlices, false);
+        sSliceScale = laSliceScale(sSliceNear, far, kSlices, 0u);
     }
     cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
