@@ -30,6 +30,7 @@ class DeferredRenderer final : public Renderer {
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = settings_.text("deferred-lighting") == "volumes";
+        if (settings_.text("light-assign") == "clustered") slices_ = uint32_t(settings_.integer("slices"));
     }
 
     void plan(FrameGraph& graph) override {
@@ -62,15 +63,27 @@ class DeferredRenderer final : public Renderer {
                                                      "per tile: list header, then packed transparent light indices");
             t_.listOffsets = std::move(lists.offsets);
             transparentSlots_ = lists.slots;
+            // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
+            // defClusterRowsBase); volumes lighting keeps the plain lists.
+            if (slices_ > 0 && !useVolumes_) {
+                const uint64_t words = 2ull * tiles + uint64_t(slices_) * (lists.slots / 32 + tiles);
+                if (words * 4 > ctx_.caps.maxStorageBufferRange)
+                    throw RendererError("deferred: the transparent slice rows need " + std::to_string(words * 4) +
+                                        " bytes, more than maxStorageBufferRange of " + ctx_.info.name +
+                                        "; use fewer --slices, a larger --tile or fewer lights");
+                transparentMasks_ = graph.createBuffer("transparent_cluster_masks", words * 4,
+                                                       "per tile: slicing, then per slice a bitmask row over its "
+                                                       "transparent list");
+            }
         }
         if (settings_.debug && !useVolumes_)
             t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
                                                            VK_SAMPLE_COUNT_1_BIT,
                                                            "debug: edge mask, roughness, metallic"});
         gbuffer_.plan(graph, t_);
-        if (tilePass) lighting_.plan(graph, t_, useVolumes_);
+        if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_);
         if (useVolumes_) volumes_.plan(graph, t_);
-        if (blended_) transparent_.plan(graph, t_);
+        if (blended_) transparent_.plan(graph, t_, slices_, transparentMasks_);
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
@@ -119,6 +132,8 @@ class DeferredRenderer final : public Renderer {
     TransparentPass transparent_;
     std::vector<uint32_t> tileStats_; // uvec4 per tile
     uint64_t transparentSlots_ = 0;
+    uint32_t slices_ = 0;               // --light-assign clustered: depth slices; 0 when tiled
+    ResourceHandle transparentMasks_;   // clustered blended scenes: slice rows over the transparent lists
 };
 
 // Transparent lights per tile, kept and dropped: the tile statistics hold what each tile's
@@ -214,10 +229,8 @@ RendererStats DeferredRenderer::stats() const {
     else if (useVolumes_)
         s.leftOut.push_back({"depth slices and their bitmasks",
                              "volumes lighting draws each light's volume; --light-assign applies to tiled lighting"});
-    else if (blended_)
-        s.leftOut.push_back({"clusters for blended surfaces",
-                             "deferred clusters the opaque lighting only; blended surfaces keep their per-tile "
-                             "transparent list (from the near plane to the farthest opaque depth)"});
+    else if (!blended_)
+        s.leftOut.push_back({"slice rows over the transparent lists", "no blended material"});
     if (blended_) {
         TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
         double kept = 0, dropped = 0;

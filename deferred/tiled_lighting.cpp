@@ -21,9 +21,10 @@ TiledLighting::~TiledLighting() {
     destroyPassSet(ctx_, set_);
 }
 
-void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly) {
+void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, ResourceHandle transparentMasks) {
     t_ = &t;
     listsOnly_ = listsOnly;
+    transparentMasks_ = transparentMasks;
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
     const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
                                         TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
@@ -37,6 +38,8 @@ void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly) 
     uses.push_back({t.tileStats, Use::StorageWrite, TP_DEF_BINDING_TILE_STATS});
     if (t.transparentLists.valid())
         uses.push_back({t.transparentLists, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_LISTS});
+    if (transparentMasks.valid())
+        uses.push_back({transparentMasks, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_MASKS});
     if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_DEF_BINDING_DEBUG});
     graph.addPass(passName(), uses, [this](PassContext& pc) { record(pc); });
 }
@@ -66,6 +69,14 @@ void TiledLighting::prepare(FrameGraph& graph) {
                                             {graph.owner(), "", "transparent_list_offsets",
                                              "per tile: first slot of its transparent list (prefix sum)"});
         externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
+        if (!transparentMasks_.valid()) {
+            // The shader declares the slice rows whenever it writes lists; only clustered uses them.
+            const uint32_t zeros[4] = {};
+            noMasks_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            {graph.owner(), "", "transparent_cluster_masks_unused",
+                                             "stand-in: slice rows are clustered only"});
+            externals.push_back({TP_DEF_BINDING_TRANSPARENT_MASKS, noMasks_.buffer});
+        }
     }
     uploadCandidates(graph);
     externals.push_back({TP_DEF_BINDING_CANDIDATES, candidates_.buffer});

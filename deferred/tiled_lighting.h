@@ -31,7 +31,9 @@ class TiledLighting {
     ~TiledLighting();
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
-    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false);
+    // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
+    // transparent lists that this pass writes for the blended pass (deferred_shared.h).
+    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {});
     void prepare(FrameGraph& graph);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
@@ -48,12 +50,14 @@ class TiledLighting {
     bool binned_ = true;
     uint32_t slices_ = 0;
     bool listsOnly_ = false;
+    ResourceHandle transparentMasks_;
     uint32_t maxCandidates_ = 0; // binned: the most candidates of any tile (the batches' range)
     uint64_t candidateCount_ = 0;
     const DeferredTargets* t_ = nullptr;
     PassSet set_;
     Buffer listOffsets_; // transparent lists' per-tile offsets (blended scenes)
     Buffer candidates_;  // binned culling's candidates (a 16-byte header otherwise)
+    Buffer noMasks_;     // blended scenes, tiled: a 16-byte stand-in for the unused slice rows
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

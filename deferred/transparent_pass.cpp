@@ -3,6 +3,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/gpu/resources.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/deferred_shared.h"
 
@@ -14,10 +15,13 @@ TransparentPass::~TransparentPass() {
     destroyPassSet(ctx_, set_);
 }
 
-void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t) {
+void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, uint32_t slices, ResourceHandle masks) {
     t_ = &t;
+    slices_ = masks.valid() ? slices : 0u;
+    masks_ = masks;
     std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
                                  {t.gbufferDepth, Use::DepthTest}};
+    if (masks.valid()) uses.push_back({masks, Use::StorageRead, TP_DEF_FWD_BINDING_MASKS});
     if (t.msaa()) {
         uses.push_back({t.hdrMsaa, Use::ColorAttachment});
         uses.push_back({t.hdr, Use::ColorResolve});
@@ -28,12 +32,21 @@ void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t) {
 }
 
 void TransparentPass::prepare(FrameGraph& graph) {
-    set_ = graph.createPassSet("transparent_forward");
+    std::vector<ExternalBuffer> externals;
+    if (!masks_.valid()) {
+        const uint32_t zeros[4] = {};
+        noMasks_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                        {graph.owner(), "", "transparent_cluster_masks_unused",
+                                         "stand-in: slice rows are clustered only"});
+        externals.push_back({TP_DEF_FWD_BINDING_MASKS, noMasks_.buffer});
+    }
+    set_ = graph.createPassSet("transparent_forward", VK_NULL_HANDLE, externals);
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
     d.fragmentShader = "deferred_transparent_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
+    d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
     d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample

@@ -5,6 +5,7 @@
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
 #include "core/gpu/descriptors.h"
+#include "core/gpu/resources.h"
 
 namespace tp {
 
@@ -15,7 +16,9 @@ class TransparentPass {
   public:
     TransparentPass(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
     ~TransparentPass();
-    void plan(FrameGraph& graph, DeferredTargets& t);
+    // slices > 0 with `masks` (--light-assign clustered): fragments take their cluster's
+    // lights through the slice rows the tiled pass wrote over the transparent lists.
+    void plan(FrameGraph& graph, DeferredTargets& t, uint32_t slices = 0, ResourceHandle masks = {});
     void prepare(FrameGraph& graph);
 
   private:
@@ -23,6 +26,9 @@ class TransparentPass {
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DeferredTargets* t_ = nullptr;
+    uint32_t slices_ = 0;
+    ResourceHandle masks_;
+    Buffer noMasks_; // tiled: a 16-byte stand-in for the unused slice rows
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -25,9 +25,24 @@ using std::sin;
 #define TP_DEF_BINDING_EDGE_MASK 9   // sampler: 1x edge mask (volumes lighting under MSAA)
 #define TP_DEF_BINDING_LIST_OFFSETS 10 // buffer uint[tileCount + 1]: compact transparent lists' per-tile offsets
 #define TP_DEF_BINDING_CANDIDATES 11   // buffer uint[]: binned culling's per-tile candidates (TP_DEF_CAND_*)
+#define TP_DEF_BINDING_TRANSPARENT_MASKS 12 // buffer uint[]: clustered blended scenes: slice rows over the transparent lists
 
 // ---- set 1 of the hybrid forward pass (blended materials) ----
 #define TP_DEF_FWD_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
+#define TP_DEF_FWD_BINDING_MASKS 1   // buffer: clustered: slice rows over the transparent lists (a dummy when tiled)
+
+// Clustered blended scenes (--light-assign clustered): the transparent list of a tile is its
+// span list (near plane to farthest opaque depth, unbounded over the sky) and a buffer of
+// per-slice bitmask rows over it lets a blended fragment take only its cluster. Words
+// [2t, 2t + 1]: tile t's sliceNear and sliceScale (light_assign.glsl: LaSlicing, with front
+// slices); then tile t's rows from defClusterRowsBase, `slices` rows of ceil(count / 32)
+// words (count: the list's stored lights). The base needs no offsets table: with `offset`
+// the list's compact offset (capacity c), floor(offset / 32) + t + ceil(c / 32) <=
+// floor((offset + c) / 32) + t + 1, so the tiles' rows never overlap, and the buffer holds
+// 2 * tiles + slices * (floor(slots / 32) + tiles) words.
+TP_INLINE uint defClusterRowsBase(uint tileCount, uint offset, uint tile, uint slices) {
+    return 2u * tileCount + slices * (offset / 32u + tile);
+}
 
 // ---- specialization constants of the deferred shaders (ids after the scene's 0..2) ----
 #define TP_DEF_SPEC_TILE_SIZE 10     // tile edge in pixels (= workgroup edge)

@@ -44,8 +44,15 @@ layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2D
 #endif
 #endif
 #ifdef TP_TRANSPARENT
-layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_LISTS) buffer TransparentLists {
+// coherent: clustered, the invocations of a tile read each other's list entries (after
+// memoryBarrierBuffer and barrier) to build the slice rows.
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_LISTS) coherent buffer TransparentLists {
     uint tLists[]; // LaListHeader per tile, then the tiles' runs of light indices
+};
+// Clustered: per-slice bitmask rows over the transparent lists (deferred_shared.h:
+// defClusterRowsBase); a 16-byte dummy otherwise.
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_MASKS) writeonly buffer TransparentMasks {
+    uint tMasks[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_LIST_OFFSETS) readonly buffer ListOffsets {
     uint tOffsets[]; // tileCount + 1: tile t's run is [tOffsets[t], tOffsets[t + 1])
@@ -89,6 +96,8 @@ shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 layout(constant_id = TP_DEF_SPEC_SLICES) const uint kSlices = 0u;
 shared uint sMask[TP_DEF_CLUSTER_MASK_WORDS];
 shared float sSliceNear, sSliceScale;
+// The tile's slices: the opaque range only (no front slices: blended surfaces are not lit here).
+LaSlicing rangeSlicing() { return laSlicing(1.0, sSliceNear, sSliceScale, kSlices, 0u); }
 
 // The first batch writes hdr, the tile statistics and the transparent lists; later
 // batches add to them.
@@ -105,7 +114,7 @@ vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
         // The lights of this sample's cluster: its slice's bits over the tile list.
         float dist = -(frame.view * vec4(ss.position, 1.0)).z;
         uint words = (n + 31u) / 32u;
-        uint row = laSliceOf(dist, sSliceNear, sSliceScale, kSlices, false) * words;
+        uint row = laSliceOf(dist, rangeSlicing()) * words;
         for (uint w = 0u; w < words; ++w) {
             uint bits = sMask[row + w];
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
@@ -131,7 +140,7 @@ void markSlices() {
         // The shared list holds the directional lights too: they reach every slice.
         uvec2 range = light.type == TP_LIGHT_DIRECTIONAL
                           ? uvec2(0u, kSlices - 1u)
-                          : laLightSlices(sphere.xyz, sphere.w, sSliceNear, sSliceScale, kSlices, false);
+                          : laLightSlices(sphere.xyz, sphere.w, rangeSlicing());
         for (uint sl = range.x; sl <= range.y; ++sl) atomicOr(sMask[sl * words + (i >> 5u)], 1u << (i & 31u));
     }
 }
@@ -212,6 +221,45 @@ void cull(uvec2 tile, bool hasGeometry) {
 #endif
 }
 
+#if defined(TP_TRANSPARENT) && !defined(TP_LISTS_ONLY)
+// Clustered: the slice rows of tile `tileIndex`'s transparent list, for the blended pass
+// (transparent.frag): front slices from the near plane to the nearest opaque depth, range
+// slices over the opaque range (light_assign.glsl: laFrontSlices). A light's bit is set in
+// every slice its padded depth interval reaches (laLightSlices: conservative). Each
+// invocation owns whole 32-light words and writes each word of every row once: no clear,
+// no atomics. After memoryBarrierBuffer + barrier (the list is complete).
+uint gWordBits[64]; // kSlices <= 64 (core/lightassign/assign_knob.cpp)
+void writeTransparentSlices(uint tileIndex) {
+    const uint tileCount = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
+    const uint offset = tOffsets[tileIndex];
+    const uint kept = min(sTransparentCount, tOffsets[tileIndex + 1u] - offset);
+    const uint start = laListStart(tileCount, offset);
+    const bool geometry = laTileHasGeometry();
+    const float sliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
+    const float sliceFar = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
+    const uint front = laFrontSlices(kSlices, true);
+    const LaSlicing s = laSlicing(-viewZFromDepth(1.0, frame.invProj), sliceNear,
+                                  laSliceScale(sliceNear, sliceFar, kSlices, front), kSlices, front);
+    const uint base = defClusterRowsBase(tileCount, offset, tileIndex, kSlices);
+    const uint words = (kept + 31u) / 32u;
+    for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
+        for (uint sl = 0u; sl < kSlices; ++sl) gWordBits[sl] = 0u;
+        for (uint b = 0u; b < 32u && w * 32u + b < kept; ++b) {
+            LightGpu light = lights[tLists[start + w * 32u + b]];
+            vec4 sphere = lightSphereView(light, frame.view);
+            uvec2 range = light.type == TP_LIGHT_DIRECTIONAL ? uvec2(0u, kSlices - 1u)
+                                                             : laLightSlices(sphere.xyz, sphere.w, s);
+            for (uint sl = range.x; sl <= range.y; ++sl) gWordBits[sl] |= 1u << b;
+        }
+        for (uint sl = 0u; sl < kSlices; ++sl) tMasks[base + sl * words + w] = gWordBits[sl];
+    }
+    if (gl_LocalInvocationIndex == 0u) {
+        tMasks[2u * tileIndex] = floatBitsToUint(s.sliceNear);
+        tMasks[2u * tileIndex + 1u] = floatBitsToUint(s.sliceScale);
+    }
+}
+#endif
+
 // The pixels of this invocation: (k % perAxis, k / perAxis) steps of TP_GROUP.
 ivec2 pixelOf(uvec2 tile, uint k) {
     uint perAxis = kTileSize / TP_GROUP;
@@ -240,13 +288,19 @@ void main() {
         bool geometry = laTileHasGeometry();
         sSliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
         float far = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
-        sSliceScale = laSliceScale(sSliceNear, far, kSlices, false);
+        sSliceScale = laSliceScale(sSliceNear, far, kSlices, 0u);
     }
     cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
+#ifdef TP_TRANSPARENT
+    if (kSlices > 0u) memoryBarrierBuffer(); // the transparent list, for writeTransparentSlices
+#endif
     barrier();
     if (kSlices > 0u) {
         markSlices();
+#ifdef TP_TRANSPARENT
+        if (firstBatch()) writeTransparentSlices(tile.y * gl_NumWorkGroups.x + tile.x);
+#endif
         barrier();
     }
     // A later batch with no light in this tile adds nothing (sCount is uniform here).

@@ -4,6 +4,8 @@
 // sample), so they are drawn after the lighting, back to front, alpha-blended into hdr,
 // each fragment lit by its tile's transparent light list (culled by the tiled lighting
 // pass against [near plane, farthest opaque depth]; compact layout, include/light_assign.h).
+// Clustered (kSlices > 0): only the lights of the fragment's cluster, through the slice rows
+// the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase).
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
@@ -17,7 +19,33 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_LISTS) readonly b
     uint tLists[];
 };
 
+layout(constant_id = TP_DEF_SPEC_SLICES) const uint kSlices = 0u;
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_MASKS) readonly buffer TransparentMasks {
+    uint tMasks[];
+};
+
 layout(location = 0) out vec4 outColor;
+
+// The lights of the list whose bit is set in the slice of the shading point, one 32-light
+// word at a time, in list order.
+vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSample surface) {
+    LaSlicing s = laSlicing(-viewZFromDepth(1.0, frame.invProj), uintBitsToFloat(tMasks[2u * tile]),
+                            uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices, laFrontSlices(kSlices, true));
+    float dist = -(frame.view * vec4(surface.position, 1.0)).z;
+    uint words = (count + 31u) / 32u;
+    uint offset = start - tileCount * TP_LA_HEADER_WORDS;
+    uint row = defClusterRowsBase(tileCount, offset, tile, kSlices) + laSliceOf(dist, s) * words;
+    vec3 sum = vec3(0.0);
+    for (uint w = 0u; w < words; ++w) {
+        uint bits = tMasks[row + w];
+        for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+            int lsb = findLSB(bits);
+            bits &= bits - 1u;
+            sum += evalLight(lights[tLists[start + w * 32u + uint(lsb)]], surface, kHasSpot);
+        }
+    }
+    return sum;
+}
 
 void main() {
     MaterialSample ms = evalFragmentMaterial();
@@ -26,6 +54,10 @@ void main() {
     uint count = tLists[laHeaderWord(tile, TP_LA_COUNT)]; // explicit count: bounded loop
     uint start = tLists[laHeaderWord(tile, TP_LA_START)];
     vec3 sum = ambientAndEmissive(ms);
+    if (kSlices > 0u) {
+        outColor = vec4(sum + clusterLights(tile, tiles.x * tiles.y, count, start, ms.surface), ms.alpha);
+        return;
+    }
     for (uint i = 0u; i < count; ++i)
         sum += evalLight(lights[tLists[start + i]], ms.surface, kHasSpot);
     outColor = vec4(sum, ms.alpha);

@@ -109,13 +109,13 @@ bool passes(LightGpu light, vec4 sphere, ListVolume v) {
 // Sets list slot `pos`'s bit in every slice its light's sphere (lightSphereView) reaches.
 // The slices inside the opaque range take the light only when it meets the tile's opaque
 // volume (`inOpaque`, the test a tiled opaque list makes), so an opaque fragment's cluster
-// never holds more than the tiled opaque list; the front slice (blended surfaces nearer
+// never holds more than the tiled opaque list; the front slices (blended surfaces nearer
 // than the opaque range) and, where the tile sees the sky, the last one take it from the
 // span test alone.
-void markSlices(vec4 sphere, uint pos, float sliceNear, float sliceScale, bool inOpaque, bool openEnd) {
-    uvec2 range = laLightSlices(sphere.xyz, sphere.w, sliceNear, sliceScale, kSlices, kSpanFromNear);
+void markSlices(vec4 sphere, uint pos, LaSlicing slicing, bool inOpaque, bool openEnd) {
+    uvec2 range = laLightSlices(sphere.xyz, sphere.w, slicing);
     for (uint sl = range.x; sl <= range.y; ++sl) {
-        bool front = kSpanFromNear && sl == 0u;
+        bool front = sl < slicing.front;
         if (front || inOpaque || (openEnd && sl == kSlices - 1u)) gWordBits[sl] |= 1u << (pos & 31u);
     }
 }
@@ -184,14 +184,17 @@ void main() {
 #ifdef TP_FP_CLUSTERED
     // The span: the opaque range, or from the near plane (blended surfaces lie anywhere in
     // front of the opaque ones) to the farthest opaque depth, unbounded over the sky.
-    // Slices follow the opaque range (include/light_assign.glsl: laSliceOf).
+    // Slices follow the opaque range and, with blended surfaces, the front region
+    // (include/light_assign.glsl: laSliceOf).
     const bool spanTests = kSpanFromNear || depth.hasGeometry;
     const float spanNearDepth = kSpanFromNear ? 1.0 : depth.nearDepth;
     const float spanFarDepth = kSpanFromNear ? transparentFar : depth.farDepth;
     const bool openEnd = kSpanFromNear && transparentFar == 0.0;
     const float sliceNear = depth.hasGeometry ? max(-viewZFromDepth(depth.nearDepth, frame.invProj), 1e-30) : 1e30;
     const float sliceFar = depth.hasGeometry ? -viewZFromDepth(depth.farDepth, frame.invProj) : 1e30;
-    const float sliceScale = laSliceScale(sliceNear, sliceFar, kSlices, kSpanFromNear);
+    const uint front = laFrontSlices(kSlices, kSpanFromNear);
+    const float sliceScale = laSliceScale(sliceNear, sliceFar, kSlices, front);
+    const LaSlicing slicing = laSlicing(-viewZFromDepth(1.0, frame.invProj), sliceNear, sliceScale, kSlices, front);
     const uint maskBase = data[params.lists.w + tileIndex];
     const uint maskStride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
     const ListVolume volume0 = makeVolume(tile, spanNearDepth, spanFarDepth, spanTests);
@@ -280,7 +283,7 @@ void main() {
                     flushWord((count0 >> 5u) - 1u, maskBase, maskStride);
                     dirty = false;
                 }
-                markSlices(sphere, count0, sliceNear, sliceScale, !kSpanFromNear || passes(light, sphere, volume1),
+                markSlices(sphere, count0, slicing, !kSpanFromNear || passes(light, sphere, volume1),
                            openEnd);
                 dirty = true;
             }

@@ -39,34 +39,67 @@ TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, m
 }
 
 // ---- clustered: depth slices of a tile (docs/clustered.md) ----
-// The slices follow the tile's opaque depth range [nearest, farthest] (view distances
-// sliceNear, sliceFar): exponential between them, so every slice is as deep relative to
-// its distance and each lies inside the range a tiled opaque list is culled against. With
-// a front slice (the scene has blended surfaces), slice 0 holds everything nearer than
-// sliceNear (blended surfaces in front of the opaque ones) and slices 1 .. S-1 the range;
-// otherwise slices 0 .. S-1 do. The first range slice also takes anything nearer, the last
-// everything farther (blended surfaces over the sky). A tile without geometry has
-// sliceNear = sliceFar = 1e30: everything is in slice 0. The culling and the shading both
-// use laSliceOf; a light's slice range is padded (laLightSlices), so rounding cannot
-// separate them.
-float laSliceScale(float sliceNear, float sliceFar, uint slices, bool front) {
-    return float(slices - (front ? 1u : 0u)) / log(max(sliceFar / sliceNear, 1.001));
+// The range slices follow the tile's opaque depth range [nearest, farthest] (view
+// distances sliceNear, sliceFar): exponential between them, so every slice is as deep
+// relative to its distance and each lies inside the range a tiled opaque list is culled
+// against. With front slices (the scene has blended surfaces: laFrontSlices), the first
+// `front` slices cut [frontNear, sliceNear) - the near plane to the nearest opaque depth,
+// where only blended surfaces are - exponentially too, so a blended fragment in front of
+// the opaque ones sees a thin cluster instead of everything nearer than sliceNear; the
+// range slices are the rest. The first front slice also takes anything nearer than
+// frontNear, the first range slice anything nearer than sliceNear when there is no front,
+// the last everything farther (blended surfaces over the sky). A tile without geometry has
+// sliceNear = sliceFar = 1e30: everything is in the front slices (or slice 0 without).
+// The culling and the shading both use laSliceOf; a light's slice range is padded
+// (laLightSlices), so rounding cannot separate them.
+struct LaSlicing {
+    float frontNear;  // view distance where the front slices start (the near plane)
+    float frontScale; // front slices per unit of log(distance / frontNear); 0 without
+    float sliceNear;  // view distance of the tile's nearest opaque depth (1e30 without geometry)
+    float sliceScale; // range slices per unit of log(distance / sliceNear)
+    uint slices;      // all slices of the tile
+    uint front;       // front slices (0: none)
+};
+
+// Front slices: a fixed share of the slices (TP_LA_FRONT_SLICE_SHARE), at least one, when
+// the scene has blended surfaces; none otherwise.
+uint laFrontSlices(uint slices, bool blended) {
+    return blended ? max(slices / TP_LA_FRONT_SLICE_SHARE, 1u) : 0u;
 }
 
-// The slice of view distance `dist` (> 0 in front of the eye).
-uint laSliceOf(float dist, float sliceNear, float sliceScale, uint slices, bool front) {
-    if (front && dist < sliceNear) return 0u;
-    uint first = front ? 1u : 0u;
-    float s = log(max(dist / sliceNear, 1.0)) * sliceScale;
-    return first + uint(clamp(s, 0.0, float(slices - 1u - first))); // s >= 0: the cast floors
+float laSliceScale(float sliceNear, float sliceFar, uint slices, uint front) {
+    return float(slices - front) / log(max(sliceFar / sliceNear, 1.001));
+}
+
+// The tile's slicing from what the tile record keeps (sliceNear, sliceScale); the front
+// scale is recomputed the same way by the culling and the shading.
+LaSlicing laSlicing(float frontNear, float sliceNear, float sliceScale, uint slices, uint front) {
+    LaSlicing s;
+    s.frontNear = frontNear;
+    s.frontScale = front > 0u ? float(front) / log(max(sliceNear / frontNear, 1.001)) : 0.0;
+    s.sliceNear = sliceNear;
+    s.sliceScale = sliceScale;
+    s.slices = slices;
+    s.front = front;
+    return s;
+}
+
+// The slice of view distance `dist` (> 0 in front of the eye). Monotone in dist: the front
+// slices are [0, front), the range slices [front, slices).
+uint laSliceOf(float dist, LaSlicing s) {
+    if (s.front > 0u && dist < s.sliceNear) {
+        float f = log(max(dist / s.frontNear, 1.0)) * s.frontScale;
+        return uint(clamp(f, 0.0, float(s.front - 1u))); // f >= 0: the cast floors
+    }
+    float r = log(max(dist / s.sliceNear, 1.0)) * s.sliceScale;
+    return s.front + uint(clamp(r, 0.0, float(s.slices - 1u - s.front)));
 }
 
 // The slices [x, y] that a sphere (view-space centre c, padded radius r) can reach.
-uvec2 laLightSlices(vec3 c, float r, float sliceNear, float sliceScale, uint slices, bool front) {
+uvec2 laLightSlices(vec3 c, float r, LaSlicing s) {
     float d0 = (-c.z - r) * (1.0 - TP_TILE_CULL_PAD);
     float d1 = (-c.z + r) * (1.0 + TP_TILE_CULL_PAD);
-    return uvec2(laSliceOf(d0, sliceNear, sliceScale, slices, front),
-                 laSliceOf(d1, sliceNear, sliceScale, slices, front));
+    return uvec2(laSliceOf(d0, s), laSliceOf(d1, s));
 }
 
 // ---- compact lists (light_assign.h: LaListHeader) in a uint[] buffer ----

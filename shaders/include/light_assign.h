@@ -14,6 +14,11 @@ namespace tp::gpu {
 #define TP_LA_OPAQUE 0u      // the tile's [nearest, farthest] opaque depth; empty over the sky
 #define TP_LA_TRANSPARENT 1u // the near plane to the farthest opaque depth (unbounded over the sky)
 
+// Clustered with blended surfaces: 1 / TP_LA_FRONT_SLICE_SHARE of the slices (at least one)
+// cut the tile's front region, near plane to nearest opaque depth (light_assign.glsl:
+// laFrontSlices); the rest cut the opaque range.
+#define TP_LA_FRONT_SLICE_SHARE 4u
+
 // A compact light list in one uint buffer: the headers of every tile first, then the light
 // indices. Tile t's header is words [t * TP_LA_HEADER_WORDS, (t + 1) * TP_LA_HEADER_WORDS);
 // its lights are words [start, start + count), start = headers' size + the tile's offset

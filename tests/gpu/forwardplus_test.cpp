@@ -567,9 +567,26 @@ TEST(ForwardPlusClustered, Floor4096LightsTinyTile8Slices4) {
     expectMatchesReference(floorScene(4096), s);
 }
 
+// laSliceOf (include/light_assign.glsl) on the CPU, with front slices (blended scenes).
+struct CpuSlicing {
+    float frontNear;
+    uint32_t slices, front;
+    uint32_t operator()(float dist, const gpu::FpTileLists& t) const {
+        if (front > 0 && dist < t.sliceNear) {
+            float scale = float(front) / std::log(std::max(t.sliceNear / frontNear, 1.001f));
+            float f = std::log(std::max(dist / frontNear, 1.0f)) * scale;
+            return uint32_t(std::clamp(f, 0.0f, float(front - 1)));
+        }
+        float r = std::log(std::max(dist / t.sliceNear, 1.0f)) * t.sliceScale;
+        return front + uint32_t(std::clamp(r, 0.0f, float(slices - 1 - front)));
+    }
+};
+
 // Every light that reaches a pixel's surface point has its bit set in the pixel's cluster
-// (tile, slice of its view distance): the clusters are conservative. Prints how much
-// smaller a cluster is than the tile's span list.
+// (tile, slice of its view distance): the clusters are conservative. The same for points of
+// the pixel's ray in front of its surface, where blended surfaces are (they take the front
+// slices when nearer than the tile's nearest opaque depth). Prints how much smaller a
+// cluster is than the tile's span list.
 TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -586,41 +603,55 @@ TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
     std::vector<uint32_t> maskBase(bound.size() + 1, 0);
     for (size_t t = 0; t < bound.size(); ++t) maskBase[t + 1] = maskBase[t] + 16 * ((bound[t] + 31) / 32);
     ASSERT_EQ(size_t(maskBase.back()), r.masks.size());
+    glm::vec4 nearPlane = f.invProj * glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+    // The courtyard has blended surfaces: 16 / TP_LA_FRONT_SLICE_SHARE front slices.
+    const CpuSlicing sliceOf{-nearPlane.z / nearPlane.w, 16, 16 / TP_LA_FRONT_SLICE_SHARE};
     uint64_t missing = 0, pixels = 0, inCluster = 0, inList = 0, inTiled = 0;
+    uint64_t frontPoints = 0, inFrontCluster = 0, inFrontList = 0;
+    auto check = [&](uint32_t x, uint32_t y, float depth, uint32_t tile, const std::vector<uint32_t>& list) {
+        const gpu::FpTileLists& t = r.tiles[tile];
+        glm::vec3 p = unproject(f, x, y, depth);
+        uint32_t slice = sliceOf(-(f.view * glm::vec4(p, 1.0f)).z, t);
+        uint32_t stride = (maskBase[tile + 1] - maskBase[tile]) / 16;
+        std::set<uint32_t> cluster;
+        for (uint32_t i = 0; i < list.size(); ++i)
+            if (r.masks[maskBase[tile] + slice * stride + i / 32] & (1u << (i % 32))) cluster.insert(list[i]);
+        for (uint32_t li = 0; li < lights.size(); ++li)
+            if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], p) && !cluster.count(li)) {
+                if (++missing < 10)
+                    ADD_FAILURE() << "pixel " << x << "," << y << " depth " << depth << " slice " << slice
+                                  << ": light " << li << " reaches it but is not in its cluster";
+            }
+        return std::make_pair(slice, cluster.size());
+    };
     for (uint32_t y = 0; y < settings.height; ++y)
         for (uint32_t x = 0; x < settings.width; ++x) {
             float d = r.depth.r[y * r.depth.width + x];
             if (d <= 0.0f) continue;
             uint32_t tile = (y / 16) * r.grid.tilesX + x / 16;
-            const gpu::FpTileLists& t = r.tiles[tile];
-            glm::vec3 p = unproject(f, x, y, d);
-            float dist = -(f.view * glm::vec4(p, 1.0f)).z;
-            // laSliceOf with a front slice (the courtyard has blended surfaces).
-            uint32_t slice = 0;
-            if (dist >= t.sliceNear)
-                slice = 1 + uint32_t(std::clamp(std::log(std::max(dist / t.sliceNear, 1.0f)) * t.sliceScale, 0.0f, 14.0f));
-            uint32_t stride = (maskBase[tile + 1] - maskBase[tile]) / 16;
             std::vector<uint32_t> list = listOf(r, tile, 0, "compact");
-            std::set<uint32_t> cluster;
-            for (uint32_t i = 0; i < list.size(); ++i)
-                if (r.masks[maskBase[tile] + slice * stride + i / 32] & (1u << (i % 32))) cluster.insert(list[i]);
-            for (uint32_t li = 0; li < lights.size(); ++li)
-                if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], p) && !cluster.count(li)) {
-                    if (++missing < 10)
-                        ADD_FAILURE() << "pixel " << x << "," << y << " slice " << slice << ": light " << li
-                                      << " reaches it but is not in its cluster";
-                }
             ++pixels;
             inTiled += tiled.tiles[tile].list[0].count;
-            inCluster += cluster.size();
+            inCluster += check(x, y, d, tile, list).second;
             inList += list.size();
+            // Points in front of the surface (reverse-Z: depth d .. 1, the near plane).
+            for (uint32_t k = 1; k < 8; ++k) {
+                auto [slice, size] = check(x, y, d + (1.0f - d) * float(k) / 8.0f, tile, list);
+                if (slice >= sliceOf.front) continue;
+                ++frontPoints;
+                inFrontCluster += size;
+                inFrontList += list.size();
+            }
         }
     EXPECT_EQ(missing, 0u);
     EXPECT_GT(pixels, 0u);
-    EXPECT_LT(inCluster, inList); // the slices do cut the span list
+    EXPECT_GT(frontPoints, 0u);
+    EXPECT_LT(inCluster, inList);           // the slices do cut the span list
+    EXPECT_LT(inFrontCluster, inFrontList); // and so do the front slices
     std::printf("[ forwardplus ] clustered: %.2f lights per pixel's cluster against %.2f in its tile's span list "
-                "and %.2f in the tiled opaque list\n",
-                double(inCluster) / double(pixels), double(inList) / double(pixels), double(inTiled) / double(pixels));
+                "and %.2f in the tiled opaque list; in front of the opaque surfaces %.2f against %.2f\n",
+                double(inCluster) / double(pixels), double(inList) / double(pixels), double(inTiled) / double(pixels),
+                double(inFrontCluster) / double(frontPoints), double(inFrontList) / double(frontPoints));
     expectNoValidationMessages(*ctx);
 }
 
