@@ -11,6 +11,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/rendering.h"
+#include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
 #include "core/render/msaa_knob.h"
@@ -446,14 +447,9 @@ class ForwardPlusRenderer final : public Renderer {
             if (i > 0) {
                 // Hand-written (the graph orders passes, not dispatches within one): the next
                 // batch continues the lists, counts and slice words this one wrote.
-                VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-                mb.srcStageMask = mb.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-                mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-                mb.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-                dep.memoryBarrierCount = 1;
-                dep.pMemoryBarriers = &mb;
-                vkCmdPipelineBarrier2(pc.cmd, &dep);
+                memoryBarrier(pc.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
             }
             // linked prepends each batch, so it takes them last to first.
             const uint32_t b = layout_ == TP_FP_LAYOUT_LINKED ? batches - 1 - i : i;

@@ -11,13 +11,6 @@
 
 namespace tp::la {
 
-// For every tile, an upper bound on the local lights whose sphere meets the tile's
-// depth-unbounded frustum (the side planes x_ndc, y_ndc = tile edges). The GPU tests a
-// subset of that volume (its frustum is also bounded in depth, spot lights also by their
-// cone, optionally by the frustum's box) with a much smaller padding, so its count can
-// never exceed this bound - for either depth range (opaque or transparent).
-// Computed per light as a column range times a row range: O(lights * (tilesX + tilesY)).
-// view/proj/lights must be what the GPU tests (the uploaded, camera-relative ones).
 // The tiles a light may touch: columns [x0, x1] x rows [y0, y1] (empty when x0 > x1).
 struct TileRect {
     int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
@@ -33,6 +26,13 @@ std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat
 // How many of `rects` cover each tile.
 std::vector<uint32_t> countTileRects(const TileGrid& grid, const std::vector<TileRect>& rects);
 
+// For every tile, an upper bound on the local lights whose sphere meets the tile's
+// depth-unbounded frustum (the side planes x_ndc, y_ndc = tile edges). The GPU tests a
+// subset of that volume (its frustum is also bounded in depth, spot lights also by their
+// cone, optionally by the frustum's box) with a much smaller padding, so its count can
+// never exceed this bound - for either depth range (opaque or transparent).
+// Computed per light as a column range times a row range: O(lights * (tilesX + tilesY)).
+// view/proj/lights must be what the GPU tests (the uploaded, camera-relative ones).
 std::vector<uint32_t> conservativeTileBound(const TileGrid& grid, const glm::mat4& view,
                                             const glm::mat4& proj,
                                             const std::vector<gpu::LightGpu>& lights,
