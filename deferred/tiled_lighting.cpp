@@ -6,9 +6,8 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
-#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
-#include "core/lightassign/tile_candidates.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 
@@ -103,24 +102,23 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         const gpu::FrameUniforms& f = scene_.shadingFrame();
         const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
         la::LightClasses classes = la::classifyLights(lights);
-        std::vector<la::TileRect> rects = la::conservativeTileRects(t_->grid, f.view, f.proj, lights, classes.local);
-        std::vector<uint32_t> bound = la::countTileRects(t_->grid, rects);
-        la::CompactLayout layout = la::makeCompactLayout(bound);
-        std::vector<uint32_t> runs = la::tileCandidates(t_->grid, rects, classes.local, layout.offsets);
+        la::LightBins bins = la::binLights(t_->grid, f.view, f.proj, lights, classes.local, true);
         const uint32_t directional = uint32_t(classes.directional.size());
+        // The buffer's size from the unclamped slot count: refused before it is built.
+        const uint64_t bytes = (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
+        if (bytes > ctx_.caps.maxStorageBufferRange)
+            throw RendererError("deferred: the binned light candidates need " + std::to_string(bytes) +
+                                " bytes, more than maxStorageBufferRange (" +
+                                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
+                                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
         words[TP_DEF_CAND_DIRECTIONAL] = directional;
         words[TP_DEF_CAND_OFFSETS] = TP_DEF_CAND_HEADER + directional;
         words[TP_DEF_CAND_RUNS] = TP_DEF_CAND_HEADER + directional + tiles + 1;
         words.insert(words.end(), classes.directional.begin(), classes.directional.end());
-        words.insert(words.end(), layout.offsets.begin(), layout.offsets.end());
-        words.insert(words.end(), runs.begin(), runs.end());
-        maxCandidates_ = directional + (bound.empty() ? 0 : *std::max_element(bound.begin(), bound.end()));
-        candidateCount_ = uint64_t(directional) * tiles + runs.size();
-        if (words.size() * 4 > ctx_.caps.maxStorageBufferRange)
-            throw RendererError("deferred: the binned light candidates need " + std::to_string(words.size() * 4) +
-                                " bytes, more than maxStorageBufferRange (" +
-                                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
-                                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
+        words.insert(words.end(), bins.offsets.begin(), bins.offsets.end());
+        words.insert(words.end(), bins.candidates.begin(), bins.candidates.end());
+        maxCandidates_ = directional + bins.maxBound;
+        candidateCount_ = uint64_t(directional) * tiles + bins.candidates.size();
     } else {
         candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
     }

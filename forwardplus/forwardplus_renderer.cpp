@@ -16,13 +16,12 @@
 #include "core/image/difference.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
-#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
-#include "core/lightassign/tile_bound.h"
-#include "core/lightassign/tile_candidates.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
+#include "forwardplus/light_culling.h"
 
 namespace tp {
 namespace {
@@ -57,18 +56,16 @@ class ForwardPlusRenderer final : public Renderer {
         classes_ = la::classifyLights(scene_.lightsGpu());
         if (layout_ != TP_FP_LAYOUT_FIXED || binned_) boundLists();
         sizeLists();
+        culling_.emplace(ctx_, scene_, cullConfig());
     }
 
     ~ForwardPlusRenderer() override {
         VkDevice d = ctx_.device;
-        for (VkPipeline p : {prepassOpaque_, prepassMask_, cull_, shade_[0], shade_[1], shade_[2]})
+        for (VkPipeline p : {prepassOpaque_, prepassMask_, shade_[0], shade_[1], shade_[2]})
             if (p) vkDestroyPipeline(d, p, nullptr);
-        if (cullLayout_) vkDestroyPipelineLayout(d, cullLayout_, nullptr);
         if (shadeLayout_) vkDestroyPipelineLayout(d, shadeLayout_, nullptr);
         if (sceneLayout_) vkDestroyPipelineLayout(d, sceneLayout_, nullptr);
-        destroyPassSet(ctx_, cullSet_);
         destroyPassSet(ctx_, shadeSet_);
-        if (sampler_) vkDestroySampler(d, sampler_, nullptr);
     }
 
     void plan(FrameGraph& graph) override {
@@ -103,14 +100,9 @@ class ForwardPlusRenderer final : public Renderer {
                 vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
             });
 
+        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_});
+
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
-        std::vector<PassUse> cullUses = {{depthSrc, Use::Sampled, TP_FP_BINDING_DEPTH},
-                                         {tiles_, Use::StorageWrite, TP_FP_BINDING_TILES},
-                                         {indices_, Use::StorageWrite, TP_FP_BINDING_INDICES}};
-        if (layout_ == TP_FP_LAYOUT_LINKED)
-            cullUses.push_back({counter_, Use::StorageWrite, TP_FP_BINDING_COUNTER});
-        if (clustered_) cullUses.push_back({masks_, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
-        graph.addPass("light_culling", cullUses, [this](PassContext& pc) { recordCulling(pc); });
 
         std::vector<PassUse> opaqueUses = {{color, Use::ColorAttachment},
                                            {depthSrc, Use::DepthTest},
@@ -180,7 +172,7 @@ class ForwardPlusRenderer final : public Renderer {
         add("local_lights", double(classes_.local.size()));
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(slotCount_));
-        add("culling_dispatches", double(cullDispatches_)); // batches of candidates (lavapipe's loop limit)
+        add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
         if (binned_) add("binned_candidates", double(candidates_.size()));
         if (clustered_) {
             add("slices", double(slices_));
@@ -247,18 +239,17 @@ class ForwardPlusRenderer final : public Renderer {
     void boundLists() {
         // The uploaded (camera-relative) view and lights: what the culling shader tests.
         const gpu::FrameUniforms& f = scene_.shadingFrame();
-        std::vector<la::TileRect> rects =
-            la::conservativeTileRects(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local);
-        tileBound_ = la::countTileRects(grid_, rects);
-        la::CompactLayout compact = la::makeCompactLayout(tileBound_);
-        tileOffsets_ = std::move(compact.offsets);
-        boundSlots_ = compact.slots;
+        la::LightBins bins = la::binLights(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local, binned_);
+        tileBound_ = std::move(bins.bound);
+        tileOffsets_ = std::move(bins.offsets);
+        boundSlots_ = bins.slots;
+        maxBound_ = bins.maxBound;
         // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
         if (boundSlots_ > 0xffffffffull - classes_.local.size() - grid_.count() - 64)
             throw RendererError("the tile lists need " + std::to_string(boundSlots_) +
                                 " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
                                 "fewer lights");
-        if (binned_) candidates_ = la::tileCandidates(grid_, rects, classes_.local, tileOffsets_);
+        candidates_ = std::move(bins.candidates);
         if (clustered_) sizeMasks();
     }
 
@@ -344,24 +335,32 @@ class ForwardPlusRenderer final : public Renderer {
                                             std::string(binned_ ? ", binned candidates per tile" : "")});
     }
 
-    void createDescriptors(FrameGraph& graph) {
-        VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-        si.magFilter = si.minFilter = VK_FILTER_NEAREST;
-        si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    // The culling pass's configuration: what its shader variant, batches and dispatches depend on.
+    fp::CullConfig cullConfig() const {
+        fp::CullConfig c;
+        c.grid = grid_;
+        c.lists = settings_.text("light-lists");
+        c.layout = layout_;
+        c.samples = settings_.msaa;
+        c.slices = slices_;
+        c.mostTested = binned_ ? maxBound_ : uint32_t(classes_.local.size());
+        c.binned = binned_;
+        c.clustered = clustered_;
+        c.twoLists = twoLists_;
+        c.spanFromNear = blendPass_;
+        return c;
+    }
 
+    void createDescriptors(FrameGraph& graph) {
         // fp_params is uploaded once in prepare(), outside the graph.
-        const std::vector<ExternalBuffer> params = {{TP_FP_BINDING_PARAMS, params_.buffer}};
-        cullSet_ = graph.createPassSet("light_culling", sampler_, params);
+        culling_->prepare(graph, params_.buffer);
         // forward_transparent declares the same bound uses and shares this set.
-        shadeSet_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, params);
+        shadeSet_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, {{TP_FP_BINDING_PARAMS, params_.buffer}});
     }
 
     void createPipelines() {
-        const bool msaa = settings_.msaa > 1;
         const auto samples = VkSampleCountFlagBits(settings_.msaa);
         sceneLayout_ = scene_.createPipelineLayout();
-        cullLayout_ = scene_.createPipelineLayout(cullSet_.layout);
         shadeLayout_ = scene_.createPipelineLayout(shadeSet_.layout);
 
         // Depth prepass: opaque without a fragment shader, masked with the alpha test.
@@ -375,17 +374,6 @@ class ForwardPlusRenderer final : public Renderer {
             pre.specConstants = scene_.specConstants(AlphaMode::Mask);
             prepassMask_ = createGraphicsPipeline(ctx_, pre);
         }
-
-        std::string cullName = "fp_cull_" + settings_.text("light-lists") + (clustered_ ? "_clustered" : "") +
-                               (msaa ? "_ms" : "") + "_comp";
-        std::vector<SpecConstant> cullSpec = scene_.specConstants(AlphaMode::Opaque);
-        cullSpec.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
-        cullSpec.push_back({TP_FP_SPEC_SAMPLES, settings_.msaa});
-        cullSpec.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
-        cullSpec.push_back({TP_FP_SPEC_BINNED, binned_ ? 1u : 0u});
-        cullSpec.push_back({TP_FP_SPEC_SLICES, slices_});
-        cullSpec.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, blendPass_ ? 1u : 0u});
-        cull_ = createComputePipeline(ctx_, cullName, cullSpec, cullLayout_, &cullSet_);
 
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
             if (!scene_.hasDraws(DrawFilter(mode))) continue;
@@ -425,45 +413,6 @@ class ForwardPlusRenderer final : public Renderer {
         endRendering(pc);
     }
 
-    // Candidates per culling dispatch: one invocation culls a whole tile, and lavapipe ends
-    // an invocation after 65,535 loop iterations (forwardplus_shared.h); a candidate costs
-    // one iteration (two for linked: count, then fill), plus, clustered, up to one per slice
-    // and a slice row write per 32 stored.
-    uint32_t cullBatch() const {
-        const uint32_t perCandidate = (layout_ == TP_FP_LAYOUT_LINKED ? 2 : 1) + (clustered_ ? slices_ + 1 : 0);
-        return std::max(1u, TP_FP_CULL_LOOP_BUDGET / perCandidate);
-    }
-
-    void recordCulling(PassContext& pc) {
-        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
-        scene_.bindSceneSet(pc.cmd, cullLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
-        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cullLayout_, TP_SET_PASS, 1, &cullSet_.set, 0,
-                                nullptr);
-        const uint32_t most = binned_ ? (tileBound_.empty() ? 0 : *std::max_element(tileBound_.begin(), tileBound_.end()))
-                                      : uint32_t(classes_.local.size());
-        const uint32_t batch = cullBatch();
-        const uint32_t batches = std::max(1u, (most + batch - 1) / batch);
-        for (uint32_t i = 0; i < batches; ++i) {
-            if (i > 0) {
-                // Hand-written (the graph orders passes, not dispatches within one): the next
-                // batch continues the lists, counts and slice words this one wrote.
-                memoryBarrier(pc.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                              VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-            }
-            // linked prepends each batch, so it takes them last to first.
-            const uint32_t b = layout_ == TP_FP_LAYOUT_LINKED ? batches - 1 - i : i;
-            gpu::DrawPush push{0, 0, 0, 0};
-            push.TP_FP_CULL_FIRST = b * batch;
-            push.TP_FP_CULL_END = b + 1 == batches ? 0xffffffffu : (b + 1) * batch;
-            push.TP_FP_CULL_INITIAL = i == 0 ? 1u : 0u;
-            vkCmdPushConstants(pc.cmd, cullLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-            // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
-            vkCmdDispatch(pc.cmd, (grid_.tilesX + 7) / 8, (grid_.tilesY + 7) / 8, 1);
-        }
-        cullDispatches_ = batches;
-    }
-
     void recordShading(PassContext& pc, bool transparent) {
         const bool msaa = settings_.msaa > 1;
         ColorTarget color;
@@ -500,16 +449,16 @@ class ForwardPlusRenderer final : public Renderer {
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
     std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
     uint64_t boundSlots_ = 0;
-    uint32_t cullDispatches_ = 0;
+    uint32_t maxBound_ = 0; // binned: the most candidates of any tile (the culling batches' range)
     uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
     std::string indexPurpose_;
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;
-    VkSampler sampler_ = VK_NULL_HANDLE;
-    PassSet cullSet_, shadeSet_;
-    VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, cullLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
-    VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE, cull_ = VK_NULL_HANDLE;
+    std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
+    PassSet shadeSet_;
+    VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
+    VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE;
     VkPipeline shade_[3] = {};
 
     std::vector<gpu::FpTileLists> tileLists_;

@@ -1,0 +1,90 @@
+#include "forwardplus/light_culling.h"
+
+#include <algorithm>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
+#include "core/gpu/vk_check.h"
+#include "core/render/scene_gpu.h"
+#include "forwardplus/forwardplus_shared.h"
+
+namespace tp::fp {
+
+LightCulling::~LightCulling() {
+    if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
+    if (sampler_) vkDestroySampler(ctx_.device, sampler_, nullptr);
+}
+
+void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
+    // Uses with a binding are also the pass's descriptor set (prepare).
+    std::vector<PassUse> uses = {{r.depth, Use::Sampled, TP_FP_BINDING_DEPTH},
+                                 {r.tiles, Use::StorageWrite, TP_FP_BINDING_TILES},
+                                 {r.indices, Use::StorageWrite, TP_FP_BINDING_INDICES}};
+    if (config_.layout == TP_FP_LAYOUT_LINKED) uses.push_back({r.counter, Use::StorageWrite, TP_FP_BINDING_COUNTER});
+    if (config_.clustered) uses.push_back({r.masks, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
+    graph.addPass("light_culling", uses, [this](PassContext& pc) { record(pc); });
+}
+
+void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
+    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    set_ = graph.createPassSet("light_culling", sampler_, {{TP_FP_BINDING_PARAMS, params}});
+    layout_ = scene_.createPipelineLayout(set_.layout);
+
+    const bool msaa = config_.samples > 1;
+    std::string name = "fp_cull_" + config_.lists + (config_.clustered ? "_clustered" : "") + (msaa ? "_ms" : "") +
+                       "_comp";
+    std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
+    spec.push_back({TP_FP_SPEC_TILE_SIZE, config_.grid.tileSize});
+    spec.push_back({TP_FP_SPEC_SAMPLES, config_.samples});
+    spec.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
+    spec.push_back({TP_FP_SPEC_BINNED, config_.binned ? 1u : 0u});
+    spec.push_back({TP_FP_SPEC_SLICES, config_.slices});
+    spec.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, config_.spanFromNear ? 1u : 0u});
+    pipeline_ = createComputePipeline(ctx_, name, spec, layout_, &set_);
+}
+
+// Candidates per culling dispatch: one invocation culls a whole tile, and lavapipe ends
+// an invocation after 65,535 loop iterations (forwardplus_shared.h); a candidate costs
+// one iteration (two for linked: count, then fill), plus, clustered, up to one per slice
+// and a slice row write per 32 stored.
+uint32_t LightCulling::batchSize() const {
+    const uint32_t perCandidate =
+        (config_.layout == TP_FP_LAYOUT_LINKED ? 2 : 1) + (config_.clustered ? config_.slices + 1 : 0);
+    return std::max(1u, TP_FP_CULL_LOOP_BUDGET / perCandidate);
+}
+
+void LightCulling::record(PassContext& pc) {
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
+    const uint32_t batch = batchSize();
+    const uint32_t batches = std::max(1u, (config_.mostTested + batch - 1) / batch);
+    const bool linked = config_.layout == TP_FP_LAYOUT_LINKED;
+    for (uint32_t i = 0; i < batches; ++i) {
+        if (i > 0) {
+            // Hand-written (the graph orders passes, not dispatches within one): the next
+            // batch continues the lists, counts and slice words this one wrote.
+            memoryBarrier(pc.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        }
+        // linked prepends each batch, so it takes them last to first.
+        const uint32_t b = linked ? batches - 1 - i : i;
+        gpu::DrawPush push{0, 0, 0, 0};
+        push.TP_FP_CULL_FIRST = b * batch;
+        push.TP_FP_CULL_END = b + 1 == batches ? 0xffffffffu : (b + 1) * batch;
+        push.TP_FP_CULL_INITIAL = i == 0 ? 1u : 0u;
+        vkCmdPushConstants(pc.cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+        // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
+        vkCmdDispatch(pc.cmd, (config_.grid.tilesX + 7) / 8, (config_.grid.tilesY + 7) / 8, 1);
+    }
+    dispatches_ = batches;
+}
+
+} // namespace tp::fp

@@ -1,0 +1,60 @@
+#pragma once
+// Forward+'s light_culling pass (compute, one invocation per tile, 8 x 8 tiles per
+// workgroup): depth bounds over every sample, point/spot lights against the tile
+// sub-frustum, lists written out in the chosen layout; with --light-assign clustered also
+// each depth slice's bitmask. Split into batches of candidates for lavapipe's loop limit.
+#include <cstdint>
+#include <string>
+
+#include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/lightassign/tile_grid.h"
+
+namespace tp {
+
+class GpuContext;
+class SceneGpu;
+
+namespace fp {
+
+struct CullConfig {
+    la::TileGrid grid;
+    std::string lists;      // --light-lists: names the shader variant
+    uint32_t layout = 0;    // TP_FP_LAYOUT_*
+    uint32_t samples = 1;   // --msaa
+    uint32_t slices = 16;   // clustered depth slices
+    uint32_t mostTested = 0; // the most lights any tile tests (binned: its candidates; all: every local light)
+    bool binned = true, clustered = false, twoLists = false, spanFromNear = false;
+};
+
+// The resources the pass reads and writes (counter: linked only; masks: clustered only).
+struct CullResources {
+    ResourceHandle depth, tiles, indices, counter, masks;
+};
+
+class LightCulling {
+  public:
+    LightCulling(GpuContext& ctx, SceneGpu& scene, const CullConfig& config)
+        : ctx_(ctx), scene_(scene), config_(config) {}
+    ~LightCulling();
+    void plan(FrameGraph& graph, const CullResources& r);
+    // params: fp_params, uploaded once outside the graph.
+    void prepare(FrameGraph& graph, VkBuffer params);
+    uint32_t dispatches() const { return dispatches_; } // batches of candidates
+
+  private:
+    uint32_t batchSize() const;
+    void record(PassContext& pc);
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    CullConfig config_;
+    uint32_t dispatches_ = 0;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+} // namespace fp
+} // namespace tp

@@ -1,0 +1,59 @@
+// la::binLights: the one binning both Forward+ and tiled deferred upload must equal its
+// parts (rectangles -> counts -> compact layout -> candidates), so folding them changed nothing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/light_bins.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_candidates.h"
+
+using namespace tp;
+
+TEST(LightBins, EqualTheirPartsAndBuildCandidatesOnlyWhenAsked) {
+    la::TileGrid g = la::makeTileGrid(200, 120, 16); // 13 x 8 tiles
+    glm::mat4 view = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, -0.25f, -1.0f));
+    glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f), r(0.2f, 4.0f);
+    std::vector<gpu::LightGpu> lights(150);
+    for (gpu::LightGpu& l : lights) {
+        l.position = {x(rng), y(rng), z(rng)};
+        l.range = r(rng);
+        l.type = TP_LIGHT_POINT;
+    }
+    std::vector<uint32_t> local;
+    for (uint32_t i = 1; i < lights.size(); i += 3) local.push_back(i);
+
+    std::vector<la::TileRect> rects = la::conservativeTileRects(g, view, proj, lights, local);
+    std::vector<uint32_t> bound = la::countTileRects(g, rects);
+    la::CompactLayout layout = la::makeCompactLayout(bound);
+    std::vector<uint32_t> cand = la::tileCandidates(g, rects, local, layout.offsets);
+
+    la::LightBins bins = la::binLights(g, view, proj, lights, local, true);
+    EXPECT_EQ(bins.bound, bound);
+    EXPECT_EQ(bins.offsets, layout.offsets);
+    EXPECT_EQ(bins.slots, layout.slots);
+    EXPECT_EQ(bins.candidates, cand);
+    EXPECT_EQ(bins.maxBound, *std::max_element(bound.begin(), bound.end()));
+    EXPECT_GT(bins.maxBound, 0u);
+
+    la::LightBins noCand = la::binLights(g, view, proj, lights, local, false);
+    EXPECT_TRUE(noCand.candidates.empty());
+    EXPECT_EQ(noCand.offsets, layout.offsets);
+    EXPECT_EQ(noCand.maxBound, bins.maxBound);
+}
+
+TEST(LightBins, NoLightsGiveEmptyBins) {
+    la::TileGrid g = la::makeTileGrid(64, 32, 16);
+    la::LightBins bins = la::binLights(g, glm::mat4(1.0f), glm::mat4(1.0f), {}, {}, true);
+    EXPECT_EQ(bins.bound, std::vector<uint32_t>(g.count(), 0));
+    EXPECT_EQ(bins.offsets, std::vector<uint32_t>(g.count() + 1, 0));
+    EXPECT_EQ(bins.slots, 0u);
+    EXPECT_TRUE(bins.candidates.empty());
+    EXPECT_EQ(bins.maxBound, 0u);
+}
