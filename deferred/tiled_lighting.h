@@ -24,7 +24,7 @@ class SceneGpu;
 
 class TiledLighting {
   public:
-    // binned (--light-cull binned): each tile tests only its candidates (core/lightassign/tile_candidates.h).
+    // binned (--light-cull binned): each tile tests only its candidates (core/lightassign/light_bins.h).
     // slices > 0 (--light-assign clustered): each sample takes only its depth slice's lights.
     TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices)
         : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices) {}

@@ -22,6 +22,7 @@
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "forwardplus/light_culling.h"
+#include "forwardplus/light_lists.h"
 
 namespace tp {
 namespace {
@@ -55,7 +56,8 @@ class ForwardPlusRenderer final : public Renderer {
         numLists_ = twoLists_ ? 2 : 1;
         classes_ = la::classifyLights(scene_.lightsGpu());
         if (layout_ != TP_FP_LAYOUT_FIXED || binned_) boundLists();
-        sizeLists();
+        lists_ = fp::sizeLists(ctx_, {layout_, settings_.text("light-lists"), grid_.count(),
+                                      settings_.integer("tile-capacity"), boundSlots_, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
     }
 
@@ -84,11 +86,11 @@ class ForwardPlusRenderer final : public Renderer {
 
         tiles_ = graph.createBuffer("tile_lists", VkDeviceSize(grid_.count()) * sizeof(gpu::FpTileLists),
                                     "per tile: list counts, starts, drops, depth bounds");
-        indices_ = graph.createBuffer("light_indices", indexBytes_, indexPurpose_);
+        indices_ = graph.createBuffer("light_indices", lists_.bytes, lists_.purpose);
         if (layout_ == TP_FP_LAYOUT_LINKED)
             counter_ = graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
         if (clustered_)
-            masks_ = graph.createBuffer("cluster_masks", std::max<uint64_t>(maskWords_ * 4, 16),
+            masks_ = graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
                                         "per tile and depth slice: a bitmask over the tile's list");
 
         std::vector<PassUse> prepassUses = {{depthSrc, Use::DepthAttachment}};
@@ -171,12 +173,12 @@ class ForwardPlusRenderer final : public Renderer {
         add("directional_lights_unculled", double(classes_.directional.size()));
         add("local_lights", double(classes_.local.size()));
         add("hdr_storage_bits_per_channel", 16.0);
-        add("light_list_slots", double(slotCount_));
+        add("light_list_slots", double(lists_.slots));
         add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
         if (binned_) add("binned_candidates", double(candidates_.size()));
         if (clustered_) {
             add("slices", double(slices_));
-            add("cluster_mask_words", double(maskWords_));
+            add("cluster_mask_words", double(maskLayout_.words));
         }
         const std::vector<uint32_t> none, &tested = binned_ ? tileBound_ : none;
         if (collected_) {
@@ -199,14 +201,14 @@ class ForwardPlusRenderer final : public Renderer {
             add("lights_stored", stored);
             add("lights_dropped", dropped);
             if (clustered_) {
-                fp::ClusterSummary c = fp::summarizeClusters(tileLists_, maskOffsets_, maskBits_, slices_);
+                fp::ClusterSummary c = fp::summarizeClusters(tileLists_, maskLayout_.offsets, maskBits_, slices_);
                 add("lights_per_cluster_mean", c.mean);
                 add("lights_per_cluster_max", double(c.max));
                 add("cluster_light_bits", c.bits);
             }
             if (layout_ == TP_FP_LAYOUT_LINKED) {
                 add("linked_nodes_used", double(nodesUsed_));
-                add("linked_pool_nodes", double(poolNodes_));
+                add("linked_pool_nodes", double(lists_.poolNodes));
             }
         }
         if (!blendPass_)
@@ -250,55 +252,7 @@ class ForwardPlusRenderer final : public Renderer {
                                 " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
                                 "fewer lights");
         candidates_ = std::move(bins.candidates);
-        if (clustered_) sizeMasks();
-    }
-
-    // Clustered: per tile, `slices` rows of ceil(bound / 32) words (a bit per slot of its list).
-    void sizeMasks() {
-        maskOffsets_.assign(grid_.count() + 1, 0);
-        uint64_t words = 0;
-        for (size_t t = 0; t < tileBound_.size(); ++t) {
-            maskOffsets_[t] = uint32_t(std::min<uint64_t>(words, 0xffffffffu));
-            words += uint64_t(slices_) * ((tileBound_[t] + 31) / 32);
-        }
-        maskOffsets_.back() = uint32_t(std::min<uint64_t>(words, 0xffffffffu));
-        maskWords_ = words;
-        if (maskWords_ * 4 > ctx_.caps.maxStorageBufferRange)
-            throw RendererError("the cluster bitmasks need " + std::to_string(maskWords_ * 4) +
-                                " bytes, more than maxStorageBufferRange (" +
-                                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
-                                "; use fewer --slices, a larger --tile, a lower --res or fewer lights");
-    }
-
-    // Sizes the index buffer of the chosen layout, against maxStorageBufferRange.
-    void sizeLists() {
-        const uint64_t tileCount = grid_.count();
-        if (layout_ == TP_FP_LAYOUT_FIXED) {
-            listStride_ = tileCount * settings_.integer("tile-capacity");
-            slotCount_ = listStride_ * numLists_;
-            indexBytes_ = slotCount_ * 4;
-            indexPurpose_ = "light indices, " + std::to_string(settings_.integer("tile-capacity")) + " slots per tile" +
-                            (twoLists_ ? " and list" : "");
-        } else {
-            const uint64_t total = boundSlots_;
-            listStride_ = total;
-            slotCount_ = total * numLists_;
-            if (layout_ == TP_FP_LAYOUT_COMPACT) {
-                indexBytes_ = slotCount_ * 4;
-                indexPurpose_ = "light indices, packed per tile (offsets from a conservative bound)";
-            } else {
-                poolNodes_ = slotCount_;
-                indexBytes_ = poolNodes_ * 8;
-                indexPurpose_ = "linked-list node pool {light, next}, sized so it cannot overflow";
-            }
-        }
-        indexBytes_ = std::max<uint64_t>(indexBytes_, 16);
-        const uint64_t limit = ctx_.caps.maxStorageBufferRange;
-        if (indexBytes_ > limit || slotCount_ > 0xffffffffull)
-            throw RendererError("the '" + settings_.text("light-lists") + "' light lists need " + std::to_string(indexBytes_) +
-                                " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
-                                ctx_.info.name + "; use a larger --tile, a lower --res, fewer lights" +
-                                (layout_ == TP_FP_LAYOUT_FIXED ? " or a smaller --tile-capacity" : ""));
+        if (clustered_) maskLayout_ = fp::sizeMasks(ctx_, tileBound_, slices_);
     }
 
     void createParams() {
@@ -315,7 +269,7 @@ class ForwardPlusRenderer final : public Renderer {
         const uint32_t candidateBase = uint32_t(data.size());
         data.insert(data.end(), candidates_.begin(), candidates_.end());
         const uint32_t maskOffsetBase = uint32_t(data.size());
-        data.insert(data.end(), maskOffsets_.begin(), maskOffsets_.end());
+        data.insert(data.end(), maskLayout_.offsets.begin(), maskLayout_.offsets.end());
         data.push_back(0); // never empty
         const uint64_t limit = ctx_.caps.maxStorageBufferRange;
         if (sizeof(p) + data.size() * 4 > limit)
@@ -324,7 +278,7 @@ class ForwardPlusRenderer final : public Renderer {
                                 std::to_string(limit) + ") of " + ctx_.info.name +
                                 "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
         p.lights = glm::uvec4(dirCount, localCount, offsetBase, settings_.integer("tile-capacity"));
-        p.lists = glm::uvec4(uint32_t(listStride_), uint32_t(poolNodes_), candidateBase, maskOffsetBase);
+        p.lists = glm::uvec4(uint32_t(lists_.stride), uint32_t(lists_.poolNodes), candidateBase, maskOffsetBase);
         std::vector<uint8_t> bytes(sizeof(p) + data.size() * 4);
         std::memcpy(bytes.data(), &p, sizeof(p));
         std::memcpy(bytes.data() + sizeof(p), data.data(), data.size() * 4);
@@ -443,15 +397,13 @@ class ForwardPlusRenderer final : public Renderer {
     la::LightClasses classes_;
     bool binned_ = true, clustered_ = false, blendPass_ = false;
     uint32_t slices_ = 16;
-    std::vector<uint32_t> maskOffsets_;
-    uint64_t maskWords_ = 0;
+    fp::MaskLayout maskLayout_; // clustered: the slice rows' word offsets per tile
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
     std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
     uint64_t boundSlots_ = 0;
     uint32_t maxBound_ = 0; // binned: the most candidates of any tile (the culling batches' range)
-    uint64_t listStride_ = 0, slotCount_ = 0, poolNodes_ = 0, indexBytes_ = 0;
-    std::string indexPurpose_;
+    fp::ListSizes lists_;
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;

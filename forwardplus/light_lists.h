@@ -1,0 +1,44 @@
+#pragma once
+// Forward+'s light-list memory, sized once per configuration on the CPU (the lights and the
+// camera are fixed for a run): the index buffer of the chosen layout (fixed, compact,
+// linked) and, with --light-assign clustered, the depth slices' bitmasks. Each refuses,
+// with one line naming the knobs that shrink it, what maxStorageBufferRange cannot hold.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tp {
+
+class GpuContext;
+
+namespace fp {
+
+struct ListConfig {
+    uint32_t layout = 0;     // TP_FP_LAYOUT_*
+    std::string layoutName;  // --light-lists, for the error message
+    uint64_t tiles = 0;
+    uint32_t capacity = 0;   // fixed: --tile-capacity slots per tile and list
+    uint64_t boundSlots = 0; // compact and linked: the conservative bound's slots (one list kind)
+    uint32_t numLists = 1;   // 2 with a separate transparent list
+};
+
+struct ListSizes {
+    uint64_t stride = 0;    // slots of one list kind (the transparent lists follow)
+    uint64_t slots = 0;     // every list kind's
+    uint64_t poolNodes = 0; // linked: nodes {light, next}, as many as slots (cannot overflow)
+    uint64_t bytes = 0;     // the index buffer's, at least 16
+    std::string purpose;    // the buffer's description in the frame graph
+};
+
+ListSizes sizeLists(const GpuContext& ctx, const ListConfig& c);
+
+// Clustered: per tile, `slices` rows of ceil(bound / 32) words (a bit per slot of its list).
+struct MaskLayout {
+    std::vector<uint32_t> offsets; // tileCount + 1 word offsets (clamped to 32 bits)
+    uint64_t words = 0;
+};
+
+MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, uint32_t slices);
+
+} // namespace fp
+} // namespace tp
