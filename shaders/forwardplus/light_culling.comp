@@ -220,7 +220,7 @@ void main() {
         candidateBase = params.lists.z + first;
     }
 
-    // This dispatch's candidates [first, end) (forwardplus_renderer.cpp: recordCulling) and
+    // This dispatch's candidates [first, end) (forwardplus/light_culling.cpp: LightCulling::record) and
     // what the earlier dispatches of the pass left in the tile's record.
     const uint batchFirst = draw.TP_FP_CULL_FIRST;
     const uint batchEnd = min(draw.TP_FP_CULL_END, candidateCount);
