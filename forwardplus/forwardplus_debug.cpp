@@ -10,14 +10,14 @@
 
 namespace tp::fp {
 
-TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights,
-                          const std::vector<uint32_t>& candidates) {
+TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, bool testsSky,
+                          size_t localLights, const std::vector<uint32_t>& candidates) {
     TileListSummary s;
     for (size_t i = 0; i < tiles.size(); ++i) {
         const gpu::FpTileLists& t = tiles[i];
         bool sky = t.nearDepth <= 0.0f;
         s.skyTiles += sky;
-        if (list == 1 || !sky) s.tested += double(candidates.empty() ? localLights : candidates[i]);
+        if (testsSky || !sky) s.tested += double(candidates.empty() ? localLights : candidates[i]);
         s.stored += t.list[list].count;
         s.dropped += t.list[list].dropped;
         s.max = std::max(s.max, t.list[list].count);

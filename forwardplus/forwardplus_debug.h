@@ -22,9 +22,10 @@ struct TileListSummary {
 };
 
 // `candidates`: per tile, the lights it tests (binned culling); empty: every tile tests all
-// `localLights`.
-TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, size_t localLights,
-                          const std::vector<uint32_t>& candidates = {});
+// `localLights`. `testsSky`: the list is culled on tiles without geometry too (the
+// transparent list, and clustered's span list when blended surfaces exist).
+TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t list, bool testsSky,
+                          size_t localLights, const std::vector<uint32_t>& candidates = {});
 
 // Clustered: lights per (tile, slice) cluster from the read-back bitmasks, over the
 // clusters of tiles with geometry (a sky tile's clusters only serve blended surfaces).

@@ -182,13 +182,13 @@ class ForwardPlusRenderer final : public Renderer {
         }
         const std::vector<uint32_t> none, &tested = binned_ ? tileBound_ : none;
         if (collected_) {
-            fp::TileListSummary o = fp::summarize(tileLists_, 0, classes_.local.size(), tested);
+            fp::TileListSummary o = fp::summarize(tileLists_, 0, clustered_ && blendPass_, classes_.local.size(), tested);
             add("lights_per_tile_mean", o.mean);
             add("lights_per_tile_max", double(o.max));
             add("tiles_without_geometry", double(o.skyTiles));
             double testedSum = o.tested, kept = o.passed, dropped = o.dropped, stored = o.stored;
             if (twoLists_) {
-                fp::TileListSummary t = fp::summarize(tileLists_, 1, classes_.local.size(), tested);
+                fp::TileListSummary t = fp::summarize(tileLists_, 1, true, classes_.local.size(), tested);
                 add("transparent_lights_per_tile_mean", t.mean);
                 add("transparent_lights_per_tile_max", double(t.max));
                 testedSum += t.tested;
