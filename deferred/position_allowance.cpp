@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/render/camera.h"
+#include "core/render/pixel_position.h"
 #include "include/light_model.h"
 
 namespace tp {
@@ -160,18 +161,13 @@ namespace {
 
 // Camera-relative position of every pixel centre from a reverse-Z depth (NaN: sky).
 std::vector<glm::dvec3> positionsOf(const Camera& cam, const ImageR32& depth) {
-    const double aspect = double(depth.width) / double(depth.height);
-    const glm::dmat4 invViewProj = glm::inverse(
-        glm::dmat4(reverseZPerspective(cam.yfov, float(aspect), cam.znear, cam.zfar)) * viewRotation(cam));
+    const glm::dmat4 invViewProj = inverseShadingViewProjection(cam, depth.width, depth.height);
     std::vector<glm::dvec3> out(depth.r.size(), glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
     for (uint32_t y = 0; y < depth.height; ++y)
         for (uint32_t x = 0; x < depth.width; ++x) {
             const size_t i = size_t(y) * depth.width + x;
-            if (!(depth.r[i] > 0.0f)) continue;
-            const glm::dvec4 ndc((x + 0.5) / depth.width * 2.0 - 1.0, 1.0 - (y + 0.5) / depth.height * 2.0,
-                                 depth.r[i], 1.0);
-            const glm::dvec4 h = invViewProj * ndc;
-            out[i] = glm::dvec3(h) / h.w;
+            if (depth.r[i] > 0.0f)
+                out[i] = pixelCentrePosition(invViewProj, depth.width, depth.height, x, y, depth.r[i]);
         }
     return out;
 }

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/render/camera.h"
+#include "core/render/pixel_position.h"
 
 namespace tp::view {
 
@@ -10,14 +10,10 @@ std::optional<glm::dvec3> surfaceAt(const Camera& camera, const ImageR32& depth,
     if (x >= depth.width || y >= depth.height) return std::nullopt;
     const double d = depth.r[size_t(y) * depth.width + x];
     if (!(d > 0.0)) return std::nullopt; // the far plane / sky
-    const double aspect = double(depth.width) / double(depth.height);
-    glm::dmat4 proj(reverseZPerspective(camera.yfov, float(aspect), camera.znear, camera.zfar));
-    glm::dmat4 inverse = glm::inverse(proj * viewMatrixWorld(camera));
-    // Pixel centre to NDC; clip-space Y is up, row 0 is the top row.
-    glm::dvec4 ndc((x + 0.5) / depth.width * 2.0 - 1.0, 1.0 - (y + 0.5) / depth.height * 2.0, d, 1.0);
-    glm::dvec4 world = inverse * ndc;
-    if (std::abs(world.w) < 1e-300) return std::nullopt;
-    return glm::dvec3(world) / world.w;
+    const glm::dmat4 inverse = inverseShadingViewProjection(camera, depth.width, depth.height);
+    const glm::dvec3 relative = pixelCentrePosition(inverse, depth.width, depth.height, x, y, d);
+    if (!std::isfinite(relative.x + relative.y + relative.z)) return std::nullopt;
+    return relative + glm::dvec3(camera.position); // world space, as the lights are
 }
 
 std::vector<uint32_t> lightsReaching(const std::vector<Light>& lights, const glm::dvec3& p) {
