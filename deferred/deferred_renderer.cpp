@@ -7,6 +7,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
+#include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/heat_map.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
@@ -27,7 +28,7 @@ class DeferredRenderer final : public Renderer {
                                                        info.settings.text("light-assign") == "clustered"
                                                            ? info.settings.integer("slices")
                                                            : 0u),
-          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
+          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene), blendBounds_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = settings_.text("deferred-lighting") == "volumes";
         if (settings_.text("light-assign") == "clustered") slices_ = uint32_t(settings_.integer("slices"));
@@ -81,12 +82,17 @@ class DeferredRenderer final : public Renderer {
                                                            VK_SAMPLE_COUNT_1_BIT,
                                                            "debug: edge mask, roughness, metallic"});
         gbuffer_.plan(graph, t_);
-        if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_);
+        // Blended depth bounds: the fragments of the blended pass (per sample under MSAA, as
+        // it shades), before the transparent lists are culled against them.
+        ResourceHandle bounds;
+        if (blended_) bounds = blendBounds_.plan(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples, t_.msaa(), false});
+        if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_, bounds);
         if (useVolumes_) volumes_.plan(graph, t_);
-        if (blended_) transparent_.plan(graph, t_, slices_, transparentMasks_);
+        if (blended_) transparent_.plan(graph, t_, bounds, slices_, transparentMasks_);
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
+        if (blended_) graph.exportResource("blended_bounds", bounds);
         if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
@@ -96,6 +102,7 @@ class DeferredRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         gbuffer_.prepare();
+        if (blended_) blendBounds_.prepare(graph);
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes_) volumes_.prepare(graph);
         if (blended_) transparent_.prepare(graph);
@@ -130,6 +137,7 @@ class DeferredRenderer final : public Renderer {
     TiledLighting lighting_;
     VolumeLighting volumes_;
     TransparentPass transparent_;
+    la::BlendedBounds blendBounds_; // blended scenes: where each tile's blended fragments are
     std::vector<uint32_t> tileStats_; // uvec4 per tile
     uint64_t transparentSlots_ = 0;
     uint32_t slices_ = 0;               // --light-assign clustered: depth slices; 0 when tiled
@@ -222,7 +230,7 @@ RendererStats DeferredRenderer::stats() const {
                              "device reports non-standard sample locations: edge samples use the standard ones"});
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
-        s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
+        s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds", "no blended material"});
     const bool clustered = settings_.text("light-assign") == "clustered";
     if (!clustered)
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
@@ -238,6 +246,10 @@ RendererStats DeferredRenderer::stats() const {
             kept += c.kept[t];
             dropped += c.dropped[t];
         }
+        double most = 0;
+        for (uint32_t k : c.kept) most = std::max(most, double(k));
+        s.counters.push_back({"transparent_lights_per_tile_mean", c.kept.empty() ? 0.0 : kept / double(c.kept.size())});
+        s.counters.push_back({"transparent_lights_per_tile_max", most});
         s.counters.push_back({"transparent_list_slots", double(transparentSlots_)});
         s.counters.push_back({"transparent_lights_stored", kept});
         s.counters.push_back({"transparent_lights_dropped", dropped}); // 0: the bound is conservative

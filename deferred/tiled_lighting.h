@@ -33,7 +33,10 @@ class TiledLighting {
     // (and the tile statistics) are built here.
     // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
     // transparent lists that this pass writes for the blended pass (deferred_shared.h).
-    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {});
+    // blendBounds (blended scenes): the blended depth bounds the transparent lists are culled
+    // against (core/lightassign/blended_bounds.h).
+    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {},
+              ResourceHandle blendBounds = {});
     void prepare(FrameGraph& graph);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }

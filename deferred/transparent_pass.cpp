@@ -15,12 +15,14 @@ TransparentPass::~TransparentPass() {
     destroyPassSet(ctx_, set_);
 }
 
-void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, uint32_t slices, ResourceHandle masks) {
+void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle blendBounds, uint32_t slices,
+                           ResourceHandle masks) {
     t_ = &t;
     slices_ = masks.valid() ? slices : 0u;
     masks_ = masks;
     std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
-                                 {t.gbufferDepth, Use::DepthTest}};
+                                 {t.gbufferDepth, Use::DepthTest},
+                                 {blendBounds, Use::StorageRead, TP_DEF_FWD_BINDING_BLEND_BOUNDS}};
     if (masks.valid()) uses.push_back({masks, Use::StorageRead, TP_DEF_FWD_BINDING_MASKS});
     if (t.msaa()) {
         uses.push_back({t.hdrMsaa, Use::ColorAttachment});

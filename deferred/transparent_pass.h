@@ -18,7 +18,9 @@ class TransparentPass {
     ~TransparentPass();
     // slices > 0 with `masks` (--light-assign clustered): fragments take their cluster's
     // lights through the slice rows the tiled pass wrote over the transparent lists.
-    void plan(FrameGraph& graph, DeferredTargets& t, uint32_t slices = 0, ResourceHandle masks = {});
+    // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
+    void plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle blendBounds, uint32_t slices = 0,
+              ResourceHandle masks = {});
     void prepare(FrameGraph& graph);
 
   private:

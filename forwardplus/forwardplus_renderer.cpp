@@ -16,6 +16,7 @@
 #include "core/image/difference.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
+#include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
@@ -59,6 +60,7 @@ class ForwardPlusRenderer final : public Renderer {
         lists_ = fp::sizeLists(ctx_, {layout_, settings_.text("light-lists"), grid_.count(),
                                       settings_.integer("tile-capacity"), boundSlots_, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
+        if (blendPass_) blendBounds_.emplace(ctx_, scene_);
     }
 
     ~ForwardPlusRenderer() override {
@@ -102,7 +104,12 @@ class ForwardPlusRenderer final : public Renderer {
                 vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
             });
 
-        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_});
+        // Blended depth bounds: the blended shading pass's fragments, before the culling reads them.
+        ResourceHandle blendBounds;
+        if (blendPass_)
+            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa, shadesPerSample(settings_),
+                                                     shadesPerPixelUnderMsaa(settings_)});
+        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds});
 
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
 
@@ -130,10 +137,12 @@ class ForwardPlusRenderer final : public Renderer {
         graph.exportResource("fp_light_indices", indices_);
         if (layout_ == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
         if (clustered_) graph.exportResource("fp_cluster_masks", masks_);
+        if (blendPass_) graph.exportResource("blended_bounds", blendBounds);
     }
 
     void prepare(FrameGraph& graph) override {
         createParams();
+        if (blendBounds_) blendBounds_->prepare(graph);
         createDescriptors(graph);
         createPipelines();
     }
@@ -212,7 +221,8 @@ class ForwardPlusRenderer final : public Renderer {
             }
         }
         if (!blendPass_)
-            s.leftOut.push_back({"transparent light list, forward_transparent pass and their memory",
+            s.leftOut.push_back({"transparent light list, blended depth bounds, forward_transparent pass and their "
+                                 "memory",
                                  "the scene has no blended materials"});
         else if (clustered_)
             s.leftOut.push_back({"the second (transparent) light list per tile",
@@ -408,6 +418,7 @@ class ForwardPlusRenderer final : public Renderer {
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;
     std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
+    std::optional<la::BlendedBounds> blendBounds_; // blended scenes: where each tile's blended fragments are
     PassSet shadeSet_;
     VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
     VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE;

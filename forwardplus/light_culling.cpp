@@ -25,6 +25,8 @@ void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
                                  {r.indices, Use::StorageWrite, TP_FP_BINDING_INDICES}};
     if (config_.layout == TP_FP_LAYOUT_LINKED) uses.push_back({r.counter, Use::StorageWrite, TP_FP_BINDING_COUNTER});
     if (config_.clustered) uses.push_back({r.masks, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
+    blendBounds_ = r.blendBounds.valid();
+    if (blendBounds_) uses.push_back({r.blendBounds, Use::StorageRead, TP_FP_BINDING_BLEND_BOUNDS});
     graph.addPass("light_culling", uses, [this](PassContext& pc) { record(pc); });
 }
 
@@ -33,7 +35,15 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     si.magFilter = si.minFilter = VK_FILTER_NEAREST;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
-    set_ = graph.createPassSet("light_culling", sampler_, {{TP_FP_BINDING_PARAMS, params}});
+    std::vector<ExternalBuffer> externals = {{TP_FP_BINDING_PARAMS, params}};
+    if (!blendBounds_) {
+        const uint32_t empty[4] = {TP_LA_BLEND_EMPTY, TP_LA_BLEND_EMPTY, 0, 0};
+        noBlendBounds_ = createBufferWithData(ctx_, empty, sizeof(empty), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                              {graph.owner(), "", "blended_bounds_unused",
+                                               "stand-in: no blended draws, no blended depth bounds"});
+        externals.push_back({TP_FP_BINDING_BLEND_BOUNDS, noBlendBounds_.buffer});
+    }
+    set_ = graph.createPassSet("light_culling", sampler_, externals);
     layout_ = scene_.createPipelineLayout(set_.layout);
 
     const bool msaa = config_.samples > 1;

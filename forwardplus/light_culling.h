@@ -8,6 +8,7 @@
 
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/resources.h"
 #include "core/lightassign/tile_grid.h"
 
 namespace tp {
@@ -27,9 +28,10 @@ struct CullConfig {
     bool binned = true, clustered = false, twoLists = false, spanFromNear = false;
 };
 
-// The resources the pass reads and writes (counter: linked only; masks: clustered only).
+// The resources the pass reads and writes (counter: linked only; masks: clustered only;
+// blendBounds: blended scenes only, core/lightassign/blended_bounds.h).
 struct CullResources {
-    ResourceHandle depth, tiles, indices, counter, masks;
+    ResourceHandle depth, tiles, indices, counter, masks, blendBounds;
 };
 
 class LightCulling {
@@ -54,6 +56,8 @@ class LightCulling {
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    bool blendBounds_ = false;
+    Buffer noBlendBounds_; // the shader's bounds binding without blended draws
 };
 
 } // namespace fp

@@ -26,13 +26,15 @@ using std::sin;
 #define TP_DEF_BINDING_LIST_OFFSETS 10 // buffer uint[tileCount + 1]: compact transparent lists' per-tile offsets
 #define TP_DEF_BINDING_CANDIDATES 11   // buffer uint[]: binned culling's per-tile candidates (TP_DEF_CAND_*)
 #define TP_DEF_BINDING_TRANSPARENT_MASKS 12 // buffer uint[]: clustered blended scenes: slice rows over the transparent lists
+#define TP_DEF_BINDING_BLEND_BOUNDS 13 // buffer uint[]: blended scenes: blended depth bounds (light_assign.h: TP_LA_BLEND_*)
 
 // ---- set 1 of the hybrid forward pass (blended materials) ----
 #define TP_DEF_FWD_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
 #define TP_DEF_FWD_BINDING_MASKS 1   // buffer: clustered: slice rows over the transparent lists (a dummy when tiled)
+#define TP_DEF_FWD_BINDING_BLEND_BOUNDS 2 // buffer: blended depth bounds (clustered: where the front slices start)
 
 // Clustered blended scenes (--light-assign clustered): the transparent list of a tile is its
-// span list (near plane to farthest opaque depth, unbounded over the sky) and a buffer of
+// span list (its blended depth bounds, light_assign.glsl: LaBlendedBounds) and a buffer of
 // per-slice bitmask rows over it lets a blended fragment take only its cluster. Words
 // [2t, 2t + 1]: tile t's sliceNear and sliceScale (light_assign.glsl: LaSlicing, with front
 // slices); then tile t's rows from defClusterRowsBase, `slices` rows of ceil(count / 32)

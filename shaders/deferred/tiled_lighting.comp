@@ -7,8 +7,9 @@
 // is shaded from that list: the first batch writes hdr (with ambient and emissive), later
 // batches add to it. Under MSAA a pixel whose samples differ (an edge) is shaded per
 // sample, every other pixel once. Blended scenes also get each tile's transparent light
-// list (every light, first batch only), culled against [near plane, farthest opaque depth]
-// (unbounded where the tile sees the sky), stored in the compact layout of
+// list (every light, first batch only), culled against the tile's blended depth bounds
+// (include/light_assign.glsl: LaBlendedBounds; empty where no blended fragment is shaded),
+// stored in the compact layout of
 // include/light_assign.h: per-tile runs sized on the CPU by a conservative bound, so the
 // buffer grows with the lights the lists can hold, never with tiles x lights.
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
@@ -57,6 +58,13 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_MASKS) wr
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_LIST_OFFSETS) readonly buffer ListOffsets {
     uint tOffsets[]; // tileCount + 1: tile t's run is [tOffsets[t], tOffsets[t + 1])
 };
+// Blended depth bounds (the blended_bounds pass, after the G-buffer).
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_BLEND_BOUNDS) readonly buffer BlendBounds {
+    uint blendBounds[]; // light_assign.h: TP_LA_BLEND_*
+};
+LaBlendedBounds tileBlendedBounds(uint tileIndex) {
+    return laBlendedBounds(blendBounds[tileIndex], blendBounds[gl_NumWorkGroups.x * gl_NumWorkGroups.y + tileIndex]);
+}
 #endif
 #ifdef TP_DEBUG
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEBUG, rgba32f) uniform writeonly image2D debugOut;
@@ -193,8 +201,8 @@ void cull(uvec2 tile, bool hasGeometry) {
     uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
     uint candidates = candidateCount(tileIndex);
 #ifdef TP_TRANSPARENT
-    TileFrustum ft = laTransparentFrustum(tile, kTileSize, size, frame.invProj,
-                                          laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth));
+    const LaBlendedBounds blended = tileBlendedBounds(tileIndex);
+    TileFrustum ft = laBlendedFrustum(tile, kTileSize, size, frame.invProj, blended);
     uint offset = tOffsets[tileIndex];
     uint capacity = tOffsets[tileIndex + 1u] - offset;
     uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
@@ -210,8 +218,9 @@ void cull(uvec2 tile, bool hasGeometry) {
     }
 #endif
 #ifdef TP_TRANSPARENT
-    // Every candidate, once (first batch): a loop of candidates / 64 iterations per invocation.
-    for (uint i = gl_LocalInvocationIndex; firstBatch() && i < candidates; i += groupSize) {
+    // Every candidate, once (first batch): a loop of candidates / 64 iterations per
+    // invocation; none where no blended fragment is shaded.
+    for (uint i = gl_LocalInvocationIndex; firstBatch() && blended.any && i < candidates; i += groupSize) {
         uint light = candidateLight(tileIndex, i);
         if (lightInTile(lights[light], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
@@ -223,7 +232,8 @@ void cull(uvec2 tile, bool hasGeometry) {
 
 #if defined(TP_TRANSPARENT) && !defined(TP_LISTS_ONLY)
 // Clustered: the slice rows of tile `tileIndex`'s transparent list, for the blended pass
-// (transparent.frag): front slices from the near plane to the nearest opaque depth, range
+// (transparent.frag): front slices from the nearest blended fragment to the nearest opaque
+// depth (light_assign.glsl: laFrontNear), range
 // slices over the opaque range (light_assign.glsl: laFrontSlices). A light's bit is set in
 // every slice its padded depth interval reaches (laLightSlices: conservative). Each
 // invocation owns whole 32-light words and writes each word of every row once: no clear,
@@ -238,7 +248,7 @@ void writeTransparentSlices(uint tileIndex) {
     const float sliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
     const float sliceFar = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
     const uint front = laFrontSlices(kSlices, true);
-    const LaSlicing s = laSlicing(-viewZFromDepth(1.0, frame.invProj), sliceNear,
+    const LaSlicing s = laSlicing(laFrontNear(tileBlendedBounds(tileIndex), sliceNear), sliceNear,
                                   laSliceScale(sliceNear, sliceFar, kSlices, front), kSlices, front);
     const uint base = defClusterRowsBase(tileCount, offset, tileIndex, kSlices);
     const uint words = (kept + 31u) / 32u;

@@ -3,7 +3,7 @@
 // The hybrid forward pass: blended materials cannot live in a G-buffer (one surface per
 // sample), so they are drawn after the lighting, back to front, alpha-blended into hdr,
 // each fragment lit by its tile's transparent light list (culled by the tiled lighting
-// pass against [near plane, farthest opaque depth]; compact layout, include/light_assign.h).
+// pass against the tile's blended depth bounds; compact layout, include/light_assign.h).
 // Clustered (kSlices > 0): only the lights of the fragment's cluster, through the slice rows
 // the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase).
 #include "include/shared.h"
@@ -24,13 +24,19 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_MASKS) readonly b
     uint tMasks[];
 };
 
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_BLEND_BOUNDS) readonly buffer BlendBounds {
+    uint blendBounds[]; // light_assign.h: TP_LA_BLEND_*
+};
+
 layout(location = 0) out vec4 outColor;
 
 // The lights of the list whose bit is set in the slice of the shading point, one 32-light
 // word at a time, in list order.
 vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSample surface) {
-    LaSlicing s = laSlicing(-viewZFromDepth(1.0, frame.invProj), uintBitsToFloat(tMasks[2u * tile]),
-                            uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices, laFrontSlices(kSlices, true));
+    float sliceNear = uintBitsToFloat(tMasks[2u * tile]);
+    LaBlendedBounds b = laBlendedBounds(blendBounds[tile], blendBounds[tileCount + tile]);
+    LaSlicing s = laSlicing(laFrontNear(b, sliceNear), sliceNear, uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices,
+                            laFrontSlices(kSlices, true));
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
     uint words = (count + 31u) / 32u;
     uint offset = start - tileCount * TP_LA_HEADER_WORDS;
