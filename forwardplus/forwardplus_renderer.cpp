@@ -156,6 +156,8 @@ class ForwardPlusRenderer final : public Renderer {
             std::vector<uint8_t> c = readbackBuffer(ctx_, graph.buffer(counter_));
             std::memcpy(&nodesUsed_, c.data(), sizeof(uint32_t));
         }
+        if (blendBounds_)
+            blended_ = la::unpackBlendedBounds(readbackBuffer(ctx_, graph.buffer(blendBounds_->buffer())), grid_.count());
         if (clustered_) {
             std::vector<uint8_t> m = readbackBuffer(ctx_, graph.buffer(masks_));
             maskBits_.resize(m.size() / 4);
@@ -201,7 +203,15 @@ class ForwardPlusRenderer final : public Renderer {
                 fp::TileListSummary t = fp::summarize(tileLists_, 1, true, classes_.local.size(), tested);
                 add("transparent_lights_per_tile_mean", t.mean);
                 add("transparent_lights_per_tile_max", double(t.max));
-                testedSum += t.tested;
+                // Only tiles with blended fragments test for the transparent list.
+                double blendedTiles = 0, transparentTested = 0;
+                for (size_t i = 0; i < blended_.size(); ++i) {
+                    if (!blended_[i].any) continue;
+                    blendedTiles += 1;
+                    transparentTested += double(tested.empty() ? classes_.local.size() : tested[i]);
+                }
+                add("tiles_with_blended_fragments", blendedTiles);
+                testedSum += transparentTested;
                 kept += t.passed;
                 dropped += t.dropped;
                 stored += t.stored;
@@ -456,6 +466,7 @@ class ForwardPlusRenderer final : public Renderer {
     VkPipeline shade_[3] = {};
 
     std::vector<gpu::FpTileLists> tileLists_;
+    std::vector<la::TileBlendedBounds> blended_; // read back: blended scenes' statistics
     uint32_t nodesUsed_ = 0;
     bool collected_ = false;
 };
