@@ -40,6 +40,9 @@ class TiledLighting {
     void prepare(FrameGraph& graph);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
+    // The light_candidates buffer (after prepare): binned, the blended pass walks the
+    // transparent bitmasks over it.
+    VkBuffer candidatesBuffer() const { return candidates_.buffer; }
 
   private:
     void record(PassContext& pc);

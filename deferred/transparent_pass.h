@@ -21,7 +21,9 @@ class TransparentPass {
     // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
     void plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle blendBounds, uint32_t slices = 0,
               ResourceHandle masks = {});
-    void prepare(FrameGraph& graph);
+    // candidates: the tiled pass's light_candidates; binned: the transparent lists are
+    // bitmasks over them (deferred_shared.h: defMaskRowsBase).
+    void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);
 
   private:
     void record(PassContext& pc);

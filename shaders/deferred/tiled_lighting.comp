@@ -47,8 +47,11 @@ layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2D
 #ifdef TP_TRANSPARENT
 // coherent: clustered, the invocations of a tile read each other's list entries (after
 // memoryBarrierBuffer and barrier) to build the slice rows.
+// Binned (kBinned), the runs are bitmasks over the tile's candidates (bit p: candidate p,
+// deferred/candidates.glsl), ceil(candidates / 32) words: a transparent list is a subset of
+// the candidates, so this takes a bit where an index took 32; every light, index runs.
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_LISTS) coherent buffer TransparentLists {
-    uint tLists[]; // LaListHeader per tile, then the tiles' runs of light indices
+    uint tLists[]; // LaListHeader per tile, then the tiles' runs (light indices, or candidate bitmasks)
 };
 // Clustered: per-slice bitmask rows over the transparent lists (deferred_shared.h:
 // defClusterRowsBase); a 16-byte dummy otherwise.
@@ -77,18 +80,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_CANDIDATES) readonly 
     uint cand[]; // deferred_shared.h: TP_DEF_CAND_*
 };
 
-uint candidateCount(uint tileIndex) {
-    if (!kBinned) return frame.viewport.z;
-    uint offsets = cand[TP_DEF_CAND_OFFSETS];
-    return cand[TP_DEF_CAND_DIRECTIONAL] + cand[offsets + tileIndex + 1u] - cand[offsets + tileIndex];
-}
-
-uint candidateLight(uint tileIndex, uint p) {
-    if (!kBinned) return p;
-    uint directional = cand[TP_DEF_CAND_DIRECTIONAL];
-    if (p < directional) return cand[TP_DEF_CAND_HEADER + p];
-    return cand[cand[TP_DEF_CAND_RUNS] + cand[cand[TP_DEF_CAND_OFFSETS] + tileIndex] + p - directional];
-}
+#include "deferred/candidates.glsl"
 
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TILE_STATS) buffer TileStats {
     uvec4 tileStats[]; // per tile: opaque lights, transparent lights, edge pixels, overflow
@@ -224,7 +216,8 @@ void cull(uvec2 tile, bool hasGeometry) {
         uint light = candidateLight(tileIndex, i);
         if (lightInTile(lights[light], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
-            if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
+            if (kBinned) atomicOr(tLists[start + (i >> 5u)], 1u << (i & 31u)); // words cleared in main
+            else if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
         }
     }
 #endif
@@ -244,18 +237,23 @@ void writeTransparentSlices(uint tileIndex) {
     const uint offset = tOffsets[tileIndex];
     const uint kept = min(sTransparentCount, tOffsets[tileIndex + 1u] - offset);
     const uint start = laListStart(tileCount, offset);
+    // Binned: rows over the candidates, as the list's mask (bit p: candidate p); a row bit
+    // is set only where the mask's is.
+    const uint words = kBinned ? tOffsets[tileIndex + 1u] - offset : (kept + 31u) / 32u;
     const bool geometry = laTileHasGeometry();
     const float sliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
     const float sliceFar = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
     const uint front = laFrontSlices(kSlices, true);
     const LaSlicing s = laSlicing(laFrontNear(tileBlendedBounds(tileIndex), sliceNear), sliceNear,
                                   laSliceScale(sliceNear, sliceFar, kSlices, front), kSlices, front);
-    const uint base = defClusterRowsBase(tileCount, offset, tileIndex, kSlices);
-    const uint words = (kept + 31u) / 32u;
+    const uint base = kBinned ? defMaskRowsBase(tileCount, offset, kSlices)
+                              : defClusterRowsBase(tileCount, offset, tileIndex, kSlices);
     for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
         for (uint sl = 0u; sl < kSlices; ++sl) gWordBits[sl] = 0u;
-        for (uint b = 0u; b < 32u && w * 32u + b < kept; ++b) {
-            LightGpu light = lights[tLists[start + w * 32u + b]];
+        uint mask = kBinned ? tLists[start + w] : 0u;
+        for (uint b = 0u; b < 32u && (kBinned ? mask >> b != 0u : w * 32u + b < kept); ++b) {
+            if (kBinned && (mask & (1u << b)) == 0u) continue;
+            LightGpu light = lights[kBinned ? candidateLight(tileIndex, w * 32u + b) : tLists[start + w * 32u + b]];
             vec4 sphere = lightSphereView(light, frame.view);
             uvec2 range = light.type == TP_LIGHT_DIRECTIONAL ? uvec2(0u, kSlices - 1u)
                                                              : laLightSlices(sphere.xyz, sphere.w, s);
@@ -300,6 +298,17 @@ void main() {
         float far = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
         sSliceScale = laSliceScale(sSliceNear, far, kSlices, 0u);
     }
+#ifdef TP_TRANSPARENT
+    if (kBinned && firstBatch()) {
+        // The tile's candidate bitmask starts empty (cull sets its bits with atomicOr).
+        uint t = tile.y * gl_NumWorkGroups.x + tile.x;
+        uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[t]);
+        for (uint w = gl_LocalInvocationIndex; w < tOffsets[t + 1u] - tOffsets[t]; w += TP_GROUP * TP_GROUP)
+            tLists[start + w] = 0u;
+        memoryBarrierBuffer();
+        barrier();
+    }
+#endif
     cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
 #ifdef TP_TRANSPARENT
@@ -333,7 +342,8 @@ void main() {
             tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, 0u);
 #ifdef TP_TRANSPARENT
             uint capacity = tOffsets[tileIndex + 1u] - tOffsets[tileIndex];
-            uint kept = min(sTransparentCount, capacity);
+            // Binned: every survivor has its bit (the mask covers every candidate).
+            uint kept = kBinned ? sTransparentCount : min(sTransparentCount, capacity);
             tLists[laHeaderWord(tileIndex, TP_LA_COUNT)] = kept;
             tLists[laHeaderWord(tileIndex, TP_LA_START)] =
                 laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[tileIndex]);

@@ -28,7 +28,24 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_BLEND_BOUNDS) rea
     uint blendBounds[]; // light_assign.h: TP_LA_BLEND_*
 };
 
+// Binned (--light-cull binned): the lists and rows are bitmasks over the tile's candidates
+// (deferred_shared.h: defMaskRowsBase), walked in ascending candidate order.
+layout(constant_id = TP_DEF_SPEC_BINNED) const bool kBinned = false;
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_CANDIDATES) readonly buffer Candidates {
+    uint cand[]; // deferred_shared.h: TP_DEF_CAND_*
+};
+#include "deferred/candidates.glsl"
+
 layout(location = 0) out vec4 outColor;
+
+// Light k of the tile's list: word w, bit b of its bitmask (binned: candidate 32 w + b), or
+// index slot 32 w + b.
+uint listLight(uint tile, uint start, uint w, uint b) {
+    return kBinned ? candidateLight(tile, w * 32u + b) : tLists[start + w * 32u + b];
+}
+
+// Words of the tile's list bitmask (binned) or of its slice rows (index lists).
+uint listWords(uint tile, uint count) { return kBinned ? (candidateCount(tile) + 31u) / 32u : (count + 31u) / 32u; }
 
 // The lights of the list whose bit is set in the slice of the shading point, one 32-light
 // word at a time, in list order.
@@ -38,16 +55,32 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
     LaSlicing s = laSlicing(laFrontNear(b, sliceNear), sliceNear, uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices,
                             laFrontSlices(kSlices, true));
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    uint words = (count + 31u) / 32u;
+    uint words = listWords(tile, count);
     uint offset = start - tileCount * TP_LA_HEADER_WORDS;
-    uint row = defClusterRowsBase(tileCount, offset, tile, kSlices) + laSliceOf(dist, s) * words;
+    uint base = kBinned ? defMaskRowsBase(tileCount, offset, kSlices) : defClusterRowsBase(tileCount, offset, tile, kSlices);
+    uint row = base + laSliceOf(dist, s) * words;
     vec3 sum = vec3(0.0);
     for (uint w = 0u; w < words; ++w) {
         uint bits = tMasks[row + w];
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[tLists[start + w * 32u + uint(lsb)]], surface, kHasSpot);
+            sum += evalLight(lights[listLight(tile, start, w, uint(lsb))], surface, kHasSpot);
+        }
+    }
+    return sum;
+}
+
+// Binned, tiled: the list's bitmask, one 32-candidate word at a time.
+vec3 maskLights(uint tile, uint count, uint start, SurfaceSample surface) {
+    vec3 sum = vec3(0.0);
+    uint words = count > 0u ? listWords(tile, count) : 0u;
+    for (uint w = 0u; w < words; ++w) {
+        uint bits = tLists[start + w];
+        for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+            int lsb = findLSB(bits);
+            bits &= bits - 1u;
+            sum += evalLight(lights[candidateLight(tile, w * 32u + uint(lsb))], surface, kHasSpot);
         }
     }
     return sum;
@@ -62,6 +95,10 @@ void main() {
     vec3 sum = ambientAndEmissive(ms);
     if (kSlices > 0u) {
         outColor = vec4(sum + clusterLights(tile, tiles.x * tiles.y, count, start, ms.surface), ms.alpha);
+        return;
+    }
+    if (kBinned) {
+        outColor = vec4(sum + maskLights(tile, count, start, ms.surface), ms.alpha);
         return;
     }
     for (uint i = 0u; i < count; ++i)

@@ -487,13 +487,26 @@ TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
     const uint64_t tiles = (96 / 16) * (64 / 16);
     RunResult fp = runOrFail(*ctx, yardGpu, "forwardplus", s);
     for (const char* lighting : {"tiled", "volumes"}) {
-        RunResult r = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
+        // --light-cull all: index lists in the compact layout.
+        RenderSettings all = withLighting(s, lighting);
+        all.set("light-cull", "all");
+        RunResult r = runOrFail(*ctx, yardGpu, "deferred", all);
         const double slots = counter(r, "transparent_list_slots");
         EXPECT_EQ(entryBytes(r, "transparent_lists"), tiles * 16 + uint64_t(slots) * 4) << lighting;
         EXPECT_EQ(slots, counter(fp, "light_list_slots") / 2) << lighting;
         EXPECT_LT(slots, double(tiles * lights)) << lighting;
         EXPECT_GT(counter(r, "transparent_lights_stored"), 0.0) << lighting;
         EXPECT_EQ(counter(r, "transparent_lights_dropped"), 0.0) << lighting;
+        // Binned (the default): a bitmask over each tile's candidates, ceil(candidates / 32)
+        // words, the same lights.
+        RunResult b = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
+        const double words = counter(b, "transparent_list_mask_words");
+        EXPECT_EQ(entryBytes(b, "transparent_lists"), tiles * 16 + uint64_t(words) * 4) << lighting;
+        EXPECT_LE(words, slots / 32 + double(tiles)) << lighting;
+        EXPECT_EQ(counter(b, "transparent_lights_stored"), counter(r, "transparent_lights_stored")) << lighting;
+        EXPECT_EQ(counter(b, "transparent_lights_dropped"), 0.0) << lighting;
+        expectAgreeWithinSummationBound(b.hdr, r.hdr, lights, 1,
+                                        std::string("transparent bitmasks vs index lists, ") + lighting);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -518,8 +531,9 @@ TEST(Deferred, ClusteredBlendedSurfacesMatchTheReferenceOnTheCourtyard) {
         s.set("light-assign", "clustered");
         s.set("slices", 16);
         RunResult clustered = runOrFail(*ctx, yardGpu, "deferred", s);
-        const uint64_t slots = uint64_t(counter(clustered, "transparent_list_slots"));
-        EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"), 4 * (2 * tiles + 16 * (slots / 32 + tiles)));
+        // Binned (the default): rows over the candidates, as many words as the list's bitmask.
+        const uint64_t words = uint64_t(counter(clustered, "transparent_list_mask_words"));
+        EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"), 4 * (2 * tiles + 16 * words));
         expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, lights, 1,
                                         "courtyard clustered vs tiled, " + std::to_string(lights) + " lights");
         RunResult ref = runOrFail(*ctx, yardGpu, "reference", s);
