@@ -89,6 +89,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
+    // The shared slice masks: clustered shading only (tiled groups keep one word).
+    spec.push_back({TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 

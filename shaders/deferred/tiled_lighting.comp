@@ -94,7 +94,10 @@ shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 // slice (include/light_assign.glsl: laSliceOf over the tile's opaque depth range, no front
 // slice: only opaque surfaces are lit here). Rows are ceil(count / 32) words.
 layout(constant_id = TP_DEF_SPEC_SLICES) const uint kSlices = 0u;
-shared uint sMask[TP_DEF_CLUSTER_MASK_WORDS];
+// TP_DEF_CLUSTER_MASK_WORDS when clustered, 1 when tiled: shared memory is declared per
+// pipeline, and a tiled group would otherwise reserve 8 KiB it never touches.
+layout(constant_id = TP_DEF_SPEC_MASK_WORDS) const uint kMaskWords = 1u;
+shared uint sMask[kMaskWords];
 shared float sSliceNear, sSliceScale;
 // The tile's slices: the opaque range only (no front slices: blended surfaces are not lit here).
 LaSlicing rangeSlicing() { return laSlicing(1.0, sSliceNear, sSliceScale, kSlices, 0u); }
@@ -279,7 +282,7 @@ void main() {
         sEdges = 0u;
     }
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
-        for (uint i = gl_LocalInvocationIndex; i < TP_DEF_CLUSTER_MASK_WORDS; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
+        for (uint i = gl_LocalInvocationIndex; i < kMaskWords; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
     barrier();
     laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
     barrier();
