@@ -51,7 +51,8 @@ std::string TiledLighting::shaderName() const {
     if (listsOnly_) return std::string("deferred_tiled_lists_m") + (t_->msaa() ? "1" : "0") + "_comp";
     int m = !t_->msaa() ? 0 : t_->hdrMsaa.valid() ? 2 : 1;
     return "deferred_tiled_m" + std::to_string(m) + "_e" + (t_->layout.emissive ? "1" : "0") + "_t" +
-           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") + "_comp";
+           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") +
+           (t_->hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : "") + "_comp";
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {

@@ -14,7 +14,7 @@
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
 //   TP_MSAA: the G-buffer is per-sample.  TP_HDR_MSAA: hdr is per-sample (the blended
 //   forward pass draws into it and resolves).  TP_TRANSPARENT: write transparent lists.
-//   TP_DEBUG: write the edge mask and decoded G-buffer channels.
+//   TP_DEBUG: write the edge mask and decoded G-buffer channels.  TP_HDR16: hdr is RGBA16F.
 //   TP_LISTS_ONLY: only the transparent lists and tile statistics (volumes lighting
 //   shades the opaque surfaces; the hybrid forward pass still needs the lists).
 #include "include/shared.h"
@@ -37,10 +37,16 @@ layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
 #ifndef TP_LISTS_ONLY
 // Read back by the later batches, which add their lights to what the earlier ones wrote.
-#ifdef TP_HDR_MSAA
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2DMS hdrOut;
+// TP_HDR16 (--hdr fp16): hdr is RGBA16F, so each batch's store rounds the running sum.
+#ifdef TP_HDR16
+#define TP_HDR_FORMAT rgba16f
 #else
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2D hdrOut;
+#define TP_HDR_FORMAT rgba32f
+#endif
+#ifdef TP_HDR_MSAA
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, TP_HDR_FORMAT) uniform image2DMS hdrOut;
+#else
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, TP_HDR_FORMAT) uniform image2D hdrOut;
 #endif
 #endif
 #ifdef TP_TRANSPARENT
@@ -148,13 +154,22 @@ void markSlices() {
     }
 }
 
+// --hdr fp16: sums beyond the largest half saturate there, as Forward+'s do, not +Inf.
+vec3 storable(vec3 c) {
+#ifdef TP_HDR16
+    return min(c, vec3(65504.0));
+#else
+    return c;
+#endif
+}
+
 void writeHdr(ivec2 p, uint s, vec3 c) {
 #ifdef TP_HDR_MSAA
     if (!firstBatch()) c += imageLoad(hdrOut, p, int(s)).rgb;
-    imageStore(hdrOut, p, int(s), vec4(c, 1.0));
+    imageStore(hdrOut, p, int(s), vec4(storable(c), 1.0));
 #else
     if (!firstBatch()) c += imageLoad(hdrOut, p).rgb;
-    imageStore(hdrOut, p, vec4(c, 1.0));
+    imageStore(hdrOut, p, vec4(storable(c), 1.0));
 #endif
 }
 
