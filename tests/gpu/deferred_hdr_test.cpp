@@ -17,7 +17,7 @@
 namespace tp::test {
 namespace {
 
-constexpr uint32_t kCourtyardBlendLayers = 4; // cloth over cloth over the floor (forwardplus_test.cpp)
+constexpr uint32_t kCourtyardBlendLayers = 4; // as forwardplus_test.cpp counts them on courtyard-small
 
 Scene courtyard(uint32_t count) {
     Result<Scene> s = makeBuiltinScene("courtyard-small");
