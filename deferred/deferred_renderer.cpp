@@ -41,13 +41,14 @@ class DeferredRenderer final : public Renderer {
         // the tile knob's values (8, 16, 32) are all multiples of 8.
         t_.grid = la::makeTileGrid(graph.width(), graph.height(), settings_.integer("tile"));
         const uint32_t tiles = t_.grid.count();
-        t_.hdr = graph.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                           "linear radiance (resolved)"});
+        // --hdr: fp32 keeps the light sum exact to readback; fp16 halves the bytes (Forward+'s format).
+        t_.hdrFormat = settings_.text("hdr") == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+        t_.hdr = graph.createImage("hdr", {t_.hdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT, "linear radiance (resolved)"});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
         blended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
         if (blended_ && t_.msaa())
-            t_.hdrMsaa = graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
+            t_.hdrMsaa = graph.createImage("hdr_msaa", {t_.hdrFormat, 0, 0,
                                                         VkSampleCountFlagBits(settings_.msaa),
                                                         "per-sample radiance (blended under MSAA)"});
         // Volumes lighting of an opaque-only scene runs no tile pass at all.

@@ -20,7 +20,10 @@ KnobSchema deferredKnobs() {
             Knob::choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),
             msaaShadingKnob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
             Knob::choice("deferred-lighting", {"tiled", "volumes"},
-                         "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)")};
+                         "Deferred lighting: tiled (compute, per-tile lists) or volumes (one draw per light)"),
+            Knob::choice("hdr", {"fp32", "fp16"},
+                         "Deferred hdr (and hdr_msaa) target: fp32 (RGBA32F, the light sum exact to readback) or "
+                         "fp16 (RGBA16F as Forward+'s: half the bytes, one fp16 rounding per store)")};
 }
 
 std::vector<stress::CounterAtLeast> deferredStressed(const ErrorModelInput& in) {

@@ -53,7 +53,8 @@ std::string TiledLighting::shaderName() const {
     if (listsOnly_) return std::string("deferred_tiled_lists_m") + (t_->msaa() ? "1" : "0") + "_comp";
     int m = !t_->msaa() ? 0 : t_->hdrMsaa.valid() ? 2 : 1;
     return "deferred_tiled_m" + std::to_string(m) + "_e" + (t_->layout.emissive ? "1" : "0") + "_t" +
-           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") + "_comp";
+           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") +
+           (t_->hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : "") + "_comp";
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {
@@ -91,6 +92,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
+    // The shared slice masks: clustered shading only (tiled groups keep one word).
+    spec.push_back({TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 

@@ -50,7 +50,7 @@ void TransparentPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binne
     d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
     d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
-    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.colorFormats = {t_->hdrFormat};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample
     d.depthWrite = false;

@@ -26,10 +26,7 @@ KnobSchema forwardPlusKnobs() {
 
 // Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).
 void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
-    const int roundings = in.settings.msaa > 1 ? 2 : 1;
-    b.terms.push_back({"fp16 colour storage", roundings * kHalfUlp16, roundings * 6e-8,
-                       std::to_string(roundings) + " fp16 store(s) (sample, resolve): each below one ulp, 2^-10 "
-                       "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
+    addFp16StorageTerm(b, in.settings.msaa > 1 ? 2 : 1, "sample, resolve");
     addPixelRateErrorTerm(b, in);
 }
 
