@@ -40,12 +40,15 @@ layout(location = 0) out vec4 outColor;
 
 // Light k of the tile's list: word w, bit b of its bitmask (binned: candidate 32 w + b), or
 // index slot 32 w + b.
-uint listLight(uint tile, uint start, uint w, uint b) {
-    return kBinned ? candidateLight(tile, w * 32u + b) : tLists[start + w * 32u + b];
+uint listLight(DefCandidates c, uint start, uint w, uint b) {
+    return kBinned ? defCandidateLight(c, w * 32u + b) : tLists[start + w * 32u + b];
 }
 
-// Words of the tile's list bitmask (binned) or of its slice rows (index lists).
-uint listWords(uint tile, uint count) { return kBinned ? (candidateCount(tile) + 31u) / 32u : (count + 31u) / 32u; }
+// Words of the tile's list bitmask (binned) or of its slice rows (index lists); none for an
+// empty list.
+uint listWords(DefCandidates c, uint count) {
+    return count == 0u ? 0u : kBinned ? (c.count + 31u) / 32u : (count + 31u) / 32u;
+}
 
 // The lights of the list whose bit is set in the slice of the shading point, one 32-light
 // word at a time, in list order.
@@ -55,7 +58,9 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
     LaSlicing s = laSlicing(laFrontNear(b, sliceNear), sliceNear, uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices,
                             laFrontSlices(kSlices, true));
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    uint words = listWords(tile, count);
+    DefCandidates c = DefCandidates(0u, 0u, 0u);
+    if (kBinned) c = defCandidates(tile);
+    uint words = listWords(c, count);
     uint offset = start - tileCount * TP_LA_HEADER_WORDS;
     uint base = kBinned ? defMaskRowsBase(tileCount, offset, kSlices) : defClusterRowsBase(tileCount, offset, tile, kSlices);
     uint row = base + laSliceOf(dist, s) * words;
@@ -65,7 +70,7 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[listLight(tile, start, w, uint(lsb))], surface, kHasSpot);
+            sum += evalLight(lights[listLight(c, start, w, uint(lsb))], surface, kHasSpot);
         }
     }
     return sum;
@@ -74,13 +79,15 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
 // Binned, tiled: the list's bitmask, one 32-candidate word at a time.
 vec3 maskLights(uint tile, uint count, uint start, SurfaceSample surface) {
     vec3 sum = vec3(0.0);
-    uint words = count > 0u ? listWords(tile, count) : 0u;
+    if (count == 0u) return sum;
+    DefCandidates c = defCandidates(tile);
+    uint words = listWords(c, count);
     for (uint w = 0u; w < words; ++w) {
         uint bits = tLists[start + w];
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[candidateLight(tile, w * 32u + uint(lsb))], surface, kHasSpot);
+            sum += evalLight(lights[defCandidateLight(c, w * 32u + uint(lsb))], surface, kHasSpot);
         }
     }
     return sum;
