@@ -9,8 +9,11 @@
 layout(local_size_x = 64) in;
 
 void main() {
-    const uint k = binFlatIndex();
-    if (k >= bin.grid.w) return;
+    const uint index = binFlatIndex();
+    if (index >= bin.grid.w) return;
+    // Lights in descending order: a device that happens to run the workgroups in order (as
+    // lavapipe nearly does) would leave the runs ascending and hide a broken sort from the tests.
+    const uint k = bin.grid.w - 1u - index;
     const ivec4 rect = rects[k];
     if (rect.x > rect.y || rect.z > rect.w) return;
     const uint W = bin.grid.x, light = locals[k], base = draw.TP_BIN_BASE;
