@@ -34,6 +34,7 @@ namespace tp::gpu {
 // in the target buffer, one dispatch per bitonic step.
 #define TP_BIN_SHARED_SORT 4096u
 #define TP_BIN_SORT_GROUP 64u      // invocations sorting one tile's run
+#define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)
 #define TP_BIN_STEP_PAIRS 64u      // long-run step: pairs per invocation and dispatch
 #define TP_BIN_SCAN_GROUP 256u     // the offsets' prefix sum: one workgroup
 // Tiles one fill dispatch may visit per light: lavapipe ends an invocation after 65,535

@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // light_binning, step 7: each tile's run sorted ascending, a workgroup per tile, in shared
-// memory (runs of 2 to TP_BIN_SHARED_SORT lights; longer ones: bin_sort_step.comp). Bitonic
+// memory (runs of 2 to TP_BIN_SHARED_SORT lights; longer ones: bin_sort_step.comp). Runs up
+// to TP_BIN_RANK_SORT lights by rank; longer ones by a bitonic
 // sort over the run padded to a power of two with +inf (0xffffffff), in the formulation
 // whose comparators all put the smaller value first (each merge starts by comparing i with
 // its mirror in the block): so the padding stays at the end and the first n are the run,
@@ -19,6 +20,18 @@ void main() {
     const uint base = draw.TP_BIN_BASE + first, size = binSortSize(n);
     for (uint i = lane; i < size; i += TP_BIN_SORT_GROUP) run[i] = i < n ? target[base + i] : 0xffffffffu;
     barrier();
+    if (n <= TP_BIN_RANK_SORT) {
+        // Short runs: each light goes to its rank (how many of the run are smaller; a run holds
+        // a light once). n^2 / 64 compares per invocation but one barrier, where the bitonic
+        // sort takes log2(size)(log2(size) + 1) / 2: barriers are what lavapipe pays most for.
+        for (uint i = lane; i < n; i += TP_BIN_SORT_GROUP) {
+            const uint v = run[i];
+            uint rank = 0u;
+            for (uint j = 0u; j < n; ++j) rank += run[j] < v ? 1u : 0u;
+            target[base + rank] = v;
+        }
+        return;
+    }
     for (uint k = 2u; k <= size; k <<= 1u)
         for (uint j = k >> 1u; j > 0u; j >>= 1u) {
             for (uint p = lane; p < size / 2u; p += TP_BIN_SORT_GROUP) {

@@ -134,6 +134,10 @@ TEST(GpuLightBinning, CourtyardPointsAndSpotsTile16) { expectSameRuns(courtyard(
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) { expectSameRuns(courtyard(512), 160, 90, 32); }
 TEST(GpuLightBinning, Floor2048Lights) { expectSameRuns(floorWith(2048), 160, 96, 16); }
 TEST(GpuLightBinning, LightsAroundAndBehindTheEye) { expectSameRuns(aroundTheEye(1024), 96, 64, 8); }
+// 1,000 lights in every tile: runs past the rank sort, bitonic in shared memory.
+TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1);
+}
 // 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
     expectSameRuns(wholeScreen(TP_BIN_SHARED_SORT + 404), 32, 24, 8, TP_BIN_SHARED_SORT + 1);
