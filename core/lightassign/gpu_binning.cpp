@@ -9,6 +9,7 @@
 #include "core/gpu/vk_check.h"
 #include "core/lightassign/compact_layout.h"
 #include "core/lightassign/tile_bound.h"
+#include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 #include "include/light_binning.h"
 
@@ -39,6 +40,12 @@ uint32_t sortSize(uint32_t n) {
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, const std::vector<uint32_t>& local,
                        std::string owner)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())), owner_(std::move(owner)) {
+    // Its largest buffer: a rectangle (16 bytes) per light, bound whole.
+    if (uint64_t(local.size()) * 16 > ctx_.caps.maxStorageBufferRange)
+        throw RendererError("--light-bin gpu: " + std::to_string(local.size()) +
+                            " point/spot lights' tile rectangles need more than maxStorageBufferRange (" +
+                            std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
+                            "; use --light-bin cpu or fewer lights");
     // Uploaded once per configuration: the grid and its slab planes (the CPU's floats), the lights to bin.
     const std::vector<glm::vec4> slabs = binSlabPlanes(grid_, scene_.shadingFrame().proj);
     gpu::BinInputs in{};
