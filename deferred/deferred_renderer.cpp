@@ -7,12 +7,12 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
+#include "core/lightassign/bin_knob.h"
 #include "core/lightassign/heat_map.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
 #include "deferred/tiled_lighting.h"
 #include "deferred/transparent_lists.h"
-#include "core/lightassign/bin_knob.h"
 #include "deferred/transparent_pass.h"
 #include "deferred/volume_lighting.h"
 

@@ -2,15 +2,14 @@
 // Tiled deferred lighting in compute (one workgroup per tile: depth bounds, light culling
 // into shared memory, shading of the tile's pixels; per sample on MSAA edges only). Also
 // writes per-tile statistics and, for blended scenes, the transparent light lists.
+#include <memory>
+
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
 #include "deferred/deferred_shared.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/resources.h"
 #include "core/lightassign/gpu_binning.h"
-#include "core/lightassign/light_classes.h"
-
-#include <memory>
 
 namespace tp {
 
