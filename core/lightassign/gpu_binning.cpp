@@ -40,10 +40,10 @@ uint32_t sortSize(uint32_t n) {
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, const std::vector<uint32_t>& local,
                        std::string owner)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())), owner_(std::move(owner)) {
-    // Its largest buffer: a rectangle (16 bytes) per light, bound whole.
-    if (uint64_t(local.size()) * 16 > ctx_.caps.maxStorageBufferRange)
-        throw RendererError("--light-bin gpu: " + std::to_string(local.size()) +
-                            " point/spot lights' tile rectangles need more than maxStorageBufferRange (" +
+    // Its largest buffer: the light list, bound whole.
+    if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
+        throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
+                            " point/spot lights needs more than maxStorageBufferRange (" +
                             std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
                             "; use --light-bin cpu or fewer lights");
     // Uploaded once per configuration: the grid and its slab planes (the CPU's floats), the lights to bin.
@@ -80,7 +80,6 @@ GpuBinning::~GpuBinning() {
 void GpuBinning::bind(const Bufs& b, VkBuffer target) {
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_INPUTS, inputs_.buffer);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_LOCALS, localList_.buffer);
-    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_RECTS, b.rects);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_COUNTS, b.counts);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_OFFSETS, b.offsets);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_CURSORS, b.cursors);
@@ -95,9 +94,9 @@ LightBins GpuBinning::sizes() {
                             {owner_, "light_binning", name, "GPU binning at plan time (freed before the frame)"});
     };
     const uint32_t tiles = grid_.count();
-    Buffer rects = make(uint64_t(locals_) * 4, "light_bin_sizing_rects"), counts = make(tiles, "light_bin_sizing_counts"),
-           offsets = make(tiles + 1, "light_bin_sizing_offsets"), cursors = make(tiles, "light_bin_sizing_cursors");
-    bind({rects.buffer, counts.buffer, offsets.buffer, cursors.buffer}, cursors.buffer); // target: unused here
+    Buffer counts = make(tiles, "light_bin_sizing_counts"), offsets = make(tiles + 1, "light_bin_sizing_offsets"),
+           cursors = make(tiles, "light_bin_sizing_cursors");
+    bind({counts.buffer, offsets.buffer, cursors.buffer}, cursors.buffer); // target: unused here
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         begin(cmd);
         recordSizing(cmd);
@@ -123,15 +122,12 @@ LightBins GpuBinning::sizes() {
 
 void GpuBinning::plan(FrameGraph& graph) {
     const uint32_t tiles = grid_.count();
-    rects_ = graph.createBuffer("light_bin_rects", std::max<uint64_t>(locals_, 1) * 16,
-                               "GPU binning: each point/spot light's tile rectangle");
     counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4, "GPU binning: lights covering each tile");
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum)");
     cursors_ = graph.createBuffer("light_bin_cursors", uint64_t(tiles) * 4, "GPU binning: fill cursor per tile");
     graph.addPass("light_binning",
-                  {{rects_, Use::StorageWrite}, {counts_, Use::StorageWrite}, {offsets_, Use::StorageWrite},
-                   {cursors_, Use::StorageWrite}},
+                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageWrite}, {cursors_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
                       recordSizing(pc.cmd);
@@ -146,9 +142,7 @@ void GpuBinning::plan(FrameGraph& graph) {
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
     if (baseWord > 0xffffffffull) throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
-    bind({graph.buffer(rects_).buffer, graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer,
-          graph.buffer(cursors_).buffer},
-         target);
+    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(cursors_).buffer}, target);
 }
 
 void GpuBinning::begin(VkCommandBuffer cmd) {

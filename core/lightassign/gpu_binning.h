@@ -4,6 +4,7 @@
 // "light_binning" every frame, exactly equal (include/light_binning.h says why):
 //   1. clear   counts and cursors
 //   2. rects   per light, its conservative tile rectangle; its corners in a difference array
+//              (computed again by the fill rather than stored: no memory per light)
 //   3-4. scans the difference array along rows, then columns: the count per tile (the bound)
 //   5. offsets the counts' exclusive prefix sum (the compact layout)
 //   6. fill    per light and covered tile, an atomic cursor's slot (scheduling order)
@@ -47,7 +48,7 @@ class GpuBinning {
 
   private:
     struct Bufs {
-        VkBuffer rects, counts, offsets, cursors;
+        VkBuffer counts, offsets, cursors;
     };
     void bind(const Bufs& b, VkBuffer target);
     void recordSizing(VkCommandBuffer cmd);
@@ -63,7 +64,7 @@ class GpuBinning {
     uint32_t base_ = 0;     // the target's first word
     uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
     Buffer inputs_, localList_;
-    ResourceHandle rects_, counts_, offsets_, cursors_;
+    ResourceHandle counts_, offsets_, cursors_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::vector<VkPipeline> pipelines_; // one per step (kSteps in gpu_binning.cpp)

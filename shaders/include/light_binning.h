@@ -18,11 +18,10 @@ namespace tp::gpu {
 // ---- set TP_SET_PASS of the light_binning pass (all storage buffers) ----
 #define TP_BIN_BINDING_INPUTS 0  // BinInputs, then vec4 slabs[]: columns lo, columns hi, rows lo, rows hi
 #define TP_BIN_BINDING_LOCALS 1  // uint[]: the point/spot light indices, ascending (la::LightClasses::local)
-#define TP_BIN_BINDING_RECTS 2   // ivec4[locals]: each light's tile rectangle (x0, x1, y0, y1; empty: x0 > x1)
-#define TP_BIN_BINDING_COUNTS 3  // uint[tiles]: a difference array, then per tile how many rectangles cover it
-#define TP_BIN_BINDING_OFFSETS 4 // uint[tiles + 1]: exclusive prefix sum of the counts (saturates at 2^32 - 1)
-#define TP_BIN_BINDING_CURSORS 5 // uint[tiles]: the fill's cursor per tile
-#define TP_BIN_BINDING_TARGET 6  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
+#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles cover it
+#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (saturates at 2^32 - 1)
+#define TP_BIN_BINDING_CURSORS 4 // uint[tiles]: the fill's cursor per tile
+#define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.

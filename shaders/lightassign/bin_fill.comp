@@ -14,7 +14,7 @@ void main() {
     // Lights in descending order: a device that happens to run the workgroups in order (as
     // lavapipe nearly does) would leave the runs ascending and hide a broken sort from the tests.
     const uint k = bin.grid.w - 1u - index;
-    const ivec4 rect = rects[k];
+    const ivec4 rect = binRect(k); // what step 2 counted, computed again
     if (rect.x > rect.y || rect.z > rect.w) return;
     const uint W = bin.grid.x, light = locals[k], base = draw.TP_BIN_BASE;
     const uint y0 = max(uint(rect.z), draw.TP_BIN_FIRST), y1 = min(uint(rect.w) + 1u, draw.TP_BIN_END);
