@@ -7,6 +7,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
+#include "core/lightassign/bin_knob.h"
 #include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/heat_map.h"
 #include "core/render/scene_gpu.h"
@@ -27,7 +28,8 @@ class DeferredRenderer final : public Renderer {
                                                        info.settings.text("light-cull") == "binned",
                                                        info.settings.text("light-assign") == "clustered"
                                                            ? info.settings.integer("slices")
-                                                           : 0u),
+                                                           : 0u,
+                                                       la::resolveLightBin(info.ctx, info.settings.text("light-bin")) == "gpu"),
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene), blendBounds_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = settings_.text("deferred-lighting") == "volumes";
@@ -236,6 +238,8 @@ RendererStats DeferredRenderer::stats() const {
     if (t_.tileStats.valid()) {
         // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).
         s.counters.push_back({"light_candidates", double(lighting_.candidates())});
+        if (settings_.text("light-cull") == "binned") // --light-bin, resolved
+            s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)

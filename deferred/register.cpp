@@ -1,6 +1,7 @@
 // G-buffer deferred as the rest of the program sees it: its name, its knobs, its precision
 // model for `triptych stress` (deferred/error_model.cpp).
 #include "core/lightassign/assign_knob.h"
+#include "core/lightassign/bin_knob.h"
 #include "core/lightassign/cull_knob.h"
 #include "core/lightassign/tile_knob.h"
 #include "core/render/msaa_knob.h"
@@ -15,6 +16,7 @@ namespace {
 KnobSchema deferredKnobs() {
     return {la::tileSizeKnob(),
             la::lightCullKnob(),
+            la::lightBinKnob(),
             la::lightAssignKnob(),
             la::slicesKnob(),
             Knob::choice("gbuffer", {"compact", "wide"}, "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"),

@@ -25,6 +25,13 @@ void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, 
     t_ = &t;
     listsOnly_ = listsOnly;
     transparentMasks_ = transparentMasks;
+    if (gpuBinning_) {
+        // Sized now (one plan-time run); the frame's pass runs before this one.
+        binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, t.grid, la::classifyLights(scene_.shadingLights()).local,
+                                                    graph.owner());
+        gpuBins_ = binning_->sizes();
+        binning_->plan(graph);
+    }
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
     const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
                                         TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
@@ -107,7 +114,8 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         const gpu::FrameUniforms& f = scene_.shadingFrame();
         const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
         la::LightClasses classes = la::classifyLights(lights);
-        la::LightBins bins = la::binLights(t_->grid, f.view, f.proj, lights, classes.local, true);
+        la::LightBins bins = gpuBinning_ ? std::move(gpuBins_)
+                                         : la::binLights(t_->grid, f.view, f.proj, lights, classes.local, true);
         const uint32_t directional = uint32_t(classes.directional.size());
         // The buffer's size from the unclamped slot count: refused before it is built.
         const uint64_t bytes = (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
@@ -122,8 +130,9 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         words.insert(words.end(), classes.directional.begin(), classes.directional.end());
         words.insert(words.end(), bins.offsets.begin(), bins.offsets.end());
         words.insert(words.end(), bins.candidates.begin(), bins.candidates.end());
+        if (gpuBinning_) words.resize(words.size() + bins.slots, 0); // light_binning writes them
         maxCandidates_ = directional + bins.maxBound;
-        candidateCount_ = uint64_t(directional) * tiles + bins.candidates.size();
+        candidateCount_ = uint64_t(directional) * tiles + bins.slots;
     } else {
         candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
     }
@@ -131,6 +140,7 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
                                        {graph.owner(), "", "light_candidates",
                                         binned_ ? "binned culling: directional lights, per-tile offsets, candidates"
                                                 : "binned culling off (--light-cull all): header only"});
+    if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_DEF_CAND_RUNS]);
 }
 
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {

@@ -2,6 +2,7 @@
 // `triptych stress`. This file is the only place outside forwardplus/ that needs to change
 // when Forward+ gains a knob: nowhere.
 #include "core/lightassign/assign_knob.h"
+#include "core/lightassign/bin_knob.h"
 #include "core/lightassign/cull_knob.h"
 #include "core/lightassign/tile_knob.h"
 #include "core/render/msaa_knob.h"
@@ -14,6 +15,7 @@ namespace {
 KnobSchema forwardPlusKnobs() {
     return {la::tileSizeKnob(),
             la::lightCullKnob(),
+            la::lightBinKnob(),
             la::lightAssignKnob(),
             la::slicesKnob(),
             msaaShadingKnob(),

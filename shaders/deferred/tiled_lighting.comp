@@ -94,6 +94,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TILE_STATS) buffer Ti
 
 shared uint sCount;
 shared uint sTransparentCount;
+shared uint sMaskDropped; // binned: survivors past the tile's mask words (none while the runs match the bound)
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 // Clustered (kSlices > 0): bit i of slice s's row is set when sLights[i] can reach the
@@ -234,7 +235,8 @@ void cull(uvec2 tile, bool hasGeometry) {
         uint light = candidateLight(tileIndex, i);
         if (lightInTile(lights[light], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
-            if (kBinned) atomicOr(tLists[start + (i >> 5u)], 1u << (i & 31u)); // words cleared in main
+            if (kBinned && (i >> 5u) < capacity) atomicOr(tLists[start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
+            else if (kBinned) atomicAdd(sMaskDropped, 1u); // counted, never silent
             else if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
         }
     }
@@ -302,6 +304,7 @@ void main() {
     if (gl_LocalInvocationIndex == 0u) {
         sCount = 0u;
         sTransparentCount = 0u;
+        sMaskDropped = 0u;
         sEdges = 0u;
     }
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
@@ -361,7 +364,7 @@ void main() {
 #ifdef TP_TRANSPARENT
             uint capacity = tOffsets[tileIndex + 1u] - tOffsets[tileIndex];
             // Binned: every survivor has its bit (the mask covers every candidate).
-            uint kept = kBinned ? sTransparentCount : min(sTransparentCount, capacity);
+            uint kept = kBinned ? sTransparentCount - sMaskDropped : min(sTransparentCount, capacity);
             tLists[laHeaderWord(tileIndex, TP_LA_COUNT)] = kept;
             tLists[laHeaderWord(tileIndex, TP_LA_START)] =
                 laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[tileIndex]);
