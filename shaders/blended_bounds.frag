@@ -6,8 +6,8 @@
 // blended pass shades (light_assign.glsl: LaBlendedBounds says why). Each records its view
 // distance into its tile's [min, max] (light_assign.h: TP_LA_BLEND_*).
 //   TP_INPUTS_AT_PIXEL: the once-per-pixel variant (scene_inputs.glsl), as the shading's.
-//   TP_LA_BLEND_SUBGROUP: lanes of one subgroup in one tile reduce first, one atomic pair
-//   per subgroup (the device supports arithmetic and vote subgroup operations in fragment
+//   TP_LA_BLEND_SUBGROUP: lanes of one subgroup in one tile reduce first, so every lane's
+//   atomic pair carries the same values (the device supports arithmetic and vote subgroup operations in fragment
 //   shaders; blended_bounds.cpp picks the variant).
 #ifdef TP_LA_BLEND_SUBGROUP
 #extension GL_KHR_shader_subgroup_basic : require
@@ -43,11 +43,13 @@ void main() {
     // exclude them; lavapipe's compiler lacks it.)
 #ifdef TP_LA_BLEND_SUBGROUP
     if (subgroupAllEqual(tile)) {
+        // Every lane issues the reduced pair, not one elected lane: the elected lane may be a
+        // helper invocation, whose atomics are dropped, and the subgroup's fragments would be
+        // lost (seen on an NVIDIA H100: lights missing on blended surfaces). The helpers'
+        // own atomics are dropped; any shaded lane's carry the subgroup's min and max.
         uint lo = subgroupMin(bits), hi = subgroupMax(bits);
-        if (subgroupElect()) {
-            atomicMin(bounds[tile], lo);
-            atomicMax(bounds[tileCount + tile], hi);
-        }
+        atomicMin(bounds[tile], lo);
+        atomicMax(bounds[tileCount + tile], hi);
         return;
     }
 #endif
