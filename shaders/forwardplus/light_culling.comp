@@ -102,7 +102,11 @@ ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
 
 // `sphere`: lightSphereView(light), computed once per candidate for both lists.
 bool passes(LightGpu light, vec4 sphere, ListVolume v) {
-    return v.tests && sphereInTileBox(sphere, v.box) && lightSphereInTile(light, sphere, v.frustum, frame.view);
+    // Without spot lights (kHasSpot false) the cone test is left out: lavapipe runs both
+    // sides of a branch under a lane mask, so it would cost every candidate.
+    return v.tests && sphereInTileBox(sphere, v.box) &&
+           (kHasSpot ? lightSphereInTile(light, sphere, v.frustum, frame.view)
+                     : tileSphereTest(sphere.xyz, sphere.w, v.frustum));
 }
 
 #ifdef TP_FP_CLUSTERED
