@@ -18,6 +18,7 @@
 #include "core/render/scene_gpu.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
+#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -45,6 +46,12 @@ class ForwardPlusRenderer final : public Renderer {
         binned_ = settings_.text("light-cull") == "binned";
         clustered_ = settings_.text("light-assign") == "clustered";
         slices_ = settings_.integer("slices");
+        // --light-loop subgroup where the device has the operations; otherwise the lane loop
+        // (the same image), with a note in the report.
+        if (clustered_ && settings_.text("light-loop") == "subgroup") {
+            subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
+            subgroupLoop_ = subgroupMissing_.empty();
+        }
         if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
             throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
                                 settings_.text("light-lists") + "')");
@@ -179,6 +186,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (clustered_) {
             add("slices", double(slices_));
             add("cluster_mask_words", double(maskLayout_.words));
+            add("light_loop_subgroup", subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
         const std::vector<uint32_t> none, &tested = binned_ ? tileBound_ : none;
         if (collected_) {
@@ -220,6 +228,10 @@ class ForwardPlusRenderer final : public Renderer {
                                  "look up their own depth slice"});
         if (!clustered_)
             s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
+        if (!subgroupMissing_.empty())
+            s.leftOut.push_back({"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
+                                 "the same image",
+                                 subgroupMissing_});
         if (settings_.msaa == 1)
             s.leftOut.push_back({"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
         if (!scene_.hasDraws(DrawFilter::Mask))
@@ -336,7 +348,7 @@ class ForwardPlusRenderer final : public Renderer {
             // sample shading; the EQUAL depth test against the per-sample prepass gives each
             // sample its coverage, masked materials included); sample shades every sample.
             d.fragmentShader = std::string(clustered_ ? "fp_shading_clustered" : "fp_shading") +
-                               (shadesPerPixelUnderMsaa(settings_) ? "_pixel_frag" : "_frag");
+                               (subgroupLoop_ ? "_subgroup" : "") + (shadesPerPixelUnderMsaa(settings_) ? "_pixel_frag" : "_frag");
             d.colorFormats = {kHdrFormat};
             d.samples = samples;
             d.sampleShading = shadesPerSample(settings_);
@@ -397,6 +409,8 @@ class ForwardPlusRenderer final : public Renderer {
     la::LightClasses classes_;
     bool binned_ = true, clustered_ = false, blendPass_ = false;
     uint32_t slices_ = 16;
+    bool subgroupLoop_ = false;    // clustered, --light-loop subgroup, and the device runs it
+    std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
     fp::MaskLayout maskLayout_; // clustered: the slice rows' word offsets per tile
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics

@@ -3,6 +3,7 @@
 // when Forward+ gains a knob: nowhere.
 #include "core/lightassign/assign_knob.h"
 #include "core/lightassign/cull_knob.h"
+#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_knob.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
@@ -16,6 +17,7 @@ KnobSchema forwardPlusKnobs() {
             la::lightCullKnob(),
             la::lightAssignKnob(),
             la::slicesKnob(),
+            la::lightLoopKnob(),
             msaaShadingKnob(),
             Knob::choice("light-lists", {"compact", "fixed", "linked"},
                          "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "

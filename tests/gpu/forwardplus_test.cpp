@@ -26,6 +26,7 @@
 #include "core/scene/procedural.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "core/lightassign/light_classes.h"
+#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -565,6 +566,33 @@ TEST(ForwardPlusClustered, Floor4096LightsTinyTile8Slices4) {
     RenderSettings s = clustered(small(40, 24, 1), 4);
     s.set("tile", 8);
     expectMatchesReference(floorScene(4096), s);
+}
+
+// --light-loop subgroup walks the OR of a tile's lanes' bit rows, each lane adding only its
+// own lights in the same ascending order: the image must be bit-identical to the lane loop
+// (1x; 4x shading every sample; 4x once per pixel, the other shader variant), and the blended
+// pass (courtyard-small has blended draws) too.
+TEST(ForwardPlusClustered, SubgroupLoopGivesTheLaneLoopsImage) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const std::string missing = la::subgroupLoopUnsupported(ctx->caps);
+    if (!missing.empty()) GTEST_SKIP() << missing;
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    const std::pair<uint32_t, const char*> runs[] = {{1u, "pixel"}, {4u, "sample"}, {4u, "pixel"}};
+    for (const auto& [msaa, rate] : runs) {
+        RenderSettings s = clustered(small(96, 54, msaa));
+        s.set("msaa-shading", rate);
+        RunResult lane = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        s.set("light-loop", "subgroup");
+        RunResult subgroup = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        EXPECT_EQ(statOf(lane, "light_loop_subgroup"), 0.0);
+        EXPECT_EQ(statOf(subgroup, "light_loop_subgroup"), 1.0);
+        EXPECT_FALSE(hasLeftOut(subgroup, "the subgroup light loop"));
+        EXPECT_EQ(lane.hdr.rgba, subgroup.hdr.rgba) << msaa << "x, " << rate;
+        EXPECT_GT(statOf(lane, "lights_per_cluster_mean"), 1.0); // clusters with several lights to walk
+    }
+    expectNoValidationMessages(*ctx);
 }
 
 // laSliceOf (include/light_assign.glsl) on the CPU, with front slices (blended scenes).
