@@ -24,6 +24,7 @@
 #include "forwardplus/forwardplus_shared.h"
 #include "forwardplus/light_culling.h"
 #include "forwardplus/light_lists.h"
+#include "forwardplus/light_spheres.h"
 
 namespace tp {
 namespace {
@@ -109,7 +110,8 @@ class ForwardPlusRenderer final : public Renderer {
                 vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
             });
 
-        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_});
+        const ResourceHandle spheres = spheres_.plan(graph);
+        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, spheres});
 
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
 
@@ -318,6 +320,7 @@ class ForwardPlusRenderer final : public Renderer {
     }
 
     void createDescriptors(FrameGraph& graph) {
+        spheres_.prepare(graph);
         // fp_params is uploaded once in prepare(), outside the graph.
         culling_->prepare(graph, params_.buffer);
         // forward_transparent declares the same bound uses and shares this set.
@@ -421,6 +424,7 @@ class ForwardPlusRenderer final : public Renderer {
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;
+    fp::LightSpheres spheres_{ctx_, scene_};
     std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
     PassSet shadeSet_;
     VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;

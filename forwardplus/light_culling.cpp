@@ -22,7 +22,8 @@ void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
     // Uses with a binding are also the pass's descriptor set (prepare).
     std::vector<PassUse> uses = {{r.depth, Use::Sampled, TP_FP_BINDING_DEPTH},
                                  {r.tiles, Use::StorageWrite, TP_FP_BINDING_TILES},
-                                 {r.indices, Use::StorageWrite, TP_FP_BINDING_INDICES}};
+                                 {r.indices, Use::StorageWrite, TP_FP_BINDING_INDICES},
+                                 {r.spheres, Use::StorageRead, TP_FP_BINDING_SPHERES}};
     if (config_.layout == TP_FP_LAYOUT_LINKED) uses.push_back({r.counter, Use::StorageWrite, TP_FP_BINDING_COUNTER});
     if (config_.clustered) uses.push_back({r.masks, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
     graph.addPass("light_culling", uses, [this](PassContext& pc) { record(pc); });

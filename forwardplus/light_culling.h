@@ -27,9 +27,10 @@ struct CullConfig {
     bool binned = true, clustered = false, twoLists = false, spanFromNear = false;
 };
 
-// The resources the pass reads and writes (counter: linked only; masks: clustered only).
+// The resources the pass reads and writes (counter: linked only; masks: clustered only;
+// spheres: light_spheres.h).
 struct CullResources {
-    ResourceHandle depth, tiles, indices, counter, masks;
+    ResourceHandle depth, tiles, indices, counter, masks, spheres;
 };
 
 class LightCulling {

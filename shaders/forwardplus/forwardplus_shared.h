@@ -16,6 +16,7 @@ namespace tp::gpu {
 #define TP_FP_BINDING_DEPTH 3   // culling only: the prepass depth (sampler2D, or sampler2DMS with MSAA)
 #define TP_FP_BINDING_COUNTER 4 // culling only, "linked" layout: node-pool allocation counter
 #define TP_FP_BINDING_CLUSTER_MASKS 5 // clustered only: buffer uint[]: per tile and slice, a bitmask over the tile list
+#define TP_FP_BINDING_SPHERES 6 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TILE_SIZE 12 // tile size in pixels (8, 16, 32), culling and shading
@@ -37,6 +38,8 @@ namespace tp::gpu {
 #define TP_FP_CULL_FIRST pad0
 #define TP_FP_CULL_END pad1
 #define TP_FP_CULL_INITIAL pad2
+// light_spheres: the number of lights (one invocation each), in the same push constant.
+#define TP_FP_SPHERE_COUNT pad0
 // Loop iterations one culling dispatch may spend on its candidates: half of lavapipe's
 // limit (the depth bounds take at most 32 * 32 * 4 + 32 * 32 + 32 more).
 #define TP_FP_CULL_LOOP_BUDGET 32768u

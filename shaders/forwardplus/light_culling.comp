@@ -56,6 +56,10 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     FpParams params;
     uint data[];
 };
+// Every light's lightSphereView, from the light_spheres pass (light_spheres.comp).
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_SPHERES) readonly buffer SphereBlock {
+    vec4 spheres[];
+};
 #ifdef TP_FP_DEPTH_MS
 layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2DMS depthImage;
 #define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, int(s)).r
@@ -100,12 +104,12 @@ ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
     return v;
 }
 
-// `sphere`: lightSphereView(light), computed once per candidate for both lists.
-bool passes(LightGpu light, vec4 sphere, ListVolume v) {
-    // Without spot lights (kHasSpot false) the cone test is left out: lavapipe runs both
-    // sides of a branch under a lane mask, so it would cost every candidate.
+// `sphere`: spheres[lightIndex], read once per candidate for both lists. Without spot
+// lights (kHasSpot false) neither the light nor the cone test is needed: lavapipe runs both
+// sides of a branch under a lane mask, so they would cost every candidate.
+bool passes(uint lightIndex, vec4 sphere, ListVolume v) {
     return v.tests && sphereInTileBox(sphere, v.box) &&
-           (kHasSpot ? lightSphereInTile(light, sphere, v.frustum, frame.view)
+           (kHasSpot ? lightSphereInTile(lights[lightIndex], sphere, v.frustum, frame.view)
                      : tileSphereTest(sphere.xyz, sphere.w, v.frustum));
 }
 
@@ -253,10 +257,10 @@ void main() {
     // `capacity` is this batch's kept nodes, positions count from 0.
     uint found0 = 0u, found1 = 0u;
     for (uint k = batchFirst; k < batchEnd; ++k) {
-        LightGpu light = lights[data[candidateBase + k]];
-        vec4 sphere = lightSphereView(light, frame.view);
-        if (passes(light, sphere, volume0)) ++found0;
-        if (kTwoLists && passes(light, sphere, volume1)) ++found1;
+        const uint lightIndex = data[candidateBase + k];
+        const vec4 sphere = spheres[lightIndex];
+        if (passes(lightIndex, sphere, volume0)) ++found0;
+        if (kTwoLists && passes(lightIndex, sphere, volume1)) ++found1;
     }
     const uint pool = params.lists.y;
     const uint start0 = found0 > 0u ? atomicAdd(nodeCounter, found0) : 0u;
@@ -277,9 +281,8 @@ void main() {
 #endif
     for (uint k = batchFirst; k < batchEnd; ++k) {
         const uint lightIndex = data[candidateBase + k];
-        LightGpu light = lights[lightIndex];
-        const vec4 sphere = lightSphereView(light, frame.view);
-        if (passes(light, sphere, volume0)) {
+        const vec4 sphere = spheres[lightIndex];
+        if (passes(lightIndex, sphere, volume0)) {
             store(lightIndex, count0, start0, capacity0, tail0);
 #ifdef TP_FP_CLUSTERED
             if (count0 < capacity0) {
@@ -287,14 +290,14 @@ void main() {
                     flushWord((count0 >> 5u) - 1u, maskBase, maskStride);
                     dirty = false;
                 }
-                markSlices(sphere, count0, slicing, !kSpanFromNear || passes(light, sphere, volume1),
+                markSlices(sphere, count0, slicing, !kSpanFromNear || passes(lightIndex, sphere, volume1),
                            openEnd);
                 dirty = true;
             }
 #endif
             ++count0;
         }
-        if (kTwoLists && passes(light, sphere, volume1)) {
+        if (kTwoLists && passes(lightIndex, sphere, volume1)) {
             store(lightIndex, count1, start1, capacity1, tail1);
             ++count1;
         }

@@ -25,3 +25,5 @@ triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_subgrou
   DEFINES TP_FP_CLUSTERED=1 TP_FP_LIGHT_LOOP_SUBGROUP=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_subgroup_pixel_frag
   DEFINES TP_FP_CLUSTERED=1 TP_FP_LIGHT_LOOP_SUBGROUP=1 TP_INPUTS_AT_PIXEL=1)
+# Every light's view-space sphere, once per frame, for the culling.
+triptych_add_shader(SPVS ${SHADER_DIR}/light_spheres.comp fp_light_spheres_comp)
