@@ -76,6 +76,19 @@ Scene courtyardScene(uint32_t lightCount) {
     return scene;
 }
 
+// Point lights only: the culling and shading variants without spot code (kHasSpot = 0),
+// which the default light mix of the CLI (and the lavapipe benchmark) uses.
+Scene courtyardPointScene(uint32_t lightCount) {
+    Scene scene = courtyardScene(0);
+    LightGenOptions g;
+    g.count = lightCount;
+    g.seed = 7;
+    g.pointWeight = 1.0f;
+    g.spotWeight = 0.0f;
+    scene.lights = generateLights(scene.bounds, g);
+    return scene;
+}
+
 struct Comparison {
     double worstRatio = 0.0; // max |d| / tolerance
     uint32_t worstX = 0, worstY = 0;
@@ -165,6 +178,9 @@ TEST(ForwardPlusReference, CourtyardOneLight) { expectMatchesReference(courtyard
 TEST(ForwardPlusReference, Courtyard256Lights) { expectMatchesReference(courtyardScene(256), small(96, 54, 1), 4); }
 TEST(ForwardPlusReference, Courtyard256LightsMsaa4) {
     expectMatchesReference(courtyardScene(256), small(96, 54, 4), 4);
+}
+TEST(ForwardPlusReference, Courtyard256PointLightsOnly) {
+    expectMatchesReference(courtyardPointScene(256), small(96, 54, 1), 4);
 }
 TEST(ForwardPlusReference, Courtyard4096LightsTiny) {
     expectMatchesReference(courtyardScene(4096), small(48, 27, 1), 4);
@@ -494,6 +510,10 @@ void expectBinnedEqualsBruteForce(const Scene& scene, RenderSettings settings) {
 
 TEST(ForwardPlusCulling, BinnedListsEqualBruteForceOnCourtyard) {
     expectBinnedEqualsBruteForce(courtyardScene(512), small(128, 72, 1));
+}
+
+TEST(ForwardPlusCulling, BinnedListsEqualBruteForcePointLightsOnly) {
+    expectBinnedEqualsBruteForce(courtyardPointScene(512), small(128, 72, 1));
 }
 
 TEST(ForwardPlusCulling, BinnedListsEqualBruteForceMsaa4Tile8) {
