@@ -14,8 +14,10 @@ Knob lightLoopKnob() {
 }
 
 std::string subgroupLoopUnsupported(const DeviceCaps& caps) {
-    if (!(caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT)) return "the device has no subgroup operations in fragment shaders";
-    const uint32_t need = VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
+    if (!(caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT))
+        return "the device has no subgroup operations in fragment shaders";
+    const uint32_t need =
+        VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
     if ((caps.subgroupOps & need) != need)
         return "the device lacks subgroup vote, arithmetic or ballot operations";
     return {};
