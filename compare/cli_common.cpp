@@ -254,8 +254,7 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
                          std::to_string(maxDim) + " on " + ctx.info.name);
     if (v.msaa != 1 && v.msaa != 2 && v.msaa != 4 && v.msaa != 8)
         throw UsageError("--msaa " + std::to_string(v.msaa) + ": must be 1, 2, 4 or 8");
-    if (!(ctx.caps.colorSampleCounts & uint32_t(v.msaa)))
-        throw UsageError("--msaa " + std::to_string(v.msaa) + ": not supported by " + ctx.info.name);
+    if (Status ok = checkSampleCount(ctx, uint32_t(v.msaa)); !ok) throw UsageError(ok.error());
     s.width = w;
     s.height = h;
     s.msaa = uint32_t(v.msaa);

@@ -7,6 +7,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
+#include "core/lightassign/bin_knob.h"
 #include "core/lightassign/heat_map.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
@@ -26,7 +27,8 @@ class DeferredRenderer final : public Renderer {
                                                        info.settings.text("light-cull") == "binned",
                                                        info.settings.text("light-assign") == "clustered"
                                                            ? info.settings.integer("slices")
-                                                           : 0u),
+                                                           : 0u,
+                                                       la::resolveLightBin(info.ctx, info.settings.text("light-bin")) == "gpu"),
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = settings_.text("deferred-lighting") == "volumes";
@@ -40,13 +42,14 @@ class DeferredRenderer final : public Renderer {
         // the tile knob's values (8, 16, 32) are all multiples of 8.
         t_.grid = la::makeTileGrid(graph.width(), graph.height(), settings_.integer("tile"));
         const uint32_t tiles = t_.grid.count();
-        t_.hdr = graph.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                           "linear radiance (resolved)"});
+        // --hdr: fp32 keeps the light sum exact to readback; fp16 halves the bytes (Forward+'s format).
+        t_.hdrFormat = settings_.text("hdr") == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+        t_.hdr = graph.createImage("hdr", {t_.hdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT, "linear radiance (resolved)"});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
         blended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
         if (blended_ && t_.msaa())
-            t_.hdrMsaa = graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
+            t_.hdrMsaa = graph.createImage("hdr_msaa", {t_.hdrFormat, 0, 0,
                                                         VkSampleCountFlagBits(settings_.msaa),
                                                         "per-sample radiance (blended under MSAA)"});
         // Volumes lighting of an opaque-only scene runs no tile pass at all.
@@ -215,6 +218,8 @@ RendererStats DeferredRenderer::stats() const {
     if (t_.tileStats.valid()) {
         // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).
         s.counters.push_back({"light_candidates", double(lighting_.candidates())});
+        if (settings_.text("light-cull") == "binned") // --light-bin, resolved
+            s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)

@@ -14,6 +14,7 @@ struct DeferredTargets {
     std::vector<ResourceHandle> gbuffer; // colour targets in layout.colors order
     ResourceHandle gbufferDepth;         // depth the G-buffer pass writes (per sample under MSAA)
     ResourceHandle hdr, depth;           // the standard single-sample outputs
+    VkFormat hdrFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // hdr and hdr_msaa (--hdr fp32 | fp16)
     ResourceHandle hdrMsaa;              // per-sample radiance: blended scenes under MSAA only
     ResourceHandle tileStats;            // uvec4 per tile
     ResourceHandle transparentLists;     // blended scenes only: compact (include/light_assign.h)

@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "core/render/msaa_knob.h"
+#include "deferred/deferred_shared.h"
 #include "deferred/position_allowance.h"
+#include "deferred/tiled_lighting.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 
@@ -49,6 +51,41 @@ void addCompactGBuffer(ErrorBound& b, const ErrorModelInput& in) {
                            "angle where n.l >= 0.1"});
 }
 
+bool hasBlended(const Scene& scene) {
+    for (const Material& m : scene.materials)
+        if (m.alphaMode == AlphaMode::Blend) return true;
+    return false;
+}
+
+// --hdr fp16: hdr (and hdr_msaa) are RGBA16F, with Forward+'s term for its RGBA16F target:
+// one rounding per store a pixel's sum goes through. Tiled: one per lighting batch (a later
+// batch loads the rounded sum, adds and stores again); volumes: the base pass and one blend
+// per light; then the resolve of hdr_msaa (blended scenes under MSAA). As for Forward+, each
+// blended layer's store adds one more, which the model leaves to the caller (no stress case
+// has blended materials; tests/gpu/deferred_hdr_test.cpp adds them).
+void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
+    if (in.settings.text("hdr") != "fp16") return;
+    const RenderSettings& s = in.settings;
+    const uint32_t lights = uint32_t(in.scene.lights.size());
+    int stores = 0;
+    std::string what;
+    if (s.text("deferred-lighting") == "volumes") {
+        stores = 1 + int(lights);
+        what = "base pass, one blend per light volume";
+    } else {
+        uint32_t batch = tiledLightBatch(uint32_t(s.integer("tile")), s.msaa);
+        if (s.text("light-assign") == "clustered")
+            batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / uint32_t(s.integer("slices")));
+        stores = int(std::max(1u, (lights + batch - 1) / batch));
+        what = "one per lighting batch of " + std::to_string(batch) + " lights";
+    }
+    if (s.msaa > 1 && hasBlended(in.scene)) {
+        stores += 1;
+        what += ", resolve";
+    }
+    addFp16StorageTerm(b, stores, what);
+}
+
 } // namespace
 
 void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
@@ -65,6 +102,7 @@ void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     // Non-edge pixels shaded once at the centre under --msaa-shading pixel (the Lauritzen
     // path); nothing at 1x or at the sample rate, where every sample is lit at itself.
     addPixelRateErrorTerm(b, in);
+    addHdrStorage(b, in);
 }
 
 } // namespace tp

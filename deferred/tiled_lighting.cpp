@@ -24,6 +24,13 @@ void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, 
     t_ = &t;
     listsOnly_ = listsOnly;
     transparentMasks_ = transparentMasks;
+    if (gpuBinning_) {
+        // Sized now (one plan-time run); the frame's pass runs before this one.
+        binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, t.grid, la::classifyLights(scene_.shadingLights()).local,
+                                                    graph.owner());
+        gpuBins_ = binning_->sizes();
+        binning_->plan(graph);
+    }
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
     const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
                                         TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
@@ -51,7 +58,8 @@ std::string TiledLighting::shaderName() const {
     if (listsOnly_) return std::string("deferred_tiled_lists_m") + (t_->msaa() ? "1" : "0") + "_comp";
     int m = !t_->msaa() ? 0 : t_->hdrMsaa.valid() ? 2 : 1;
     return "deferred_tiled_m" + std::to_string(m) + "_e" + (t_->layout.emissive ? "1" : "0") + "_t" +
-           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") + "_comp";
+           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") +
+           (t_->hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : "") + "_comp";
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {
@@ -89,6 +97,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
+    // The shared slice masks: clustered shading only (tiled groups keep one word).
+    spec.push_back({TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 
@@ -102,7 +112,8 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         const gpu::FrameUniforms& f = scene_.shadingFrame();
         const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
         la::LightClasses classes = la::classifyLights(lights);
-        la::LightBins bins = la::binLights(t_->grid, f.view, f.proj, lights, classes.local, true);
+        la::LightBins bins = gpuBinning_ ? std::move(gpuBins_)
+                                         : la::binLights(t_->grid, f.view, f.proj, lights, classes.local, true);
         const uint32_t directional = uint32_t(classes.directional.size());
         // The buffer's size from the unclamped slot count: refused before it is built.
         const uint64_t bytes = (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
@@ -117,8 +128,9 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         words.insert(words.end(), classes.directional.begin(), classes.directional.end());
         words.insert(words.end(), bins.offsets.begin(), bins.offsets.end());
         words.insert(words.end(), bins.candidates.begin(), bins.candidates.end());
+        if (gpuBinning_) words.resize(words.size() + bins.slots, 0); // light_binning writes them
         maxCandidates_ = directional + bins.maxBound;
-        candidateCount_ = uint64_t(directional) * tiles + bins.candidates.size();
+        candidateCount_ = uint64_t(directional) * tiles + bins.slots;
     } else {
         candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
     }
@@ -126,6 +138,7 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
                                        {graph.owner(), "", "light_candidates",
                                         binned_ ? "binned culling: directional lights, per-tile offsets, candidates"
                                                 : "binned culling off (--light-cull all): header only"});
+    if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_DEF_CAND_RUNS]);
 }
 
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {

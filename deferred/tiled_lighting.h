@@ -2,11 +2,14 @@
 // Tiled deferred lighting in compute (one workgroup per tile: depth bounds, light culling
 // into shared memory, shading of the tile's pixels; per sample on MSAA edges only). Also
 // writes per-tile statistics and, for blended scenes, the transparent light lists.
+#include <memory>
+
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
 #include "deferred/deferred_shared.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/resources.h"
+#include "core/lightassign/gpu_binning.h"
 
 namespace tp {
 
@@ -26,8 +29,10 @@ class TiledLighting {
   public:
     // binned (--light-cull binned): each tile tests only its candidates (core/lightassign/light_bins.h).
     // slices > 0 (--light-assign clustered): each sample takes only its depth slice's lights.
-    TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices)
-        : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices) {}
+    // gpuBinning (--light-bin resolved to gpu; binned only): pass light_binning builds the
+    // candidates every frame (core/lightassign/gpu_binning.h).
+    TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices, bool gpuBinning = false)
+        : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices), gpuBinning_(binned && gpuBinning) {}
     ~TiledLighting();
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
@@ -37,6 +42,7 @@ class TiledLighting {
     void prepare(FrameGraph& graph);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
+    bool gpuBinning() const { return gpuBinning_; }
 
   private:
     void record(PassContext& pc);
@@ -49,6 +55,9 @@ class TiledLighting {
     bool debug_;
     bool binned_ = true;
     uint32_t slices_ = 0;
+    bool gpuBinning_ = false;
+    std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
+    la::LightBins gpuBins_;                   // its plan-time sizes (no candidates)
     bool listsOnly_ = false;
     ResourceHandle transparentMasks_;
     uint32_t maxCandidates_ = 0; // binned: the most candidates of any tile (the batches' range)

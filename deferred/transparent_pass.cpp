@@ -47,7 +47,7 @@ void TransparentPass::prepare(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
-    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.colorFormats = {t_->hdrFormat};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample
     d.depthWrite = false;

@@ -104,7 +104,7 @@ void VolumeLighting::prepareBase(FrameGraph& graph) {
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
     d.specConstants.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
-    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.colorFormats = {t_->hdrFormat};
     d.depthFormat = VK_FORMAT_UNDEFINED;
     d.depthTest = d.depthWrite = false;
     if (t_->msaa()) {
@@ -128,7 +128,7 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
     d.specConstants.push_back({TP_DEF_SPEC_SPHERE_SCALE, std::bit_cast<uint32_t>(circumscribedSphereScale())});
-    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.colorFormats = {t_->hdrFormat};
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL; // reverse-Z: back face at or behind the surface
     d.blend = BlendMode::Additive;
@@ -152,7 +152,7 @@ void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
-    d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+    d.colorFormats = {t_->hdrFormat};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = true;
     d.depthFormat = VK_FORMAT_UNDEFINED;

@@ -16,6 +16,8 @@
 #include "core/image/difference.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
+#include "core/lightassign/bin_knob.h"
+#include "core/lightassign/gpu_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/loop_knob.h"
@@ -45,6 +47,7 @@ class ForwardPlusRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
         layout_ = layoutFromName(settings_.text("light-lists"));
         binned_ = settings_.text("light-cull") == "binned";
+        gpuBinning_ = binned_ && la::resolveLightBin(ctx_, settings_.text("light-bin")) == "gpu";
         clustered_ = settings_.text("light-assign") == "clustered";
         slices_ = settings_.integer("slices");
         // --light-loop subgroup where the device has the operations; otherwise the lane loop
@@ -110,6 +113,7 @@ class ForwardPlusRenderer final : public Renderer {
                 vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
             });
 
+        if (binning_) binning_->plan(graph); // the candidates the culling reads, every frame
         const ResourceHandle spheres = spheres_.plan(graph);
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, spheres});
 
@@ -184,7 +188,8 @@ class ForwardPlusRenderer final : public Renderer {
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(lists_.slots));
         add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
-        if (binned_) add("binned_candidates", double(candidates_.size()));
+        if (binned_) add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
+        if (binned_) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered_) {
             add("slices", double(slices_));
             add("cluster_mask_words", double(maskLayout_.words));
@@ -228,6 +233,9 @@ class ForwardPlusRenderer final : public Renderer {
             s.leftOut.push_back({"the second (transparent) light list per tile",
                                  "clustered: one list spans the tile from the near plane, and blended surfaces "
                                  "look up their own depth slice"});
+        if (binned_ && !gpuBinning_)
+            s.leftOut.push_back({"light_binning pass (GPU binning)", "--light-bin " + settings_.text("light-bin") +
+                                                                       " resolved to cpu: candidates built once per configuration"});
         if (!clustered_)
             s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
         if (!subgroupMissing_.empty())
@@ -255,7 +263,10 @@ class ForwardPlusRenderer final : public Renderer {
     void boundLists() {
         // The uploaded (camera-relative) view and lights: what the culling shader tests.
         const gpu::FrameUniforms& f = scene_.shadingFrame();
-        la::LightBins bins = la::binLights(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local, binned_);
+        // --light-bin gpu: the frame builds the candidates; one plan-time run sizes them.
+        if (gpuBinning_) binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local, "forwardplus");
+        la::LightBins bins = gpuBinning_ ? binning_->sizes()
+                                         : la::binLights(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local, binned_);
         tileBound_ = std::move(bins.bound);
         tileOffsets_ = std::move(bins.offsets);
         boundSlots_ = bins.slots;
@@ -282,6 +293,8 @@ class ForwardPlusRenderer final : public Renderer {
             data.insert(data.end(), tileOffsets_.begin(), tileOffsets_.end());
         const uint32_t candidateBase = uint32_t(data.size());
         data.insert(data.end(), candidates_.begin(), candidates_.end());
+        if (gpuBinning_) data.resize(data.size() + boundSlots_, 0); // light_binning writes them
+        candidateWord_ = sizeof(p) / 4 + candidateBase;
         const uint32_t maskOffsetBase = uint32_t(data.size());
         data.insert(data.end(), maskLayout_.offsets.begin(), maskLayout_.offsets.end());
         data.push_back(0); // never empty
@@ -323,6 +336,7 @@ class ForwardPlusRenderer final : public Renderer {
         spheres_.prepare(graph);
         // fp_params is uploaded once in prepare(), outside the graph.
         culling_->prepare(graph, params_.buffer);
+        if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
         // forward_transparent declares the same bound uses and shares this set.
         shadeSet_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, {{TP_FP_BINDING_PARAMS, params_.buffer}});
     }
@@ -420,6 +434,9 @@ class ForwardPlusRenderer final : public Renderer {
     std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
     uint64_t boundSlots_ = 0;
     uint32_t maxBound_ = 0; // binned: the most candidates of any tile (the culling batches' range)
+    bool gpuBinning_ = false;                // --light-bin resolved to gpu (binned only)
+    std::unique_ptr<la::GpuBinning> binning_; // then: the light_binning pass
+    uint64_t candidateWord_ = 0;              // the candidates' first word in fp_params
     fp::ListSizes lists_;
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;

@@ -2,6 +2,7 @@
 // `triptych stress`. This file is the only place outside forwardplus/ that needs to change
 // when Forward+ gains a knob: nowhere.
 #include "core/lightassign/assign_knob.h"
+#include "core/lightassign/bin_knob.h"
 #include "core/lightassign/cull_knob.h"
 #include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_knob.h"
@@ -15,6 +16,7 @@ namespace {
 KnobSchema forwardPlusKnobs() {
     return {la::tileSizeKnob(),
             la::lightCullKnob(),
+            la::lightBinKnob(),
             la::lightAssignKnob(),
             la::slicesKnob(),
             la::lightLoopKnob(),
@@ -28,10 +30,7 @@ KnobSchema forwardPlusKnobs() {
 
 // Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).
 void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
-    const int roundings = in.settings.msaa > 1 ? 2 : 1;
-    b.terms.push_back({"fp16 colour storage", roundings * kHalfUlp16, roundings * 6e-8,
-                       std::to_string(roundings) + " fp16 store(s) (sample, resolve): each below one ulp, 2^-10 "
-                       "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
+    addFp16StorageTerm(b, in.settings.msaa > 1 ? 2 : 1, "sample, resolve");
     addPixelRateErrorTerm(b, in);
 }
 

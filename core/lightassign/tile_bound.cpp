@@ -3,54 +3,46 @@
 #include <algorithm>
 #include <cmath>
 
+#include "include/light_binning.h"
+
 namespace tp::la {
 
 namespace {
 
-// The plane {sign * (clipRow - ndc * clipW) >= 0} (Gribb-Hartmann) with its normal's length:
-// sign = +1 for "ndc coordinate >= edge", -1 for "<= edge".
-struct EdgePlane {
-    glm::dvec4 plane;
-    double length;
-    // Signed distance of p, inward positive.
-    double distance(const glm::dvec3& p) const { return (glm::dot(glm::dvec3(plane), p) + plane.w) / length; }
-};
-
-EdgePlane edgePlane(const glm::dmat4& proj, int row, double edge, double sign) {
+// The unit-normal plane {sign * (clipRow - ndc * clipW) >= 0} (Gribb-Hartmann), normalised in
+// double and then rounded once to float: the GPU reads the very same floats.
+glm::vec4 edgePlane(const glm::dmat4& proj, int row, double edge, double sign) {
     glm::dvec4 r(proj[0][row], proj[1][row], proj[2][row], proj[3][row]);
     glm::dvec4 w(proj[0][3], proj[1][3], proj[2][3], proj[3][3]);
     glm::dvec4 plane = sign * (r - edge * w);
-    return {plane, glm::length(glm::dvec3(plane))};
+    return glm::vec4(plane / glm::length(glm::dvec3(plane)));
 }
 
-// The two bounding planes of every slab [i*tile, min((i+1)*tile, size)) along one axis,
-// computed once per grid rather than once per light and slab.
-struct Slabs {
-    std::vector<EdgePlane> lo, hi; // "ndc >= lower edge", "ndc <= upper edge"
-};
-
-Slabs makeSlabs(const glm::dmat4& proj, int row, bool flipY, uint32_t size, uint32_t tile, uint32_t count) {
+// The two bounding planes of every slab [i*tile, min((i+1)*tile, size)) along one axis:
+// "ndc >= lower edge" planes into lo, "ndc <= upper edge" into hi.
+void appendSlabs(std::vector<glm::vec4>& lo, std::vector<glm::vec4>& hi, const glm::dmat4& proj, int row,
+                 bool flipY, uint32_t size, uint32_t tile, uint32_t count) {
     auto ndcOf = [&](double px) {
         double t = 2.0 * px / double(size);
         return flipY ? 1.0 - t : t - 1.0;
     };
-    Slabs s;
     for (uint32_t i = 0; i < count; ++i) {
         double e0 = ndcOf(double(i * tile)), e1 = ndcOf(double(std::min((i + 1) * tile, size)));
-        s.lo.push_back(edgePlane(proj, row, std::min(e0, e1), 1.0));
-        s.hi.push_back(edgePlane(proj, row, std::max(e0, e1), -1.0));
+        lo.push_back(edgePlane(proj, row, std::min(e0, e1), 1.0));
+        hi.push_back(edgePlane(proj, row, std::max(e0, e1), -1.0));
     }
-    return s;
 }
 
 // First and last slab that the sphere meets; empty (first > last) when none. Every slab is
 // tested (no bisection): the half-spaces of planes through the eye are not nested behind it.
-void slabRange(const Slabs& slabs, const glm::dvec3& c, double r, int& first, int& last) {
-    first = int(slabs.lo.size());
+// The GPU's loop (shaders/lightassign/bin_rects.comp) is this one.
+void slabRange(const std::vector<glm::vec4>& slabs, uint32_t loFirst, uint32_t hiFirst, uint32_t count,
+               const glm::vec3& c, float r, int& first, int& last) {
+    first = int(count);
     last = -1;
-    for (size_t i = 0; i < slabs.lo.size(); ++i) {
-        if (slabs.lo[i].distance(c) < -r) continue;
-        if (slabs.hi[i].distance(c) < -r) continue;
+    for (uint32_t i = 0; i < count; ++i) {
+        if (gpu::binOutside(slabs[loFirst + i], c, r)) continue;
+        if (gpu::binOutside(slabs[hiFirst + i], c, r)) continue;
         first = std::min(first, int(i));
         last = int(i);
     }
@@ -58,24 +50,33 @@ void slabRange(const Slabs& slabs, const glm::dvec3& c, double r, int& first, in
 
 } // namespace
 
+std::vector<glm::vec4> binSlabPlanes(const TileGrid& grid, const glm::mat4& proj) {
+    const glm::dmat4 p(proj);
+    std::vector<glm::vec4> colLo, colHi, rowLo, rowHi;
+    appendSlabs(colLo, colHi, p, 0, false, grid.width, grid.tileSize, grid.tilesX);
+    appendSlabs(rowLo, rowHi, p, 1, true, grid.height, grid.tileSize, grid.tilesY);
+    std::vector<glm::vec4> all = colLo;
+    all.insert(all.end(), colHi.begin(), colHi.end());
+    all.insert(all.end(), rowLo.begin(), rowLo.end());
+    all.insert(all.end(), rowHi.begin(), rowHi.end());
+    return all;
+}
+
 std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view, const glm::mat4& proj,
                                             const std::vector<gpu::LightGpu>& lights,
                                             const std::vector<uint32_t>& local) {
     std::vector<TileRect> rects(local.size());
-    const glm::dmat4 v(view), p(proj);
-    const Slabs columns = makeSlabs(p, 0, false, grid.width, grid.tileSize, grid.tilesX);
-    const Slabs rows = makeSlabs(p, 1, true, grid.height, grid.tileSize, grid.tilesY);
+    const std::vector<glm::vec4> slabs = binSlabPlanes(grid, proj);
+    const uint32_t X = grid.tilesX, Y = grid.tilesY;
     for (size_t k = 0; k < local.size(); ++k) {
         const gpu::LightGpu& l = lights[local[k]];
-        glm::dvec3 c = glm::dvec3(v * glm::dvec4(glm::dvec3(l.position), 1.0));
-        // Far more padding than the GPU test's (relative 1e-4): float rounding on the GPU
-        // can never make it keep a light this bound excludes.
-        double r = double(l.range) * 1.001 + 1e-3 * glm::length(c) + 1e-4;
-        if (c.z - r > 0.0) continue; // entirely behind the eye
+        const glm::vec3 c = gpu::binViewCentre(view, l.position);
+        const float r = gpu::binPaddedRadius(l.range, c);
+        if (gpu::binBehindEye(c, r)) continue;
         TileRect& t = rects[k];
-        slabRange(columns, c, r, t.x0, t.x1);
+        slabRange(slabs, 0, X, X, c, r, t.x0, t.x1);
         if (t.x0 > t.x1) continue;
-        slabRange(rows, c, r, t.y0, t.y1);
+        slabRange(slabs, 2 * X, 2 * X + Y, Y, c, r, t.y0, t.y1);
     }
     return rects;
 }

@@ -17,8 +17,14 @@ struct TileRect {
     bool empty() const { return x0 > x1 || y0 > y1; }
 };
 
+// The slab planes of the grid's columns and rows (unit inward normal, offset), laid out as
+// the GPU binning reads them (include/light_binning.h: BinInputs.slabs): every column's
+// "ndc >= lower edge" plane, every column's "<= upper edge" plane, then the rows' likewise.
+std::vector<glm::vec4> binSlabPlanes(const TileGrid& grid, const glm::mat4& proj);
+
 // Per local light (in `local` order), the rectangle of tiles whose depth-unbounded frustum
-// its padded sphere meets; conservativeTileBound counts these rectangles per tile.
+// its padded sphere meets; conservativeTileBound counts these rectangles per tile. In float,
+// with the operations of include/light_binning.h: the GPU binning computes the same rectangles.
 std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view, const glm::mat4& proj,
                                             const std::vector<gpu::LightGpu>& lights,
                                             const std::vector<uint32_t>& local);

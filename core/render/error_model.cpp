@@ -48,6 +48,12 @@ double ErrorBound::tonemapped(float ev) const {
     return tonemapRelativeSlope() * relative() + tonemapAbsoluteSlope() * std::exp2(double(ev)) * absolute();
 }
 
+void addFp16StorageTerm(ErrorBound& b, int roundings, const std::string& stores) {
+    b.terms.push_back({"fp16 colour storage", roundings * kHalfUlp16, roundings * 6e-8,
+                       std::to_string(roundings) + " fp16 store(s) (" + stores + "): each below one ulp, 2^-10 "
+                       "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
+}
+
 double tonemapRelativeSlope() {
     static const double k = tonemapSlope(true);
     return k;

@@ -55,6 +55,12 @@ struct ErrorBound {
 constexpr double kHalfUlp16 = 1.0 / 1024.0; // fp16 store: below one ulp, 2^-10 relative
 constexpr double kUlp32 = 1.0 / 16777216.0; // 2^-24
 
+// Colour stored in an RGBA16F target `roundings` times on its way to readback (`stores` names
+// them, e.g. "sample, resolve"): each store is below one ulp, 2^-10 relative (Vulkan allows
+// rounding toward zero), 6e-8 absolute in the subnormals. Every pipeline with an fp16 colour
+// target adds this one term (Forward+ always; deferred under --hdr fp16).
+void addFp16StorageTerm(ErrorBound& b, int roundings, const std::string& stores);
+
 // K and S0 of the header comment, from the tonemap at exposure 0 (K does not depend on
 // exposure; S0 scales with 2^ev).
 double tonemapRelativeSlope();

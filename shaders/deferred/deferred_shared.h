@@ -52,10 +52,12 @@ TP_INLINE uint defClusterRowsBase(uint tileCount, uint offset, uint tile, uint s
 #define TP_DEF_SPEC_EVERY_SAMPLE 15  // 1: every pixel with geometry is lit per sample (--msaa-shading sample)
 #define TP_DEF_SPEC_BINNED 16        // 1: a tile tests only its candidates (--light-cull binned), 0: every light
 #define TP_DEF_SPEC_SLICES 17        // clustered: depth slices per tile; 0: tiled (--light-assign tiled)
+#define TP_DEF_SPEC_MASK_WORDS 18    // words of the shared slice masks: TP_DEF_CLUSTER_MASK_WORDS clustered, 1 tiled
 
 // Clustered deferred: per slice, a bitmask over the tile's shared list of this batch, in
 // shared memory (8 KiB beside the 16 KiB list): slices * ceil(lights / 32) words, so a
-// batch holds at most TP_DEF_CLUSTER_MASK_WORDS * 32 / slices lights.
+// batch holds at most TP_DEF_CLUSTER_MASK_WORDS * 32 / slices lights. Tiled lighting sizes the
+// array to one word (TP_DEF_SPEC_MASK_WORDS), so its groups pay nothing for it.
 #define TP_DEF_CLUSTER_MASK_WORDS 2048u
 
 // The candidates buffer (uploaded once per configuration, core/lightassign/tile_candidates.h):

@@ -8,7 +8,8 @@ triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_emis
 triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_frag)
 # Tiled lighting variants where the set-1 resources differ: m = 0 single-sample G-buffer,
 # 1 per-sample G-buffer, 2 per-sample G-buffer and per-sample hdr (blended under MSAA);
-# e = emissive target; t = transparent light lists; d = debug outputs.
+# e = emissive target; t = transparent light lists; d = debug outputs; each also with the
+# suffix _h16 for an RGBA16F hdr (--hdr fp16: a storage image's format is in the shader).
 foreach(m 0 1 2)
   foreach(e 0 1)
     foreach(t 0 1)
@@ -28,6 +29,8 @@ foreach(m 0 1 2)
         endif()
         triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
           deferred_tiled_m${m}_e${e}_t${t}_d${d}_comp DEFINES ${defs})
+        triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
+          deferred_tiled_m${m}_e${e}_t${t}_d${d}_h16_comp DEFINES ${defs} TP_HDR16=1)
       endforeach()
     endforeach()
   endforeach()

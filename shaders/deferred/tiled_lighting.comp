@@ -14,7 +14,7 @@
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
 //   TP_MSAA: the G-buffer is per-sample.  TP_HDR_MSAA: hdr is per-sample (the blended
 //   forward pass draws into it and resolves).  TP_TRANSPARENT: write transparent lists.
-//   TP_DEBUG: write the edge mask and decoded G-buffer channels.
+//   TP_DEBUG: write the edge mask and decoded G-buffer channels.  TP_HDR16: hdr is RGBA16F.
 //   TP_LISTS_ONLY: only the transparent lists and tile statistics (volumes lighting
 //   shades the opaque surfaces; the hybrid forward pass still needs the lists).
 #include "include/shared.h"
@@ -37,10 +37,16 @@ layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
 #ifndef TP_LISTS_ONLY
 // Read back by the later batches, which add their lights to what the earlier ones wrote.
-#ifdef TP_HDR_MSAA
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2DMS hdrOut;
+// TP_HDR16 (--hdr fp16): hdr is RGBA16F, so each batch's store rounds the running sum.
+#ifdef TP_HDR16
+#define TP_HDR_FORMAT rgba16f
 #else
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, rgba32f) uniform image2D hdrOut;
+#define TP_HDR_FORMAT rgba32f
+#endif
+#ifdef TP_HDR_MSAA
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, TP_HDR_FORMAT) uniform image2DMS hdrOut;
+#else
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, TP_HDR_FORMAT) uniform image2D hdrOut;
 #endif
 #endif
 #ifdef TP_TRANSPARENT
@@ -94,7 +100,10 @@ shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 // slice (include/light_assign.glsl: laSliceOf over the tile's opaque depth range, no front
 // slice: only opaque surfaces are lit here). Rows are ceil(count / 32) words.
 layout(constant_id = TP_DEF_SPEC_SLICES) const uint kSlices = 0u;
-shared uint sMask[TP_DEF_CLUSTER_MASK_WORDS];
+// TP_DEF_CLUSTER_MASK_WORDS when clustered, 1 when tiled: shared memory is declared per
+// pipeline, and a tiled group would otherwise reserve 8 KiB it never touches.
+layout(constant_id = TP_DEF_SPEC_MASK_WORDS) const uint kMaskWords = 1u;
+shared uint sMask[kMaskWords];
 shared float sSliceNear, sSliceScale;
 // The tile's slices: the opaque range only (no front slices: blended surfaces are not lit here).
 LaSlicing rangeSlicing() { return laSlicing(1.0, sSliceNear, sSliceScale, kSlices, 0u); }
@@ -145,13 +154,22 @@ void markSlices() {
     }
 }
 
+// --hdr fp16: sums beyond the largest half saturate there, as Forward+'s do, not +Inf.
+vec3 storable(vec3 c) {
+#ifdef TP_HDR16
+    return min(c, vec3(65504.0));
+#else
+    return c;
+#endif
+}
+
 void writeHdr(ivec2 p, uint s, vec3 c) {
 #ifdef TP_HDR_MSAA
     if (!firstBatch()) c += imageLoad(hdrOut, p, int(s)).rgb;
-    imageStore(hdrOut, p, int(s), vec4(c, 1.0));
+    imageStore(hdrOut, p, int(s), vec4(storable(c), 1.0));
 #else
     if (!firstBatch()) c += imageLoad(hdrOut, p).rgb;
-    imageStore(hdrOut, p, vec4(c, 1.0));
+    imageStore(hdrOut, p, vec4(storable(c), 1.0));
 #endif
 }
 
@@ -279,7 +297,7 @@ void main() {
         sEdges = 0u;
     }
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
-        for (uint i = gl_LocalInvocationIndex; i < TP_DEF_CLUSTER_MASK_WORDS; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
+        for (uint i = gl_LocalInvocationIndex; i < kMaskWords; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
     barrier();
     laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
     barrier();

@@ -57,3 +57,21 @@ TEST(LightBins, NoLightsGiveEmptyBins) {
     EXPECT_TRUE(bins.candidates.empty());
     EXPECT_EQ(bins.maxBound, 0u);
 }
+
+// The slab planes the GPU binning uploads (include/light_binning.h: BinInputs.slabs):
+// columns lo, columns hi, rows lo, rows hi, unit normals pointing into their slab.
+TEST(LightBins, SlabPlanesAreLaidOutAsTheGpuReadsThem) {
+    la::TileGrid g = la::makeTileGrid(200, 120, 16); // 13 x 8 tiles
+    glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
+    std::vector<glm::vec4> p = la::binSlabPlanes(g, proj);
+    ASSERT_EQ(p.size(), size_t(2 * (13 + 8)));
+    for (const glm::vec4& q : p) EXPECT_NEAR(glm::length(glm::vec3(q)), 1.0f, 1e-6f);
+    // A point straight ahead (ndc 0, 0: pixel 100, 60) lies in column 6 and row 3 (pixel rows
+    // 48-63): inside column 6's two planes and row 3's lower one, outside column 0's right edge.
+    const glm::vec3 ahead(0.0f, 0.0f, -5.0f);
+    auto d = [&](uint32_t i) { return glm::dot(glm::vec3(p[i]), ahead) + p[i].w; };
+    EXPECT_GT(d(6), 0.0f);      // column 6, "x >= its left edge"
+    EXPECT_GT(d(13 + 6), 0.0f); // column 6, "x <= its right edge"
+    EXPECT_LT(d(13 + 0), 0.0f); // column 0's right edge is left of the centre
+    EXPECT_GT(d(26 + 3), 0.0f); // row 3 (from the top): "ndc y >= its lower edge"
+}

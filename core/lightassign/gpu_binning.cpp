@@ -1,0 +1,213 @@
+#include "core/lightassign/gpu_binning.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/readback.h"
+#include "core/gpu/vk_check.h"
+#include "core/lightassign/compact_layout.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/render/renderer.h"
+#include "core/render/scene_gpu.h"
+#include "include/light_binning.h"
+
+namespace tp::la {
+namespace {
+
+enum Step { kClear, kRects, kRows, kColumns, kOffsets, kFill, kSort, kSortStep, kSteps };
+const char* const kShaders[kSteps] = {"la_bin_clear_comp",   "la_bin_rects_comp",  "la_bin_scan_rows_comp",
+                                      "la_bin_scan_columns_comp", "la_bin_offsets_comp", "la_bin_fill_comp",
+                                      "la_bin_sort_comp",    "la_bin_sort_step_comp"};
+
+// Between the steps of the pass: each reads what the one before wrote (hand-written: the
+// graph orders passes, not the dispatches within one).
+void stepBarrier(VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+uint32_t sortSize(uint32_t n) {
+    uint32_t s = 1;
+    while (s < n) s <<= 1;
+    return s;
+}
+
+} // namespace
+
+GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, const std::vector<uint32_t>& local,
+                       std::string owner)
+    : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())), owner_(std::move(owner)) {
+    // Its largest buffer: the light list, bound whole.
+    if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
+        throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
+                            " point/spot lights needs more than maxStorageBufferRange (" +
+                            std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
+                            "; use --light-bin cpu or fewer lights");
+    // Uploaded once per configuration: the grid and its slab planes (the CPU's floats), the lights to bin.
+    const std::vector<glm::vec4> slabs = binSlabPlanes(grid_, scene_.shadingFrame().proj);
+    gpu::BinInputs in{};
+    const uint32_t X = grid_.tilesX, Y = grid_.tilesY;
+    in.grid = glm::uvec4(X, Y, grid_.count(), locals_);
+    in.slabs = glm::uvec4(0, X, 2 * X, 2 * X + Y);
+    std::vector<uint8_t> bytes(sizeof(in) + slabs.size() * sizeof(glm::vec4));
+    std::memcpy(bytes.data(), &in, sizeof(in));
+    std::memcpy(bytes.data() + sizeof(in), slabs.data(), slabs.size() * sizeof(glm::vec4));
+    inputs_ = createBufferWithData(ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                   {owner_, "light_binning", "light_bin_inputs", "GPU binning: tile grid, slab planes"});
+    std::vector<uint32_t> list = local.empty() ? std::vector<uint32_t>{0} : local;
+    localList_ = createBufferWithData(ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                      {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
+    std::vector<SetBinding> bindings;
+    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_TARGET; ++b)
+        bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    set_ = createPassSet(ctx_, bindings);
+    set_.pass = "light_binning";
+    set_.bindings = bindings;
+    layout_ = scene_.createPipelineLayout(set_.layout);
+    const std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
+    for (const char* shader : kShaders) pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));
+}
+
+GpuBinning::~GpuBinning() {
+    for (VkPipeline p : pipelines_) vkDestroyPipeline(ctx_.device, p, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+void GpuBinning::bind(const Bufs& b, VkBuffer target) {
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_INPUTS, inputs_.buffer);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_LOCALS, localList_.buffer);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_COUNTS, b.counts);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_OFFSETS, b.offsets);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_CURSORS, b.cursors);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_TARGET, target);
+}
+
+LightBins GpuBinning::sizes() {
+    // Plan-time buffers, freed on return; the frame's live in its graph.
+    const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    auto make = [&](uint64_t words, const char* name) {
+        return createBuffer(ctx_, std::max<uint64_t>(words, 4) * 4, usage, MemoryKind::Device,
+                            {owner_, "light_binning", name, "GPU binning at plan time (freed before the frame)"});
+    };
+    const uint32_t tiles = grid_.count();
+    Buffer counts = make(tiles, "light_bin_sizing_counts"), offsets = make(tiles + 1, "light_bin_sizing_offsets"),
+           cursors = make(tiles, "light_bin_sizing_cursors");
+    bind({counts.buffer, offsets.buffer, cursors.buffer}, cursors.buffer); // target: unused here
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        begin(cmd);
+        recordSizing(cmd);
+        // readbackBuffer copies in a later submission.
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    });
+    auto words = [&](const Buffer& b, uint32_t n) {
+        std::vector<uint8_t> bytes = readbackBuffer(ctx_, b);
+        std::vector<uint32_t> w(n);
+        std::memcpy(w.data(), bytes.data(), size_t(n) * 4);
+        return w;
+    };
+    LightBins bins;
+    bins.bound = words(counts, tiles);
+    bins.offsets = words(offsets, tiles + 1);
+    // The unclamped total (and the layout callers refuse) from the counts, as on the CPU.
+    bins.slots = makeCompactLayout(bins.bound).slots;
+    if (!bins.bound.empty()) bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
+    maxBound_ = bins.maxBound;
+    return bins;
+}
+
+void GpuBinning::plan(FrameGraph& graph) {
+    const uint32_t tiles = grid_.count();
+    counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4, "GPU binning: lights covering each tile");
+    offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
+                                  "GPU binning: each tile's first candidate (prefix sum)");
+    cursors_ = graph.createBuffer("light_bin_cursors", uint64_t(tiles) * 4, "GPU binning: fill cursor per tile");
+    graph.addPass("light_binning",
+                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageWrite}, {cursors_, Use::StorageWrite}},
+                  [this](PassContext& pc) {
+                      begin(pc.cmd);
+                      recordSizing(pc.cmd);
+                      stepBarrier(pc.cmd);
+                      recordRuns(pc.cmd);
+                  });
+    // Read after the frame by the tests; also what keeps the pass live (its runs go to a
+    // buffer outside the graph).
+    graph.exportResource("light_bin_offsets", offsets_);
+}
+
+void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
+    if (baseWord > 0xffffffffull) throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
+    base_ = uint32_t(baseWord);
+    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(cursors_).buffer}, target);
+}
+
+void GpuBinning::begin(VkCommandBuffer cmd) {
+    scene_.bindSceneSet(cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
+}
+
+// 64 invocations per workgroup over `count` items, workgroups in rows of at most 65,535.
+void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push) {
+    const uint32_t groups = (count + 63) / 64;
+    if (groups == 0) return;
+    const uint32_t x = std::min(groups, 65535u), y = (groups + x - 1) / x;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, x, y, 1);
+}
+
+// Steps 1-5: counts and offsets.
+void GpuBinning::recordSizing(VkCommandBuffer cmd) {
+    const gpu::DrawPush push{0, base_, 0, 0};
+    dispatchFlat(cmd, pipelines_[kClear], grid_.count(), push);
+    stepBarrier(cmd);
+    dispatchFlat(cmd, pipelines_[kRects], locals_, push);
+    stepBarrier(cmd);
+    dispatchFlat(cmd, pipelines_[kRows], grid_.tilesY, push);
+    stepBarrier(cmd);
+    dispatchFlat(cmd, pipelines_[kColumns], grid_.tilesX, push);
+    stepBarrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kOffsets]);
+    vkCmdDispatch(cmd, 1, 1, 1);
+}
+
+// Steps 6-7: the runs, into the target.
+void GpuBinning::recordRuns(VkCommandBuffer cmd) {
+    // The previous frame's culling and shading read the target (WAR), and it was uploaded
+    // before any frame: outside the graph, so ordered here.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    const uint32_t rows = std::max(1u, TP_BIN_FILL_BUDGET / std::max(1u, grid_.tilesX));
+    for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
+        if (first > 0) stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
+        dispatchFlat(cmd, pipelines_[kFill], locals_, {0, base_, first, std::min(grid_.tilesY, first + rows)});
+    }
+    stepBarrier(cmd);
+    const gpu::DrawPush push{0, base_, 0, 0};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSort]);
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, grid_.tilesX, grid_.tilesY, 1);
+    if (maxBound_ > TP_BIN_SHARED_SORT) {
+        // Runs too long for shared memory: one dispatch per bitonic step, up to the longest.
+        const uint32_t size = sortSize(maxBound_);
+        const uint32_t chunks = (size / 2 + 64 * TP_BIN_STEP_PAIRS - 1) / (64 * TP_BIN_STEP_PAIRS);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortStep]);
+        for (uint32_t k = 2; k <= size; k <<= 1)
+            for (uint32_t j = k >> 1; j > 0; j >>= 1) {
+                stepBarrier(cmd);
+                const gpu::DrawPush step{0, base_, k, j};
+                vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(step), &step);
+                vkCmdDispatch(cmd, chunks, grid_.tilesX, grid_.tilesY);
+            }
+    }
+    // The culling (compute) and Forward+'s shading (fragment: the same buffer) read it next.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+}
+
+} // namespace tp::la

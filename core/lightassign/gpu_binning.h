@@ -1,0 +1,73 @@
+#pragma once
+// Light binning on the GPU (--light-bin gpu), shared by Forward+ and tiled deferred: the
+// runs la::binLights builds on the CPU (light_bins.h), built by the compute pass
+// "light_binning" every frame, exactly equal (include/light_binning.h says why):
+//   1. clear   counts and cursors
+//   2. rects   per light, its conservative tile rectangle; its corners in a difference array
+//              (computed again by the fill rather than stored: no memory per light)
+//   3-4. scans the difference array along rows, then columns: the count per tile (the bound)
+//   5. offsets the counts' exclusive prefix sum (the compact layout)
+//   6. fill    per light and covered tile, an atomic cursor's slot (scheduling order)
+//   7. sort    every tile's run ascending (bitonic; shared memory, or in place when long)
+// The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
+// steps 1-5 once, one readback (tiles + 1 words), the numbers the CPU path gives.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/resources.h"
+#include "core/lightassign/light_bins.h"
+#include "core/lightassign/tile_grid.h"
+
+namespace tp {
+class GpuContext;
+class SceneGpu;
+} // namespace tp
+
+namespace tp::la {
+
+class GpuBinning {
+  public:
+    // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
+    // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
+    GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, const std::vector<uint32_t>& local,
+               std::string owner);
+    ~GpuBinning();
+    GpuBinning(const GpuBinning&) = delete;
+    GpuBinning& operator=(const GpuBinning&) = delete;
+
+    // Plan time: steps 1-5 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
+    LightBins sizes();
+    // The frame: pass "light_binning" (its own buffers in the graph; exports light_bin_offsets).
+    void plan(FrameGraph& graph);
+    // target: the buffer the culling reads its candidates from (uploaded outside the graph);
+    // tile t's run goes to its words [baseWord + offsets[t], baseWord + offsets[t + 1]).
+    void prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord);
+
+  private:
+    struct Bufs {
+        VkBuffer counts, offsets, cursors;
+    };
+    void bind(const Bufs& b, VkBuffer target);
+    void recordSizing(VkCommandBuffer cmd);
+    void recordRuns(VkCommandBuffer cmd);
+    void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push);
+    void begin(VkCommandBuffer cmd);
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    TileGrid grid_;
+    uint32_t locals_ = 0;
+    std::string owner_;
+    uint32_t base_ = 0;     // the target's first word
+    uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
+    Buffer inputs_, localList_;
+    ResourceHandle counts_, offsets_, cursors_;
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    std::vector<VkPipeline> pipelines_; // one per step (kSteps in gpu_binning.cpp)
+};
+
+} // namespace tp::la

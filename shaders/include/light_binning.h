@@ -1,0 +1,86 @@
+// Light binning (core/lightassign/light_bins.h on the CPU, gpu_binning.h on the GPU):
+// bindings, constants and the conservative tile-rectangle test, compiled as C++ and as GLSL
+// so both sides run the same float operations in the same order. Every operation of the
+// test is an add, a multiply, a compare or a max (Vulkan requires those correctly rounded
+// for 32-bit floats), none is contracted into an FMA (`precise` in GLSL, -ffp-contract=off
+// for tile_bound.cpp), and the slab planes are computed once on the CPU and uploaded: so
+// the GPU's rectangles are the CPU's, bit for bit, and so are the runs.
+#ifndef TP_LIGHT_BINNING_H
+#define TP_LIGHT_BINNING_H
+#include "include/shared.h"
+#ifdef TP_GLSL
+#define TP_PRECISE precise
+#else
+#define TP_PRECISE
+namespace tp::gpu {
+#endif
+
+// ---- set TP_SET_PASS of the light_binning pass (all storage buffers) ----
+#define TP_BIN_BINDING_INPUTS 0  // BinInputs, then vec4 slabs[]: columns lo, columns hi, rows lo, rows hi
+#define TP_BIN_BINDING_LOCALS 1  // uint[]: the point/spot light indices, ascending (la::LightClasses::local)
+#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles cover it
+#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (saturates at 2^32 - 1)
+#define TP_BIN_BINDING_CURSORS 4 // uint[tiles]: the fill's cursor per tile
+#define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
+
+// Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
+// the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.
+#define TP_BIN_BASE pad0
+#define TP_BIN_FIRST pad1
+#define TP_BIN_END pad2
+
+// Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32); longer ones
+// in the target buffer, one dispatch per bitonic step.
+#define TP_BIN_SHARED_SORT 4096u
+#define TP_BIN_SORT_GROUP 64u      // invocations sorting one tile's run
+#define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)
+#define TP_BIN_STEP_PAIRS 64u      // long-run step: pairs per invocation and dispatch
+#define TP_BIN_SCAN_GROUP 256u     // the offsets' prefix sum: one workgroup
+// Tiles one fill dispatch may visit per light: lavapipe ends an invocation after 65,535
+// loop iterations in total (deferred/tiled_lighting.h); the slab loops add tilesX + tilesY.
+#define TP_BIN_FILL_BUDGET 32768u
+
+// The padding of the light's sphere: far more than the GPU culling test's (relative 1e-4),
+// so float rounding there can never make it keep a light a rectangle excludes. Powers of two
+// (exact in float, in C++ and GLSL literals alike); the distance term takes the L1 norm,
+// an upper bound of the length that needs no square root (not correctly rounded in Vulkan).
+#define TP_BIN_RANGE_SCALE 1.0009765625f // 1 + 2^-10
+#define TP_BIN_DISTANCE_PAD 0.0009765625f // 2^-10 per unit of |x| + |y| + |z|
+#define TP_BIN_ABSOLUTE_PAD 0.0001220703125f // 2^-13
+
+TP_STRUCT(BinInputs) {
+    uvec4 grid;  // tilesX, tilesY, tiles, local lights
+    uvec4 slabs; // first slab of: column lo, column hi, row lo, row hi (in vec4 slabs[])
+};
+
+// The light's centre in view space: column-major view times (p, 1), spelled out.
+TP_INLINE vec3 binViewCentre(mat4 v, vec3 p) {
+    TP_PRECISE float x = ((v[0][0] * p.x + v[1][0] * p.y) + v[2][0] * p.z) + v[3][0];
+    TP_PRECISE float y = ((v[0][1] * p.x + v[1][1] * p.y) + v[2][1] * p.z) + v[3][1];
+    TP_PRECISE float z = ((v[0][2] * p.x + v[1][2] * p.y) + v[2][2] * p.z) + v[3][2];
+    return vec3(x, y, z);
+}
+
+TP_INLINE float binPaddedRadius(float range, vec3 c) {
+    TP_PRECISE float l1 = (max(c.x, -c.x) + max(c.y, -c.y)) + max(c.z, -c.z);
+    TP_PRECISE float r = (range * TP_BIN_RANGE_SCALE + l1 * TP_BIN_DISTANCE_PAD) + TP_BIN_ABSOLUTE_PAD;
+    return r;
+}
+
+// The whole padded sphere lies behind the eye (view space looks down -z).
+TP_INLINE bool binBehindEye(vec3 c, float r) {
+    TP_PRECISE float nearest = c.z - r;
+    return nearest > 0.0f;
+}
+
+// plane: unit inward normal (xyz) and offset (w). True when the padded sphere lies wholly outside.
+TP_INLINE bool binOutside(vec4 plane, vec3 c, float r) {
+    TP_PRECISE float d = ((plane.x * c.x + plane.y * c.y) + plane.z * c.z) + plane.w;
+    return d < -r;
+}
+
+#ifndef TP_GLSL
+static_assert(sizeof(BinInputs) == 32);
+} // namespace tp::gpu
+#endif
+#endif

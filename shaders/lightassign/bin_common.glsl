@@ -1,0 +1,72 @@
+// The light_binning pass's set (include/light_binning.h); GLSL only. Each step of the pass
+// is one shader of this folder; all share this one set.
+#ifndef TP_BIN_COMMON_GLSL
+#define TP_BIN_COMMON_GLSL
+#include "include/shared.h"
+#include "include/light_binning.h"
+#include "include/scene_bindings.glsl"
+
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_INPUTS) readonly buffer BinInputBlock {
+    BinInputs bin;
+    vec4 slabs[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_LOCALS) readonly buffer BinLocalBlock {
+    uint locals[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_COUNTS) buffer BinCountBlock {
+    uint counts[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_OFFSETS) buffer BinOffsetBlock {
+    uint offsets[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_CURSORS) buffer BinCursorBlock {
+    uint cursors[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_TARGET) buffer BinTargetBlock {
+    uint target[];
+};
+
+// A flat index (light or tile): 64 invocations per workgroup, workgroups in a 2D grid (a dispatch
+// dimension holds at most 65,535).
+uint binFlatIndex() {
+    return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
+}
+
+// Sums that would pass 2^32 - 1 stay there: the CPU clamps its offsets the same way (and
+// refuses such a layout before any frame).
+uint binSaturatingAdd(uint a, uint b) {
+    return a > 0xffffffffu - b ? 0xffffffffu : a + b;
+}
+
+// First and last slab the sphere meets (first > last: none); every slab is tested.
+ivec2 binSlabRange(uint loFirst, uint hiFirst, uint count, vec3 c, float r) {
+    ivec2 range = ivec2(int(count), -1);
+    for (uint i = 0u; i < count; ++i) {
+        if (binOutside(slabs[loFirst + i], c, r)) continue;
+        if (binOutside(slabs[hiFirst + i], c, r)) continue;
+        range.x = min(range.x, int(i));
+        range.y = int(i);
+    }
+    return range;
+}
+
+// Light k's conservative tile rectangle (x0, x1, y0, y1; empty when x0 > x1 or y0 > y1):
+// la::conservativeTileRects's test, the same float operations (include/light_binning.h).
+// The count and the fill each compute it rather than store it: the same floats give the
+// same rectangle, and no light costs rectangle memory (16 MB at a million lights).
+ivec4 binRect(uint k) {
+    const LightGpu l = lights[locals[k]];
+    const vec3 c = binViewCentre(frame.view, l.position);
+    const float r = binPaddedRadius(l.range, c);
+    ivec4 rect = ivec4(int(bin.grid.x), -1, int(bin.grid.y), -1);
+    if (binBehindEye(c, r)) return rect;
+    rect.xy = binSlabRange(bin.slabs.x, bin.slabs.y, bin.grid.x, c, r);
+    if (rect.x <= rect.y) rect.zw = binSlabRange(bin.slabs.z, bin.slabs.w, bin.grid.y, c, r);
+    return rect;
+}
+
+// The padded power of two a run of n sorts as.
+uint binSortSize(uint n) {
+    return n <= 1u ? 1u : 1u << uint(findMSB(n - 1u) + 1);
+}
+#endif

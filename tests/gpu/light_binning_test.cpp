@@ -1,0 +1,211 @@
+// GPU light binning (--light-bin gpu, core/lightassign/gpu_binning.h) against the CPU's
+// la::binLights: the same bound, offsets and runs, every tile, exactly (the rectangle test
+// runs the same float operations on both sides: include/light_binning.h); and Forward+ and
+// deferred render byte-identical images either way.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/readback.h"
+#include "core/gpu/vk_check.h"
+#include "core/lightassign/gpu_binning.h"
+#include "core/lightassign/light_bins.h"
+#include "core/lightassign/light_classes.h"
+#include "core/scene/procedural.h"
+#include "core/scene/lights.h"
+#include "include/light_binning.h"
+#include "gpu_test_util.h"
+
+namespace tp::test {
+namespace {
+
+std::vector<Light> pointsAndSpots(const Aabb& bounds, uint32_t count, uint64_t seed, float rMin = 0.0f,
+                                  float rMax = 0.0f) {
+    LightGenOptions o;
+    o.count = count;
+    o.seed = seed;
+    o.spotWeight = 1.0f; // as many spots as points
+    o.radiusMin = rMin;
+    o.radiusMax = rMax;
+    return generateLights(bounds, o);
+}
+
+Scene courtyard(uint32_t lights) {
+    Result<Scene> s = makeBuiltinScene("courtyard-small");
+    EXPECT_TRUE(s.ok()) << s.error();
+    if (!s.ok()) return {};
+    Scene scene = std::move(*s);
+    scene.lights = pointsAndSpots(scene.bounds, lights, 5);
+    return scene;
+}
+
+Scene floorWith(uint32_t lights) {
+    Scene s = makeFloorScene({});
+    Aabb b = s.bounds;
+    b.max.y = 3.0f;
+    s.lights = pointsAndSpots(b, lights, 11);
+    return s;
+}
+
+// Lights around the eye: many centres behind it (or beside it, outside the frustum) whose
+// spheres still reach in front.
+Scene aroundTheEye(uint32_t lights) {
+    Scene s = makeFloorScene({});
+    const glm::vec3 e = s.camera.position;
+    Aabb b{e - glm::vec3(3.0f), e + glm::vec3(3.0f)};
+    s.lights = pointsAndSpots(b, lights, 17, 0.5f, 2.5f);
+    return s;
+}
+
+// Every light covers the whole screen: runs longer than the shared-memory sort takes.
+Scene wholeScreen(uint32_t lights) {
+    Scene s = makeFloorScene({});
+    s.lights = pointsAndSpots(s.bounds, lights, 23, 60.0f, 80.0f);
+    return s;
+}
+
+struct Binned {
+    la::LightBins cpu;        // la::binLights, with candidates
+    la::LightBins sizes;      // the GPU's plan-time run
+    std::vector<uint32_t> offsets, runs; // the GPU's frame: its offsets, the target's runs
+};
+
+// One frame of the light_binning pass alone, writing its runs `base` words into a buffer.
+Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t frames = 2) {
+    Binned out;
+    scene.setView(w, h, 1);
+    const la::TileGrid grid = la::makeTileGrid(w, h, tile);
+    const std::vector<uint32_t> local = la::classifyLights(scene.shadingLights()).local;
+    const gpu::FrameUniforms& f = scene.shadingFrame();
+    out.cpu = la::binLights(grid, f.view, f.proj, scene.shadingLights(), local, true);
+    la::GpuBinning gpuBin(ctx, scene, grid, local, "test");
+    out.sizes = gpuBin.sizes();
+    const uint32_t base = 7; // the runs need not start at word 0
+    Buffer target = createBuffer(ctx, (base + out.sizes.slots + 1) * 4,
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                 MemoryKind::Device, {"test", "", "runs", "the runs"});
+    FrameGraph graph(ctx, "test", w, h);
+    gpuBin.plan(graph);
+    graph.compile();
+    gpuBin.prepare(graph, target.buffer, base);
+    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    graph.record(cmd, nullptr);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    for (uint32_t i = 0; i < frames; ++i) ctx.submitAndWait(cmd); // a frame rebuilds what the last one left
+    ctx.freeCommandBuffer(cmd);
+    auto words = [](const std::vector<uint8_t>& bytes, size_t first, size_t n) {
+        std::vector<uint32_t> w(n);
+        std::memcpy(w.data(), bytes.data() + first * 4, n * 4);
+        return w;
+    };
+    out.offsets = words(readbackBuffer(ctx, graph.buffer(graph.exported("light_bin_offsets"))), 0, grid.count() + 1);
+    out.runs = words(readbackBuffer(ctx, target), base, out.sizes.slots);
+    return out;
+}
+
+void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t minLongest = 1) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    Binned b = bin(*ctx, gpuScene, w, h, tile);
+    EXPECT_EQ(b.sizes.bound, b.cpu.bound);
+    EXPECT_EQ(b.sizes.offsets, b.cpu.offsets);
+    EXPECT_EQ(b.sizes.slots, b.cpu.slots);
+    EXPECT_EQ(b.sizes.maxBound, b.cpu.maxBound);
+    EXPECT_EQ(b.offsets, b.cpu.offsets);
+    ASSERT_EQ(b.runs.size(), b.cpu.candidates.size());
+    const la::TileGrid grid = la::makeTileGrid(w, h, tile);
+    uint32_t differing = 0;
+    for (uint32_t t = 0; t < grid.count(); ++t)
+        for (uint32_t i = b.cpu.offsets[t]; i < b.cpu.offsets[t + 1]; ++i)
+            if (b.runs[i] != b.cpu.candidates[i]) ++differing;
+    EXPECT_EQ(differing, 0u) << "of " << b.runs.size() << " candidates";
+    EXPECT_GE(b.cpu.maxBound, minLongest);
+    EXPECT_GT(b.cpu.slots, 0u);
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(GpuLightBinning, CourtyardPointsAndSpotsTile8) { expectSameRuns(courtyard(512), 128, 72, 8); }
+TEST(GpuLightBinning, CourtyardPointsAndSpotsTile16) { expectSameRuns(courtyard(512), 128, 72, 16); }
+TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) { expectSameRuns(courtyard(512), 160, 90, 32); }
+TEST(GpuLightBinning, Floor2048Lights) { expectSameRuns(floorWith(2048), 160, 96, 16); }
+TEST(GpuLightBinning, LightsAroundAndBehindTheEye) { expectSameRuns(aroundTheEye(1024), 96, 64, 8); }
+// 1,000 lights in every tile: runs past the rank sort, bitonic in shared memory.
+TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1);
+}
+// 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
+TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
+    expectSameRuns(wholeScreen(TP_BIN_SHARED_SORT + 404), 32, 24, 8, TP_BIN_SHARED_SORT + 1);
+}
+
+TEST(GpuLightBinning, NoLocalLights) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, floorWith(0));
+    Binned b = bin(*ctx, gpuScene, 40, 24, 8);
+    EXPECT_EQ(b.offsets, std::vector<uint32_t>(5 * 3 + 1, 0));
+    EXPECT_EQ(b.sizes.slots, 0u);
+    expectNoValidationMessages(*ctx);
+}
+
+// ---- the pipelines: --light-bin gpu renders what cpu renders ----
+
+double counter(const RunResult& r, const std::string& name) {
+    for (const auto& [n, v] : r.stats.counters)
+        if (n == name) return v;
+    return -1.0;
+}
+
+void expectSameImages(const Scene& scene, RenderSettings s) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    for (const char* pipeline : {"forwardplus", "deferred"}) {
+        SCOPED_TRACE(pipeline);
+        s.set("light-bin", "cpu");
+        RunResult cpu = runOrFail(*ctx, gpuScene, pipeline, s);
+        s.set("light-bin", "gpu");
+        RunResult gpu = runOrFail(*ctx, gpuScene, pipeline, s, 2);
+        EXPECT_EQ(cpu.hdr.rgba, gpu.hdr.rgba);
+        EXPECT_EQ(counter(cpu, "light_binning_on_gpu"), 0.0);
+        EXPECT_EQ(counter(gpu, "light_binning_on_gpu"), 1.0);
+        EXPECT_EQ(std::count(gpu.passes.begin(), gpu.passes.end(), "light_binning"), 1);
+        EXPECT_EQ(std::count(cpu.passes.begin(), cpu.passes.end(), "light_binning"), 0);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+RenderSettings settings(uint32_t w, uint32_t h, uint32_t msaa, uint32_t tile) {
+    RenderSettings s;
+    s.width = w;
+    s.height = h;
+    s.msaa = msaa;
+    s.set("tile", tile);
+    return s;
+}
+
+TEST(GpuLightBinning, ImagesEqualCpuBinningCourtyard) { expectSameImages(courtyard(512), settings(96, 54, 1, 16)); }
+TEST(GpuLightBinning, ImagesEqualCpuBinningMsaa4Tile8) { expectSameImages(courtyard(256), settings(96, 54, 4, 8)); }
+TEST(GpuLightBinning, ImagesEqualCpuBinningFloorTile32Clustered) {
+    RenderSettings s = settings(128, 80, 1, 32);
+    s.set("light-assign", "clustered");
+    expectSameImages(floorWith(2048), s);
+}
+
+// auto: cpu on a CPU device (lavapipe), gpu on any other.
+TEST(GpuLightBinning, AutoResolvesByDeviceType) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, courtyard(16));
+    RunResult r = runOrFail(*ctx, gpuScene, "forwardplus", settings(48, 27, 1, 16));
+    EXPECT_EQ(counter(r, "light_binning_on_gpu"), ctx->isCpuDevice() ? 0.0 : 1.0);
+    expectNoValidationMessages(*ctx);
+}
+
+} // namespace
+} // namespace tp::test
