@@ -50,6 +50,11 @@ class ForwardPlusRenderer final : public Renderer {
         gpuBinning_ = binned_ && la::resolveLightBin(ctx_, settings_.text("light-bin")) == "gpu";
         clustered_ = settings_.text("light-assign") == "clustered";
         slices_ = settings_.integer("slices");
+        // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
+        // transform in every tile it is tested in); on a GPU the transform is cheap and the
+        // buffer (16 MB at 1,000,000 lights) would take Forward+ past 100 MB there.
+        const std::string spheres = settings_.text("light-spheres");
+        spherePass_ = spheres == "pass" || (spheres == "auto" && ctx_.isCpuDevice());
         // --light-loop subgroup where the device has the operations; otherwise the lane loop
         // (the same image), with a note in the report.
         if (clustered_ && settings_.text("light-loop") == "subgroup") {
@@ -114,7 +119,7 @@ class ForwardPlusRenderer final : public Renderer {
             });
 
         if (binning_) binning_->plan(graph); // the candidates the culling reads, every frame
-        const ResourceHandle spheres = spheres_.plan(graph);
+        const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, spheres});
 
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
@@ -188,6 +193,7 @@ class ForwardPlusRenderer final : public Renderer {
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(lists_.slots));
         add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
+        add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);       // --light-spheres, resolved
         if (binned_) add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
         if (binned_) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered_) {
@@ -238,6 +244,10 @@ class ForwardPlusRenderer final : public Renderer {
                                                                        " resolved to cpu: candidates built once per configuration"});
         if (!clustered_)
             s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
+        if (!spherePass_)
+            s.leftOut.push_back({"light_spheres pass and its buffer (16 bytes per light)",
+                                 "--light-spheres " + settings_.text("light-spheres") +
+                                     ": the culling computes each candidate's sphere itself"});
         if (!subgroupMissing_.empty())
             s.leftOut.push_back({"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
                                  "the same image",
@@ -329,11 +339,12 @@ class ForwardPlusRenderer final : public Renderer {
         c.clustered = clustered_;
         c.twoLists = twoLists_;
         c.spanFromNear = blendPass_;
+        c.spheres = spherePass_;
         return c;
     }
 
     void createDescriptors(FrameGraph& graph) {
-        spheres_.prepare(graph);
+        if (spherePass_) spheres_.prepare(graph);
         // fp_params is uploaded once in prepare(), outside the graph.
         culling_->prepare(graph, params_.buffer);
         if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
@@ -426,6 +437,7 @@ class ForwardPlusRenderer final : public Renderer {
     la::LightClasses classes_;
     bool binned_ = true, clustered_ = false, blendPass_ = false;
     uint32_t slices_ = 16;
+    bool spherePass_ = false;      // --light-spheres resolved: the light_spheres pass runs
     bool subgroupLoop_ = false;    // clustered, --light-loop subgroup, and the device runs it
     std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
     fp::MaskLayout maskLayout_; // clustered: the slice rows' word offsets per tile

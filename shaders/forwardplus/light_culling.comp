@@ -60,7 +60,10 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     FpParams params;
     uint data[];
 };
-// Every light's lightSphereView, from the light_spheres pass (light_spheres.comp).
+// Every light's lightSphereView, from the light_spheres pass (light_spheres.comp), when
+// kSpheres (--light-spheres, forwardplus/register.cpp); otherwise a 16-byte stand-in and each
+// candidate's sphere is computed here. The same function on the same inputs either way.
+layout(constant_id = TP_FP_SPEC_SPHERES) const bool kSpheres = true;
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_SPHERES) readonly buffer SphereBlock {
     vec4 spheres[];
 };
@@ -108,7 +111,11 @@ ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
     return v;
 }
 
-// `sphere`: spheres[lightIndex], read once per candidate for both lists. Without spot
+vec4 candidateSphere(uint lightIndex) {
+    return kSpheres ? spheres[lightIndex] : lightSphereView(lights[lightIndex], frame.view);
+}
+
+// `sphere`: candidateSphere(lightIndex), once per candidate for both lists. Without spot
 // lights (kHasSpot false) neither the light nor the cone test is needed: lavapipe runs both
 // sides of a branch under a lane mask, so they would cost every candidate.
 bool passes(uint lightIndex, vec4 sphere, ListVolume v) {
@@ -262,7 +269,7 @@ void main() {
     uint found0 = 0u, found1 = 0u;
     for (uint k = batchFirst; k < batchEnd; ++k) {
         const uint lightIndex = data[candidateBase + k];
-        const vec4 sphere = spheres[lightIndex];
+        const vec4 sphere = candidateSphere(lightIndex);
         if (passes(lightIndex, sphere, volume0)) ++found0;
         if (kTwoLists && passes(lightIndex, sphere, volume1)) ++found1;
     }
@@ -285,7 +292,7 @@ void main() {
 #endif
     for (uint k = batchFirst; k < batchEnd; ++k) {
         const uint lightIndex = data[candidateBase + k];
-        const vec4 sphere = spheres[lightIndex];
+        const vec4 sphere = candidateSphere(lightIndex);
         if (passes(lightIndex, sphere, volume0)) {
             store(lightIndex, count0, start0, capacity0, tail0);
 #ifdef TP_FP_CLUSTERED

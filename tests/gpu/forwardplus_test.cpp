@@ -516,6 +516,41 @@ TEST(ForwardPlusCulling, BinnedListsEqualBruteForcePointLightsOnly) {
     expectBinnedEqualsBruteForce(courtyardPointScene(512), small(128, 72, 1));
 }
 
+// --light-spheres pass reads each light's sphere from the light_spheres pass, inline computes
+// it per candidate (the culling before the pass): the same function, so the same tile records
+// and lists, byte for byte; with spot lights (cone test) and without, tiled (two lists) and
+// clustered.
+TEST(ForwardPlusCulling, SpherePassGivesTheInlineLists) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (bool spots : {true, false}) {
+        Scene scene = spots ? courtyardScene(256) : courtyardPointScene(256);
+        SceneGpu gpuScene(*ctx, scene);
+        for (const char* assign : {"tiled", "clustered"}) {
+            RenderSettings s = small(96, 54, 1);
+            s.set("light-assign", assign);
+            s.set("light-spheres", "inline");
+            ListRun inlined = runLists(*ctx, gpuScene, s);
+            s.set("light-spheres", "pass");
+            ListRun pass = runLists(*ctx, gpuScene, s);
+            ASSERT_EQ(inlined.tiles.size(), pass.tiles.size());
+            EXPECT_EQ(std::memcmp(inlined.tiles.data(), pass.tiles.data(),
+                                  inlined.tiles.size() * sizeof(gpu::FpTileLists)),
+                      0)
+                << assign << (spots ? ", spots" : "");
+            uint64_t listed = 0;
+            for (uint32_t t = 0; t < pass.grid.count(); ++t)
+                for (uint32_t list = 0; list < 2; ++list) {
+                    std::vector<uint32_t> a = listOf(inlined, t, list, "compact"), b = listOf(pass, t, list, "compact");
+                    EXPECT_EQ(a, b) << assign << " tile " << t << " list " << list;
+                    listed += b.size();
+                }
+            EXPECT_GT(listed, 0u);
+        }
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 TEST(ForwardPlusCulling, BinnedListsEqualBruteForceMsaa4Tile8) {
     RenderSettings s = small(96, 54, 4);
     s.set("tile", 8);
