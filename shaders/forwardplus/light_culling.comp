@@ -12,9 +12,10 @@
 //     sub-frustum itself (include/tile_culling.glsl); survivors are appended in that order,
 //     so every layout and both culling modes store the same lights in the same order.
 //     Each candidate's view-space sphere comes from the light_spheres pass (computed once
-//     per light, not once per tile); the light itself is read only when the scene has spot
-//     lights (their cone test). Code a lane does not need is still run, under a mask, on
-//     lavapipe, so whatever the scene lacks is left out by specialization (kHasSpot).
+//     per light, not once per tile; --light-spheres pass) or is computed here (inline);
+//     the light itself is read only when the scene has spot lights (their cone test). Code
+//     a lane does not need is still run, under a mask, on lavapipe, so whatever the scene
+//     lacks is left out by specialization (kHasSpot).
 // Directional lights are never culled: the shading pass loops over them separately.
 // Layout (one shader variant each):
 //  compact: the tile's slots [offset[t], offset[t+1]) come from a conservative CPU bound
