@@ -8,6 +8,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
 #include "core/lightassign/bin_knob.h"
+#include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/heat_map.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/gbuffer_pass.h"
@@ -29,7 +30,7 @@ class DeferredRenderer final : public Renderer {
                                                            ? info.settings.integer("slices")
                                                            : 0u,
                                                        la::resolveLightBin(info.ctx, info.settings.text("light-bin")) == "gpu"),
-          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene) {
+          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene), blendBounds_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = settings_.text("deferred-lighting") == "volumes";
         if (settings_.text("light-assign") == "clustered") slices_ = uint32_t(settings_.integer("slices"));
@@ -60,23 +61,31 @@ class DeferredRenderer final : public Renderer {
         if (blended_) {
             // Compact: each tile's run is sized by a conservative bound, so nothing can drop
             // (a drop would be counted in the tile's header, never silent).
+            // Binned: bitmasks over each tile's candidates instead of light indices.
             TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
-                                                             ctx_.info.name);
+                                                             ctx_.info.name, binned());
             t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
-                                                     "per tile: list header, then packed transparent light indices");
+                                                     lists.masks ? "per tile: list header, then a bitmask over its "
+                                                                   "binned candidates"
+                                                                 : "per tile: list header, then packed transparent "
+                                                                   "light indices");
+            transparentMasksOverCandidates_ = lists.masks;
             t_.listOffsets = std::move(lists.offsets);
             transparentSlots_ = lists.slots;
             // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
             // defClusterRowsBase); volumes lighting keeps the plain lists.
             if (slices_ > 0 && !useVolumes_) {
-                const uint64_t words = 2ull * tiles + uint64_t(slices_) * (lists.slots / 32 + tiles);
+                const uint64_t words = 2ull * tiles + uint64_t(slices_) * (lists.masks ? lists.slots
+                                                                                       : lists.slots / 32 + tiles);
                 if (words * 4 > ctx_.caps.maxStorageBufferRange)
                     throw RendererError("deferred: the transparent slice rows need " + std::to_string(words * 4) +
                                         " bytes, more than maxStorageBufferRange of " + ctx_.info.name +
                                         "; use fewer --slices, a larger --tile or fewer lights");
                 transparentMasks_ = graph.createBuffer("transparent_cluster_masks", words * 4,
-                                                       "per tile: slicing, then per slice a bitmask row over its "
-                                                       "transparent list");
+                                                       lists.masks ? "per tile: slicing, then per slice a bitmask "
+                                                                     "row over its binned candidates"
+                                                                   : "per tile: slicing, then per slice a bitmask "
+                                                                     "row over its transparent list");
             }
         }
         if (settings_.debug && !useVolumes_)
@@ -84,12 +93,17 @@ class DeferredRenderer final : public Renderer {
                                                            VK_SAMPLE_COUNT_1_BIT,
                                                            "debug: edge mask, roughness, metallic"});
         gbuffer_.plan(graph, t_);
-        if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_);
+        // Blended depth bounds: the fragments of the blended pass (per sample under MSAA, as
+        // it shades), before the transparent lists are culled against them.
+        ResourceHandle bounds;
+        if (blended_) bounds = blendBounds_.plan(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples, t_.msaa(), false});
+        if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_, bounds);
         if (useVolumes_) volumes_.plan(graph, t_);
-        if (blended_) transparent_.plan(graph, t_, slices_, transparentMasks_);
+        if (blended_) transparent_.plan(graph, t_, bounds, slices_, transparentMasks_);
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
+        if (blended_) graph.exportResource("blended_bounds", bounds);
         if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
@@ -99,9 +113,10 @@ class DeferredRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         gbuffer_.prepare();
+        if (blended_) blendBounds_.prepare(graph);
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes_) volumes_.prepare(graph);
-        if (blended_) transparent_.prepare(graph);
+        if (blended_) transparent_.prepare(graph, lighting_.candidatesBuffer(), transparentMasksOverCandidates_);
     }
 
     void collectStats(FrameGraph& graph) override {
@@ -121,6 +136,7 @@ class DeferredRenderer final : public Renderer {
     RendererStats stats() const override;
 
   private:
+    bool binned() const { return settings_.text("light-cull") == "binned"; }
     GpuContext& ctx_;
     SceneGpu& scene_;
     SceneFeatures features_;
@@ -133,8 +149,10 @@ class DeferredRenderer final : public Renderer {
     TiledLighting lighting_;
     VolumeLighting volumes_;
     TransparentPass transparent_;
+    la::BlendedBounds blendBounds_; // blended scenes: where each tile's blended fragments are
     std::vector<uint32_t> tileStats_; // uvec4 per tile
     uint64_t transparentSlots_ = 0;
+    bool transparentMasksOverCandidates_ = false; // binned: the lists are bitmasks over the candidates
     uint32_t slices_ = 0;               // --light-assign clustered: depth slices; 0 when tiled
     ResourceHandle transparentMasks_;   // clustered blended scenes: slice rows over the transparent lists
 };
@@ -146,14 +164,16 @@ struct TransparentCounts {
     std::vector<uint32_t> kept, dropped;
 };
 
-TransparentCounts transparentCounts(const std::vector<uint32_t>& stats, const std::vector<uint32_t>& offsets) {
+// masks: the runs are bitmasks over every candidate, so every light found is kept.
+TransparentCounts transparentCounts(const std::vector<uint32_t>& stats, const std::vector<uint32_t>& offsets,
+                                    bool masks) {
     TransparentCounts c;
     const size_t tiles = std::min(stats.size() / 4, offsets.empty() ? 0 : offsets.size() - 1);
     c.kept.resize(tiles);
     c.dropped.resize(tiles);
     for (size_t t = 0; t < tiles; ++t) {
         uint32_t found = stats[t * 4 + 1], run = offsets[t + 1] - offsets[t];
-        c.kept[t] = std::min(found, run);
+        c.kept[t] = masks ? found : std::min(found, run);
         c.dropped[t] = found - c.kept[t];
     }
     return c;
@@ -177,7 +197,7 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     }
     out.push_back({"lights_per_tile", la::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
     if (blended_) {
-        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
+        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
         out.push_back({"lights_per_tile_transparent", la::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
     }
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
@@ -227,7 +247,7 @@ RendererStats DeferredRenderer::stats() const {
                              "device reports non-standard sample locations: edge samples use the standard ones"});
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
-        s.leftOut.push_back({"transparent forward pass and light lists", "no blended material"});
+        s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds", "no blended material"});
     const bool clustered = settings_.text("light-assign") == "clustered";
     if (!clustered)
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
@@ -237,13 +257,19 @@ RendererStats DeferredRenderer::stats() const {
     else if (!blended_)
         s.leftOut.push_back({"slice rows over the transparent lists", "no blended material"});
     if (blended_) {
-        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets);
+        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
         double kept = 0, dropped = 0;
         for (size_t t = 0; t < c.kept.size(); ++t) {
             kept += c.kept[t];
             dropped += c.dropped[t];
         }
-        s.counters.push_back({"transparent_list_slots", double(transparentSlots_)});
+        double most = 0;
+        for (uint32_t k : c.kept) most = std::max(most, double(k));
+        s.counters.push_back({"transparent_lights_per_tile_mean", c.kept.empty() ? 0.0 : kept / double(c.kept.size())});
+        s.counters.push_back({"transparent_lights_per_tile_max", most});
+        // Index slots, or (binned) bitmask words over the candidates.
+        s.counters.push_back({transparentMasksOverCandidates_ ? "transparent_list_mask_words" : "transparent_list_slots",
+                              double(transparentSlots_)});
         s.counters.push_back({"transparent_lights_stored", kept});
         s.counters.push_back({"transparent_lights_dropped", dropped}); // 0: the bound is conservative
     }

@@ -20,7 +20,8 @@ TiledLighting::~TiledLighting() {
     destroyPassSet(ctx_, set_);
 }
 
-void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, ResourceHandle transparentMasks) {
+void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, ResourceHandle transparentMasks,
+                         ResourceHandle blendBounds) {
     t_ = &t;
     listsOnly_ = listsOnly;
     transparentMasks_ = transparentMasks;
@@ -46,6 +47,7 @@ void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, 
         uses.push_back({t.transparentLists, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_LISTS});
     if (transparentMasks.valid())
         uses.push_back({transparentMasks, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_MASKS});
+    if (t.transparentLists.valid()) uses.push_back({blendBounds, Use::StorageRead, TP_DEF_BINDING_BLEND_BOUNDS});
     if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_DEF_BINDING_DEBUG});
     graph.addPass(passName(), uses, [this](PassContext& pc) { record(pc); });
 }

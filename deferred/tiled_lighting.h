@@ -38,11 +38,18 @@ class TiledLighting {
     // (and the tile statistics) are built here.
     // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
     // transparent lists that this pass writes for the blended pass (deferred_shared.h).
-    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {});
+    // blendBounds (blended scenes): the blended depth bounds the transparent lists are culled
+    // against (core/lightassign/blended_bounds.h).
+    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {},
+              ResourceHandle blendBounds = {});
     void prepare(FrameGraph& graph);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
     bool gpuBinning() const { return gpuBinning_; }
+    // The light_candidates buffer (after prepare): binned, the blended pass walks the
+    // transparent bitmasks over it (with GPU binning, light_binning's closing barrier makes
+    // its runs visible to every later stage).
+    VkBuffer candidatesBuffer() const { return candidates_.buffer; }
 
   private:
     void record(PassContext& pc);

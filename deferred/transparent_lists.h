@@ -15,15 +15,19 @@ class SceneGpu;
 
 struct TransparentListPlan {
     std::vector<uint32_t> offsets; // tileCount + 1: tile t's run is [offsets[t], offsets[t + 1])
-    uint64_t slots = 0;            // light index slots over every tile
+    uint64_t slots = 0;            // light index slots (masks: bitmask words) over every tile
+    bool masks = false;            // runs are bitmasks over the tiles' binned candidates
     uint64_t bytes() const;        // headers + slots
 };
 
 // Every light may enter a list (the tiled pass culls all of them against the transparent
 // range): directional lights reach every tile, point/spot lights at most the tiles of
 // la::conservativeTileBound. Throws RendererError when the buffer would exceed
-// maxStorageBufferRange (`limit`).
+// maxStorageBufferRange (`limit`). masks (--light-cull binned): a list is a subset of its
+// tile's candidates (the directional lights and the lights whose conservative tile
+// rectangle covers it: the same rectangles as the bound), so its run is a bitmask over them,
+// ceil(candidates / 32) words (deferred_shared.h: defMaskRowsBase).
 TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene, uint64_t limit,
-                                         const std::string& deviceName);
+                                         const std::string& deviceName, bool masks);
 
 } // namespace tp

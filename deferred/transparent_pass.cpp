@@ -15,12 +15,14 @@ TransparentPass::~TransparentPass() {
     destroyPassSet(ctx_, set_);
 }
 
-void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, uint32_t slices, ResourceHandle masks) {
+void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle blendBounds, uint32_t slices,
+                           ResourceHandle masks) {
     t_ = &t;
     slices_ = masks.valid() ? slices : 0u;
     masks_ = masks;
     std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
-                                 {t.gbufferDepth, Use::DepthTest}};
+                                 {t.gbufferDepth, Use::DepthTest},
+                                 {blendBounds, Use::StorageRead, TP_DEF_FWD_BINDING_BLEND_BOUNDS}};
     if (masks.valid()) uses.push_back({masks, Use::StorageRead, TP_DEF_FWD_BINDING_MASKS});
     if (t.msaa()) {
         uses.push_back({t.hdrMsaa, Use::ColorAttachment});
@@ -31,8 +33,8 @@ void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, uint32_t slice
     graph.addPass("transparent_forward", uses, [this](PassContext& pc) { record(pc); });
 }
 
-void TransparentPass::prepare(FrameGraph& graph) {
-    std::vector<ExternalBuffer> externals;
+void TransparentPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binned) {
+    std::vector<ExternalBuffer> externals = {{TP_DEF_FWD_BINDING_CANDIDATES, candidates}};
     if (!masks_.valid()) {
         const uint32_t zeros[4] = {};
         noMasks_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -47,6 +49,7 @@ void TransparentPass::prepare(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
+    d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
     d.colorFormats = {t_->hdrFormat};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample

@@ -18,8 +18,12 @@ class TransparentPass {
     ~TransparentPass();
     // slices > 0 with `masks` (--light-assign clustered): fragments take their cluster's
     // lights through the slice rows the tiled pass wrote over the transparent lists.
-    void plan(FrameGraph& graph, DeferredTargets& t, uint32_t slices = 0, ResourceHandle masks = {});
-    void prepare(FrameGraph& graph);
+    // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
+    void plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle blendBounds, uint32_t slices = 0,
+              ResourceHandle masks = {});
+    // candidates: the tiled pass's light_candidates; binned: the transparent lists are
+    // bitmasks over them (deferred_shared.h: defMaskRowsBase).
+    void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);
 
   private:
     void record(PassContext& pc);

@@ -1,6 +1,7 @@
 #include "forwardplus/forwardplus_renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 #include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
 #include "core/lightassign/bin_knob.h"
+#include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/gpu_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
@@ -75,6 +77,7 @@ class ForwardPlusRenderer final : public Renderer {
         lists_ = fp::sizeLists(ctx_, {layout_, settings_.text("light-lists"), grid_.count(),
                                       settings_.integer("tile-capacity"), boundSlots_, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
+        if (blendPass_) blendBounds_.emplace(ctx_, scene_);
     }
 
     ~ForwardPlusRenderer() override {
@@ -119,8 +122,13 @@ class ForwardPlusRenderer final : public Renderer {
             });
 
         if (binning_) binning_->plan(graph); // the candidates the culling reads, every frame
+        // Blended depth bounds: the blended shading pass's fragments, before the culling reads them.
+        ResourceHandle blendBounds;
+        if (blendPass_)
+            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa, shadesPerSample(settings_),
+                                                     shadesPerPixelUnderMsaa(settings_)});
         const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
-        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, spheres});
+        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
 
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
 
@@ -148,10 +156,12 @@ class ForwardPlusRenderer final : public Renderer {
         graph.exportResource("fp_light_indices", indices_);
         if (layout_ == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
         if (clustered_) graph.exportResource("fp_cluster_masks", masks_);
+        if (blendPass_) graph.exportResource("blended_bounds", blendBounds);
     }
 
     void prepare(FrameGraph& graph) override {
         createParams();
+        if (blendBounds_) blendBounds_->prepare(graph);
         createDescriptors(graph);
         createPipelines();
     }
@@ -164,6 +174,8 @@ class ForwardPlusRenderer final : public Renderer {
             std::vector<uint8_t> c = readbackBuffer(ctx_, graph.buffer(counter_));
             std::memcpy(&nodesUsed_, c.data(), sizeof(uint32_t));
         }
+        if (blendBounds_)
+            blended_ = la::unpackBlendedBounds(readbackBuffer(ctx_, graph.buffer(blendBounds_->buffer())), grid_.count());
         if (clustered_) {
             std::vector<uint8_t> m = readbackBuffer(ctx_, graph.buffer(masks_));
             maskBits_.resize(m.size() / 4);
@@ -212,7 +224,15 @@ class ForwardPlusRenderer final : public Renderer {
                 fp::TileListSummary t = fp::summarize(tileLists_, 1, true, classes_.local.size(), tested);
                 add("transparent_lights_per_tile_mean", t.mean);
                 add("transparent_lights_per_tile_max", double(t.max));
-                testedSum += t.tested;
+                // Only tiles with blended fragments test for the transparent list.
+                double blendedTiles = 0, transparentTested = 0;
+                for (size_t i = 0; i < blended_.size(); ++i) {
+                    if (!blended_[i].any) continue;
+                    blendedTiles += 1;
+                    transparentTested += double(tested.empty() ? classes_.local.size() : tested[i]);
+                }
+                add("tiles_with_blended_fragments", blendedTiles);
+                testedSum += transparentTested;
                 kept += t.passed;
                 dropped += t.dropped;
                 stored += t.stored;
@@ -226,6 +246,11 @@ class ForwardPlusRenderer final : public Renderer {
                 add("lights_per_cluster_mean", c.mean);
                 add("lights_per_cluster_max", double(c.max));
                 add("cluster_light_bits", c.bits);
+                if (blendPass_) {
+                    auto [mean, most] = frontClusters();
+                    add("lights_per_front_cluster_mean", mean);
+                    add("lights_per_front_cluster_max", most);
+                }
             }
             if (layout_ == TP_FP_LAYOUT_LINKED) {
                 add("linked_nodes_used", double(nodesUsed_));
@@ -233,7 +258,8 @@ class ForwardPlusRenderer final : public Renderer {
             }
         }
         if (!blendPass_)
-            s.leftOut.push_back({"transparent light list, forward_transparent pass and their memory",
+            s.leftOut.push_back({"transparent light list, blended depth bounds, forward_transparent pass and their "
+                                 "memory",
                                  "the scene has no blended materials"});
         else if (clustered_)
             s.leftOut.push_back({"the second (transparent) light list per tile",
@@ -267,6 +293,31 @@ class ForwardPlusRenderer final : public Renderer {
     }
 
   private:
+    // Clustered blended scenes: lights per front cluster (the slices a blended fragment
+    // nearer than its tile's opaque range looks up), mean and max over the tiles whose
+    // front slices start at a blended fragment (frontNear < sliceNear).
+    std::pair<double, double> frontClusters() const {
+        const uint32_t front = std::max(slices_ / TP_LA_FRONT_SLICE_SHARE, 1u);
+        double clusters = 0, lights = 0, most = 0;
+        for (size_t t = 0; t < tileLists_.size() && t + 1 < maskLayout_.offsets.size(); ++t) {
+            const gpu::FpTileLists& tl = tileLists_[t];
+            if (!(tl.frontNear < tl.sliceNear)) continue;
+            const uint32_t stride = (maskLayout_.offsets[t + 1] - maskLayout_.offsets[t]) / slices_;
+            const uint32_t words = std::min((tl.list[0].count + 31) / 32, stride);
+            for (uint32_t sl = 0; sl < front; ++sl) {
+                double n = 0;
+                for (uint32_t w = 0; w < words; ++w) {
+                    const size_t i = size_t(maskLayout_.offsets[t]) + size_t(sl) * stride + w;
+                    if (i < maskBits_.size()) n += std::popcount(maskBits_[i]);
+                }
+                clusters += 1;
+                lights += n;
+                most = std::max(most, n);
+            }
+        }
+        return {clusters > 0 ? lights / clusters : 0.0, most};
+    }
+
     // The conservative tile rectangle of every local light (CPU, once per configuration: the
     // lights and the camera are fixed for a run), counted per tile: the compact layout's
     // bound; with binned culling also each tile's candidates, in ascending light order.
@@ -455,12 +506,14 @@ class ForwardPlusRenderer final : public Renderer {
     Buffer params_;
     fp::LightSpheres spheres_{ctx_, scene_};
     std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
+    std::optional<la::BlendedBounds> blendBounds_; // blended scenes: where each tile's blended fragments are
     PassSet shadeSet_;
     VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
     VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE;
     VkPipeline shade_[3] = {};
 
     std::vector<gpu::FpTileLists> tileLists_;
+    std::vector<la::TileBlendedBounds> blended_; // read back: blended scenes' statistics
     uint32_t nodesUsed_ = 0;
     bool collected_ = false;
 };

@@ -26,6 +26,8 @@ void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
     if (config_.spheres) uses.push_back({r.spheres, Use::StorageRead, TP_FP_BINDING_SPHERES});
     if (config_.layout == TP_FP_LAYOUT_LINKED) uses.push_back({r.counter, Use::StorageWrite, TP_FP_BINDING_COUNTER});
     if (config_.clustered) uses.push_back({r.masks, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
+    blendBounds_ = r.blendBounds.valid();
+    if (blendBounds_) uses.push_back({r.blendBounds, Use::StorageRead, TP_FP_BINDING_BLEND_BOUNDS});
     graph.addPass("light_culling", uses, [this](PassContext& pc) { record(pc); });
 }
 
@@ -35,6 +37,13 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
     std::vector<ExternalBuffer> externals = {{TP_FP_BINDING_PARAMS, params}};
+    if (!blendBounds_) {
+        const uint32_t empty[4] = {TP_LA_BLEND_EMPTY, TP_LA_BLEND_EMPTY, 0, 0};
+        noBlendBounds_ = createBufferWithData(ctx_, empty, sizeof(empty), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                              {graph.owner(), "", "blended_bounds_unused",
+                                               "stand-in: no blended draws, no blended depth bounds"});
+        externals.push_back({TP_FP_BINDING_BLEND_BOUNDS, noBlendBounds_.buffer});
+    }
     if (!config_.spheres) {
         // The shader declares the spheres whatever kSpheres says.
         const uint32_t zeros[4] = {};

@@ -30,9 +30,9 @@ struct CullConfig {
 };
 
 // The resources the pass reads and writes (counter: linked only; masks: clustered only;
-// spheres: light_spheres.h).
+// blendBounds: blended scenes only, core/lightassign/blended_bounds.h; spheres: light_spheres.h).
 struct CullResources {
-    ResourceHandle depth, tiles, indices, counter, masks, spheres;
+    ResourceHandle depth, tiles, indices, counter, masks, blendBounds, spheres;
 };
 
 class LightCulling {
@@ -58,6 +58,8 @@ class LightCulling {
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    bool blendBounds_ = false;
+    Buffer noBlendBounds_; // the shader's bounds binding without blended draws
 };
 
 } // namespace fp

@@ -26,13 +26,16 @@ using std::sin;
 #define TP_DEF_BINDING_LIST_OFFSETS 10 // buffer uint[tileCount + 1]: compact transparent lists' per-tile offsets
 #define TP_DEF_BINDING_CANDIDATES 11   // buffer uint[]: binned culling's per-tile candidates (TP_DEF_CAND_*)
 #define TP_DEF_BINDING_TRANSPARENT_MASKS 12 // buffer uint[]: clustered blended scenes: slice rows over the transparent lists
+#define TP_DEF_BINDING_BLEND_BOUNDS 13 // buffer uint[]: blended scenes: blended depth bounds (light_assign.h: TP_LA_BLEND_*)
 
 // ---- set 1 of the hybrid forward pass (blended materials) ----
 #define TP_DEF_FWD_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
 #define TP_DEF_FWD_BINDING_MASKS 1   // buffer: clustered: slice rows over the transparent lists (a dummy when tiled)
+#define TP_DEF_FWD_BINDING_BLEND_BOUNDS 2 // buffer: blended depth bounds (clustered: where the front slices start)
+#define TP_DEF_FWD_BINDING_CANDIDATES 3   // buffer: binned culling's candidates (binned: the lists are bitmasks over them)
 
 // Clustered blended scenes (--light-assign clustered): the transparent list of a tile is its
-// span list (near plane to farthest opaque depth, unbounded over the sky) and a buffer of
+// span list (its blended depth bounds, light_assign.glsl: LaBlendedBounds) and a buffer of
 // per-slice bitmask rows over it lets a blended fragment take only its cluster. Words
 // [2t, 2t + 1]: tile t's sliceNear and sliceScale (light_assign.glsl: LaSlicing, with front
 // slices); then tile t's rows from defClusterRowsBase, `slices` rows of ceil(count / 32)
@@ -43,6 +46,12 @@ using std::sin;
 TP_INLINE uint defClusterRowsBase(uint tileCount, uint offset, uint tile, uint slices) {
     return 2u * tileCount + slices * (offset / 32u + tile);
 }
+// Binned culling (--light-cull binned): a tile's transparent list is a bitmask over its
+// candidates (bit p: candidate p, directional lights first, then its run), and its slice
+// rows are bitmasks over the candidates too, of as many words as the list's mask (`offset`:
+// the mask's first word, the exact prefix sum of ceil(candidates / 32)): 2 * tiles + slices *
+// (mask words) in all.
+TP_INLINE uint defMaskRowsBase(uint tileCount, uint offset, uint slices) { return 2u * tileCount + slices * offset; }
 
 // ---- specialization constants of the deferred shaders (ids after the scene's 0..2) ----
 #define TP_DEF_SPEC_TILE_SIZE 10     // tile edge in pixels (= workgroup edge)

@@ -7,8 +7,9 @@
 // is shaded from that list: the first batch writes hdr (with ambient and emissive), later
 // batches add to it. Under MSAA a pixel whose samples differ (an edge) is shaded per
 // sample, every other pixel once. Blended scenes also get each tile's transparent light
-// list (every light, first batch only), culled against [near plane, farthest opaque depth]
-// (unbounded where the tile sees the sky), stored in the compact layout of
+// list (every light, first batch only), culled against the tile's blended depth bounds
+// (include/light_assign.glsl: LaBlendedBounds; empty where no blended fragment is shaded),
+// stored in the compact layout of
 // include/light_assign.h: per-tile runs sized on the CPU by a conservative bound, so the
 // buffer grows with the lights the lists can hold, never with tiles x lights.
 //   TP_EMISSIVE (0/1): the G-buffer has an emissive target.
@@ -52,8 +53,11 @@ layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_HDR, TP_HDR_FORMAT) uniform i
 #ifdef TP_TRANSPARENT
 // coherent: clustered, the invocations of a tile read each other's list entries (after
 // memoryBarrierBuffer and barrier) to build the slice rows.
+// Binned (kBinned), the runs are bitmasks over the tile's candidates (bit p: candidate p,
+// deferred/candidates.glsl), ceil(candidates / 32) words: a transparent list is a subset of
+// the candidates, so this takes a bit where an index took 32; every light, index runs.
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_LISTS) coherent buffer TransparentLists {
-    uint tLists[]; // LaListHeader per tile, then the tiles' runs of light indices
+    uint tLists[]; // LaListHeader per tile, then the tiles' runs (light indices, or candidate bitmasks)
 };
 // Clustered: per-slice bitmask rows over the transparent lists (deferred_shared.h:
 // defClusterRowsBase); a 16-byte dummy otherwise.
@@ -63,6 +67,13 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TRANSPARENT_MASKS) wr
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_LIST_OFFSETS) readonly buffer ListOffsets {
     uint tOffsets[]; // tileCount + 1: tile t's run is [tOffsets[t], tOffsets[t + 1])
 };
+// Blended depth bounds (the blended_bounds pass, after the G-buffer).
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_BLEND_BOUNDS) readonly buffer BlendBounds {
+    uint blendBounds[]; // light_assign.h: TP_LA_BLEND_*
+};
+LaBlendedBounds tileBlendedBounds(uint tileIndex) {
+    return laBlendedBounds(blendBounds[tileIndex], blendBounds[gl_NumWorkGroups.x * gl_NumWorkGroups.y + tileIndex]);
+}
 #endif
 #ifdef TP_DEBUG
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEBUG, rgba32f) uniform writeonly image2D debugOut;
@@ -75,18 +86,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_CANDIDATES) readonly 
     uint cand[]; // deferred_shared.h: TP_DEF_CAND_*
 };
 
-uint candidateCount(uint tileIndex) {
-    if (!kBinned) return frame.viewport.z;
-    uint offsets = cand[TP_DEF_CAND_OFFSETS];
-    return cand[TP_DEF_CAND_DIRECTIONAL] + cand[offsets + tileIndex + 1u] - cand[offsets + tileIndex];
-}
-
-uint candidateLight(uint tileIndex, uint p) {
-    if (!kBinned) return p;
-    uint directional = cand[TP_DEF_CAND_DIRECTIONAL];
-    if (p < directional) return cand[TP_DEF_CAND_HEADER + p];
-    return cand[cand[TP_DEF_CAND_RUNS] + cand[cand[TP_DEF_CAND_OFFSETS] + tileIndex] + p - directional];
-}
+#include "deferred/candidates.glsl"
 
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TILE_STATS) buffer TileStats {
     uvec4 tileStats[]; // per tile: opaque lights, transparent lights, edge pixels, overflow
@@ -94,6 +94,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_TILE_STATS) buffer Ti
 
 shared uint sCount;
 shared uint sTransparentCount;
+shared uint sMaskDropped; // binned: survivors past the tile's mask words (none while the runs match the bound)
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 // Clustered (kSlices > 0): bit i of slice s's row is set when sLights[i] can reach the
@@ -211,8 +212,8 @@ void cull(uvec2 tile, bool hasGeometry) {
     uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
     uint candidates = candidateCount(tileIndex);
 #ifdef TP_TRANSPARENT
-    TileFrustum ft = laTransparentFrustum(tile, kTileSize, size, frame.invProj,
-                                          laTransparentFarDepth(hasGeometry, laTileSeesSky(), farDepth));
+    const LaBlendedBounds blended = tileBlendedBounds(tileIndex);
+    TileFrustum ft = laBlendedFrustum(tile, kTileSize, size, frame.invProj, blended);
     uint offset = tOffsets[tileIndex];
     uint capacity = tOffsets[tileIndex + 1u] - offset;
     uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
@@ -228,12 +229,15 @@ void cull(uvec2 tile, bool hasGeometry) {
     }
 #endif
 #ifdef TP_TRANSPARENT
-    // Every candidate, once (first batch): a loop of candidates / 64 iterations per invocation.
-    for (uint i = gl_LocalInvocationIndex; firstBatch() && i < candidates; i += groupSize) {
+    // Every candidate, once (first batch): a loop of candidates / 64 iterations per
+    // invocation; none where no blended fragment is shaded.
+    for (uint i = gl_LocalInvocationIndex; firstBatch() && blended.any && i < candidates; i += groupSize) {
         uint light = candidateLight(tileIndex, i);
         if (lightInTile(lights[light], ft, frame.view)) {
             uint slot = atomicAdd(sTransparentCount, 1u);
-            if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
+            if (kBinned && (i >> 5u) < capacity) atomicOr(tLists[start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
+            else if (kBinned) atomicAdd(sMaskDropped, 1u); // counted, never silent
+            else if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
         }
     }
 #endif
@@ -241,7 +245,8 @@ void cull(uvec2 tile, bool hasGeometry) {
 
 #if defined(TP_TRANSPARENT) && !defined(TP_LISTS_ONLY)
 // Clustered: the slice rows of tile `tileIndex`'s transparent list, for the blended pass
-// (transparent.frag): front slices from the near plane to the nearest opaque depth, range
+// (transparent.frag): front slices from the nearest blended fragment to the nearest opaque
+// depth (light_assign.glsl: laFrontNear), range
 // slices over the opaque range (light_assign.glsl: laFrontSlices). A light's bit is set in
 // every slice its padded depth interval reaches (laLightSlices: conservative). Each
 // invocation owns whole 32-light words and writes each word of every row once: no clear,
@@ -252,18 +257,23 @@ void writeTransparentSlices(uint tileIndex) {
     const uint offset = tOffsets[tileIndex];
     const uint kept = min(sTransparentCount, tOffsets[tileIndex + 1u] - offset);
     const uint start = laListStart(tileCount, offset);
+    // Binned: rows over the candidates, as the list's mask (bit p: candidate p); a row bit
+    // is set only where the mask's is.
+    const uint words = kBinned ? tOffsets[tileIndex + 1u] - offset : (kept + 31u) / 32u;
     const bool geometry = laTileHasGeometry();
     const float sliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
     const float sliceFar = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
     const uint front = laFrontSlices(kSlices, true);
-    const LaSlicing s = laSlicing(-viewZFromDepth(1.0, frame.invProj), sliceNear,
+    const LaSlicing s = laSlicing(laFrontNear(tileBlendedBounds(tileIndex), sliceNear), sliceNear,
                                   laSliceScale(sliceNear, sliceFar, kSlices, front), kSlices, front);
-    const uint base = defClusterRowsBase(tileCount, offset, tileIndex, kSlices);
-    const uint words = (kept + 31u) / 32u;
+    const uint base = kBinned ? defMaskRowsBase(tileCount, offset, kSlices)
+                              : defClusterRowsBase(tileCount, offset, tileIndex, kSlices);
     for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
         for (uint sl = 0u; sl < kSlices; ++sl) gWordBits[sl] = 0u;
-        for (uint b = 0u; b < 32u && w * 32u + b < kept; ++b) {
-            LightGpu light = lights[tLists[start + w * 32u + b]];
+        uint mask = kBinned ? tLists[start + w] : 0u;
+        for (uint b = 0u; b < 32u && (kBinned ? mask >> b != 0u : w * 32u + b < kept); ++b) {
+            if (kBinned && (mask & (1u << b)) == 0u) continue;
+            LightGpu light = lights[kBinned ? candidateLight(tileIndex, w * 32u + b) : tLists[start + w * 32u + b]];
             vec4 sphere = lightSphereView(light, frame.view);
             uvec2 range = light.type == TP_LIGHT_DIRECTIONAL ? uvec2(0u, kSlices - 1u)
                                                              : laLightSlices(sphere.xyz, sphere.w, s);
@@ -294,6 +304,7 @@ void main() {
     if (gl_LocalInvocationIndex == 0u) {
         sCount = 0u;
         sTransparentCount = 0u;
+        sMaskDropped = 0u;
         sEdges = 0u;
     }
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
@@ -308,6 +319,17 @@ void main() {
         float far = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
         sSliceScale = laSliceScale(sSliceNear, far, kSlices, 0u);
     }
+#ifdef TP_TRANSPARENT
+    if (kBinned && firstBatch()) {
+        // The tile's candidate bitmask starts empty (cull sets its bits with atomicOr).
+        uint t = tile.y * gl_NumWorkGroups.x + tile.x;
+        uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[t]);
+        for (uint w = gl_LocalInvocationIndex; w < tOffsets[t + 1u] - tOffsets[t]; w += TP_GROUP * TP_GROUP)
+            tLists[start + w] = 0u;
+        memoryBarrierBuffer();
+        barrier();
+    }
+#endif
     cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
 #ifdef TP_TRANSPARENT
@@ -341,7 +363,8 @@ void main() {
             tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, 0u);
 #ifdef TP_TRANSPARENT
             uint capacity = tOffsets[tileIndex + 1u] - tOffsets[tileIndex];
-            uint kept = min(sTransparentCount, capacity);
+            // Binned: every survivor has its bit (the mask covers every candidate).
+            uint kept = kBinned ? sTransparentCount - sMaskDropped : min(sTransparentCount, capacity);
             tLists[laHeaderWord(tileIndex, TP_LA_COUNT)] = kept;
             tLists[laHeaderWord(tileIndex, TP_LA_START)] =
                 laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[tileIndex]);

@@ -3,7 +3,7 @@
 // The hybrid forward pass: blended materials cannot live in a G-buffer (one surface per
 // sample), so they are drawn after the lighting, back to front, alpha-blended into hdr,
 // each fragment lit by its tile's transparent light list (culled by the tiled lighting
-// pass against [near plane, farthest opaque depth]; compact layout, include/light_assign.h).
+// pass against the tile's blended depth bounds; compact layout, include/light_assign.h).
 // Clustered (kSlices > 0): only the lights of the fragment's cluster, through the slice rows
 // the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase).
 #include "include/shared.h"
@@ -24,24 +24,70 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_MASKS) readonly b
     uint tMasks[];
 };
 
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_BLEND_BOUNDS) readonly buffer BlendBounds {
+    uint blendBounds[]; // light_assign.h: TP_LA_BLEND_*
+};
+
+// Binned (--light-cull binned): the lists and rows are bitmasks over the tile's candidates
+// (deferred_shared.h: defMaskRowsBase), walked in ascending candidate order.
+layout(constant_id = TP_DEF_SPEC_BINNED) const bool kBinned = false;
+layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_CANDIDATES) readonly buffer Candidates {
+    uint cand[]; // deferred_shared.h: TP_DEF_CAND_*
+};
+#include "deferred/candidates.glsl"
+
 layout(location = 0) out vec4 outColor;
+
+// Light k of the tile's list: word w, bit b of its bitmask (binned: candidate 32 w + b), or
+// index slot 32 w + b.
+uint listLight(DefCandidates c, uint start, uint w, uint b) {
+    return kBinned ? defCandidateLight(c, w * 32u + b) : tLists[start + w * 32u + b];
+}
+
+// Words of the tile's list bitmask (binned) or of its slice rows (index lists); none for an
+// empty list.
+uint listWords(DefCandidates c, uint count) {
+    return count == 0u ? 0u : kBinned ? (c.count + 31u) / 32u : (count + 31u) / 32u;
+}
 
 // The lights of the list whose bit is set in the slice of the shading point, one 32-light
 // word at a time, in list order.
 vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSample surface) {
-    LaSlicing s = laSlicing(-viewZFromDepth(1.0, frame.invProj), uintBitsToFloat(tMasks[2u * tile]),
-                            uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices, laFrontSlices(kSlices, true));
+    float sliceNear = uintBitsToFloat(tMasks[2u * tile]);
+    LaBlendedBounds b = laBlendedBounds(blendBounds[tile], blendBounds[tileCount + tile]);
+    LaSlicing s = laSlicing(laFrontNear(b, sliceNear), sliceNear, uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices,
+                            laFrontSlices(kSlices, true));
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    uint words = (count + 31u) / 32u;
+    DefCandidates c = DefCandidates(0u, 0u, 0u);
+    if (kBinned) c = defCandidates(tile);
+    uint words = listWords(c, count);
     uint offset = start - tileCount * TP_LA_HEADER_WORDS;
-    uint row = defClusterRowsBase(tileCount, offset, tile, kSlices) + laSliceOf(dist, s) * words;
+    uint base = kBinned ? defMaskRowsBase(tileCount, offset, kSlices) : defClusterRowsBase(tileCount, offset, tile, kSlices);
+    uint row = base + laSliceOf(dist, s) * words;
     vec3 sum = vec3(0.0);
     for (uint w = 0u; w < words; ++w) {
         uint bits = tMasks[row + w];
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[tLists[start + w * 32u + uint(lsb)]], surface, kHasSpot);
+            sum += evalLight(lights[listLight(c, start, w, uint(lsb))], surface, kHasSpot);
+        }
+    }
+    return sum;
+}
+
+// Binned, tiled: the list's bitmask, one 32-candidate word at a time.
+vec3 maskLights(uint tile, uint count, uint start, SurfaceSample surface) {
+    vec3 sum = vec3(0.0);
+    if (count == 0u) return sum;
+    DefCandidates c = defCandidates(tile);
+    uint words = listWords(c, count);
+    for (uint w = 0u; w < words; ++w) {
+        uint bits = tLists[start + w];
+        for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+            int lsb = findLSB(bits);
+            bits &= bits - 1u;
+            sum += evalLight(lights[defCandidateLight(c, w * 32u + uint(lsb))], surface, kHasSpot);
         }
     }
     return sum;
@@ -56,6 +102,10 @@ void main() {
     vec3 sum = ambientAndEmissive(ms);
     if (kSlices > 0u) {
         outColor = vec4(sum + clusterLights(tile, tiles.x * tiles.y, count, start, ms.surface), ms.alpha);
+        return;
+    }
+    if (kBinned) {
+        outColor = vec4(sum + maskLights(tile, count, start, ms.surface), ms.alpha);
         return;
     }
     for (uint i = 0u; i < count; ++i)

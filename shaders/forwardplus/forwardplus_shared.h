@@ -16,7 +16,8 @@ namespace tp::gpu {
 #define TP_FP_BINDING_DEPTH 3   // culling only: the prepass depth (sampler2D, or sampler2DMS with MSAA)
 #define TP_FP_BINDING_COUNTER 4 // culling only, "linked" layout: node-pool allocation counter
 #define TP_FP_BINDING_CLUSTER_MASKS 5 // clustered only: buffer uint[]: per tile and slice, a bitmask over the tile list
-#define TP_FP_BINDING_SPHERES 6 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
+#define TP_FP_BINDING_BLEND_BOUNDS 6  // culling only: blended depth bounds (light_assign.h: TP_LA_BLEND_*; a stand-in without blended draws)
+#define TP_FP_BINDING_SPHERES 7 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TILE_SIZE 12 // tile size in pixels (8, 16, 32), culling and shading
@@ -46,8 +47,8 @@ namespace tp::gpu {
 #define TP_FP_CULL_LOOP_BUDGET 32768u
 
 // What the culling pass leaves for each tile. list[TP_LA_OPAQUE] is bounded by the tile's
-// [min, max] depth, list[TP_LA_TRANSPARENT] spans the near plane to the tile's farthest depth
-// (light assignment's two ranges). Each is light assignment's one list header
+// [min, max] depth, list[TP_LA_TRANSPARENT] by the tile's blended depth bounds (empty where
+// no blended fragment is shaded; light_assign.glsl: LaBlendedBounds). Each is light assignment's one list header
 // (include/light_assign.h): count kept (never more than the storage holds); start = first
 // slot in indices[] (compact, fixed) or the head node (linked: count bounds the walk);
 // dropped = passed the test but did not fit (fixed capacity, pool overflow); found = both.
@@ -57,6 +58,8 @@ TP_STRUCT(FpTileLists) {
     float farDepth;  // nearDepth == 0: no geometry in the tile (sky), opaque list empty
     float sliceNear;  // clustered: view distance of the nearest opaque depth (1e30 without geometry; light_assign.glsl: laSliceOf)
     float sliceScale; // clustered: range slices per unit of log(distance / sliceNear); 0 when tiled
+    float frontNear;  // clustered with blended surfaces: where the front slices start (light_assign.glsl: laFrontNear)
+    float pad0, pad1, pad2;
 };
 
 // Uploaded once per configuration; followed in the same buffer by uint data[]:
@@ -74,7 +77,7 @@ TP_STRUCT(FpParams) {
 };
 
 #ifndef TP_GLSL
-static_assert(sizeof(FpTileLists) == 48);
+static_assert(sizeof(FpTileLists) == 64);
 static_assert(offsetof(FpTileLists, nearDepth) == 32);
 static_assert(sizeof(FpParams) == 48);
 #endif

@@ -4,8 +4,9 @@
 // constant), 8 x 8 tiles per workgroup, no shared memory and no barrier.
 //  1. Depth bounds: min/max over every sample of every pixel of the tile that has geometry
 //     (depth > 0); a tile with no geometry (sky) gets an empty opaque list. The transparent
-//     list (only when the scene has blended materials) spans the near plane to the tile's
-//     farthest depth, unbounded where any sample sees the sky.
+//     list (only when the scene has blended materials) spans the tile's blended depth bounds
+//     (include/light_assign.glsl: LaBlendedBounds; the blended_bounds pass records them),
+//     and is empty where no blended fragment is shaded.
 //  2. The tile's candidates - every local light, or with binned culling only those whose
 //     conservative tile rectangle covers it (core/lightassign/tile_candidates.h), both in
 //     ascending light order - are tested against the sub-frustum's bounding box and the
@@ -44,8 +45,8 @@ layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 // light. Same test, same order: the same lists either way.
 layout(constant_id = TP_FP_SPEC_BINNED) const bool kBinned = false;
 // Clustered (TP_FP_CLUSTERED, compact layout only): one list per tile over its depth span
-// (from the near plane when blended surfaces exist, else from its nearest depth, to its
-// farthest), and per depth slice (include/light_assign.glsl: laSliceOf) a bitmask over that
+// (its opaque range, widened to its blended depth bounds when the scene has blended
+// surfaces: kSpanFromNear, named for when the span started at the near plane), and per depth slice (include/light_assign.glsl: laSliceOf) a bitmask over that
 // list: bit i of slice s is set when light i of the list can reach the slice.
 layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
 layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
@@ -76,6 +77,11 @@ layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depth
 #define TP_LA_DEPTH_FETCH(p, s) texelFetch(depthImage, p, 0).r
 #endif
 #include "include/light_assign.glsl"
+// Blended depth bounds (light_assign.h: TP_LA_BLEND_*), read only with blended surfaces
+// (kTwoLists or kSpanFromNear); a 16-byte stand-in otherwise.
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_BLEND_BOUNDS) readonly buffer BlendBoundsBlock {
+    uint blendBounds[];
+};
 #ifdef TP_FP_CULL_LINKED
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
     uint nodeCounter;
@@ -103,13 +109,17 @@ struct ListVolume {
     bool tests; // false: the list stays empty (opaque list of a sky tile)
 };
 
-ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
-    const vec2 viewportSize = vec2(frame.viewport.xy);
+ListVolume volumeOf(uvec2 tile, TileFrustum f, bool tests) {
     ListVolume v;
-    v.frustum = makeTileFrustum(tile, kTileSize, viewportSize, frame.invProj, nearDepth, farDepth);
-    v.box = makeTileBox(tile, kTileSize, viewportSize, frame.invProj, v.frustum);
+    v.frustum = f;
+    v.box = makeTileBox(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, f);
     v.tests = tests;
     return v;
+}
+
+ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
+    return volumeOf(tile, makeTileFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, nearDepth, farDepth),
+                    tests);
 }
 
 vec4 candidateSphere(uint lightIndex) {
@@ -201,23 +211,34 @@ void main() {
     // 1. Depth bounds over every sample (include/light_assign.glsl).
     const LaTileDepth depth = laTileDepthSerial(tile, kTileSize, frame.viewport.xy, uint(kSamples));
     const float transparentFar = laTransparentFarDepth(depth.hasGeometry, depth.seesSky, depth.farDepth);
+    // The blended fragments' [nearest, farthest] view distance, padded (none without blended surfaces).
+    LaBlendedBounds blended = laBlendedBounds(TP_LA_BLEND_EMPTY, 0u);
+    if (kTwoLists || kSpanFromNear)
+        blended = laBlendedBounds(blendBounds[tileIndex], blendBounds[params.tiles.z + tileIndex]);
+    const TileFrustum blendedFrustum = laBlendedFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, blended);
 #ifdef TP_FP_CLUSTERED
-    // The span: the opaque range, or from the near plane (blended surfaces lie anywhere in
-    // front of the opaque ones) to the farthest opaque depth, unbounded over the sky.
-    // Slices follow the opaque range and, with blended surfaces, the front region
-    // (include/light_assign.glsl: laSliceOf).
-    const bool spanTests = kSpanFromNear || depth.hasGeometry;
-    const float spanNearDepth = kSpanFromNear ? 1.0 : depth.nearDepth;
-    const float spanFarDepth = kSpanFromNear ? transparentFar : depth.farDepth;
-    const bool openEnd = kSpanFromNear && transparentFar == 0.0;
+    // The span: the opaque range, widened to the blended bounds where the tile has blended
+    // fragments (only those can be nearer than the opaque range, or farther where the tile
+    // sees the sky). Slices follow the opaque range and, with blended surfaces, the front
+    // region from the nearest blended fragment (include/light_assign.glsl: laSliceOf, laFrontNear).
+    TileFrustum span = makeTileFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, depth.nearDepth,
+                                       depth.farDepth);
+    if (blended.any && depth.hasGeometry) {
+        span.nearViewZ = max(span.nearViewZ, blendedFrustum.nearViewZ);
+        span.farViewZ = min(span.farViewZ, blendedFrustum.farViewZ);
+    } else if (blended.any) {
+        span = blendedFrustum;
+    }
+    const bool spanTests = blended.any || depth.hasGeometry;
+    const bool openEnd = blended.any && transparentFar == 0.0;
     const float sliceNear = depth.hasGeometry ? max(-viewZFromDepth(depth.nearDepth, frame.invProj), 1e-30) : 1e30;
     const float sliceFar = depth.hasGeometry ? -viewZFromDepth(depth.farDepth, frame.invProj) : 1e30;
     const uint front = laFrontSlices(kSlices, kSpanFromNear);
     const float sliceScale = laSliceScale(sliceNear, sliceFar, kSlices, front);
-    const LaSlicing slicing = laSlicing(-viewZFromDepth(1.0, frame.invProj), sliceNear, sliceScale, kSlices, front);
+    const LaSlicing slicing = laSlicing(laFrontNear(blended, sliceNear), sliceNear, sliceScale, kSlices, front);
     const uint maskBase = data[params.lists.w + tileIndex];
     const uint maskStride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
-    const ListVolume volume0 = makeVolume(tile, spanNearDepth, spanFarDepth, spanTests);
+    const ListVolume volume0 = volumeOf(tile, span, spanTests);
 #else
     const ListVolume volume0 = makeVolume(tile, depth.nearDepth, depth.farDepth, depth.hasGeometry);
 #endif
@@ -227,7 +248,7 @@ void main() {
 #ifdef TP_FP_CLUSTERED
     const ListVolume volume1 = makeVolume(tile, depth.nearDepth, depth.farDepth, kSpanFromNear && depth.hasGeometry);
 #else
-    const ListVolume volume1 = makeVolume(tile, 1.0, transparentFar, kTwoLists);
+    const ListVolume volume1 = volumeOf(tile, blendedFrustum, kTwoLists && blended.any);
 #endif
 
     // 2. The candidates: every local light (after the directional ones in data[]), or the
@@ -331,9 +352,14 @@ void main() {
 #ifdef TP_FP_CLUSTERED
     t.sliceNear = sliceNear;
     t.sliceScale = sliceScale;
+    t.frontNear = slicing.frontNear;
 #else
     t.sliceNear = 0.0;
     t.sliceScale = 0.0;
+    t.frontNear = 0.0;
 #endif
+    t.pad0 = 0.0;
+    t.pad1 = 0.0;
+    t.pad2 = 0.0;
     tiles[tileIndex] = t;
 }

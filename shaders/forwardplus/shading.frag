@@ -49,8 +49,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonl
 vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
     FpTileLists t = tiles[tileIndex];
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    LaSlicing slicing = laSlicing(-viewZFromDepth(1.0, frame.invProj), t.sliceNear, t.sliceScale, kSlices,
-                                  laFrontSlices(kSlices, kSpanFromNear));
+    LaSlicing slicing = laSlicing(t.frontNear, t.sliceNear, t.sliceScale, kSlices, laFrontSlices(kSlices, kSpanFromNear));
     uint slice = laSliceOf(dist, slicing);
     uint maskBase = data[params.lists.w + tileIndex];
     uint stride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;

@@ -38,13 +38,55 @@ TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, m
     return makeTileFrustum(tile, tileSize, viewportSize, invProj, 1.0, transparentFarDepth);
 }
 
+// ---- blended depth bounds (light_assign.h: TP_LA_BLEND_*; docs/clustered.md) ----
+// The transparent list and the front slices cover only the view distances where the tile's
+// blended fragments are (shaders/blended_bounds.frag records them), not everything from the
+// near plane: most lights in front of the opaque surfaces float where no blended surface is.
+// Why the bound holds: the bounds pass draws the blended draws with the shading pass's vertex
+// shader (scene.vert, `precise`: bit-identical gl_Position and interpolants), rasterization
+// state, sample count, sample shading and input interpolation, depth test GREATER against the
+// same opaque depth and no depth write, so it runs for exactly the fragments (under MSAA with
+// per-sample shading: samples) that the shading pass shades, at the same positions, and takes
+// their view distance with the shading's own expression; TP_LA_BLEND_PAD absorbs the
+// rounding of that expression in two compilations.
+struct LaBlendedBounds {
+    bool any;       // the tile has a blended fragment to shade
+    float nearDist; // padded view distance of its nearest blended fragment (0 without)
+    float farDist;  // padded view distance of its farthest one (0 without)
+};
+
+LaBlendedBounds laBlendedBounds(uint minBits, uint maxBits) {
+    LaBlendedBounds b;
+    b.any = minBits < TP_LA_BLEND_EMPTY;
+    b.nearDist = b.any ? uintBitsToFloat(minBits) * (1.0 - TP_LA_BLEND_PAD) : 0.0;
+    b.farDist = b.any ? uintBitsToFloat(maxBits) * (1.0 + TP_LA_BLEND_PAD) : 0.0;
+    return b;
+}
+
+// The tile's sub-frustum between the blended bounds (view z = -distance); makeTileFrustum's
+// side planes, its depth range replaced.
+TileFrustum laBlendedFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj, LaBlendedBounds b) {
+    TileFrustum f = makeTileFrustum(tile, tileSize, viewportSize, invProj, 1.0, 0.0);
+    f.nearViewZ = -b.nearDist;
+    f.farViewZ = -b.farDist;
+    return f;
+}
+
+// Clustered: where the front slices start: the nearest blended fragment, never beyond the
+// tile's nearest opaque depth (sliceNear); without blended fragments sliceNear (the front
+// slices are then empty of fragments but for rounding at sliceNear, which laSliceOf clamps
+// into the first front slice). Computed the same way by the culling and the shading.
+float laFrontNear(LaBlendedBounds b, float sliceNear) {
+    return b.any ? min(max(b.nearDist, 1e-30), sliceNear) : sliceNear;
+}
+
 // ---- clustered: depth slices of a tile (docs/clustered.md) ----
 // The range slices follow the tile's opaque depth range [nearest, farthest] (view
 // distances sliceNear, sliceFar): exponential between them, so every slice is as deep
 // relative to its distance and each lies inside the range a tiled opaque list is culled
 // against. With front slices (the scene has blended surfaces: laFrontSlices), the first
-// `front` slices cut [frontNear, sliceNear) - the near plane to the nearest opaque depth,
-// where only blended surfaces are - exponentially too, so a blended fragment in front of
+// `front` slices cut [frontNear, sliceNear) - the tile's nearest blended fragment
+// (laFrontNear) to the nearest opaque depth, where only blended surfaces are - exponentially too, so a blended fragment in front of
 // the opaque ones sees a thin cluster instead of everything nearer than sliceNear; the
 // range slices are the rest. The first front slice also takes anything nearer than
 // frontNear, the first range slice anything nearer than sliceNear when there is no front,
@@ -53,7 +95,7 @@ TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, m
 // The culling and the shading both use laSliceOf; a light's slice range is padded
 // (laLightSlices), so rounding cannot separate them.
 struct LaSlicing {
-    float frontNear;  // view distance where the front slices start (the near plane)
+    float frontNear;  // view distance where the front slices start (laFrontNear)
     float frontScale; // front slices per unit of log(distance / frontNear); 0 without
     float sliceNear;  // view distance of the tile's nearest opaque depth (1e30 without geometry)
     float sliceScale; // range slices per unit of log(distance / sliceNear)

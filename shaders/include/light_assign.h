@@ -19,6 +19,19 @@ namespace tp::gpu {
 // laFrontSlices); the rest cut the opaque range.
 #define TP_LA_FRONT_SLICE_SHARE 4u
 
+// Blended depth bounds (core/lightassign/blended_bounds.h, shaders/blended_bounds.frag): per
+// tile, the nearest and farthest view distance (-z, > 0) of the blended fragments that the
+// blended shading pass will shade, as float bits (non-negative floats order like their
+// bits): words [0, tiles) the minimum (+inf bits = 0x7f800000: no blended fragment),
+// words [tiles, 2 * tiles) the maximum (0 without). Cleared by a transfer fill every frame.
+#define TP_LA_BLEND_BINDING_BOUNDS 0 // the bounds pass's own set (TP_SET_PASS): buffer uint[2 * tiles]
+#define TP_LA_BLEND_SPEC_TILE_SIZE 40 // the bounds pass's tile size (spec constant id)
+#define TP_LA_BLEND_EMPTY 0x7f800000u // +inf: the minimum of a tile with no blended fragment
+// Relative padding of the recorded distances (light_assign.glsl: laBlendedBounds): the
+// bounds pass and the shading pass compute the distance with the same expression from the
+// same interpolants, so they differ by the rounding of that expression only (a few ulps).
+#define TP_LA_BLEND_PAD 1e-4
+
 // A compact light list in one uint buffer: the headers of every tile first, then the light
 // indices. Tile t's header is words [t * TP_LA_HEADER_WORDS, (t + 1) * TP_LA_HEADER_WORDS);
 // its lights are words [start, start + count), start = headers' size + the tile's offset

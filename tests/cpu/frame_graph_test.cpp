@@ -224,11 +224,17 @@ TEST(ShaderReflection, EveryEmbeddedShaderReflects) {
 
 TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
     const std::vector<SetBinding>& b = reflectShaderSet("deferred_transparent_frag", TP_SET_PASS);
-    ASSERT_EQ(b.size(), 2u); // the transparent lists and their slice rows (clustered)
+    // The transparent lists, their slice rows (clustered), the blended depth bounds, the
+    // binned candidates (binned: the lists are bitmasks over them).
+    ASSERT_EQ(b.size(), 4u);
     EXPECT_EQ(b[0].binding, uint32_t(TP_DEF_FWD_BINDING_LISTS));
     EXPECT_EQ(b[0].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(b[1].binding, uint32_t(TP_DEF_FWD_BINDING_MASKS));
     EXPECT_EQ(b[1].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(b[2].binding, uint32_t(TP_DEF_FWD_BINDING_BLEND_BOUNDS));
+    EXPECT_EQ(b[2].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(b[3].binding, uint32_t(TP_DEF_FWD_BINDING_CANDIDATES));
+    EXPECT_EQ(b[3].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_TRUE(reflectShaderSet("scene_vert", TP_SET_PASS).empty());
 }
 
@@ -236,7 +242,9 @@ TEST(ShaderReflection, AMismatchedPassSetIsAOneLineErrorNamingPassBindingAndShad
     PassSet set;
     set.pass = "transparent_forward";
     set.bindings = {{TP_DEF_FWD_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                    {TP_DEF_FWD_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                    {TP_DEF_FWD_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                    {TP_DEF_FWD_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                    {TP_DEF_FWD_BINDING_CANDIDATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     EXPECT_EQ(errorOf([&] { checkPassBindings(&set, {"scene_vert", "deferred_transparent_frag"}); }), "");
 
     PassSet wrongType = set;

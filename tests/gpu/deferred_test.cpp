@@ -4,7 +4,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include <cstring>
+
+#include "core/gpu/frame_graph.h"
 #include "core/gpu/ledger.h"
+#include "core/gpu/readback.h"
+#include "core/gpu/vk_check.h"
+#include "core/lightassign/blended_bounds.h"
 #include "core/image/metrics.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
@@ -481,13 +487,26 @@ TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
     const uint64_t tiles = (96 / 16) * (64 / 16);
     RunResult fp = runOrFail(*ctx, yardGpu, "forwardplus", s);
     for (const char* lighting : {"tiled", "volumes"}) {
-        RunResult r = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
+        // --light-cull all: index lists in the compact layout.
+        RenderSettings all = withLighting(s, lighting);
+        all.set("light-cull", "all");
+        RunResult r = runOrFail(*ctx, yardGpu, "deferred", all);
         const double slots = counter(r, "transparent_list_slots");
         EXPECT_EQ(entryBytes(r, "transparent_lists"), tiles * 16 + uint64_t(slots) * 4) << lighting;
         EXPECT_EQ(slots, counter(fp, "light_list_slots") / 2) << lighting;
         EXPECT_LT(slots, double(tiles * lights)) << lighting;
         EXPECT_GT(counter(r, "transparent_lights_stored"), 0.0) << lighting;
         EXPECT_EQ(counter(r, "transparent_lights_dropped"), 0.0) << lighting;
+        // Binned (the default): a bitmask over each tile's candidates, ceil(candidates / 32)
+        // words, the same lights.
+        RunResult b = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
+        const double words = counter(b, "transparent_list_mask_words");
+        EXPECT_EQ(entryBytes(b, "transparent_lists"), tiles * 16 + uint64_t(words) * 4) << lighting;
+        EXPECT_LE(words, slots / 32 + double(tiles)) << lighting;
+        EXPECT_EQ(counter(b, "transparent_lights_stored"), counter(r, "transparent_lights_stored")) << lighting;
+        EXPECT_EQ(counter(b, "transparent_lights_dropped"), 0.0) << lighting;
+        expectAgreeWithinSummationBound(b.hdr, r.hdr, lights, 1,
+                                        std::string("transparent bitmasks vs index lists, ") + lighting);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -512,8 +531,9 @@ TEST(Deferred, ClusteredBlendedSurfacesMatchTheReferenceOnTheCourtyard) {
         s.set("light-assign", "clustered");
         s.set("slices", 16);
         RunResult clustered = runOrFail(*ctx, yardGpu, "deferred", s);
-        const uint64_t slots = uint64_t(counter(clustered, "transparent_list_slots"));
-        EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"), 4 * (2 * tiles + 16 * (slots / 32 + tiles)));
+        // Binned (the default): rows over the candidates, as many words as the list's bitmask.
+        const uint64_t words = uint64_t(counter(clustered, "transparent_list_mask_words"));
+        EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"), 4 * (2 * tiles + 16 * words));
         expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, lights, 1,
                                         "courtyard clustered vs tiled, " + std::to_string(lights) + " lights");
         RunResult ref = runOrFail(*ctx, yardGpu, "reference", s);
@@ -559,6 +579,73 @@ TEST(Deferred, BlendedSurfaceOverTheSkyKeepsLightsBeyondTheOpaqueDepth) {
         EXPECT_EQ(p.error.nanInfCount, 0u);
         EXPECT_LT(maxRelativeError(p.deferred.hdr, p.reference.hdr, 1e-4), 2.5e-4) << assign << ": " << describe(p.error);
     }
+    expectNoValidationMessages(*ctx);
+}
+
+// One frame of `pipeline` through its own graph; returns the exported buffer `name` (and,
+// when asked, `tile_stats`), for what runOrFail does not read back.
+std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char* pipeline,
+                                    const RenderSettings& settings, const char* name,
+                                    std::vector<uint8_t>* tileStats = nullptr) {
+    scene.setView(settings.width, settings.height, settings.msaa);
+    Result<const RendererEntry*> entry = findRenderer(pipeline);
+    EXPECT_TRUE(entry.ok());
+    RenderSettings resolved = settings;
+    EXPECT_TRUE(resolveKnobs((*entry)->knobs, resolved).ok());
+    RendererCreateInfo info{ctx, scene, analyzeScene(scene.scene(), settings.msaa), resolved};
+    std::unique_ptr<Renderer> renderer = createRenderer(**entry, info);
+    FrameGraph graph(ctx, pipeline, settings.width, settings.height);
+    renderer->plan(graph);
+    graph.compile();
+    renderer->prepare(graph);
+    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    graph.record(cmd, nullptr);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    ctx.submitAndWait(cmd);
+    ctx.freeCommandBuffer(cmd);
+    if (tileStats) *tileStats = readbackBuffer(ctx, graph.buffer(graph.exported("tile_stats")));
+    ResourceHandle h = graph.exported(name);
+    return h.valid() ? readbackBuffer(ctx, graph.buffer(h)) : std::vector<uint8_t>{};
+}
+
+// The transparent lists are culled against each tile's blended depth bounds
+// (core/lightassign/blended_bounds.h): a tile with no blended fragment has an empty list
+// (tile_stats' transparent column: what its test found), tiled and clustered, 1x and 4x.
+// Forward+ records the same bounds from its prepass depth (the same vertex shader, depth
+// test and fragments), bit for bit.
+TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene yard = courtyardWithLights(256);
+    SceneGpu yardGpu(*ctx, yard);
+    const uint32_t tiles = (96 / 16) * (64 / 16);
+    for (uint32_t msaa : {1u, 4u})
+        for (const char* assign : {"tiled", "clustered"}) {
+            RenderSettings s = small(msaa, "compact");
+            s.set("light-assign", assign);
+            std::vector<uint8_t> statBytes;
+            std::vector<uint8_t> bytes = exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds", &statBytes);
+            std::vector<la::TileBlendedBounds> b = la::unpackBlendedBounds(bytes, tiles);
+            ASSERT_EQ(statBytes.size(), size_t(tiles) * 16);
+            std::vector<uint32_t> stats(tiles * 4);
+            std::memcpy(stats.data(), statBytes.data(), statBytes.size());
+            uint32_t empty = 0, blended = 0;
+            for (uint32_t t = 0; t < tiles; ++t) {
+                if (b[t].any) {
+                    ++blended;
+                    continue;
+                }
+                ++empty;
+                EXPECT_EQ(stats[t * 4 + 1], 0u) << assign << " " << msaa << "x tile " << t;
+            }
+            EXPECT_GT(empty, 0u) << assign << " " << msaa << "x";
+            EXPECT_GT(blended, 0u) << assign << " " << msaa << "x";
+            s.set("msaa-shading", "sample"); // Forward+ shades blended samples as deferred does
+            EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), bytes)
+                << assign << " " << msaa << "x";
+        }
     expectNoValidationMessages(*ctx);
 }
 

@@ -25,6 +25,7 @@
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "forwardplus/forwardplus_debug.h"
+#include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_bound.h"
@@ -282,6 +283,7 @@ struct ListRun {
     std::vector<gpu::FpTileLists> tiles;
     std::vector<uint32_t> indices;
     std::vector<uint32_t> masks; // clustered: the per-slice bitmasks
+    std::vector<la::TileBlendedBounds> blended; // blended scenes: each tile's blended depth bounds
     la::TileGrid grid;
     RendererStats stats;
     std::vector<DebugImage> debug;
@@ -320,6 +322,8 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
         std::memcpy(out.masks.data(), b.data(), out.masks.size() * 4);
     }
     out.grid = la::makeTileGrid(settings.width, settings.height, resolved.integer("tile"));
+    if (ResourceHandle b = graph.exported("blended_bounds"); b.valid())
+        out.blended = la::unpackBlendedBounds(readbackBuffer(ctx, graph.buffer(b)), out.grid.count());
     renderer->collectStats(graph);
     out.stats = renderer->stats();
     out.debug = renderer->debugImages(graph);
@@ -364,6 +368,63 @@ bool reaches(const gpu::LightGpu& l, const glm::vec3& p) {
     return true;
 }
 
+// The points of blended surfaces that pixel centres see in front of the opaque depth: what
+// the blended pass shades at 1x, found on the CPU by casting each pixel centre's ray at the
+// blended triangles (back faces of single-sided materials skipped, as the draws cull them).
+// Points near a triangle's edge (the fill rule decides those) or near the opaque surface
+// (the depth test's rounding decides those) are left out.
+struct BlendedPoint {
+    uint32_t x, y;
+    glm::vec3 p;
+};
+
+std::vector<BlendedPoint> blendedPoints(const Scene& scene, const gpu::FrameUniforms& f, const ImageR32& depth) {
+    std::vector<BlendedPoint> out;
+    const uint32_t w = depth.width, h = depth.height;
+    const glm::vec3 eye(f.eyeWorld);
+    for (const Mesh& m : scene.meshes) {
+        const Material& mat = scene.materials[m.material];
+        if (mat.alphaMode != AlphaMode::Blend) continue;
+        for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
+            const glm::vec3 a = m.positions[m.indices[i]], b = m.positions[m.indices[i + 1]],
+                            c = m.positions[m.indices[i + 2]];
+            const glm::vec3 e1 = b - a, e2 = c - a;
+            if (!mat.doubleSided && glm::dot(glm::cross(e1, e2), eye - a) <= 0.0f) continue;
+            // The triangle's pixel rectangle (the whole screen if a vertex is behind the eye).
+            float x0 = 0, x1 = float(w), y0 = 0, y1 = float(h);
+            bool behind = false;
+            glm::vec2 lo(1e30f), hi(-1e30f);
+            for (const glm::vec3& v : {a, b, c}) {
+                glm::vec4 cl = f.viewProj * glm::vec4(v, 1.0f);
+                if (cl.w <= 0.0f) behind = true;
+                glm::vec2 s((cl.x / cl.w * 0.5f + 0.5f) * float(w), (0.5f - cl.y / cl.w * 0.5f) * float(h));
+                lo = glm::min(lo, s);
+                hi = glm::max(hi, s);
+            }
+            if (!behind) {
+                x0 = std::max(0.0f, std::floor(lo.x)), x1 = std::min(float(w), std::ceil(hi.x) + 1.0f);
+                y0 = std::max(0.0f, std::floor(lo.y)), y1 = std::min(float(h), std::ceil(hi.y) + 1.0f);
+            }
+            for (uint32_t y = uint32_t(y0); float(y) < y1; ++y)
+                for (uint32_t x = uint32_t(x0); float(x) < x1; ++x) {
+                    const glm::vec3 o = unproject(f, x, y, 1.0f), dir = unproject(f, x, y, 0.5f) - o;
+                    const glm::vec3 pv = glm::cross(dir, e2);
+                    const float det = glm::dot(e1, pv);
+                    if (std::fabs(det) < 1e-20f) continue;
+                    const glm::vec3 tv = o - a, qv = glm::cross(tv, e1);
+                    const float u = glm::dot(tv, pv) / det, v = glm::dot(dir, qv) / det, t = glm::dot(e2, qv) / det;
+                    if (u < 1e-3f || v < 1e-3f || u + v > 1.0f - 1e-3f || t <= 0.0f) continue;
+                    const glm::vec3 p = o + t * dir;
+                    const glm::vec4 cl = f.viewProj * glm::vec4(p, 1.0f);
+                    const float pd = cl.z / cl.w, d = depth.r[y * w + x];
+                    if (pd >= 1.0f || pd <= d * (1.0f + 1e-4f) + 1e-7f) continue;
+                    out.push_back({x, y, p});
+                }
+        }
+    }
+    return out;
+}
+
 TEST(ForwardPlusCulling, ConservativeOnEveryTileWithFalsePositiveRate) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -404,17 +465,78 @@ TEST(ForwardPlusCulling, ConservativeOnEveryTileWithFalsePositiveRate) {
                 }
             listed += list.size();
             needed += contributing.size();
-            // The transparent list spans a larger depth range: it holds every opaque one.
-            std::vector<uint32_t> tlist = listOf(r, tile, 1, "compact");
-            std::set<uint32_t> inT(tlist.begin(), tlist.end());
-            for (uint32_t li : list) EXPECT_TRUE(inT.count(li)) << "tile " << tile << " light " << li;
         }
     EXPECT_EQ(missing, 0u);
+    // The transparent list holds every light that reaches a blended fragment's own point
+    // (the blended depth bounds are conservative).
+    std::vector<BlendedPoint> points = blendedPoints(scene, f, r.depth);
+    EXPECT_GT(points.size(), 100u);
+    uint64_t blendedMissing = 0;
+    for (const BlendedPoint& bp : points) {
+        const uint32_t tile = (bp.y / 16) * r.grid.tilesX + bp.x / 16;
+        std::vector<uint32_t> tlist = listOf(r, tile, 1, "compact");
+        std::set<uint32_t> inT(tlist.begin(), tlist.end());
+        for (uint32_t li = 0; li < lights.size(); ++li)
+            if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], bp.p) && !inT.count(li) &&
+                ++blendedMissing < 10)
+                ADD_FAILURE() << "blended point at pixel " << bp.x << "," << bp.y << ": light " << li
+                              << " reaches it but is not in the transparent list";
+    }
+    EXPECT_EQ(blendedMissing, 0u);
     double fpRate = listed ? double(listed - needed) / double(listed) : 0.0;
     std::printf("[ forwardplus ] culling: %llu listed, %llu reach a pixel, false-positive rate %.1f%%, %llu sky tiles\n",
                 (unsigned long long)listed, (unsigned long long)needed, 100.0 * fpRate, (unsigned long long)skyTiles);
     RecordProperty("false_positive_rate", std::to_string(fpRate));
     EXPECT_LT(fpRate, 0.9); // useful: most listed lights do reach the tile
+    expectNoValidationMessages(*ctx);
+}
+
+// The transparent list covers the tile's blended depth bounds (core/lightassign/
+// blended_bounds.h): empty in every tile where no blended fragment is shaded, and in the
+// others much shorter than the lights that can reach the tile at any depth (the list used
+// to run from the near plane). Every tile where a pixel centre sees a blended surface in
+// front of the opaque one has bounds. An opaque-only scene has no bounds pass.
+TEST(ForwardPlusCulling, TransparentListsFollowTheBlendedDepthBounds) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    ListRun r = runLists(*ctx, gpuScene, small(128, 72, 1));
+    ASSERT_EQ(r.blended.size(), size_t(r.grid.count()));
+    const gpu::FrameUniforms& f = gpuScene.frame();
+    const auto& lights = gpuScene.lightsGpu();
+    la::LightClasses classes = la::classifyLights(lights);
+    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, lights, classes.local);
+    uint64_t emptyTiles = 0, blendedTiles = 0, listed = 0, reachable = 0;
+    for (uint32_t t = 0; t < r.grid.count(); ++t) {
+        if (!r.blended[t].any) {
+            ++emptyTiles;
+            EXPECT_EQ(r.tiles[t].list[1].count, 0u) << "tile " << t << " has no blended fragment";
+            continue;
+        }
+        EXPECT_LE(r.blended[t].nearDist, r.blended[t].farDist) << "tile " << t;
+        ++blendedTiles;
+        listed += r.tiles[t].list[1].count;
+        reachable += bound[t];
+    }
+    for (const BlendedPoint& bp : blendedPoints(scene, f, r.depth))
+        EXPECT_TRUE(r.blended[(bp.y / 16) * r.grid.tilesX + bp.x / 16].any) << bp.x << "," << bp.y;
+    EXPECT_GT(emptyTiles, 0u);
+    EXPECT_GT(blendedTiles, 0u);
+    EXPECT_LT(2 * listed, reachable);
+    double mean = -1.0;
+    for (const auto& [n, v] : r.stats.counters)
+        if (n == "transparent_lights_per_tile_mean") mean = v;
+    EXPECT_DOUBLE_EQ(mean, double(listed) / double(r.grid.count()));
+    std::printf("[ forwardplus ] transparent lists: %llu tiles without blended fragments (empty lists), %llu with: "
+                "%.1f lights per list against %.1f that reach the tile at any depth\n",
+                (unsigned long long)emptyTiles, (unsigned long long)blendedTiles,
+                double(listed) / double(blendedTiles), double(reachable) / double(blendedTiles));
+
+    Scene floor = floorScene(16);
+    SceneGpu floorGpu(*ctx, floor);
+    ListRun opaque = runLists(*ctx, floorGpu, small(64, 48, 1));
+    EXPECT_TRUE(opaque.blended.empty());
     expectNoValidationMessages(*ctx);
 }
 
@@ -652,12 +774,11 @@ TEST(ForwardPlusClustered, SubgroupLoopGivesTheLaneLoopsImage) {
 
 // laSliceOf (include/light_assign.glsl) on the CPU, with front slices (blended scenes).
 struct CpuSlicing {
-    float frontNear;
     uint32_t slices, front;
     uint32_t operator()(float dist, const gpu::FpTileLists& t) const {
         if (front > 0 && dist < t.sliceNear) {
-            float scale = float(front) / std::log(std::max(t.sliceNear / frontNear, 1.001f));
-            float f = std::log(std::max(dist / frontNear, 1.0f)) * scale;
+            float scale = float(front) / std::log(std::max(t.sliceNear / t.frontNear, 1.001f));
+            float f = std::log(std::max(dist / t.frontNear, 1.0f)) * scale;
             return uint32_t(std::clamp(f, 0.0f, float(front - 1)));
         }
         float r = std::log(std::max(dist / t.sliceNear, 1.0f)) * t.sliceScale;
@@ -686,14 +807,13 @@ TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
     std::vector<uint32_t> maskBase(bound.size() + 1, 0);
     for (size_t t = 0; t < bound.size(); ++t) maskBase[t + 1] = maskBase[t] + 16 * ((bound[t] + 31) / 32);
     ASSERT_EQ(size_t(maskBase.back()), r.masks.size());
-    glm::vec4 nearPlane = f.invProj * glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
-    // The courtyard has blended surfaces: 16 / TP_LA_FRONT_SLICE_SHARE front slices.
-    const CpuSlicing sliceOf{-nearPlane.z / nearPlane.w, 16, 16 / TP_LA_FRONT_SLICE_SHARE};
+    // The courtyard has blended surfaces: 16 / TP_LA_FRONT_SLICE_SHARE front slices, from
+    // each tile's frontNear (its nearest blended fragment).
+    const CpuSlicing sliceOf{16, 16 / TP_LA_FRONT_SLICE_SHARE};
     uint64_t missing = 0, pixels = 0, inCluster = 0, inList = 0, inTiled = 0;
     uint64_t frontPoints = 0, inFrontCluster = 0, inFrontList = 0;
-    auto check = [&](uint32_t x, uint32_t y, float depth, uint32_t tile, const std::vector<uint32_t>& list) {
+    auto check = [&](uint32_t x, uint32_t y, const glm::vec3& p, uint32_t tile, const std::vector<uint32_t>& list) {
         const gpu::FpTileLists& t = r.tiles[tile];
-        glm::vec3 p = unproject(f, x, y, depth);
         uint32_t slice = sliceOf(-(f.view * glm::vec4(p, 1.0f)).z, t);
         uint32_t stride = (maskBase[tile + 1] - maskBase[tile]) / 16;
         std::set<uint32_t> cluster;
@@ -702,7 +822,7 @@ TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
         for (uint32_t li = 0; li < lights.size(); ++li)
             if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], p) && !cluster.count(li)) {
                 if (++missing < 10)
-                    ADD_FAILURE() << "pixel " << x << "," << y << " depth " << depth << " slice " << slice
+                    ADD_FAILURE() << "pixel " << x << "," << y << " slice " << slice
                                   << ": light " << li << " reaches it but is not in its cluster";
             }
         return std::make_pair(slice, cluster.size());
@@ -715,17 +835,20 @@ TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
             std::vector<uint32_t> list = listOf(r, tile, 0, "compact");
             ++pixels;
             inTiled += tiled.tiles[tile].list[0].count;
-            inCluster += check(x, y, d, tile, list).second;
+            inCluster += check(x, y, unproject(f, x, y, d), tile, list).second;
             inList += list.size();
-            // Points in front of the surface (reverse-Z: depth d .. 1, the near plane).
-            for (uint32_t k = 1; k < 8; ++k) {
-                auto [slice, size] = check(x, y, d + (1.0f - d) * float(k) / 8.0f, tile, list);
-                if (slice >= sliceOf.front) continue;
-                ++frontPoints;
-                inFrontCluster += size;
-                inFrontList += list.size();
-            }
         }
+    // Blended fragments' own points (blendedPoints): those nearer than the tile's opaque
+    // range take the front slices, from the tile's nearest blended fragment.
+    for (const BlendedPoint& bp : blendedPoints(scene, f, r.depth)) {
+        const uint32_t tile = (bp.y / 16) * r.grid.tilesX + bp.x / 16;
+        std::vector<uint32_t> list = listOf(r, tile, 0, "compact");
+        auto [slice, size] = check(bp.x, bp.y, bp.p, tile, list);
+        if (slice >= sliceOf.front) continue;
+        ++frontPoints;
+        inFrontCluster += size;
+        inFrontList += list.size();
+    }
     EXPECT_EQ(missing, 0u);
     EXPECT_GT(pixels, 0u);
     EXPECT_GT(frontPoints, 0u);

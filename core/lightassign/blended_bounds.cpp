@@ -1,0 +1,88 @@
+#include "core/lightassign/blended_bounds.h"
+
+#include <cstring>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/scene_gpu.h"
+#include "include/light_assign.h"
+
+namespace tp::la {
+
+BlendedBounds::~BlendedBounds() {
+    if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig& config) {
+    config_ = config;
+    const uint32_t tiles = config.grid.count();
+    bounds_ = graph.createBuffer("blended_bounds", uint64_t(tiles) * 8,
+                                 "per tile: min and max view distance of the blended fragments shaded");
+    graph.addPass("blended_bounds_clear", {{bounds_, Use::TransferDst}}, [this, tiles](PassContext& pc) {
+        VkBuffer b = pc.buffer(bounds_).buffer;
+        vkCmdFillBuffer(pc.cmd, b, 0, VkDeviceSize(tiles) * 4, TP_LA_BLEND_EMPTY);
+        vkCmdFillBuffer(pc.cmd, b, VkDeviceSize(tiles) * 4, VkDeviceSize(tiles) * 4, 0u);
+    });
+    graph.addPass("blended_bounds",
+                  {{config.depth, Use::DepthTest}, {bounds_, Use::StorageWrite, TP_LA_BLEND_BINDING_BOUNDS}},
+                  [this](PassContext& pc) { record(pc); });
+    return bounds_;
+}
+
+// Arithmetic and vote subgroup operations in fragment shaders (every lane of a subgroup in
+// one tile then costs one atomic pair instead of one each).
+bool BlendedBounds::subgroupReduce() const {
+    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &sub};
+    vkGetPhysicalDeviceProperties2(ctx_.physical, &p2);
+    const VkSubgroupFeatureFlags ops =
+        VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+    return (sub.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT) && (sub.supportedOperations & ops) == ops;
+}
+
+void BlendedBounds::prepare(FrameGraph& graph) {
+    set_ = graph.createPassSet("blended_bounds");
+    layout_ = scene_.createPipelineLayout(set_.layout);
+    GraphicsPipelineDesc d;
+    d.fragmentShader = std::string("blended_bounds") + (subgroupReduce() ? "_sg" : "") +
+                       (config_.inputsAtPixel ? "_pixel" : "") + "_frag";
+    d.specConstants = scene_.specConstants(AlphaMode::Blend);
+    d.specConstants.push_back({TP_LA_BLEND_SPEC_TILE_SIZE, config_.grid.tileSize});
+    d.samples = VkSampleCountFlagBits(config_.samples);
+    d.sampleShading = config_.sampleShading;
+    d.depthWrite = false;
+    d.depthCompare = VK_COMPARE_OP_GREATER; // in front of the opaque depth, as the blended pass
+    d.layout = layout_;
+    d.passSet = &set_;
+    pipeline_ = createGraphicsPipeline(ctx_, d);
+}
+
+void BlendedBounds::record(PassContext& pc) {
+    DepthTarget depth{config_.depth, {}, false, true};
+    beginRendering(pc, {}, depth);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0,
+                            nullptr);
+    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
+    endRendering(pc);
+}
+
+std::vector<TileBlendedBounds> unpackBlendedBounds(const std::vector<uint8_t>& bytes, uint32_t tiles) {
+    std::vector<TileBlendedBounds> out(tiles);
+    if (bytes.size() < size_t(tiles) * 8) return out;
+    for (uint32_t t = 0; t < tiles; ++t) {
+        uint32_t lo, hi;
+        std::memcpy(&lo, bytes.data() + size_t(t) * 4, 4);
+        std::memcpy(&hi, bytes.data() + size_t(tiles + t) * 4, 4);
+        out[t].any = lo < TP_LA_BLEND_EMPTY;
+        if (!out[t].any) continue;
+        std::memcpy(&out[t].nearDist, &lo, 4);
+        std::memcpy(&out[t].farDist, &hi, 4);
+    }
+    return out;
+}
+
+} // namespace tp::la

@@ -1,0 +1,69 @@
+#pragma once
+// Blended depth bounds: per tile, the nearest and farthest view distance of the blended
+// fragments the blended shading pass will shade (include/light_assign.h: TP_LA_BLEND_*), so
+// that a tile's transparent list (tiled) or front slices (clustered) cover only where its
+// blended surfaces are, and a tile with none gets an empty transparent list. Used by Forward+
+// (after the depth prepass) and deferred (after the G-buffer), before their culling.
+//
+// Two passes: "blended_bounds_clear" (transfer fill: min = +inf, max = 0) and
+// "blended_bounds" (the blended draws, shaders/blended_bounds.frag). Plan it only when the
+// scene draws something blended; the buffer "blended_bounds" (2 words per tile) is in the
+// ledger.
+#include <cstdint>
+
+#include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/lightassign/tile_grid.h"
+
+namespace tp {
+
+class GpuContext;
+class SceneGpu;
+
+namespace la {
+
+// What the blended shading pass does, which the bounds pass must repeat to see the same
+// fragments at the same positions.
+struct BlendedBoundsConfig {
+    TileGrid grid;
+    ResourceHandle depth;        // the opaque depth the blended pass tests against (per sample under MSAA)
+    uint32_t samples = 1;        // its sample count
+    bool sampleShading = false;  // the blended pass shades per sample
+    bool inputsAtPixel = false;  // its fragment inputs are TP_INPUTS_AT_PIXEL (scene_inputs.glsl)
+};
+
+class BlendedBounds {
+  public:
+    BlendedBounds(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
+    ~BlendedBounds();
+    BlendedBounds(const BlendedBounds&) = delete;
+    BlendedBounds& operator=(const BlendedBounds&) = delete;
+
+    // Declares the buffer and both passes; returns the buffer (read by the culling).
+    ResourceHandle plan(FrameGraph& graph, const BlendedBoundsConfig& config);
+    void prepare(FrameGraph& graph);
+    ResourceHandle buffer() const { return bounds_; }
+
+  private:
+    bool subgroupReduce() const;
+    void record(PassContext& pc);
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    BlendedBoundsConfig config_;
+    ResourceHandle bounds_;
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+// Reads back a bounds buffer: per tile, whether it has a blended fragment and its
+// unpadded [min, max] view distance (tests and statistics).
+struct TileBlendedBounds {
+    bool any = false;
+    float nearDist = 0.0f, farDist = 0.0f;
+};
+std::vector<TileBlendedBounds> unpackBlendedBounds(const std::vector<uint8_t>& bytes, uint32_t tiles);
+
+} // namespace la
+} // namespace tp

@@ -1,0 +1,56 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Blended depth bounds (core/lightassign/blended_bounds.h): drawn with the blended draws'
+// vertex shader and the blended shading pass's rasterization state, depth test GREATER against
+// the opaque depth, no depth write and no colour, so it runs for exactly the fragments the
+// blended pass shades (light_assign.glsl: LaBlendedBounds says why). Each records its view
+// distance into its tile's [min, max] (light_assign.h: TP_LA_BLEND_*).
+//   TP_INPUTS_AT_PIXEL: the once-per-pixel variant (scene_inputs.glsl), as the shading's.
+//   TP_LA_BLEND_SUBGROUP: lanes of one subgroup in one tile reduce first, one atomic pair
+//   per subgroup (the device supports arithmetic and vote subgroup operations in fragment
+//   shaders; blended_bounds.cpp picks the variant).
+#ifdef TP_LA_BLEND_SUBGROUP
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#endif
+#include "include/shared.h"
+#include "include/scene_bindings.glsl"
+#include "include/material.glsl"
+#include "include/scene_inputs.glsl"
+#include "include/light_assign.glsl"
+
+// Early tests: the fragment shader has side effects, and only fragments in front of the
+// opaque depth may record (as only those are shaded).
+layout(early_fragment_tests) in;
+layout(constant_id = TP_LA_BLEND_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(std430, set = TP_SET_PASS, binding = TP_LA_BLEND_BINDING_BOUNDS) buffer Bounds {
+    uint bounds[]; // [0, tiles): min distance bits; [tiles, 2 tiles): max
+};
+
+void main() {
+    // The shading's position (scene_inputs.glsl: evalFragmentMaterial) and distance
+    // (the clustered lookups' expression).
+    vec3 position = TP_INPUT(inPosition) * (1.0 / TP_INPUT(inOne));
+    float dist = max(-(frame.view * vec4(position, 1.0)).z, 0.0);
+    uvec2 tiles = uvec2(laTileCount1D(frame.viewport.x, kTileSize), laTileCount1D(frame.viewport.y, kTileSize));
+    uint tile = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, tiles);
+    uint tileCount = tiles.x * tiles.y;
+    uint bits = floatBitsToUint(dist); // non-negative: orders like the value
+    // Helper invocations (for derivatives) are not shaded; their atomics are dropped, but a
+    // device may count them in a subgroup reduction: that only widens the bounds by a
+    // pixel's extrapolation along the triangle (conservative). (gl_HelperInvocation would
+    // exclude them; lavapipe's compiler lacks it.)
+#ifdef TP_LA_BLEND_SUBGROUP
+    if (subgroupAllEqual(tile)) {
+        uint lo = subgroupMin(bits), hi = subgroupMax(bits);
+        if (subgroupElect()) {
+            atomicMin(bounds[tile], lo);
+            atomicMax(bounds[tileCount + tile], hi);
+        }
+        return;
+    }
+#endif
+    atomicMin(bounds[tile], bits);
+    atomicMax(bounds[tileCount + tile], bits);
+}
