@@ -22,11 +22,13 @@
 #include "core/lightassign/gpu_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
+#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "forwardplus/light_culling.h"
 #include "forwardplus/light_lists.h"
+#include "forwardplus/light_spheres.h"
 
 namespace tp {
 namespace {
@@ -50,6 +52,17 @@ class ForwardPlusRenderer final : public Renderer {
         gpuBinning_ = binned_ && la::resolveLightBin(ctx_, settings_.text("light-bin")) == "gpu";
         clustered_ = settings_.text("light-assign") == "clustered";
         slices_ = settings_.integer("slices");
+        // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
+        // transform in every tile it is tested in); on a GPU the transform is cheap and the
+        // buffer (16 MB at 1,000,000 lights) would take Forward+ past 100 MB there.
+        const std::string spheres = settings_.text("light-spheres");
+        spherePass_ = spheres == "pass" || (spheres == "auto" && ctx_.isCpuDevice());
+        // --light-loop subgroup where the device has the operations; otherwise the lane loop
+        // (the same image), with a note in the report.
+        if (clustered_ && settings_.text("light-loop") == "subgroup") {
+            subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
+            subgroupLoop_ = subgroupMissing_.empty();
+        }
         if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
             throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
                                 settings_.text("light-lists") + "')");
@@ -114,7 +127,8 @@ class ForwardPlusRenderer final : public Renderer {
         if (blendPass_)
             blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa, shadesPerSample(settings_),
                                                      shadesPerPixelUnderMsaa(settings_)});
-        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds});
+        const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
+        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
 
         // Uses with a binding are also the pass's descriptor set (createDescriptors).
 
@@ -191,11 +205,13 @@ class ForwardPlusRenderer final : public Renderer {
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(lists_.slots));
         add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
+        add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);       // --light-spheres, resolved
         if (binned_) add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
         if (binned_) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered_) {
             add("slices", double(slices_));
             add("cluster_mask_words", double(maskLayout_.words));
+            add("light_loop_subgroup", subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
         const std::vector<uint32_t> none, &tested = binned_ ? tileBound_ : none;
         if (collected_) {
@@ -254,6 +270,14 @@ class ForwardPlusRenderer final : public Renderer {
                                                                        " resolved to cpu: candidates built once per configuration"});
         if (!clustered_)
             s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
+        if (!spherePass_)
+            s.leftOut.push_back({"light_spheres pass and its buffer (16 bytes per light)",
+                                 "--light-spheres " + settings_.text("light-spheres") +
+                                     ": the culling computes each candidate's sphere itself"});
+        if (!subgroupMissing_.empty())
+            s.leftOut.push_back({"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
+                                 "the same image",
+                                 subgroupMissing_});
         if (settings_.msaa == 1)
             s.leftOut.push_back({"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
         if (!scene_.hasDraws(DrawFilter::Mask))
@@ -366,10 +390,12 @@ class ForwardPlusRenderer final : public Renderer {
         c.clustered = clustered_;
         c.twoLists = twoLists_;
         c.spanFromNear = blendPass_;
+        c.spheres = spherePass_;
         return c;
     }
 
     void createDescriptors(FrameGraph& graph) {
+        if (spherePass_) spheres_.prepare(graph);
         // fp_params is uploaded once in prepare(), outside the graph.
         culling_->prepare(graph, params_.buffer);
         if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
@@ -401,7 +427,7 @@ class ForwardPlusRenderer final : public Renderer {
             // sample shading; the EQUAL depth test against the per-sample prepass gives each
             // sample its coverage, masked materials included); sample shades every sample.
             d.fragmentShader = std::string(clustered_ ? "fp_shading_clustered" : "fp_shading") +
-                               (shadesPerPixelUnderMsaa(settings_) ? "_pixel_frag" : "_frag");
+                               (subgroupLoop_ ? "_subgroup" : "") + (shadesPerPixelUnderMsaa(settings_) ? "_pixel_frag" : "_frag");
             d.colorFormats = {kHdrFormat};
             d.samples = samples;
             d.sampleShading = shadesPerSample(settings_);
@@ -462,6 +488,9 @@ class ForwardPlusRenderer final : public Renderer {
     la::LightClasses classes_;
     bool binned_ = true, clustered_ = false, blendPass_ = false;
     uint32_t slices_ = 16;
+    bool spherePass_ = false;      // --light-spheres resolved: the light_spheres pass runs
+    bool subgroupLoop_ = false;    // clustered, --light-loop subgroup, and the device runs it
+    std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
     fp::MaskLayout maskLayout_; // clustered: the slice rows' word offsets per tile
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
@@ -475,6 +504,7 @@ class ForwardPlusRenderer final : public Renderer {
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;
+    fp::LightSpheres spheres_{ctx_, scene_};
     std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
     std::optional<la::BlendedBounds> blendBounds_; // blended scenes: where each tile's blended fragments are
     PassSet shadeSet_;

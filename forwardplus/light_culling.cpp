@@ -23,6 +23,7 @@ void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
     std::vector<PassUse> uses = {{r.depth, Use::Sampled, TP_FP_BINDING_DEPTH},
                                  {r.tiles, Use::StorageWrite, TP_FP_BINDING_TILES},
                                  {r.indices, Use::StorageWrite, TP_FP_BINDING_INDICES}};
+    if (config_.spheres) uses.push_back({r.spheres, Use::StorageRead, TP_FP_BINDING_SPHERES});
     if (config_.layout == TP_FP_LAYOUT_LINKED) uses.push_back({r.counter, Use::StorageWrite, TP_FP_BINDING_COUNTER});
     if (config_.clustered) uses.push_back({r.masks, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
     blendBounds_ = r.blendBounds.valid();
@@ -43,6 +44,14 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
                                                "stand-in: no blended draws, no blended depth bounds"});
         externals.push_back({TP_FP_BINDING_BLEND_BOUNDS, noBlendBounds_.buffer});
     }
+    if (!config_.spheres) {
+        // The shader declares the spheres whatever kSpheres says.
+        const uint32_t zeros[4] = {};
+        noSpheres_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                          {graph.owner(), "", "light_spheres_unused",
+                                           "stand-in: each candidate's sphere is computed in the culling"});
+        externals.push_back({TP_FP_BINDING_SPHERES, noSpheres_.buffer});
+    }
     set_ = graph.createPassSet("light_culling", sampler_, externals);
     layout_ = scene_.createPipelineLayout(set_.layout);
 
@@ -56,6 +65,7 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     spec.push_back({TP_FP_SPEC_BINNED, config_.binned ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_SLICES, config_.slices});
     spec.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, config_.spanFromNear ? 1u : 0u});
+    spec.push_back({TP_FP_SPEC_SPHERES, config_.spheres ? 1u : 0u});
     pipeline_ = createComputePipeline(ctx_, name, spec, layout_, &set_);
 }
 

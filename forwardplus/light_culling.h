@@ -26,12 +26,13 @@ struct CullConfig {
     uint32_t slices = 16;   // clustered depth slices
     uint32_t mostTested = 0; // the most lights any tile tests (binned: its candidates; all: every local light)
     bool binned = true, clustered = false, twoLists = false, spanFromNear = false;
+    bool spheres = true; // read the light_spheres pass's buffer (else a stand-in is bound)
 };
 
 // The resources the pass reads and writes (counter: linked only; masks: clustered only;
-// blendBounds: blended scenes only, core/lightassign/blended_bounds.h).
+// blendBounds: blended scenes only, core/lightassign/blended_bounds.h; spheres: light_spheres.h).
 struct CullResources {
-    ResourceHandle depth, tiles, indices, counter, masks, blendBounds;
+    ResourceHandle depth, tiles, indices, counter, masks, blendBounds, spheres;
 };
 
 class LightCulling {
@@ -53,6 +54,7 @@ class LightCulling {
     CullConfig config_;
     uint32_t dispatches_ = 0;
     VkSampler sampler_ = VK_NULL_HANDLE;
+    Buffer noSpheres_; // without the light_spheres pass: a 16-byte stand-in for its binding
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

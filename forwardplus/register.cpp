@@ -4,6 +4,7 @@
 #include "core/lightassign/assign_knob.h"
 #include "core/lightassign/bin_knob.h"
 #include "core/lightassign/cull_knob.h"
+#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_knob.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/renderer.h"
@@ -18,12 +19,18 @@ KnobSchema forwardPlusKnobs() {
             la::lightBinKnob(),
             la::lightAssignKnob(),
             la::slicesKnob(),
+            la::lightLoopKnob(),
             msaaShadingKnob(),
             Knob::choice("light-lists", {"compact", "fixed", "linked"},
                          "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "
                          "capacity per tile; drops are counted), linked (per-tile linked lists)"),
             Knob::integer("tile-capacity", 1, 65536, 256, "Light slots per tile of the 'fixed' light-list layout")
-                .fixed()};
+                .fixed(),
+            // Same lists either way: only where the time and the 16 bytes per light go.
+            Knob::choice("light-spheres", {"auto", "pass", "inline"},
+                         "Each light's view-space sphere for the culling: pass (once per light in the "
+                         "light_spheres pass, 16 bytes per light), inline (per candidate in the culling) or auto "
+                         "(pass on a CPU device such as lavapipe, inline on a GPU)")};
 }
 
 // Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).

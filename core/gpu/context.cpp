@@ -151,6 +151,8 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.maxStorageBufferRange = p.limits.maxStorageBufferRange;
     c.maxComputeSharedMemorySize = p.limits.maxComputeSharedMemorySize;
     c.subgroupSize = sub.subgroupSize;
+    c.subgroupStages = sub.supportedStages;
+    c.subgroupOps = sub.supportedOperations;
     c.standardSampleLocations = p.limits.standardSampleLocations;
     return c;
 }

@@ -46,6 +46,8 @@ struct DeviceCaps {
     uint64_t maxStorageBufferRange = 0;
     uint32_t maxComputeSharedMemorySize = 0;
     uint32_t subgroupSize = 0;
+    uint32_t subgroupStages = 0; // VkShaderStageFlags with subgroup operations
+    uint32_t subgroupOps = 0;    // VkSubgroupFeatureFlags
     bool standardSampleLocations = false; // MSAA samples sit at the spec's standard locations
 };
 

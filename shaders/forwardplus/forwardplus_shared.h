@@ -17,6 +17,7 @@ namespace tp::gpu {
 #define TP_FP_BINDING_COUNTER 4 // culling only, "linked" layout: node-pool allocation counter
 #define TP_FP_BINDING_CLUSTER_MASKS 5 // clustered only: buffer uint[]: per tile and slice, a bitmask over the tile list
 #define TP_FP_BINDING_BLEND_BOUNDS 6  // culling only: blended depth bounds (light_assign.h: TP_LA_BLEND_*; a stand-in without blended draws)
+#define TP_FP_BINDING_SPHERES 7 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TILE_SIZE 12 // tile size in pixels (8, 16, 32), culling and shading
@@ -26,6 +27,7 @@ namespace tp::gpu {
 #define TP_FP_SPEC_BINNED 16    // culling: 1 = test each tile's candidates (--light-cull binned), 0 = every light
 #define TP_FP_SPEC_SLICES 17    // clustered: depth slices per tile
 #define TP_FP_SPEC_SPAN_FROM_NEAR 18 // clustered: 1 = a tile's span starts at the near plane (blended surfaces)
+#define TP_FP_SPEC_SPHERES 19 // culling: 1 = read each light's sphere from light_spheres, 0 = compute it per candidate
 
 #define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted
@@ -38,6 +40,8 @@ namespace tp::gpu {
 #define TP_FP_CULL_FIRST pad0
 #define TP_FP_CULL_END pad1
 #define TP_FP_CULL_INITIAL pad2
+// light_spheres: the number of lights (one invocation each), in the same push constant.
+#define TP_FP_SPHERE_COUNT pad0
 // Loop iterations one culling dispatch may spend on its candidates: half of lavapipe's
 // limit (the depth bounds take at most 32 * 32 * 4 + 32 * 32 + 32 more).
 #define TP_FP_CULL_LOOP_BUDGET 32768u

@@ -12,6 +12,11 @@
 //     ascending light order - are tested against the sub-frustum's bounding box and the
 //     sub-frustum itself (include/tile_culling.glsl); survivors are appended in that order,
 //     so every layout and both culling modes store the same lights in the same order.
+//     Each candidate's view-space sphere comes from the light_spheres pass (computed once
+//     per light, not once per tile; --light-spheres pass) or is computed here (inline);
+//     the light itself is read only when the scene has spot lights (their cone test). Code
+//     a lane does not need is still run, under a mask, on lavapipe, so whatever the scene
+//     lacks is left out by specialization (kHasSpot).
 // Directional lights are never culled: the shading pass loops over them separately.
 // Layout (one shader variant each):
 //  compact: the tile's slots [offset[t], offset[t+1]) come from a conservative CPU bound
@@ -56,6 +61,13 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_INDICES) writeonly buf
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffer ParamBlock {
     FpParams params;
     uint data[];
+};
+// Every light's lightSphereView, from the light_spheres pass (light_spheres.comp), when
+// kSpheres (--light-spheres, forwardplus/register.cpp); otherwise a 16-byte stand-in and each
+// candidate's sphere is computed here. The same function on the same inputs either way.
+layout(constant_id = TP_FP_SPEC_SPHERES) const bool kSpheres = true;
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_SPHERES) readonly buffer SphereBlock {
+    vec4 spheres[];
 };
 #ifdef TP_FP_DEPTH_MS
 layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2DMS depthImage;
@@ -110,9 +122,17 @@ ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
                     tests);
 }
 
-// `sphere`: lightSphereView(light), computed once per candidate for both lists.
-bool passes(LightGpu light, vec4 sphere, ListVolume v) {
-    return v.tests && sphereInTileBox(sphere, v.box) && lightSphereInTile(light, sphere, v.frustum, frame.view);
+vec4 candidateSphere(uint lightIndex) {
+    return kSpheres ? spheres[lightIndex] : lightSphereView(lights[lightIndex], frame.view);
+}
+
+// `sphere`: candidateSphere(lightIndex), once per candidate for both lists. Without spot
+// lights (kHasSpot false) neither the light nor the cone test is needed: lavapipe runs both
+// sides of a branch under a lane mask, so they would cost every candidate.
+bool passes(uint lightIndex, vec4 sphere, ListVolume v) {
+    return v.tests && sphereInTileBox(sphere, v.box) &&
+           (kHasSpot ? lightSphereInTile(lights[lightIndex], sphere, v.frustum, frame.view)
+                     : tileSphereTest(sphere.xyz, sphere.w, v.frustum));
 }
 
 #ifdef TP_FP_CLUSTERED
@@ -270,10 +290,10 @@ void main() {
     // `capacity` is this batch's kept nodes, positions count from 0.
     uint found0 = 0u, found1 = 0u;
     for (uint k = batchFirst; k < batchEnd; ++k) {
-        LightGpu light = lights[data[candidateBase + k]];
-        vec4 sphere = lightSphereView(light, frame.view);
-        if (passes(light, sphere, volume0)) ++found0;
-        if (kTwoLists && passes(light, sphere, volume1)) ++found1;
+        const uint lightIndex = data[candidateBase + k];
+        const vec4 sphere = candidateSphere(lightIndex);
+        if (passes(lightIndex, sphere, volume0)) ++found0;
+        if (kTwoLists && passes(lightIndex, sphere, volume1)) ++found1;
     }
     const uint pool = params.lists.y;
     const uint start0 = found0 > 0u ? atomicAdd(nodeCounter, found0) : 0u;
@@ -294,9 +314,8 @@ void main() {
 #endif
     for (uint k = batchFirst; k < batchEnd; ++k) {
         const uint lightIndex = data[candidateBase + k];
-        LightGpu light = lights[lightIndex];
-        const vec4 sphere = lightSphereView(light, frame.view);
-        if (passes(light, sphere, volume0)) {
+        const vec4 sphere = candidateSphere(lightIndex);
+        if (passes(lightIndex, sphere, volume0)) {
             store(lightIndex, count0, start0, capacity0, tail0);
 #ifdef TP_FP_CLUSTERED
             if (count0 < capacity0) {
@@ -304,14 +323,14 @@ void main() {
                     flushWord((count0 >> 5u) - 1u, maskBase, maskStride);
                     dirty = false;
                 }
-                markSlices(sphere, count0, slicing, !kSpanFromNear || passes(light, sphere, volume1),
+                markSlices(sphere, count0, slicing, !kSpanFromNear || passes(lightIndex, sphere, volume1),
                            openEnd);
                 dirty = true;
             }
 #endif
             ++count0;
         }
-        if (kTwoLists && passes(light, sphere, volume1)) {
+        if (kTwoLists && passes(lightIndex, sphere, volume1)) {
             store(lightIndex, count1, start1, capacity1, tail1);
             ++count1;
         }

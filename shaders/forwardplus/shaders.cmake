@@ -19,3 +19,11 @@ triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_compact_cluste
   DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_compact_clustered_ms_comp
   DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1 TP_FP_DEPTH_MS=1)
+# --light-loop subgroup (clustered): the cluster loop scalarized over a subgroup that shades one
+# tile; separate variants because they declare the subgroup capabilities.
+triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_subgroup_frag
+  DEFINES TP_FP_CLUSTERED=1 TP_FP_LIGHT_LOOP_SUBGROUP=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_subgroup_pixel_frag
+  DEFINES TP_FP_CLUSTERED=1 TP_FP_LIGHT_LOOP_SUBGROUP=1 TP_INPUTS_AT_PIXEL=1)
+# Every light's view-space sphere, once per frame, for the culling.
+triptych_add_shader(SPVS ${SHADER_DIR}/light_spheres.comp fp_light_spheres_comp)

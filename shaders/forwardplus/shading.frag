@@ -27,6 +27,14 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     uint data[];
 };
 
+#ifdef TP_FP_LIGHT_LOOP_SUBGROUP
+// --light-loop subgroup: a variant of its own, since a module that declares these
+// capabilities cannot be used on a device without them (core/lightassign/loop_knob.h).
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#endif
+
 #ifdef TP_FP_CLUSTERED
 layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
 layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
@@ -48,6 +56,29 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
     uint words = (t.list[0].count + 31u) / 32u;
     uint row = maskBase + slice * stride;
     vec3 sum = vec3(0.0);
+#ifdef TP_FP_LIGHT_LOOP_SUBGROUP
+    // Every active lane shades the same tile (one list; the lanes' slices may differ): walk
+    // the OR of the lanes' words together, so the list and light loads are the same address
+    // in every lane (uniform: one load instead of one per lane on lavapipe; no divergent
+    // walks on a GPU), and each lane adds a light only where its own bit is set. Each lane
+    // adds its own lights in ascending order, as the lane loop does: the same sums, bit for
+    // bit. The broadcasts only tell the compiler what the vote proved (equal in every lane).
+    if (subgroupAllEqual(tileIndex)) {
+        uint sharedWords = subgroupBroadcastFirst(words);
+        uint sharedStart = subgroupBroadcastFirst(t.list[0].start);
+        for (uint w = 0u; w < sharedWords; ++w) {
+            uint own = masks[row + w];
+            uint bits = subgroupOr(own);
+            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
+                int lsb = findLSB(bits);
+                bits &= bits - 1u;
+                LightGpu light = lights[indices[sharedStart + w * 32u + uint(lsb)]];
+                if ((own & (1u << uint(lsb))) != 0u) sum += evalLight(light, surface, kHasSpot);
+            }
+        }
+        return sum;
+    }
+#endif
     for (uint w = 0u; w < words; ++w) {
         uint bits = masks[row + w];
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {

@@ -27,6 +27,7 @@
 #include "forwardplus/forwardplus_debug.h"
 #include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/light_classes.h"
+#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -73,6 +74,19 @@ Scene courtyardScene(uint32_t lightCount) {
     Scene scene = std::move(*s);
     std::vector<Light> lights = makeLights(scene.bounds, lightCount, 5);
     scene.lights = lights;
+    return scene;
+}
+
+// Point lights only: the culling and shading variants without spot code (kHasSpot = 0),
+// which the default light mix of the CLI (and the lavapipe benchmark) uses.
+Scene courtyardPointScene(uint32_t lightCount) {
+    Scene scene = courtyardScene(0);
+    LightGenOptions g;
+    g.count = lightCount;
+    g.seed = 7;
+    g.pointWeight = 1.0f;
+    g.spotWeight = 0.0f;
+    scene.lights = generateLights(scene.bounds, g);
     return scene;
 }
 
@@ -165,6 +179,9 @@ TEST(ForwardPlusReference, CourtyardOneLight) { expectMatchesReference(courtyard
 TEST(ForwardPlusReference, Courtyard256Lights) { expectMatchesReference(courtyardScene(256), small(96, 54, 1), 4); }
 TEST(ForwardPlusReference, Courtyard256LightsMsaa4) {
     expectMatchesReference(courtyardScene(256), small(96, 54, 4), 4);
+}
+TEST(ForwardPlusReference, Courtyard256PointLightsOnly) {
+    expectMatchesReference(courtyardPointScene(256), small(96, 54, 1), 4);
 }
 TEST(ForwardPlusReference, Courtyard4096LightsTiny) {
     expectMatchesReference(courtyardScene(4096), small(48, 27, 1), 4);
@@ -617,6 +634,45 @@ TEST(ForwardPlusCulling, BinnedListsEqualBruteForceOnCourtyard) {
     expectBinnedEqualsBruteForce(courtyardScene(512), small(128, 72, 1));
 }
 
+TEST(ForwardPlusCulling, BinnedListsEqualBruteForcePointLightsOnly) {
+    expectBinnedEqualsBruteForce(courtyardPointScene(512), small(128, 72, 1));
+}
+
+// --light-spheres pass reads each light's sphere from the light_spheres pass, inline computes
+// it per candidate (the culling before the pass): the same function, so the same tile records
+// and lists, byte for byte; with spot lights (cone test) and without, tiled (two lists) and
+// clustered.
+TEST(ForwardPlusCulling, SpherePassGivesTheInlineLists) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (bool spots : {true, false}) {
+        Scene scene = spots ? courtyardScene(256) : courtyardPointScene(256);
+        SceneGpu gpuScene(*ctx, scene);
+        for (const char* assign : {"tiled", "clustered"}) {
+            RenderSettings s = small(96, 54, 1);
+            s.set("light-assign", assign);
+            s.set("light-spheres", "inline");
+            ListRun inlined = runLists(*ctx, gpuScene, s);
+            s.set("light-spheres", "pass");
+            ListRun pass = runLists(*ctx, gpuScene, s);
+            ASSERT_EQ(inlined.tiles.size(), pass.tiles.size());
+            EXPECT_EQ(std::memcmp(inlined.tiles.data(), pass.tiles.data(),
+                                  inlined.tiles.size() * sizeof(gpu::FpTileLists)),
+                      0)
+                << assign << (spots ? ", spots" : "");
+            uint64_t listed = 0;
+            for (uint32_t t = 0; t < pass.grid.count(); ++t)
+                for (uint32_t list = 0; list < 2; ++list) {
+                    std::vector<uint32_t> a = listOf(inlined, t, list, "compact"), b = listOf(pass, t, list, "compact");
+                    EXPECT_EQ(a, b) << assign << " tile " << t << " list " << list;
+                    listed += b.size();
+                }
+            EXPECT_GT(listed, 0u);
+        }
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 TEST(ForwardPlusCulling, BinnedListsEqualBruteForceMsaa4Tile8) {
     RenderSettings s = small(96, 54, 4);
     s.set("tile", 8);
@@ -687,6 +743,33 @@ TEST(ForwardPlusClustered, Floor4096LightsTinyTile8Slices4) {
     RenderSettings s = clustered(small(40, 24, 1), 4);
     s.set("tile", 8);
     expectMatchesReference(floorScene(4096), s);
+}
+
+// --light-loop subgroup walks the OR of a tile's lanes' bit rows, each lane adding only its
+// own lights in the same ascending order: the image must be bit-identical to the lane loop
+// (1x; 4x shading every sample; 4x once per pixel, the other shader variant), and the blended
+// pass (courtyard-small has blended draws) too.
+TEST(ForwardPlusClustered, SubgroupLoopGivesTheLaneLoopsImage) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const std::string missing = la::subgroupLoopUnsupported(ctx->caps);
+    if (!missing.empty()) GTEST_SKIP() << missing;
+    Scene scene = courtyardScene(256);
+    SceneGpu gpuScene(*ctx, scene);
+    const std::pair<uint32_t, const char*> runs[] = {{1u, "pixel"}, {4u, "sample"}, {4u, "pixel"}};
+    for (const auto& [msaa, rate] : runs) {
+        RenderSettings s = clustered(small(96, 54, msaa));
+        s.set("msaa-shading", rate);
+        RunResult lane = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        s.set("light-loop", "subgroup");
+        RunResult subgroup = runOrFail(*ctx, gpuScene, "forwardplus", s);
+        EXPECT_EQ(statOf(lane, "light_loop_subgroup"), 0.0);
+        EXPECT_EQ(statOf(subgroup, "light_loop_subgroup"), 1.0);
+        EXPECT_FALSE(hasLeftOut(subgroup, "the subgroup light loop"));
+        EXPECT_EQ(lane.hdr.rgba, subgroup.hdr.rgba) << msaa << "x, " << rate;
+        EXPECT_GT(statOf(lane, "lights_per_cluster_mean"), 1.0); // clusters with several lights to walk
+    }
+    expectNoValidationMessages(*ctx);
 }
 
 // laSliceOf (include/light_assign.glsl) on the CPU, with front slices (blended scenes).
