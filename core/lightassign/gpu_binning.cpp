@@ -126,17 +126,29 @@ void GpuBinning::plan(FrameGraph& graph) {
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum)");
     cursors_ = graph.createBuffer("light_bin_cursors", uint64_t(tiles) * 4, "GPU binning: fill cursor per tile");
+    // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
+    // the sort. Their runs go to a buffer outside the graph (ordered by hand-written barriers).
     graph.addPass("light_binning",
                   {{counts_, Use::StorageWrite}, {offsets_, Use::StorageWrite}, {cursors_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
                       recordSizing(pc.cmd);
-                      stepBarrier(pc.cmd);
-                      recordRuns(pc.cmd);
                   });
-    // Read after the frame by the tests; also what keeps the pass live (its runs go to a
-    // buffer outside the graph).
+    graph.addPass("light_bin_fill", {{offsets_, Use::StorageRead}, {cursors_, Use::StorageWrite}},
+                  [this](PassContext& pc) {
+                      begin(pc.cmd);
+                      recordFill(pc.cmd);
+                  });
+    // The sort reads no cursor; it declares them written so that the graph keeps the fill and
+    // the sort live (a pass lives when it writes something needed) and orders it after the fill.
+    graph.addPass("light_bin_sort", {{offsets_, Use::StorageRead}, {cursors_, Use::StorageWrite}},
+                  [this](PassContext& pc) {
+                      begin(pc.cmd);
+                      recordSort(pc.cmd);
+                  });
+    // Read after the frame by the tests; also what keeps the passes live.
     graph.exportResource("light_bin_offsets", offsets_);
+    graph.exportResource("light_bin_cursors", cursors_);
 }
 
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
@@ -175,8 +187,8 @@ void GpuBinning::recordSizing(VkCommandBuffer cmd) {
     vkCmdDispatch(cmd, 1, 1, 1);
 }
 
-// Steps 6-7: the runs, into the target.
-void GpuBinning::recordRuns(VkCommandBuffer cmd) {
+// Step 6: the runs, unsorted, into the target (pass light_bin_fill).
+void GpuBinning::recordFill(VkCommandBuffer cmd) {
     // The previous frame's culling and shading read the target (WAR), and it was uploaded
     // before any frame: outside the graph, so ordered here.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
@@ -187,7 +199,11 @@ void GpuBinning::recordRuns(VkCommandBuffer cmd) {
         if (first > 0) stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
         dispatchFlat(cmd, pipelines_[kFill], locals_, {0, base_, first, std::min(grid_.tilesY, first + rows)});
     }
-    stepBarrier(cmd);
+}
+
+// Step 7: every run sorted in place (pass light_bin_sort).
+void GpuBinning::recordSort(VkCommandBuffer cmd) {
+    stepBarrier(cmd); // the fill's target writes (outside the graph)
     const gpu::DrawPush push{0, base_, 0, 0};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSort]);
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);

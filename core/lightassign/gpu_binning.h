@@ -1,7 +1,7 @@
 #pragma once
 // Light binning on the GPU (--light-bin gpu), shared by Forward+ and tiled deferred: the
-// runs la::binLights builds on the CPU (light_bins.h), built by the compute pass
-// "light_binning" every frame, exactly equal (include/light_binning.h says why):
+// runs la::binLights builds on the CPU (light_bins.h), built by the compute passes
+// "light_binning" (1-5), "light_bin_fill" (6) and "light_bin_sort" (7) every frame, exactly equal (include/light_binning.h says why):
 //   1. clear   counts and cursors
 //   2. rects   per light, its conservative tile rectangle; its corners in a difference array
 //              (computed again by the fill rather than stored: no memory per light)
@@ -40,7 +40,8 @@ class GpuBinning {
 
     // Plan time: steps 1-5 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
     LightBins sizes();
-    // The frame: pass "light_binning" (its own buffers in the graph; exports light_bin_offsets).
+    // The frame: passes "light_binning" (steps 1-5), "light_bin_fill" (6), "light_bin_sort" (7),
+    // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_cursors).
     void plan(FrameGraph& graph);
     // target: the buffer the culling reads its candidates from (uploaded outside the graph);
     // tile t's run goes to its words [baseWord + offsets[t], baseWord + offsets[t + 1]).
@@ -52,7 +53,8 @@ class GpuBinning {
     };
     void bind(const Bufs& b, VkBuffer target);
     void recordSizing(VkCommandBuffer cmd);
-    void recordRuns(VkCommandBuffer cmd);
+    void recordFill(VkCommandBuffer cmd);
+    void recordSort(VkCommandBuffer cmd);
     void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push);
     void begin(VkCommandBuffer cmd);
 
