@@ -73,6 +73,13 @@ TP_INLINE bool binBehindEye(vec3 c, float r) {
     return nearest > 0.0f;
 }
 
+// The whole padded sphere lies in front of the eye: the slab planes' half-spaces are nested
+// there, so the slab ranges are found by bisection (tile_bound.cpp: slabRange).
+TP_INLINE bool binInFront(vec3 c, float r) {
+    TP_PRECISE float farthest = c.z + r;
+    return farthest < 0.0f;
+}
+
 // plane: unit inward normal (xyz) and offset (w). True when the padded sphere lies wholly outside.
 TP_INLINE bool binOutside(vec4 plane, vec3 c, float r) {
     TP_PRECISE float d = ((plane.x * c.x + plane.y * c.y) + plane.z * c.z) + plane.w;

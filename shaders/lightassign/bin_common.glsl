@@ -38,9 +38,29 @@ uint binSaturatingAdd(uint a, uint b) {
     return a > 0xffffffffu - b ? 0xffffffffu : a + b;
 }
 
-// First and last slab the sphere meets (first > last: none); every slab is tested.
-ivec2 binSlabRange(uint loFirst, uint hiFirst, uint count, vec3 c, float r) {
+// First and last slab the sphere meets (first > last: none): la::conservativeTileRects's
+// slabRange (tile_bound.cpp), the same probes in the same order - bisection when the sphere
+// lies wholly in front of the eye (the half-spaces are nested there), else every slab.
+ivec2 binSlabRange(uint loFirst, uint hiFirst, uint count, bool flip, vec3 c, float r) {
     ivec2 range = ivec2(int(count), -1);
+    if (binInFront(c, r)) {
+        const uint before = flip ? loFirst : hiFirst, after = flip ? hiFirst : loFirst;
+        uint lo = 0u, hi = count; // the first slab that `before` does not exclude
+        while (lo < hi) {
+            const uint mid = (lo + hi) / 2u;
+            if (binOutside(slabs[before + mid], c, r)) lo = mid + 1u;
+            else hi = mid;
+        }
+        const uint begin = lo;
+        hi = count; // the first slab from `begin` on that `after` excludes
+        while (lo < hi) {
+            const uint mid = (lo + hi) / 2u;
+            if (binOutside(slabs[after + mid], c, r)) hi = mid;
+            else lo = mid + 1u;
+        }
+        if (begin < lo) range = ivec2(int(begin), int(lo) - 1);
+        return range;
+    }
     for (uint i = 0u; i < count; ++i) {
         if (binOutside(slabs[loFirst + i], c, r)) continue;
         if (binOutside(slabs[hiFirst + i], c, r)) continue;
@@ -60,8 +80,8 @@ ivec4 binRect(uint k) {
     const float r = binPaddedRadius(l.range, c);
     ivec4 rect = ivec4(int(bin.grid.x), -1, int(bin.grid.y), -1);
     if (binBehindEye(c, r)) return rect;
-    rect.xy = binSlabRange(bin.slabs.x, bin.slabs.y, bin.grid.x, c, r);
-    if (rect.x <= rect.y) rect.zw = binSlabRange(bin.slabs.z, bin.slabs.w, bin.grid.y, c, r);
+    rect.xy = binSlabRange(bin.slabs.x, bin.slabs.y, bin.grid.x, false, c, r);
+    if (rect.x <= rect.y) rect.zw = binSlabRange(bin.slabs.z, bin.slabs.w, bin.grid.y, true, c, r);
     return rect;
 }
 

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
@@ -13,6 +16,7 @@
 #include "core/lightassign/gpu_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
 #include "core/scene/procedural.h"
 #include "core/scene/lights.h"
 #include "include/light_binning.h"
@@ -64,6 +68,56 @@ Scene wholeScreen(uint32_t lights) {
     Scene s = makeFloorScene({});
     s.lights = pointsAndSpots(s.bounds, lights, 23, 60.0f, 80.0f);
     return s;
+}
+
+// The slab ranges by bisection (lights wholly in front of the eye) are the ranges of a scan
+// over every slab: the rectangles, and so the runs, the linear test gave. Lights everywhere
+// around a wide frustum, many straddling the eye's plane (those keep the scan).
+TEST(GpuLightBinning, BisectedRectanglesEqualEverySlabTested) {
+    const la::TileGrid g = la::makeTileGrid(1920, 1080, 16); // 120 x 68 tiles
+    const glm::mat4 proj = glm::perspective(glm::radians(70.0f), 1920.0f / 1080.0f, 0.05f, 200.0f);
+    const glm::mat4 view = glm::lookAt(glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(0.0f, 1.5f, -4.0f), glm::vec3(0, 1, 0));
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> x(-30.0f, 30.0f), y(-15.0f, 20.0f), z(-40.0f, 15.0f), r(0.05f, 6.0f);
+    std::vector<gpu::LightGpu> lights(20000);
+    for (gpu::LightGpu& l : lights) {
+        l.position = {x(rng), y(rng), z(rng)};
+        l.range = r(rng);
+        l.type = TP_LIGHT_POINT;
+    }
+    std::vector<uint32_t> local(lights.size());
+    for (uint32_t i = 0; i < local.size(); ++i) local[i] = i;
+    const std::vector<la::TileRect> rects = la::conservativeTileRects(g, view, proj, lights, local);
+    const std::vector<glm::vec4> slabs = la::binSlabPlanes(g, proj);
+    auto scan = [&](uint32_t loFirst, uint32_t hiFirst, uint32_t count, glm::vec3 c, float rad, int& a, int& b) {
+        a = int(count);
+        b = -1;
+        for (uint32_t i = 0; i < count; ++i)
+            if (!gpu::binOutside(slabs[loFirst + i], c, rad) && !gpu::binOutside(slabs[hiFirst + i], c, rad)) {
+                a = std::min(a, int(i));
+                b = int(i);
+            }
+    };
+    uint32_t inFront = 0, covering = 0, differing = 0;
+    for (size_t k = 0; k < lights.size(); ++k) {
+        const glm::vec3 c = gpu::binViewCentre(view, lights[k].position);
+        const float rad = gpu::binPaddedRadius(lights[k].range, c);
+        la::TileRect want;
+        if (!gpu::binBehindEye(c, rad)) {
+            scan(0, g.tilesX, g.tilesX, c, rad, want.x0, want.x1);
+            if (want.x0 <= want.x1) scan(2 * g.tilesX, 2 * g.tilesX + g.tilesY, g.tilesY, c, rad, want.y0, want.y1);
+        }
+        inFront += gpu::binInFront(c, rad) ? 1u : 0u;
+        covering += want.empty() ? 0u : 1u;
+        const la::TileRect& got = rects[k];
+        if (want.empty() != got.empty() ||
+            (!want.empty() && (want.x0 != got.x0 || want.x1 != got.x1 || want.y0 != got.y0 || want.y1 != got.y1)))
+            ++differing;
+    }
+    EXPECT_EQ(differing, 0u) << "of " << lights.size();
+    EXPECT_GT(inFront, 5000u);  // the bisection ran
+    EXPECT_GT(covering, 2000u); // and found rectangles
+    EXPECT_LT(inFront, 19000u); // some straddle or lie behind the eye
 }
 
 struct Binned {
