@@ -61,7 +61,7 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     localList_ = createBufferWithData(ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                       {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
     std::vector<SetBinding> bindings;
-    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_TARGET; ++b)
+    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_BIG; ++b)
         bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     set_ = createPassSet(ctx_, bindings);
     set_.pass = "light_binning";
@@ -84,6 +84,7 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_OFFSETS, b.offsets);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_CURSORS, b.cursors);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_TARGET, target);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_BIG, b.big);
 }
 
 LightBins GpuBinning::sizes() {
@@ -95,11 +96,11 @@ LightBins GpuBinning::sizes() {
     };
     const uint32_t tiles = grid_.count();
     Buffer counts = make(tiles, "light_bin_sizing_counts"), offsets = make(tiles + 1, "light_bin_sizing_offsets"),
-           cursors = make(tiles, "light_bin_sizing_cursors");
-    bind({counts.buffer, offsets.buffer, cursors.buffer}, cursors.buffer); // target: unused here
+           cursors = make(tiles, "light_bin_sizing_cursors"), big = make(1, "light_bin_sizing_big");
+    bind({counts.buffer, offsets.buffer, cursors.buffer, big.buffer}, cursors.buffer); // target: unused here
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         begin(cmd);
-        recordSizing(cmd);
+        recordSizing(cmd, 0); // large rectangles counted, not listed
         // readbackBuffer copies in a later submission.
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -117,6 +118,7 @@ LightBins GpuBinning::sizes() {
     bins.slots = makeCompactLayout(bins.bound).slots;
     if (!bins.bound.empty()) bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
     maxBound_ = bins.maxBound;
+    bigLights_ = words(big, 1)[0];
     return bins;
 }
 
@@ -126,15 +128,21 @@ void GpuBinning::plan(FrameGraph& graph) {
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum)");
     cursors_ = graph.createBuffer("light_bin_cursors", uint64_t(tiles) * 4, "GPU binning: fill cursor per tile");
+    big_ = graph.createBuffer("light_bin_big", (uint64_t(bigLights_) + 1) * 4,
+                              "GPU binning: the lights of large rectangles, filled by a workgroup each");
     // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
     // the sort. Their runs go to a buffer outside the graph (ordered by hand-written barriers).
     graph.addPass("light_binning",
-                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageWrite}, {cursors_, Use::StorageWrite}},
+                  {{counts_, Use::StorageWrite},
+                   {offsets_, Use::StorageWrite},
+                   {cursors_, Use::StorageWrite},
+                   {big_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
-                      recordSizing(pc.cmd);
+                      recordSizing(pc.cmd, bigLights_);
                   });
-    graph.addPass("light_bin_fill", {{offsets_, Use::StorageRead}, {cursors_, Use::StorageWrite}},
+    graph.addPass("light_bin_fill",
+                  {{offsets_, Use::StorageRead}, {cursors_, Use::StorageWrite}, {big_, Use::StorageRead}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
                       recordFill(pc.cmd);
@@ -154,7 +162,9 @@ void GpuBinning::plan(FrameGraph& graph) {
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
     if (baseWord > 0xffffffffull) throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
-    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(cursors_).buffer}, target);
+    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(cursors_).buffer,
+          graph.buffer(big_).buffer},
+         target);
 }
 
 void GpuBinning::begin(VkCommandBuffer cmd) {
@@ -162,9 +172,13 @@ void GpuBinning::begin(VkCommandBuffer cmd) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
 }
 
-// 64 invocations per workgroup over `count` items, workgroups in rows of at most 65,535.
+// 64 invocations per workgroup over `count` items.
 void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push) {
-    const uint32_t groups = (count + 63) / 64;
+    dispatchGroups(cmd, pipeline, (count + 63) / 64, push);
+}
+
+// `groups` workgroups, in rows of at most 65,535 (a dispatch dimension's limit).
+void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups, const gpu::DrawPush& push) {
     if (groups == 0) return;
     const uint32_t x = std::min(groups, 65535u), y = (groups + x - 1) / x;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
@@ -172,12 +186,12 @@ void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t
     vkCmdDispatch(cmd, x, y, 1);
 }
 
-// Steps 1-5: counts and offsets.
-void GpuBinning::recordSizing(VkCommandBuffer cmd) {
+// Steps 1-5: counts and offsets; the big list, up to `bigCapacity` lights.
+void GpuBinning::recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity) {
     const gpu::DrawPush push{0, base_, 0, 0};
-    dispatchFlat(cmd, pipelines_[kClear], grid_.count(), push);
+    dispatchFlat(cmd, pipelines_[kClear], std::max(grid_.count(), 1u), push); // 1: the big list's count
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kRects], locals_, push);
+    dispatchFlat(cmd, pipelines_[kRects], locals_, {bigCapacity, base_, 0, 0});
     stepBarrier(cmd);
     dispatchFlat(cmd, pipelines_[kRows], grid_.tilesY, push);
     stepBarrier(cmd);
@@ -197,7 +211,10 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
     const uint32_t rows = std::max(1u, TP_BIN_FILL_BUDGET / std::max(1u, grid_.tilesX));
     for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
         if (first > 0) stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
-        dispatchFlat(cmd, pipelines_[kFill], locals_, {0, base_, first, std::min(grid_.tilesY, first + rows)});
+        // The small rectangles' workgroups, then one per large rectangle (bin_fill.comp).
+        const uint32_t small = (locals_ + 63) / 64;
+        dispatchGroups(cmd, pipelines_[kFill], small + bigLights_,
+                       {small, base_, first, std::min(grid_.tilesY, first + rows)});
     }
 }
 

@@ -7,7 +7,8 @@
 //              (computed again by the fill rather than stored: no memory per light)
 //   3-4. scans the difference array along rows, then columns: the count per tile (the bound)
 //   5. offsets the counts' exclusive prefix sum (the compact layout)
-//   6. fill    per light and covered tile, an atomic cursor's slot (scheduling order)
+//   6. fill    per light and covered tile, an atomic cursor's slot (scheduling order); an
+//              invocation per light, a workgroup per light of a large rectangle (listed by 2)
 //   7. sort    every tile's run ascending (bitonic; shared memory, or in place when long)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
 // steps 1-5 once, one readback (tiles + 1 words), the numbers the CPU path gives.
@@ -40,6 +41,8 @@ class GpuBinning {
 
     // Plan time: steps 1-5 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
     LightBins sizes();
+    // From sizes(): how many lights the fill gives a workgroup each (more than TP_BIN_BIG_RECT tiles).
+    uint32_t bigLights() const { return bigLights_; }
     // The frame: passes "light_binning" (steps 1-5), "light_bin_fill" (6), "light_bin_sort" (7),
     // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_cursors).
     void plan(FrameGraph& graph);
@@ -49,13 +52,14 @@ class GpuBinning {
 
   private:
     struct Bufs {
-        VkBuffer counts, offsets, cursors;
+        VkBuffer counts, offsets, cursors, big;
     };
     void bind(const Bufs& b, VkBuffer target);
-    void recordSizing(VkCommandBuffer cmd);
+    void recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity);
     void recordFill(VkCommandBuffer cmd);
     void recordSort(VkCommandBuffer cmd);
     void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push);
+    void dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups, const gpu::DrawPush& push);
     void begin(VkCommandBuffer cmd);
 
     GpuContext& ctx_;
@@ -64,9 +68,10 @@ class GpuBinning {
     uint32_t locals_ = 0;
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
-    uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
+    uint32_t maxBound_ = 0;  // from sizes(): whether long runs need bin_sort_step
+    uint32_t bigLights_ = 0; // from sizes(): lights whose rectangle covers more than TP_BIN_BIG_RECT tiles
     Buffer inputs_, localList_;
-    ResourceHandle counts_, offsets_, cursors_;
+    ResourceHandle counts_, offsets_, cursors_, big_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::vector<VkPipeline> pipelines_; // one per step (kSteps in gpu_binning.cpp)

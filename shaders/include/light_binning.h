@@ -22,12 +22,22 @@ namespace tp::gpu {
 #define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (saturates at 2^32 - 1)
 #define TP_BIN_BINDING_CURSORS 4 // uint[tiles]: the fill's cursor per tile
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
+#define TP_BIN_BINDING_BIG 6     // uint[]: how many lights have a large rectangle, then those lights (k)
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.
 #define TP_BIN_BASE pad0
 #define TP_BIN_FIRST pad1
 #define TP_BIN_END pad2
+// The rectangles step: how many large-rectangle lights the big list holds (0 at plan time:
+// they are only counted). The fill: how many of its workgroups take 64 lights each; the
+// workgroups after those take one large-rectangle light each.
+#define TP_BIN_BIG_CAPACITY materialIndex
+#define TP_BIN_SMALL_GROUPS materialIndex
+// A light whose rectangle covers more tiles than this is filled by a workgroup (its tiles
+// spread over 64 invocations), not by one invocation: a light over much of the screen would
+// otherwise be one long chain of dependent atomics while the rest of the GPU waits.
+#define TP_BIN_BIG_RECT 32u
 
 // Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32); longer ones
 // in the target buffer, one dispatch per bitonic step.

@@ -25,6 +25,10 @@ layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_CURSORS) buffer BinCu
 layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_TARGET) buffer BinTargetBlock {
     uint target[];
 };
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_BIG) buffer BinBigBlock {
+    uint bigCount;
+    uint bigLights[];
+};
 
 // A flat index (light or tile): 64 invocations per workgroup, workgroups in a 2D grid (a dispatch
 // dimension holds at most 65,535).
@@ -83,6 +87,16 @@ ivec4 binRect(uint k) {
     rect.xy = binSlabRange(bin.slabs.x, bin.slabs.y, bin.grid.x, false, c, r);
     if (rect.x <= rect.y) rect.zw = binSlabRange(bin.slabs.z, bin.slabs.w, bin.grid.y, true, c, r);
     return rect;
+}
+
+// Tiles a rectangle covers (0 when empty).
+uint binRectArea(ivec4 rect) {
+    return rect.x > rect.y || rect.z > rect.w ? 0u : uint(rect.y - rect.x + 1) * uint(rect.w - rect.z + 1);
+}
+
+// Light `light`'s slot in tile t's run (a cursor per tile: scheduling order until the sort).
+void binFillTile(uint t, uint light) {
+    target[draw.TP_BIN_BASE + offsets[t] + atomicAdd(cursors[t], 1u)] = light;
 }
 
 // The padded power of two a run of n sorts as.

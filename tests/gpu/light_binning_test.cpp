@@ -124,6 +124,8 @@ struct Binned {
     la::LightBins cpu;        // la::binLights, with candidates
     la::LightBins sizes;      // the GPU's plan-time run
     std::vector<uint32_t> offsets, runs; // the GPU's frame: its offsets, the target's runs
+    uint32_t bigLights = 0;              // filled by a workgroup each
+    uint32_t cpuBigLights = 0;           // rectangles of more than TP_BIN_BIG_RECT tiles, on the CPU
 };
 
 // One frame of the light_binning pass alone, writing its runs `base` words into a buffer.
@@ -134,8 +136,11 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     const std::vector<uint32_t> local = la::classifyLights(scene.shadingLights()).local;
     const gpu::FrameUniforms& f = scene.shadingFrame();
     out.cpu = la::binLights(grid, f.view, f.proj, scene.shadingLights(), local, true);
+    for (const la::TileRect& r : la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local))
+        if (!r.empty() && uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1) > TP_BIN_BIG_RECT) ++out.cpuBigLights;
     la::GpuBinning gpuBin(ctx, scene, grid, local, "test");
     out.sizes = gpuBin.sizes();
+    out.bigLights = gpuBin.bigLights();
     const uint32_t base = 7; // the runs need not start at word 0
     Buffer target = createBuffer(ctx, (base + out.sizes.slots + 1) * 4,
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -161,9 +166,11 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     return out;
 }
 
-void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t minLongest = 1) {
+// Returns the number of lights the fill gave a workgroup each.
+uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t minLongest = 1) {
     auto ctx = makeValidatedContext();
-    ASSERT_TRUE(ctx);
+    EXPECT_TRUE(ctx);
+    if (!ctx) return 0;
     SceneGpu gpuScene(*ctx, scene);
     Binned b = bin(*ctx, gpuScene, w, h, tile);
     EXPECT_EQ(b.sizes.bound, b.cpu.bound);
@@ -171,7 +178,8 @@ void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, u
     EXPECT_EQ(b.sizes.slots, b.cpu.slots);
     EXPECT_EQ(b.sizes.maxBound, b.cpu.maxBound);
     EXPECT_EQ(b.offsets, b.cpu.offsets);
-    ASSERT_EQ(b.runs.size(), b.cpu.candidates.size());
+    EXPECT_EQ(b.runs.size(), b.cpu.candidates.size());
+    if (b.runs.size() != b.cpu.candidates.size()) return 0;
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
     uint32_t differing = 0;
     for (uint32_t t = 0; t < grid.count(); ++t)
@@ -181,6 +189,8 @@ void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, u
     EXPECT_GE(b.cpu.maxBound, minLongest);
     EXPECT_GT(b.cpu.slots, 0u);
     expectNoValidationMessages(*ctx);
+    EXPECT_EQ(b.bigLights, b.cpuBigLights);
+    return b.bigLights;
 }
 
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile8) { expectSameRuns(courtyard(512), 128, 72, 8); }
@@ -195,6 +205,18 @@ TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
 // 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
     expectSameRuns(wholeScreen(TP_BIN_SHARED_SORT + 404), 32, 24, 8, TP_BIN_SHARED_SORT + 1);
+}
+
+// Lights near the eye cover many tiles: the fill gives those a workgroup each, the rest an
+// invocation each, in one dispatch; and in several (rows of tiles per dispatch).
+TEST(GpuLightBinning, LargeRectanglesFilledByWorkgroups) {
+    const uint32_t big = expectSameRuns(aroundTheEye(1024), 256, 160, 8); // 32 x 20 tiles
+    EXPECT_GT(big, 50u);
+    EXPECT_LT(big, 1000u);
+}
+TEST(GpuLightBinning, LargeRectanglesOverSeveralFillDispatches) {
+    // 2,048 x 24 tiles of 8: TP_BIN_FILL_BUDGET / 2,048 = 16 rows per dispatch, two dispatches.
+    EXPECT_GT(expectSameRuns(aroundTheEye(64), 16384, 192, 8), 10u);
 }
 
 TEST(GpuLightBinning, NoLocalLights) {
