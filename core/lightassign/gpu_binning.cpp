@@ -16,10 +16,10 @@
 namespace tp::la {
 namespace {
 
-enum Step { kClear, kRects, kRows, kColumns, kOffsets, kFill, kSort, kSortStep, kSteps };
-const char* const kShaders[kSteps] = {"la_bin_clear_comp",   "la_bin_rects_comp",  "la_bin_scan_rows_comp",
+enum Step { kClear, kRects, kRows, kColumns, kOffsets, kFill, kSort, kSortStep, kSortLocal, kSteps };
+const char* const kShaders[kSteps] = {"la_bin_clear_comp",        "la_bin_rects_comp",   "la_bin_scan_rows_comp",
                                       "la_bin_scan_columns_comp", "la_bin_offsets_comp", "la_bin_fill_comp",
-                                      "la_bin_sort_comp",    "la_bin_sort_step_comp"};
+                                      "la_bin_sort_comp",         "la_bin_sort_step_comp", "la_bin_sort_local_comp"};
 
 // Between the steps of the pass: each reads what the one before wrote (hand-written: the
 // graph orders passes, not the dispatches within one).
@@ -226,17 +226,30 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDispatch(cmd, grid_.tilesX, grid_.tilesY, 1);
     if (maxBound_ > TP_BIN_SHARED_SORT) {
-        // Runs too long for shared memory: one dispatch per bitonic step, up to the longest.
-        const uint32_t size = sortSize(maxBound_);
+        // Runs too long for shared memory: a bitonic sort over blocks of TP_BIN_SHARED_SORT.
+        // Steps within a block in shared memory (bin_sort_local), one dispatch for all the
+        // steps of a merge that stay in the block; a dispatch per step only for the distances
+        // of a block or more (bin_sort_step): for a run of 16,384, 6 dispatches, not 105.
+        const uint32_t size = sortSize(maxBound_), blocks = size / TP_BIN_SHARED_SORT;
         const uint32_t chunks = (size / 2 + 64 * TP_BIN_STEP_PAIRS - 1) / (64 * TP_BIN_STEP_PAIRS);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortStep]);
-        for (uint32_t k = 2; k <= size; k <<= 1)
-            for (uint32_t j = k >> 1; j > 0; j >>= 1) {
+        auto local = [&](uint32_t kFrom, uint32_t kTo) {
+            stepBarrier(cmd);
+            const gpu::DrawPush p{0, base_, kFrom, kTo};
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortLocal]);
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(p), &p);
+            vkCmdDispatch(cmd, blocks, grid_.tilesX, grid_.tilesY);
+        };
+        local(2, TP_BIN_SHARED_SORT); // every block sorted
+        for (uint32_t k = 2 * TP_BIN_SHARED_SORT; k <= size; k <<= 1) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortStep]);
+            for (uint32_t j = k >> 1; j >= TP_BIN_SHARED_SORT; j >>= 1) {
                 stepBarrier(cmd);
                 const gpu::DrawPush step{0, base_, k, j};
                 vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(step), &step);
                 vkCmdDispatch(cmd, chunks, grid_.tilesX, grid_.tilesY);
             }
+            local(k, k); // the merge's steps below the block
+        }
     }
     // The culling (compute) and Forward+'s shading (fragment: the same buffer) read it next.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

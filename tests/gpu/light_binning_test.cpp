@@ -206,6 +206,11 @@ TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
     expectSameRuns(wholeScreen(TP_BIN_SHARED_SORT + 404), 32, 24, 8, TP_BIN_SHARED_SORT + 1);
 }
+// Runs of 9,000 (sorted as 16,384): two merges past the block, each with steps at distances
+// of a block or more (a dispatch each) and steps within the blocks (shared memory).
+TEST(GpuLightBinning, WholeScreenRunsOfFourBlocks) {
+    expectSameRuns(wholeScreen(2 * TP_BIN_SHARED_SORT + 808), 24, 16, 8, 2 * TP_BIN_SHARED_SORT + 1);
+}
 
 // Lights near the eye cover many tiles: the fill gives those a workgroup each, the rest an
 // invocation each, in one dispatch; and in several (rows of tiles per dispatch).
