@@ -16,10 +16,10 @@
 namespace tp::la {
 namespace {
 
-enum Step { kClear, kRects, kRows, kColumns, kOffsets, kFill, kSort, kSortStep, kSortLocal, kSteps };
-const char* const kShaders[kSteps] = {"la_bin_clear_comp",        "la_bin_rects_comp",   "la_bin_scan_rows_comp",
-                                      "la_bin_scan_columns_comp", "la_bin_offsets_comp", "la_bin_fill_comp",
-                                      "la_bin_sort_comp",         "la_bin_sort_step_comp", "la_bin_sort_local_comp"};
+enum Step { kClear, kRects, kRows, kColumns, kFill, kSort, kSortStep, kSortLocal, kSteps };
+const char* const kShaders[kSteps] = {"la_bin_clear_comp",        "la_bin_rects_comp", "la_bin_scan_rows_comp",
+                                      "la_bin_scan_columns_comp", "la_bin_fill_comp",  "la_bin_sort_comp",
+                                      "la_bin_sort_step_comp",    "la_bin_sort_local_comp"};
 
 // Between the steps of the pass: each reads what the one before wrote (hand-written: the
 // graph orders passes, not the dispatches within one).
@@ -82,7 +82,7 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_LOCALS, localList_.buffer);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_COUNTS, b.counts);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_OFFSETS, b.offsets);
-    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_CURSORS, b.cursors);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_ROWS, b.rows);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_TARGET, target);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_BIG, b.big);
 }
@@ -96,8 +96,8 @@ LightBins GpuBinning::sizes() {
     };
     const uint32_t tiles = grid_.count();
     Buffer counts = make(tiles, "light_bin_sizing_counts"), offsets = make(tiles + 1, "light_bin_sizing_offsets"),
-           cursors = make(tiles, "light_bin_sizing_cursors"), big = make(1, "light_bin_sizing_big");
-    bind({counts.buffer, offsets.buffer, cursors.buffer, big.buffer}, cursors.buffer); // target: unused here
+           rows = make(grid_.tilesY, "light_bin_sizing_rows"), big = make(1, "light_bin_sizing_big");
+    bind({counts.buffer, offsets.buffer, rows.buffer, big.buffer}, rows.buffer); // target: unused here
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         begin(cmd);
         recordSizing(cmd, 0); // large rectangles counted, not listed
@@ -127,7 +127,7 @@ void GpuBinning::plan(FrameGraph& graph) {
     counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4, "GPU binning: lights covering each tile");
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum)");
-    cursors_ = graph.createBuffer("light_bin_cursors", uint64_t(tiles) * 4, "GPU binning: fill cursor per tile");
+    rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4, "GPU binning: per row, its scans' sum");
     big_ = graph.createBuffer("light_bin_big", (uint64_t(bigLights_) + 1) * 4,
                               "GPU binning: the lights of large rectangles, filled by a workgroup each");
     // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
@@ -135,34 +135,35 @@ void GpuBinning::plan(FrameGraph& graph) {
     graph.addPass("light_binning",
                   {{counts_, Use::StorageWrite},
                    {offsets_, Use::StorageWrite},
-                   {cursors_, Use::StorageWrite},
+                   {rows_, Use::StorageWrite},
                    {big_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
                       recordSizing(pc.cmd, bigLights_);
                   });
     graph.addPass("light_bin_fill",
-                  {{offsets_, Use::StorageRead}, {cursors_, Use::StorageWrite}, {big_, Use::StorageRead}},
+                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageRead}, {big_, Use::StorageRead}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
                       recordFill(pc.cmd);
                   });
-    // The sort reads no cursor; it declares them written so that the graph keeps the fill and
-    // the sort live (a pass lives when it writes something needed) and orders it after the fill.
-    graph.addPass("light_bin_sort", {{offsets_, Use::StorageRead}, {cursors_, Use::StorageWrite}},
+    // The sort touches no count (the fill counted them down); it declares them written so that
+    // the graph keeps the fill and the sort live (a pass lives when it writes something needed)
+    // and orders it after the fill.
+    graph.addPass("light_bin_sort", {{offsets_, Use::StorageRead}, {counts_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
                       recordSort(pc.cmd);
                   });
     // Read after the frame by the tests; also what keeps the passes live.
     graph.exportResource("light_bin_offsets", offsets_);
-    graph.exportResource("light_bin_cursors", cursors_);
+    graph.exportResource("light_bin_counts", counts_);
 }
 
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
     if (baseWord > 0xffffffffull) throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
-    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(cursors_).buffer,
+    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(rows_).buffer,
           graph.buffer(big_).buffer},
          target);
 }
@@ -186,22 +187,22 @@ void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32
     vkCmdDispatch(cmd, x, y, 1);
 }
 
-// Steps 1-5: counts and offsets; the big list, up to `bigCapacity` lights.
+// Steps 1-4: counts and offsets; the big list, up to `bigCapacity` lights.
 void GpuBinning::recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity) {
     const gpu::DrawPush push{0, base_, 0, 0};
     dispatchFlat(cmd, pipelines_[kClear], std::max(grid_.count(), 1u), push); // 1: the big list's count
     stepBarrier(cmd);
     dispatchFlat(cmd, pipelines_[kRects], locals_, {bigCapacity, base_, 0, 0});
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kRows], grid_.tilesY, push);
+    // A workgroup per row, then per column (bin_scan_columns.comp: counts and offsets).
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kRows]);
+    vkCmdDispatch(cmd, grid_.tilesY, 1, 1);
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kColumns], grid_.tilesX, push);
-    stepBarrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kOffsets]);
-    vkCmdDispatch(cmd, 1, 1, 1);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kColumns]);
+    vkCmdDispatch(cmd, grid_.tilesX, 1, 1);
 }
 
-// Step 6: the runs, unsorted, into the target (pass light_bin_fill).
+// Step 5: the runs, unsorted, into the target (pass light_bin_fill).
 void GpuBinning::recordFill(VkCommandBuffer cmd) {
     // The previous frame's culling and shading read the target (WAR), and it was uploaded
     // before any frame: outside the graph, so ordered here.
@@ -218,7 +219,7 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
     }
 }
 
-// Step 7: every run sorted in place (pass light_bin_sort).
+// Step 6: every run sorted in place (pass light_bin_sort).
 void GpuBinning::recordSort(VkCommandBuffer cmd) {
     stepBarrier(cmd); // the fill's target writes (outside the graph)
     const gpu::DrawPush push{0, base_, 0, 0};

@@ -18,9 +18,11 @@ namespace tp::gpu {
 // ---- set TP_SET_PASS of the light_binning pass (all storage buffers) ----
 #define TP_BIN_BINDING_INPUTS 0  // BinInputs, then vec4 slabs[]: columns lo, columns hi, rows lo, rows hi
 #define TP_BIN_BINDING_LOCALS 1  // uint[]: the point/spot light indices, ascending (la::LightClasses::local)
-#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles cover it
-#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (saturates at 2^32 - 1)
-#define TP_BIN_BINDING_CURSORS 4 // uint[tiles]: the fill's cursor per tile
+#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles
+                                 // cover it; the fill counts it down (its cursor)
+#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (modulo 2^32: a
+                                 // layout past 2^32 - 1 is refused before any frame, from the counts)
+#define TP_BIN_BINDING_ROWS 4    // uint[tilesY]: per row of tiles, the sum of its row prefix sums (scans)
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
 #define TP_BIN_BINDING_BIG 6     // uint[]: how many lights have a large rectangle, then those lights (k)
 
@@ -45,7 +47,6 @@ namespace tp::gpu {
 #define TP_BIN_SORT_GROUP 64u      // invocations sorting one tile's run
 #define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)
 #define TP_BIN_STEP_PAIRS 64u      // long-run step: pairs per invocation and dispatch
-#define TP_BIN_SCAN_GROUP 256u     // the offsets' prefix sum: one workgroup
 // Tiles one fill dispatch may visit per light: lavapipe ends an invocation after 65,535
 // loop iterations in total (deferred/tiled_lighting.h); the slab loops add tilesX + tilesY.
 #define TP_BIN_FILL_BUDGET 32768u

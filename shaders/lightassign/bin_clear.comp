@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 1: every tile's count (the difference array) and fill cursor to 0, and
-// the big list's count.
+// light_binning, step 1: every tile's count (the difference array) to 0, and the big list's
+// count.
 #include "lightassign/bin_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -11,5 +11,4 @@ void main() {
     if (t == 0u) bigCount = 0u;
     if (t >= bin.grid.z) return;
     counts[t] = 0u;
-    cursors[t] = 0u;
 }

@@ -19,8 +19,8 @@ layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_COUNTS) buffer BinCou
 layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_OFFSETS) buffer BinOffsetBlock {
     uint offsets[];
 };
-layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_CURSORS) buffer BinCursorBlock {
-    uint cursors[];
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_ROWS) buffer BinRowBlock {
+    uint rowSums[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_TARGET) buffer BinTargetBlock {
     uint target[];
@@ -34,12 +34,6 @@ layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_BIG) buffer BinBigBlo
 // dimension holds at most 65,535).
 uint binFlatIndex() {
     return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
-}
-
-// Sums that would pass 2^32 - 1 stay there: the CPU clamps its offsets the same way (and
-// refuses such a layout before any frame).
-uint binSaturatingAdd(uint a, uint b) {
-    return a > 0xffffffffu - b ? 0xffffffffu : a + b;
 }
 
 // First and last slab the sphere meets (first > last: none): la::conservativeTileRects's
@@ -94,9 +88,10 @@ uint binRectArea(ivec4 rect) {
     return rect.x > rect.y || rect.z > rect.w ? 0u : uint(rect.y - rect.x + 1) * uint(rect.w - rect.z + 1);
 }
 
-// Light `light`'s slot in tile t's run (a cursor per tile: scheduling order until the sort).
+// Light `light`'s slot in tile t's run: the tile's count, counted down (atomic: scheduling
+// order until the sort), is the cursor.
 void binFillTile(uint t, uint light) {
-    target[draw.TP_BIN_BASE + offsets[t] + atomicAdd(cursors[t], 1u)] = light;
+    target[draw.TP_BIN_BASE + offsets[t] + atomicAdd(counts[t], 0xffffffffu) - 1u] = light;
 }
 
 // The padded power of two a run of n sorts as.

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 7: each tile's run sorted ascending, a workgroup per tile, in shared
-// memory (runs of 2 to TP_BIN_SHARED_SORT lights; longer ones: bin_sort_step.comp). Runs up
+// light_bin_sort (step 6): each tile's run sorted ascending, a workgroup per tile, in shared
+// memory (runs of 2 to TP_BIN_SHARED_SORT lights; longer ones: bin_sort_local.comp and bin_sort_step.comp). Runs up
 // to TP_BIN_RANK_SORT lights by rank; longer ones by a bitonic
 // sort over the run padded to a power of two with +inf (0xffffffff), in the formulation
 // whose comparators all put the smaller value first (each merge starts by comparing i with

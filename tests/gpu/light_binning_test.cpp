@@ -197,6 +197,12 @@ TEST(GpuLightBinning, CourtyardPointsAndSpotsTile8) { expectSameRuns(courtyard(5
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile16) { expectSameRuns(courtyard(512), 128, 72, 16); }
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) { expectSameRuns(courtyard(512), 160, 90, 32); }
 TEST(GpuLightBinning, Floor2048Lights) { expectSameRuns(floorWith(2048), 160, 96, 16); }
+// Rows and columns longer than the scans' workgroup (64): each invocation scans a share of
+// several tiles (12 x 150 tiles, then 150 x 12).
+TEST(GpuLightBinning, TallAndWideGridsScanInShares) {
+    expectSameRuns(floorWith(2048), 96, 1200, 8);
+    expectSameRuns(floorWith(2048), 1200, 96, 8);
+}
 TEST(GpuLightBinning, LightsAroundAndBehindTheEye) { expectSameRuns(aroundTheEye(1024), 96, 64, 8); }
 // 1,000 lights in every tile: runs past the rank sort, bitonic in shared memory.
 TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
