@@ -38,10 +38,17 @@ void fillBig(uint b) {
     const uvec2 rows = binRows(rect);
     if (rows.x >= rows.y) return;
     const uint W = bin.grid.x, light = locals[k], width = uint(rect.y - rect.x + 1);
-    const uint tiles = (rows.y - rows.x) * width;
-    for (uint i = gl_LocalInvocationIndex; i < tiles; i += 64u) {
-        const uint row = i / width;
-        binFillTile((rows.x + row) * W + uint(rect.x) + (i - row * width), light);
+    // Tile i of the rectangle's rows is (i / width, i % width); stepping i by 64 steps that
+    // by (64 / width, 64 % width) with a carry: no division per tile.
+    const uint lane = gl_LocalInvocationIndex, stepRows = 64u / width, stepCols = 64u % width;
+    uint y = rows.x + lane / width, x = lane % width;
+    for (; y < rows.y; y += stepRows) {
+        binFillTile(y * W + uint(rect.x) + x, light);
+        x += stepCols;
+        if (x >= width) {
+            x -= width;
+            ++y;
+        }
     }
 }
 
