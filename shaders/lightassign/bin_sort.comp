@@ -38,6 +38,8 @@ void main() {
                 // (p / j) * 2j + p % j, without dividing: j is a power of two
                 const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
                 const uint other = j == k >> 1u ? i ^ (k - 1u) : i + j;
+                // other > i: past the run, +inf, which keeps the order (as in bin_sort_step).
+                if (other >= n) continue;
                 const uint a = run[i], b = run[other];
                 if (a > b) {
                     run[i] = b;
