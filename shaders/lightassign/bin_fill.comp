@@ -1,13 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_bin_fill: every light into the runs of the tiles its rectangle covers, rows
+// light_bin_fill (step 5): every light into the runs of the tiles its rectangle covers, rows
 // [TP_BIN_FIRST, TP_BIN_END) of tiles per dispatch (lavapipe's loop limit: at most
 // TP_BIN_FILL_BUDGET tiles per light and dispatch). Each tile's count, counted down
-// (atomic), is its cursor: the order inside a run depends on scheduling until the sort. The first TP_BIN_SMALL_GROUPS
-// workgroups take an invocation per light and fill the small rectangles (at most
-// TP_BIN_BIG_RECT tiles, a short loop); each workgroup after those takes one light of the
-// big list and spreads its tiles over its invocations, so that no invocation walks a
-// rectangle over much of the screen alone.
+// (atomic), is its cursor: the order inside a run depends on scheduling until the sort.
+// The first TP_BIN_SMALL_GROUPS workgroups take an invocation per light and fill the small
+// rectangles (at most TP_BIN_BIG_RECT tiles, a short loop); each workgroup after those takes
+// one light of the big list and spreads its tiles over its invocations, so that no
+// invocation walks a rectangle over much of the screen alone.
 #include "lightassign/bin_common.glsl"
 
 layout(local_size_x = 64) in;
