@@ -16,10 +16,10 @@
 namespace tp::la {
 namespace {
 
-enum Step { kClear, kRects, kRows, kColumns, kOffsets, kFill, kSort, kSortStep, kSteps };
-const char* const kShaders[kSteps] = {"la_bin_clear_comp",   "la_bin_rects_comp",  "la_bin_scan_rows_comp",
-                                      "la_bin_scan_columns_comp", "la_bin_offsets_comp", "la_bin_fill_comp",
-                                      "la_bin_sort_comp",    "la_bin_sort_step_comp"};
+enum Step { kClear, kRects, kRows, kColumns, kFill, kSort, kSortStep, kSortLocal, kSteps };
+const char* const kShaders[kSteps] = {"la_bin_clear_comp",        "la_bin_rects_comp", "la_bin_scan_rows_comp",
+                                      "la_bin_scan_columns_comp", "la_bin_fill_comp",  "la_bin_sort_comp",
+                                      "la_bin_sort_step_comp",    "la_bin_sort_local_comp"};
 
 // Between the steps of the pass: each reads what the one before wrote (hand-written: the
 // graph orders passes, not the dispatches within one).
@@ -61,7 +61,7 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     localList_ = createBufferWithData(ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                       {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
     std::vector<SetBinding> bindings;
-    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_TARGET; ++b)
+    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_BIG; ++b)
         bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     set_ = createPassSet(ctx_, bindings);
     set_.pass = "light_binning";
@@ -82,8 +82,9 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_LOCALS, localList_.buffer);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_COUNTS, b.counts);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_OFFSETS, b.offsets);
-    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_CURSORS, b.cursors);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_ROWS, b.rows);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_TARGET, target);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_BIG, b.big);
 }
 
 LightBins GpuBinning::sizes() {
@@ -95,11 +96,11 @@ LightBins GpuBinning::sizes() {
     };
     const uint32_t tiles = grid_.count();
     Buffer counts = make(tiles, "light_bin_sizing_counts"), offsets = make(tiles + 1, "light_bin_sizing_offsets"),
-           cursors = make(tiles, "light_bin_sizing_cursors");
-    bind({counts.buffer, offsets.buffer, cursors.buffer}, cursors.buffer); // target: unused here
+           rows = make(grid_.tilesY, "light_bin_sizing_rows"), big = make(1, "light_bin_sizing_big");
+    bind({counts.buffer, offsets.buffer, rows.buffer, big.buffer}, rows.buffer); // target: unused here
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         begin(cmd);
-        recordSizing(cmd);
+        recordSizing(cmd, 0); // large rectangles counted, not listed
         // readbackBuffer copies in a later submission.
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -117,6 +118,7 @@ LightBins GpuBinning::sizes() {
     bins.slots = makeCompactLayout(bins.bound).slots;
     if (!bins.bound.empty()) bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
     maxBound_ = bins.maxBound;
+    bigLights_ = words(big, 1)[0];
     return bins;
 }
 
@@ -125,24 +127,45 @@ void GpuBinning::plan(FrameGraph& graph) {
     counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4, "GPU binning: lights covering each tile");
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum)");
-    cursors_ = graph.createBuffer("light_bin_cursors", uint64_t(tiles) * 4, "GPU binning: fill cursor per tile");
+    rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4, "GPU binning: per row, its scans' sum");
+    big_ = graph.createBuffer("light_bin_big", (uint64_t(bigLights_) + 1) * 4,
+                              "GPU binning: the lights of large rectangles, filled by a workgroup each");
+    // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
+    // the sort. Their runs go to a buffer outside the graph (ordered by hand-written barriers).
     graph.addPass("light_binning",
-                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageWrite}, {cursors_, Use::StorageWrite}},
+                  {{counts_, Use::StorageWrite},
+                   {offsets_, Use::StorageWrite},
+                   {rows_, Use::StorageWrite},
+                   {big_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
-                      recordSizing(pc.cmd);
-                      stepBarrier(pc.cmd);
-                      recordRuns(pc.cmd);
+                      recordSizing(pc.cmd, bigLights_);
                   });
-    // Read after the frame by the tests; also what keeps the pass live (its runs go to a
-    // buffer outside the graph).
+    graph.addPass("light_bin_fill",
+                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageRead}, {big_, Use::StorageRead}},
+                  [this](PassContext& pc) {
+                      begin(pc.cmd);
+                      recordFill(pc.cmd);
+                  });
+    // The sort touches no count (the fill counted them down); it declares them written so that
+    // the graph keeps the fill and the sort live (a pass lives when it writes something needed)
+    // and orders it after the fill.
+    graph.addPass("light_bin_sort", {{offsets_, Use::StorageRead}, {counts_, Use::StorageWrite}},
+                  [this](PassContext& pc) {
+                      begin(pc.cmd);
+                      recordSort(pc.cmd);
+                  });
+    // Read after the frame by the tests; also what keeps the passes live.
     graph.exportResource("light_bin_offsets", offsets_);
+    graph.exportResource("light_bin_counts", counts_);
 }
 
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
     if (baseWord > 0xffffffffull) throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
-    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(cursors_).buffer}, target);
+    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(rows_).buffer,
+          graph.buffer(big_).buffer},
+         target);
 }
 
 void GpuBinning::begin(VkCommandBuffer cmd) {
@@ -150,9 +173,13 @@ void GpuBinning::begin(VkCommandBuffer cmd) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
 }
 
-// 64 invocations per workgroup over `count` items, workgroups in rows of at most 65,535.
+// 64 invocations per workgroup over `count` items.
 void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push) {
-    const uint32_t groups = (count + 63) / 64;
+    dispatchGroups(cmd, pipeline, (count + 63) / 64, push);
+}
+
+// `groups` workgroups, in rows of at most 65,535 (a dispatch dimension's limit).
+void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups, const gpu::DrawPush& push) {
     if (groups == 0) return;
     const uint32_t x = std::min(groups, 65535u), y = (groups + x - 1) / x;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
@@ -160,23 +187,23 @@ void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t
     vkCmdDispatch(cmd, x, y, 1);
 }
 
-// Steps 1-5: counts and offsets.
-void GpuBinning::recordSizing(VkCommandBuffer cmd) {
+// Steps 1-4: counts and offsets; the big list, up to `bigCapacity` lights.
+void GpuBinning::recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity) {
     const gpu::DrawPush push{0, base_, 0, 0};
-    dispatchFlat(cmd, pipelines_[kClear], grid_.count(), push);
+    dispatchFlat(cmd, pipelines_[kClear], std::max(grid_.count(), 1u), push); // 1: the big list's count
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kRects], locals_, push);
+    dispatchFlat(cmd, pipelines_[kRects], locals_, {bigCapacity, base_, 0, 0});
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kRows], grid_.tilesY, push);
+    // A workgroup per row, then per column (bin_scan_columns.comp: counts and offsets).
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kRows]);
+    vkCmdDispatch(cmd, grid_.tilesY, 1, 1);
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kColumns], grid_.tilesX, push);
-    stepBarrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kOffsets]);
-    vkCmdDispatch(cmd, 1, 1, 1);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kColumns]);
+    vkCmdDispatch(cmd, grid_.tilesX, 1, 1);
 }
 
-// Steps 6-7: the runs, into the target.
-void GpuBinning::recordRuns(VkCommandBuffer cmd) {
+// Step 5: the runs, unsorted, into the target (pass light_bin_fill).
+void GpuBinning::recordFill(VkCommandBuffer cmd) {
     // The previous frame's culling and shading read the target (WAR), and it was uploaded
     // before any frame: outside the graph, so ordered here.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
@@ -185,25 +212,45 @@ void GpuBinning::recordRuns(VkCommandBuffer cmd) {
     const uint32_t rows = std::max(1u, TP_BIN_FILL_BUDGET / std::max(1u, grid_.tilesX));
     for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
         if (first > 0) stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
-        dispatchFlat(cmd, pipelines_[kFill], locals_, {0, base_, first, std::min(grid_.tilesY, first + rows)});
+        // The small rectangles' workgroups, then one per large rectangle (bin_fill.comp).
+        const uint32_t small = (locals_ + 63) / 64;
+        dispatchGroups(cmd, pipelines_[kFill], small + bigLights_,
+                       {small, base_, first, std::min(grid_.tilesY, first + rows)});
     }
-    stepBarrier(cmd);
+}
+
+// Step 6: every run sorted in place (pass light_bin_sort).
+void GpuBinning::recordSort(VkCommandBuffer cmd) {
+    stepBarrier(cmd); // the fill's target writes (outside the graph)
     const gpu::DrawPush push{0, base_, 0, 0};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSort]);
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDispatch(cmd, grid_.tilesX, grid_.tilesY, 1);
     if (maxBound_ > TP_BIN_SHARED_SORT) {
-        // Runs too long for shared memory: one dispatch per bitonic step, up to the longest.
-        const uint32_t size = sortSize(maxBound_);
+        // Runs too long for shared memory: a bitonic sort over blocks of TP_BIN_SHARED_SORT.
+        // Steps within a block in shared memory (bin_sort_local), one dispatch for all the
+        // steps of a merge that stay in the block; a dispatch per step only for the distances
+        // of a block or more (bin_sort_step): for a run of 16,384, 6 dispatches, not 105.
+        const uint32_t size = sortSize(maxBound_), blocks = size / TP_BIN_SHARED_SORT;
         const uint32_t chunks = (size / 2 + 64 * TP_BIN_STEP_PAIRS - 1) / (64 * TP_BIN_STEP_PAIRS);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortStep]);
-        for (uint32_t k = 2; k <= size; k <<= 1)
-            for (uint32_t j = k >> 1; j > 0; j >>= 1) {
+        auto local = [&](uint32_t kFrom, uint32_t kTo) {
+            stepBarrier(cmd);
+            const gpu::DrawPush p{0, base_, kFrom, kTo};
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortLocal]);
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(p), &p);
+            vkCmdDispatch(cmd, blocks, grid_.tilesX, grid_.tilesY);
+        };
+        local(2, TP_BIN_SHARED_SORT); // every block sorted
+        for (uint32_t k = 2 * TP_BIN_SHARED_SORT; k <= size; k <<= 1) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSortStep]);
+            for (uint32_t j = k >> 1; j >= TP_BIN_SHARED_SORT; j >>= 1) {
                 stepBarrier(cmd);
                 const gpu::DrawPush step{0, base_, k, j};
                 vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(step), &step);
                 vkCmdDispatch(cmd, chunks, grid_.tilesX, grid_.tilesY);
             }
+            local(k, k); // the merge's steps below the block
+        }
     }
     // The culling (compute) and Forward+'s shading (fragment: the same buffer) read it next.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -1,16 +1,25 @@
 #pragma once
 // Light binning on the GPU (--light-bin gpu), shared by Forward+ and tiled deferred: the
-// runs la::binLights builds on the CPU (light_bins.h), built by the compute pass
-// "light_binning" every frame, exactly equal (include/light_binning.h says why):
-//   1. clear   counts and cursors
-//   2. rects   per light, its conservative tile rectangle; its corners in a difference array
-//              (computed again by the fill rather than stored: no memory per light)
-//   3-4. scans the difference array along rows, then columns: the count per tile (the bound)
-//   5. offsets the counts' exclusive prefix sum (the compact layout)
-//   6. fill    per light and covered tile, an atomic cursor's slot (scheduling order)
-//   7. sort    every tile's run ascending (bitonic; shared memory, or in place when long)
+// runs la::binLights builds on the CPU (light_bins.h), built every frame by three timed
+// compute passes, exactly equal (include/light_binning.h says why):
+//   light_binning (counts and offsets, 4 dispatches)
+//     1. clear   the counts (a difference array) and the big list's count
+//     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
+//                corners in the difference array; lights of large rectangles to the big list
+//                (rectangles are computed again by the fill rather than stored: no memory per light)
+//     3. rows    a workgroup per row of tiles: prefix sums along it
+//     4. columns a workgroup per column: the counts (the bound) and their row-major exclusive
+//                prefix sum (the offsets: the compact layout) in one pass down the column
+//   light_bin_fill
+//     5. fill    per light and covered tile, a slot from the tile's count counted down
+//                (atomic: scheduling order); an invocation per light, a workgroup per light
+//                of the big list (its tiles spread over the workgroup)
+//   light_bin_sort
+//     6. sort    every tile's run ascending: a workgroup per tile in shared memory (by rank up
+//                to 256, else bitonic); longer runs than shared memory holds by blocks
+//                (bitonic steps within a block in shared memory, across blocks a dispatch each)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
-// steps 1-5 once, one readback (tiles + 1 words), the numbers the CPU path gives.
+// steps 1-4 once, one readback (tiles + 1 words), the numbers the CPU path gives.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,9 +47,12 @@ class GpuBinning {
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
 
-    // Plan time: steps 1-5 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
+    // Plan time: steps 1-4 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
     LightBins sizes();
-    // The frame: pass "light_binning" (its own buffers in the graph; exports light_bin_offsets).
+    // From sizes(): how many lights the fill gives a workgroup each (more than TP_BIN_BIG_RECT tiles).
+    uint32_t bigLights() const { return bigLights_; }
+    // The frame: passes "light_binning" (steps 1-4), "light_bin_fill" (5), "light_bin_sort" (6),
+    // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_counts).
     void plan(FrameGraph& graph);
     // target: the buffer the culling reads its candidates from (uploaded outside the graph);
     // tile t's run goes to its words [baseWord + offsets[t], baseWord + offsets[t + 1]).
@@ -48,12 +60,14 @@ class GpuBinning {
 
   private:
     struct Bufs {
-        VkBuffer counts, offsets, cursors;
+        VkBuffer counts, offsets, rows, big;
     };
     void bind(const Bufs& b, VkBuffer target);
-    void recordSizing(VkCommandBuffer cmd);
-    void recordRuns(VkCommandBuffer cmd);
+    void recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity);
+    void recordFill(VkCommandBuffer cmd);
+    void recordSort(VkCommandBuffer cmd);
     void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push);
+    void dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups, const gpu::DrawPush& push);
     void begin(VkCommandBuffer cmd);
 
     GpuContext& ctx_;
@@ -62,9 +76,10 @@ class GpuBinning {
     uint32_t locals_ = 0;
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
-    uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
+    uint32_t maxBound_ = 0;  // from sizes(): whether long runs need bin_sort_step
+    uint32_t bigLights_ = 0; // from sizes(): lights whose rectangle covers more than TP_BIN_BIG_RECT tiles
     Buffer inputs_, localList_;
-    ResourceHandle counts_, offsets_, cursors_;
+    ResourceHandle counts_, offsets_, rows_, big_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::vector<VkPipeline> pipelines_; // one per step (kSteps in gpu_binning.cpp)

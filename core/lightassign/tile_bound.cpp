@@ -33,13 +33,42 @@ void appendSlabs(std::vector<glm::vec4>& lo, std::vector<glm::vec4>& hi, const g
     }
 }
 
-// First and last slab that the sphere meets; empty (first > last) when none. Every slab is
-// tested (no bisection): the half-spaces of planes through the eye are not nested behind it.
-// The GPU's loop (shaders/lightassign/bin_rects.comp) is this one.
-void slabRange(const std::vector<glm::vec4>& slabs, uint32_t loFirst, uint32_t hiFirst, uint32_t count,
+// First and last slab that the sphere meets; empty (first > last) when none.
+// A sphere wholly in front of the eye (binInFront): the planes of one family are nested
+// half-spaces, so "outside plane i" is monotone in i - true up to some slab for the family
+// that bounds slabs from the far side (`before`), true from some slab on for the other
+// (`after`) - and two bisections find the range (columns: before = hi, after = lo; rows, whose
+// ndc falls as the index grows: before = lo, after = hi). Any other sphere: every slab is
+// tested, since behind the eye the half-spaces of planes through the eye are not nested.
+// The GPU runs the same searches, probe for probe (shaders/lightassign/bin_common.glsl:
+// binSlabRange), so where float rounding makes a family non-monotone at a near-tie both
+// sides still agree; a tie lies within the padding (include/light_binning.h), never at a
+// tile the culling keeps.
+void slabRange(const std::vector<glm::vec4>& slabs, uint32_t loFirst, uint32_t hiFirst, uint32_t count, bool flip,
                const glm::vec3& c, float r, int& first, int& last) {
     first = int(count);
     last = -1;
+    if (gpu::binInFront(c, r)) {
+        const uint32_t before = flip ? loFirst : hiFirst, after = flip ? hiFirst : loFirst;
+        uint32_t lo = 0, hi = count; // the first slab that `before` does not exclude
+        while (lo < hi) {
+            const uint32_t mid = (lo + hi) / 2;
+            if (gpu::binOutside(slabs[before + mid], c, r)) lo = mid + 1;
+            else hi = mid;
+        }
+        const uint32_t begin = lo;
+        hi = count; // the first slab from `begin` on that `after` excludes
+        while (lo < hi) {
+            const uint32_t mid = (lo + hi) / 2;
+            if (gpu::binOutside(slabs[after + mid], c, r)) hi = mid;
+            else lo = mid + 1;
+        }
+        if (begin < lo) {
+            first = int(begin);
+            last = int(lo) - 1;
+        }
+        return;
+    }
     for (uint32_t i = 0; i < count; ++i) {
         if (gpu::binOutside(slabs[loFirst + i], c, r)) continue;
         if (gpu::binOutside(slabs[hiFirst + i], c, r)) continue;
@@ -74,9 +103,9 @@ std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat
         const float r = gpu::binPaddedRadius(l.range, c);
         if (gpu::binBehindEye(c, r)) continue;
         TileRect& t = rects[k];
-        slabRange(slabs, 0, X, X, c, r, t.x0, t.x1);
+        slabRange(slabs, 0, X, X, false, c, r, t.x0, t.x1);
         if (t.x0 > t.x1) continue;
-        slabRange(slabs, 2 * X, 2 * X + Y, Y, c, r, t.y0, t.y1);
+        slabRange(slabs, 2 * X, 2 * X + Y, Y, true, c, r, t.y0, t.y1);
     }
     return rects;
 }

@@ -37,7 +37,8 @@ std::vector<uint32_t> countTileRects(const TileGrid& grid, const std::vector<Til
 // subset of that volume (its frustum is also bounded in depth, spot lights also by their
 // cone, optionally by the frustum's box) with a much smaller padding, so its count can
 // never exceed this bound - for either depth range (opaque or transparent).
-// Computed per light as a column range times a row range: O(lights * (tilesX + tilesY)).
+// Computed per light as a column range times a row range: O(log(tilesX) + log(tilesY)) per
+// light wholly in front of the eye (bisection), O(tilesX + tilesY) per light reaching behind it.
 // view/proj/lights must be what the GPU tests (the uploaded, camera-relative ones).
 std::vector<uint32_t> conservativeTileBound(const TileGrid& grid, const glm::mat4& view,
                                             const glm::mat4& proj,

@@ -18,16 +18,28 @@ namespace tp::gpu {
 // ---- set TP_SET_PASS of the light_binning pass (all storage buffers) ----
 #define TP_BIN_BINDING_INPUTS 0  // BinInputs, then vec4 slabs[]: columns lo, columns hi, rows lo, rows hi
 #define TP_BIN_BINDING_LOCALS 1  // uint[]: the point/spot light indices, ascending (la::LightClasses::local)
-#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles cover it
-#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (saturates at 2^32 - 1)
-#define TP_BIN_BINDING_CURSORS 4 // uint[tiles]: the fill's cursor per tile
+#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles
+                                 // cover it; the fill counts it down (its cursor)
+#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (modulo 2^32: a
+                                 // layout past 2^32 - 1 is refused before any frame, from the counts)
+#define TP_BIN_BINDING_ROWS 4    // uint[tilesY]: per row of tiles, the sum of its row prefix sums (scans)
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
+#define TP_BIN_BINDING_BIG 6     // uint[]: how many lights have a large rectangle, then those lights (k)
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.
 #define TP_BIN_BASE pad0
 #define TP_BIN_FIRST pad1
 #define TP_BIN_END pad2
+// The rectangles step: how many large-rectangle lights the big list holds (0 at plan time:
+// they are only counted). The fill: how many of its workgroups take 64 lights each; the
+// workgroups after those take one large-rectangle light each.
+#define TP_BIN_BIG_CAPACITY materialIndex
+#define TP_BIN_SMALL_GROUPS materialIndex
+// A light whose rectangle covers more tiles than this is filled by a workgroup (its tiles
+// spread over 64 invocations), not by one invocation: a light over much of the screen would
+// otherwise be one long chain of dependent atomics while the rest of the GPU waits.
+#define TP_BIN_BIG_RECT 32u
 
 // Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32); longer ones
 // in the target buffer, one dispatch per bitonic step.
@@ -35,7 +47,6 @@ namespace tp::gpu {
 #define TP_BIN_SORT_GROUP 64u      // invocations sorting one tile's run
 #define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)
 #define TP_BIN_STEP_PAIRS 64u      // long-run step: pairs per invocation and dispatch
-#define TP_BIN_SCAN_GROUP 256u     // the offsets' prefix sum: one workgroup
 // Tiles one fill dispatch may visit per light: lavapipe ends an invocation after 65,535
 // loop iterations in total (deferred/tiled_lighting.h); the slab loops add tilesX + tilesY.
 #define TP_BIN_FILL_BUDGET 32768u
@@ -71,6 +82,13 @@ TP_INLINE float binPaddedRadius(float range, vec3 c) {
 TP_INLINE bool binBehindEye(vec3 c, float r) {
     TP_PRECISE float nearest = c.z - r;
     return nearest > 0.0f;
+}
+
+// The whole padded sphere lies in front of the eye: the slab planes' half-spaces are nested
+// there, so the slab ranges are found by bisection (tile_bound.cpp: slabRange).
+TP_INLINE bool binInFront(vec3 c, float r) {
+    TP_PRECISE float farthest = c.z + r;
+    return farthest < 0.0f;
 }
 
 // plane: unit inward normal (xyz) and offset (w). True when the padded sphere lies wholly outside.

@@ -19,11 +19,15 @@ layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_COUNTS) buffer BinCou
 layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_OFFSETS) buffer BinOffsetBlock {
     uint offsets[];
 };
-layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_CURSORS) buffer BinCursorBlock {
-    uint cursors[];
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_ROWS) buffer BinRowBlock {
+    uint rowSums[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_TARGET) buffer BinTargetBlock {
     uint target[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_BIG) buffer BinBigBlock {
+    uint bigCount;
+    uint bigLights[];
 };
 
 // A flat index (light or tile): 64 invocations per workgroup, workgroups in a 2D grid (a dispatch
@@ -32,15 +36,29 @@ uint binFlatIndex() {
     return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
 }
 
-// Sums that would pass 2^32 - 1 stay there: the CPU clamps its offsets the same way (and
-// refuses such a layout before any frame).
-uint binSaturatingAdd(uint a, uint b) {
-    return a > 0xffffffffu - b ? 0xffffffffu : a + b;
-}
-
-// First and last slab the sphere meets (first > last: none); every slab is tested.
-ivec2 binSlabRange(uint loFirst, uint hiFirst, uint count, vec3 c, float r) {
+// First and last slab the sphere meets (first > last: none): la::conservativeTileRects's
+// slabRange (tile_bound.cpp), the same probes in the same order - bisection when the sphere
+// lies wholly in front of the eye (the half-spaces are nested there), else every slab.
+ivec2 binSlabRange(uint loFirst, uint hiFirst, uint count, bool flip, vec3 c, float r) {
     ivec2 range = ivec2(int(count), -1);
+    if (binInFront(c, r)) {
+        const uint before = flip ? loFirst : hiFirst, after = flip ? hiFirst : loFirst;
+        uint lo = 0u, hi = count; // the first slab that `before` does not exclude
+        while (lo < hi) {
+            const uint mid = (lo + hi) / 2u;
+            if (binOutside(slabs[before + mid], c, r)) lo = mid + 1u;
+            else hi = mid;
+        }
+        const uint begin = lo;
+        hi = count; // the first slab from `begin` on that `after` excludes
+        while (lo < hi) {
+            const uint mid = (lo + hi) / 2u;
+            if (binOutside(slabs[after + mid], c, r)) hi = mid;
+            else lo = mid + 1u;
+        }
+        if (begin < lo) range = ivec2(int(begin), int(lo) - 1);
+        return range;
+    }
     for (uint i = 0u; i < count; ++i) {
         if (binOutside(slabs[loFirst + i], c, r)) continue;
         if (binOutside(slabs[hiFirst + i], c, r)) continue;
@@ -60,9 +78,20 @@ ivec4 binRect(uint k) {
     const float r = binPaddedRadius(l.range, c);
     ivec4 rect = ivec4(int(bin.grid.x), -1, int(bin.grid.y), -1);
     if (binBehindEye(c, r)) return rect;
-    rect.xy = binSlabRange(bin.slabs.x, bin.slabs.y, bin.grid.x, c, r);
-    if (rect.x <= rect.y) rect.zw = binSlabRange(bin.slabs.z, bin.slabs.w, bin.grid.y, c, r);
+    rect.xy = binSlabRange(bin.slabs.x, bin.slabs.y, bin.grid.x, false, c, r);
+    if (rect.x <= rect.y) rect.zw = binSlabRange(bin.slabs.z, bin.slabs.w, bin.grid.y, true, c, r);
     return rect;
+}
+
+// Tiles a rectangle covers (0 when empty).
+uint binRectArea(ivec4 rect) {
+    return rect.x > rect.y || rect.z > rect.w ? 0u : uint(rect.y - rect.x + 1) * uint(rect.w - rect.z + 1);
+}
+
+// Light `light`'s slot in tile t's run: the tile's count, counted down (atomic: scheduling
+// order until the sort), is the cursor.
+void binFillTile(uint t, uint light) {
+    target[draw.TP_BIN_BASE + offsets[t] + atomicAdd(counts[t], 0xffffffffu) - 1u] = light;
 }
 
 // The padded power of two a run of n sorts as.

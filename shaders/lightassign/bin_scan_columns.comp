@@ -1,18 +1,41 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 4: then down each column (an invocation per column): counts[t] is now
-// how many rectangles cover tile t (the compact layout's bound).
+// light_binning, step 4: a workgroup per column of tiles; with step 3's R (row prefix sums of
+// the difference array), E (row prefix sums of R, exclusive) and rowSums (R's sum per row):
+//   counts(x, y)  = sum over y' <= y of R(x, y')      how many rectangles cover the tile
+//   rowTotal(y)   = sum over y' <= y of rowSums(y')    the counts' sum over row y
+//   offsets(x, y) = sum over y' < y of rowTotal(y')   the tiles of the rows above
+//                 + sum over y' <= y of E(x, y')      the tiles left of it in its row
+// so the counts and their row-major exclusive prefix sum (the compact layout) come out of
+// one pass down the columns: two dispatches, where a scan along the rows, one down the
+// columns and a prefix sum over all tiles took three, each a serial loop.
 #include "lightassign/bin_common.glsl"
-
-layout(local_size_x = 64) in;
+#include "lightassign/bin_scan.glsl"
 
 void main() {
-    const uint x = gl_GlobalInvocationID.x;
-    const uint W = bin.grid.x;
-    if (x >= W) return;
-    uint sum = 0u;
-    for (uint y = 0u; y < bin.grid.y; ++y) {
-        sum += counts[y * W + x];
-        counts[y * W + x] = sum;
+    const uint W = bin.grid.x, H = bin.grid.y, x = gl_WorkGroupID.x;
+    const uvec2 share = binScanShare(H);
+    uvec4 sum = uvec4(0u); // R, E and rowSums over this invocation's rows
+    for (uint y = share.x; y < share.y; ++y) sum += uvec4(counts[y * W + x], offsets[y * W + x], rowSums[y], 0u);
+    uvec4 total;
+    const uvec4 before = binScanExclusive(sum, total);
+    uint rowTotal = before.z, aboveSum = 0u; // the rows' totals, and their sum over this share
+    for (uint y = share.x; y < share.y; ++y) {
+        rowTotal += rowSums[y];
+        aboveSum += rowTotal;
     }
+    uvec4 slots;
+    uint above = binScanExclusive(uvec4(aboveSum, 0u, 0u, 0u), slots).x; // the rows above this share
+    uint count = before.x, left = before.y;
+    rowTotal = before.z;
+    for (uint y = share.x; y < share.y; ++y) {
+        const uint t = y * W + x;
+        count += counts[t];
+        left += offsets[t];
+        counts[t] = count;
+        offsets[t] = above + left;
+        rowTotal += rowSums[y];
+        above += rowTotal;
+    }
+    if (x == 0u && gl_LocalInvocationIndex == 0u) offsets[bin.grid.z] = slots.x;
 }

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 7: each tile's run sorted ascending, a workgroup per tile, in shared
-// memory (runs of 2 to TP_BIN_SHARED_SORT lights; longer ones: bin_sort_step.comp). Runs up
+// light_bin_sort (step 6): each tile's run sorted ascending, a workgroup per tile, in shared
+// memory (runs of 2 to TP_BIN_SHARED_SORT lights; longer ones: bin_sort_local.comp and bin_sort_step.comp). Runs up
 // to TP_BIN_RANK_SORT lights by rank; longer ones by a bitonic
 // sort over the run padded to a power of two with +inf (0xffffffff), in the formulation
 // whose comparators all put the smaller value first (each merge starts by comparing i with
@@ -35,8 +35,11 @@ void main() {
     for (uint k = 2u; k <= size; k <<= 1u)
         for (uint j = k >> 1u; j > 0u; j >>= 1u) {
             for (uint p = lane; p < size / 2u; p += TP_BIN_SORT_GROUP) {
-                const uint i = (p / j) * 2u * j + p % j;
+                // (p / j) * 2j + p % j, without dividing: j is a power of two
+                const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
                 const uint other = j == k >> 1u ? i ^ (k - 1u) : i + j;
+                // other > i: past the run, +inf, which keeps the order (as in bin_sort_step).
+                if (other >= n) continue;
                 const uint a = run[i], b = run[other];
                 if (a > b) {
                     run[i] = b;

@@ -1,11 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 7 for runs longer than TP_BIN_SHARED_SORT (a light over much of the
-// screen): one bitonic step (block size k = TP_BIN_FIRST, distance j = TP_BIN_END) per
-// dispatch, in place in the target buffer, the same comparators as bin_sort.comp. The
-// padding is virtual: a comparator whose second element lies past the run compares with
-// +inf and keeps the order, so it is skipped. Workgroups (chunk, tile x, tile y); each
-// invocation takes at most TP_BIN_STEP_PAIRS pairs (lavapipe's loop limit).
+// light_bin_sort for runs longer than TP_BIN_SHARED_SORT (a light over much of the screen):
+// one bitonic step (block size k = TP_BIN_FIRST, distance j = TP_BIN_END) per dispatch, in
+// place in the target buffer, in the formulation whose comparators all put the smaller value
+// first (each merge starts by comparing i with its mirror in the block), over the run padded
+// to a power of two with +inf. The padding is virtual: a comparator whose second element lies
+// past the run compares with +inf and keeps the order, so it is skipped. Workgroups (chunk,
+// tile x, tile y); each invocation takes at most TP_BIN_STEP_PAIRS pairs (lavapipe's loop limit).
 #include "lightassign/bin_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -20,7 +21,8 @@ void main() {
     for (uint q = 0u; q < TP_BIN_STEP_PAIRS; ++q) {
         const uint p = chunk + q * 64u + gl_LocalInvocationIndex;
         if (p >= pairs) break;
-        const uint i = (p / j) * 2u * j + p % j;
+        // (p / j) * 2j + p % j, without dividing: j is a power of two
+        const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
         const uint other = j == k >> 1u ? i ^ (k - 1u) : i + j;
         if (other >= n) continue;
         const uint a = target[base + i], b = target[base + other];

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
@@ -13,6 +16,7 @@
 #include "core/lightassign/gpu_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
 #include "core/scene/procedural.h"
 #include "core/scene/lights.h"
 #include "include/light_binning.h"
@@ -66,10 +70,62 @@ Scene wholeScreen(uint32_t lights) {
     return s;
 }
 
+// The slab ranges by bisection (lights wholly in front of the eye) are the ranges of a scan
+// over every slab: the rectangles, and so the runs, the linear test gave. Lights everywhere
+// around a wide frustum, many straddling the eye's plane (those keep the scan).
+TEST(GpuLightBinning, BisectedRectanglesEqualEverySlabTested) {
+    const la::TileGrid g = la::makeTileGrid(1920, 1080, 16); // 120 x 68 tiles
+    const glm::mat4 proj = glm::perspective(glm::radians(70.0f), 1920.0f / 1080.0f, 0.05f, 200.0f);
+    const glm::mat4 view = glm::lookAt(glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(0.0f, 1.5f, -4.0f), glm::vec3(0, 1, 0));
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> x(-30.0f, 30.0f), y(-15.0f, 20.0f), z(-40.0f, 15.0f), r(0.05f, 6.0f);
+    std::vector<gpu::LightGpu> lights(20000);
+    for (gpu::LightGpu& l : lights) {
+        l.position = {x(rng), y(rng), z(rng)};
+        l.range = r(rng);
+        l.type = TP_LIGHT_POINT;
+    }
+    std::vector<uint32_t> local(lights.size());
+    for (uint32_t i = 0; i < local.size(); ++i) local[i] = i;
+    const std::vector<la::TileRect> rects = la::conservativeTileRects(g, view, proj, lights, local);
+    const std::vector<glm::vec4> slabs = la::binSlabPlanes(g, proj);
+    auto scan = [&](uint32_t loFirst, uint32_t hiFirst, uint32_t count, glm::vec3 c, float rad, int& a, int& b) {
+        a = int(count);
+        b = -1;
+        for (uint32_t i = 0; i < count; ++i)
+            if (!gpu::binOutside(slabs[loFirst + i], c, rad) && !gpu::binOutside(slabs[hiFirst + i], c, rad)) {
+                a = std::min(a, int(i));
+                b = int(i);
+            }
+    };
+    uint32_t inFront = 0, covering = 0, differing = 0;
+    for (size_t k = 0; k < lights.size(); ++k) {
+        const glm::vec3 c = gpu::binViewCentre(view, lights[k].position);
+        const float rad = gpu::binPaddedRadius(lights[k].range, c);
+        la::TileRect want;
+        if (!gpu::binBehindEye(c, rad)) {
+            scan(0, g.tilesX, g.tilesX, c, rad, want.x0, want.x1);
+            if (want.x0 <= want.x1) scan(2 * g.tilesX, 2 * g.tilesX + g.tilesY, g.tilesY, c, rad, want.y0, want.y1);
+        }
+        inFront += gpu::binInFront(c, rad) ? 1u : 0u;
+        covering += want.empty() ? 0u : 1u;
+        const la::TileRect& got = rects[k];
+        if (want.empty() != got.empty() ||
+            (!want.empty() && (want.x0 != got.x0 || want.x1 != got.x1 || want.y0 != got.y0 || want.y1 != got.y1)))
+            ++differing;
+    }
+    EXPECT_EQ(differing, 0u) << "of " << lights.size();
+    EXPECT_GT(inFront, 5000u);  // the bisection ran
+    EXPECT_GT(covering, 2000u); // and found rectangles
+    EXPECT_LT(inFront, 19000u); // some straddle or lie behind the eye
+}
+
 struct Binned {
     la::LightBins cpu;        // la::binLights, with candidates
     la::LightBins sizes;      // the GPU's plan-time run
     std::vector<uint32_t> offsets, runs; // the GPU's frame: its offsets, the target's runs
+    uint32_t bigLights = 0;              // filled by a workgroup each
+    uint32_t cpuBigLights = 0;           // rectangles of more than TP_BIN_BIG_RECT tiles, on the CPU
 };
 
 // One frame of the light_binning pass alone, writing its runs `base` words into a buffer.
@@ -80,8 +136,11 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     const std::vector<uint32_t> local = la::classifyLights(scene.shadingLights()).local;
     const gpu::FrameUniforms& f = scene.shadingFrame();
     out.cpu = la::binLights(grid, f.view, f.proj, scene.shadingLights(), local, true);
+    for (const la::TileRect& r : la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local))
+        if (!r.empty() && uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1) > TP_BIN_BIG_RECT) ++out.cpuBigLights;
     la::GpuBinning gpuBin(ctx, scene, grid, local, "test");
     out.sizes = gpuBin.sizes();
+    out.bigLights = gpuBin.bigLights();
     const uint32_t base = 7; // the runs need not start at word 0
     Buffer target = createBuffer(ctx, (base + out.sizes.slots + 1) * 4,
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -107,9 +166,11 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     return out;
 }
 
-void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t minLongest = 1) {
+// Returns the number of lights the fill gave a workgroup each.
+uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t minLongest = 1) {
     auto ctx = makeValidatedContext();
-    ASSERT_TRUE(ctx);
+    EXPECT_TRUE(ctx);
+    if (!ctx) return 0;
     SceneGpu gpuScene(*ctx, scene);
     Binned b = bin(*ctx, gpuScene, w, h, tile);
     EXPECT_EQ(b.sizes.bound, b.cpu.bound);
@@ -117,7 +178,8 @@ void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, u
     EXPECT_EQ(b.sizes.slots, b.cpu.slots);
     EXPECT_EQ(b.sizes.maxBound, b.cpu.maxBound);
     EXPECT_EQ(b.offsets, b.cpu.offsets);
-    ASSERT_EQ(b.runs.size(), b.cpu.candidates.size());
+    EXPECT_EQ(b.runs.size(), b.cpu.candidates.size());
+    if (b.runs.size() != b.cpu.candidates.size()) return 0;
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
     uint32_t differing = 0;
     for (uint32_t t = 0; t < grid.count(); ++t)
@@ -127,12 +189,20 @@ void expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, u
     EXPECT_GE(b.cpu.maxBound, minLongest);
     EXPECT_GT(b.cpu.slots, 0u);
     expectNoValidationMessages(*ctx);
+    EXPECT_EQ(b.bigLights, b.cpuBigLights);
+    return b.bigLights;
 }
 
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile8) { expectSameRuns(courtyard(512), 128, 72, 8); }
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile16) { expectSameRuns(courtyard(512), 128, 72, 16); }
 TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) { expectSameRuns(courtyard(512), 160, 90, 32); }
 TEST(GpuLightBinning, Floor2048Lights) { expectSameRuns(floorWith(2048), 160, 96, 16); }
+// Rows and columns longer than the scans' workgroup (64): each invocation scans a share of
+// several tiles (12 x 150 tiles, then 150 x 12).
+TEST(GpuLightBinning, TallAndWideGridsScanInShares) {
+    expectSameRuns(floorWith(2048), 96, 1200, 8);
+    expectSameRuns(floorWith(2048), 1200, 96, 8);
+}
 TEST(GpuLightBinning, LightsAroundAndBehindTheEye) { expectSameRuns(aroundTheEye(1024), 96, 64, 8); }
 // 1,000 lights in every tile: runs past the rank sort, bitonic in shared memory.
 TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
@@ -141,6 +211,23 @@ TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
 // 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
     expectSameRuns(wholeScreen(TP_BIN_SHARED_SORT + 404), 32, 24, 8, TP_BIN_SHARED_SORT + 1);
+}
+// Runs of 9,000 (sorted as 16,384): two merges past the block, each with steps at distances
+// of a block or more (a dispatch each) and steps within the blocks (shared memory).
+TEST(GpuLightBinning, WholeScreenRunsOfFourBlocks) {
+    expectSameRuns(wholeScreen(2 * TP_BIN_SHARED_SORT + 808), 24, 16, 8, 2 * TP_BIN_SHARED_SORT + 1);
+}
+
+// Lights near the eye cover many tiles: the fill gives those a workgroup each, the rest an
+// invocation each, in one dispatch; and in several (rows of tiles per dispatch).
+TEST(GpuLightBinning, LargeRectanglesFilledByWorkgroups) {
+    const uint32_t big = expectSameRuns(aroundTheEye(1024), 256, 160, 8); // 32 x 20 tiles
+    EXPECT_GT(big, 50u);
+    EXPECT_LT(big, 1000u);
+}
+TEST(GpuLightBinning, LargeRectanglesOverSeveralFillDispatches) {
+    // 2,048 x 24 tiles of 8: TP_BIN_FILL_BUDGET / 2,048 = 16 rows per dispatch, two dispatches.
+    EXPECT_GT(expectSameRuns(aroundTheEye(64), 16384, 192, 8), 10u);
 }
 
 TEST(GpuLightBinning, NoLocalLights) {
