@@ -7,8 +7,9 @@ namespace tp::la {
 Knob lightBinKnob() {
     return Knob::choice("light-bin", {"auto", "cpu", "gpu"},
                         "Where --light-cull binned builds each tile's candidates: cpu (once per configuration), "
-                        "gpu (compute pass light_binning every frame: rectangles, counts, prefix sum, fill, sort; "
-                        "the same runs) or auto (cpu on a CPU device such as lavapipe, else gpu)");
+                        "gpu (every frame, timed passes light_binning: rectangles, counts, prefix sum; light_bin_fill; "
+                        "light_bin_sort: each run ascending; the same runs as cpu) or auto (cpu on a CPU device "
+                        "such as lavapipe, where the sort costs more than the CPU's scatter; else gpu)");
 }
 
 std::string resolveLightBin(const GpuContext& ctx, const std::string& value) {

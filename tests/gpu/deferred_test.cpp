@@ -219,28 +219,6 @@ RenderSettings withLighting(RenderSettings s, const char* lighting) {
     return s;
 }
 
-// tiled vs volumes: both shade every (pixel or edge sample, light) pair with the same
-// code (shaders/deferred/gbuffer_read.glsl) on the same G-buffer, so each term is the same
-// float; only the order of the fp32 additions differs (tiled: culled-list order in a
-// register; volumes: one blend per light in draw order), and hdr is RGBA32F in both (no
-// half-float target). Every term is >= 0, so two summation orders of N terms differ by at
-// most 2 (N - 1) u * sum, u = 2^-24 (Higham, recursive summation), with N = samples *
-// (lights + 1) per pixel. Checked per channel against that bound (+1e-30 for zeros).
-void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights,
-                                     uint32_t samples, const std::string& what) {
-    const double u = std::ldexp(1.0, -24);
-    const double n = double(samples) * (lights + 1);
-    double worstRatio = 0.0;
-    for (size_t i = 0; i < a.pixelCount(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            double x = a.rgba[i * 4 + c], y = b.rgba[i * 4 + c];
-            double bound = 2.0 * (n - 1.0) * u * std::max(std::abs(x), std::abs(y)) + 1e-30;
-            worstRatio = std::max(worstRatio, std::abs(x - y) / bound);
-        }
-    EXPECT_LE(worstRatio, 1.0) << what << ": worst |tiled - volumes| / bound = " << worstRatio;
-    std::printf("[ tiled vs volumes ] %s: worst difference = %.3g of the bound\n", what.c_str(), worstRatio);
-}
-
 TEST(Deferred, VolumesAgreeWithTiled) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);

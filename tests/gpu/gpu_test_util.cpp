@@ -1,5 +1,9 @@
 #include "gpu_test_util.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "core/render/renderer.h"
 
 namespace tp::test {
@@ -86,6 +90,27 @@ const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name) {
     for (const DebugImage& d : run.debugImages)
         if (d.name == name) return &d.image;
     return nullptr;
+}
+
+// Two images whose pixels sum the same fp32 terms in different orders (e.g. deferred
+// tiled against volumes: the same code on the same G-buffer, culled-list order in a
+// register against one blend per light; or deferred's shared list, filled in atomic order,
+// on two runs of a GPU), with an RGBA32F target. Every term is >= 0, so two summation orders of N terms differ by at
+// most 2 (N - 1) u * sum, u = 2^-24 (Higham, recursive summation), with N = samples *
+// (lights + 1) per pixel. Checked per channel against that bound (+1e-30 for zeros).
+void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights,
+                                     uint32_t samples, const std::string& what) {
+    const double u = std::ldexp(1.0, -24);
+    const double n = double(samples) * (lights + 1);
+    double worstRatio = 0.0;
+    for (size_t i = 0; i < a.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            double x = a.rgba[i * 4 + c], y = b.rgba[i * 4 + c];
+            double bound = 2.0 * (n - 1.0) * u * std::max(std::abs(x), std::abs(y)) + 1e-30;
+            worstRatio = std::max(worstRatio, std::abs(x - y) / bound);
+        }
+    EXPECT_LE(worstRatio, 1.0) << what << ": worst |a - b| / bound = " << worstRatio;
+    std::printf("[ summation order ] %s: worst difference = %.3g of the bound\n", what.c_str(), worstRatio);
 }
 
 } // namespace tp::test

@@ -31,4 +31,9 @@ RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipelin
 // The run's debug image of that name (settings.debug), or null.
 const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name);
 
+// The summation bound: a and b agree per channel within 2 (N - 1) u max(|a|, |b|),
+// N = samples * (lights + 1), u = 2^-24 (gpu_test_util.cpp says why).
+void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights, uint32_t samples,
+                                     const std::string& what);
+
 } // namespace tp::test

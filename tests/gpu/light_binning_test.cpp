@@ -258,7 +258,15 @@ void expectSameImages(const Scene& scene, RenderSettings s) {
         RunResult cpu = runOrFail(*ctx, gpuScene, pipeline, s);
         s.set("light-bin", "gpu");
         RunResult gpu = runOrFail(*ctx, gpuScene, pipeline, s, 2);
-        EXPECT_EQ(cpu.hdr.rgba, gpu.hdr.rgba);
+        // Forward+'s lists keep the runs' order: the same image, byte for byte. Deferred's
+        // tiled lighting fills its shared list in atomic order, so on a GPU two runs may add
+        // the same terms in another order (lavapipe happens to repeat it): within the
+        // summation bound there.
+        if (std::string(pipeline) == "forwardplus" || ctx->isCpuDevice())
+            EXPECT_EQ(cpu.hdr.rgba, gpu.hdr.rgba);
+        else
+            expectAgreeWithinSummationBound(cpu.hdr, gpu.hdr, uint32_t(scene.lights.size()), s.msaa,
+                                            "deferred, --light-bin cpu against gpu");
         EXPECT_EQ(counter(cpu, "light_binning_on_gpu"), 0.0);
         EXPECT_EQ(counter(gpu, "light_binning_on_gpu"), 1.0);
         EXPECT_EQ(std::count(gpu.passes.begin(), gpu.passes.end(), "light_binning"), 1);
