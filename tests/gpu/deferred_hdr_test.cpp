@@ -19,15 +19,7 @@ namespace {
 
 constexpr uint32_t kCourtyardBlendLayers = 4; // as forwardplus_test.cpp counts them on courtyard-small
 
-Scene courtyard(uint32_t count) {
-    Result<Scene> s = makeBuiltinScene("courtyard-small");
-    EXPECT_TRUE(s.ok());
-    LightGenOptions o;
-    o.count = count;
-    o.seed = 11;
-    s->lights = generateLights(s->bounds, o);
-    return std::move(*s);
-}
+Scene courtyard(uint32_t count) { return courtyardSmallWithLights(count, 11); }
 
 RenderSettings settingsFor(uint32_t msaa, const char* hdr, const char* lighting) {
     RenderSettings s;

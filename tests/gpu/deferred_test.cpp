@@ -33,15 +33,7 @@ Scene floorWithLights(uint32_t count) {
     return s;
 }
 
-Scene courtyardWithLights(uint32_t count) {
-    Result<Scene> s = makeBuiltinScene("courtyard-small");
-    EXPECT_TRUE(s.ok());
-    LightGenOptions o;
-    o.count = count;
-    o.seed = 11;
-    s->lights = generateLights(s->bounds, o);
-    return std::move(*s);
-}
+Scene courtyardWithLights(uint32_t count) { return courtyardSmallWithLights(count, 11); }
 
 struct Pair {
     RunResult deferred, reference;
@@ -576,13 +568,7 @@ std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char
     renderer->plan(graph);
     graph.compile();
     renderer->prepare(graph);
-    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    graph.record(cmd, nullptr);
-    VK_CHECK(vkEndCommandBuffer(cmd));
-    ctx.submitAndWait(cmd);
-    ctx.freeCommandBuffer(cmd);
+    recordAndSubmit(ctx, graph);
     if (tileStats) *tileStats = readbackBuffer(ctx, graph.buffer(graph.exported("tile_stats")));
     ResourceHandle h = graph.exported(name);
     return h.valid() ? readbackBuffer(ctx, graph.buffer(h)) : std::vector<uint8_t>{};

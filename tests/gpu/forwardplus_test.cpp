@@ -302,13 +302,7 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     renderer->plan(graph);
     graph.compile();
     renderer->prepare(graph);
-    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    graph.record(cmd, nullptr);
-    VK_CHECK(vkEndCommandBuffer(cmd));
-    ctx.submitAndWait(cmd);
-    ctx.freeCommandBuffer(cmd);
+    recordAndSubmit(ctx, graph);
     out.depth = readbackDepth(ctx, graph.image(graph.exported("depth")));
     std::vector<uint8_t> t = readbackBuffer(ctx, graph.buffer(graph.exported("fp_tile_lists")));
     out.tiles.resize(t.size() / sizeof(gpu::FpTileLists));

@@ -1,4 +1,7 @@
 #include "gpu_test_util.h"
+#include "core/scene/lights.h"
+#include "core/scene/procedural.h"
+#include "core/gpu/vk_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -111,6 +114,27 @@ void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uin
         }
     EXPECT_LE(worstRatio, 1.0) << what << ": worst |a - b| / bound = " << worstRatio;
     std::printf("[ summation order ] %s: worst difference = %.3g of the bound\n", what.c_str(), worstRatio);
+}
+
+void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames) {
+    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    graph.record(cmd, nullptr);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    for (uint32_t i = 0; i < frames; ++i) ctx.submitAndWait(cmd);
+    ctx.freeCommandBuffer(cmd);
+}
+
+Scene courtyardSmallWithLights(uint32_t count, uint64_t seed) {
+    Result<Scene> s = makeBuiltinScene("courtyard-small");
+    EXPECT_TRUE(s.ok());
+    if (!s.ok()) return {};
+    LightGenOptions o;
+    o.count = count;
+    o.seed = seed;
+    s->lights = generateLights(s->bounds, o);
+    return std::move(*s);
 }
 
 } // namespace tp::test

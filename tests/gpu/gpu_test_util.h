@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/gpu/context.h"
+#include "core/gpu/frame_graph.h"
 #include "core/render/frame_runner.h"
 #include "core/render/scene_gpu.h"
 #include "core/scene/scene.h"
@@ -35,5 +36,11 @@ const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name);
 // N = samples * (lights + 1), u = 2^-24 (gpu_test_util.cpp says why).
 void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights, uint32_t samples,
                                      const std::string& what);
+
+// Records the compiled graph once and submits it `frames` times, waiting for each.
+void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames = 1);
+
+// The built-in courtyard-small with `count` generated lights of `seed`.
+Scene courtyardSmallWithLights(uint32_t count, uint64_t seed);
 
 } // namespace tp::test

@@ -149,13 +149,7 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     gpuBin.plan(graph);
     graph.compile();
     gpuBin.prepare(graph, target.buffer, base);
-    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    graph.record(cmd, nullptr);
-    VK_CHECK(vkEndCommandBuffer(cmd));
-    for (uint32_t i = 0; i < frames; ++i) ctx.submitAndWait(cmd); // a frame rebuilds what the last one left
-    ctx.freeCommandBuffer(cmd);
+    recordAndSubmit(ctx, graph, frames); // a frame rebuilds what the last one left
     auto words = [](const std::vector<uint8_t>& bytes, size_t first, size_t n) {
         std::vector<uint32_t> w(n);
         std::memcpy(w.data(), bytes.data() + first * 4, n * 4);
