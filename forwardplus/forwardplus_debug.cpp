@@ -27,19 +27,30 @@ TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t l
     return s;
 }
 
+namespace {
+
+// Lights in tile t's cluster of slice `sl`: the set bits of its row (read-back masks).
+uint32_t clusterLights(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
+                       const std::vector<uint32_t>& masks, uint32_t slices, size_t t, uint32_t sl) {
+    const uint32_t stride = (maskOffsets[t + 1] - maskOffsets[t]) / slices;
+    const uint32_t words = std::min((tiles[t].list[0].count + 31) / 32, stride);
+    uint32_t n = 0;
+    for (uint32_t w = 0; w < words; ++w) {
+        const size_t i = size_t(maskOffsets[t]) + size_t(sl) * stride + w;
+        if (i < masks.size()) n += uint32_t(std::popcount(masks[i]));
+    }
+    return n;
+}
+
+} // namespace
+
 ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
                                  const std::vector<uint32_t>& masks, uint32_t slices) {
     ClusterSummary s;
     double clusters = 0.0, inClusters = 0.0;
-    for (size_t t = 0; t + 1 < maskOffsets.size() && t < tiles.size(); ++t) {
-        const uint32_t stride = (maskOffsets[t + 1] - maskOffsets[t]) / slices;
-        const uint32_t words = std::min((tiles[t].list[0].count + 31) / 32, stride);
+    for (size_t t = 0; t + 1 < maskOffsets.size() && t < tiles.size(); ++t)
         for (uint32_t sl = 0; sl < slices; ++sl) {
-            uint32_t n = 0;
-            for (uint32_t w = 0; w < words; ++w) {
-                size_t i = size_t(maskOffsets[t]) + size_t(sl) * stride + w;
-                if (i < masks.size()) n += uint32_t(std::popcount(masks[i]));
-            }
+            const uint32_t n = clusterLights(tiles, maskOffsets, masks, slices, t, sl);
             s.bits += n;
             s.max = std::max(s.max, n);
             if (tiles[t].nearDepth > 0.0f) {
@@ -47,8 +58,25 @@ ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, con
                 inClusters += n;
             }
         }
-    }
     s.mean = clusters > 0.0 ? inClusters / clusters : 0.0;
+    return s;
+}
+
+ClusterSummary summarizeFrontClusters(const std::vector<gpu::FpTileLists>& tiles,
+                                      const std::vector<uint32_t>& maskOffsets, const std::vector<uint32_t>& masks,
+                                      uint32_t slices, uint32_t frontSlices) {
+    ClusterSummary s;
+    double clusters = 0.0;
+    for (size_t t = 0; t + 1 < maskOffsets.size() && t < tiles.size(); ++t) {
+        if (!(tiles[t].frontNear < tiles[t].sliceNear)) continue;
+        for (uint32_t sl = 0; sl < frontSlices; ++sl) {
+            const uint32_t n = clusterLights(tiles, maskOffsets, masks, slices, t, sl);
+            s.bits += n;
+            s.max = std::max(s.max, n);
+            clusters += 1.0;
+        }
+    }
+    s.mean = clusters > 0.0 ? s.bits / clusters : 0.0;
     return s;
 }
 

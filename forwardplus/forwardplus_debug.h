@@ -36,6 +36,12 @@ struct ClusterSummary {
 };
 ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
                                  const std::vector<uint32_t>& masks, uint32_t slices);
+// Clustered blended scenes: lights per front cluster (the first `frontSlices` slices, which a
+// blended fragment nearer than its tile's opaque range looks up), over the tiles whose front
+// slices start at a blended fragment (frontNear < sliceNear).
+ClusterSummary summarizeFrontClusters(const std::vector<gpu::FpTileLists>& tiles,
+                                      const std::vector<uint32_t>& maskOffsets, const std::vector<uint32_t>& masks,
+                                      uint32_t slices, uint32_t frontSlices);
 
 // Lights per tile (list 0 opaque, 1 transparent) on light assignment's one heat-map scale
 // (core/lightassign/heat_map.h); tiles that dropped lights (overflow of the "fixed" layout)

@@ -247,9 +247,11 @@ class ForwardPlusRenderer final : public Renderer {
                 add("lights_per_cluster_max", double(c.max));
                 add("cluster_light_bits", c.bits);
                 if (blendPass_) {
-                    auto [mean, most] = frontClusters();
-                    add("lights_per_front_cluster_mean", mean);
-                    add("lights_per_front_cluster_max", most);
+                    fp::ClusterSummary f = fp::summarizeFrontClusters(
+                        tileLists_, maskLayout_.offsets, maskBits_, slices_,
+                        std::max(slices_ / TP_LA_FRONT_SLICE_SHARE, 1u));
+                    add("lights_per_front_cluster_mean", f.mean);
+                    add("lights_per_front_cluster_max", double(f.max));
                 }
             }
             if (layout_ == TP_FP_LAYOUT_LINKED) {
@@ -293,31 +295,6 @@ class ForwardPlusRenderer final : public Renderer {
     }
 
   private:
-    // Clustered blended scenes: lights per front cluster (the slices a blended fragment
-    // nearer than its tile's opaque range looks up), mean and max over the tiles whose
-    // front slices start at a blended fragment (frontNear < sliceNear).
-    std::pair<double, double> frontClusters() const {
-        const uint32_t front = std::max(slices_ / TP_LA_FRONT_SLICE_SHARE, 1u);
-        double clusters = 0, lights = 0, most = 0;
-        for (size_t t = 0; t < tileLists_.size() && t + 1 < maskLayout_.offsets.size(); ++t) {
-            const gpu::FpTileLists& tl = tileLists_[t];
-            if (!(tl.frontNear < tl.sliceNear)) continue;
-            const uint32_t stride = (maskLayout_.offsets[t + 1] - maskLayout_.offsets[t]) / slices_;
-            const uint32_t words = std::min((tl.list[0].count + 31) / 32, stride);
-            for (uint32_t sl = 0; sl < front; ++sl) {
-                double n = 0;
-                for (uint32_t w = 0; w < words; ++w) {
-                    const size_t i = size_t(maskLayout_.offsets[t]) + size_t(sl) * stride + w;
-                    if (i < maskBits_.size()) n += std::popcount(maskBits_[i]);
-                }
-                clusters += 1;
-                lights += n;
-                most = std::max(most, n);
-            }
-        }
-        return {clusters > 0 ? lights / clusters : 0.0, most};
-    }
-
     // The conservative tile rectangle of every local light (CPU, once per configuration: the
     // lights and the camera are fixed for a run), counted per tile: the compact layout's
     // bound; with binned culling also each tile's candidates, in ascending light order.
