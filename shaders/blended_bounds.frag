@@ -6,14 +6,11 @@
 // blended pass shades (light_assign.glsl: LaBlendedBounds says why). Each records its view
 // distance into its tile's [min, max] (light_assign.h: TP_LA_BLEND_*).
 //   TP_INPUTS_AT_PIXEL: the once-per-pixel variant (scene_inputs.glsl), as the shading's.
-//   TP_LA_BLEND_SUBGROUP: lanes of one subgroup in one tile reduce first, so every lane's
-//   atomic pair carries the same values (the device supports arithmetic and vote subgroup operations in fragment
-//   shaders; blended_bounds.cpp picks the variant).
-#ifdef TP_LA_BLEND_SUBGROUP
-#extension GL_KHR_shader_subgroup_basic : require
-#extension GL_KHR_shader_subgroup_vote : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#endif
+// One atomic pair per fragment, no subgroup reduction: a helper invocation (a lane run for
+// derivatives only) would feed its extrapolated distance into a reduction, and an elected
+// lane may be a helper whose atomics are dropped (seen on an NVIDIA H100: a subgroup's
+// fragments lost), while its own atomics are dropped, so the bounds are exactly those of the
+// shaded fragments, the same on every run.
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
@@ -37,22 +34,6 @@ void main() {
     uint tile = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, tiles);
     uint tileCount = tiles.x * tiles.y;
     uint bits = floatBitsToUint(dist); // non-negative: orders like the value
-    // Helper invocations (for derivatives) are not shaded; their atomics are dropped, but a
-    // device may count them in a subgroup reduction: that only widens the bounds by a
-    // pixel's extrapolation along the triangle (conservative). (gl_HelperInvocation would
-    // exclude them; lavapipe's compiler lacks it.)
-#ifdef TP_LA_BLEND_SUBGROUP
-    if (subgroupAllEqual(tile)) {
-        // Every lane issues the reduced pair, not one elected lane: the elected lane may be a
-        // helper invocation, whose atomics are dropped, and the subgroup's fragments would be
-        // lost (seen on an NVIDIA H100: lights missing on blended surfaces). The helpers'
-        // own atomics are dropped; any shaded lane's carry the subgroup's min and max.
-        uint lo = subgroupMin(bits), hi = subgroupMax(bits);
-        atomicMin(bounds[tile], lo);
-        atomicMax(bounds[tileCount + tile], hi);
-        return;
-    }
-#endif
     atomicMin(bounds[tile], bits);
     atomicMax(bounds[tileCount + tile], bits);
 }

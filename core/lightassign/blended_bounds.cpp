@@ -32,22 +32,11 @@ ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig&
     return bounds_;
 }
 
-// Arithmetic and vote subgroup operations in fragment shaders (every lane of a subgroup in
-// one tile then costs one atomic pair instead of one each).
-bool BlendedBounds::subgroupReduce() const {
-    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &sub};
-    vkGetPhysicalDeviceProperties2(ctx_.physical, &p2);
-    const VkSubgroupFeatureFlags ops =
-        VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
-    return (sub.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT) && (sub.supportedOperations & ops) == ops;
-}
-
 void BlendedBounds::prepare(FrameGraph& graph) {
     set_ = graph.createPassSet("blended_bounds");
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
-    d.fragmentShader = std::string("blended_bounds") + (subgroupReduce() ? "_sg" : "") +
+    d.fragmentShader = std::string("blended_bounds") +
                        (config_.inputsAtPixel ? "_pixel" : "") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_LA_BLEND_SPEC_TILE_SIZE, config_.grid.tileSize});

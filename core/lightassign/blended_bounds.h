@@ -45,7 +45,6 @@ class BlendedBounds {
     ResourceHandle buffer() const { return bounds_; }
 
   private:
-    bool subgroupReduce() const;
     void record(PassContext& pc);
 
     GpuContext& ctx_;

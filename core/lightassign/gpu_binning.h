@@ -19,7 +19,8 @@
 //                to 256, else bitonic); longer runs than shared memory holds by blocks
 //                (bitonic steps within a block in shared memory, across blocks a dispatch each)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
-// steps 1-4 once, one readback (tiles + 1 words), the numbers the CPU path gives.
+// steps 1-4 once, then readbacks of the counts, the offsets and the big list's length: the
+// numbers the CPU path gives.
 #include <cstdint>
 #include <string>
 #include <vector>

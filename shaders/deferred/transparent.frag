@@ -5,7 +5,9 @@
 // each fragment lit by its tile's transparent light list (culled by the tiled lighting
 // pass against the tile's blended depth bounds; compact layout, include/light_assign.h).
 // Clustered (kSlices > 0): only the lights of the fragment's cluster, through the slice rows
-// the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase).
+// the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase; under
+// --light-cull binned the rows and the list are bitmasks over the tile's candidate run:
+// defMaskRowsBase, candidates.glsl).
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"

@@ -21,9 +21,10 @@ uint laTileIndex(uvec2 pixel, uint tileSize, uvec2 tiles) {
 
 // ---- the two depth ranges of a tile (reverse-Z: 1 = near plane, 0 = far/infinite) ----
 // Opaque: [nearest, farthest] depth of the tile's geometry (empty when it has none).
-// Transparent: blended surfaces lie anywhere in front of the opaque ones, so from the near
-// plane to the farthest opaque depth - unbounded (0) where any sample sees no geometry,
-// since a blended surface over the sky can be at any depth.
+// Transparent far end: blended surfaces lie anywhere in front of the opaque ones, so up to
+// the farthest opaque depth - unbounded (0) where any sample sees no geometry, since a
+// blended surface over the sky can be at any depth. The transparent list itself is culled
+// against the blended fragments' own depths (laBlendedFrustum below).
 float laTransparentFarDepth(bool hasGeometry, bool seesSky, float farDepth) {
     return (seesSky || !hasGeometry) ? 0.0 : farDepth;
 }
@@ -31,11 +32,6 @@ float laTransparentFarDepth(bool hasGeometry, bool seesSky, float farDepth) {
 TileFrustum laOpaqueFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj, float nearDepth,
                             float farDepth) {
     return makeTileFrustum(tile, tileSize, viewportSize, invProj, nearDepth, farDepth);
-}
-
-TileFrustum laTransparentFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 invProj,
-                                 float transparentFarDepth) {
-    return makeTileFrustum(tile, tileSize, viewportSize, invProj, 1.0, transparentFarDepth);
 }
 
 // ---- blended depth bounds (light_assign.h: TP_LA_BLEND_*; docs/clustered.md) ----

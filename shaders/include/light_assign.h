@@ -12,11 +12,11 @@ namespace tp::gpu {
 // The two depth ranges a tile's lights are culled against (light_assign.glsl:
 // laOpaqueRange, laTransparentRange).
 #define TP_LA_OPAQUE 0u      // the tile's [nearest, farthest] opaque depth; empty over the sky
-#define TP_LA_TRANSPARENT 1u // the near plane to the farthest opaque depth (unbounded over the sky)
+#define TP_LA_TRANSPARENT 1u // the tile's blended depth bounds (laBlendedBounds; empty without blended fragments)
 
 // Clustered with blended surfaces: 1 / TP_LA_FRONT_SLICE_SHARE of the slices (at least one)
-// cut the tile's front region, near plane to nearest opaque depth (light_assign.glsl:
-// laFrontSlices); the rest cut the opaque range.
+// cut the tile's front region, nearest blended fragment (laFrontNear) to nearest opaque
+// depth (light_assign.glsl: laFrontSlices); the rest cut the opaque range.
 #define TP_LA_FRONT_SLICE_SHARE 4u
 
 // Blended depth bounds (core/lightassign/blended_bounds.h, shaders/blended_bounds.frag): per

@@ -42,7 +42,8 @@ namespace tp::gpu {
 #define TP_BIN_BIG_RECT 32u
 
 // Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32); longer ones
-// in the target buffer, one dispatch per bitonic step.
+// by blocks of this size: the bitonic steps within a block in shared memory
+// (bin_sort_local.comp), a dispatch per step only across blocks (bin_sort_step.comp).
 #define TP_BIN_SHARED_SORT 4096u
 #define TP_BIN_SORT_GROUP 64u      // invocations sorting one tile's run
 #define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)

@@ -99,10 +99,13 @@ float coneMaxSignedDistance(vec4 plane, vec3 tip, vec3 axis, float h, float rb) 
 
 // A point or spot light's sphere in view space: xyz = centre, w = range padded by
 // TP_TILE_CULL_PAD * (range + distance). Computed once per light and tile by a caller that
-// tests several volumes (lightSphereInTile, sphereInTileBox).
+// tests several volumes (lightSphereInTile, sphereInTileBox). `precise` (no FMA
+// contraction): Forward+'s light_spheres pass and its inline culling compile this in two
+// shaders and must agree bit for bit (ForwardPlusCulling.SpherePassGivesTheInlineLists).
 vec4 lightSphereView(LightGpu light, mat4 view) {
-    vec3 c = (view * vec4(light.position, 1.0)).xyz;
-    return vec4(c, light.range + TP_TILE_CULL_PAD * (light.range + length(c)));
+    precise vec3 c = (view * vec4(light.position, 1.0)).xyz;
+    precise float r = light.range + TP_TILE_CULL_PAD * (light.range + length(c));
+    return vec4(c, r);
 }
 
 bool lightSphereInTile(LightGpu light, vec4 sphere, TileFrustum f, mat4 view);
