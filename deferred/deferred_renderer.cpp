@@ -49,6 +49,12 @@ class DeferredRenderer final : public Renderer {
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
         blended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
+        // The tiled pass writes per-sample radiance as a multisample storage image: refuse a
+        // device without them in one line rather than meet a validation error.
+        if (blended_ && t_.msaa() && !ctx_.caps.storageImageMultisample)
+            throw RendererError("deferred: blended surfaces under --msaa " + std::to_string(settings_.msaa) +
+                                " need multisample storage images, which " + ctx_.info.name +
+                                " lacks (shaderStorageImageMultisample); use --msaa 1");
         if (blended_ && t_.msaa())
             t_.hdrMsaa = graph.createImage("hdr_msaa", {t_.hdrFormat, 0, 0,
                                                         VkSampleCountFlagBits(settings_.msaa),
