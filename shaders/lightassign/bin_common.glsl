@@ -98,4 +98,14 @@ void binFillTile(uint t, uint light) {
 uint binSortSize(uint n) {
     return n <= 1u ? 1u : 1u << uint(findMSB(n - 1u) + 1);
 }
+
+// Bitonic sort, pair p of the step with block size k and distance j (powers of two): its
+// lower index and its partner, in the formulation whose comparators all put the smaller value
+// first (a merge's first step pairs i with its mirror in the block), so +inf padding stays
+// at the end. Used by the three sort shaders (shared memory, blocks, steps across blocks).
+// i = (p / j) * 2j + p % j, without dividing.
+uvec2 binBitonicPair(uint p, uint k, uint j) {
+    const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
+    return uvec2(i, j == k >> 1u ? i ^ (k - 1u) : i + j);
+}
 #endif

@@ -35,9 +35,8 @@ void main() {
     for (uint k = 2u; k <= size; k <<= 1u)
         for (uint j = k >> 1u; j > 0u; j >>= 1u) {
             for (uint p = lane; p < size / 2u; p += TP_BIN_SORT_GROUP) {
-                // (p / j) * 2j + p % j, without dividing: j is a power of two
-                const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
-                const uint other = j == k >> 1u ? i ^ (k - 1u) : i + j;
+                const uvec2 pair = binBitonicPair(p, k, j);
+                const uint i = pair.x, other = pair.y;
                 // other > i: past the run, +inf, which keeps the order (as in bin_sort_step).
                 if (other >= n) continue;
                 const uint a = run[i], b = run[other];

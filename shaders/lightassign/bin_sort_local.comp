@@ -28,11 +28,10 @@ void main() {
     for (uint k = kFrom; k <= kTo; k <<= 1u)
         for (uint j = min(k >> 1u, TP_BIN_SHARED_SORT / 2u); j > 0u; j >>= 1u) {
             for (uint p = lane; p < TP_BIN_SHARED_SORT / 2u; p += 64u) {
-                // (p / j) * 2j + p % j, without dividing: j is a power of two
-                const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
+                const uvec2 pair = binBitonicPair(p, k, j);
                 // The mirror only while k fits the block (a merge's first step); past it, that
                 // step was bin_sort_step.comp's. Indices in the block: start is a multiple of k then.
-                const uint other = j == k >> 1u ? i ^ (k - 1u) : i + j;
+                const uint i = pair.x, other = pair.y;
                 const uint a = block[i], b = block[other];
                 if (a > b) {
                     block[i] = b;

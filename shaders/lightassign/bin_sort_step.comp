@@ -21,9 +21,8 @@ void main() {
     for (uint q = 0u; q < TP_BIN_STEP_PAIRS; ++q) {
         const uint p = chunk + q * 64u + gl_LocalInvocationIndex;
         if (p >= pairs) break;
-        // (p / j) * 2j + p % j, without dividing: j is a power of two
-        const uint i = ((p & ~(j - 1u)) << 1u) | (p & (j - 1u));
-        const uint other = j == k >> 1u ? i ^ (k - 1u) : i + j;
+        const uvec2 pair = binBitonicPair(p, k, j);
+        const uint i = pair.x, other = pair.y;
         if (other >= n) continue;
         const uint a = target[base + i], b = target[base + other];
         if (a > b) {
