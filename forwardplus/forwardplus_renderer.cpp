@@ -319,39 +319,12 @@ class ForwardPlusRenderer final : public Renderer {
     }
 
     void createParams() {
-        gpu::FpParams p{};
-        p.tiles = glm::uvec4(grid_.tilesX, grid_.tilesY, grid_.count(), grid_.tileSize);
-        const uint32_t dirCount = uint32_t(classes_.directional.size());
-        const uint32_t localCount = uint32_t(classes_.local.size());
-        std::vector<uint32_t> data;
-        data.insert(data.end(), classes_.directional.begin(), classes_.directional.end());
-        data.insert(data.end(), classes_.local.begin(), classes_.local.end());
-        const uint32_t offsetBase = uint32_t(data.size());
-        if (layout_ == TP_FP_LAYOUT_COMPACT || binned_)
-            data.insert(data.end(), tileOffsets_.begin(), tileOffsets_.end());
-        const uint32_t candidateBase = uint32_t(data.size());
-        data.insert(data.end(), candidates_.begin(), candidates_.end());
-        if (gpuBinning_) data.resize(data.size() + boundSlots_, 0); // light_binning writes them
-        candidateWord_ = sizeof(p) / 4 + candidateBase;
-        const uint32_t maskOffsetBase = uint32_t(data.size());
-        data.insert(data.end(), maskLayout_.offsets.begin(), maskLayout_.offsets.end());
-        data.push_back(0); // never empty
-        const uint64_t limit = ctx_.caps.maxStorageBufferRange;
-        if (sizeof(p) + data.size() * 4 > limit)
-            throw RendererError("fp_params (light classes, tile offsets, binned candidates) needs " +
-                                std::to_string(sizeof(p) + data.size() * 4) + " bytes, more than maxStorageBufferRange (" +
-                                std::to_string(limit) + ") of " + ctx_.info.name +
-                                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
-        p.lights = glm::uvec4(dirCount, localCount, offsetBase, settings_.integer("tile-capacity"));
-        p.lists = glm::uvec4(uint32_t(lists_.stride), uint32_t(lists_.poolNodes), candidateBase, maskOffsetBase);
-        std::vector<uint8_t> bytes(sizeof(p) + data.size() * 4);
-        std::memcpy(bytes.data(), &p, sizeof(p));
-        std::memcpy(bytes.data() + sizeof(p), data.data(), data.size() * 4);
-        params_ = createBufferWithData(ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                       {"forwardplus", "", "fp_params",
-                                        "tile grid, light classes" +
-                                            std::string(layout_ == TP_FP_LAYOUT_COMPACT || binned_ ? ", per-tile offsets" : "") +
-                                            std::string(binned_ ? ", binned candidates per tile" : "")});
+        fp::ParamsInput in{grid_, &classes_, layout_, binned_, gpuBinning_, &tileOffsets_, &candidates_, boundSlots_,
+                           &maskLayout_.offsets, uint32_t(settings_.integer("tile-capacity")), lists_};
+        fp::PackedParams packed = fp::packParams(ctx_, in);
+        candidateWord_ = packed.candidateWord;
+        params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                       {"forwardplus", "", "fp_params", packed.purpose});
     }
 
     // The culling pass's configuration: what its shader variant, batches and dispatches depend on.

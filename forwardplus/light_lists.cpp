@@ -1,8 +1,10 @@
 #include "forwardplus/light_lists.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "core/gpu/context.h"
+#include "core/lightassign/light_classes.h"
 #include "core/render/renderer.h"
 #include "forwardplus/forwardplus_shared.h"
 
@@ -51,6 +53,41 @@ MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, 
                             std::to_string(ctx.caps.maxStorageBufferRange) + ") of " + ctx.info.name +
                             "; use fewer --slices, a larger --tile, a lower --res or fewer lights");
     return m;
+}
+
+PackedParams packParams(const GpuContext& ctx, const ParamsInput& in) {
+    gpu::FpParams p{};
+    p.tiles = glm::uvec4(in.grid.tilesX, in.grid.tilesY, in.grid.count(), in.grid.tileSize);
+    const uint32_t dirCount = uint32_t(in.classes->directional.size());
+    const uint32_t localCount = uint32_t(in.classes->local.size());
+    std::vector<uint32_t> data;
+    data.insert(data.end(), in.classes->directional.begin(), in.classes->directional.end());
+    data.insert(data.end(), in.classes->local.begin(), in.classes->local.end());
+    const uint32_t offsetBase = uint32_t(data.size());
+    const bool offsets = in.layout == TP_FP_LAYOUT_COMPACT || in.binned;
+    if (offsets) data.insert(data.end(), in.tileOffsets->begin(), in.tileOffsets->end());
+    const uint32_t candidateBase = uint32_t(data.size());
+    data.insert(data.end(), in.candidates->begin(), in.candidates->end());
+    if (in.gpuBinning) data.resize(data.size() + in.boundSlots, 0); // light_binning writes them
+    const uint32_t maskOffsetBase = uint32_t(data.size());
+    data.insert(data.end(), in.maskOffsets->begin(), in.maskOffsets->end());
+    data.push_back(0); // never empty
+    const uint64_t limit = ctx.caps.maxStorageBufferRange;
+    if (sizeof(p) + data.size() * 4 > limit)
+        throw RendererError("fp_params (light classes, tile offsets, binned candidates) needs " +
+                            std::to_string(sizeof(p) + data.size() * 4) + " bytes, more than maxStorageBufferRange (" +
+                            std::to_string(limit) + ") of " + ctx.info.name +
+                            "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
+    p.lights = glm::uvec4(dirCount, localCount, offsetBase, in.tileCapacity);
+    p.lists = glm::uvec4(uint32_t(in.lists.stride), uint32_t(in.lists.poolNodes), candidateBase, maskOffsetBase);
+    PackedParams out;
+    out.candidateWord = sizeof(p) / 4 + candidateBase;
+    out.bytes.resize(sizeof(p) + data.size() * 4);
+    std::memcpy(out.bytes.data(), &p, sizeof(p));
+    std::memcpy(out.bytes.data() + sizeof(p), data.data(), data.size() * 4);
+    out.purpose = "tile grid, light classes" + std::string(offsets ? ", per-tile offsets" : "") +
+                  std::string(in.binned ? ", binned candidates per tile" : "");
+    return out;
 }
 
 } // namespace tp::fp

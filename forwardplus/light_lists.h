@@ -7,9 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "core/lightassign/tile_grid.h"
+
 namespace tp {
 
 class GpuContext;
+namespace la {
+struct LightClasses;
+}
 
 namespace fp {
 
@@ -39,6 +44,31 @@ struct MaskLayout {
 };
 
 MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, uint32_t slices);
+
+// fp_params: FpParams, then its words - the directional and local light indices, the
+// per-tile offsets (compact layout or binned culling), the binned candidates (zeros that
+// light_binning fills under --light-bin gpu), the clusters' mask-row offsets - uploaded
+// once per configuration. Refuses, in one line, what maxStorageBufferRange cannot hold.
+struct ParamsInput {
+    la::TileGrid grid;
+    const la::LightClasses* classes = nullptr;
+    uint32_t layout = 0; // TP_FP_LAYOUT_*
+    bool binned = false, gpuBinning = false;
+    const std::vector<uint32_t>* tileOffsets = nullptr;
+    const std::vector<uint32_t>* candidates = nullptr; // CPU binning's; empty under gpu
+    uint64_t boundSlots = 0;                           // gpu binning: the candidates' slots
+    const std::vector<uint32_t>* maskOffsets = nullptr;
+    uint32_t tileCapacity = 0;
+    ListSizes lists;
+};
+
+struct PackedParams {
+    std::vector<uint8_t> bytes;
+    uint64_t candidateWord = 0; // the candidates' first word in the buffer
+    std::string purpose;        // the buffer's description in the ledger
+};
+
+PackedParams packParams(const GpuContext& ctx, const ParamsInput& in);
 
 } // namespace fp
 } // namespace tp
