@@ -68,8 +68,11 @@ class DeferredRenderer final : public Renderer {
             // Compact: each tile's run is sized by a conservative bound, so nothing can drop
             // (a drop would be counted in the tile's header, never silent).
             // Binned: bitmasks over each tile's candidates instead of light indices.
+            // Binned: the lights are binned once (tiled lighting's candidates) and the lists
+            // sized from the same bound.
+            const std::vector<uint32_t>* bound = binned() ? &lighting_.bound(t_.grid, graph.owner()) : nullptr;
             TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
-                                                             ctx_.info.name, binned());
+                                                             ctx_.info.name, binned(), bound);
             t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
                                                      lists.masks ? "per tile: list header, then a bitmask over its "
                                                                    "binned candidates"

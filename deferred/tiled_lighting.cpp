@@ -25,13 +25,8 @@ void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, 
     t_ = &t;
     listsOnly_ = listsOnly;
     transparentMasks_ = transparentMasks;
-    if (gpuBinning_) {
-        // Sized now (one plan-time run); the frame's pass runs before this one.
-        binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, t.grid, la::classifyLights(scene_.shadingLights()).local,
-                                                    graph.owner());
-        gpuBins_ = binning_->sizes();
-        binning_->plan(graph);
-    }
+    if (binned_) bound(t.grid, graph.owner());
+    if (binning_) binning_->plan(graph); // the frame's light_binning runs before this pass
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
     const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
                                         TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
@@ -104,6 +99,22 @@ void TiledLighting::prepare(FrameGraph& graph) {
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 
+const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid, const std::string& owner) {
+    if (!binnedOnce_) {
+        binnedOnce_ = true;
+        const gpu::FrameUniforms& f = scene_.shadingFrame();
+        const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
+        const std::vector<uint32_t> local = la::classifyLights(lights).local;
+        if (gpuBinning_) { // sized now (one plan-time run); the frame's pass fills the runs
+            binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid, local, owner);
+            bins_ = binning_->sizes();
+        } else {
+            bins_ = la::binLights(grid, f.view, f.proj, lights, local, true);
+        }
+    }
+    return bins_.bound;
+}
+
 // Binned: per tile, the point/spot lights whose conservative tile rectangle covers it (CPU,
 // once per configuration: the lights and the camera are fixed for a run), after the
 // directional lights, which every tile takes. Otherwise a header saying "no candidates".
@@ -111,11 +122,8 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
     std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
     const uint32_t tiles = t_->grid.count();
     if (binned_) {
-        const gpu::FrameUniforms& f = scene_.shadingFrame();
-        const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
-        la::LightClasses classes = la::classifyLights(lights);
-        la::LightBins bins = gpuBinning_ ? std::move(gpuBins_)
-                                         : la::binLights(t_->grid, f.view, f.proj, lights, classes.local, true);
+        la::LightClasses classes = la::classifyLights(scene_.shadingLights());
+        const la::LightBins& bins = bins_; // from plan (bound())
         const uint32_t directional = uint32_t(classes.directional.size());
         // The buffer's size from the unclamped slot count: refused before it is built.
         const uint64_t bytes = (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
@@ -136,6 +144,7 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
     } else {
         candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
     }
+    std::vector<uint32_t>().swap(bins_.candidates); // uploaded: the host copy is not needed again
     candidates_ = createBufferWithData(ctx_, words.data(), words.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        {graph.owner(), "", "light_candidates",
                                         binned_ ? "binned culling: directional lights, per-tile offsets, candidates"

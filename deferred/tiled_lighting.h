@@ -43,6 +43,10 @@ class TiledLighting {
     void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {},
               ResourceHandle blendBounds = {});
     void prepare(FrameGraph& graph);
+    // Binned: each tile's candidate count (per point/spot light rectangle covering it; the
+    // transparent lists are sized from it too), binned once per configuration, on the CPU or
+    // (gpuBinning) by the plan-time run of the GPU binning. plan() bins if nobody asked before.
+    const std::vector<uint32_t>& bound(const la::TileGrid& grid, const std::string& owner);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
     bool gpuBinning() const { return gpuBinning_; }
@@ -64,7 +68,8 @@ class TiledLighting {
     uint32_t slices_ = 0;
     bool gpuBinning_ = false;
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
-    la::LightBins gpuBins_;                   // its plan-time sizes (no candidates)
+    la::LightBins bins_;                      // binned: the runs (CPU) or their sizes (GPU: no candidates)
+    bool binnedOnce_ = false;
     bool listsOnly_ = false;
     ResourceHandle transparentMasks_;
     uint32_t maxCandidates_ = 0; // binned: the most candidates of any tile (the batches' range)
