@@ -63,6 +63,12 @@ class ForwardPlusRenderer final : public Renderer {
             subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
             subgroupLoop_ = subgroupMissing_.empty();
         }
+        // --cull-by: asked for, a subgroup per tile must be possible; auto takes it on a GPU that can.
+        const std::string cullBy = settings_.text("cull-by");
+        const std::string noSubgroupCull = fp::subgroupCullingUnsupported(ctx_.caps);
+        if (cullBy == "subgroup" && !noSubgroupCull.empty())
+            throw RendererError("--cull-by subgroup: " + noSubgroupCull + " (use --cull-by invocation)");
+        subgroupCull_ = cullBy == "subgroup" || (cullBy == "auto" && !ctx_.isCpuDevice() && noSubgroupCull.empty());
         if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
             throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
                                 settings_.text("light-lists") + "')");
@@ -206,6 +212,7 @@ class ForwardPlusRenderer final : public Renderer {
         add("light_list_slots", double(lists_.slots));
         add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
         add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);       // --light-spheres, resolved
+        add("culling_by_subgroup", subgroupCull_ ? 1.0 : 0.0);     // --cull-by, resolved
         if (binned_) add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
         if (binned_) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered_) {
@@ -341,6 +348,7 @@ class ForwardPlusRenderer final : public Renderer {
         c.twoLists = twoLists_;
         c.spanFromNear = blendPass_;
         c.spheres = spherePass_;
+        c.subgroupLanes = subgroupCull_ ? ctx_.caps.subgroupSize : 0;
         return c;
     }
 
@@ -439,6 +447,7 @@ class ForwardPlusRenderer final : public Renderer {
     bool binned_ = true, clustered_ = false, blendPass_ = false;
     uint32_t slices_ = 16;
     bool spherePass_ = false;      // --light-spheres resolved: the light_spheres pass runs
+    bool subgroupCull_ = false;    // --cull-by resolved: one subgroup culls a tile
     bool subgroupLoop_ = false;    // clustered, --light-loop subgroup, and the device runs it
     std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
     fp::MaskLayout maskLayout_; // clustered: the slice rows' word offsets per tile

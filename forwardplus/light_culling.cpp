@@ -11,6 +11,20 @@
 
 namespace tp::fp {
 
+std::string subgroupCullingUnsupported(const DeviceCaps& caps) {
+    if (!(caps.subgroupStages & VK_SHADER_STAGE_COMPUTE_BIT))
+        return "the device has no subgroup operations in compute shaders";
+    const uint32_t need = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT |
+                          VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
+    if ((caps.subgroupOps & need) != need)
+        return "the device lacks subgroup vote, arithmetic or ballot operations in compute shaders";
+    if (!caps.computeFullSubgroups)
+        return "the device cannot guarantee full subgroups of its subgroup size to a compute workgroup";
+    if (caps.subgroupSize > 64)
+        return "the device's subgroups have " + std::to_string(caps.subgroupSize) + " lanes (at most 64 supported)";
+    return {};
+}
+
 LightCulling::~LightCulling() {
     if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
@@ -56,8 +70,9 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     layout_ = scene_.createPipelineLayout(set_.layout);
 
     const bool msaa = config_.samples > 1;
+    const bool subgroup = config_.subgroupLanes > 0;
     std::string name = "fp_cull_" + config_.lists + (config_.clustered ? "_clustered" : "") + (msaa ? "_ms" : "") +
-                       "_comp";
+                       (subgroup ? "_subgroup" : "") + "_comp";
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
     spec.push_back({TP_FP_SPEC_TILE_SIZE, config_.grid.tileSize});
     spec.push_back({TP_FP_SPEC_SAMPLES, config_.samples});
@@ -66,7 +81,8 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     spec.push_back({TP_FP_SPEC_SLICES, config_.slices});
     spec.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, config_.spanFromNear ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_SPHERES, config_.spheres ? 1u : 0u});
-    pipeline_ = createComputePipeline(ctx_, name, spec, layout_, &set_);
+    if (subgroup) spec.push_back({TP_FP_SPEC_CULL_LANES, config_.subgroupLanes});
+    pipeline_ = createComputePipeline(ctx_, name, spec, layout_, &set_, config_.subgroupLanes);
 }
 
 // Candidates per culling dispatch: one invocation culls a whole tile, and lavapipe ends
@@ -101,8 +117,10 @@ void LightCulling::record(PassContext& pc) {
         push.TP_FP_CULL_END = b + 1 == batches ? 0xffffffffu : (b + 1) * batch;
         push.TP_FP_CULL_INITIAL = i == 0 ? 1u : 0u;
         vkCmdPushConstants(pc.cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-        // One invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp).
-        vkCmdDispatch(pc.cmd, (config_.grid.tilesX + 7) / 8, (config_.grid.tilesY + 7) / 8, 1);
+        if (config_.subgroupLanes > 0) // one workgroup (one subgroup) per tile: light_culling_subgroup.comp
+            vkCmdDispatch(pc.cmd, config_.grid.tilesX, config_.grid.tilesY, 1);
+        else // one invocation per tile, 8 x 8 tiles per workgroup (light_culling.comp)
+            vkCmdDispatch(pc.cmd, (config_.grid.tilesX + 7) / 8, (config_.grid.tilesY + 7) / 8, 1);
     }
     dispatches_ = batches;
 }

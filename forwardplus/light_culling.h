@@ -1,8 +1,9 @@
 #pragma once
-// Forward+'s light_culling pass (compute, one invocation per tile, 8 x 8 tiles per
-// workgroup): depth bounds over every sample, point/spot lights against the tile
-// sub-frustum, lists written out in the chosen layout; with --light-assign clustered also
-// each depth slice's bitmask. Split into batches of candidates for lavapipe's loop limit.
+// Forward+'s light_culling pass (compute; --cull-by invocation: one invocation per tile, 8 x 8
+// tiles per workgroup; --cull-by subgroup: one subgroup per tile): depth bounds over every
+// sample, point/spot lights against the tile sub-frustum, lists written out in the chosen
+// layout; with --light-assign clustered also each depth slice's bitmask. Both ways give the
+// same bytes. Split into batches of candidates for lavapipe's loop limit.
 #include <cstdint>
 #include <string>
 
@@ -15,6 +16,7 @@ namespace tp {
 
 class GpuContext;
 class SceneGpu;
+struct DeviceCaps;
 
 namespace fp {
 
@@ -27,7 +29,13 @@ struct CullConfig {
     uint32_t mostTested = 0; // the most lights any tile tests (binned: its candidates; all: every local light)
     bool binned = true, clustered = false, twoLists = false, spanFromNear = false;
     bool spheres = true; // read the light_spheres pass's buffer (else a stand-in is bound)
+    uint32_t subgroupLanes = 0; // > 0: one subgroup of this many lanes per tile (--cull-by subgroup)
 };
+
+// Whether the device can cull a tile with one subgroup (light_culling_subgroup.comp): compute
+// subgroups with ballot, arithmetic and vote, full subgroups of its subgroup size on demand,
+// and at most 64 lanes. Empty when it can; otherwise the reason.
+std::string subgroupCullingUnsupported(const DeviceCaps& caps);
 
 // The resources the pass reads and writes (counter: linked only; masks: clustered only;
 // blendBounds: blended scenes only, core/lightassign/blended_bounds.h; spheres: light_spheres.h).

@@ -30,7 +30,14 @@ KnobSchema forwardPlusKnobs() {
             Knob::choice("light-spheres", {"auto", "pass", "inline"},
                          "Each light's view-space sphere for the culling: pass (once per light in the "
                          "light_spheres pass, 16 bytes per light), inline (per candidate in the culling) or auto "
-                         "(pass on a CPU device such as lavapipe, inline on a GPU)")};
+                         "(pass on a CPU device such as lavapipe, inline on a GPU)"),
+            // Same bytes either way: only who does the work.
+            Knob::choice("cull-by", {"auto", "invocation", "subgroup"},
+                         "Who culls a tile in light_culling: invocation (one thread walks the tile's candidates; "
+                         "cheapest on a CPU device such as lavapipe), subgroup (one subgroup per tile, a candidate "
+                         "per lane, survivors placed in order by a ballot: a GPU runs tiles x lanes threads) or auto "
+                         "(invocation on a CPU device, subgroup on a GPU that supports it); the same lists either "
+                         "way")};
 }
 
 // Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).

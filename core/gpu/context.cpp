@@ -135,9 +135,13 @@ Result<uint32_t> chooseDevice(const std::vector<VkPhysicalDevice>& devices, cons
 DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p) {
     VkPhysicalDeviceFeatures f;
     vkGetPhysicalDeviceFeatures(device, &f);
-    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceVulkan13Properties p13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_PROPERTIES};
+    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES, &p13};
     VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &sub};
     vkGetPhysicalDeviceProperties2(device, &p2);
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f13};
+    vkGetPhysicalDeviceFeatures2(device, &f2);
     DeviceCaps c;
     c.float64 = f.shaderFloat64;
     c.sampleRateShading = f.sampleRateShading;
@@ -153,6 +157,9 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.subgroupSize = sub.subgroupSize;
     c.subgroupStages = sub.supportedStages;
     c.subgroupOps = sub.supportedOperations;
+    c.computeFullSubgroups = f13.subgroupSizeControl && f13.computeFullSubgroups &&
+                             (p13.requiredSubgroupSizeStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+                             p13.minSubgroupSize <= sub.subgroupSize && sub.subgroupSize <= p13.maxSubgroupSize;
     c.standardSampleLocations = p.limits.standardSampleLocations;
     return c;
 }
@@ -236,6 +243,8 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     // Required by Vulkan 1.3; glslang's vulkan1.3 target writes compute workgroup sizes as
     // LocalSizeId, which the validation layers accept only with maintenance4 enabled.
     f13.maintenance4 = VK_TRUE;
+    f13.subgroupSizeControl = ctx->caps.computeFullSubgroups;
+    f13.computeFullSubgroups = ctx->caps.computeFullSubgroups;
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
     f12.hostQueryReset = VK_TRUE;
     f12.scalarBlockLayout = VK_FALSE;

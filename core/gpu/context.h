@@ -48,6 +48,10 @@ struct DeviceCaps {
     uint32_t subgroupSize = 0;
     uint32_t subgroupStages = 0; // VkShaderStageFlags with subgroup operations
     uint32_t subgroupOps = 0;    // VkSubgroupFeatureFlags
+    // A compute pipeline can require full subgroups of subgroupSize lanes (Vulkan 1.3's
+    // subgroupSizeControl + computeFullSubgroups, with compute in requiredSubgroupSizeStages):
+    // what a workgroup-is-one-subgroup shader needs (createComputePipeline's fullSubgroups).
+    bool computeFullSubgroups = false;
     bool standardSampleLocations = false; // MSAA samples sit at the spec's standard locations
 };
 

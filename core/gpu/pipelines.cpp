@@ -140,7 +140,7 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
 
 VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
                                  const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout,
-                                 const PassSet* passSet) {
+                                 const PassSet* passSet, uint32_t fullSubgroups) {
     checkPassBindings(passSet, {shader});
     SpecData spec;
     fillSpec(spec, specConstants);
@@ -150,6 +150,16 @@ VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
     info.stage.module = createShaderModule(ctx, shader);
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = &spec.info;
+    VkPipelineShaderStageRequiredSubgroupSizeCreateInfo required{
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO};
+    if (fullSubgroups > 0) {
+        if (!ctx.caps.computeFullSubgroups || fullSubgroups != ctx.caps.subgroupSize)
+            throw std::runtime_error("compute shader " + shader + " needs full subgroups of " +
+                                     std::to_string(fullSubgroups) + " lanes, which the device cannot guarantee");
+        required.requiredSubgroupSize = fullSubgroups;
+        info.stage.pNext = &required;
+        info.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;
+    }
     info.layout = layout;
     VkPipeline pipeline;
     VkResult r = vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);

@@ -45,9 +45,12 @@ struct GraphicsPipelineDesc {
 };
 
 VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& desc);
+// fullSubgroups > 0: the workgroups are made of full subgroups of exactly that many lanes
+// (it must be ctx.caps.subgroupSize, with ctx.caps.computeFullSubgroups): a shader whose
+// workgroup is that size is then one subgroup.
 VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
                                  const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout,
-                                 const PassSet* passSet = nullptr);
+                                 const PassSet* passSet = nullptr, uint32_t fullSubgroups = 0);
 
 // Viewport (negative height, depth 0..1) and scissor covering width x height.
 void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height);

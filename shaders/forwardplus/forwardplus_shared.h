@@ -28,6 +28,7 @@ namespace tp::gpu {
 #define TP_FP_SPEC_SLICES 17    // clustered: depth slices per tile
 #define TP_FP_SPEC_SPAN_FROM_NEAR 18 // clustered: 1 = a tile's span starts at the near plane (blended surfaces)
 #define TP_FP_SPEC_SPHERES 19 // culling: 1 = read each light's sphere from light_spheres, 0 = compute it per candidate
+#define TP_FP_SPEC_CULL_LANES 20 // light_culling_subgroup: workgroup size = the device's subgroup size (<= 64)
 
 #define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted

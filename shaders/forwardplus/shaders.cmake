@@ -19,6 +19,18 @@ triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_compact_cluste
   DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/light_culling.comp fp_cull_compact_clustered_ms_comp
   DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1 TP_FP_DEPTH_MS=1)
+# --cull-by subgroup: the same variants of the culling with one subgroup per tile.
+foreach(layout compact fixed linked)
+  string(TOUPPER ${layout} LAYOUT_UPPER)
+  triptych_add_shader(SPVS ${SHADER_DIR}/light_culling_subgroup.comp fp_cull_${layout}_subgroup_comp
+    DEFINES TP_FP_CULL_${LAYOUT_UPPER}=1)
+  triptych_add_shader(SPVS ${SHADER_DIR}/light_culling_subgroup.comp fp_cull_${layout}_ms_subgroup_comp
+    DEFINES TP_FP_CULL_${LAYOUT_UPPER}=1 TP_FP_DEPTH_MS=1)
+endforeach()
+triptych_add_shader(SPVS ${SHADER_DIR}/light_culling_subgroup.comp fp_cull_compact_clustered_subgroup_comp
+  DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/light_culling_subgroup.comp fp_cull_compact_clustered_ms_subgroup_comp
+  DEFINES TP_FP_CULL_COMPACT=1 TP_FP_CLUSTERED=1 TP_FP_DEPTH_MS=1)
 # --light-loop subgroup (clustered): the cluster loop scalarized over a subgroup that shades one
 # tile; separate variants because they declare the subgroup capabilities.
 triptych_add_shader(SPVS ${SHADER_DIR}/shading.frag fp_shading_clustered_subgroup_frag

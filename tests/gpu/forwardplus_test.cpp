@@ -25,6 +25,7 @@
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "forwardplus/forwardplus_debug.h"
+#include "forwardplus/light_culling.h"
 #include "core/lightassign/blended_bounds.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/loop_knob.h"
@@ -719,6 +720,101 @@ RenderSettings clustered(RenderSettings s, uint32_t slices = 16) {
     s.set("light-assign", "clustered");
     s.set("slices", slices);
     return s;
+}
+
+// The same culling results from two runs: every tile record (linked: but for where its nodes
+// start, which the pool's atomic allocation orders), every list, and every slice word the
+// shading reads (words [0, ceil(count / 32)) of each of the tile's rows; the rest is never
+// written). `bound`: the tiles' slot counts (conservativeTileBound), for the mask rows.
+void expectSameCulling(const ListRun& a, const ListRun& b, const std::string& layout, uint32_t slices,
+                       const std::vector<uint32_t>& bound, const std::string& what) {
+    ASSERT_EQ(a.tiles.size(), b.tiles.size()) << what;
+    uint32_t maskBase = 0;
+    uint64_t listed = 0, words = 0;
+    for (uint32_t t = 0; t < a.grid.count(); ++t) {
+        gpu::FpTileLists ra = a.tiles[t], rb = b.tiles[t];
+        for (uint32_t list = 0; list < 2; ++list) {
+            if (layout == "linked") ra.list[list].start = rb.list[list].start = 0;
+            std::vector<uint32_t> la = listOf(a, t, list, layout);
+            EXPECT_EQ(la, listOf(b, t, list, layout)) << what << ", tile " << t << " list " << list;
+            listed += la.size();
+        }
+        EXPECT_EQ(std::memcmp(&ra, &rb, sizeof(ra)), 0) << what << ", tile " << t;
+        if (a.masks.empty()) continue;
+        const uint32_t stride = (bound[t] + 31) / 32, used = (a.tiles[t].list[0].count + 31) / 32;
+        for (uint32_t sl = 0; sl < slices; ++sl)
+            for (uint32_t w = 0; w < used; ++w, ++words) {
+                const uint32_t i = maskBase + sl * stride + w;
+                if (a.masks[i] != b.masks[i])
+                    ADD_FAILURE() << what << ", tile " << t << " slice " << sl << " word " << w;
+            }
+        maskBase += slices * stride;
+    }
+    EXPECT_GT(listed, 0u) << what;
+    if (!a.masks.empty()) {
+        EXPECT_GT(words, 0u) << what;
+    }
+}
+
+// --cull-by subgroup (one subgroup per tile, a candidate per lane, survivors placed by a
+// ballot) gives --cull-by invocation's results byte for byte: every layout, tiled (two lists)
+// and clustered, with spot lights and without, under MSAA, and over several dispatches
+// (clustered, 64 slices: 9). lavapipe's subgroups have 8 lanes, so a tile takes many steps
+// and its survivors cross words of the slice rows mid-step.
+TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    if (std::string why = fp::subgroupCullingUnsupported(ctx->caps); !why.empty())
+        GTEST_SKIP() << "the default device cannot cull by subgroup: " << why;
+    struct Case {
+        Scene scene;
+        RenderSettings settings;
+        std::string layout;
+        uint32_t slices; // 0: tiled
+    };
+    std::vector<Case> cases;
+    for (const char* layout : {"compact", "fixed", "linked"}) {
+        RenderSettings s = small(96, 54, 1);
+        s.set("light-lists", layout);
+        cases.push_back({courtyardScene(256), s, layout, 0});
+    }
+    cases.push_back({courtyardPointScene(256), small(96, 54, 1), "compact", 0});
+    cases.push_back({courtyardScene(256), clustered(small(96, 54, 1)), "compact", 16});
+    cases.push_back({courtyardPointScene(256), clustered(small(96, 54, 1)), "compact", 16});
+    RenderSettings ms = clustered(small(96, 54, 4));
+    ms.set("tile", 8);
+    cases.push_back({courtyardScene(256), ms, "compact", 16});
+    RenderSettings msLinked = small(96, 54, 4);
+    msLinked.set("light-lists", "linked");
+    cases.push_back({courtyardScene(256), msLinked, "linked", 0});
+    cases.push_back({floorScene(4096), clustered(small(40, 24, 1), 64), "compact", 64});
+    auto counter = [](const RendererStats& stats, const std::string& name) {
+        for (const auto& [n, v] : stats.counters)
+            if (n == name) return v;
+        return -1.0;
+    };
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const std::string what = "case " + std::to_string(i) + " (" + c.layout + ", " +
+                                 (c.slices ? std::to_string(c.slices) + " slices" : "tiled") + ", msaa " +
+                                 std::to_string(c.settings.msaa) + ")";
+        SceneGpu gpuScene(*ctx, c.scene);
+        RenderSettings s = c.settings;
+        s.set("cull-by", "invocation");
+        ListRun invocation = runLists(*ctx, gpuScene, s);
+        s.set("cull-by", "subgroup");
+        ListRun subgroup = runLists(*ctx, gpuScene, s);
+        EXPECT_EQ(counter(subgroup.stats, "culling_by_subgroup"), 1.0) << what;
+        EXPECT_EQ(counter(invocation.stats, "culling_by_subgroup"), 0.0) << what;
+        EXPECT_EQ(counter(subgroup.stats, "culling_dispatches"), counter(invocation.stats, "culling_dispatches"))
+            << what;
+        const gpu::FrameUniforms& f = gpuScene.frame();
+        const auto& lights = gpuScene.lightsGpu();
+        std::vector<uint32_t> bound = la::conservativeTileBound(invocation.grid, f.view, f.proj, lights,
+                                                                la::classifyLights(lights).local);
+        expectSameCulling(invocation, subgroup, c.layout, c.slices, bound, what);
+    }
+    expectNoValidationMessages(*ctx);
 }
 
 TEST(ForwardPlusClustered, CourtyardMatchesReference) {
