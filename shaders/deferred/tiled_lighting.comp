@@ -3,7 +3,8 @@
 // Tiled deferred lighting (Andersson 2009, Uncharted; Lauritzen 2010): one workgroup per
 // tile. (1) the tile's depth bounds from the G-buffer depth (every sample), (2) the lights
 // of this dispatch's batch (push constant: [first, end), at most the shared capacity) that
-// reach the tile's sub-frustum are culled into shared memory, (3) every pixel of the tile
+// reach the tile's sub-frustum are culled into a shared list, in ascending candidate order
+// (compactList: the same list, and so the same image, on every run), (3) every pixel of the tile
 // is shaded from that list: the first batch writes hdr (with ambient and emissive), later
 // batches add to it. Under MSAA a pixel whose samples differ (an edge) is shaded per
 // sample, every other pixel once. Blended scenes also get each tile's transparent light
@@ -97,6 +98,9 @@ shared uint sTransparentCount;
 shared uint sMaskDropped; // binned: survivors past the tile's mask words (none while the runs match the bound)
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
+// The culling's survivors of this batch as bits over its candidates (a batch holds at most
+// the shared capacity: deferred/tiled_lighting.cpp), made into sLights by compactList.
+shared uint sBits[TP_DEF_TILE_LIGHT_CAPACITY / 32u];
 // Clustered (kSlices > 0): bit i of slice s's row is set when sLights[i] can reach the
 // slice (include/light_assign.glsl: laSliceOf over the tile's opaque depth range, no front
 // slice: only opaque surfaces are lit here). Rows are ceil(count / 32) words.
@@ -219,13 +223,12 @@ void cull(uvec2 tile, bool hasGeometry) {
     uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
 #endif
 #ifndef TP_LISTS_ONLY
-    uint end = min(draw.TP_DEF_LIGHT_END, candidates);
-    for (uint i = draw.TP_DEF_LIGHT_FIRST + gl_LocalInvocationIndex; hasGeometry && i < end; i += groupSize) {
+    // A survivor sets its bit in sBits (bit i: this batch's candidate i); compactList turns
+    // the bits into the list.
+    const uint first = draw.TP_DEF_LIGHT_FIRST, end = min(draw.TP_DEF_LIGHT_END, candidates);
+    for (uint i = first + gl_LocalInvocationIndex; hasGeometry && i < end; i += groupSize) {
         uint light = candidateLight(tileIndex, i);
-        if (lightInTile(lights[light], f, frame.view)) {
-            uint slot = atomicAdd(sCount, 1u);
-            if (slot < TP_DEF_TILE_LIGHT_CAPACITY) sLights[slot] = light;
-        }
+        if (lightInTile(lights[light], f, frame.view)) atomicOr(sBits[(i - first) >> 5u], 1u << ((i - first) & 31u));
     }
 #endif
 #ifdef TP_TRANSPARENT
@@ -242,6 +245,33 @@ void cull(uvec2 tile, bool hasGeometry) {
     }
 #endif
 }
+
+#ifndef TP_LISTS_ONLY
+// The batch's survivors into sLights in ascending candidate order (after the culling's
+// barrier; a barrier must follow): each invocation takes whole words of sBits and places
+// their lights after the survivors of every earlier word. An atomic append would order them
+// as the GPU happens to schedule the invocations, and the shading sums in list order: the
+// image would change in its last bits from run to run (it did on an H100).
+void compactList(uint tileIndex) {
+    const uint first = draw.TP_DEF_LIGHT_FIRST, end = min(draw.TP_DEF_LIGHT_END, candidateCount(tileIndex));
+    const uint words = end > first ? (end - first + 31u) / 32u : 0u;
+    for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
+        uint pos = 0u;
+        for (uint v = 0u; v < w; ++v) pos += bitCount(sBits[v]);
+        uint bits = sBits[w];
+        for (uint k = 0u; k < 32u && bits != 0u; ++k, ++pos) {
+            uint b = uint(findLSB(bits));
+            bits &= bits - 1u;
+            sLights[pos] = candidateLight(tileIndex, first + w * 32u + b);
+        }
+    }
+    if (gl_LocalInvocationIndex == 0u) {
+        uint total = 0u;
+        for (uint v = 0u; v < words; ++v) total += bitCount(sBits[v]);
+        sCount = total;
+    }
+}
+#endif
 
 #if defined(TP_TRANSPARENT) && !defined(TP_LISTS_ONLY)
 // Clustered: the slice rows of tile `tileIndex`'s transparent list, for the blended pass
@@ -309,6 +339,7 @@ void main() {
     }
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
         for (uint i = gl_LocalInvocationIndex; i < kMaskWords; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
+    for (uint i = gl_LocalInvocationIndex; i < TP_DEF_TILE_LIGHT_CAPACITY / 32u; i += TP_GROUP * TP_GROUP) sBits[i] = 0u;
     barrier();
     laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
     barrier();
@@ -332,6 +363,8 @@ void main() {
 #endif
     cull(tile, laTileHasGeometry());
 #ifndef TP_LISTS_ONLY
+    barrier(); // every survivor's bit
+    compactList(tile.y * gl_NumWorkGroups.x + tile.x);
 #ifdef TP_TRANSPARENT
     if (kSlices > 0u) memoryBarrierBuffer(); // the transparent list, for writeTransparentSlices
 #endif
