@@ -759,8 +759,9 @@ void expectSameCulling(const ListRun& a, const ListRun& b, const std::string& la
 // --cull-by subgroup (one subgroup per tile, a candidate per lane, survivors placed by a
 // ballot) gives --cull-by invocation's results byte for byte: every layout, tiled (two lists)
 // and clustered, with spot lights and without, under MSAA, and over several dispatches
-// (clustered, 64 slices: 9). lavapipe's subgroups have 8 lanes, so a tile takes many steps
-// and its survivors cross words of the slice rows mid-step.
+// (clustered, 64 slices: 9), on an odd viewport. lavapipe's subgroups have 8 lanes, so a tile
+// takes many steps and its survivors cross words of the slice rows mid-step. The two read the
+// depth differently (gathered 2 x 2 blocks, texel by texel): the same bounds.
 TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -779,6 +780,9 @@ TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
         cases.push_back({courtyardScene(256), s, layout, 0});
     }
     cases.push_back({courtyardPointScene(256), small(96, 54, 1), "compact", 0});
+    // An odd viewport: the per-invocation culling's gathered 2 x 2 blocks overhang the last
+    // column and row (clamped to the edge texel).
+    cases.push_back({courtyardScene(256), small(97, 55, 1), "compact", 0});
     cases.push_back({courtyardScene(256), clustered(small(96, 54, 1)), "compact", 16});
     cases.push_back({courtyardPointScene(256), clustered(small(96, 54, 1)), "compact", 16});
     RenderSettings ms = clustered(small(96, 54, 4));
