@@ -346,7 +346,7 @@ class ForwardPlusRenderer final : public Renderer {
         c.binned = binned_;
         c.clustered = clustered_;
         c.twoLists = twoLists_;
-        c.spanFromNear = blendPass_;
+        c.blendedSpan = blendPass_;
         c.spheres = spherePass_;
         c.subgroupLanes = subgroupCull_ ? ctx_.caps.subgroupSize : 0;
         return c;
@@ -400,7 +400,7 @@ class ForwardPlusRenderer final : public Renderer {
             d.specConstants.push_back({TP_FP_SPEC_LAYOUT, layout_});
             if (clustered_) {
                 d.specConstants.push_back({TP_FP_SPEC_SLICES, slices_});
-                d.specConstants.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, blendPass_ ? 1u : 0u});
+                d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, blendPass_ ? 1u : 0u});
             }
             shade_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
         }

@@ -79,7 +79,7 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     spec.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_BINNED, config_.binned ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_SLICES, config_.slices});
-    spec.push_back({TP_FP_SPEC_SPAN_FROM_NEAR, config_.spanFromNear ? 1u : 0u});
+    spec.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendedSpan ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_SPHERES, config_.spheres ? 1u : 0u});
     if (subgroup) spec.push_back({TP_FP_SPEC_CULL_LANES, config_.subgroupLanes});
     pipeline_ = createComputePipeline(ctx_, name, spec, layout_, &set_, config_.subgroupLanes);

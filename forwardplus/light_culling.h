@@ -27,7 +27,7 @@ struct CullConfig {
     uint32_t samples = 1;   // --msaa
     uint32_t slices = 16;   // clustered depth slices
     uint32_t mostTested = 0; // the most lights any tile tests (binned: its candidates; all: every local light)
-    bool binned = true, clustered = false, twoLists = false, spanFromNear = false;
+    bool binned = true, clustered = false, twoLists = false, blendedSpan = false;
     bool spheres = true; // read the light_spheres pass's buffer (else a stand-in is bound)
     uint32_t subgroupLanes = 0; // > 0: one subgroup of this many lanes per tile (--cull-by subgroup)
 };

@@ -26,7 +26,7 @@ namespace tp::gpu {
 #define TP_FP_SPEC_LAYOUT 15    // TP_FP_LAYOUT_*
 #define TP_FP_SPEC_BINNED 16    // culling: 1 = test each tile's candidates (--light-cull binned), 0 = every light
 #define TP_FP_SPEC_SLICES 17    // clustered: depth slices per tile
-#define TP_FP_SPEC_SPAN_FROM_NEAR 18 // clustered: 1 = a tile's span starts at the near plane (blended surfaces)
+#define TP_FP_SPEC_BLENDED_SPAN 18 // clustered: 1 = the scene has blended surfaces: spans widen to them, front slices
 #define TP_FP_SPEC_SPHERES 19 // culling: 1 = read each light's sphere from light_spheres, 0 = compute it per candidate
 #define TP_FP_SPEC_CULL_LANES 20 // light_culling_subgroup: workgroup size = the device's subgroup size (<= 64)
 

@@ -135,7 +135,7 @@ void main() {
                     flushWord((count0 >> 5u) - 1u, c.maskBase, c.maskStride);
                     dirty = false;
                 }
-                markSlices(sphere, count0, c.slicing, !kSpanFromNear || passes(lightIndex, sphere, c.volume1),
+                markSlices(sphere, count0, c.slicing, !kBlendedSpan || passes(lightIndex, sphere, c.volume1),
                            c.openEnd);
                 dirty = true;
             }

@@ -21,10 +21,10 @@ layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 layout(constant_id = TP_FP_SPEC_BINNED) const bool kBinned = false;
 // Clustered (TP_FP_CLUSTERED, compact layout only): one list per tile over its depth span
 // (its opaque range, widened to its blended depth bounds when the scene has blended
-// surfaces: kSpanFromNear, named for when the span started at the near plane), and per depth slice (include/light_assign.glsl: laSliceOf) a bitmask over that
+// surfaces: kBlendedSpan), and per depth slice (include/light_assign.glsl: laSliceOf) a bitmask over that
 // list: bit i of slice s is set when light i of the list can reach the slice.
 layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
-layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
+layout(constant_id = TP_FP_SPEC_BLENDED_SPAN) const bool kBlendedSpan = false;
 
 // Read back by the later dispatches of the pass (their lists continue these).
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) buffer TileBlock {
@@ -53,7 +53,7 @@ layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depth
 #endif
 #include "include/light_assign.glsl"
 // Blended depth bounds (light_assign.h: TP_LA_BLEND_*), read only with blended surfaces
-// (kTwoLists or kSpanFromNear); a 16-byte stand-in otherwise.
+// (kTwoLists or kBlendedSpan); a 16-byte stand-in otherwise.
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_BLEND_BOUNDS) readonly buffer BlendBoundsBlock {
     uint blendBounds[];
 };
@@ -186,7 +186,7 @@ CullTile cullTile(uvec2 tile, LaTileDepth depth) {
     const float transparentFar = laTransparentFarDepth(depth.hasGeometry, depth.seesSky, depth.farDepth);
     // The blended fragments' [nearest, farthest] view distance, padded (none without blended surfaces).
     LaBlendedBounds blended = laBlendedBounds(TP_LA_BLEND_EMPTY, 0u);
-    if (kTwoLists || kSpanFromNear)
+    if (kTwoLists || kBlendedSpan)
         blended = laBlendedBounds(blendBounds[c.index], blendBounds[params.tiles.z + c.index]);
     const TileFrustum blendedFrustum = laBlendedFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, blended);
 #ifdef TP_FP_CLUSTERED
@@ -206,13 +206,13 @@ CullTile cullTile(uvec2 tile, LaTileDepth depth) {
     c.openEnd = blended.any && transparentFar == 0.0;
     const float sliceNear = depth.hasGeometry ? max(-viewZFromDepth(depth.nearDepth, frame.invProj), 1e-30) : 1e30;
     const float sliceFar = depth.hasGeometry ? -viewZFromDepth(depth.farDepth, frame.invProj) : 1e30;
-    const uint front = laFrontSlices(kSlices, kSpanFromNear);
+    const uint front = laFrontSlices(kSlices, kBlendedSpan);
     const float sliceScale = laSliceScale(sliceNear, sliceFar, kSlices, front);
     c.slicing = laSlicing(laFrontNear(blended, sliceNear), sliceNear, sliceScale, kSlices, front);
     c.maskBase = data[params.lists.w + c.index];
     c.maskStride = (data[params.lists.w + c.index + 1u] - c.maskBase) / kSlices;
     c.volume0 = volumeOf(tile, span, spanTests);
-    c.volume1 = makeVolume(tile, depth.nearDepth, depth.farDepth, kSpanFromNear && depth.hasGeometry);
+    c.volume1 = makeVolume(tile, depth.nearDepth, depth.farDepth, kBlendedSpan && depth.hasGeometry);
 #else
     c.volume0 = makeVolume(tile, depth.nearDepth, depth.farDepth, depth.hasGeometry);
     c.volume1 = volumeOf(tile, blendedFrustum, kTwoLists && blended.any);

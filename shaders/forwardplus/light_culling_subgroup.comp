@@ -166,7 +166,7 @@ void main() {
             const uint before = min(count0, s0.capacity), after = min(count0 + found, s0.capacity);
             if (pass0 && pos0 < s0.capacity)
                 markSlices(x, pos0, before, c.slicing,
-                           !kSpanFromNear || passes(x.lightIndex, x.sphere, c.volume1), c.openEnd);
+                           !kBlendedSpan || passes(x.lightIndex, x.sphere, c.volume1), c.openEnd);
             flushWindow(c, before, after);
         }
 #endif

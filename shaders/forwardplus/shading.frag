@@ -37,7 +37,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
 
 #ifdef TP_FP_CLUSTERED
 layout(constant_id = TP_FP_SPEC_SLICES) const uint kSlices = 16u;
-layout(constant_id = TP_FP_SPEC_SPAN_FROM_NEAR) const bool kSpanFromNear = false;
+layout(constant_id = TP_FP_SPEC_BLENDED_SPAN) const bool kBlendedSpan = false;
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonly buffer MaskBlock {
     uint masks[];
 };
@@ -49,7 +49,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonl
 vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
     FpTileLists t = tiles[tileIndex];
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    LaSlicing slicing = laSlicing(t.frontNear, t.sliceNear, t.sliceScale, kSlices, laFrontSlices(kSlices, kSpanFromNear));
+    LaSlicing slicing = laSlicing(t.frontNear, t.sliceNear, t.sliceScale, kSlices, laFrontSlices(kSlices, kBlendedSpan));
     uint slice = laSliceOf(dist, slicing);
     uint maskBase = data[params.lists.w + tileIndex];
     uint stride = (data[params.lists.w + tileIndex + 1u] - maskBase) / kSlices;
