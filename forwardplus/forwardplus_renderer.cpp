@@ -27,6 +27,7 @@
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "forwardplus/light_culling.h"
+#include "forwardplus/list_counters.h"
 #include "forwardplus/light_lists.h"
 #include "forwardplus/light_spheres.h"
 
@@ -220,51 +221,18 @@ class ForwardPlusRenderer final : public Renderer {
             add("cluster_mask_words", double(maskLayout_.words));
             add("light_loop_subgroup", subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
-        const std::vector<uint32_t> none, &tested = binned_ ? tileBound_ : none;
         if (collected_) {
-            fp::TileListSummary o = fp::summarize(tileLists_, 0, clustered_ && blendPass_, classes_.local.size(), tested);
-            add("lights_per_tile_mean", o.mean);
-            add("lights_per_tile_max", double(o.max));
-            add("tiles_without_geometry", double(o.skyTiles));
-            double testedSum = o.tested, kept = o.passed, dropped = o.dropped, stored = o.stored;
-            if (twoLists_) {
-                fp::TileListSummary t = fp::summarize(tileLists_, 1, true, classes_.local.size(), tested);
-                add("transparent_lights_per_tile_mean", t.mean);
-                add("transparent_lights_per_tile_max", double(t.max));
-                // Only tiles with blended fragments test for the transparent list.
-                double blendedTiles = 0, transparentTested = 0;
-                for (size_t i = 0; i < blended_.size(); ++i) {
-                    if (!blended_[i].any) continue;
-                    blendedTiles += 1;
-                    transparentTested += double(tested.empty() ? classes_.local.size() : tested[i]);
-                }
-                add("tiles_with_blended_fragments", blendedTiles);
-                testedSum += transparentTested;
-                kept += t.passed;
-                dropped += t.dropped;
-                stored += t.stored;
-            }
-            add("lights_tested", testedSum);
-            add("lights_kept", kept);
-            add("lights_stored", stored);
-            add("lights_dropped", dropped);
-            if (clustered_) {
-                fp::ClusterSummary c = fp::summarizeClusters(tileLists_, maskLayout_.offsets, maskBits_, slices_);
-                add("lights_per_cluster_mean", c.mean);
-                add("lights_per_cluster_max", double(c.max));
-                add("cluster_light_bits", c.bits);
-                if (blendPass_) {
-                    fp::ClusterSummary f = fp::summarizeFrontClusters(
-                        tileLists_, maskLayout_.offsets, maskBits_, slices_,
-                        std::max(slices_ / TP_LA_FRONT_SLICE_SHARE, 1u));
-                    add("lights_per_front_cluster_mean", f.mean);
-                    add("lights_per_front_cluster_max", double(f.max));
-                }
-            }
-            if (layout_ == TP_FP_LAYOUT_LINKED) {
-                add("linked_nodes_used", double(nodesUsed_));
-                add("linked_pool_nodes", double(lists_.poolNodes));
-            }
+            static const std::vector<uint32_t> none;
+            fp::ListCounterInput in{tileLists_, blended_, binned_ ? tileBound_ : none, maskLayout_.offsets, maskBits_};
+            in.localLights = classes_.local.size();
+            in.slices = slices_;
+            in.twoLists = twoLists_;
+            in.clustered = clustered_;
+            in.blendPass = blendPass_;
+            in.linked = layout_ == TP_FP_LAYOUT_LINKED;
+            in.nodesUsed = nodesUsed_;
+            in.poolNodes = lists_.poolNodes;
+            fp::addListCounters(s.counters, in);
         }
         if (!blendPass_)
             s.leftOut.push_back({"transparent light list, blended depth bounds, forward_transparent pass and their "
@@ -272,8 +240,8 @@ class ForwardPlusRenderer final : public Renderer {
                                  "the scene has no blended materials"});
         else if (clustered_)
             s.leftOut.push_back({"the second (transparent) light list per tile",
-                                 "clustered: one list spans the tile from the near plane, and blended surfaces "
-                                 "look up their own depth slice"});
+                                 "clustered: one list spans the tile's opaque range widened to its blended "
+                                 "fragments' depths, and blended surfaces look up their own depth slice"});
         if (binned_ && !gpuBinning_)
             s.leftOut.push_back({"light_binning pass (GPU binning)", "--light-bin " + settings_.text("light-bin") +
                                                                        " resolved to cpu: candidates built once per configuration"});
