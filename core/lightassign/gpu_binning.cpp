@@ -67,7 +67,8 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     set_.pass = "light_binning";
     set_.bindings = bindings;
     layout_ = scene_.createPipelineLayout(set_.layout);
-    const std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
+    std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
+    spec.push_back({TP_BIN_SPEC_SORT_GROUP, ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU : TP_BIN_SORT_GROUP_GPU});
     for (const char* shader : kShaders) pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));
 }
 

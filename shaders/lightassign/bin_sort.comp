@@ -9,7 +9,8 @@
 // exactly the CPU's ascending run.
 #include "lightassign/bin_common.glsl"
 
-layout(local_size_x = TP_BIN_SORT_GROUP) in;
+layout(local_size_x_id = TP_BIN_SPEC_SORT_GROUP) in; // TP_BIN_SORT_GROUP_GPU or _CPU
+#define TP_BIN_SORT_GROUP gl_WorkGroupSize.x
 
 shared uint run[TP_BIN_SHARED_SORT];
 
