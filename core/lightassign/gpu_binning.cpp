@@ -69,12 +69,22 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
     spec.push_back({TP_BIN_SPEC_SORT_GROUP, ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU : TP_BIN_SORT_GROUP_GPU});
-    for (const char* shader : kShaders) pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));
+    try {
+        for (const char* shader : kShaders)
+            pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));
+    } catch (...) {
+        destroyPipelines(); // no destructor runs for an object whose constructor throws
+        throw;
+    }
 }
 
-GpuBinning::~GpuBinning() {
+GpuBinning::~GpuBinning() { destroyPipelines(); }
+
+void GpuBinning::destroyPipelines() {
     for (VkPipeline p : pipelines_) vkDestroyPipeline(ctx_.device, p, nullptr);
+    pipelines_.clear();
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    layout_ = VK_NULL_HANDLE;
     destroyPassSet(ctx_, set_);
 }
 

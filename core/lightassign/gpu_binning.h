@@ -63,6 +63,7 @@ class GpuBinning {
     struct Bufs {
         VkBuffer counts, offsets, rows, big;
     };
+    void destroyPipelines(); // and the layout and pass set
     void bind(const Bufs& b, VkBuffer target);
     void recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity);
     void recordFill(VkCommandBuffer cmd);
