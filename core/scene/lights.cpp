@@ -1,6 +1,7 @@
 #include "core/scene/lights.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -17,7 +18,7 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 constexpr size_t kMaxLights = 1000000;
-// A lights file is at most this long: a million lights written by lightsToJson are ~250 MB.
+// A lights file is at most this long: a million lights written by lightsToJson are ~150 MB.
 constexpr uintmax_t kMaxLightsFileBytes = uintmax_t(512) << 20;
 // Directions shorter than this have no reliable direction once normalized (the other bounds
 // are in lights.h).
@@ -123,8 +124,19 @@ const char* typeName(LightType t) {
     return "point";
 }
 
+// The double nearest the float's shortest decimal form, which JSON then prints as that form
+// ("0.3", not the float's exact value "0.30000001192092896") and which reads back as the same
+// float: a million lights' file half the size, the same lights.
+double shortest(float f) {
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), f);
+    if (ec != std::errc()) return double(f);
+    *end = '\0';
+    return std::strtod(buf, nullptr);
+}
+
 json vecJson(const glm::vec3& v) {
-    return json::array({double(v.x), double(v.y), double(v.z)});
+    return json::array({shortest(v.x), shortest(v.y), shortest(v.z)});
 }
 
 json lightJson(const Light& l) {
@@ -132,10 +144,10 @@ json lightJson(const Light& l) {
                 {"position", vecJson(l.position)},
                 {"direction", vecJson(l.direction)},
                 {"color", vecJson(l.color)},
-                {"intensity", double(l.intensity)},
-                {"range", double(l.range)},
-                {"inner_cone", double(l.innerConeAngle)},
-                {"outer_cone", double(l.outerConeAngle)}};
+                {"intensity", shortest(l.intensity)},
+                {"range", shortest(l.range)},
+                {"inner_cone", shortest(l.innerConeAngle)},
+                {"outer_cone", shortest(l.outerConeAngle)}};
 }
 
 // Reads one light; returns an empty string or what is wrong, with `where` filled in.
