@@ -132,7 +132,9 @@ double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r
 void checkReconstructionError(const GpuContext& ctx, double value, double bound, const std::string& what) {
     std::printf("[ reconstruction ] %s: %.3g (lavapipe bound %.3g%s)\n", what.c_str(), value, bound,
                 ctx.isCpuDevice() ? "" : ", not asserted on this device");
-    if (ctx.isCpuDevice()) EXPECT_LT(value, bound) << what << ": depth reference against the interpolated one";
+    if (ctx.isCpuDevice()) {
+        EXPECT_LT(value, bound) << what << ": depth reference against the interpolated one";
+    }
 }
 
 // Deferred and both references of one setting.
@@ -239,11 +241,17 @@ TEST(Deferred, SampleRateGBufferMatchesTheSupersampledReferenceAt4x) {
 //    centre, at the depth there);
 //  - an edge pixel is lit per sample at the sample's position: it must equal the
 //    supersampled depth reference.
-// (a) Both within the depth-reference bound above (N = 4 (lights + 1): the resolve).
-// (b) The reconstruction error of each reference on the pixels compared with it, 2.5e-4
-// relative per channel as on the floor at 1x. The difference between the two interpolated references on non-edge pixels is
-// the cost of lighting once per pixel; it is printed, not bounded (a light close to a surface
-// makes it as large as the light is bright).
+// (a) Both within the depth-reference bound above (N = 4 (lights + 1): the resolve). On the
+// other pixels the two take the centre's depth in two ways (deferred: the mean of the four
+// stored depths; the reference: its sample's depth moved along the primitive's slope), equal
+// to about an ulp, which the GGX lobe magnifies: the closest to the bound of all these
+// checks (lavapipe: 0.69 of it at 1 light).
+// (b) The reconstruction error of the centre-shaded reference on the other pixels, 2.5e-4
+// relative per channel as on the floor at 1x (the supersampled one's is bounded on the whole
+// floor by SampleRateGBufferMatchesTheSupersampledReferenceAt4x: the same images). The
+// difference between the two depth references on non-edge pixels is the cost of lighting
+// once per pixel; it is printed, not bounded (a light close to a surface makes it as large
+// as the light is bright).
 TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -252,13 +260,14 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
         SceneGpu gpuScene(*ctx, scene);
         RenderSettings s = small(4, "wide");
         s.debug = true;
-        Split atSamples = renderSplit(*ctx, gpuScene, s);
+        RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", s);
+        RunResult samplesDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
         s.set("reference-msaa", "center");
         RunResult centreDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
         RunResult centre = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "interpolated"));
-        const ImageRGBA* edges = debugImageOf(atSamples.deferred, "edge_mask");
+        const ImageRGBA* edges = debugImageOf(deferred, "edge_mask");
         ASSERT_NE(edges, nullptr);
-        const size_t pixels = atSamples.deferred.hdr.pixelCount();
+        const size_t pixels = deferred.hdr.pixelCount();
         std::vector<uint8_t> isEdge(pixels), isOther(pixels);
         double shadingRate = 0;
         for (size_t i = 0; i < pixels; ++i) {
@@ -266,7 +275,7 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
             isOther[i] = !isEdge[i];
             if (isEdge[i]) continue;
             for (int c = 0; c < 3; ++c) {
-                double r = centre.hdr.rgba[i * 4 + c], t = atSamples.interpolated.hdr.rgba[i * 4 + c];
+                double r = centreDepth.hdr.rgba[i * 4 + c], t = samplesDepth.hdr.rgba[i * 4 + c];
                 shadingRate = std::max(shadingRate, std::abs(r - t) / (std::abs(t) + 1e-4));
             }
         }
@@ -277,13 +286,10 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
         EXPECT_GT(edgeCount, 0u) << "the box's silhouette must be found";
         EXPECT_GT(pixels - edgeCount, edgeCount) << "most of the floor is one surface per pixel";
         const std::string what = std::to_string(lights) + " lights 4x pixel-rate, ";
-        expectWithinTheDepthReferenceBound(atSamples.deferred.hdr, atSamples.fromDepth.hdr, lights, 4,
+        expectWithinTheDepthReferenceBound(deferred.hdr, samplesDepth.hdr, lights, 4,
                                            what + "edge pixels against the supersampled reference", &isEdge);
-        expectWithinTheDepthReferenceBound(atSamples.deferred.hdr, centreDepth.hdr, lights, 4,
+        expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
                                            what + "other pixels against the centre-shaded reference", &isOther);
-        checkReconstructionError(
-            *ctx, maxRelativeError(atSamples.fromDepth.hdr, atSamples.interpolated.hdr, 1e-4, &isEdge), 2.5e-4,
-            what + "edge pixels, supersampled");
         checkReconstructionError(*ctx, maxRelativeError(centreDepth.hdr, centre.hdr, 1e-4, &isOther), 2.5e-4,
                                  what + "other pixels, centre-shaded");
     }
@@ -387,23 +393,32 @@ TEST(Deferred, BinnedCullingFindsWhatEveryLightFinds) {
 TEST(Deferred, ClusteredWithinTheTiledBounds) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    for (uint32_t slices : {4u, 64u}) {
-        for (uint32_t lights : {256u, 4096u}) {
-            RenderSettings s = small(1, "wide");
-            s.set("light-assign", "clustered");
+    // The references read no light-assignment knob: rendered once per scene, for every slice count.
+    for (uint32_t lights : {256u, 4096u}) {
+        Scene scene = floorWithLights(lights);
+        SceneGpu gpuScene(*ctx, scene);
+        RenderSettings s = small(1, "wide");
+        RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
+        RunResult ref = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "interpolated"));
+        checkReconstructionError(*ctx, maxRelativeError(fromDepth.hdr, ref.hdr, 1e-4), 2.5e-4,
+                                 "floor " + std::to_string(lights) + " lights");
+        s.set("light-assign", "clustered");
+        for (uint32_t slices : {4u, 64u}) {
             s.set("slices", slices);
-            Scene scene = floorWithLights(lights);
-            SceneGpu gpuScene(*ctx, scene);
-            Split p = renderSplit(*ctx, gpuScene, s);
+            RunResult clustered = runOrFail(*ctx, gpuScene, "deferred", s);
             const std::string what = "floor " + std::to_string(lights) + " lights, " + std::to_string(slices) +
                                      " slices";
-            EXPECT_EQ(computeError(p.deferred.hdr, p.interpolated.hdr).nanInfCount, 0u) << what;
-            expectWithinTheDepthReferenceBound(p.deferred.hdr, p.fromDepth.hdr, lights, 1, what);
-            checkReconstructionError(*ctx, maxRelativeError(p.fromDepth.hdr, p.interpolated.hdr, 1e-4), 2.5e-4,
-                                     what);
+            EXPECT_EQ(computeError(clustered.hdr, ref.hdr).nanInfCount, 0u) << what;
+            expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, lights, 1, what);
         }
-        Scene courtyard = courtyardWithLights(256);
-        SceneGpu gpuScene(*ctx, courtyard);
+    }
+    Scene courtyard = courtyardWithLights(256);
+    SceneGpu gpuScene(*ctx, courtyard);
+    RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "depth"));
+    RunResult ref = runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "interpolated"));
+    checkReconstructionError(*ctx, computeError(fromDepth.hdr, ref.hdr).meanRelative, 1e-4,
+                             "courtyard 256 lights (mean)");
+    for (uint32_t slices : {4u, 64u}) {
         for (uint32_t msaa : {1u, 4u}) {
             RenderSettings s = small(msaa, "wide");
             if (msaa > 1) s.set("msaa-shading", "sample");
@@ -413,14 +428,9 @@ TEST(Deferred, ClusteredWithinTheTiledBounds) {
             RunResult clustered = runOrFail(*ctx, gpuScene, "deferred", s);
             expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, 256, msaa,
                                             "courtyard clustered vs tiled, " + std::to_string(slices) + " slices");
-            if (msaa == 1) {
-                const std::string what = "courtyard 256 lights, " + std::to_string(slices) + " slices";
-                RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
-                RunResult ref = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "interpolated"));
-                expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, 256, 1, what);
-                checkReconstructionError(*ctx, computeError(fromDepth.hdr, ref.hdr).meanRelative, 1e-4,
-                                         what + " (mean)");
-            }
+            if (msaa == 1)
+                expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, 256, 1,
+                                                   "courtyard 256 lights, " + std::to_string(slices) + " slices");
         }
     }
     expectNoValidationMessages(*ctx);
