@@ -142,9 +142,9 @@ struct Split {
     RunResult deferred, fromDepth, interpolated;
 };
 
-Split renderSplit(GpuContext& ctx, SceneGpu& scene, const RenderSettings& settings, const char* pipeline = "deferred") {
+Split renderSplit(GpuContext& ctx, SceneGpu& scene, const RenderSettings& settings) {
     Split p;
-    p.deferred = runOrFail(ctx, scene, pipeline, settings);
+    p.deferred = runOrFail(ctx, scene, "deferred", settings);
     p.fromDepth = runOrFail(ctx, scene, "reference", withPosition(settings, "depth"));
     p.interpolated = runOrFail(ctx, scene, "reference", withPosition(settings, "interpolated"));
     return p;
@@ -385,39 +385,35 @@ TEST(Deferred, BinnedCullingFindsWhatEveryLightFinds) {
 
 // Clustered (--light-assign clustered): each sample takes only the lights of its depth
 // slice (include/light_assign.glsl: laSliceOf over the tile's opaque range). Culling stays
-// conservative, so the bounds of the tiled runs hold: (a) deferred against the depth
-// reference within expectWithinTheDepthReferenceBound; (b) the reconstruction error on the
-// floor 2.5e-4 relative per channel (WideMatchesReferenceOnTheFloor), on the courtyard a mean
-// relative error of 1e-4 (WideMatchesReferenceOnTheCourtyard); and it agrees with tiled within
-// the summation bound (both sum the same non-zero terms, in the shared list's order).
+// conservative, so the bound of the tiled runs holds: deferred against the depth reference
+// within expectWithinTheDepthReferenceBound, on the floor and on the courtyard (the
+// reconstruction error of the same reference images is WideMatchesReferenceOnTheFloor's and
+// WideMatchesReferenceOnTheCourtyard's); and it agrees with tiled within the summation bound
+// (both sum the same non-zero terms, in the shared list's order).
 TEST(Deferred, ClusteredWithinTheTiledBounds) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    // The references read no light-assignment knob: rendered once per scene, for every slice count.
+    // The references read no light-assignment knob: rendered once per scene, for every slice
+    // count; their reconstruction error is checked on these very images by
+    // WideMatchesReferenceOnTheFloor and WideMatchesReferenceOnTheCourtyard.
     for (uint32_t lights : {256u, 4096u}) {
         Scene scene = floorWithLights(lights);
         SceneGpu gpuScene(*ctx, scene);
         RenderSettings s = small(1, "wide");
         RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
-        RunResult ref = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "interpolated"));
-        checkReconstructionError(*ctx, maxRelativeError(fromDepth.hdr, ref.hdr, 1e-4), 2.5e-4,
-                                 "floor " + std::to_string(lights) + " lights");
         s.set("light-assign", "clustered");
         for (uint32_t slices : {4u, 64u}) {
             s.set("slices", slices);
             RunResult clustered = runOrFail(*ctx, gpuScene, "deferred", s);
             const std::string what = "floor " + std::to_string(lights) + " lights, " + std::to_string(slices) +
                                      " slices";
-            EXPECT_EQ(computeError(clustered.hdr, ref.hdr).nanInfCount, 0u) << what;
+            EXPECT_EQ(computeError(clustered.hdr, fromDepth.hdr).nanInfCount, 0u) << what;
             expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, lights, 1, what);
         }
     }
     Scene courtyard = courtyardWithLights(256);
     SceneGpu gpuScene(*ctx, courtyard);
     RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "depth"));
-    RunResult ref = runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "interpolated"));
-    checkReconstructionError(*ctx, computeError(fromDepth.hdr, ref.hdr).meanRelative, 1e-4,
-                             "courtyard 256 lights (mean)");
     for (uint32_t slices : {4u, 64u}) {
         for (uint32_t msaa : {1u, 4u}) {
             RenderSettings s = small(msaa, "wide");
@@ -610,8 +606,10 @@ TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
 // near plane to the nearest opaque depth, range slices over the opaque range) and the
 // blended pass walks its slice's row. The courtyard has blended cloth: clustered agrees with
 // tiled within the summation bound on every pixel (the same lights, one sum order), and with
-// the references within tiled's bounds (WideMatchesReferenceOnTheCourtyard: (a) the depth
-// reference's bound per pixel, (b) the reconstruction error's mean relative 1e-4). The rows are in the ledger, sized as deferred_shared.h says; tiled has none.
+// the depth reference within its bound per pixel (WideMatchesReferenceOnTheCourtyard, which
+// also checks the reconstruction error of these very reference images: the references read
+// no light-assignment knob). The rows are in the ledger, sized as deferred_shared.h says;
+// tiled has none.
 TEST(Deferred, ClusteredBlendedSurfacesMatchTheReferenceOnTheCourtyard) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -631,11 +629,9 @@ TEST(Deferred, ClusteredBlendedSurfacesMatchTheReferenceOnTheCourtyard) {
         expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, lights, 1,
                                         "courtyard clustered vs tiled, " + std::to_string(lights) + " lights");
         RunResult fromDepth = runOrFail(*ctx, yardGpu, "reference", withPosition(s, "depth"));
-        RunResult ref = runOrFail(*ctx, yardGpu, "reference", withPosition(s, "interpolated"));
         const std::string what = "courtyard clustered " + std::to_string(lights) + " lights";
-        EXPECT_EQ(computeError(clustered.hdr, ref.hdr).nanInfCount, 0u) << what;
+        EXPECT_EQ(computeError(clustered.hdr, fromDepth.hdr).nanInfCount, 0u) << what;
         expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, lights, 1, what);
-        checkReconstructionError(*ctx, computeError(fromDepth.hdr, ref.hdr).meanRelative, 1e-4, what + " (mean)");
     }
     expectNoValidationMessages(*ctx);
 }
