@@ -50,7 +50,8 @@ class ReferenceRenderer final : public Renderer {
         layout_ = scene_.createPipelineLayout();
         GraphicsPipelineDesc d;
         const bool center = settings_.msaa > 1 && settings_.text("reference-msaa") == "center";
-        d.fragmentShader = std::string(center ? "reference_center" : "reference") + (fp64_ ? "_fp64_frag" : "_frag");
+        const std::string base = std::string(center ? "reference_center" : "reference");
+        const std::string precision = fp64_ ? "_fp64_frag" : "_frag";
         d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
         d.samples = VkSampleCountFlagBits(settings_.msaa);
         d.sampleShading = settings_.msaa > 1;
@@ -58,6 +59,10 @@ class ReferenceRenderer final : public Renderer {
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
             if (!scene_.hasDraws(DrawFilter(mode))) continue;
             d.specConstants = scene_.specConstants(mode);
+            // --reference-position depth: what a G-buffer holds (opaque, masked) is lit at the
+            // position reconstructed from depth; blended surfaces stay forward-lit, as in deferred.
+            const bool fromDepth = positionFromDepth() && mode != AlphaMode::Blend;
+            d.fragmentShader = base + (fromDepth ? "_depth" : "") + precision;
             d.depthWrite = mode != AlphaMode::Blend;
             d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
             pipelines_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
@@ -80,6 +85,8 @@ class ReferenceRenderer final : public Renderer {
     }
 
   private:
+    bool positionFromDepth() const { return settings_.text("reference-position") == "depth"; }
+
     void record(PassContext& pc) {
         std::optional<DepthTarget> depth;
         ColorTarget color;

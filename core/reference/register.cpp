@@ -1,5 +1,5 @@
 // The reference as the rest of the program sees it: the ground truth every pipeline is
-// measured against, and its two knobs.
+// measured against, and its knobs.
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
 
@@ -15,6 +15,13 @@ KnobSchema referenceKnobs() {
                          "ground truth) or center (every covered sample shaded with the inputs at the pixel centre: "
                          "what shading once per pixel gives; the error against it leaves out the shading rate)")
                 .onlyUnderMsaa()
+                .fixed(),
+            Knob::choice("reference-position", {"interpolated", "depth"},
+                         "Position the reference lights opaque and masked surfaces at: interpolated (the vertex "
+                         "shader's, the ground truth) or depth (reconstructed from the sample's own depth exactly as "
+                         "a deferred pipeline does: for separating a deferred pipeline's position-reconstruction "
+                         "error, depth against interpolated, from its other errors, deferred against depth). "
+                         "Blended surfaces keep the interpolated position, as deferred lights them forward")
                 .fixed()};
 }
 

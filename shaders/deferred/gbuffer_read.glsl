@@ -10,6 +10,7 @@
 #include "deferred/deferred_shared.h"
 #include "include/light_model.h"
 #include "include/tile_culling.glsl" // viewZFromDepth
+#include "include/unproject.glsl"
 
 layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
 layout(constant_id = TP_DEF_SPEC_SAMPLES) const uint kSamples = 1u;
@@ -63,16 +64,11 @@ float meanDepth(ivec2 p) {
     return d / float(kSamples);
 }
 
-// Camera-relative position (world minus eye, as scene.vert interpolates it) from a reverse-Z
-// depth at a pixel-relative location: invViewProj is built from the rotation-only view, so
-// the result's error scales with the distance to the eye, not with the distance to the
-// world origin.
+// Camera-relative position of sample location p + offset at a reverse-Z depth: the shared
+// unprojection (include/unproject.glsl), which the reference's `--reference-position depth`
+// also calls, so that the two cannot drift apart.
 vec3 reconstructPosition(ivec2 p, vec2 offset, float depth) {
-    vec2 size = vec2(frame.viewport.xy);
-    vec2 ndc = vec2((float(p.x) + offset.x) / size.x * 2.0 - 1.0,
-                    1.0 - (float(p.y) + offset.y) / size.y * 2.0);
-    vec4 w = frame.invViewProj * vec4(ndc, depth, 1.0);
-    return w.xyz / w.w;
+    return unprojectPosition(vec2(float(p.x) + offset.x, float(p.y) + offset.y), depth);
 }
 
 #ifndef TP_GBUFFER_DEPTH_ONLY
@@ -96,9 +92,7 @@ SurfaceSample readSurface(ivec2 p, uint s, vec3 position) {
     SurfaceSample ss;
     ss.position = position;
     ss.normal = fetchNormal(p, s);
-    vec3 toViewer = -ss.position; // camera-relative: the viewer is at the origin
-    float vl = length(toViewer);
-    ss.toViewer = vl > 0.0 ? toViewer / vl : ss.normal;
+    ss.toViewer = directionToViewer(ss.position, ss.normal);
     ss.baseColor = base.rgb;
     ss.roughness = rm.r;
     ss.metallic = rm.g;

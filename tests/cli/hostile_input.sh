@@ -110,6 +110,7 @@ expect_refusal "render --deferred-lighting unknown" "--deferred-lighting" render
 expect_refusal "render --accum unknown" "--accum" render --accum fp8 "${o[@]}"
 expect_refusal "render --reference-precision unknown" "--reference-precision" render --reference-precision fp16 "${o[@]}"
 expect_refusal "render --reference-msaa unknown" "--reference-msaa" render --reference-msaa centroid "${o[@]}"
+expect_refusal "render --reference-position unknown" "--reference-position" render --reference-position vertex "${o[@]}"
 expect_refusal "render --pipeline empty" "--pipeline" render --pipeline "" "${o[@]}"
 expect_refusal "render unknown option" "--frobnicate" render --frobnicate "${o[@]}"
 expect_refusal "render two scenes" "" render builtin:courtyard-small builtin:courtyard "${o[@]}"
