@@ -36,6 +36,7 @@ void BlendedBounds::prepare(FrameGraph& graph) {
     set_ = graph.createPassSet("blended_bounds");
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
+    d.vertexShader = "scene_position_vert"; // the fragment shader reads the position only
     d.fragmentShader = std::string("blended_bounds") +
                        (config_.inputsAtPixel ? "_pixel" : "") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
