@@ -7,6 +7,7 @@
 // fragments the blended pass shades (light_assign.glsl: LaBlendedBounds says why). Each
 // records its view distance into its tile's [min, max] (light_assign.h: TP_LA_BLEND_*).
 //   TP_INPUTS_AT_PIXEL: the once-per-pixel variant (scene_inputs.glsl), as the shading's.
+//   TP_LA_BLEND_FULL_INTERFACE: with scene.vert's every input (tests compare the two).
 // One atomic pair per fragment, no subgroup reduction: a helper invocation (a lane run for
 // derivatives only) would feed its extrapolated distance into a reduction, and an elected
 // lane may be a helper whose atomics are dropped (seen on an NVIDIA H100: a subgroup's
@@ -16,7 +17,11 @@
 // skip atomics that cannot change the bound was too: docs/clustered.md.)
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
+#ifdef TP_LA_BLEND_FULL_INTERFACE
+#include "include/material.glsl" // scene.vert's whole interface (tests only)
+#else
 #define TP_INPUTS_POSITION_ONLY 1 // position and the interpolated 1 only
+#endif
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 
