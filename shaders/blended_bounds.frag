@@ -1,19 +1,27 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Blended depth bounds (core/lightassign/blended_bounds.h): drawn with the blended draws'
-// vertex shader and the blended shading pass's rasterization state, depth test GREATER against
-// the opaque depth, no depth write and no colour, so it runs for exactly the fragments the
-// blended pass shades (light_assign.glsl: LaBlendedBounds says why). Each records its view
-// distance into its tile's [min, max] (light_assign.h: TP_LA_BLEND_*).
+// vertex shader in its position-only variant (scene.vert: TP_VERT_POSITION_ONLY, the same
+// gl_Position and position) and the blended shading pass's rasterization state, depth test
+// GREATER against the opaque depth, no depth write and no colour, so it runs for exactly the
+// fragments the blended pass shades (light_assign.glsl: LaBlendedBounds says why). Each
+// records its view distance into its tile's [min, max] (light_assign.h: TP_LA_BLEND_*).
 //   TP_INPUTS_AT_PIXEL: the once-per-pixel variant (scene_inputs.glsl), as the shading's.
+//   TP_LA_BLEND_FULL_INTERFACE: with scene.vert's every input (tests compare the two).
 // One atomic pair per fragment, no subgroup reduction: a helper invocation (a lane run for
 // derivatives only) would feed its extrapolated distance into a reduction, and an elected
 // lane may be a helper whose atomics are dropped (seen on an NVIDIA H100: a subgroup's
 // fragments lost), while its own atomics are dropped, so the bounds are exactly those of the
-// shaded fragments, the same on every run.
+// shaded fragments, the same on every run. (On lavapipe a correct reduction - helpers left
+// out, the atomics from a non-helper lane - was slower than the atomics, and a plain load to
+// skip atomics that cannot change the bound was too: docs/clustered.md.)
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
-#include "include/material.glsl"
+#ifdef TP_LA_BLEND_FULL_INTERFACE
+#include "include/material.glsl" // scene.vert's whole interface (tests only)
+#else
+#define TP_INPUTS_POSITION_ONLY 1 // position and the interpolated 1 only
+#endif
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 

@@ -2,14 +2,21 @@
 #extension GL_GOOGLE_include_directive : require
 // The one vertex shader of every scene draw (prepass, G-buffer, forward, reference), so
 // depth is bit-identical between passes and the EQUAL depth test after a prepass holds.
+//   TP_VERT_POSITION_ONLY (scene_position_vert): only the position and the interpolated 1,
+//   for the blended depth bounds (blended_bounds.frag), which read nothing else; the same
+//   source lines compute gl_Position and both outputs, so they are those of the full variant.
+//   On lavapipe every output costs per vertex and every interpolant per triangle and per
+//   fragment block (docs/clustered.md, "The blended depth bounds on lavapipe").
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 
 layout(location = 0) out vec3 outPosition;
+#ifndef TP_VERT_POSITION_ONLY
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUv;
 layout(location = 3) out vec4 outTangent;
 layout(location = 4) out vec4 outColor;
+#endif
 // 1 at every vertex, interpolated like the others: the fragment stage divides every
 // interpolant by it (scene_inputs.glsl). Exactly 1 on a correct device; on lavapipe, whose
 // per-sample interpolation divides by 1/w at the pixel centre instead of at the sample, it
@@ -29,10 +36,12 @@ void main() {
     Vertex v = vertices[gl_VertexIndex];
     precise vec3 relative = v.positionU.xyz - frame.eyeWorld.xyz;
     outPosition = relative;
+#ifndef TP_VERT_POSITION_ONLY
     outNormal = v.normalV.xyz;
     outUv = vec2(v.positionU.w, v.normalV.w);
     outTangent = v.tangent;
     outColor = v.color;
+#endif
     outOne = frame.projParams.z;
     precise vec4 clip = frame.viewProj * vec4(relative, 1.0);
     gl_Position = clip;

@@ -36,8 +36,10 @@ void BlendedBounds::prepare(FrameGraph& graph) {
     set_ = graph.createPassSet("blended_bounds");
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
-    d.fragmentShader = std::string("blended_bounds") +
-                       (config_.inputsAtPixel ? "_pixel" : "") + "_frag";
+    // The fragment shader reads the position only (fullInterface: the tests' comparison).
+    d.vertexShader = config_.fullInterface ? "scene_vert" : "scene_position_vert";
+    d.fragmentShader = std::string("blended_bounds") + (config_.inputsAtPixel ? "_pixel" : "") +
+                       (config_.fullInterface ? "_full" : "") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_LA_BLEND_SPEC_TILE_SIZE, config_.grid.tileSize});
     d.samples = VkSampleCountFlagBits(config_.samples);

@@ -30,6 +30,9 @@ struct BlendedBoundsConfig {
     uint32_t samples = 1;        // its sample count
     bool sampleShading = false;  // the blended pass shades per sample
     bool inputsAtPixel = false;  // its fragment inputs are TP_INPUTS_AT_PIXEL (scene_inputs.glsl)
+    // Tests only: draw with the whole scene.vert interface (every output and input) instead
+    // of its position-only variant, to check that the variant records the same bounds.
+    bool fullInterface = false;
 };
 
 class BlendedBounds {

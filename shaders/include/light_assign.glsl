@@ -39,7 +39,8 @@ TileFrustum laOpaqueFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 i
 // blended fragments are (shaders/blended_bounds.frag records them), not everything from the
 // near plane: most lights in front of the opaque surfaces float where no blended surface is.
 // Why the bound holds: the bounds pass draws the blended draws with the shading pass's vertex
-// shader (scene.vert, `precise`: bit-identical gl_Position and interpolants), rasterization
+// shader (scene.vert, `precise`: bit-identical gl_Position and interpolants; its position-only
+// variant, whose position and 1 come from the same lines), rasterization
 // state, sample count, sample shading and input interpolation, depth test GREATER against the
 // same opaque depth and no depth write, so it runs for exactly the fragments (under MSAA with
 // per-sample shading: samples) that the shading pass shades, at the same positions, and takes

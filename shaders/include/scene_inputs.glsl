@@ -24,12 +24,15 @@
 #else
 #define TP_INPUT(x) x
 #endif
+// TP_INPUTS_POSITION_ONLY: only the position and the interpolated 1 (the blended depth
+// bounds, fed by scene.vert's TP_VERT_POSITION_ONLY variant), no material.
 layout(location = 0) TP_IN vec3 inPosition; // camera-relative: world minus the eye (scene.vert)
+layout(location = 5) TP_IN float inOne; // 1, interpolated: see scene.vert
+#ifndef TP_INPUTS_POSITION_ONLY
 layout(location = 1) TP_IN vec3 inNormal;
 layout(location = 2) TP_IN vec2 inUv;
 layout(location = 3) TP_IN vec4 inTangent;
 layout(location = 4) TP_IN vec4 inColor;
-layout(location = 5) TP_IN float inOne; // 1, interpolated: see scene.vert
 
 // Every interpolant over the interpolated 1: a no-op (to an ulp) where the device
 // interpolates perspective-correctly at the sample; on lavapipe, which takes 1/w at the
@@ -39,3 +42,4 @@ MaterialSample evalFragmentMaterial() {
     return evalMaterial(materials[draw.materialIndex], TP_INPUT(inPosition) * k, TP_INPUT(inNormal) * k,
                         TP_INPUT(inUv) * k, TP_INPUT(inTangent) * k, TP_INPUT(inColor) * k, gl_FrontFacing);
 }
+#endif // TP_INPUTS_POSITION_ONLY
