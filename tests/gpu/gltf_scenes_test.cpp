@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include <unistd.h>
 
@@ -78,12 +79,15 @@ void renderEveryPipeline(const fs::path& path) {
         ASSERT_TRUE(bound.bounded) << bound.why;
         const double raw = computeError(tonemapToDisplay(run.hdr, ev), refDisplay).maxAbs;
         const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.hdr, ev);
-        std::printf("[ bound    ] %-40s %-18s tonemapped max |p - r| %.3g, beyond the per-pixel allowance %.3g <= %.3g"
-                    " (%llu pixels widened)\n",
+        // raw: max |T(p) - T(r)|; checked: what is left beyond each pixel's allowance (== raw
+        // where the model gives none).
+        std::printf("[ bound    ] %-12s %-18s tonemapped max |p - r| raw %.3g, checked %.3g <= %.3g; %s\n",
                     path.filename().string() == "scene.gltf" ? path.parent_path().filename().c_str()
                                                              : path.filename().c_str(),
                     entry.name.c_str(), raw, checked.worstBeyond, bound.tonemapped(ev),
-                    static_cast<unsigned long long>(checked.widenedPixels));
+                    bound.perPixel.name.empty()
+                        ? "no per-pixel allowance"
+                        : (std::to_string(checked.widenedPixels) + " pixels widened by " + bound.perPixel.name).c_str());
         // A +Inf allowance (a light within the position error of a shaded point) checks nothing
         // there: none may hide in these scenes.
         EXPECT_EQ(checked.unboundedPixels, 0u) << "pixels the per-pixel allowance leaves unchecked";
