@@ -3,10 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "core/image/tonemap.h"
-#include "include/tonemap.h"
 
 namespace tp::cli {
 namespace {
@@ -64,37 +62,6 @@ uint64_t depthMismatch(const ImageR32& a, const ImageR32& b) {
     uint64_t n = 0;
     for (size_t i = 0; i < a.r.size(); ++i) n += a.r[i] != b.r[i];
     return n;
-}
-
-// max over pixels and channels of |T(p) - T(r)| less what the bound's per-pixel allowance a
-// explains there: T(r + a) - T(r) or T(r) - T(r - a), whichever side p is on (T is
-// monotone per channel). Pixels where a is +Inf are left out and counted.
-double beyondAllowance(StressOutcome& p, const ImageRGBA& checked, const ImageRGBA& ref, float ev) {
-    const ImageR32& a = p.bound.perPixel.radiance;
-    const bool any = !a.r.empty() && a.r.size() == ref.pixelCount();
-    double worst = 0;
-    for (size_t i = 0; i < ref.pixelCount(); ++i) {
-        const float allow = any ? a.r[i] : 0.0f;
-        if (std::isinf(allow)) {
-            ++p.unboundedPixels;
-            continue;
-        }
-        p.allowancePixels += allow > 0.0f;
-        const float* pv = &checked.rgba[i * 4];
-        const float* rv = &ref.rgba[i * 4];
-        const gpu::vec3 tp = gpu::tonemap(gpu::vec3(pv[0], pv[1], pv[2]), ev);
-        const gpu::vec3 tr = gpu::tonemap(gpu::vec3(rv[0], rv[1], rv[2]), ev);
-        const gpu::vec3 hi = allow > 0 ? gpu::tonemap(gpu::vec3(rv[0], rv[1], rv[2]) + gpu::vec3(allow), ev) : tr;
-        const gpu::vec3 lo =
-            allow > 0 ? gpu::tonemap(max(gpu::vec3(rv[0], rv[1], rv[2]) - gpu::vec3(allow), gpu::vec3(0.0f)), ev) : tr;
-        for (int c = 0; c < 3; ++c) {
-            const double d = double(tp[c]) - double(tr[c]);
-            if (std::isnan(d)) return std::numeric_limits<double>::infinity();
-            const double explained = d > 0 ? double(hi[c]) - double(tr[c]) : double(tr[c]) - double(lo[c]);
-            worst = std::max(worst, std::abs(d) - explained);
-        }
-    }
-    return worst;
 }
 
 void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref, const Scene& scene,
@@ -165,7 +132,10 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings, &reference.run->depth, r.subPixelBits});
     const ImageRGBA checked = maskOverflow(p, ref);
     p.rawMaxTonemapped = computeError(tonemapToDisplay(checked, r.exposureEv), refDisplay).maxAbs;
-    p.checkedMaxTonemapped = beyondAllowance(p, checked, ref, r.exposureEv);
+    const AllowanceCheck beyond = errorBeyondAllowance(p.bound, checked, ref, r.exposureEv);
+    p.checkedMaxTonemapped = beyond.worstBeyond;
+    p.allowancePixels += beyond.widenedPixels;
+    p.unboundedPixels += beyond.unboundedPixels;
     addChecks(p, r, ref, scene, settings);
     p.pass = true;
     for (const StressCheck& c : p.checks) p.pass &= c.pass;

@@ -12,6 +12,7 @@
 //   K  = sup_x x * T'(x)  (a relative change of x moves T by at most K times it),
 //   S0 = sup_x T'(x)      (an absolute change of x moves T by at most S0 times it),
 // both computed here from the tonemap operator itself (shaders/include/tonemap.h).
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -50,6 +51,21 @@ struct ErrorBound {
     // Largest allowed |T(pipeline) - T(reference)| per channel at exposure `ev`.
     double tonemapped(float ev) const;
 };
+
+// A pipeline's image checked against the bound with each pixel's allowance (ErrorBound::
+// perPixel) taken out: what `triptych stress` and the GPU tests compare with tonemapped().
+struct AllowanceCheck {
+    // max over pixels and channels of |T(p) - T(r)| less what the pixel's allowance explains
+    // there (pixels with a +Inf allowance left out); +Inf as soon as a channel differs by NaN.
+    double worstBeyond = 0;
+    uint64_t widenedPixels = 0;   // allowance > 0: the limit there was widened
+    uint64_t unboundedPixels = 0; // allowance +Inf: nothing is checked there
+};
+
+// `pipeline` and `reference` are HDR images of the same size, tonemapped at `ev` here. With
+// no per-pixel allowance (or one of another size) worstBeyond is the plain max |T(p) - T(r)|.
+AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pipeline, const ImageRGBA& reference,
+                                    float ev);
 
 // Rounding units the pipelines' models are written in.
 constexpr double kHalfUlp16 = 1.0 / 1024.0; // fp16 store: below one ulp, 2^-10 relative

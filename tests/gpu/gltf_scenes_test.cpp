@@ -1,10 +1,12 @@
 // Scenes the loader decodes or repairs (Draco, meshopt, repaired attributes, texture
 // transform; written by gltf_test_scenes.h) rendered by every pipeline and the reference:
-// no NaN or Inf, and each pipeline within its derived error bound of the reference
-// (core/render/error_model.h, as `triptych stress` checks it).
+// no NaN or Inf, and each pipeline within its derived error bound of the reference, beyond
+// each pixel's allowance where its model gives one (core/render/error_model.h, as
+// `triptych stress` checks it).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include <unistd.h>
 
@@ -65,14 +67,31 @@ void renderEveryPipeline(const fs::path& path) {
         EXPECT_EQ(countNonFinitePixels(run.hdr), 0u);
         RenderSettings resolved = settings;
         ASSERT_TRUE(resolveKnobs(entry.knobs, resolved).ok());
-        const ErrorBound bound = expectedBound(entry.errorModel, {c, scene, resolved});
+        // Deferred lights each pixel at the position it reconstructs from the depth buffer, the
+        // reference at the interpolated one; a rasterizer that snaps vertices to its sub-pixel
+        // grid (the H100 does) moves the two apart next to a light by more than deferred's
+        // scalar terms cover (docs/deferred.md, "Position reconstruction and the reference").
+        // Its model bounds that per pixel from the reference's depth and the device's sub-pixel
+        // bits, as `triptych stress` checks it; the scalar bound then holds what is left beyond
+        // each pixel's allowance. Models without a per-pixel allowance get none: checked == raw.
+        const ErrorModelInput in{c, scene, resolved, &ref.depth, ctx->properties.limits.subPixelPrecisionBits};
+        const ErrorBound bound = expectedBound(entry.errorModel, in);
         ASSERT_TRUE(bound.bounded) << bound.why;
-        const double err = computeError(tonemapToDisplay(run.hdr, ev), refDisplay).maxAbs;
-        std::printf("[ bound    ] %-40s %-18s tonemapped max |p - r| %.3g <= %.3g\n",
+        const double raw = computeError(tonemapToDisplay(run.hdr, ev), refDisplay).maxAbs;
+        const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.hdr, ev);
+        // raw: max |T(p) - T(r)|; checked: what is left beyond each pixel's allowance (== raw
+        // where the model gives none).
+        std::printf("[ bound    ] %-12s %-18s tonemapped max |p - r| raw %.3g, checked %.3g <= %.3g; %s\n",
                     path.filename().string() == "scene.gltf" ? path.parent_path().filename().c_str()
                                                              : path.filename().c_str(),
-                    entry.name.c_str(), err, bound.tonemapped(ev));
-        EXPECT_LE(err, bound.tonemapped(ev)) << "tonemapped max |p - r|";
+                    entry.name.c_str(), raw, checked.worstBeyond, bound.tonemapped(ev),
+                    bound.perPixel.name.empty()
+                        ? "no per-pixel allowance"
+                        : (std::to_string(checked.widenedPixels) + " pixels widened by " + bound.perPixel.name).c_str());
+        // A +Inf allowance (a light within the position error of a shaded point) checks nothing
+        // there: none may hide in these scenes.
+        EXPECT_EQ(checked.unboundedPixels, 0u) << "pixels the per-pixel allowance leaves unchecked";
+        EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev)) << "tonemapped max |p - r| beyond the per-pixel allowance";
     }
     expectNoValidationMessages(*ctx);
 }
