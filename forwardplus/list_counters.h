@@ -23,7 +23,8 @@ struct ListCounterInput {
     bool clustered = false;
     bool blendPass = false;       // the scene draws blended surfaces
     bool linked = false;          // the linked layout: node counts
-    uint32_t nodesUsed = 0, poolNodes = 0;
+    uint32_t nodesUsed = 0;
+    uint64_t poolNodes = 0;
 };
 
 void addListCounters(std::vector<std::pair<std::string, double>>& counters, const ListCounterInput& in);

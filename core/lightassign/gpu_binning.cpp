@@ -68,7 +68,12 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     set_.bindings = bindings;
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
-    spec.push_back({TP_BIN_SPEC_SORT_GROUP, ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU : TP_BIN_SORT_GROUP_GPU});
+    // Vulkan guarantees only 128 invocations per workgroup: a GPU that allows fewer than 256 gets its limit.
+    const VkPhysicalDeviceLimits& limits = ctx_.properties.limits;
+    const uint32_t sortGroup = ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU
+                                                  : std::min({TP_BIN_SORT_GROUP_GPU, limits.maxComputeWorkGroupInvocations,
+                                                              limits.maxComputeWorkGroupSize[0]});
+    spec.push_back({TP_BIN_SPEC_SORT_GROUP, sortGroup});
     try {
         for (const char* shader : kShaders)
             pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));

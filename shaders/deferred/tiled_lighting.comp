@@ -4,7 +4,7 @@
 // tile. (1) the tile's depth bounds from the G-buffer depth (every sample), (2) the lights
 // of this dispatch's batch (push constant: [first, end), at most the shared capacity) that
 // reach the tile's sub-frustum are culled into a shared list, in ascending candidate order
-// (compactList: the same list, and so the same image, on every run), (3) every pixel of the tile
+// (compactList: the same list, and so the same opaque lighting, on every run), (3) every pixel of the tile
 // is shaded from that list: the first batch writes hdr (with ambient and emissive), later
 // batches add to it. Under MSAA a pixel whose samples differ (an edge) is shaded per
 // sample, every other pixel once. Blended scenes also get each tile's transparent light

@@ -143,6 +143,14 @@ TEST(LightsJson, RoundTripIsExact) {
     odd.innerConeAngle = 0.0f;
     odd.outerConeAngle = 1.5707963f;
     lights.push_back(odd);
+    // Floats whose shortest decimal, read as a double, lands on a midpoint between two floats:
+    // read back through that double they would round to their even neighbour.
+    Light midpoint = odd;
+    uint32_t bits = 0x15ae43fd; // 7.038531e-26
+    std::memcpy(&midpoint.color.x, &bits, 4);
+    bits = 0x95ae43fd; // -7.038531e-26
+    std::memcpy(&midpoint.position.y, &bits, 4);
+    lights.push_back(midpoint);
     std::string text = lightsToJson(lights);
     auto back = lightsFromJson(text, "mem");
     ASSERT_TRUE(back.ok()) << back.error();

@@ -759,7 +759,7 @@ void expectSameCulling(const ListRun& a, const ListRun& b, const std::string& la
 // --cull-by subgroup (one subgroup per tile, a candidate per lane, survivors placed by a
 // ballot) gives --cull-by invocation's results byte for byte: every layout, tiled (two lists)
 // and clustered, with spot lights and without, under MSAA, and over several dispatches
-// (clustered, 64 slices: 9), on an odd viewport. lavapipe's subgroups have 8 lanes, so a tile
+// (clustered, 64 slices: 9; linked, prepended), with drops (fixed, 4 slots), on an odd viewport. lavapipe's subgroups have 8 lanes, so a tile
 // takes many steps and its survivors cross words of the slice rows mid-step. The two read the
 // depth differently (gathered 2 x 2 blocks, texel by texel): the same bounds.
 TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
@@ -792,6 +792,17 @@ TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
     msLinked.set("light-lists", "linked");
     cases.push_back({courtyardScene(256), msLinked, "linked", 0});
     cases.push_back({floorScene(4096), clustered(small(40, 24, 1), 64), "compact", 64});
+    // fixed with 4 slots a tile: most survivors are dropped (counted), past the capacity mid-step.
+    RenderSettings dropping = small(96, 54, 1);
+    dropping.set("light-lists", "fixed");
+    dropping.set("tile-capacity", 4);
+    cases.push_back({courtyardScene(256), dropping, "fixed", 0});
+    // linked over several dispatches (every light tested: 40,000 candidates a tile, batches
+    // prepended last to first).
+    RenderSettings linkedBatches = small(32, 24, 1);
+    linkedBatches.set("light-cull", "all");
+    linkedBatches.set("light-lists", "linked");
+    cases.push_back({floorScene(40000), linkedBatches, "linked", 0});
     auto counter = [](const RendererStats& stats, const std::string& name) {
         for (const auto& [n, v] : stats.counters)
             if (n == name) return v;
@@ -812,6 +823,13 @@ TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
         EXPECT_EQ(counter(invocation.stats, "culling_by_subgroup"), 0.0) << what;
         EXPECT_EQ(counter(subgroup.stats, "culling_dispatches"), counter(invocation.stats, "culling_dispatches"))
             << what;
+        EXPECT_EQ(counter(subgroup.stats, "lights_dropped"), counter(invocation.stats, "lights_dropped")) << what;
+        if (i == cases.size() - 2) {
+            EXPECT_GT(counter(subgroup.stats, "lights_dropped"), 0.0) << what;
+        }
+        if (i == cases.size() - 1) {
+            EXPECT_GE(counter(subgroup.stats, "culling_dispatches"), 2.0) << what;
+        }
         const gpu::FrameUniforms& f = gpuScene.frame();
         const auto& lights = gpuScene.lightsGpu();
         std::vector<uint32_t> bound = la::conservativeTileBound(invocation.grid, f.view, f.proj, lights,
