@@ -83,12 +83,7 @@ LaTileDepth tileDepth(uvec2 tile) {
             sky = sky || any(equal(d, vec4(0.0)));
         }
     }
-    LaTileDepth t;
-    t.hasGeometry = hi > 0.0;
-    t.nearDepth = hi;
-    t.farDepth = t.hasGeometry ? lo : 0.0;
-    t.seesSky = sky;
-    return t;
+    return laTileDepthOf(lo, hi, sky);
 #endif
 }
 

@@ -44,14 +44,7 @@ LaTileDepth tileDepth(uvec2 tile) {
             }
         }
     }
-    lo = subgroupMin(lo);
-    hi = subgroupMax(hi);
-    LaTileDepth t;
-    t.hasGeometry = hi > 0.0;
-    t.nearDepth = hi;
-    t.farDepth = t.hasGeometry ? lo : 0.0;
-    t.seesSky = subgroupAny(sky);
-    return t;
+    return laTileDepthOf(subgroupMin(lo), subgroupMax(hi), subgroupAny(sky));
 }
 
 // One step's candidate for this lane (valid: within the batch).

@@ -229,6 +229,18 @@ struct LaTileDepth {
     bool seesSky;    // some sample of the tile has no geometry
 };
 
+// The record of a tile whose geometry samples span depths [lo, hi] (hi 0: none) and which
+// `sky` says sees the sky somewhere: the one ending of every way of reducing a tile's depth
+// (serial here; gathered and per subgroup in Forward+'s culling shaders).
+LaTileDepth laTileDepthOf(float lo, float hi, bool sky) {
+    LaTileDepth t;
+    t.hasGeometry = hi > 0.0;
+    t.nearDepth = hi;
+    t.farDepth = t.hasGeometry ? lo : 0.0;
+    t.seesSky = sky;
+    return t;
+}
+
 LaTileDepth laTileDepthSerial(uvec2 tile, uint tileSize, uvec2 viewport, uint samples) {
     float lo = 2.0, hi = 0.0;
     bool sky = false;
@@ -246,12 +258,7 @@ LaTileDepth laTileDepthSerial(uvec2 tile, uint tileSize, uvec2 viewport, uint sa
             }
         }
     }
-    LaTileDepth t;
-    t.hasGeometry = hi > 0.0;
-    t.nearDepth = hi;
-    t.farDepth = t.hasGeometry ? lo : 0.0;
-    t.seesSky = sky;
-    return t;
+    return laTileDepthOf(lo, hi, sky);
 }
 
 bool laTileHasGeometry() { return laNearBits > 0u; }
