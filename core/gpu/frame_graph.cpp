@@ -52,8 +52,34 @@ void FrameGraph::exportResource(const std::string& publicName, ResourceHandle h)
 
 void FrameGraph::compile() {
     plan_ = decl_.plan();
+    checkImagesSupported();
     allocate();
     compiled_ = true;
+}
+
+ImageDesc FrameGraph::imageDesc(uint32_t i) const {
+    const ResourceNode& r = resources_[i];
+    ImageDesc desc;
+    desc.format = r.imageInfo.format;
+    desc.width = r.imageInfo.width ? r.imageInfo.width : width_;
+    desc.height = r.imageInfo.height ? r.imageInfo.height : height_;
+    desc.samples = r.imageInfo.samples;
+    desc.usage = plan_.resources[i].imageUsage;
+    return desc;
+}
+
+// The sample counts an image may be created with depend on its format and usage
+// (VkImageFormatProperties::sampleCounts), not only on the framebuffer limits the CLI checks:
+// a storage or float image may allow fewer. Every image is checked before any is created, so
+// an unsupported combination is one line naming the image, never a validation error or a
+// half-allocated graph.
+void FrameGraph::checkImagesSupported() const {
+    for (uint32_t i = 0; i < resources_.size(); ++i) {
+        if (!plan_.resources[i].allocated || !decl_.resources()[i].isImage) continue;
+        const ImageDesc d = imageDesc(i);
+        if (Status s = checkImageSupported(ctx_, d); !s)
+            throw GraphError("image '" + decl_.resources()[i].name + "': " + s.error());
+    }
 }
 
 // Allocates what the live passes touch, with the union of their usages.
@@ -65,13 +91,7 @@ void FrameGraph::allocate() {
         const GraphDecl::Resource& d = decl_.resources()[i];
         LedgerTag tag{owner_, p.firstWriter, d.name, r.purpose};
         if (d.isImage) {
-            ImageDesc desc;
-            desc.format = r.imageInfo.format;
-            desc.width = r.imageInfo.width ? r.imageInfo.width : width_;
-            desc.height = r.imageInfo.height ? r.imageInfo.height : height_;
-            desc.samples = r.imageInfo.samples;
-            desc.usage = p.imageUsage;
-            r.image = tp::createImage(ctx_, desc, tag);
+            r.image = tp::createImage(ctx_, imageDesc(i), tag);
         } else {
             r.buffer = tp::createBuffer(ctx_, r.bufferSize, p.bufferUsage, MemoryKind::Device, tag);
         }

@@ -95,6 +95,8 @@ class FrameGraph {
         Buffer buffer;
     };
     void checkOpen(const std::string& what) const;
+    ImageDesc imageDesc(uint32_t resource) const; // after plan_: the union of its usages
+    void checkImagesSupported() const;
     void allocate();
     void recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const;
 

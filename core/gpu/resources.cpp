@@ -128,6 +128,42 @@ Buffer createBuffer(GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage
     return b;
 }
 
+namespace {
+
+std::string usageNames(VkImageUsageFlags usage) {
+    static const std::pair<VkImageUsageFlagBits, const char*> names[] = {
+        {VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "transfer-src"}, {VK_IMAGE_USAGE_TRANSFER_DST_BIT, "transfer-dst"},
+        {VK_IMAGE_USAGE_SAMPLED_BIT, "sampled"}, {VK_IMAGE_USAGE_STORAGE_BIT, "storage"},
+        {VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "colour attachment"},
+        {VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "depth attachment"},
+        {VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT, "input attachment"}};
+    std::string out;
+    for (const auto& [bit, name] : names)
+        if (usage & bit) {
+            if (!out.empty()) out += '+';
+            out += name;
+        }
+    return out;
+}
+
+} // namespace
+
+Status checkImageSupported(const GpuContext& ctx, const ImageDesc& desc) {
+    VkImageFormatProperties props{};
+    VkResult r = vkGetPhysicalDeviceImageFormatProperties(ctx.physical, desc.format, VK_IMAGE_TYPE_2D,
+                                                          VK_IMAGE_TILING_OPTIMAL, desc.usage, 0, &props);
+    const std::string what = std::string(formatName(desc.format)) + " with " + usageNames(desc.usage) + " use";
+    if (r != VK_SUCCESS) return Error{what + ": not supported by " + ctx.info.name};
+    if (!(props.sampleCounts & desc.samples))
+        return Error{std::to_string(uint32_t(desc.samples)) + " samples of " + what + ": not supported by " +
+                     ctx.info.name};
+    if (desc.width > props.maxExtent.width || desc.height > props.maxExtent.height || desc.mipLevels > props.maxMipLevels)
+        return Error{std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " + what +
+                     ": larger than " + ctx.info.name + " allows (" + std::to_string(props.maxExtent.width) + "x" +
+                     std::to_string(props.maxExtent.height) + ")"};
+    return {};
+}
+
 Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag) {
     Image img;
     img.ctx = &ctx;

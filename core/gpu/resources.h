@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include "core/gpu/ledger.h"
+#include "core/util/result.h"
 
 namespace tp {
 
@@ -59,6 +60,10 @@ enum class MemoryKind { Device, Upload, Readback };
 Buffer createBuffer(GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind kind,
                     const LedgerTag& tag);
 Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag);
+// Whether the device can create `desc` (format, usage, size, sample count) as an optimal-tiled
+// 2D image: one line naming what it lacks ("8 samples of R32G32B32A32_SFLOAT with storage use
+// not supported by DEVICE"), for callers that must refuse instead of failing in vkCreateImage.
+Status checkImageSupported(const GpuContext& ctx, const ImageDesc& desc);
 
 // Device-local buffer filled from host memory through a staging buffer (staging is not
 // kept, so it is not in the ledger).

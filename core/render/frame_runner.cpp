@@ -64,14 +64,6 @@ void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler, 
 
 } // namespace
 
-Status checkSampleCount(const GpuContext& ctx, uint32_t samples) {
-    // A power of two the device reports for colour and depth (DeviceCaps::colorSampleCounts).
-    const bool power = samples != 0 && (samples & (samples - 1)) == 0 && samples <= 64;
-    if (!power || !(ctx.caps.colorSampleCounts & samples))
-        return Error{"--msaa " + std::to_string(samples) + ": not supported by " + ctx.info.name};
-    return {};
-}
-
 Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
                               const SceneFeatures& features, const RenderSettings& settings,
                               const RunOptions& options) {

@@ -35,11 +35,6 @@ struct RunResult {
     std::vector<DebugImage> debugImages;   // only with settings.debug
 };
 
-// One line ("--msaa N: not supported by DEVICE") when the device cannot render `samples` per
-// pixel in colour and depth; runRenderer refuses such settings with it before creating any
-// image, so a caller that skipped the CLI's check gets this error, not validation errors.
-Status checkSampleCount(const GpuContext& ctx, uint32_t samples);
-
 // Error: a knob, the sample count or the renderer's plan refused (one line each).
 Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
                               const SceneFeatures& features, const RenderSettings& settings,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/gpu/context.h"
 #include "core/render/renderer.h"
 
 namespace tp {
@@ -56,7 +57,16 @@ std::vector<KnobReaders> allKnobs() {
     return all;
 }
 
+Status checkSampleCount(const GpuContext& ctx, uint32_t samples) {
+    // A power of two the device reports for colour and depth (DeviceCaps::colorSampleCounts).
+    const bool power = samples != 0 && (samples & (samples - 1)) == 0 && samples <= 64;
+    if (!power || !(ctx.caps.colorSampleCounts & samples))
+        return Error{"--msaa " + std::to_string(samples) + ": not supported by " + ctx.info.name};
+    return {};
+}
+
 std::unique_ptr<Renderer> createRenderer(const RendererEntry& entry, RendererCreateInfo info) {
+    if (Status s = checkSampleCount(info.ctx, info.settings.msaa); !s) throw RendererError(s.error());
     if (Status s = resolveKnobs(entry.knobs, info.settings); !s) throw RendererError(s.error());
     return entry.factory(info);
 }

@@ -111,8 +111,14 @@ struct KnobReaders {
     std::vector<std::string> readers;
 };
 std::vector<KnobReaders> allKnobs();
-// Checks the entry's knobs in `info.settings`, fills in its defaults and builds it;
-// RendererError (one line naming the knob and its allowed values) on a bad value.
+// One line ("--msaa N: not supported by DEVICE") when the device cannot render `samples` per
+// pixel in colour and depth.
+Status checkSampleCount(const GpuContext& ctx, uint32_t samples);
+// Checks the sample count and the entry's knobs in `info.settings`, fills in its defaults and
+// builds it; RendererError (one line naming the knob and its allowed values, or the sample
+// count) on a bad value. Every entry point (CLI, viewer, stress, info, tests) creates
+// renderers here, so none can reach image creation with a count the device lacks; the frame
+// graph checks each image's own format and usage as well (FrameGraph::compile).
 std::unique_ptr<Renderer> createRenderer(const RendererEntry& entry, RendererCreateInfo info);
 
 } // namespace tp
