@@ -3,6 +3,7 @@
 // no NaN or Inf, and each pipeline within its derived error bound of the reference, beyond
 // each pixel's allowance where its model gives one (core/render/error_model.h, as
 // `triptych stress` checks it).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,13 +21,63 @@
 #include "core/scene/stress_scenes.h"
 #include "gltf_test_scenes.h"
 #include "gpu_test_util.h"
+#include "transformed_scenes.h"
 
 namespace tp::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-void renderEveryPipeline(const fs::path& path) {
+struct ReferenceRun {
+    RunResult run;
+    float ev = 0;
+    ImageRGBA display;
+};
+
+// One pipeline's image against the reference: no NaN or Inf, and within its derived bound
+// beyond each pixel's allowance.
+void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene, const RendererEntry& entry,
+                       const RenderSettings& settings, const ReferenceRun& ref, const std::string& label) {
+    SCOPED_TRACE(label);
+    stress::StressCase c;
+    c.name = "gltf";
+    c.freeNormals = true; // a sphere: normals in every direction
+    const RunResult run = runOrFail(ctx, gpuScene, entry.name, settings);
+    EXPECT_EQ(countNonFinitePixels(run.hdr), 0u);
+    RenderSettings resolved = settings;
+    ASSERT_TRUE(resolveKnobs(entry.knobs, resolved).ok());
+    // Deferred lights each pixel at the position it reconstructs from the depth buffer, the
+    // reference at the interpolated one; a rasterizer that snaps vertices to its sub-pixel
+    // grid (the H100 does) moves the two apart next to a light by more than deferred's
+    // scalar terms cover (docs/deferred.md, "Position reconstruction and the reference").
+    // Its model bounds that per pixel from the reference's depth and the device's sub-pixel
+    // bits, as `triptych stress` checks it; the scalar bound then holds what is left beyond
+    // each pixel's allowance. Models without a per-pixel allowance get none: checked == raw.
+    const ErrorModelInput in{c, scene, resolved, &ref.run.depth, ctx.properties.limits.subPixelPrecisionBits};
+    const ErrorBound bound = expectedBound(entry.errorModel, in);
+    ASSERT_TRUE(bound.bounded) << bound.why;
+    const double raw = computeError(tonemapToDisplay(run.hdr, ref.ev), ref.display).maxAbs;
+    const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.run.hdr, ref.ev);
+    // raw: max |T(p) - T(r)|; checked: what is left beyond each pixel's allowance (== raw
+    // where the model gives none).
+    std::printf("[ bound    ] %-40s tonemapped max |p - r| raw %.3g, checked %.3g <= %.3g; %s\n", label.c_str(), raw,
+                checked.worstBeyond, bound.tonemapped(ref.ev),
+                bound.perPixel.name.empty()
+                    ? "no per-pixel allowance"
+                    : (std::to_string(checked.widenedPixels) + " pixels widened by " + bound.perPixel.name).c_str());
+    // A +Inf allowance (a light within the position error of a shaded point) checks nothing
+    // there: none may hide in these scenes.
+    EXPECT_EQ(checked.unboundedPixels, 0u) << "pixels the per-pixel allowance leaves unchecked";
+    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ref.ev)) << "tonemapped max |p - r| beyond the per-pixel allowance";
+}
+
+// Light assignment's conservative tests beside the defaults: clusters, GPU binning, no binning.
+const std::vector<std::pair<std::string, std::string>> kAssignmentVariants = {
+    {"light-assign", "clustered"}, {"light-bin", "gpu"}, {"light-cull", "all"}};
+
+// `grazing`: that many more lights that barely touch a surface near a triangle's corner or edge
+// (transformed_scenes.h), and each pipeline also under every light-assignment variant it reads.
+void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0) {
     SCOPED_TRACE(path.string());
     std::vector<std::string> warnings;
     GltfLoadOptions options;
@@ -38,6 +89,8 @@ void renderEveryPipeline(const fs::path& path) {
     g.count = 24;
     g.seed = 5;
     std::vector<Light> lights = generateLights(scene.bounds, g);
+    const std::vector<Light> grazingLights = lightsGrazingSurfaces(scene, grazing, 7);
+    lights.insert(lights.end(), grazingLights.begin(), grazingLights.end());
     scene.lights.insert(scene.lights.end(), lights.begin(), lights.end());
 
     auto ctx = makeValidatedContext();
@@ -49,49 +102,28 @@ void renderEveryPipeline(const fs::path& path) {
     // The textured surfaces' base colour is not in the compact G-buffer's model (which
     // bounds 8-bit storage by the material factors): the wide one stores it in fp32.
     settings.set("gbuffer", "wide");
-    const RunResult ref = runOrFail(*ctx, gpuScene, "reference", settings);
-    ASSERT_EQ(countNonFinitePixels(ref.hdr), 0u);
-    const float ev = autoExposureEv(ref.hdr);
-    const ImageRGBA refDisplay = tonemapToDisplay(ref.hdr, ev);
+    ReferenceRun ref;
+    ref.run = runOrFail(*ctx, gpuScene, "reference", settings);
+    ASSERT_EQ(countNonFinitePixels(ref.run.hdr), 0u);
+    ref.ev = autoExposureEv(ref.run.hdr);
+    ref.display = tonemapToDisplay(ref.run.hdr, ref.ev);
     double lit = 0;
-    for (size_t i = 0; i < ref.hdr.pixelCount(); ++i) lit += ref.hdr.rgba[i * 4 + 1];
+    for (size_t i = 0; i < ref.run.hdr.pixelCount(); ++i) lit += ref.run.hdr.rgba[i * 4 + 1];
     EXPECT_GT(lit, 0.0) << "the reference is black";
 
-    stress::StressCase c;
-    c.name = "gltf";
-    c.freeNormals = true; // a sphere: normals in every direction
+    const std::string name = path.filename().string() == "scene.gltf" ? path.parent_path().filename().string()
+                                                                       : path.filename().string();
     for (const RendererEntry& entry : registeredRenderers()) {
         if (entry.name == "reference") continue;
-        SCOPED_TRACE(entry.name);
-        const RunResult run = runOrFail(*ctx, gpuScene, entry.name, settings);
-        EXPECT_EQ(countNonFinitePixels(run.hdr), 0u);
-        RenderSettings resolved = settings;
-        ASSERT_TRUE(resolveKnobs(entry.knobs, resolved).ok());
-        // Deferred lights each pixel at the position it reconstructs from the depth buffer, the
-        // reference at the interpolated one; a rasterizer that snaps vertices to its sub-pixel
-        // grid (the H100 does) moves the two apart next to a light by more than deferred's
-        // scalar terms cover (docs/deferred.md, "Position reconstruction and the reference").
-        // Its model bounds that per pixel from the reference's depth and the device's sub-pixel
-        // bits, as `triptych stress` checks it; the scalar bound then holds what is left beyond
-        // each pixel's allowance. Models without a per-pixel allowance get none: checked == raw.
-        const ErrorModelInput in{c, scene, resolved, &ref.depth, ctx->properties.limits.subPixelPrecisionBits};
-        const ErrorBound bound = expectedBound(entry.errorModel, in);
-        ASSERT_TRUE(bound.bounded) << bound.why;
-        const double raw = computeError(tonemapToDisplay(run.hdr, ev), refDisplay).maxAbs;
-        const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.hdr, ev);
-        // raw: max |T(p) - T(r)|; checked: what is left beyond each pixel's allowance (== raw
-        // where the model gives none).
-        std::printf("[ bound    ] %-12s %-18s tonemapped max |p - r| raw %.3g, checked %.3g <= %.3g; %s\n",
-                    path.filename().string() == "scene.gltf" ? path.parent_path().filename().c_str()
-                                                             : path.filename().c_str(),
-                    entry.name.c_str(), raw, checked.worstBeyond, bound.tonemapped(ev),
-                    bound.perPixel.name.empty()
-                        ? "no per-pixel allowance"
-                        : (std::to_string(checked.widenedPixels) + " pixels widened by " + bound.perPixel.name).c_str());
-        // A +Inf allowance (a light within the position error of a shaded point) checks nothing
-        // there: none may hide in these scenes.
-        EXPECT_EQ(checked.unboundedPixels, 0u) << "pixels the per-pixel allowance leaves unchecked";
-        EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev)) << "tonemapped max |p - r| beyond the per-pixel allowance";
+        expectWithinBound(*ctx, gpuScene, scene, entry, settings, ref, name + " " + entry.name);
+        for (const auto& [knob, value] : grazing ? kAssignmentVariants : decltype(kAssignmentVariants){}) {
+            auto reads = [&, &knob = knob](const Knob& k) { return k.name == knob; };
+            if (std::none_of(entry.knobs.begin(), entry.knobs.end(), reads)) continue;
+            RenderSettings variant = settings;
+            variant.set(knob, value);
+            expectWithinBound(*ctx, gpuScene, scene, entry, variant, ref,
+                              name + " " + entry.name + " --" + knob + " " + value);
+        }
     }
     expectNoValidationMessages(*ctx);
 }
@@ -117,6 +149,14 @@ TEST_F(GltfScenesRender, Repaired) {
 
 TEST_F(GltfScenesRender, TextureTransform) {
     renderEveryPipeline(writeTextureTransformScene(dir_ / "transform"));
+}
+
+// Meshes placed by mirrored, non-uniformly scaled, rotated and translated nodes, lit by 48
+// more lights that barely touch them where a box and its triangles part most: every
+// conservative box or sphere test on the way (multipass's draw selection and scissors, tile and
+// cluster culling, CPU and GPU binning) must keep each light where it lights a pixel.
+TEST_F(GltfScenesRender, TransformedNodes) {
+    renderEveryPipeline(writeTransformedNodesScene(dir_ / "transformed", 3), 48);
 }
 
 TEST(GltfSharedScenesRender, DuckDraco) {
