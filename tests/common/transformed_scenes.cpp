@@ -66,7 +66,7 @@ struct Bin {
     }
 };
 
-json meshJson(Bin& bin, const LocalMesh& m) {
+json meshJson(Bin& bin, const LocalMesh& m, int material) {
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (const glm::vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
     json attributes = {
@@ -77,19 +77,20 @@ json meshJson(Bin& bin, const LocalMesh& m) {
                            {{"componentType", 5126}, {"count", m.normals.size()}, {"type", "VEC3"}})}};
     const int indices = bin.add(m.indices.data(), m.indices.size() * 4,
                                 {{"componentType", 5125}, {"count", m.indices.size()}, {"type", "SCALAR"}});
-    return {{"primitives", {{{"attributes", attributes}, {"indices", indices}, {"material", 0}}}}};
+    return {{"primitives", {{{"attributes", attributes}, {"indices", indices}, {"material", material}}}}};
 }
 
 } // namespace
 
-fs::path writeTransformedNodesScene(const fs::path& dir, uint32_t seed, uint32_t nodes) {
+fs::path writeTransformedNodesScene(const fs::path& dir, uint32_t seed, uint32_t nodes, bool blended) {
     std::mt19937 rng(seed);
     auto uni = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
     Bin bin;
     json meshes = json::array(), nodeList = json::array(), children = json::array();
     for (uint32_t i = 0; i < nodes; ++i) {
         const glm::vec3 offset(uni(0.5f, 2.5f), uni(-1.5f, 1.0f), uni(-1.0f, 1.0f)); // off the node's origin
-        meshes.push_back(meshJson(bin, i % 2 ? box(offset) : quadGrid(2, offset)));
+        const int material = blended && i % 3 == 2 ? 1 : 0;
+        meshes.push_back(meshJson(bin, i % 2 ? box(offset) : quadGrid(2, offset), material));
         // Every node mirrored (one or three negative axes), the scales unequal.
         glm::vec3 scale(uni(0.4f, 1.6f), uni(0.4f, 1.6f), uni(0.4f, 1.6f));
         scale[i % 3] = -scale[i % 3];
@@ -110,7 +111,11 @@ fs::path writeTransformedNodesScene(const fs::path& dir, uint32_t seed, uint32_t
                  {"meshes", meshes},
                  {"materials", {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}},
                                                             {"metallicFactor", 0.0},
-                                                            {"roughnessFactor", 0.5}}}}}},
+                                                            {"roughnessFactor", 0.5}}}},
+                                {{"pbrMetallicRoughness", {{"baseColorFactor", {0.3, 0.6, 0.9, 0.5}},
+                                                           {"metallicFactor", 0.0},
+                                                           {"roughnessFactor", 0.3}}},
+                                 {"alphaMode", "BLEND"}}}},
                  {"accessors", bin.accessors},
                  {"bufferViews", bin.views},
                  {"buffers", {{{"uri", "scene.bin"}, {"byteLength", bin.bytes.size()}}}}};

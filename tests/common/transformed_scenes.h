@@ -13,9 +13,10 @@
 namespace tp::test {
 
 // Writes `dir`/scene.gltf (+ scene.bin): `nodes` quad grids and boxes under transformed
-// nodes, all from `seed`. Single-sided, opaque, one untextured material.
+// nodes, all from `seed`. Single-sided, untextured; opaque, or with `blended` every third mesh
+// blended (alpha 0.5: the blended bounds and transparent lists take the same transforms).
 std::filesystem::path writeTransformedNodesScene(const std::filesystem::path& dir, uint32_t seed,
-                                                 uint32_t nodes = 13);
+                                                 uint32_t nodes = 13, bool blended = false);
 
 // `count` point lights that touch the scene's surfaces barely: each sphere's centre sits at a
 // small distance off a surface point near a triangle's corner or edge (where a mesh's box and
