@@ -220,6 +220,16 @@ bool toRgba8(const unsigned char* data, size_t size, int width, int height, int 
 // Reads the width and height from a PNG or JPEG header without decoding it.
 bool peekImageSize(const unsigned char* bytes, size_t size, int& width, int& height);
 
+// --- gltf_png.cpp -----------------------------------------------------------------------
+
+// What stb_image would trust in a PNG (peekImageSize has accepted its header), checked before
+// it decodes: every chunk inside the image's bytes, and the IDAT stream inflating (zlib, through
+// a small window) to at most twice the scanlines IHDR's size needs, so that stb's buffers stay
+// bounded by the image's size. "" when it may be decoded, else why not (one line). `cleaned`
+// receives a copy without the zero-length IDAT chunks when there are some (stb copies a leading
+// one into a null pointer), else is left empty.
+std::string checkPng(const unsigned char* bytes, size_t size, std::vector<unsigned char>& cleaned);
+
 // KHR_texture_transform of a material, baked into the vertex uvs by readPrimitive. A vertex
 // has one uv set, so this is faithful only when every texture of the material has the same
 // transform (a texture without the extension has the identity); otherwise `problem` says which

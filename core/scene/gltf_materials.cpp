@@ -65,7 +65,7 @@ Decoded decode(const tinygltf::Image& image, int index) {
         return d;
     }
     const unsigned char* bytes = image.image.data();
-    const size_t size = image.image.size();
+    size_t size = image.image.size();
     // Only PNG and JPEG (all that glTF 2.0 allows) and only after their headers are checked:
     // stb would decode other formats, and sizes up to 2^24, with int arithmetic.
     if (!peekImageSize(bytes, size, d.width, d.height)) {
@@ -77,6 +77,14 @@ Decoded decode(const tinygltf::Image& image, int index) {
         (png16 && uint64_t(d.width) * uint64_t(d.height) >= (1ull << 28))) {
         d.tooLarge = true;
         return d;
+    }
+    std::vector<unsigned char> cleaned; // the PNG without its empty IDAT chunks, when it has some
+    if (bytes[0] == 0x89) {
+        if (std::string problem = checkPng(bytes, size, cleaned); !problem.empty()) {
+            d.problem = "refused before decoding: " + problem;
+            return d;
+        }
+        if (!cleaned.empty()) bytes = cleaned.data(), size = cleaned.size();
     }
     tinygltf::Image pixels;
     std::string err, warn;
