@@ -151,16 +151,18 @@ do_replay() {
     [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
     empty=$(mktemp -d)
     for t in "${targets[@]}"; do
-        local inputs=("$root"/tests/fuzz/regressions/"$t"/*)
+        local inputs=("$root"/tests/fuzz/regressions/"$t"/*) failed=0
         [ -e "${inputs[0]}" ] || continue
-        if TRIPTYCH_FUZZ_FILES=$empty "$build/fuzz_$t" -rss_limit_mb=2560 -malloc_limit_mb=1536 \
-            "${inputs[@]}" >"$empty/$t.log" 2>&1; then
-            echo "$t: ${#inputs[@]} regression input(s) pass"
-        else
-            echo "$t: a regression input fails again:"
-            grep -E 'Running: |ERROR: |SUMMARY: |runtime error|^fuzz_[a-z]+: ' "$empty/$t.log" | tail -6
-            status=1
-        fi
+        # One process per input: libFuzzer stops at the first failing one.
+        for input in "${inputs[@]}"; do
+            TRIPTYCH_FUZZ_FILES=$empty "$build/fuzz_$t" -rss_limit_mb=2560 -malloc_limit_mb=1536 \
+                "$input" >"$empty/$t.log" 2>&1 && continue
+            echo "$t: $(basename "$input") fails again:"
+            grep -E 'ERROR: |SUMMARY: |runtime error|^fuzz_[a-z]+: ' "$empty/$t.log" | head -4
+            failed=$((failed + 1))
+        done
+        echo "$t: $((${#inputs[@]} - failed)) of ${#inputs[@]} regression inputs pass"
+        [ $failed -eq 0 ] || status=1
     done
     rm -rf "$empty"
     exit $status
