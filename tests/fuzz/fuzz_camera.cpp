@@ -43,9 +43,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         broken("accepted", "a camera whose view matrix is not finite");
     // The widest and the tallest images --res allows (maxImageDimension2D: 16384 on lavapipe,
     // 32768 at most on the GPUs we know) by one pixel.
-    for (float aspect : {1.0f / 32768.0f, 1.0f, 32768.0f})
-        if (!finite(tp::reverseZPerspective(c.yfov, aspect, c.znear, c.zfar)))
-            broken("accepted", "a camera whose projection is not finite");
+    for (float aspect : {1.0f / 32768.0f, 1.0f, 32768.0f}) {
+        const glm::mat4 p = tp::reverseZPerspective(c.yfov, aspect, c.znear, c.zfar);
+        if (!finite(p)) broken("accepted", "a camera whose projection is not finite");
+        if (!(p[0][0] > 0.0f && p[1][1] > 0.0f)) broken("accepted", "a projection turned over");
+    }
     tp::Result<tp::Camera> again = tp::cameraFromJson(tp::cameraToJson(c), "again.json");
     if (!again) broken("round trip", again.error());
     if (std::memcmp(&*again, &c, sizeof c) != 0) broken("round trip", "the camera changed");

@@ -36,14 +36,16 @@ usage() {
 # The shared libraries the binaries load, beside them in lib/ (their RUNPATH is $ORIGIN/lib):
 # the machine that runs them may lack these packages. Not glibc, which must be the host's.
 bundle_libraries() {
-    mkdir -p "$build/lib"
+    rm -rf "$build/lib" # so that ldd finds the system's copies, not the last bundle
+    mkdir -p "$build/lib.new"
     for t in "${all_targets[@]}"; do ldd "$build/fuzz_$t"; done | awk '$3 ~ /^\// {print $3}' | sort -u |
         while read -r lib; do
             case $(basename "$lib") in
             libc.so* | libm.so* | libpthread.so* | libdl.so* | librt.so* | ld-linux*) ;;
-            *) cp -L "$lib" "$build/lib/" ;;
+            *) cp -L "$lib" "$build/lib.new/" ;;
             esac
         done
+    mv "$build/lib.new" "$build/lib"
 }
 
 gather_seeds() {

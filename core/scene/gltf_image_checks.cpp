@@ -1,8 +1,10 @@
-// A PNG checked before stb_image decodes it. stb trusts what the file says about sizes: it
-// grows its compressed-data buffer to each IDAT chunk's declared length before reading it (a
-// 26 KB file made it realloc 2 GiB), and it grows its output buffer for as long as the zlib
-// stream produces bytes (deflate expands up to 1032:1). So the chunks are walked first, and the
-// zlib stream is inflated here through a small window, counting, before stb allocates anything.
+// An encoded image checked before stb_image decodes it: its size from the PNG or JPEG header
+// (peekImageSize; loadMaterials bounds it), then a PNG's chunks and image data. stb trusts
+// what the file says: it grows its compressed-data buffer to each IDAT chunk's declared length
+// before reading it (a 26 KB file made it realloc 2 GiB), and its output buffer for as long as
+// the zlib stream produces bytes (deflate expands up to 1032:1). So the chunks are walked
+// first, and the stream is inflated here through a small window, counting, before stb
+// allocates anything.
 #include <zlib.h>
 
 #include <algorithm>
@@ -20,14 +22,18 @@ uint32_t be32(const unsigned char* p) {
 
 // "'IDAT'", or the type in hex when it is not four letters (a damaged one).
 std::string chunkName(const unsigned char* type) {
-    for (int i = 0; i < 4; ++i)
-        if (!std::isalpha(type[i])) {
-            static const char hex[] = "0123456789abcdef";
-            std::string out = "0x";
-            for (int k = 0; k < 4; ++k) out += {hex[type[k] >> 4], hex[type[k] & 15]};
-            return out;
-        }
-    return "'" + std::string(reinterpret_cast<const char*>(type), 4) + "'";
+    bool letters = true;
+    for (int i = 0; i < 4; ++i) letters = letters && std::isalpha(type[i]);
+    static const char hex[] = "0123456789abcdef";
+    std::string out = letters ? "'" : "0x";
+    for (int k = 0; k < 4; ++k) {
+        if (letters)
+            out += char(type[k]);
+        else
+            out += {hex[type[k] >> 4], hex[type[k] & 15]};
+    }
+    if (letters) out += '\'';
+    return out;
 }
 
 // Bytes of filtered scanlines the image needs (a filter byte per row), Adam7 passes summed.
@@ -81,6 +87,42 @@ std::string inflatedWithin(const std::vector<std::pair<const unsigned char*, uin
 }
 
 } // namespace
+
+bool peekImageSize(const unsigned char* b, size_t size, int& width, int& height) {
+    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 24 && std::equal(kPng, kPng + 8, b)) {
+        if (!std::equal(b + 12, b + 16, "IHDR")) return false;
+        uint32_t w = be32(b + 16), h = be32(b + 20);
+        if (w == 0 || h == 0 || w > INT32_MAX || h > INT32_MAX) return false;
+        width = int(w), height = int(h);
+        return true;
+    }
+    if (size < 4 || b[0] != 0xFF || b[1] != 0xD8) return false;
+    size_t i = 2;
+    while (i + 3 < size) {
+        if (b[i] != 0xFF) return false;
+        unsigned char m = b[i + 1];
+        if (m == 0xFF) { // fill byte
+            ++i;
+            continue;
+        }
+        if (m == 0x01 || (m >= 0xD0 && m <= 0xD8)) { // markers without a length
+            i += 2;
+            continue;
+        }
+        size_t length = size_t(b[i + 2]) << 8 | b[i + 3];
+        bool sof = m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+        if (sof) {
+            if (i + 9 > size || length < 7) return false;
+            height = int(b[i + 5]) << 8 | b[i + 6];
+            width = int(b[i + 7]) << 8 | b[i + 8];
+            return width > 0 && height > 0;
+        }
+        if (m == 0xDA || m == 0xD9 || length < 2) return false; // image data before any SOF
+        i += 2 + length;
+    }
+    return false;
+}
 
 std::string checkPng(const unsigned char* b, size_t size, std::vector<unsigned char>& cleaned) {
     cleaned.clear();
