@@ -91,6 +91,15 @@ do_build() {
     echo "built in $build; run with: $build/run.sh run SECONDS [${all_targets[*]}]"
 }
 
+# Clang 14's AddressSanitizer cannot map its shadow memory under the 32 bits of mmap
+# randomization that recent kernels (Ubuntu 24.04's among them) set: the binaries then die at
+# start. Without address randomization (setarch -R, inherited by libFuzzer's job processes)
+# they run; reading /proc needs no privilege, changing the sysctl would.
+no_aslr=()
+if [ "$(cat /proc/sys/vm/mmap_rnd_bits 2>/dev/null || echo 0)" -gt 28 ] && command -v setarch >/dev/null; then
+    no_aslr=(setarch "$(uname -m)" -R)
+fi
+
 # Sums what libFuzzer's logs say: executions (each log's final count, or its last progress
 # line when the process ended on a finding), and the largest coverage and peak RSS.
 summarize_logs() {
@@ -118,7 +127,7 @@ run_target() {
     local before start status=0
     before=$(count_findings "$t")
     start=$(date +%s)
-    (cd "$logs" && TRIPTYCH_FUZZ_FILES="$build/files" "$build/fuzz_$t" "$build/corpus/$t" "$build/seeds/$t" \
+    (cd "$logs" && TRIPTYCH_FUZZ_FILES="$build/files" "${no_aslr[@]}" "$build/fuzz_$t" "$build/corpus/$t" "$build/seeds/$t" \
         "${dict[@]}" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 -malloc_limit_mb=1536 \
         -max_len=65536 -jobs="$jobs" -workers="$jobs" -print_final_stats=1 \
         -artifact_prefix="$build/artifacts/$t-" ${FUZZ_ARGS:-} >"$logs/main.log" 2>&1) || status=$?
@@ -157,7 +166,7 @@ do_replay() {
         [ -e "${inputs[0]}" ] || continue
         # One process per input: libFuzzer stops at the first failing one.
         for input in "${inputs[@]}"; do
-            TRIPTYCH_FUZZ_FILES=$empty "$build/fuzz_$t" -rss_limit_mb=2560 -malloc_limit_mb=1536 \
+            TRIPTYCH_FUZZ_FILES=$empty "${no_aslr[@]}" "$build/fuzz_$t" -rss_limit_mb=2560 -malloc_limit_mb=1536 \
                 "$input" >"$empty/$t.log" 2>&1 && continue
             echo "$t: $(basename "$input") fails again:"
             grep -E 'ERROR: |SUMMARY: |runtime error|^fuzz_[a-z]+: ' "$empty/$t.log" | head -4
