@@ -63,7 +63,7 @@ float number(const std::string& text, bool& ok) {
 
 Result<std::vector<ScriptLine>> readScript(const std::string& path) {
     std::ifstream in(path);
-    if (!in) return Error{"--script " + path + ": cannot open the file"};
+    if (!in) return Error{printableLine("--script " + path + ": cannot open the file")};
     std::vector<ScriptLine> lines;
     std::string text;
     for (int n = 1; std::getline(in, text); ++n) {
@@ -74,10 +74,13 @@ Result<std::vector<ScriptLine>> readScript(const std::string& path) {
         if (line.words.empty()) continue;
         auto it = commands().find(line.words[0]);
         const std::string where = path + ":" + std::to_string(n) + ": ";
-        if (it == commands().end()) return Error{where + "unknown command '" + line.words[0] + "'"};
+        // The word is the file's: control characters and bytes that are not UTF-8 would
+        // reach the terminal (found by tests/fuzz/fuzz_script.cpp).
+        if (it == commands().end())
+            return Error{printableLine(where + "unknown command '" + line.words[0] + "'")};
         size_t args = line.words.size() - 1;
         if (args < it->second.minArgs || args > it->second.maxArgs)
-            return Error{where + "expected '" + it->second.usage + "'"};
+            return Error{printableLine(where + "expected '" + it->second.usage + "'")};
         lines.push_back(std::move(line));
     }
     return lines;
@@ -89,7 +92,7 @@ ScriptRunner::ScriptRunner(std::vector<ScriptLine> lines, std::string path, std:
       screenshots_(screenshots) {}
 
 void ScriptRunner::fail(const ScriptLine& line, const std::string& message) const {
-    throw ScriptError(path_ + ":" + std::to_string(line.number) + ": " + message);
+    throw ScriptError(printableLine(path_ + ":" + std::to_string(line.number) + ": " + message));
 }
 
 void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {

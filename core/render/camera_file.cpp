@@ -13,6 +13,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "core/render/camera.h"
 #include "core/util/files.h"
 
 namespace tp {
@@ -27,6 +28,10 @@ constexpr uintmax_t kMaxCameraFileBytes = 64 * 1024;
 // sin of the smallest angle allowed between `up` and the view direction: below ~0.06 degrees
 // the camera's right vector (their cross product) is mostly rounding error.
 constexpr double kMinUpSine = 1e-3;
+
+// The widest image --res can ask for, as width / height: sides up to maxImageDimension2D
+// (16384 on lavapipe, 32768 at most on the GPUs we know) over one pixel.
+constexpr float kMaxAspect = 32768.0f;
 
 const std::array<const char*, 7> kKeys = {"schema", "position", "target", "up",
                                           "yfov_degrees", "znear", "zfar"};
@@ -98,6 +103,37 @@ Status checkKeys(const json& j, const std::string& where) {
     return {};
 }
 
+template <class M> bool finiteMatrix(const M& m) {
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row)
+            if (!std::isfinite(m[col][row])) return false;
+    return true;
+}
+
+// The matrices themselves, in fp32 as camera.cpp builds them (found by
+// tests/fuzz/fuzz_camera.cpp): numbers within fp32 can still overflow there. A position near
+// 3e38 overflows the view's translation, a yfov of 1e-40 degrees is 0 as a float (1/tan(0)),
+// a znear of 1e20 times a zfar of 2e20 overflows the depth terms.
+Status checkMatrices(Camera c, double yfovDegrees, const std::string& where) {
+    c.yfov = float(yfovDegrees * glm::pi<double>() / 180.0);
+    if (!finiteMatrix(viewMatrix(c)))
+        return Error{where + ": \"position\" is too far from the origin: the view matrix overflows fp32"};
+    for (float aspect : {1.0f / kMaxAspect, kMaxAspect}) {
+        const glm::mat4 p = reverseZPerspective(c.yfov, aspect, c.znear, c.zfar);
+        if (!std::isfinite(p[0][0]) || !std::isfinite(p[1][1]))
+            return Error{where + ": \"yfov_degrees\" " + num(yfovDegrees) +
+                         " is too small: the projection overflows fp32"};
+        // Just below 180 degrees, the float nearest the angle in radians can be past pi.
+        if (!(p[1][1] > 0.0f))
+            return Error{where + ": \"yfov_degrees\" " + num(yfovDegrees) +
+                         " is too close to 180: the projection turns over in fp32"};
+        if (!finiteMatrix(p))
+            return Error{where + ": \"znear\" " + num(shortest(c.znear)) + " and \"zfar\" " +
+                         num(shortest(c.zfar)) + " overflow the projection's depth terms in fp32"};
+    }
+    return {};
+}
+
 // The geometry a view matrix and a projection need (computed in double, as camera.cpp does).
 Status checkCamera(const Camera& c, double yfovDegrees, const std::string& where) {
     glm::dvec3 dir = glm::dvec3(c.target) - glm::dvec3(c.position);
@@ -111,7 +147,7 @@ Status checkCamera(const Camera& c, double yfovDegrees, const std::string& where
     if (c.zfar != 0.0f && !(c.zfar > c.znear))
         return Error{where + ": \"zfar\" must be 0 (infinite) or greater than \"znear\", got " +
                      num(c.zfar)};
-    return {};
+    return checkMatrices(c, yfovDegrees, where);
 }
 
 Result<Camera> parseCamera(const json& j, const std::string& where) {

@@ -217,9 +217,6 @@ glm::vec3 anyPerpendicular(const glm::vec3& n);
 bool toRgba8(const unsigned char* data, size_t size, int width, int height, int components,
              int bits, std::vector<uint8_t>& rgba8);
 
-// Reads the width and height from a PNG or JPEG header without decoding it.
-bool peekImageSize(const unsigned char* bytes, size_t size, int& width, int& height);
-
 // KHR_texture_transform of a material, baked into the vertex uvs by readPrimitive. A vertex
 // has one uv set, so this is faithful only when every texture of the material has the same
 // transform (a texture without the extension has the identity); otherwise `problem` says which
@@ -235,9 +232,21 @@ UvTransform materialUvTransform(const tinygltf::Material& m);
 
 // Fills scene.materials (one per glTF material, in order) and scene.textures (one per
 // (image, sRGB) pair actually used, images decoded in parallel). Images the file could not
-// provide (imageProblems[i] non-empty) and images that fail to decode become 1x1
-// placeholders with one warning each. A texture over kMaxTextureSide is an error.
+// provide (imageProblems[i] non-empty), PNGs checkPng refuses and images that fail to decode
+// become 1x1 placeholders with one warning each. A texture over kMaxTextureSide is an error.
 Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
                      Scene& scene, const WarnFn& warn);
+
+// --- gltf_image_checks.cpp ----------------------------------------------------------------
+
+// What stb_image would trust in a PNG (peekImageSize has accepted its header), checked before
+// it decodes: every chunk inside the image's bytes, and the IDAT stream inflating (zlib, through
+// a small window) to at most twice the scanlines IHDR's size needs, so that stb's buffers stay
+// bounded by the image's size. "" when it may be decoded, else why not (one line). `cleaned`
+// receives a copy without the zero-length IDAT chunks when there are some (stb copies a leading
+// one into a null pointer), else is left empty.
+std::string checkPng(const unsigned char* bytes, size_t size, std::vector<unsigned char>& cleaned);
+// Reads the width and height from a PNG or JPEG header without decoding it.
+bool peekImageSize(const unsigned char* bytes, size_t size, int& width, int& height);
 
 } // namespace tp::gltf

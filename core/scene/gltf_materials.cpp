@@ -49,10 +49,6 @@ struct Decoded {
     bool tooLarge = false;
 };
 
-uint32_t readBe32(const unsigned char* p) {
-    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3];
-}
-
 // `image` holds the encoded file (as_is) as our image loader left it, or decoded pixels when
 // tinygltf decoded them itself.
 Decoded decode(const tinygltf::Image& image, int index) {
@@ -65,7 +61,7 @@ Decoded decode(const tinygltf::Image& image, int index) {
         return d;
     }
     const unsigned char* bytes = image.image.data();
-    const size_t size = image.image.size();
+    size_t size = image.image.size();
     // Only PNG and JPEG (all that glTF 2.0 allows) and only after their headers are checked:
     // stb would decode other formats, and sizes up to 2^24, with int arithmetic.
     if (!peekImageSize(bytes, size, d.width, d.height)) {
@@ -77,6 +73,14 @@ Decoded decode(const tinygltf::Image& image, int index) {
         (png16 && uint64_t(d.width) * uint64_t(d.height) >= (1ull << 28))) {
         d.tooLarge = true;
         return d;
+    }
+    std::vector<unsigned char> cleaned; // the PNG without its empty IDAT chunks, when it has some
+    if (bytes[0] == 0x89) {
+        if (std::string problem = checkPng(bytes, size, cleaned); !problem.empty()) {
+            d.problem = "refused before decoding: " + problem;
+            return d;
+        }
+        if (!cleaned.empty()) bytes = cleaned.data(), size = cleaned.size();
     }
     tinygltf::Image pixels;
     std::string err, warn;
@@ -178,42 +182,6 @@ bool toRgba8(const unsigned char* data, size_t size, int width, int height, int 
         }
     }
     return true;
-}
-
-bool peekImageSize(const unsigned char* b, size_t size, int& width, int& height) {
-    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (size >= 24 && std::equal(kPng, kPng + 8, b)) {
-        if (!std::equal(b + 12, b + 16, "IHDR")) return false;
-        uint32_t w = readBe32(b + 16), h = readBe32(b + 20);
-        if (w == 0 || h == 0 || w > INT32_MAX || h > INT32_MAX) return false;
-        width = int(w), height = int(h);
-        return true;
-    }
-    if (size < 4 || b[0] != 0xFF || b[1] != 0xD8) return false;
-    size_t i = 2;
-    while (i + 3 < size) {
-        if (b[i] != 0xFF) return false;
-        unsigned char m = b[i + 1];
-        if (m == 0xFF) { // fill byte
-            ++i;
-            continue;
-        }
-        if (m == 0x01 || (m >= 0xD0 && m <= 0xD8)) { // markers without a length
-            i += 2;
-            continue;
-        }
-        size_t length = size_t(b[i + 2]) << 8 | b[i + 3];
-        bool sof = m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
-        if (sof) {
-            if (i + 9 > size || length < 7) return false;
-            height = int(b[i + 5]) << 8 | b[i + 6];
-            width = int(b[i + 7]) << 8 | b[i + 8];
-            return width > 0 && height > 0;
-        }
-        if (m == 0xDA || m == 0xD9 || length < 2) return false; // image data before any SOF
-        i += 2 + length;
-    }
-    return false;
 }
 
 Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,

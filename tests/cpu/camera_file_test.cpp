@@ -185,6 +185,31 @@ TEST(CameraFile, RefusesDegenerateCameras) {
     EXPECT_TRUE(cameraFromJson(far, "x").ok());
 }
 
+// Numbers each within fp32 whose matrices are not (found with tests/fuzz/fuzz_camera.cpp;
+// its regression inputs, tests/fuzz/regressions/camera, are these).
+TEST(CameraFile, RefusesCamerasWhoseMatricesOverflow) {
+    json j = json::parse(R"({"schema":"triptych.camera/1","position":[0,0,5],"target":[0,0,0],
+                             "up":[0,1,0],"yfov_degrees":45,"znear":1,"zfar":0})");
+    ASSERT_TRUE(cameraFromJson(j, "x").ok());
+    auto with = [&](const char* key, json value) {
+        json k = j;
+        k[key] = std::move(value);
+        return k;
+    };
+    expectRefused(with("position", json::array({3e38, 3e38, 3e38})),
+                  "\"position\" is too far from the origin: the view matrix overflows fp32");
+    expectRefused(with("yfov_degrees", 1e-40), "\"yfov_degrees\" 1e-40 is too small: the projection overflows fp32");
+    expectRefused(with("yfov_degrees", 179.99999999),
+                  "\"yfov_degrees\" 179.99999999 is too close to 180: the projection turns over in fp32");
+    json depth = with("znear", 1e20);
+    depth["zfar"] = 2e20;
+    expectRefused(depth, "\"znear\" 1e+20 and \"zfar\" 2e+20 overflow the projection's depth terms in fp32");
+    depth["zfar"] = 0; // infinite far plane: znear alone is fine
+    EXPECT_TRUE(cameraFromJson(depth, "x").ok());
+    // Far, but not near fp32's limit: still a camera.
+    EXPECT_TRUE(cameraFromJson(with("position", json::array({1e30, -1e30, 1e30})), "x").ok());
+}
+
 TEST(CameraFile, RefusesBadFiles) {
     auto refused = [](const std::string& path, const std::string& expected) {
         Result<Camera> c = readCameraFile(path);

@@ -3,9 +3,11 @@
 // would fail there (or be killed) instead of taking the machine's memory; the child's peak
 // resident memory is checked too. The CLI runs the same cases end to end
 // (tests/cli/hostile_input.sh).
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -14,6 +16,8 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <zlib.h>
 
 #include "core/scene/gltf_internal.h"
 #include "core/scene/gltf_loader.h"
@@ -190,6 +194,178 @@ TEST(HostileGltfBytes, EveryTruncationFailsWithOneLine) {
             EXPECT_EQ(s.error().find('\n'), std::string::npos) << s.error();
         }
         EXPECT_EQ(failed, whole.size()) << (binary ? "glb" : "gltf");
+    }
+}
+
+// --- What the fuzzer found (tests/fuzz/regressions/gltf; docs/hostile_input.md, "Fuzzing") --
+
+std::vector<uint8_t> readBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeBytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                std::streamsize(bytes.size()));
+}
+
+fs::path regression(const char* name) {
+    return fs::path(TP_FUZZ_REGRESSIONS) / "gltf" / name;
+}
+
+// A regression input loaded as the child loads the hostile cases: image 0 must be refused
+// before decoding, with one warning saying why (its meshes, mutated too, may fail the load
+// afterwards; materials are read first).
+void expectImageRefused(const fs::path& root, const char* input, const std::string& why) {
+    fs::create_directories(root);
+    const fs::path scene = root / (std::string(input));
+    fs::copy_file(regression(input), scene, fs::copy_options::overwrite_existing);
+    Outcome o = loadInChild(scene);
+    ASSERT_TRUE(o.exited) << "signal " << o.signal;
+    EXPECT_LT(o.peakRssKiB, kPeakRssLimitKiB);
+    bool said = false;
+    for (const std::string& w : o.warnings)
+        said |= w == scene.string() + ": image 0: refused before decoding: " + why + "; using a placeholder";
+    EXPECT_TRUE(said) << "no warning says '" << why << "'; the first: "
+                      << (o.warnings.empty() ? "(none)" : o.warnings.front());
+}
+
+// stb grew its buffer to an IDAT chunk's declared 1.7 GB before reading it (the fuzzer's
+// malloc limit stopped a 2 GiB realloc; in a 32-bit address space it is an out-of-memory).
+TEST_F(HostileGltf, FuzzFindingIdatLongerThanTheImage) {
+    expectImageRefused(root_, "png_idat_length_past_end_2gib.glb",
+                       "its chunk 'IDAT' of 1696728432 bytes runs past the end of the image (9674 bytes)");
+}
+
+// An empty first IDAT made stb memcpy into its null buffer (UBSan; the fuzz replay in ctest
+// catches that part); the damaged chunk after it is what refuses this one.
+TEST_F(HostileGltf, FuzzFindingEmptyIdatThenDamagedChunk) {
+    expectImageRefused(root_, "png_empty_idat_then_chunk_past_end.glb",
+                       "its chunk 0xf9c74736 of 164894549 bytes runs past the end of the image (9674 bytes)");
+}
+
+// The fuzzer flagged "a normal, tangent or uv that is not finite": its check summed the
+// components, and uvs of 7.3e37 and 3.2e38 sum past fp32. The loader keeps such (finite)
+// uvs; every component it returns is finite.
+TEST(HostileGltfBytes, FuzzFindingHugeFiniteUvs) {
+    const std::vector<uint8_t> bytes = readBytes(regression("huge_finite_uvs_sum_overflows.glb"));
+    ASSERT_EQ(bytes.size(), 26220u);
+    GltfLoadOptions options; // as fuzz_gltf loaded it: by the length, neither option
+    Result<Scene> scene = gltf::loadGltfBytes(bytes, "uvs.glb", fs::temp_directory_path(), false, options);
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    float largest = 0.0f;
+    for (const Mesh& m : scene->meshes)
+        for (size_t i = 0; i < m.positions.size(); ++i) {
+            for (int k = 0; k < 3; ++k)
+                ASSERT_TRUE(std::isfinite(m.positions[i][k]) && std::isfinite(m.normals[i][k]));
+            for (int k = 0; k < 4; ++k)
+                ASSERT_TRUE(std::isfinite(m.tangents[i][k]) && std::isfinite(m.colors[i][k]));
+            for (int k = 0; k < 2; ++k) {
+                ASSERT_TRUE(std::isfinite(m.uvs[i][k]));
+                largest = std::max(largest, std::abs(m.uvs[i][k]));
+            }
+        }
+    EXPECT_GT(largest, 3e38f);
+}
+
+using Bytes = std::vector<uint8_t>;
+
+// An 8-bit RGBA PNG of `width` x `height` around a zlib stream (`stream`), as one IDAT, with
+// an empty IDAT in front when `emptyFirst`.
+Bytes pngAround(uint32_t width, uint32_t height, const Bytes& stream, bool emptyFirst) {
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    auto be32 = [&](uint32_t x) {
+        for (int s = 24; s >= 0; s -= 8) png.push_back(uint8_t(x >> s));
+    };
+    auto chunk = [&](const char* type, const Bytes& data) {
+        be32(uint32_t(data.size()));
+        const size_t start = png.size();
+        png.insert(png.end(), type, type + 4);
+        png.insert(png.end(), data.begin(), data.end());
+        be32(uint32_t(crc32(0, png.data() + start, uInt(png.size() - start))));
+    };
+    Bytes ihdr;
+    for (uint32_t x : {width, height})
+        for (int s = 24; s >= 0; s -= 8) ihdr.push_back(uint8_t(x >> s));
+    ihdr.insert(ihdr.end(), {8, 6, 0, 0, 0});
+    chunk("IHDR", ihdr);
+    if (emptyFirst) chunk("IDAT", {});
+    chunk("IDAT", stream);
+    chunk("IEND", {});
+    return png;
+}
+
+// `zeros` bytes of zeros (filter 0, black transparent pixels), deflated: ~1 KB per MiB.
+Bytes deflatedZeros(size_t zeros) {
+    z_stream z{};
+    deflateInit(&z, Z_BEST_COMPRESSION);
+    const Bytes block(1 << 20, 0);
+    Bytes out, buffer(1 << 16);
+    for (size_t left = zeros; left > 0 || z.avail_in > 0;) {
+        const bool last = left <= block.size() && z.avail_in == 0;
+        if (z.avail_in == 0) {
+            z.next_in = const_cast<uint8_t*>(block.data());
+            z.avail_in = uInt(std::min(left, block.size()));
+            left -= z.avail_in;
+        }
+        int status;
+        do {
+            z.next_out = buffer.data();
+            z.avail_out = uInt(buffer.size());
+            status = deflate(&z, last && left == 0 ? Z_FINISH : Z_NO_FLUSH);
+            out.insert(out.end(), buffer.data(), buffer.data() + (buffer.size() - z.avail_out));
+        } while (z.avail_out == 0 || (last && left == 0 && status != Z_STREAM_END));
+    }
+    deflateEnd(&z);
+    return out;
+}
+
+// The one-triangle scene with `png` as its base colour texture (img.png beside it).
+fs::path texturedTriangle(const fs::path& dir, const Bytes& png) {
+    fs::create_directories(dir);
+    const Bytes text = hostile::validTriangleGltf();
+    nlohmann::json g = nlohmann::json::parse(text.begin(), text.end());
+    g["images"] = {{{"uri", "img.png"}}};
+    g["textures"] = {{{"source", 0}}};
+    g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    g["meshes"][0]["primitives"][0]["material"] = 0;
+    const std::string json = g.dump();
+    writeBytes(dir / "scene.gltf", Bytes(json.begin(), json.end()));
+    writeBytes(dir / "img.png", png);
+    return dir / "scene.gltf";
+}
+
+// 16x16 pixels need 1,040 bytes of scanlines; a stream of 320 MiB of zeros is 320 KB of
+// deflate. stb took it whole (it only checks there is enough) and held 320 MiB and more.
+TEST_F(HostileGltf, ZlibBombRefusedBeforeDecoding) {
+    const fs::path scene = texturedTriangle(root_ / "bomb", pngAround(16, 16, deflatedZeros(size_t(320) << 20), false));
+    Outcome o = loadInChild(scene);
+    ASSERT_TRUE(o.exited) << "signal " << o.signal;
+    ASSERT_TRUE(o.ok) << o.error;
+    EXPECT_LT(o.peakRssKiB, kPeakRssLimitKiB);
+    ASSERT_EQ(o.warnings.size(), 1u);
+    EXPECT_EQ(o.warnings[0], scene.string() + ": image 0 'img.png': refused before decoding: its image "
+                             "data inflates to more than 2080 bytes, twice what its size needs; using a placeholder");
+}
+
+// A valid PNG whose first IDAT is empty (the case behind the null memcpy): decoded from a
+// copy without it, to the same pixels.
+TEST_F(HostileGltf, EmptyFirstIdatDecodes) {
+    const Bytes rows = {0, 255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 0, 255, 255, 255, 255, 255, 255};
+    Bytes stream(compressBound(uLong(rows.size())));
+    uLongf length = uLongf(stream.size());
+    ASSERT_EQ(compress(stream.data(), &length, rows.data(), uLong(rows.size())), Z_OK);
+    stream.resize(length);
+    for (bool empty : {false, true}) {
+        std::vector<std::string> warnings;
+        GltfLoadOptions options;
+        options.warnings = &warnings;
+        const fs::path scene = texturedTriangle(root_ / (empty ? "empty" : "plain"), pngAround(2, 2, stream, empty));
+        Result<Scene> s = loadGltf(scene.string(), options);
+        ASSERT_TRUE(s.ok()) << s.error();
+        EXPECT_TRUE(warnings.empty()) << warnings.front();
+        ASSERT_EQ(s->textures.size(), 1u);
+        EXPECT_EQ(s->textures[0].rgba8, (Bytes{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255}));
     }
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include "core/scene/gltf_internal.h"
 
@@ -15,6 +16,18 @@ std::filesystem::path gFolder;
 [[noreturn]] void broken(const char* what, const std::string& detail) {
     std::fprintf(stderr, "fuzz_gltf: %s: %s\n", what, detail.c_str());
     std::abort();
+}
+
+template <class V> std::string text(const V& v) {
+    std::string out;
+    for (int k = 0; k < V::length(); ++k) out += (k ? "," : "") + std::to_string(v[k]);
+    return out;
+}
+
+template <class V> bool finite(const V& v) {
+    for (int k = 0; k < V::length(); ++k)
+        if (!std::isfinite(v[k])) return false;
+    return true;
 }
 
 void checkScene(const tp::Scene& s) {
@@ -28,14 +41,17 @@ void checkScene(const tp::Scene& s) {
         for (uint32_t i : m.indices)
             if (i >= n) broken("loaded", m.name + ": index past the vertices");
         if (m.material >= s.materials.size()) broken("loaded", m.name + ": no such material");
+        // Component by component: a sum of finite values may overflow (a uv of 3.2e38 plus
+        // one of 7.3e37 is not a non-finite uv).
         for (size_t i = 0; i < n; ++i)
-            if (!std::isfinite(m.positions[i].x + m.positions[i].y + m.positions[i].z))
-                broken("loaded", m.name + ": a position that is not finite");        // Non-finite normals, tangents and uvs are repaired or refused, never passed on.
+            if (!finite(m.positions[i])) broken("loaded", m.name + ": a position that is not finite");
+        // Non-finite normals, tangents and uvs are repaired or refused, never passed on.
         for (size_t i = 0; i < n; ++i)
-            if (!std::isfinite(m.normals[i].x + m.normals[i].y + m.normals[i].z +
-                               m.tangents[i].x + m.tangents[i].y + m.tangents[i].z +
-                               m.tangents[i].w + m.uvs[i].x + m.uvs[i].y))
-                broken("loaded", m.name + ": a normal, tangent or uv that is not finite");
+            if (!finite(m.normals[i]) || !finite(m.tangents[i]) || !finite(m.uvs[i]) ||
+                !finite(m.colors[i]))
+                broken("loaded", m.name + ": a normal, tangent or uv that is not finite (vertex " +
+                                     std::to_string(i) + ": n " + text(m.normals[i]) + " t " +
+                                     text(m.tangents[i]) + " uv " + text(m.uvs[i]) + ")");
     }
     for (const tp::Material& m : s.materials)
         for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
