@@ -296,6 +296,55 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
     expectNoValidationMessages(*ctx);
 }
 
+// 4x, --msaa-shading pixel, the courtyard with its blended cloth: the hybrid forward pass
+// shades a blended fragment once per pixel at its centre, as Forward+'s and multipass's
+// blended draws do, and blends that value into every sample the primitive covers. On a pixel
+// the edge mask leaves out (one opaque surface) deferred then computes what the depth
+// reference with --reference-msaa center computes: the opaque surface lit once at the centre
+// (PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre), the cloth shaded at the
+// centre with its interpolated position and the same per-sample coverage, blended per
+// sample and resolved. (a) Within the depth-reference bound with N = 4 (lights + 1): a blend
+// src * a + dst * (1 - a) of non-negative operands keeps their relative bound, so the bound
+// of the opaque part carries over, as it does on the courtyard at 1x and at the sample rate.
+// Before, the blended pass shaded every sample at its own position over an opaque surface lit
+// once at the centre: 8.9e4 times the bound at 0 lights (0.105 relative), 2.2e3 times at 256
+// (0.27 relative) on lavapipe; now 0 (bit-identical) and 0.10 of it. (b) The reconstruction
+// error of the centre-shaded reference on those pixels (edge pixels set to 0 in both), as a
+// mean relative error: the courtyard's 1e-4.
+// Masked materials made opaque: deferred's G-buffer pass decides a masked pixel's coverage at
+// its centre (a discard without sample shading), a question of coverage, not of this pass.
+TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (uint32_t lights : {0u, 256u}) {
+        Scene scene = courtyardWithLights(lights);
+        for (Material& m : scene.materials)
+            if (m.alphaMode == AlphaMode::Mask) m.alphaMode = AlphaMode::Opaque;
+        SceneGpu gpuScene(*ctx, scene);
+        RenderSettings s = small(4, "wide");
+        s.set("msaa-shading", "pixel");
+        s.debug = true;
+        RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", s);
+        s.set("reference-msaa", "center");
+        RunResult centreDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
+        RunResult centre = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "interpolated"));
+        const ImageRGBA* edges = debugImageOf(deferred, "edge_mask");
+        ASSERT_NE(edges, nullptr);
+        std::vector<uint8_t> isOther(deferred.hdr.pixelCount());
+        ImageRGBA a = centreDepth.hdr, b = centre.hdr; // the other pixels only, for the mean
+        for (size_t i = 0; i < isOther.size(); ++i) {
+            isOther[i] = edges->rgba[i * 4] <= 0.5f;
+            for (int c = 0; c < 4 && !isOther[i]; ++c) a.rgba[i * 4 + c] = b.rgba[i * 4 + c] = 0.0f;
+        }
+        const std::string what = "courtyard " + std::to_string(lights) + " lights 4x pixel-rate, other pixels";
+        EXPECT_EQ(computeError(deferred.hdr, centre.hdr).nanInfCount, 0u) << what;
+        expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
+                                           what + " against the centre-shaded reference", &isOther);
+        checkReconstructionError(*ctx, computeError(a, b).meanRelative, 1e-4, what + ", centre-shaded (mean)");
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 // compact, 1x: per pixel, base colour through 8-bit sRGB moves a channel by at most
 // 2.4 * (0.5/255) / (s + 0.055) relative (1.2 % for the darkest channel here, 0.1 linear),
 // roughness through 8 bits moves GGX D * Vis by at most 6 * (0.5/255) / r = 3.9 % at
@@ -700,7 +749,7 @@ std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char
 // (core/lightassign/blended_bounds.h): a tile with no blended fragment has an empty list
 // (tile_stats' transparent column: what its test found), tiled and clustered, 1x and 4x.
 // Forward+ records the same bounds from its prepass depth (the same vertex shader, depth
-// test and fragments), bit for bit.
+// test and fragments, at the same rate: per pixel or per sample under MSAA), bit for bit.
 TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -728,9 +777,14 @@ TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
             }
             EXPECT_GT(empty, 0u) << assign << " " << msaa << "x";
             EXPECT_GT(blended, 0u) << assign << " " << msaa << "x";
-            s.set("msaa-shading", "sample"); // Forward+ shades blended samples as deferred does
-            EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), bytes)
-                << assign << " " << msaa << "x";
+            // Both shade blended fragments at the rate --msaa-shading gives (pixel: at the centre).
+            for (const char* rate : {"pixel", "sample"}) {
+                s.set("msaa-shading", rate);
+                const std::vector<uint8_t> ours = exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds");
+                EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), ours)
+                    << assign << " " << msaa << "x " << rate;
+                if (msaa == 1) break; // the rate changes nothing at 1x
+            }
         }
     expectNoValidationMessages(*ctx);
 }
