@@ -115,6 +115,7 @@ class DeferredRenderer final : public Renderer {
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
         if (blended_) graph.exportResource("blended_bounds", bounds);
+        if (blended_) graph.exportResource("transparent_lists", t_.transparentLists); // tests: their order
         if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);

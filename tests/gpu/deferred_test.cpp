@@ -14,6 +14,7 @@
 #include "core/image/metrics.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
+#include "include/light_assign.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {
@@ -786,6 +787,52 @@ TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
                 if (msaa == 1) break; // the rate changes nothing at 1x
             }
         }
+    expectNoValidationMessages(*ctx);
+}
+
+// The transparent index lists (--light-cull all) hold each tile's lights in ascending order,
+// as the opaque lists do (compactList): the blended pass sums a list in its order, so an order
+// the GPU picks reaches the last bits of blended pixels. They were an atomic append, whose
+// order changed from run to run on a GPU (Determinism.* checks the images there). Lavapipe
+// runs a group's invocations in one fixed order, so its images repeated anyway, but not in
+// ascending order: this failed on it before (lights appended 8 lanes at a time, 64 apart).
+// Tiled and volumes (its lists-only pass), 1x and 4x; 4,500 lights take two chunks of the
+// shared bitmask (cullTransparentIndices), and a list must hold lights of both.
+TEST(Deferred, TransparentIndexListsHoldTheirLightsInAscendingOrder) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    struct Case {
+        uint32_t lights, msaa;
+        const char* lighting;
+    };
+    const uint32_t tiles = (96 / 16) * (64 / 16);
+    for (Case k : {Case{256, 1, "tiled"}, Case{256, 4, "tiled"}, Case{256, 4, "volumes"}, Case{4500, 1, "tiled"}}) {
+        Scene yard = courtyardWithLights(k.lights);
+        SceneGpu yardGpu(*ctx, yard);
+        RenderSettings s = withLighting(small(k.msaa, "compact"), k.lighting);
+        s.set("light-cull", "all");
+        const std::string what = std::to_string(k.lights) + " lights " + std::to_string(k.msaa) + "x " + k.lighting;
+        std::vector<uint8_t> bytes = exportedBuffer(*ctx, yardGpu, "deferred", s, "transparent_lists");
+        std::vector<uint32_t> words(bytes.size() / 4);
+        std::memcpy(words.data(), bytes.data(), words.size() * 4);
+        ASSERT_GE(words.size(), size_t(tiles) * TP_LA_HEADER_WORDS) << what;
+        size_t longest = 0, unordered = 0;
+        bool bothChunks = false;
+        for (uint32_t t = 0; t < tiles; ++t) {
+            const uint32_t* h = &words[t * TP_LA_HEADER_WORDS];
+            const uint32_t count = h[0], start = h[1];
+            EXPECT_EQ(h[2], 0u) << what << " tile " << t << ": dropped";
+            ASSERT_LE(size_t(start) + count, words.size()) << what << " tile " << t;
+            for (uint32_t i = 0; i < count; ++i) EXPECT_LT(words[start + i], k.lights) << what << " tile " << t;
+            for (uint32_t i = 1; i < count; ++i) unordered += words[start + i - 1] >= words[start + i];
+            longest = std::max(longest, size_t(count));
+            bothChunks = bothChunks || (count > 0 && words[start] < 4096 && words[start + count - 1] >= 4096);
+        }
+        EXPECT_EQ(unordered, 0u) << what << ": neighbours out of ascending order";
+        EXPECT_GT(longest, 1u) << what << ": no list to order";
+        EXPECT_TRUE(bothChunks || k.lights <= 4096) << what << ": no list with lights of both chunks";
+        std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(), longest, unordered);
+    }
     expectNoValidationMessages(*ctx);
 }
 
