@@ -831,7 +831,8 @@ TEST(Deferred, TransparentIndexListsHoldTheirLightsInAscendingOrder) {
         EXPECT_EQ(unordered, 0u) << what << ": neighbours out of ascending order";
         EXPECT_GT(longest, 1u) << what << ": no list to order";
         EXPECT_TRUE(bothChunks || k.lights <= 4096) << what << ": no list with lights of both chunks";
-        std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(), longest, unordered);
+        std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(), longest,
+                    unordered);
     }
     expectNoValidationMessages(*ctx);
 }
