@@ -102,10 +102,12 @@ class DeferredRenderer final : public Renderer {
                                                            VK_SAMPLE_COUNT_1_BIT,
                                                            "debug: edge mask, roughness, metallic"});
         gbuffer_.plan(graph, t_);
-        // Blended depth bounds: the fragments of the blended pass (per sample under MSAA, as
-        // it shades), before the transparent lists are culled against them.
+        // Blended depth bounds: the fragments of the blended pass at the rate it shades them
+        // (per pixel or per sample under MSAA), before the transparent lists are culled against them.
         ResourceHandle bounds;
-        if (blended_) bounds = blendBounds_.plan(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples, t_.msaa(), false});
+        if (blended_)
+            bounds = blendBounds_.plan(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples,
+                                               t_.msaa() && !t_.blendedPerPixel(), t_.blendedPerPixel()});
         if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_, bounds);
         if (useVolumes_) volumes_.plan(graph, t_);
         if (blended_) transparent_.plan(graph, t_, bounds, slices_, transparentMasks_);
@@ -113,6 +115,7 @@ class DeferredRenderer final : public Renderer {
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
         if (blended_) graph.exportResource("blended_bounds", bounds);
+        if (blended_) graph.exportResource("transparent_lists", t_.transparentLists); // tests: their order
         if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);

@@ -25,6 +25,10 @@ struct DeferredTargets {
     std::vector<uint32_t> listOffsets;   // transparent lists: tileCount + 1 run offsets
     bool sampleRateGBuffer = false;      // --msaa-shading sample: the material at every sample
     bool msaa() const { return layout.samples > 1; }
+    // The blended forward pass under MSAA at --msaa-shading pixel: once per pixel and
+    // primitive at the pixel centre, as Forward+'s and multipass's blended draws (per sample
+    // at --msaa-shading sample; at 1x the one sample is the centre either way).
+    bool blendedPerPixel() const { return msaa() && !sampleRateGBuffer; }
 };
 
 } // namespace tp

@@ -99,8 +99,11 @@ void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
                           "per pixel, that times a bound on the gradient of every light term reaching it",
                       positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits)};
     if (in.settings.text("gbuffer") == "compact") addCompactGBuffer(b, in);
-    // Non-edge pixels shaded once at the centre under --msaa-shading pixel (the Lauritzen
-    // path); nothing at 1x or at the sample rate, where every sample is lit at itself.
+    // Under --msaa-shading pixel, non-edge pixels lit once at the centre (the Lauritzen path)
+    // and blended surfaces shaded once at the centre (the hybrid forward pass, as Forward+'s
+    // and multipass's): the same centre-shading term, since a blend of non-negative layers keeps
+    // the relative bound of each. Nothing at 1x or at the sample rate, where every sample is
+    // shaded at itself.
     addPixelRateErrorTerm(b, in);
     addHdrStorage(b, in);
 }

@@ -45,14 +45,16 @@ void TransparentPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binne
     set_ = graph.createPassSet("transparent_forward", VK_NULL_HANDLE, externals);
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
-    d.fragmentShader = "deferred_transparent_frag";
+    // --msaa-shading pixel under MSAA: inputs at the pixel centre (scene_inputs.glsl), no
+    // sample shading; each covered sample that passes the depth test blends the pixel's value.
+    d.fragmentShader = t_->blendedPerPixel() ? "deferred_transparent_pixel_frag" : "deferred_transparent_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
     d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
     d.colorFormats = {t_->hdrFormat};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
-    d.sampleShading = t_->msaa(); // as the reference: blended surfaces are shaded per sample
+    d.sampleShading = t_->msaa() && !t_->blendedPerPixel(); // --msaa-shading sample: every sample, as the reference
     d.depthWrite = false;
     d.blend = BlendMode::Alpha;
     d.layout = layout_;

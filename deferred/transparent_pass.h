@@ -1,7 +1,8 @@
 #pragma once
-// The hybrid forward pass: blended draws, back to front, alpha-blended into hdr (per sample
-// and resolved under MSAA), lit from the per-tile transparent light lists. Planned only
-// when the scene has blended materials.
+// The hybrid forward pass: blended draws, back to front, alpha-blended into hdr (into every
+// covered sample of hdr_msaa, then resolved, under MSAA), lit from the per-tile transparent
+// light lists; shaded once per pixel at --msaa-shading pixel and per sample at sample
+// (DeferredTargets::blendedPerPixel). Planned only when the scene has blended materials.
 #include "core/gpu/frame_graph.h"
 #include "deferred/deferred_targets.h"
 #include "core/gpu/descriptors.h"

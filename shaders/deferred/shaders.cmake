@@ -5,7 +5,10 @@ triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_emissive_fr
   DEFINES TP_EMISSIVE=1 TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_emissive_frag DEFINES TP_EMISSIVE=1)
+# The blended forward pass: per sample (1x, --msaa-shading sample) or, under MSAA at
+# --msaa-shading pixel, once per pixel at its centre (as Forward+'s and multipass's blended draws).
 triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_frag)
+triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 # Tiled lighting variants where the set-1 resources differ: m = 0 single-sample G-buffer,
 # 1 per-sample G-buffer, 2 per-sample G-buffer and per-sample hdr (blended under MSAA);
 # e = emissive target; t = transparent light lists; d = debug outputs; each also with the

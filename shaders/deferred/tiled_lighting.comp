@@ -10,6 +10,7 @@
 // sample, every other pixel once. Blended scenes also get each tile's transparent light
 // list (every light, first batch only), culled against the tile's blended depth bounds
 // (include/light_assign.glsl: LaBlendedBounds; empty where no blended fragment is shaded),
+// in ascending candidate order too (a bitmask over the candidates, or cullTransparentIndices),
 // stored in the compact layout of
 // include/light_assign.h: per-tile runs sized on the CPU by a conservative bound, so the
 // buffer grows with the lights the lists can hold, never with tiles x lights.
@@ -74,6 +75,22 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_BINDING_BLEND_BOUNDS) readonl
 };
 LaBlendedBounds tileBlendedBounds(uint tileIndex) {
     return laBlendedBounds(blendBounds[tileIndex], blendBounds[gl_NumWorkGroups.x * gl_NumWorkGroups.y + tileIndex]);
+}
+// A tile's transparent list: the blended range it is culled against and its run in tLists.
+struct TransparentRun {
+    LaBlendedBounds blended;
+    TileFrustum frustum;
+    uint start, capacity; // the run's first word and its length (index slots or mask words)
+};
+TransparentRun transparentRun(uvec2 tile) {
+    const uint tileCount = gl_NumWorkGroups.x * gl_NumWorkGroups.y, tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
+    TransparentRun r;
+    r.blended = tileBlendedBounds(tileIndex);
+    r.frustum = laBlendedFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, r.blended);
+    const uint offset = tOffsets[tileIndex];
+    r.capacity = tOffsets[tileIndex + 1u] - offset;
+    r.start = laListStart(tileCount, offset);
+    return r;
 }
 #endif
 #ifdef TP_DEBUG
@@ -216,11 +233,7 @@ void cull(uvec2 tile, bool hasGeometry) {
     uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
     uint candidates = candidateCount(tileIndex);
 #ifdef TP_TRANSPARENT
-    const LaBlendedBounds blended = tileBlendedBounds(tileIndex);
-    TileFrustum ft = laBlendedFrustum(tile, kTileSize, size, frame.invProj, blended);
-    uint offset = tOffsets[tileIndex];
-    uint capacity = tOffsets[tileIndex + 1u] - offset;
-    uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
+    const TransparentRun t = transparentRun(tile);
 #endif
 #ifndef TP_LISTS_ONLY
     // A survivor sets its bit in sBits (bit i: this batch's candidate i); compactList turns
@@ -232,46 +245,22 @@ void cull(uvec2 tile, bool hasGeometry) {
     }
 #endif
 #ifdef TP_TRANSPARENT
-    // Every candidate, once (first batch): a loop of candidates / 64 iterations per
-    // invocation; none where no blended fragment is shaded.
-    for (uint i = gl_LocalInvocationIndex; firstBatch() && blended.any && i < candidates; i += groupSize) {
-        uint light = candidateLight(tileIndex, i);
-        if (lightInTile(lights[light], ft, frame.view)) {
-            uint slot = atomicAdd(sTransparentCount, 1u);
-            if (kBinned && (i >> 5u) < capacity) atomicOr(tLists[start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
-            else if (kBinned) atomicAdd(sMaskDropped, 1u); // counted, never silent
-            else if (slot < capacity) tLists[start + slot] = light; // beyond: counted as dropped
+    // Binned: every candidate, once (first batch), sets its bit in the tile's mask (atomicOr:
+    // the same mask whatever the order); a loop of candidates / 64 iterations per invocation,
+    // none where no blended fragment is shaded. Index lists: cullTransparentIndices.
+    for (uint i = gl_LocalInvocationIndex; kBinned && firstBatch() && t.blended.any && i < candidates; i += groupSize) {
+        if (lightInTile(lights[candidateLight(tileIndex, i)], t.frustum, frame.view)) {
+            atomicAdd(sTransparentCount, 1u);
+            if ((i >> 5u) < t.capacity) atomicOr(tLists[t.start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
+            else atomicAdd(sMaskDropped, 1u); // counted, never silent
         }
     }
 #endif
 }
 
-#ifndef TP_LISTS_ONLY
-// The batch's survivors into sLights in ascending candidate order (after the culling's
-// barrier; a barrier must follow): each invocation takes whole words of sBits and places
-// their lights after the survivors of every earlier word. An atomic append would order them
-// as the GPU happens to schedule the invocations, and the shading sums in list order: the
-// image would change in its last bits from run to run (it did on an H100).
-void compactList(uint tileIndex) {
-    const uint first = draw.TP_DEF_LIGHT_FIRST, end = min(draw.TP_DEF_LIGHT_END, candidateCount(tileIndex));
-    const uint words = end > first ? (end - first + 31u) / 32u : 0u;
-    for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
-        uint pos = 0u;
-        for (uint v = 0u; v < w; ++v) pos += bitCount(sBits[v]);
-        uint bits = sBits[w];
-        for (uint k = 0u; k < 32u && bits != 0u; ++k, ++pos) {
-            uint b = uint(findLSB(bits));
-            bits &= bits - 1u;
-            sLights[pos] = candidateLight(tileIndex, first + w * 32u + b);
-        }
-    }
-    if (gl_LocalInvocationIndex == 0u) {
-        uint total = 0u;
-        for (uint v = 0u; v < words; ++v) total += bitCount(sBits[v]);
-        sCount = total;
-    }
-}
-#endif
+// The culling's survivors into ordered lists: compactList (the opaque list in sLights) and
+// cullTransparentIndices (the transparent index lists).
+#include "deferred/ordered_lists.glsl"
 
 #if defined(TP_TRANSPARENT) && !defined(TP_LISTS_ONLY)
 // Clustered: the slice rows of tile `tileIndex`'s transparent list, for the blended pass
@@ -365,6 +354,14 @@ void main() {
 #ifndef TP_LISTS_ONLY
     barrier(); // every survivor's bit
     compactList(tile.y * gl_NumWorkGroups.x + tile.x);
+#endif
+#ifdef TP_TRANSPARENT
+    if (!kBinned && firstBatch()) { // uniform over the group
+        barrier(); // compactList has read sBits
+        cullTransparentIndices(tile);
+    }
+#endif
+#ifndef TP_LISTS_ONLY
 #ifdef TP_TRANSPARENT
     if (kSlices > 0u) memoryBarrierBuffer(); // the transparent list, for writeTransparentSlices
 #endif

@@ -8,6 +8,9 @@
 // the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase; under
 // --light-cull binned the rows and the list are bitmasks over the tile's candidate run:
 // defMaskRowsBase, candidates.glsl).
+// Rate: per sample (`sample` inputs, sample shading; 1x and --msaa-shading sample) or, built
+// with TP_INPUTS_AT_PIXEL (--msaa-shading pixel under MSAA), once per pixel and primitive at
+// the pixel centre, the value blended into every covered sample (scene_inputs.glsl).
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"

@@ -14,6 +14,7 @@
 #include "core/image/metrics.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
+#include "include/light_assign.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {
@@ -292,6 +293,55 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
                                            what + "other pixels against the centre-shaded reference", &isOther);
         checkReconstructionError(*ctx, maxRelativeError(centreDepth.hdr, centre.hdr, 1e-4, &isOther), 2.5e-4,
                                  what + "other pixels, centre-shaded");
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// 4x, --msaa-shading pixel, the courtyard with its blended cloth: the hybrid forward pass
+// shades a blended fragment once per pixel at its centre, as Forward+'s and multipass's
+// blended draws do, and blends that value into every sample the primitive covers. On a pixel
+// the edge mask leaves out (one opaque surface) deferred then computes what the depth
+// reference with --reference-msaa center computes: the opaque surface lit once at the centre
+// (PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre), the cloth shaded at the
+// centre with its interpolated position and the same per-sample coverage, blended per
+// sample and resolved. (a) Within the depth-reference bound with N = 4 (lights + 1): a blend
+// src * a + dst * (1 - a) of non-negative operands keeps their relative bound, so the bound
+// of the opaque part carries over, as it does on the courtyard at 1x and at the sample rate.
+// Before, the blended pass shaded every sample at its own position over an opaque surface lit
+// once at the centre: 8.9e4 times the bound at 0 lights (0.105 relative), 2.2e3 times at 256
+// (0.27 relative) on lavapipe; now 0 (bit-identical) and 0.10 of it. (b) The reconstruction
+// error of the centre-shaded reference on those pixels (edge pixels set to 0 in both), as a
+// mean relative error: the courtyard's 1e-4.
+// Masked materials made opaque: deferred's G-buffer pass decides a masked pixel's coverage at
+// its centre (a discard without sample shading), a question of coverage, not of this pass.
+TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (uint32_t lights : {0u, 256u}) {
+        Scene scene = courtyardWithLights(lights);
+        for (Material& m : scene.materials)
+            if (m.alphaMode == AlphaMode::Mask) m.alphaMode = AlphaMode::Opaque;
+        SceneGpu gpuScene(*ctx, scene);
+        RenderSettings s = small(4, "wide");
+        s.set("msaa-shading", "pixel");
+        s.debug = true;
+        RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", s);
+        s.set("reference-msaa", "center");
+        RunResult centreDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "depth"));
+        RunResult centre = runOrFail(*ctx, gpuScene, "reference", withPosition(s, "interpolated"));
+        const ImageRGBA* edges = debugImageOf(deferred, "edge_mask");
+        ASSERT_NE(edges, nullptr);
+        std::vector<uint8_t> isOther(deferred.hdr.pixelCount());
+        ImageRGBA a = centreDepth.hdr, b = centre.hdr; // the other pixels only, for the mean
+        for (size_t i = 0; i < isOther.size(); ++i) {
+            isOther[i] = edges->rgba[i * 4] <= 0.5f;
+            for (int c = 0; c < 4 && !isOther[i]; ++c) a.rgba[i * 4 + c] = b.rgba[i * 4 + c] = 0.0f;
+        }
+        const std::string what = "courtyard " + std::to_string(lights) + " lights 4x pixel-rate, other pixels";
+        EXPECT_EQ(computeError(deferred.hdr, centre.hdr).nanInfCount, 0u) << what;
+        expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
+                                           what + " against the centre-shaded reference", &isOther);
+        checkReconstructionError(*ctx, computeError(a, b).meanRelative, 1e-4, what + ", centre-shaded (mean)");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -700,7 +750,7 @@ std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char
 // (core/lightassign/blended_bounds.h): a tile with no blended fragment has an empty list
 // (tile_stats' transparent column: what its test found), tiled and clustered, 1x and 4x.
 // Forward+ records the same bounds from its prepass depth (the same vertex shader, depth
-// test and fragments), bit for bit.
+// test and fragments, at the same rate: per pixel or per sample under MSAA), bit for bit.
 TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -728,10 +778,62 @@ TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
             }
             EXPECT_GT(empty, 0u) << assign << " " << msaa << "x";
             EXPECT_GT(blended, 0u) << assign << " " << msaa << "x";
-            s.set("msaa-shading", "sample"); // Forward+ shades blended samples as deferred does
-            EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), bytes)
-                << assign << " " << msaa << "x";
+            // Both shade blended fragments at the rate --msaa-shading gives (pixel: at the centre).
+            for (const char* rate : {"pixel", "sample"}) {
+                s.set("msaa-shading", rate);
+                const std::vector<uint8_t> ours = exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds");
+                EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), ours)
+                    << assign << " " << msaa << "x " << rate;
+                if (msaa == 1) break; // the rate changes nothing at 1x
+            }
         }
+    expectNoValidationMessages(*ctx);
+}
+
+// The transparent index lists (--light-cull all) hold each tile's lights in ascending order,
+// as the opaque lists do (compactList): the blended pass sums a list in its order, so an order
+// the GPU picks reaches the last bits of blended pixels. They were an atomic append, whose
+// order changed from run to run on a GPU (Determinism.* checks the images there). Lavapipe
+// runs a group's invocations in one fixed order, so its images repeated anyway, but not in
+// ascending order: this failed on it before (lights appended 8 lanes at a time, 64 apart).
+// Tiled and volumes (its lists-only pass), 1x and 4x; 4,500 lights take two chunks of the
+// shared bitmask (cullTransparentIndices), and a list must hold lights of both.
+TEST(Deferred, TransparentIndexListsHoldTheirLightsInAscendingOrder) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    struct Case {
+        uint32_t lights, msaa;
+        const char* lighting;
+    };
+    const uint32_t tiles = (96 / 16) * (64 / 16);
+    for (Case k : {Case{256, 1, "tiled"}, Case{256, 4, "tiled"}, Case{256, 4, "volumes"}, Case{4500, 1, "tiled"}}) {
+        Scene yard = courtyardWithLights(k.lights);
+        SceneGpu yardGpu(*ctx, yard);
+        RenderSettings s = withLighting(small(k.msaa, "compact"), k.lighting);
+        s.set("light-cull", "all");
+        const std::string what = std::to_string(k.lights) + " lights " + std::to_string(k.msaa) + "x " + k.lighting;
+        std::vector<uint8_t> bytes = exportedBuffer(*ctx, yardGpu, "deferred", s, "transparent_lists");
+        std::vector<uint32_t> words(bytes.size() / 4);
+        std::memcpy(words.data(), bytes.data(), words.size() * 4);
+        ASSERT_GE(words.size(), size_t(tiles) * TP_LA_HEADER_WORDS) << what;
+        size_t longest = 0, unordered = 0;
+        bool bothChunks = false;
+        for (uint32_t t = 0; t < tiles; ++t) {
+            const uint32_t* h = &words[t * TP_LA_HEADER_WORDS];
+            const uint32_t count = h[0], start = h[1];
+            EXPECT_EQ(h[2], 0u) << what << " tile " << t << ": dropped";
+            ASSERT_LE(size_t(start) + count, words.size()) << what << " tile " << t;
+            for (uint32_t i = 0; i < count; ++i) EXPECT_LT(words[start + i], k.lights) << what << " tile " << t;
+            for (uint32_t i = 1; i < count; ++i) unordered += words[start + i - 1] >= words[start + i];
+            longest = std::max(longest, size_t(count));
+            bothChunks = bothChunks || (count > 0 && words[start] < 4096 && words[start + count - 1] >= 4096);
+        }
+        EXPECT_EQ(unordered, 0u) << what << ": neighbours out of ascending order";
+        EXPECT_GT(longest, 1u) << what << ": no list to order";
+        EXPECT_TRUE(bothChunks || k.lights <= 4096) << what << ": no list with lights of both chunks";
+        std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(), longest,
+                    unordered);
+    }
     expectNoValidationMessages(*ctx);
 }
 
