@@ -3,7 +3,10 @@
 // pixel (every sample when MSAA is on: per-sample shading), every light is evaluated, with
 // no culling and no intermediate storage; the light sum accumulates in fp64 where the
 // device has shaderFloat64 (selectable), else fp32. Opaque and masked geometry first, then
-// blended geometry back to front, blended in a 32-bit float target.
+// blended geometry back to front, blended in a 32-bit float target. Under MSAA,
+// --reference-msaa center shades every sample with the inputs at the pixel centre but keeps
+// per-sample coverage: a masked surface is alpha-tested at each sample, as the pipelines'
+// per-sample masked prepass does (docs/shading.md).
 #include <memory>
 
 #include "core/render/renderer.h"

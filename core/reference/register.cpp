@@ -12,8 +12,9 @@ KnobSchema referenceKnobs() {
                 .fixed(),
             Knob::choice("reference-msaa", {"sample", "center"},
                          "Reference under MSAA: sample (every sample shaded at its own location: supersampling, the "
-                         "ground truth) or center (every covered sample shaded with the inputs at the pixel centre: "
-                         "what shading once per pixel gives; the error against it leaves out the shading rate)")
+                         "ground truth) or center (every covered sample shaded with the inputs at the pixel centre, a "
+                         "masked surface's alpha still tested per sample: what shading once per pixel with per-sample "
+                         "coverage gives; the error against it leaves out the shading rate)")
                 .onlyUnderMsaa()
                 .fixed(),
             Knob::choice("reference-position", {"interpolated", "depth"},

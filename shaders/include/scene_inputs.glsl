@@ -14,6 +14,8 @@
 //   TP_INPUTS_AT_CENTER per-sample invocations that all read the pixel centre through
 //                      interpolateAtOffset(x, 0): the reference's `center` MSAA shading, the
 //                      once-per-pixel shading a pipeline approximates on covered pixels.
+//                      evalSampleMaterial() reads the sample's own location besides, through
+//                      interpolateAtSample(x, gl_SampleID), for the alpha test.
 #if defined(TP_INPUTS_AT_PIXEL) || defined(TP_INPUTS_AT_CENTER)
 #define TP_IN in
 #else
@@ -42,4 +44,21 @@ MaterialSample evalFragmentMaterial() {
     return evalMaterial(materials[draw.materialIndex], TP_INPUT(inPosition) * k, TP_INPUT(inNormal) * k,
                         TP_INPUT(inUv) * k, TP_INPUT(inTangent) * k, TP_INPUT(inColor) * k, gl_FrontFacing);
 }
+
+#ifdef TP_INPUTS_AT_CENTER
+// The material at this sample's own location, as the masked depth prepass (prepass_mask.frag,
+// `sample` inputs) evaluates it: a pipeline at --msaa-shading pixel shades at the centre but
+// takes each sample's coverage from that prepass's per-sample alpha test, so the centre
+// reference alpha-tests with this and shades with evalFragmentMaterial(). Not the `sample`
+// qualifier on the inputs: lavapipe then reads a plain load of an input that interpolateAtOffset
+// also reads at the pixel centre (measured: the centre reference did not change by a bit).
+#define TP_AT_SAMPLE(x) interpolateAtSample(x, gl_SampleID)
+MaterialSample evalSampleMaterial() {
+    float k = 1.0 / TP_AT_SAMPLE(inOne);
+    return evalMaterial(materials[draw.materialIndex], TP_AT_SAMPLE(inPosition) * k, TP_AT_SAMPLE(inNormal) * k,
+                        TP_AT_SAMPLE(inUv) * k, TP_AT_SAMPLE(inTangent) * k, TP_AT_SAMPLE(inColor) * k,
+                        gl_FrontFacing);
+}
+#undef TP_AT_SAMPLE
+#endif
 #endif // TP_INPUTS_POSITION_ONLY

@@ -4,7 +4,9 @@
 // state when MSAA is on), no culling, no intermediate storage. TP_ACCUM_FP64 accumulates
 // the light sum in double precision (shaderFloat64), otherwise in fp32. Every sample reads
 // its inputs at its own location (supersampling: the ground truth at any MSAA level);
-// TP_INPUTS_AT_CENTER (the `center` MSAA shading) reads them at the pixel centre instead.
+// TP_INPUTS_AT_CENTER (the `center` MSAA shading) reads them at the pixel centre instead,
+// but alpha-tests a masked surface at the sample, as the pipelines' per-sample masked prepass
+// does: coverage per sample, shading at the centre.
 // TP_POSITION_FROM_DEPTH (--reference-position depth, opaque and masked draws) lights at the
 // position reconstructed from the fragment's own depth instead of the interpolated one.
 #ifdef TP_ACCUM_FP64
@@ -54,7 +56,14 @@ void main() {
     ms.surface.position = positionFromDepth();
     ms.surface.toViewer = directionToViewer(ms.surface.position, ms.surface.normal);
 #endif
+#ifdef TP_INPUTS_AT_CENTER
+    // Which samples a masked surface covers is the alpha at each sample (the pipelines'
+    // masked prepass), whatever the alpha at the centre the shading reads. kAlphaMode is a
+    // specialization constant: the texture read stays in uniform control flow.
+    if (kAlphaMode == TP_ALPHA_MASK && evalSampleMaterial().alpha < m.alphaCutoff) discard;
+#else
     if (kAlphaMode == TP_ALPHA_MASK && ms.alpha < m.alphaCutoff) discard;
+#endif
 
     ACCUM sum = ACCUM(ambientAndEmissive(ms));
     // Two lights an iteration, in order: lavapipe ends an invocation after 65,535 loop

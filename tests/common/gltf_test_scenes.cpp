@@ -2,6 +2,7 @@
 // written by nlohmann::json, the compressed streams by libdraco's and meshoptimizer's encoders.
 #include "gltf_test_scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -289,6 +290,35 @@ fs::path writeTextureTransformScene(const fs::path& dir) {
     w.gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
         {"offset", {0.5, 0}}, {"rotation", M_PI / 2}, {"scale", {2, 1}}};
     w.gltf["extensionsUsed"] = {"KHR_texture_transform"};
+    return w.write(dir);
+}
+
+fs::path writeMaskedScene(const fs::path& dir) {
+    Writer w;
+    addPlain(w, makeTestMesh());
+    json& material = w.gltf["materials"][0];
+    material["alphaMode"] = "MASK";
+    material["alphaCutoff"] = 0.5;
+    material["doubleSided"] = true;
+    w.gltf["images"][0]["uri"] = "holes.png";
+    // 32 x 32: a hole of radius 5 texels in each 16 x 16 cell (alpha 0 inside, 1 outside, a
+    // 2-texel ramp between, so the cutoff's contour is smooth under bilinear filtering and
+    // mipmapping), on a colour that varies with the texel (the shading differs per pixel).
+    const uint32_t n = 32;
+    ImageRGBA holes(n, n);
+    for (uint32_t y = 0; y < n; ++y)
+        for (uint32_t x = 0; x < n; ++x) {
+            const float dx = float(x % 16) + 0.5f - 8.0f, dy = float(y % 16) + 0.5f - 8.0f;
+            const float r = std::sqrt(dx * dx + dy * dy);
+            float* p = &holes.rgba[(y * n + x) * 4];
+            p[0] = 0.9f;
+            p[1] = 0.3f + 0.6f * float(x) / float(n);
+            p[2] = 0.2f + 0.6f * float(y) / float(n);
+            p[3] = std::clamp((r - 4.0f) / 2.0f, 0.0f, 1.0f);
+        }
+    fs::create_directories(dir);
+    if (Status s = writePng((dir / "holes.png").string(), holes, /*keepAlpha=*/true); !s)
+        throw std::runtime_error(s.error());
     return w.write(dir);
 }
 

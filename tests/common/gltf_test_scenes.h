@@ -33,5 +33,8 @@ std::filesystem::path writeDracoScene(const std::filesystem::path& dir);
 std::filesystem::path writeMeshoptScene(const std::filesystem::path& dir);
 // offset (0.5, 0), rotation pi/2, scale (2, 1) on the base colour texture.
 std::filesystem::path writeTextureTransformScene(const std::filesystem::path& dir);
+// The plain mesh with an alpha-masked material (cutoff 0.5, double-sided) whose base colour
+// texture cuts round holes: alpha-test boundaries everywhere, as on leaf cards and grilles.
+std::filesystem::path writeMaskedScene(const std::filesystem::path& dir);
 
 } // namespace tp::test
