@@ -42,7 +42,8 @@ TEST(LightModelDegenerate, ZeroConeLightsNothingEvenOnItsAxis) {
         Sequence seq{7};
         int aboveOne = 0, lit = 0;
         for (int i = 0; i < 100000; ++i) {
-            glm::vec3 dir = glm::normalize(glm::vec3(seq.next(), seq.next(), seq.next()) * 2.0f - 1.0f);
+            glm::vec3 dir =
+                glm::normalize(glm::vec3(seq.next(), seq.next(), seq.next()) * 2.0f - 1.0f);
             Light spot;
             spot.type = LightType::Spot;
             spot.direction = dir;
@@ -58,7 +59,8 @@ TEST(LightModelDegenerate, ZeroConeLightsNothingEvenOnItsAxis) {
             lit += c != glm::vec3(0.0f);
         }
         EXPECT_GT(aboveOne, 1000) << "the sample no longer meets cosines above 1: it tests nothing";
-        EXPECT_EQ(lit, 0) << "inner " << inner << ": a zero cone lit " << lit << " points on its axis";
+        EXPECT_EQ(lit, 0) << "inner " << inner << ": a zero cone lit " << lit
+                          << " points on its axis";
     }
 }
 
@@ -77,7 +79,8 @@ TEST(LightModelDegenerate, ZeroAndSubnormalRangesLightNothing) {
                 l.position = glm::vec3(seq.next(), seq.next(), seq.next()) * 4.0f - 2.0f;
                 // From 1e-30 (near the light, far above subnormal distances) to 2 m away.
                 const float d = std::pow(10.0f, -30.0f + 30.3f * seq.next());
-                const glm::vec3 off = glm::normalize(glm::vec3(seq.next(), seq.next(), seq.next()) - 0.5f) * d;
+                const glm::vec3 off =
+                    glm::normalize(glm::vec3(seq.next(), seq.next(), seq.next()) - 0.5f) * d;
                 const gpu::LightGpu g = toGpu(l);
                 const glm::vec3 p = l.position + off;
                 if (p == l.position) continue; // the offset rounded away: distance 0
