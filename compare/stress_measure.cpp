@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/image/tonemap.h"
 
@@ -57,6 +58,51 @@ uint64_t unexplainedInf(const StressOutcome& p, const ImageRGBA& ref) {
     return n;
 }
 
+// Worst (|p - r| less the pixel's allowance) / (relative * |r| + absolute) over the pixels
+// and RGB channels of `checked` (fp16-overflow channels already set to the reference's
+// values): the bound itself, checked on HDR values. Pixels with a +Inf allowance are left
+// out (counted by errorBeyondAllowance); a NaN difference gives +Inf.
+double hdrBeyondBound(const ErrorBound& b, const ImageRGBA& checked, const ImageRGBA& ref) {
+    const bool perPixel = b.perPixel.radiance.r.size() == ref.pixelCount();
+    double worst = 0;
+    for (size_t i = 0; i < ref.pixelCount(); ++i) {
+        const double allowance = perPixel ? double(b.perPixel.radiance.r[i]) : 0.0;
+        if (std::isinf(allowance)) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double r = ref.rgba[i * 4 + c], d = std::abs(double(checked.rgba[i * 4 + c]) - r);
+            if (std::isnan(d)) return INFINITY;
+            worst = std::max(worst, std::max(d - allowance, 0.0) / (b.relative() * std::abs(r) + b.absolute()));
+        }
+    }
+    return worst;
+}
+
+// Blended layers (StressCase::blendedLayers = L over one pixel): the pipelines' models bound
+// one pixel's shading; compositing adds the blends' roundings, which the models leave to the
+// caller (deferred/error_model.cpp says so). A pixel is blended at most B = L + D times, D =
+// the run's `blended_light_draws` (a renderer that blends each light onto a layer in a draw
+// of its own, multipass forward; 0 where a layer's lights are shaded in its one draw), each
+// draw blending a pixel once (every layer is one quad). Each blend rounds at most 4 times in
+// fp32 (src * a, 1 - a, dst * (1 - a), the sum), each relative to a value whose weight in
+// the final pixel is at most the pixel (weights are products of alphas and 1 - alpha, all in
+// [0, 1], and every term is non-negative): 4 * 2^-24 per blend, B in the pipeline and L in
+// the reference. A pipeline whose hdr target is RGBA16F rounds each blend's result once more
+// at the store (fp32 blend arithmetic assumed; Vulkan only requires the destination's
+// precision): B * (2^-10 relative, 6e-8 absolute), as forwardplus_test and
+// deferred_hdr_test count blended layers.
+void addBlendedTerm(ErrorBound& b, const stress::StressCase& c, const StressOutcome& p) {
+    if (c.blendedLayers == 0) return;
+    const double layers = c.blendedLayers, blends = layers + counter(*p.run, "blended_light_draws", 0);
+    const std::string count = std::to_string(int64_t(blends)) + " blends per pixel at most (" +
+                              std::to_string(c.blendedLayers) + " layers + blended_light_draws)";
+    b.terms.push_back({"blended layers: fp32 blend arithmetic", 4.0 * (blends + layers) * kUlp32, 0,
+                       count + " and " + std::to_string(c.blendedLayers) + " in the reference, each <= 4 fp32 "
+                       "roundings of values weighing <= the pixel: 4 * (B + L) * 2^-24"});
+    if (p.fp16Storage)
+        b.terms.push_back({"blended layers: fp16 stores", blends * kHalfUlp16, blends * 6e-8,
+                           count + ", each result stored in the RGBA16F target once: B * 2^-10, B * 6e-8"});
+}
+
 uint64_t depthMismatch(const ImageR32& a, const ImageR32& b) {
     if (a.r.size() != b.r.size()) return a.r.size() + b.r.size();
     uint64_t n = 0;
@@ -83,6 +129,14 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
         check("pixels the per-pixel allowance leaves unchecked", double(p.unboundedPixels), 0,
               "a light within the position error of a shaded point bounds nothing there; no case may have one "
               "unnoticed");
+    if (p.bound.bounded && r.c->hdrChecked)
+        check("HDR max |p - r| / (relative |r| + absolute)", p.hdrBeyondBound, 1,
+              "the bound itself on linear values, per pixel and channel (less the per-pixel allowance where the "
+              "model has one): the case's values span more than the tonemap shows at one exposure");
+    if (p.inertChecked)
+        check("pixels the inert lights change", double(p.inertChanged), 0,
+              "the last " + std::to_string(r.c->inertLights) + " lights must contribute exactly nothing: the image "
+              "equals bit for bit this renderer's image of the scene with their intensity 0");
     if (r.c->depthExact)
         check("depth pixels differing from the reference", double(p.depthMismatch), 0,
               "same triangles, same vertex shader (precise gl_Position), D32 reverse-Z");
@@ -97,6 +151,14 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
 }
 
 } // namespace
+
+uint64_t bitDifferentPixels(const ImageRGBA& a, const ImageRGBA& b) {
+    if (a.rgba.size() != b.rgba.size()) return std::max(a.pixelCount(), b.pixelCount());
+    uint64_t n = 0;
+    for (size_t i = 0; i < a.pixelCount(); ++i)
+        n += std::memcmp(&a.rgba[i * 4], &b.rgba[i * 4], 3 * sizeof(float)) != 0;
+    return n;
+}
 
 void countNonFinite(const ImageRGBA& image, uint64_t& nanPixels, uint64_t& infPixels) {
     nanPixels = infPixels = 0;
@@ -130,10 +192,12 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     RenderSettings settings = r.settings; // as the run saw it: its knobs' defaults filled in (it ran, so they are valid)
     resolveKnobs(entry.knobs, settings);
     p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings, &reference.run->depth, r.subPixelBits});
+    if (p.bound.bounded) addBlendedTerm(p.bound, *r.c, p);
     const ImageRGBA checked = maskOverflow(p, ref);
     p.rawMaxTonemapped = computeError(tonemapToDisplay(checked, r.exposureEv), refDisplay).maxAbs;
     const AllowanceCheck beyond = errorBeyondAllowance(p.bound, checked, ref, r.exposureEv);
     p.checkedMaxTonemapped = beyond.worstBeyond;
+    if (r.c->hdrChecked) p.hdrBeyondBound = hdrBeyondBound(p.bound, checked, ref);
     p.allowancePixels += beyond.widenedPixels;
     p.unboundedPixels += beyond.unboundedPixels;
     addChecks(p, r, ref, scene, settings);

@@ -42,6 +42,7 @@ json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool r
     }
     j["nan_pixels"] = p.nanPixels;
     j["inf_pixels"] = p.infPixels;
+    if (p.inertChecked) j["inert_changed_pixels"] = p.inertChanged;
     if (!p.run) return j;
     j["run"] = runJson(*p.run, ctx);
     if (reference) return j;
@@ -49,6 +50,7 @@ json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool r
     j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)}, {"tonemapped", metricsJson(p.display)}};
     j["max_tonemapped"] = p.rawMaxTonemapped;
     j["checked_max_tonemapped"] = p.checkedMaxTonemapped;
+    if (p.bound.bounded && p.hdrBeyondBound >= 0) j["hdr_beyond_bound"] = p.hdrBeyondBound;
     if (!p.bound.perPixel.name.empty())
         j["per_pixel_allowance"] = {{"name", p.bound.perPixel.name},
                                     {"why", p.bound.perPixel.why},

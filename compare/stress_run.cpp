@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "compare/report_json.h"
@@ -57,7 +58,7 @@ void writeDifferences(const std::string& dir, const std::string& rel, StressCase
     if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f; // a legend needs a non-zero end
     for (size_t i = 0; i < r.pipelines.size(); ++i) {
         StressOutcome& p = r.pipelines[i];
-        if (!p.run) continue;
+        if (!p.run || diffs[i].pixelCount() == 0) continue; // not measured (e.g. the reference unusable)
         check(writeExr(dir + "/" + p.name + "_diff.exr", diffs[i], ExrPixelType::Float));
         check(writePng(dir + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale, 12)));
         p.files.push_back(rel + "/" + p.name + "_diff.exr");
@@ -65,10 +66,36 @@ void writeDifferences(const std::string& dir, const std::string& rel, StressCase
     }
 }
 
+// A case's inert lights (StressCase::inertLights, the last of the list) must contribute
+// exactly nothing: the twin is the same scene with their intensity 0, so the lights, their
+// number and order, the culling, the batches and the shader variants are the same and only
+// what the inert lights add can differ.
+struct InertTwin {
+    Scene scene;
+    std::unique_ptr<SceneGpu> gpu;
+    InertTwin(GpuContext& ctx, const Scene& s, uint32_t inert) : scene(s) {
+        for (size_t i = scene.lights.size() - inert; i < scene.lights.size(); ++i) scene.lights[i].intensity = 0.0f;
+        gpu = std::make_unique<SceneGpu>(ctx, scene);
+    }
+};
+
+void checkInert(GpuContext& ctx, InertTwin* twin, StressOutcome& p, const RenderSettings& settings) {
+    if (!twin || !p.run) return;
+    StressOutcome t = renderOne(ctx, *twin->gpu, p.name, twin->scene, settings);
+    p.inertChecked = true;
+    p.inertChanged = t.run ? bitDifferentPixels(p.run->hdr, t.run->hdr) : p.run->hdr.pixelCount();
+}
+
 // A pipeline that could not run fails its case with the reason as its only check.
 void failUnrun(StressOutcome& p, const std::string& why) {
     p.pass = false;
     p.checks.push_back({"ran", false, 0, 1, why.empty() ? p.error : why});
+}
+
+std::string referenceFault(const StressOutcome& ref) {
+    if (!ref.run) return "failed: " + ref.error;
+    if (ref.nanPixels + ref.infPixels) return "has NaN/Inf pixels";
+    return "changes " + std::to_string(ref.inertChanged) + " pixels with lights that must contribute nothing";
 }
 
 StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std::vector<std::string>& names,
@@ -89,21 +116,29 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std
     std::filesystem::remove_all(dir);
     ensureDirectory(dir);
     SceneGpu gpuScene(ctx, scene);
+    std::unique_ptr<InertTwin> twin;
+    if (c.inertLights) twin = std::make_unique<InertTwin>(ctx, scene, std::min(c.inertLights, uint32_t(r.lights)));
     r.reference = renderOne(ctx, gpuScene, kReferenceRenderer, scene, r.settings);
     if (r.reference.run) {
         r.exposureEv = autoExposureEv(r.reference.run->hdr);
         countNonFinite(r.reference.run->hdr, r.reference.nanPixels, r.reference.infPixels);
         writeImages(dir, c.name, r.reference, r.exposureEv);
+        checkInert(ctx, twin.get(), r.reference, r.settings);
     }
-    const bool refUsable = r.reference.run && r.reference.nanPixels + r.reference.infPixels == 0;
+    const bool refUsable = r.reference.run && r.reference.nanPixels + r.reference.infPixels == 0 &&
+                           r.reference.inertChanged == 0;
     std::vector<ImageRGBA> diffs;
     for (const std::string& name : names) {
         std::fprintf(stderr, "triptych: stress %s: %s ...\n", c.name.c_str(), name.c_str());
         StressOutcome p = renderOne(ctx, gpuScene, name, scene, r.settings);
         diffs.emplace_back();
-        if (!p.run) failUnrun(p, "");
-        else if (!refUsable) failUnrun(p, "the reference " + (r.reference.run ? std::string("has NaN/Inf pixels") : "failed: " + r.reference.error));
-        else {
+        if (!p.run) {
+            failUnrun(p, "");
+        } else if (!refUsable) {
+            failUnrun(p, "the reference " + referenceFault(r.reference));
+            if (r.reference.run) writeImages(dir, c.name, p, r.exposureEv); // to see, not measured
+        } else {
+            checkInert(ctx, twin.get(), p, r.settings);
             writeImages(dir, c.name, p, r.exposureEv);
             measureOutcome(p, r.reference, r, scene);
             diffs.back() = signedDifference(p.run->hdr, r.reference.run->hdr);

@@ -45,6 +45,13 @@ struct StressOutcome {
     uint64_t overflowChannels = 0, saturated = 0, overflowInf = 0;
     bool fp16Storage = false;     // its "hdr" target is RGBA16F (from the memory ledger)
     uint64_t depthMismatch = 0;   // pixels whose depth differs from the reference's
+    // Cases with inert lights (StressCase::inertLights): pixels whose colour bits differ from
+    // the same renderer's image of the twin scene, where those lights have intensity 0.
+    bool inertChecked = false;
+    uint64_t inertChanged = 0;
+    // Cases checked on HDR values (StressCase::hdrChecked): max over pixels and channels of
+    // (|p - r| less the pixel's allowance) / (relative * |r| + absolute); pass at <= 1.
+    double hdrBeyondBound = -1; // -1: not checked
     double lightsDropped = 0;
     double rawMaxTonemapped = 0;     // |T(p) - T(r)| max outside the fp16-overflow channels
     double checkedMaxTonemapped = 0; // the same less each pixel's allowance (ErrorBound::perPixel)

@@ -305,6 +305,38 @@ const std::vector<StressCase>& stressCases() {
         add({"msaa-edges", "4x MSAA, white boxes and thin posts against a near-black wall and the sky",
              "edges resolved per sample like the reference: within the bound", 96, 64, 4, msaaEdges, false, false,
              true});
+        add({.name = "dynamic-range",
+             .stresses = "four lights from 1e3 cd down to 1e-6 cd (10^9) on one screen, no ambient: radiance from "
+                         "~600 down to ~6e-7 (fp16 subnormals)",
+             .expectation = "within the bound per HDR pixel, the dim end too (the tonemapped check cannot see it)",
+             .build = dynamicRange,
+             .hdrChecked = true});
+        add({.name = "blended-64",
+             .stresses = "64 blended panels (alpha 0.1-0.4) over 240 pixels, lit by two point lights and the sun",
+             .expectation = "composited back to front like the reference: within the bound, with the roundings of "
+                            "every blend (each layer, each blended light draw)",
+             .build = blendedLayers,
+             .blendedLayers = 64});
+        add({.name = "lights-range-0",
+             .stresses = "18 lights of range 0, 1e-40 and 1.4e-45 (subnormal), points and spots, in mid-air, in "
+                         "the floor and wall planes, on the box, at the eye; one ordinary light",
+             .expectation = "no NaN/Inf, none dropped; each image equals bit for bit the same renderer's image "
+                            "with their intensity 0; within the bound",
+             .build = zeroRangeLights,
+             .inertLights = 18});
+        add({.name = "camera-in-light",
+             .stresses = "the eye inside six lights' spheres: behind it, on the near plane, crossing it, 1 mm "
+                         "inside the surface, reaching nothing visible, a spot with its apex at the eye",
+             .expectation = "each light on exactly the part of the view it reaches, no more, no less: within the "
+                            "bound",
+             .build = cameraInLights});
+        add({.name = "spot-zero-cone",
+             .stresses = "74 spots with outer = inner = 0, their axes through pixel centres (the cosine to the axis "
+                         "rounds to 1 or above) or straight down, and one with outer 0 below inner 0.3; one point light",
+             .expectation = "no NaN/Inf; a zero cone lights nothing, not even on its axis: each image equals bit "
+                            "for bit the same renderer's image with the spots at intensity 0; within the bound",
+             .build = zeroConeSpots,
+             .inertLights = 74});
         return c;
     }();
     return cases;

@@ -42,6 +42,18 @@ struct StressCase {
     // Lights whose ranges all cover one tile: a pipeline with a per-tile limit checks that
     // its overflow path ran (0: the case does not aim at tile capacity).
     uint32_t lightsInOneTile = 0;
+    // The most blended layers over one pixel (0: nothing blended). Every layer's blend
+    // rounds the composite again: the bound counts one set of roundings per layer.
+    uint32_t blendedLayers = 0;
+    // The last `inertLights` lights of the scene must contribute exactly nothing (range 0,
+    // subnormal range, zero cones): every image, the reference's too, must equal bit for bit
+    // the same renderer's image of the scene with their intensity 0 (same lights, culling,
+    // batches and shader variants: only what they add can differ).
+    uint32_t inertLights = 0;
+    // Check the bound per pixel on HDR values too, not only tonemapped: where the case's
+    // values span more than one exposure can show (a 10^9 range), the dim end is black once
+    // tonemapped and only the HDR check sees its error.
+    bool hdrChecked = false;
 };
 
 const std::vector<StressCase>& stressCases();
@@ -65,7 +77,7 @@ Scene stage(const char* source);
 void finish(Scene& s);
 } // namespace build
 
-// Scene builders (stress_scenes.cpp, stress_scenes_counts.cpp).
+// Scene builders (stress_scenes.cpp, stress_scenes_counts.cpp, stress_scenes_stiff.cpp).
 Scene tileOverflow();
 Scene depthDiscontinuity();
 Scene mirrorSpike();
@@ -78,5 +90,11 @@ Scene lightCount(uint32_t count);
 Scene lightsWholeScreen();
 Scene lightsSubpixel();
 Scene msaaEdges();
+// stress_scenes_stiff.cpp
+Scene dynamicRange();
+Scene blendedLayers();
+Scene zeroRangeLights();
+Scene cameraInLights();
+Scene zeroConeSpots();
 
 } // namespace tp::stress

@@ -28,8 +28,11 @@ TP_INLINE float distanceAttenuation(float dist, float range) {
 }
 
 // Smooth cone falloff (KHR_lights_punctual): 0 outside the outer cone, 1 inside the inner.
+// The cosine is at most 1; rounding puts it a little above 1 at about one point in eight on
+// the axis, which a zero cone (outer 0: offset = -scale = -1e4) turns into light: clamped,
+// scale + offset is exactly 0 there (stress case spot-zero-cone).
 TP_INLINE float spotAttenuation(vec3 toLight, vec3 spotDirection, float scale, float offset) {
-    float cd = dot(spotDirection, -toLight);
+    float cd = min(dot(spotDirection, -toLight), 1.0f);
     float a = clamp(cd * scale + offset, 0.0f, 1.0f);
     return a * a;
 }
