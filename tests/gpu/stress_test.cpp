@@ -72,6 +72,18 @@ void expectFactChecks(const stress::StressCase& sc, const json& p, const std::st
     }
 }
 
+// Every pipeline's verdict on case `c` is a pass; a failure names the checks that failed.
+void expectEveryPipelinePasses(const json& c) {
+    for (const json& p : c["pipelines"]) {
+        std::string failed;
+        for (const json& k : p["checks"])
+            if (!k["pass"].get<bool>())
+                failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
+        EXPECT_EQ(p["verdict"], "pass") << c["name"].get<std::string>() << "/" << p["name"].get<std::string>() << ": "
+                                        << failed;
+    }
+}
+
 TEST(Stress, EveryCaseGivesTodaysVerdicts) {
     cli::StressOptions o;
     o.out = freshDir("stress");
@@ -148,15 +160,7 @@ TEST(Stress, ClusteredPassesTheLightAssignmentCases) {
     const json r = readJson(o.out + "/stress.json");
     EXPECT_TRUE(r["validation_messages"].empty());
     EXPECT_EQ(r["cases"].size(), 6u);
-    for (const json& c : r["cases"])
-        for (const json& p : c["pipelines"]) {
-            std::string failed;
-            for (const json& k : p["checks"])
-                if (!k["pass"].get<bool>())
-                    failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
-            EXPECT_EQ(p["verdict"], "pass") << c["name"].get<std::string>() << "/" << p["name"].get<std::string>()
-                                            << ": " << failed;
-        }
+    for (const json& c : r["cases"]) expectEveryPipelinePasses(c);
     EXPECT_EQ(code, 0);
     fs::remove_all(o.out);
 }
@@ -190,14 +194,7 @@ TEST(Stress, StiffCasesPassInTheOtherModes) {
         if (c["name"] == "lights-range-0" || c["name"] == "spot-zero-cone") {
             EXPECT_EQ(c["reference"]["inert_changed_pixels"], 0) << c["name"];
         }
-        for (const json& p : c["pipelines"]) {
-            std::string failed;
-            for (const json& k : p["checks"])
-                if (!k["pass"].get<bool>())
-                    failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
-            EXPECT_EQ(p["verdict"], "pass") << c["name"].get<std::string>() << "/" << p["name"].get<std::string>()
-                                            << ": " << failed;
-        }
+        expectEveryPipelinePasses(c);
     }
     EXPECT_EQ(code, 0);
     fs::remove_all(o.out);
