@@ -69,6 +69,14 @@ Light point(glm::vec3 p, float intensity, float range, glm::vec3 color) {
     return l;
 }
 
+Light sun(glm::vec3 direction, float lux) {
+    Light l;
+    l.type = LightType::Directional;
+    l.direction = glm::normalize(direction);
+    l.intensity = lux;
+    return l;
+}
+
 Scene stage(const char* source) {
     Scene s;
     s.source = source;
@@ -92,23 +100,8 @@ void finish(Scene& s) { s.computeBounds(); }
 
 } // namespace build
 
-namespace {
-
 using namespace build;
 using glm::vec3;
-
-// Deterministic [0,1) sequence (splitmix64): the scenes never depend on a library's RNG.
-struct Sequence {
-    uint64_t state;
-    float next() {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return float((z ^ (z >> 31)) >> 40) / float(1ull << 24);
-    }
-};
-
-} // namespace
 
 Scene tileOverflow() {
     Scene s = stage("stress:tile-overflow");
@@ -228,11 +221,7 @@ Scene depthPrecision(bool infiniteFar) {
     s.meshes.push_back(farFront);
     // The wall of the stage hides the far panels; lower it so they show above it.
     for (vec3& p : s.meshes[1].positions) p.y = std::min(p.y, 1.0f);
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(vec3(0.2f, -0.5f, -1.0f));
-    sun.intensity = 2.0f;
-    s.lights.push_back(sun);
+    s.lights.push_back(sun(vec3(0.2f, -0.5f, -1.0f), 2.0f));
     s.lights.push_back(point(eye + vec3(0, -0.005f, -0.01f), 0.002f, 0.05f)); // lights the near box
     s.lights.push_back(point({0, 2, 1}, 20.0f, 8.0f));
     finish(s);
@@ -251,11 +240,7 @@ Scene msaaEdges() {
     box(more, {1.5f, 0, 0}, {1.52f, 3.0f, 0.02f});
     box(more, {-1, 0.8f, 1}, {2.5f, 0.83f, 1.03f}); // a thin bar across
     s.meshes.push_back(more);
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(vec3(-0.4f, -1.0f, -0.6f));
-    sun.intensity = 3.0f;
-    s.lights.push_back(sun);
+    s.lights.push_back(sun(vec3(-0.4f, -1.0f, -0.6f), 3.0f));
     s.ambient = glm::vec3(0.0f);
     finish(s);
     return s;

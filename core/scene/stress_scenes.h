@@ -71,6 +71,18 @@ Mesh meshOf(const char* name, uint32_t material);
 // Axis-aligned box, faces outward, exact normals.
 void box(Mesh& m, glm::vec3 lo, glm::vec3 hi);
 Light point(glm::vec3 p, float intensity, float range, glm::vec3 color = glm::vec3(1.0f));
+// A directional light shining along `direction` (normalized here), `lux` strong.
+Light sun(glm::vec3 direction, float lux);
+// Deterministic [0,1) sequence (splitmix64): the scenes never depend on a library's RNG.
+struct Sequence {
+    uint64_t state;
+    float next() {
+        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return float((z ^ (z >> 31)) >> 40) / float(1ull << 24);
+    }
+};
 // A 10 x 10 grey floor at y = 0 under a 10 x 5 back wall at z = -5, camera at (0, 3, 7)
 // looking at (0, 1, 0): the stage most cases put their stress on.
 Scene stage(const char* source);

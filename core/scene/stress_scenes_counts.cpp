@@ -101,11 +101,7 @@ Scene lightsSubpixel() {
             float x = -4.75f + 0.5f * float(i) + 0.013f * float(j % 7), z = -4.75f + 0.5f * float(j) + 0.011f * float(i % 5);
             s.lights.push_back(point({x, 0.005f, z}, 0.05f, 0.02f, vec3(1.0f, 0.9f, 0.7f)));
         }
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(vec3(0.3f, -1.0f, -0.4f));
-    sun.intensity = 0.2f;
-    s.lights.push_back(sun);
+    s.lights.push_back(sun(vec3(0.3f, -1.0f, -0.4f), 0.2f));
     finish(s);
     return s;
 }

@@ -79,11 +79,7 @@ Scene blendedLayers() {
     }
     s.lights.push_back(point({-1.5f, 2.5f, 0.5f}, 12.0f, 7.0f, vec3(1.0f, 0.9f, 0.8f)));
     s.lights.push_back(point({2.0f, 1.0f, 1.0f}, 8.0f, 6.0f, vec3(0.6f, 0.8f, 1.0f)));
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(vec3(0.3f, -0.6f, -1.0f));
-    sun.intensity = 1.0f;
-    s.lights.push_back(sun);
+    s.lights.push_back(sun(vec3(0.3f, -0.6f, -1.0f), 1.0f));
     finish(s);
     return s;
 }

@@ -7,21 +7,13 @@
 #include <gtest/gtest.h>
 
 #include "core/render/scene_gpu.h"
+#include "core/scene/stress_scenes.h"
 #include "include/light_model.h"
 
 namespace tp::test {
 namespace {
 
-// Deterministic [0,1) sequence (splitmix64), as the stress scenes use.
-struct Sequence {
-    uint64_t state;
-    float next() {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return float((z ^ (z >> 31)) >> 40) / float(1ull << 24);
-    }
-};
+using stress::build::Sequence; // the stress scenes' deterministic sequence
 
 gpu::SurfaceSample surfaceAt(glm::vec3 p, glm::vec3 normal) {
     gpu::SurfaceSample s{};
