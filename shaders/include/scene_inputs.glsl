@@ -36,14 +36,16 @@ layout(location = 2) TP_IN vec2 inUv;
 layout(location = 3) TP_IN vec4 inTangent;
 layout(location = 4) TP_IN vec4 inColor;
 
-// Every interpolant over the interpolated 1: a no-op (to an ulp) where the device
+// The material with every input read through READ (a plain read or an interpolation
+// function), each interpolant over the interpolated 1: a no-op (to an ulp) where the device
 // interpolates perspective-correctly at the sample; on lavapipe, which takes 1/w at the
 // pixel centre for a sample ((a/w)_s / (1/w)_centre), it restores (a/w)_s / (1/w)_s.
-MaterialSample evalFragmentMaterial() {
-    float k = 1.0 / TP_INPUT(inOne);
-    return evalMaterial(materials[draw.materialIndex], TP_INPUT(inPosition) * k, TP_INPUT(inNormal) * k,
-                        TP_INPUT(inUv) * k, TP_INPUT(inTangent) * k, TP_INPUT(inColor) * k, gl_FrontFacing);
-}
+#define TP_EVAL_MATERIAL_READ(READ)                                                                    \
+    float k = 1.0 / READ(inOne);                                                                      \
+    return evalMaterial(materials[draw.materialIndex], READ(inPosition) * k, READ(inNormal) * k,       \
+                        READ(inUv) * k, READ(inTangent) * k, READ(inColor) * k, gl_FrontFacing)
+
+MaterialSample evalFragmentMaterial() { TP_EVAL_MATERIAL_READ(TP_INPUT); }
 
 #ifdef TP_INPUTS_AT_CENTER
 // The material at this sample's own location, as the masked depth prepass (prepass_mask.frag,
@@ -53,12 +55,7 @@ MaterialSample evalFragmentMaterial() {
 // qualifier on the inputs: lavapipe then reads a plain load of an input that interpolateAtOffset
 // also reads at the pixel centre (measured: the centre reference did not change by a bit).
 #define TP_AT_SAMPLE(x) interpolateAtSample(x, gl_SampleID)
-MaterialSample evalSampleMaterial() {
-    float k = 1.0 / TP_AT_SAMPLE(inOne);
-    return evalMaterial(materials[draw.materialIndex], TP_AT_SAMPLE(inPosition) * k, TP_AT_SAMPLE(inNormal) * k,
-                        TP_AT_SAMPLE(inUv) * k, TP_AT_SAMPLE(inTangent) * k, TP_AT_SAMPLE(inColor) * k,
-                        gl_FrontFacing);
-}
+MaterialSample evalSampleMaterial() { TP_EVAL_MATERIAL_READ(TP_AT_SAMPLE); }
 #undef TP_AT_SAMPLE
 #endif
 #endif // TP_INPUTS_POSITION_ONLY
