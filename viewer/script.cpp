@@ -63,7 +63,10 @@ float number(const std::string& text, bool& ok) {
 
 Result<std::vector<ScriptLine>> readScript(const std::string& path) {
     std::ifstream in(path);
-    if (!in) return Error{printableLine("--script " + path + ": cannot open the file")};
+    // Every message quotes the file (its path, its words): control characters and bytes that
+    // are not UTF-8 would reach the terminal (found by tests/fuzz/fuzz_script.cpp).
+    auto refuse = [](const std::string& message) { return Error{printableLine(message)}; };
+    if (!in) return refuse("--script " + path + ": cannot open the file");
     std::vector<ScriptLine> lines;
     std::string text;
     for (int n = 1; std::getline(in, text); ++n) {
@@ -74,13 +77,10 @@ Result<std::vector<ScriptLine>> readScript(const std::string& path) {
         if (line.words.empty()) continue;
         auto it = commands().find(line.words[0]);
         const std::string where = path + ":" + std::to_string(n) + ": ";
-        // The word is the file's: control characters and bytes that are not UTF-8 would
-        // reach the terminal (found by tests/fuzz/fuzz_script.cpp).
-        if (it == commands().end())
-            return Error{printableLine(where + "unknown command '" + line.words[0] + "'")};
+        if (it == commands().end()) return refuse(where + "unknown command '" + line.words[0] + "'");
         size_t args = line.words.size() - 1;
         if (args < it->second.minArgs || args > it->second.maxArgs)
-            return Error{printableLine(where + "expected '" + it->second.usage + "'")};
+            return refuse(where + "expected '" + it->second.usage + "'");
         lines.push_back(std::move(line));
     }
     return lines;

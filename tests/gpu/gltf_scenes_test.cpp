@@ -116,9 +116,9 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0) {
     for (const RendererEntry& entry : registeredRenderers()) {
         if (entry.name == "reference") continue;
         expectWithinBound(*ctx, gpuScene, scene, entry, settings, ref, name + " " + entry.name);
-        for (const auto& [knob, value] : grazing ? kAssignmentVariants : decltype(kAssignmentVariants){}) {
+        for (const auto& [knob, value] : kAssignmentVariants) {
             auto reads = [&, &knob = knob](const Knob& k) { return k.name == knob; };
-            if (std::none_of(entry.knobs.begin(), entry.knobs.end(), reads)) continue;
+            if (grazing == 0 || std::none_of(entry.knobs.begin(), entry.knobs.end(), reads)) continue;
             RenderSettings variant = settings;
             variant.set(knob, value);
             expectWithinBound(*ctx, gpuScene, scene, entry, variant, ref,
