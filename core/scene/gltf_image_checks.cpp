@@ -161,12 +161,9 @@ std::string checkPng(const unsigned char* b, size_t size, std::vector<unsigned c
         p += 12 + size_t(length);
         if (std::memcmp(type, "IEND", 4) == 0) break;
     }
-    if (!ihdr || idat.empty()) return ""; // stb refuses it before allocating for the data
-    const uint64_t needed = scanlineBytes(width, height, bitsPerPixel, interlaced);
-    if (std::string problem = inflatedWithin(idat, !iphone, 2 * needed); !problem.empty())
-        return problem;
     // An empty IDAT carries nothing, but stb copies it into its not yet allocated buffer
-    // (memcpy to a null pointer) when it comes first: decode a copy without the empty ones.
+    // (memcpy to a null pointer) when it comes first: decode a copy without the empty ones (also when every IDAT is
+    // empty: stb then refuses the copy for having none).
     if (emptyIdat) {
         cleaned.assign(b, b + 8);
         for (size_t q = 8; q < p;) {
@@ -176,7 +173,9 @@ std::string checkPng(const unsigned char* b, size_t size, std::vector<unsigned c
             q += chunk;
         }
     }
-    return "";
+    if (!ihdr || idat.empty()) return ""; // stb refuses it before allocating for the data
+    const uint64_t needed = scanlineBytes(width, height, bitsPerPixel, interlaced);
+    return inflatedWithin(idat, !iphone, 2 * needed);
 }
 
 } // namespace tp::gltf
