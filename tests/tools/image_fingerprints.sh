@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Prints one line per configuration: the configuration and the SHA-256 of the EXR it
+# renders. Run before and after a change that must not move a pixel (a refactoring), then
+# diff the two outputs: every pipeline and the reference on the built-in scene, 1x and 4x
+# at both shading rates, tiled and clustered, every light-list layout and culling mode.
+#   tests/tools/image_fingerprints.sh BUILD/triptych > before.txt
+# The EXR holds only pixels and fixed attributes, so identical pixels hash identically.
+set -euo pipefail
+exe=${1:?usage: image_fingerprints.sh PATH/TO/triptych}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+scene=builtin:courtyard-small
+common=(--res 96x64 --frames 1 --warmup 0 --lights 48 --light-types point:3,spot:1,directional:1)
+
+configs=()
+for msaa in "--msaa 1" "--msaa 4 --msaa-shading pixel" "--msaa 4 --msaa-shading sample"; do
+    configs+=("--pipeline reference $msaa"
+              "--pipeline reference $msaa --reference-position depth --reference-precision fp32")
+    [[ $msaa == "--msaa 1" ]] || configs+=("--pipeline reference $msaa --reference-msaa center")
+    for assign in tiled clustered; do
+        for cull in "--light-cull binned --light-bin cpu" "--light-cull binned --light-bin gpu" "--light-cull all"; do
+            base="$msaa --light-assign $assign $cull"
+            for lists in compact fixed linked; do
+                [[ $assign == clustered && $lists != compact ]] && continue
+                configs+=("--pipeline forwardplus $base --light-lists $lists")
+            done
+            configs+=("--pipeline forwardplus $base --tile 8 --light-spheres inline --cull-by invocation")
+            [[ $assign == clustered ]] && configs+=("--pipeline forwardplus $base --light-loop subgroup --slices 8")
+            configs+=("--pipeline deferred $base" "--pipeline deferred $base --gbuffer wide --hdr fp16 --tile 32")
+        done
+    done
+    configs+=("--pipeline deferred $msaa --deferred-lighting volumes")
+    for bl in under additive one-pass; do
+        configs+=("--pipeline multipass_forward $msaa --blended-lights $bl")
+    done
+    configs+=("--pipeline multipass_forward $msaa --accum fp16")
+done
+
+i=0
+for c in "${configs[@]}"; do
+    out="$work/$i"
+    # shellcheck disable=SC2086
+    "$exe" render "$scene" "${common[@]}" $c --out "$out" >"$work/log" 2>&1 || { echo "FAILED: $c"; cat "$work/log"; exit 1; }
+    echo "$c  $(sha256sum "$out"/*.exr | cut -c1-16)"
+    i=$((i + 1))
+done
