@@ -7,14 +7,14 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
-#include "core/lightassign/bin_knob.h"
-#include "core/lightassign/blended_bounds.h"
-#include "core/lightassign/heat_map.h"
+#include "core/passes/blended_bounds.h"
+#include "core/passes/debug_views.h"
+#include "core/passes/blended_forward.h"
+#include "core/passes/blended_lists.h"
+#include "core/passes/tiled_lighting.h"
 #include "core/render/scene_gpu.h"
+#include "deferred/def_settings.h"
 #include "deferred/gbuffer_pass.h"
-#include "deferred/tiled_lighting.h"
-#include "deferred/transparent_lists.h"
-#include "deferred/transparent_pass.h"
 #include "deferred/volume_lighting.h"
 
 namespace tp {
@@ -24,27 +24,24 @@ class DeferredRenderer final : public Renderer {
   public:
     explicit DeferredRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
-          gbuffer_(info.ctx, info.scene), lighting_(info.ctx, info.scene, info.settings.debug,
-                                                       info.settings.text("light-cull") == "binned",
-                                                       info.settings.text("light-assign") == "clustered"
-                                                           ? info.settings.integer("slices")
-                                                           : 0u,
-                                                       la::resolveLightBin(info.ctx, info.settings.text("light-bin")) == "gpu"),
+          def_(def::readSettings(info.settings)), gbuffer_(info.ctx, info.scene),
+          lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(), def_.assign.slicesOrZero(),
+                    la::binsOnGpu(info.ctx, def_.assign.bin)),
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene), blendBounds_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
-        useVolumes_ = settings_.text("deferred-lighting") == "volumes";
-        if (settings_.text("light-assign") == "clustered") slices_ = uint32_t(settings_.integer("slices"));
+        useVolumes_ = def_.lighting == def::Lighting::Volumes;
+        slices_ = def_.assign.slicesOrZero();
     }
 
     void plan(FrameGraph& graph) override {
-        t_.layout = planGBufferLayout(ctx_, features_, settings_);
-        t_.sampleRateGBuffer = settings_.text("msaa-shading") == "sample";
+        t_.layout = planGBufferLayout(ctx_, features_, def_.gbuffer, def_.sampling.samples);
+        t_.sampleRateGBuffer = def_.sampling.shading == MsaaShading::Sample;
         // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels:
         // the tile knob's values (8, 16, 32) are all multiples of 8.
-        t_.grid = la::makeTileGrid(graph.width(), graph.height(), settings_.integer("tile"));
+        t_.grid = la::makeTileGrid(graph.width(), graph.height(), def_.assign.tile);
         const uint32_t tiles = t_.grid.count();
         // --hdr: fp32 keeps the light sum exact to readback; fp16 halves the bytes (Forward+'s format).
-        t_.hdrFormat = settings_.text("hdr") == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+        t_.hdrFormat = def_.hdr == def::Hdr::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
         t_.hdr = graph.createImage("hdr", {t_.hdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT, "linear radiance (resolved)"});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
@@ -64,39 +61,7 @@ class DeferredRenderer final : public Renderer {
         if (tilePass)
             t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
                                               "per tile: lights, transparent lights, edge pixels, overflow");
-        if (blended_) {
-            // Compact: each tile's run is sized by a conservative bound, so nothing can drop
-            // (a drop would be counted in the tile's header, never silent).
-            // Binned: bitmasks over each tile's candidates instead of light indices.
-            // Binned: the lights are binned once (tiled lighting's candidates) and the lists
-            // sized from the same bound.
-            const std::vector<uint32_t>* bound = binned() ? &lighting_.bound(t_.grid, graph.owner()) : nullptr;
-            TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
-                                                             ctx_.info.name, binned(), bound);
-            t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
-                                                     lists.masks ? "per tile: list header, then a bitmask over its "
-                                                                   "binned candidates"
-                                                                 : "per tile: list header, then packed transparent "
-                                                                   "light indices");
-            transparentMasksOverCandidates_ = lists.masks;
-            t_.listOffsets = std::move(lists.offsets);
-            transparentSlots_ = lists.slots;
-            // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
-            // defClusterRowsBase); volumes lighting keeps the plain lists.
-            if (slices_ > 0 && !useVolumes_) {
-                const uint64_t words = 2ull * tiles + uint64_t(slices_) * (lists.masks ? lists.slots
-                                                                                       : lists.slots / 32 + tiles);
-                if (words * 4 > ctx_.caps.maxStorageBufferRange)
-                    throw RendererError("deferred: the transparent slice rows need " + std::to_string(words * 4) +
-                                        " bytes, more than maxStorageBufferRange of " + ctx_.info.name +
-                                        "; use fewer --slices, a larger --tile or fewer lights");
-                transparentMasks_ = graph.createBuffer("transparent_cluster_masks", words * 4,
-                                                       lists.masks ? "per tile: slicing, then per slice a bitmask "
-                                                                     "row over its binned candidates"
-                                                                   : "per tile: slicing, then per slice a bitmask "
-                                                                     "row over its transparent list");
-            }
-        }
+        if (blended_) planBlendedLists(graph);
         if (settings_.debug && !useVolumes_)
             t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
                                                            VK_SAMPLE_COUNT_1_BIT,
@@ -108,9 +73,53 @@ class DeferredRenderer final : public Renderer {
         if (blended_)
             bounds = blendBounds_.plan(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples,
                                                t_.msaa() && !t_.blendedPerPixel(), t_.blendedPerPixel()});
-        if (tilePass) lighting_.plan(graph, t_, useVolumes_, transparentMasks_, bounds);
+        if (tilePass) lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes_, transparentMasks_, bounds);
         if (useVolumes_) volumes_.plan(graph, t_);
-        if (blended_) transparent_.plan(graph, t_, bounds, slices_, transparentMasks_);
+        if (blended_)
+            transparent_.plan(graph, {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr, t_.hdrMsaa, t_.gbufferDepth,
+                                      t_.transparentLists, bounds, t_.hdrFormat},
+                              slices_, transparentMasks_);
+        exportOutputs(graph, tilePass, bounds);
+    }
+
+    // Blended scenes: the transparent light lists tiled lighting writes and the blended pass
+    // reads (and, clustered, their slice rows).
+    void planBlendedLists(FrameGraph& graph) {
+        const uint32_t tiles = t_.grid.count();
+        // Compact: each tile's run is sized by a conservative bound, so nothing can drop
+        // (a drop would be counted in the tile's header, never silent).
+        // Binned: bitmasks over each tile's candidates instead of light indices.
+        // Binned: the lights are binned once (tiled lighting's candidates) and the lists
+        // sized from the same bound.
+        const std::vector<uint32_t>* bound = binned() ? &lighting_.bound(t_.grid, graph.owner()) : nullptr;
+        TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
+                                                         ctx_.info.name, binned(), bound);
+        t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
+                                                 lists.masks ? "per tile: list header, then a bitmask over its "
+                                                               "binned candidates"
+                                                             : "per tile: list header, then packed transparent "
+                                                               "light indices");
+        transparentMasksOverCandidates_ = lists.masks;
+        t_.listOffsets = std::move(lists.offsets);
+        transparentSlots_ = lists.slots;
+        // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
+        // defClusterRowsBase); volumes lighting keeps the plain lists.
+        if (slices_ > 0 && !useVolumes_) {
+            const uint64_t words = 2ull * tiles + uint64_t(slices_) * (lists.masks ? lists.slots
+                                                                                   : lists.slots / 32 + tiles);
+            if (words * 4 > ctx_.caps.maxStorageBufferRange)
+                throw RendererError("deferred: the transparent slice rows need " + std::to_string(words * 4) +
+                                    " bytes, more than maxStorageBufferRange of " + ctx_.info.name +
+                                    "; use fewer --slices, a larger --tile or fewer lights");
+            transparentMasks_ = graph.createBuffer("transparent_cluster_masks", words * 4,
+                                                   lists.masks ? "per tile: slicing, then per slice a bitmask "
+                                                                 "row over its binned candidates"
+                                                               : "per tile: slicing, then per slice a bitmask "
+                                                                 "row over its transparent list");
+        }
+    }
+
+    void exportOutputs(FrameGraph& graph, bool tilePass, ResourceHandle bounds) {
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
@@ -148,11 +157,33 @@ class DeferredRenderer final : public Renderer {
     RendererStats stats() const override;
 
   private:
-    bool binned() const { return settings_.text("light-cull") == "binned"; }
+    bool binned() const { return def_.assign.binned(); }
+
+    // The G-buffer as tiled lighting's surface source: its colour targets at the bindings
+    // gbuffer_read.glsl declares, in layout.colors order.
+    SurfaceSource surfaceSource() const {
+        const uint32_t bindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
+                                     TP_DEF_BINDING_EMISSIVE};
+        SurfaceSource s;
+        s.shaderFamily = "deferred_tiled";
+        for (size_t i = 0; i < t_.gbuffer.size(); ++i) s.attributes.push_back({t_.gbuffer[i], Use::Sampled, bindings[i]});
+        s.depth = t_.gbufferDepth;
+        s.samples = t_.layout.samples;
+        s.emissive = t_.layout.emissive;
+        s.everySample = t_.sampleRateGBuffer;
+        s.constants = {{TP_DEF_SPEC_WIDE, t_.layout.wide ? 1u : 0u}};
+        return s;
+    }
+
+    TiledLightingTargets lightingTargets() const {
+        return {t_.grid, t_.hdr, t_.hdrMsaa, t_.hdrFormat, t_.tileStats, t_.transparentLists, t_.debug, t_.listOffsets};
+    }
+
     GpuContext& ctx_;
     SceneGpu& scene_;
     SceneFeatures features_;
     RenderSettings settings_;
+    def::Settings def_;
     DeferredTargets t_;
     bool blended_ = false;
     bool useVolumes_ = false;
@@ -160,7 +191,7 @@ class DeferredRenderer final : public Renderer {
     GBufferPass gbuffer_;
     TiledLighting lighting_;
     VolumeLighting volumes_;
-    TransparentPass transparent_;
+    BlendedForwardPass transparent_;
     la::BlendedBounds blendBounds_; // blended scenes: where each tile's blended fragments are
     std::vector<uint32_t> tileStats_; // uvec4 per tile
     uint64_t transparentSlots_ = 0;
@@ -207,10 +238,10 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
         if (t_.edgeMask.valid()) out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
         return out;
     }
-    out.push_back({"lights_per_tile", la::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
+    out.push_back({"lights_per_tile", passes::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
     if (blended_) {
         TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
-        out.push_back({"lights_per_tile_transparent", la::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
+        out.push_back({"lights_per_tile_transparent", passes::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
     }
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
@@ -250,7 +281,7 @@ RendererStats DeferredRenderer::stats() const {
     if (t_.tileStats.valid()) {
         // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).
         s.counters.push_back({"light_candidates", double(lighting_.candidates())});
-        if (settings_.text("light-cull") == "binned") // --light-bin, resolved
+        if (binned()) // --light-bin, resolved
             s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
@@ -260,7 +291,7 @@ RendererStats DeferredRenderer::stats() const {
     if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
         s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds", "no blended material"});
-    const bool clustered = settings_.text("light-assign") == "clustered";
+    const bool clustered = def_.assign.clustered();
     if (!clustered)
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
     else if (useVolumes_)

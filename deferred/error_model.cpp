@@ -4,9 +4,10 @@
 #include <cmath>
 
 #include "core/render/msaa_knob.h"
+#include "deferred/def_settings.h"
 #include "deferred/deferred_shared.h"
 #include "deferred/position_allowance.h"
-#include "deferred/tiled_lighting.h"
+#include "core/passes/tiled_lighting.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 
@@ -64,22 +65,21 @@ bool hasBlended(const Scene& scene) {
 // blended layer's store adds one more, which the model leaves to the caller (no stress case
 // has blended materials; tests/gpu/deferred_hdr_test.cpp adds them).
 void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
-    if (in.settings.text("hdr") != "fp16") return;
-    const RenderSettings& s = in.settings;
+    const def::Settings s = def::readSettings(in.settings);
+    if (s.hdr != def::Hdr::Fp16) return;
     const uint32_t lights = uint32_t(in.scene.lights.size());
     int stores = 0;
     std::string what;
-    if (s.text("deferred-lighting") == "volumes") {
+    if (s.lighting == def::Lighting::Volumes) {
         stores = 1 + int(lights);
         what = "base pass, one blend per light volume";
     } else {
-        uint32_t batch = tiledLightBatch(uint32_t(s.integer("tile")), s.msaa);
-        if (s.text("light-assign") == "clustered")
-            batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / uint32_t(s.integer("slices")));
+        uint32_t batch = tiledLightBatch(s.assign.tile, s.sampling.samples);
+        if (s.assign.clustered()) batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
         stores = int(std::max(1u, (lights + batch - 1) / batch));
         what = "one per lighting batch of " + std::to_string(batch) + " lights";
     }
-    if (s.msaa > 1 && hasBlended(in.scene)) {
+    if (s.sampling.msaa() && hasBlended(in.scene)) {
         stores += 1;
         what += ", resolve";
     }
@@ -98,7 +98,7 @@ void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
                           " + 1) pixel widths off the shaded surface (vertex snapping before the depth plane); "
                           "per pixel, that times a bound on the gradient of every light term reaching it",
                       positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits)};
-    if (in.settings.text("gbuffer") == "compact") addCompactGBuffer(b, in);
+    if (def::readSettings(in.settings).gbuffer == def::GBuffer::Compact) addCompactGBuffer(b, in);
     // Under --msaa-shading pixel, non-edge pixels lit once at the centre (the Lauritzen path)
     // and blended surfaces shaded once at the centre (the hybrid forward pass, as Forward+'s
     // and multipass's): the same centre-shading term, since a blend of non-negative layers keeps

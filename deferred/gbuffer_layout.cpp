@@ -23,12 +23,12 @@ uint32_t GBufferLayout::bytesPerSample() const {
     return bytes;
 }
 
-GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features,
-                                const RenderSettings& settings) {
+GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features, def::GBuffer gbuffer,
+                                uint32_t samples) {
     GBufferLayout g;
-    g.wide = settings.text("gbuffer") == "wide";
+    g.wide = gbuffer == def::GBuffer::Wide;
     g.emissive = features.emissive;
-    g.samples = settings.msaa;
+    g.samples = samples;
     if (g.wide) {
         g.colors = {{"gbuffer_base", VK_FORMAT_R32G32B32A32_SFLOAT, "base colour rgb, occlusion a (fp32)"},
                     {"gbuffer_normal", VK_FORMAT_R32G32B32A32_SFLOAT, "normal xyz (fp32)"},

@@ -13,7 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "core/render/settings.h"
+#include "deferred/def_settings.h"
 #include "core/scene/scene.h"
 
 namespace tp {
@@ -36,7 +36,7 @@ struct GBufferLayout {
     uint32_t bytesPerSample() const;
 };
 
-GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features,
-                                const RenderSettings& settings);
+GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features, def::GBuffer gbuffer,
+                                uint32_t samples);
 
 } // namespace tp

@@ -102,7 +102,7 @@ void VolumeLighting::prepareBase(FrameGraph& graph) {
                        (t_->layout.emissive ? "1" : "0") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
-    d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
     d.specConstants.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     d.colorFormats = {t_->hdrFormat};
     d.depthFormat = VK_FORMAT_UNDEFINED;
@@ -126,7 +126,7 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     d.fragmentShader = std::string("deferred_volume_light_m") + (perSampleHdr() ? "2" : t_->msaa() ? "1" : "0") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
-    d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
     d.specConstants.push_back({TP_DEF_SPEC_SPHERE_SCALE, std::bit_cast<uint32_t>(circumscribedSphereScale())});
     d.colorFormats = {t_->hdrFormat};
     d.depthWrite = false;
@@ -151,7 +151,7 @@ void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
     d.fragmentShader = std::string("deferred_volume_sample_base_e") + (t_->layout.emissive ? "1" : "0") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
-    d.specConstants.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
+    d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
     d.colorFormats = {t_->hdrFormat};
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.sampleShading = true;

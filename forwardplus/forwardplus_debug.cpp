@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/image/difference.h"
-#include "core/lightassign/heat_map.h"
+#include "core/passes/debug_views.h"
 
 namespace tp::fp {
 
@@ -86,33 +86,14 @@ ImageRGBA lightsPerTileHeatMap(const la::TileGrid& g, const std::vector<gpu::FpT
         counts[t] = tiles[t].list[list].count;
         dropped[t] = tiles[t].list[list].dropped;
     }
-    return la::lightsPerTileHeatMap(g, counts, dropped);
+    return passes::lightsPerTileHeatMap(g, counts, dropped);
 }
 
 ImageRGBA tileDepthBoundsImage(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles,
                                const glm::mat4& invProj) {
-    auto distance = [&](float depth) {
-        glm::vec4 v = invProj * glm::vec4(0.0f, 0.0f, depth, 1.0f);
-        return std::abs(v.w) < 1e-30f ? std::numeric_limits<float>::infinity() : -v.z / v.w;
-    };
-    const uint32_t gap = 4;
-    ImageRGBA values(2 * g.width + gap, g.height);
-    float farthest = 0.0f;
-    for (const gpu::FpTileLists& t : tiles)
-        if (t.nearDepth > 0.0f) farthest = std::max(farthest, distance(t.farDepth));
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    for (uint32_t y = 0; y < g.height; ++y)
-        for (uint32_t x = 0; x < g.width; ++x) {
-            const gpu::FpTileLists& t = tiles[(y / g.tileSize) * g.tilesX + x / g.tileSize];
-            bool sky = t.nearDepth <= 0.0f;
-            float n = sky ? nan : distance(t.nearDepth), f = sky ? nan : distance(t.farDepth);
-            float* a = values.at(x, y);
-            float* b = values.at(g.width + gap + x, y);
-            a[0] = a[1] = a[2] = n;
-            b[0] = b[1] = b[2] = f;
-            a[3] = b[3] = 1.0f;
-        }
-    return heatMap(values, farthest > 0.0f && std::isfinite(farthest) ? farthest : 1.0f);
+    std::vector<passes::TileDepthRange> ranges(tiles.size());
+    for (size_t i = 0; i < tiles.size(); ++i) ranges[i] = {tiles[i].nearDepth, tiles[i].farDepth};
+    return passes::tileDepthBoundsImage(g, ranges, invProj);
 }
 
 } // namespace tp::fp

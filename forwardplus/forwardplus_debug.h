@@ -44,12 +44,11 @@ ClusterSummary summarizeFrontClusters(const std::vector<gpu::FpTileLists>& tiles
                                       uint32_t slices, uint32_t frontSlices);
 
 // Lights per tile (list 0 opaque, 1 transparent) on light assignment's one heat-map scale
-// (core/lightassign/heat_map.h); tiles that dropped lights (overflow of the "fixed" layout)
+// (core/passes/debug_views.h); tiles that dropped lights (overflow of the "fixed" layout)
 // are outlined.
 ImageRGBA lightsPerTileHeatMap(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles, uint32_t list);
 
-// Tile depth bounds as view distance, nearest | farthest side by side on one scale (0 to
-// the farthest bound); tiles without geometry are magenta (the scale's "not a number").
+// passes::tileDepthBoundsImage of the lists' depth ranges.
 ImageRGBA tileDepthBoundsImage(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles,
                                const glm::mat4& invProj);
 

@@ -15,16 +15,17 @@
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
+#include "core/passes/depth_prepass.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
-#include "core/lightassign/bin_knob.h"
-#include "core/lightassign/blended_bounds.h"
-#include "core/lightassign/gpu_binning.h"
+#include "core/passes/blended_bounds.h"
+#include "core/passes/light_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
-#include "core/lightassign/loop_knob.h"
 #include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_debug.h"
+#include "forwardplus/forward_shading.h"
+#include "forwardplus/fp_settings.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "forwardplus/light_culling.h"
 #include "forwardplus/list_counters.h"
@@ -37,43 +38,36 @@ namespace {
 constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT; // storage-precision choice (docs)
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-uint32_t layoutFromName(const std::string& name) {
-    if (name == "compact") return TP_FP_LAYOUT_COMPACT;
-    if (name == "fixed") return TP_FP_LAYOUT_FIXED;
-    if (name == "linked") return TP_FP_LAYOUT_LINKED;
-    throw RendererError("unknown light-list layout '" + name + "' (compact, fixed, linked)");
-}
-
 class ForwardPlusRenderer final : public Renderer {
   public:
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
-        layout_ = layoutFromName(settings_.text("light-lists"));
-        binned_ = settings_.text("light-cull") == "binned";
-        gpuBinning_ = binned_ && la::resolveLightBin(ctx_, settings_.text("light-bin")) == "gpu";
-        clustered_ = settings_.text("light-assign") == "clustered";
-        slices_ = settings_.integer("slices");
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
+          fp_(fp::readSettings(info.settings)) {
+        layout_ = uint32_t(fp_.lists);
+        binned_ = fp_.assign.binned();
+        gpuBinning_ = binned_ && la::binsOnGpu(ctx_, fp_.assign.bin);
+        clustered_ = fp_.assign.clustered();
+        slices_ = fp_.assign.slices;
         // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
         // transform in every tile it is tested in); on a GPU the transform is cheap and the
         // buffer (16 MB at 1,000,000 lights) would take Forward+ past 100 MB there.
-        const std::string spheres = settings_.text("light-spheres");
-        spherePass_ = spheres == "pass" || (spheres == "auto" && ctx_.isCpuDevice());
+        spherePass_ = fp_.spheres == fp::Spheres::Pass || (fp_.spheres == fp::Spheres::Auto && ctx_.isCpuDevice());
         // --light-loop subgroup where the device has the operations; otherwise the lane loop
         // (the same image), with a note in the report.
-        if (clustered_ && settings_.text("light-loop") == "subgroup") {
+        if (clustered_ && fp_.loop == la::Loop::Subgroup) {
             subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
             subgroupLoop_ = subgroupMissing_.empty();
         }
         // --cull-by: asked for, a subgroup per tile must be possible; auto takes it on a GPU that can.
-        const std::string cullBy = settings_.text("cull-by");
+        const fp::CullBy cullBy = fp_.cullBy;
         const std::string noSubgroupCull = fp::subgroupCullingUnsupported(ctx_.caps);
-        if (cullBy == "subgroup" && !noSubgroupCull.empty())
+        if (cullBy == fp::CullBy::Subgroup && !noSubgroupCull.empty())
             throw RendererError("--cull-by subgroup: " + noSubgroupCull + " (use --cull-by invocation)");
-        subgroupCull_ = cullBy == "subgroup" || (cullBy == "auto" && !ctx_.isCpuDevice() && noSubgroupCull.empty());
+        subgroupCull_ = cullBy == fp::CullBy::Subgroup || (cullBy == fp::CullBy::Auto && !ctx_.isCpuDevice() && noSubgroupCull.empty());
         if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
             throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
-                                settings_.text("light-lists") + "')");
-        grid_ = la::makeTileGrid(settings_.width, settings_.height, settings_.integer("tile"));
+                                fp::listsText(fp_.lists) + "')");
+        grid_ = la::makeTileGrid(settings_.width, settings_.height, fp_.assign.tile);
         // Two lists only when something is blended (and drawn); clustered has one list per
         // tile whose span covers the blended surfaces too.
         blendPass_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
@@ -81,19 +75,10 @@ class ForwardPlusRenderer final : public Renderer {
         numLists_ = twoLists_ ? 2 : 1;
         classes_ = la::classifyLights(scene_.lightsGpu());
         if (layout_ != TP_FP_LAYOUT_FIXED || binned_) boundLists();
-        lists_ = fp::sizeLists(ctx_, {layout_, settings_.text("light-lists"), grid_.count(),
-                                      settings_.integer("tile-capacity"), boundSlots_, numLists_});
+        lists_ = fp::sizeLists(ctx_, {layout_, fp::listsText(fp_.lists), grid_.count(),
+                                      fp_.tileCapacity, boundSlots_, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
         if (blendPass_) blendBounds_.emplace(ctx_, scene_);
-    }
-
-    ~ForwardPlusRenderer() override {
-        VkDevice d = ctx_.device;
-        for (VkPipeline p : {prepassOpaque_, prepassMask_, shade_[0], shade_[1], shade_[2]})
-            if (p) vkDestroyPipeline(d, p, nullptr);
-        if (shadeLayout_) vkDestroyPipelineLayout(d, shadeLayout_, nullptr);
-        if (sceneLayout_) vkDestroyPipelineLayout(d, sceneLayout_, nullptr);
-        destroyPassSet(ctx_, shadeSet_);
     }
 
     void plan(FrameGraph& graph) override {
@@ -108,7 +93,6 @@ class ForwardPlusRenderer final : public Renderer {
             depthMsaa_ = graph.createImage("depth_msaa", {kDepthFormat, 0, 0, samples, "per-sample prepass depth"});
         }
         const ResourceHandle depthSrc = msaa ? depthMsaa_ : depth_;
-        const ResourceHandle color = msaa ? hdrMsaa_ : hdr_;
 
         tiles_ = graph.createBuffer("tile_lists", VkDeviceSize(grid_.count()) * sizeof(gpu::FpTileLists),
                                     "per tile: list counts, starts, drops, depth bounds");
@@ -119,9 +103,12 @@ class ForwardPlusRenderer final : public Renderer {
             masks_ = graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
                                         "per tile and depth slice: a bitmask over the tile's list");
 
-        std::vector<PassUse> prepassUses = {{depthSrc, Use::DepthAttachment}};
-        if (msaa) prepassUses.push_back({depth_, Use::DepthResolve});
-        graph.addPass("depth_prepass", prepassUses, [this](PassContext& pc) { recordPrepass(pc); });
+        // Masked materials' alpha test once per pixel under MSAA (the shading pass's EQUAL test
+        // then gives each sample the pixel's coverage): passes::MaskedRate::Pixel.
+        prepass_.emplace(ctx_, scene_,
+                         passes::DepthPrepassParams{settings_.msaa, passes::MaskedRate::Pixel,
+                                                    scene_.drawList(DrawFilter::Opaque), scene_.drawList(DrawFilter::Mask)});
+        prepass_->plan(graph, {depthSrc, msaa ? depth_ : ResourceHandle{}});
 
         if (layout_ == TP_FP_LAYOUT_LINKED)
             graph.addPass("node_counter_reset", {{counter_, Use::TransferDst}}, [this](PassContext& pc) {
@@ -132,30 +119,15 @@ class ForwardPlusRenderer final : public Renderer {
         // Blended depth bounds: the blended shading pass's fragments, before the culling reads them.
         ResourceHandle blendBounds;
         if (blendPass_)
-            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa, shadesPerSample(settings_),
-                                                     shadesPerPixelUnderMsaa(settings_)});
+            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa, fp_.sampling.perSample(),
+                                                     fp_.sampling.perPixelUnderMsaa()});
         const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
 
-        // Uses with a binding are also the pass's descriptor set (createDescriptors).
-
-        std::vector<PassUse> opaqueUses = {{color, Use::ColorAttachment},
-                                           {depthSrc, Use::DepthTest},
-                                           {tiles_, Use::StorageRead, TP_FP_BINDING_TILES},
-                                           {indices_, Use::StorageRead, TP_FP_BINDING_INDICES}};
-        if (clustered_) opaqueUses.push_back({masks_, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
-        if (msaa && !blendPass_) opaqueUses.push_back({hdr_, Use::ColorResolve});
-        graph.addPass("forward_opaque", opaqueUses, [this](PassContext& pc) { recordShading(pc, false); });
-
-        if (blendPass_) {
-            std::vector<PassUse> uses = {{color, Use::ColorAttachment},
-                                         {depthSrc, Use::DepthTest},
-                                         {tiles_, Use::StorageRead, TP_FP_BINDING_TILES},
-                                         {indices_, Use::StorageRead, TP_FP_BINDING_INDICES}};
-            if (clustered_) uses.push_back({masks_, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
-            if (msaa) uses.push_back({hdr_, Use::ColorResolve});
-            graph.addPass("forward_transparent", uses, [this](PassContext& pc) { recordShading(pc, true); });
-        }
+        shading_.emplace(ctx_, scene_,
+                         fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout_, slices_, twoLists_, clustered_,
+                                           blendPass_, subgroupLoop_});
+        shading_->plan(graph, {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat});
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
         // Read back after the frame for the statistics, debug images and tests.
@@ -168,9 +140,10 @@ class ForwardPlusRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         createParams();
+        prepass_->prepare();
         if (blendBounds_) blendBounds_->prepare(graph);
         createDescriptors(graph);
-        createPipelines();
+        shading_->prepare(graph, params_.buffer);
     }
 
     void collectStats(FrameGraph& graph) override {
@@ -204,7 +177,7 @@ class ForwardPlusRenderer final : public Renderer {
     RendererStats stats() const override {
         RendererStats s;
         auto add = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
-        add("tile_size", settings_.integer("tile"));
+        add("tile_size", fp_.assign.tile);
         add("tiles", grid_.count());
         add("light_lists", double(numLists_));
         add("directional_lights_unculled", double(classes_.directional.size()));
@@ -243,13 +216,13 @@ class ForwardPlusRenderer final : public Renderer {
                                  "clustered: one list spans the tile's opaque range widened to its blended "
                                  "fragments' depths, and blended surfaces look up their own depth slice"});
         if (binned_ && !gpuBinning_)
-            s.leftOut.push_back({"light_binning pass (GPU binning)", "--light-bin " + settings_.text("light-bin") +
+            s.leftOut.push_back({"light_binning pass (GPU binning)", "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
                                                                        " resolved to cpu: candidates built once per configuration"});
         if (!clustered_)
             s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
         if (!spherePass_)
             s.leftOut.push_back({"light_spheres pass and its buffer (16 bytes per light)",
-                                 "--light-spheres " + settings_.text("light-spheres") +
+                                 "--light-spheres " + fp::spheresText(fp_.spheres) +
                                      ": the culling computes each candidate's sphere itself"});
         if (!subgroupMissing_.empty())
             s.leftOut.push_back({"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
@@ -295,7 +268,7 @@ class ForwardPlusRenderer final : public Renderer {
 
     void createParams() {
         fp::ParamsInput in{grid_, &classes_, layout_, binned_, gpuBinning_, &tileOffsets_, &candidates_, boundSlots_,
-                           &maskLayout_.offsets, uint32_t(settings_.integer("tile-capacity")), lists_};
+                           &maskLayout_.offsets, fp_.tileCapacity, lists_};
         fp::PackedParams packed = fp::packParams(ctx_, in);
         candidateWord_ = packed.candidateWord;
         params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -306,7 +279,6 @@ class ForwardPlusRenderer final : public Renderer {
     fp::CullConfig cullConfig() const {
         fp::CullConfig c;
         c.grid = grid_;
-        c.lists = settings_.text("light-lists");
         c.layout = layout_;
         c.samples = settings_.msaa;
         c.slices = slices_;
@@ -325,88 +297,13 @@ class ForwardPlusRenderer final : public Renderer {
         // fp_params is uploaded once in prepare(), outside the graph.
         culling_->prepare(graph, params_.buffer);
         if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
-        // forward_transparent declares the same bound uses and shares this set.
-        shadeSet_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, {{TP_FP_BINDING_PARAMS, params_.buffer}});
-    }
-
-    void createPipelines() {
-        const auto samples = VkSampleCountFlagBits(settings_.msaa);
-        sceneLayout_ = scene_.createPipelineLayout();
-        shadeLayout_ = scene_.createPipelineLayout(shadeSet_.layout);
-
-        // Depth prepass: opaque without a fragment shader, masked with the alpha test.
-        GraphicsPipelineDesc pre;
-        pre.samples = samples;
-        pre.layout = sceneLayout_;
-        pre.specConstants = scene_.specConstants(AlphaMode::Opaque);
-        if (scene_.hasDraws(DrawFilter::Opaque)) prepassOpaque_ = createGraphicsPipeline(ctx_, pre);
-        if (scene_.hasDraws(DrawFilter::Mask)) {
-            pre.fragmentShader = "prepass_mask_frag";
-            pre.specConstants = scene_.specConstants(AlphaMode::Mask);
-            prepassMask_ = createGraphicsPipeline(ctx_, pre);
-        }
-
-        for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
-            if (!scene_.hasDraws(DrawFilter(mode))) continue;
-            GraphicsPipelineDesc d;
-            // --msaa-shading: pixel runs once per pixel at its centre (no `sample` inputs, no
-            // sample shading; the EQUAL depth test against the per-sample prepass gives each
-            // sample its coverage, masked materials included); sample shades every sample.
-            d.fragmentShader = std::string(clustered_ ? "fp_shading_clustered" : "fp_shading") +
-                               (subgroupLoop_ ? "_subgroup" : "") + (shadesPerPixelUnderMsaa(settings_) ? "_pixel_frag" : "_frag");
-            d.colorFormats = {kHdrFormat};
-            d.samples = samples;
-            d.sampleShading = shadesPerSample(settings_);
-            d.layout = shadeLayout_;
-            d.passSet = &shadeSet_;
-            d.depthWrite = false;
-            d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
-            d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
-            d.specConstants = scene_.specConstants(mode);
-            d.specConstants.push_back({TP_FP_SPEC_TILE_SIZE, settings_.integer("tile")});
-            d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, twoLists_ ? 1u : 0u});
-            d.specConstants.push_back({TP_FP_SPEC_LAYOUT, layout_});
-            if (clustered_) {
-                d.specConstants.push_back({TP_FP_SPEC_SLICES, slices_});
-                d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, blendPass_ ? 1u : 0u});
-            }
-            shade_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
-        }
-    }
-
-    void recordPrepass(PassContext& pc) {
-        const bool msaa = settings_.msaa > 1;
-        DepthTarget depth{msaa ? depthMsaa_ : depth_, msaa ? depth_ : ResourceHandle{}};
-        beginRendering(pc, {}, depth);
-        scene_.bindSceneSet(pc.cmd, sceneLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Opaque, prepassOpaque_);
-        scene_.recordDraws(pc.cmd, sceneLayout_, DrawFilter::Mask, prepassMask_);
-        endRendering(pc);
-    }
-
-    void recordShading(PassContext& pc, bool transparent) {
-        const bool msaa = settings_.msaa > 1;
-        ColorTarget color;
-        color.image = msaa ? hdrMsaa_ : hdr_;
-        const bool lastPass = transparent || !blendPass_;
-        if (msaa && lastPass) color.resolve = hdr_;
-        color.clear = !transparent;
-        DepthTarget depth{msaa ? depthMsaa_ : depth_, {}, false, true};
-        beginRendering(pc, {color}, depth);
-        scene_.bindSceneSet(pc.cmd, shadeLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadeLayout_, TP_SET_PASS, 1, &shadeSet_.set, 0,
-                                nullptr);
-        std::vector<AlphaMode> modes = transparent ? std::vector<AlphaMode>{AlphaMode::Blend}
-                                                   : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
-        for (AlphaMode mode : modes)
-            scene_.recordDraws(pc.cmd, shadeLayout_, DrawFilter(mode), shade_[uint32_t(mode)]);
-        endRendering(pc);
     }
 
     GpuContext& ctx_;
     SceneGpu& scene_;
     SceneFeatures features_;
     RenderSettings settings_;
+    fp::Settings fp_;
     uint32_t layout_ = TP_FP_LAYOUT_COMPACT;
     la::TileGrid grid_;
     bool twoLists_ = false;
@@ -434,10 +331,8 @@ class ForwardPlusRenderer final : public Renderer {
     fp::LightSpheres spheres_{ctx_, scene_};
     std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
     std::optional<la::BlendedBounds> blendBounds_; // blended scenes: where each tile's blended fragments are
-    PassSet shadeSet_;
-    VkPipelineLayout sceneLayout_ = VK_NULL_HANDLE, shadeLayout_ = VK_NULL_HANDLE;
-    VkPipeline prepassOpaque_ = VK_NULL_HANDLE, prepassMask_ = VK_NULL_HANDLE;
-    VkPipeline shade_[3] = {};
+    std::optional<passes::DepthPrepass> prepass_;
+    std::optional<fp::ForwardShading> shading_; // forward_opaque, forward_transparent
 
     std::vector<gpu::FpTileLists> tileLists_;
     std::vector<la::TileBlendedBounds> blended_; // read back: blended scenes' statistics

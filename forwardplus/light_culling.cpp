@@ -71,11 +71,12 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
 
     const bool msaa = config_.samples > 1;
     const bool subgroup = config_.subgroupLanes > 0;
-    std::string name = "fp_cull_" + config_.lists + (config_.clustered ? "_clustered" : "") + (msaa ? "_ms" : "") +
+    static const char* const kLayouts[] = {"compact", "fixed", "linked"}; // TP_FP_LAYOUT_*: the variants
+    std::string name = std::string("fp_cull_") + kLayouts[config_.layout] + (config_.clustered ? "_clustered" : "") + (msaa ? "_ms" : "") +
                        (subgroup ? "_subgroup" : "") + "_comp";
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
-    spec.push_back({TP_FP_SPEC_TILE_SIZE, config_.grid.tileSize});
-    spec.push_back({TP_FP_SPEC_SAMPLES, config_.samples});
+    spec.push_back({TP_SPEC_TILE_SIZE, config_.grid.tileSize});
+    spec.push_back({TP_SPEC_SAMPLES, config_.samples});
     spec.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_BINNED, config_.binned ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_SLICES, config_.slices});

@@ -22,7 +22,6 @@ namespace fp {
 
 struct CullConfig {
     la::TileGrid grid;
-    std::string lists;      // --light-lists: names the shader variant
     uint32_t layout = 0;    // TP_FP_LAYOUT_*
     uint32_t samples = 1;   // --msaa
     uint32_t slices = 16;   // clustered depth slices
@@ -38,7 +37,7 @@ struct CullConfig {
 std::string subgroupCullingUnsupported(const DeviceCaps& caps);
 
 // The resources the pass reads and writes (counter: linked only; masks: clustered only;
-// blendBounds: blended scenes only, core/lightassign/blended_bounds.h; spheres: light_spheres.h).
+// blendBounds: blended scenes only, core/passes/blended_bounds.h; spheres: light_spheres.h).
 struct CullResources {
     ResourceHandle depth, tiles, indices, counter, masks, blendBounds, spheres;
 };

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/lightassign/blended_bounds.h"
+#include "core/passes/blended_bounds.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {

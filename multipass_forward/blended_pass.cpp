@@ -17,6 +17,7 @@
 #include "core/gpu/rendering.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
+#include "core/passes/scene_draws.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -49,8 +50,8 @@ VkPipelineColorBlendAttachmentState alphaOnly() {
 } // namespace
 
 BlendedPass::BlendedPass(const PassEnv& env)
-    : env_(env), additive_(env.settings.text("blended-lights") == "additive"),
-      onePass_(env.settings.text("blended-lights") == "one-pass") {
+    : env_(env), additive_(env.settings.blendedLights == BlendedLights::Additive),
+      onePass_(env.settings.blendedLights == BlendedLights::OnePass) {
     if (env.plan.blended.empty()) return;
     // Depth GREATER against the opaque depth, no writes: as the reference draws them.
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Blend);
@@ -123,9 +124,9 @@ void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd, size
     for (const auto& [light, scissor] : bd.lights) {
         setScissor(pc.cmd, scissor);
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
-        recordDraw(pc.cmd, env_.layout, reversed, light);
+        passes::recordSceneDraw(pc.cmd, env_.layout, reversed, light);
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, reset_);
-        recordDraw(pc.cmd, env_.layout, reversed);
+        passes::recordSceneDraw(pc.cmd, env_.layout, reversed);
     }
 }
 
@@ -138,7 +139,7 @@ void BlendedPass::recordAdditiveLights(PassContext& pc, const BlendedDraw& bd) {
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
     for (const auto& [light, scissor] : bd.lights) {
         setScissor(pc.cmd, scissor);
-        recordDraw(pc.cmd, env_.layout, *bd.draw, light);
+        passes::recordSceneDraw(pc.cmd, env_.layout, *bd.draw, light);
     }
 }
 
@@ -153,7 +154,7 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, base_);
         scene.bindIndexBuffer(pc.cmd);
         setScissor(pc.cmd, full);
-        recordDraw(pc.cmd, env_.layout, *bd.draw);
+        passes::recordSceneDraw(pc.cmd, env_.layout, *bd.draw);
         if (additive_)
             recordAdditiveLights(pc, bd);
         else

@@ -4,6 +4,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
+#include "core/passes/depth_prepass.h"
 #include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
@@ -15,10 +16,10 @@ using namespace mp;
 class MultipassForwardRenderer final : public Renderer {
   public:
     explicit MultipassForwardRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), settings_(info.settings),
-          accumFormat_(info.settings.text("accum") == "fp16" ? VK_FORMAT_R16G16B16A16_SFLOAT
+        : ctx_(info.ctx), scene_(info.scene), settings_(info.settings), mp_(readSettings(info.settings)),
+          accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                     : VK_FORMAT_R32G32B32A32_SFLOAT),
-          plan_(planLights(info.scene, info.settings.text("blended-lights") != "one-pass")) {}
+          plan_(planLights(info.scene, mp_.blendedLights != BlendedLights::OnePass)) {}
 
     ~MultipassForwardRenderer() override {
         prepass_.reset();
@@ -32,7 +33,10 @@ class MultipassForwardRenderer final : public Renderer {
         createTargets(graph);
         // The last pass that shades resolves the per-sample target into hdr.
         const bool hasLights = !plan_.batches.empty(), hasBlended = !plan_.blended.empty();
-        graph.addPass("depth_prepass", DepthPrepass::uses(t_), [this](PassContext& pc) { prepass_->record(pc, t_); });
+        // Masked materials' alpha test per sample under MSAA, as the reference: the coverage matches.
+        prepass_ = std::make_unique<passes::DepthPrepass>(
+            ctx_, scene_, passes::DepthPrepassParams{mp_.sampling.samples, passes::MaskedRate::Sample, plan_.opaque, plan_.masked});
+        prepass_->plan(graph, {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;
         graph.addPass("base_pass", shadingUses(t_, last), [this, last](PassContext& pc) { base_->record(pc, t_, last); });
         if (hasLights) {
@@ -48,8 +52,8 @@ class MultipassForwardRenderer final : public Renderer {
 
     void prepare(FrameGraph&) override {
         layout_ = scene_.createPipelineLayout();
-        PassEnv env{ctx_, scene_, settings_, plan_, layout_, accumFormat_};
-        prepass_ = std::make_unique<DepthPrepass>(env);
+        PassEnv env{ctx_, scene_, mp_, plan_, layout_, accumFormat_};
+        prepass_->prepare();
         base_ = std::make_unique<BasePass>(env);
         lights_ = std::make_unique<LightPasses>(env);
         blended_ = std::make_unique<BlendedPass>(env);
@@ -74,11 +78,12 @@ class MultipassForwardRenderer final : public Renderer {
     GpuContext& ctx_;
     SceneGpu& scene_;
     RenderSettings settings_;
+    Settings mp_;
     VkFormat accumFormat_;
     LightPlan plan_;
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    std::unique_ptr<DepthPrepass> prepass_;
+    std::unique_ptr<passes::DepthPrepass> prepass_;
     std::unique_ptr<BasePass> base_;
     std::unique_ptr<LightPasses> lights_;
     std::unique_ptr<BlendedPass> blended_;
@@ -109,11 +114,10 @@ RendererStats MultipassForwardRenderer::stats() const {
         s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend) ? "no blended draw on screen"
                                                                                : "no blended materials"});
     if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
-    const std::string blendedLights = settings_.text("blended-lights");
-    if (!plan_.blended.empty() && blendedLights == "additive")
+    if (!plan_.blended.empty() && mp_.blendedLights == BlendedLights::Additive)
         s.leftOut.push_back({"blended_indices_reversed and transmittance resets",
                              "--blended-lights additive (the textbook pass: not exact where a blended mesh overlaps itself)"});
-    if (!plan_.blended.empty() && blendedLights == "one-pass")
+    if (!plan_.blended.empty() && mp_.blendedLights == BlendedLights::OnePass)
         s.leftOut.push_back({"blended light passes", "--blended-lights one-pass: every light in the blended composite"});
     if (plan_.masked.empty()) s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
     return s;

@@ -1,6 +1,6 @@
 #pragma once
-// The passes of multipass forward, one file each: depth_prepass.cpp, base_pass.cpp,
-// light_passes.cpp, blended_pass.cpp. Each creates its pipelines in its constructor (after
+// The passes of multipass forward, one file each: base_pass.cpp, light_passes.cpp,
+// blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each creates its pipelines in its constructor (after
 // the graph allocated resources) and records into the targets below. They share the scene's
 // pipeline layout (set 0 + DrawPush); nothing has a set 1.
 #include <string>
@@ -11,7 +11,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
-#include "core/render/settings.h"
+#include "multipass_forward/mp_settings.h"
 #include "multipass_forward/light_plan.h"
 #include "multipass_forward/multipass_shared.h"
 
@@ -33,7 +33,7 @@ struct Targets {
 struct PassEnv {
     GpuContext& ctx;
     const SceneGpu& scene;
-    const RenderSettings& settings;
+    const Settings& settings;
     const LightPlan& plan;
     VkPipelineLayout layout;
     VkFormat accumFormat; // RGBA16F or RGBA32F (the accum knob)
@@ -51,27 +51,12 @@ std::string fragmentShader(const PassEnv& env, const std::string& stem);
 // --msaa-shading sample (the reference's rate), else once per pixel; scene layout,
 // accumulation format.
 GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
-// One scene draw; `light` goes to DrawPush.TP_MP_LIGHT_INDEX (ignored by non-light shaders).
-void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light = 0);
+// Draws are recorded with passes::recordSceneDraw (core/passes/scene_draws.h); a light pass
+// gives its light as DrawPush.pad0 (TP_MP_LIGHT_INDEX), ignored by non-light shaders.
 // Binds `pipeline`, the scene set and the scene's index buffer: what every draw loop needs.
 void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline);
 void setScissor(VkCommandBuffer cmd, const ScreenRect& r);
 void destroyPipeline(GpuContext& ctx, VkPipeline& pipeline);
-
-// 1. Depth only; masked materials discard; blended ones are not drawn.
-class DepthPrepass {
-  public:
-    explicit DepthPrepass(const PassEnv& env);
-    ~DepthPrepass();
-    static std::vector<PassUse> uses(const Targets& t);
-    void record(PassContext& pc, const Targets& t);
-    uint32_t draws() const { return draws_; }
-
-  private:
-    const PassEnv env_;
-    VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
-    uint32_t draws_ = 0;
-};
 
 // 2. Ambient + emissive + directional lights of opaque and masked surfaces, depth EQUAL.
 class BasePass {

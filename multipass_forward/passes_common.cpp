@@ -23,22 +23,14 @@ GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode) {
     GraphicsPipelineDesc d;
     d.specConstants = env.scene.specConstants(mode);
     d.colorFormats = {env.accumFormat};
-    d.samples = VkSampleCountFlagBits(env.settings.msaa);
-    d.sampleShading = shadesPerSample(env.settings); // --msaa-shading sample
+    d.samples = VkSampleCountFlagBits(env.settings.sampling.samples);
+    d.sampleShading = env.settings.sampling.perSample(); // --msaa-shading sample
     d.layout = env.layout;
     return d;
 }
 
 std::string fragmentShader(const PassEnv& env, const std::string& stem) {
-    return "mp_" + stem + (shadesPerPixelUnderMsaa(env.settings) ? "_pixel" : "") + "_frag";
-}
-
-void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t light) {
-    gpu::DrawPush push{d.material, 0, 0, 0};
-    push.TP_MP_LIGHT_INDEX = light;
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-    vkCmdSetCullMode(cmd, d.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-    vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+    return "mp_" + stem + (env.settings.sampling.perPixelUnderMsaa() ? "_pixel" : "") + "_frag";
 }
 
 void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline) {

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Blended depth bounds (core/lightassign/blended_bounds.h): drawn with the blended draws'
+// Blended depth bounds (core/passes/blended_bounds.h): drawn with the blended draws'
 // vertex shader in its position-only variant (scene.vert: TP_VERT_POSITION_ONLY, the same
 // gl_Position and position) and the blended shading pass's rasterization state, depth test
 // GREATER against the opaque depth, no depth write and no colour, so it runs for exactly the
@@ -28,7 +28,7 @@
 // Early tests: the fragment shader has side effects, and only fragments in front of the
 // opaque depth may record (as only those are shaded).
 layout(early_fragment_tests) in;
-layout(constant_id = TP_LA_BLEND_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(std430, set = TP_SET_PASS, binding = TP_LA_BLEND_BINDING_BOUNDS) buffer Bounds {
     uint bounds[]; // [0, tiles): min distance bits; [tiles, 2 tiles): max
 };

@@ -6,6 +6,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/reference/reference_settings.h"
 #include "core/render/scene_gpu.h"
 
 namespace tp {
@@ -14,8 +15,9 @@ namespace {
 class ReferenceRenderer final : public Renderer {
   public:
     explicit ReferenceRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings) {
-        fp64_ = (settings_.text("reference-precision") == "fp64") && ctx_.caps.float64;
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
+          ref_(ref::readSettings(info.settings)) {
+        fp64_ = ref_.precision == ref::Precision::Fp64 && ctx_.caps.float64;
     }
 
     ~ReferenceRenderer() override {
@@ -49,7 +51,7 @@ class ReferenceRenderer final : public Renderer {
     void prepare(FrameGraph&) override {
         layout_ = scene_.createPipelineLayout();
         GraphicsPipelineDesc d;
-        const bool center = settings_.msaa > 1 && settings_.text("reference-msaa") == "center";
+        const bool center = settings_.msaa > 1 && ref_.msaa == ref::MsaaMode::Center;
         const std::string base = std::string(center ? "reference_center" : "reference");
         const std::string precision = fp64_ ? "_fp64_frag" : "_frag";
         d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
@@ -74,9 +76,9 @@ class ReferenceRenderer final : public Renderer {
         s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});
         s.counters.push_back({"lights_evaluated_per_sample", double(scene_.lightCount())});
         if (settings_.msaa > 1)
-            s.counters.push_back({"shaded_at_pixel_center", settings_.text("reference-msaa") == "center" ? 1.0 : 0.0});
+            s.counters.push_back({"shaded_at_pixel_center", ref_.msaa == ref::MsaaMode::Center ? 1.0 : 0.0});
         if (!fp64_)
-            s.leftOut.push_back({"fp64 accumulation", (settings_.text("reference-precision") == "fp64")
+            s.leftOut.push_back({"fp64 accumulation", ref_.precision == ref::Precision::Fp64
                                                           ? "device has no shaderFloat64"
                                                           : "fp32 chosen (--reference-precision fp32)"});
         if (settings_.msaa == 1)
@@ -85,7 +87,7 @@ class ReferenceRenderer final : public Renderer {
     }
 
   private:
-    bool positionFromDepth() const { return settings_.text("reference-position") == "depth"; }
+    bool positionFromDepth() const { return ref_.position == ref::Position::Depth; }
 
     void record(PassContext& pc) {
         std::optional<DepthTarget> depth;
@@ -108,6 +110,7 @@ class ReferenceRenderer final : public Renderer {
     SceneGpu& scene_;
     SceneFeatures features_;
     RenderSettings settings_;
+    ref::Settings ref_;
     bool fp64_ = false;
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;

@@ -70,6 +70,10 @@ Status Knob::check(const std::string& value) const {
     return Error{"--" + name + " '" + value + "': allowed values are " + allowedText()};
 }
 
+void throwNotAValue(const Knob& knob, const std::string& value) {
+    throw RendererError("knob '" + knob.name + "': '" + value + "' is none of " + knob.allowedText());
+}
+
 Status resolveKnobs(const KnobSchema& schema, RenderSettings& s) {
     for (const Knob& k : schema) {
         auto it = s.knobs.find(k.name);

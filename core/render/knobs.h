@@ -1,11 +1,17 @@
 #pragma once
 // A renderer's knobs, declared once by the renderer and read by everything else: the CLI
 // builds its options, help and checks from them, sweep its axes and CSV columns, the reports
-// their settings (and the coming viewer will build its controls from them). A knob declared by several renderers (the tile
+// their settings, the viewer its controls. A knob declared by several renderers (the tile
 // size of the tiled pipelines) must be declared identically; the registry checks that.
+//
+// Passes and renderers never read a knob as text: a knob is declared as a ChoiceKnob<Enum>
+// or an IntegerKnob (below), whose knob() goes into the schema and whose in(settings) gives
+// the typed value; each pipeline turns RenderSettings into its own typed settings struct once,
+// in its factory (docs/architecture.md: "Typed settings").
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/render/settings.h"
@@ -45,6 +51,66 @@ struct Knob {
 };
 
 using KnobSchema = std::vector<Knob>;
+
+// Thrown by ChoiceKnob::in for text that is none of its values: unreachable after
+// resolveKnobs, so a programming error (RendererError, one line).
+[[noreturn]] void throwNotAValue(const Knob& knob, const std::string& value);
+
+// A choice knob bound to an enum: the values' text and their enum values are listed once,
+// side by side, so a misspelt value does not compile and nothing compares text.
+//   const ChoiceKnob<Layout> lists{"light-lists", {{Layout::Compact, "compact"}, ...}, "help"};
+//   schema: lists.knob()          read: lists.in(settings) == Layout::Compact
+template <class E>
+class ChoiceKnob {
+  public:
+    ChoiceKnob(std::string name, std::vector<std::pair<E, std::string>> values, std::string help)
+        : values_(std::move(values)) {
+        std::vector<std::string> texts;
+        for (const auto& v : values_) texts.push_back(v.second);
+        knob_ = Knob::choice(std::move(name), std::move(texts), std::move(help));
+    }
+    ChoiceKnob&& onlyUnderMsaa() && {
+        knob_.onlyUnderMsaa();
+        return std::move(*this);
+    }
+    ChoiceKnob&& fixed() && {
+        knob_.fixed();
+        return std::move(*this);
+    }
+    const Knob& knob() const { return knob_; }
+    // The value `s` holds (its default filled in by resolveKnobs).
+    E in(const RenderSettings& s) const {
+        const std::string& text = s.text(knob_.name);
+        for (const auto& v : values_)
+            if (v.second == text) return v.first;
+        throwNotAValue(knob_, text);
+    }
+    // The text of `e`, for a report line ("--light-bin auto resolved to cpu").
+    const std::string& text(E e) const {
+        for (const auto& v : values_)
+            if (v.first == e) return v.second;
+        throwNotAValue(knob_, "?");
+    }
+
+  private:
+    Knob knob_;
+    std::vector<std::pair<E, std::string>> values_;
+};
+
+// An integer knob (a range or a list of allowed values), read as a number.
+class IntegerKnob {
+  public:
+    explicit IntegerKnob(Knob knob) : knob_(std::move(knob)) {}
+    IntegerKnob&& fixed() && {
+        knob_.fixed();
+        return std::move(*this);
+    }
+    const Knob& knob() const { return knob_; }
+    uint32_t in(const RenderSettings& s) const { return s.integer(knob_.name); }
+
+  private:
+    Knob knob_;
+};
 
 // Checks every knob of `schema` present in `s`, fills in the missing ones with their
 // defaults. Error: the first bad value, one line.

@@ -8,17 +8,23 @@
 
 namespace tp {
 
-Knob msaaShadingKnob() {
-    return Knob::choice("msaa-shading", {"pixel", "sample"},
-                        "Shading rate under MSAA: pixel (one fragment invocation per pixel at its centre, coverage "
-                        "and depth per sample; deferred lights only edge pixels per sample, Lauritzen 2010) or "
-                        "sample (every sample shaded: supersampling, the reference's rate)")
-        .onlyUnderMsaa();
+const ChoiceKnob<MsaaShading>& msaaShadingKnob() {
+    static const ChoiceKnob<MsaaShading> k =
+        ChoiceKnob<MsaaShading>{"msaa-shading",
+                                {{MsaaShading::Pixel, "pixel"}, {MsaaShading::Sample, "sample"}},
+                                "Shading rate under MSAA: pixel (one fragment invocation per pixel at its centre, "
+                                "coverage and depth per sample; deferred lights only edge pixels per sample, "
+                                "Lauritzen 2010) or sample (every sample shaded: supersampling, the reference's "
+                                "rate)"}
+            .onlyUnderMsaa();
+    return k;
 }
 
-bool shadesPerSample(const RenderSettings& s) { return s.msaa > 1 && s.text("msaa-shading") == "sample"; }
+Sampling readSampling(const RenderSettings& s) { return {s.msaa, msaaShadingKnob().in(s)}; }
 
-bool shadesPerPixelUnderMsaa(const RenderSettings& s) { return s.msaa > 1 && !shadesPerSample(s); }
+bool shadesPerSample(const RenderSettings& s) { return readSampling(s).perSample(); }
+
+bool shadesPerPixelUnderMsaa(const RenderSettings& s) { return readSampling(s).perPixelUnderMsaa(); }
 
 // A pixel shaded once at its centre (deferred's non-edge pixels, Forward+ and multipass at
 // --msaa-shading pixel), against the reference's per-sample shading. With

@@ -11,12 +11,23 @@
 
 namespace tp {
 
-Knob msaaShadingKnob();
+enum class MsaaShading { Pixel, Sample };
+const ChoiceKnob<MsaaShading>& msaaShadingKnob();
 
-// True when a pipeline must shade every sample: MSAA on and `--msaa-shading sample`. At 1x
-// there is one sample, and the pipelines keep their 1x shaders (the knob changes nothing).
+// The sample count and the shading rate, typed: what a pass picks its variant from.
+struct Sampling {
+    uint32_t samples = 1;
+    MsaaShading shading = MsaaShading::Pixel;
+    bool msaa() const { return samples > 1; }
+    // Every sample shaded: MSAA on and `--msaa-shading sample`. At 1x there is one sample,
+    // and the pipelines keep their 1x shaders (the knob changes nothing).
+    bool perSample() const { return msaa() && shading == MsaaShading::Sample; }
+    // MSAA on and shaded once per pixel (`--msaa-shading pixel`).
+    bool perPixelUnderMsaa() const { return msaa() && shading == MsaaShading::Pixel; }
+};
+// For a renderer that declares msaaShadingKnob().
+Sampling readSampling(const RenderSettings& s);
 bool shadesPerSample(const RenderSettings& s);
-// True when MSAA is on and the pipeline shades once per pixel (`--msaa-shading pixel`).
 bool shadesPerPixelUnderMsaa(const RenderSettings& s);
 
 // The bound of shading a pixel once at its centre instead of at each 4x sample, where the

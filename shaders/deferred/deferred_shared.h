@@ -54,9 +54,7 @@ TP_INLINE uint defClusterRowsBase(uint tileCount, uint offset, uint tile, uint s
 TP_INLINE uint defMaskRowsBase(uint tileCount, uint offset, uint slices) { return 2u * tileCount + slices * offset; }
 
 // ---- specialization constants of the deferred shaders (ids after the scene's 0..2) ----
-#define TP_DEF_SPEC_TILE_SIZE 10     // tile edge in pixels (= workgroup edge)
 #define TP_DEF_SPEC_WIDE 11          // 1: wide (fp32, xyz normal) G-buffer, 0: compact
-#define TP_DEF_SPEC_SAMPLES 13       // MSAA samples of the G-buffer
 #define TP_DEF_SPEC_SPHERE_SCALE 14  // float bits: volumeSphereVertex scale that circumscribes the unit sphere
 #define TP_DEF_SPEC_EVERY_SAMPLE 15  // 1: every pixel with geometry is lit per sample (--msaa-shading sample)
 #define TP_DEF_SPEC_BINNED 16        // 1: a tile tests only its candidates (--light-cull binned), 0: every light

@@ -13,7 +13,7 @@
 #include "include/unproject.glsl"
 
 layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
-layout(constant_id = TP_DEF_SPEC_SAMPLES) const uint kSamples = 1u;
+layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
 layout(constant_id = TP_DEF_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 
 #ifdef TP_MSAA

@@ -36,7 +36,7 @@
 // maintenance4, which the context does not enable.
 #define TP_GROUP 8u
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
 #ifndef TP_LISTS_ONLY
 // Read back by the later batches, which add their lights to what the earlier ones wrote.

@@ -18,7 +18,7 @@
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 
-layout(constant_id = TP_DEF_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_LISTS) readonly buffer TransparentLists {
     uint tLists[];

@@ -20,8 +20,6 @@ namespace tp::gpu {
 #define TP_FP_BINDING_SPHERES 7 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
 
 // ---- specialization constants (ids after the shared ones) ----
-#define TP_FP_SPEC_TILE_SIZE 12 // tile size in pixels (8, 16, 32), culling and shading
-#define TP_FP_SPEC_SAMPLES 13   // culling: depth samples per pixel
 #define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
 #define TP_FP_SPEC_LAYOUT 15    // TP_FP_LAYOUT_*
 #define TP_FP_SPEC_BINNED 16    // culling: 1 = test each tile's candidates (--light-cull binned), 0 = every light
@@ -37,7 +35,7 @@ namespace tp::gpu {
 // The culling takes each tile's candidates in batches, one dispatch each, in the scene's
 // DrawPush push constant: candidates [first, end), and initial = 1 on the pass's first
 // dispatch (the lists start empty). lavapipe ends an invocation after 65,535 loop iterations
-// in total (deferred/tiled_lighting.h), and one invocation culls a whole tile.
+// in total (core/passes/tiled_lighting.h), and one invocation culls a whole tile.
 #define TP_FP_CULL_FIRST pad0
 #define TP_FP_CULL_END pad1
 #define TP_FP_CULL_INITIAL pad2

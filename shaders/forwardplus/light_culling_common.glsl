@@ -13,8 +13,8 @@
 #define TP_FP_CULL_COMPACT 1
 #endif
 
-layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
-layout(constant_id = TP_FP_SPEC_SAMPLES) const int kSamples = 1;
+layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(constant_id = TP_SPEC_SAMPLES) const int kSamples = 1;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 // Binned (--light-cull binned): the tile tests only its candidates; otherwise every local
 // light. Same test, same order: the same lists either way.

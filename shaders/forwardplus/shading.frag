@@ -12,7 +12,7 @@
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 
-layout(constant_id = TP_FP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
+layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 layout(constant_id = TP_FP_SPEC_LAYOUT) const uint kLayout = TP_FP_LAYOUT_COMPACT;
 

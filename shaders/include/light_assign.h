@@ -19,13 +19,12 @@ namespace tp::gpu {
 // depth (light_assign.glsl: laFrontSlices); the rest cut the opaque range.
 #define TP_LA_FRONT_SLICE_SHARE 4u
 
-// Blended depth bounds (core/lightassign/blended_bounds.h, shaders/blended_bounds.frag): per
+// Blended depth bounds (core/passes/blended_bounds.h, shaders/blended_bounds.frag): per
 // tile, the nearest and farthest view distance (-z, > 0) of the blended fragments that the
 // blended shading pass will shade, as float bits (non-negative floats order like their
 // bits): words [0, tiles) the minimum (+inf bits = 0x7f800000: no blended fragment),
 // words [tiles, 2 * tiles) the maximum (0 without). Cleared by a transfer fill every frame.
 #define TP_LA_BLEND_BINDING_BOUNDS 0 // the bounds pass's own set (TP_SET_PASS): buffer uint[2 * tiles]
-#define TP_LA_BLEND_SPEC_TILE_SIZE 40 // the bounds pass's tile size (spec constant id)
 #define TP_LA_BLEND_EMPTY 0x7f800000u // +inf: the minimum of a tile with no blended fragment
 // Relative padding of the recorded distances (light_assign.glsl: laBlendedBounds): the
 // bounds pass and the shading pass compute the distance with the same expression from the

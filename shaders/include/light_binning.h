@@ -56,7 +56,7 @@ namespace tp::gpu {
 #define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)
 #define TP_BIN_STEP_PAIRS 64u      // long-run step: pairs per invocation and dispatch
 // Tiles one fill dispatch may visit per light: lavapipe ends an invocation after 65,535
-// loop iterations in total (deferred/tiled_lighting.h); the slab loops add tilesX + tilesY.
+// loop iterations in total (core/passes/tiled_lighting.h); the slab loops add tilesX + tilesY.
 #define TP_BIN_FILL_BUDGET 32768u
 
 // The padding of the light's sphere: far more than the GPU culling test's (relative 1e-4),

@@ -19,6 +19,10 @@
 #define TP_SPEC_TEXTURE_COUNT 0 // length of the texture array (>= 1)
 #define TP_SPEC_HAS_SPOT 1      // 0: the spot-light code path is compiled out
 #define TP_SPEC_ALPHA_MODE 2    // draws of one pipeline object share one alpha mode
+// Constants every pipeline that has them shares, one id each (a pass library's passes set
+// them without knowing which pipeline composed them):
+#define TP_SPEC_TILE_SIZE 3     // tile edge in pixels (8, 16, 32: --tile) of the tiled light assignment
+#define TP_SPEC_SAMPLES 4       // MSAA samples per pixel a pass reads (depth, G-buffer)
 
 // Light types and alpha modes (match tp::LightType / tp::AlphaMode).
 #define TP_LIGHT_POINT 0u

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/gpu/context.h"
-#include "core/lightassign/gpu_binning.h"
+#include "core/passes/light_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/render/scene_gpu.h"

@@ -7,7 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/lightassign/compact_layout.h"
-#include "core/lightassign/heat_map.h"
+#include "core/passes/debug_views.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/lightassign/tile_candidates.h"
@@ -169,13 +169,13 @@ TEST(LightAssign, TileCandidatesAreEachTilesCoveringLightsAscending) {
 }
 
 TEST(LightAssign, HeatMapHasOneScaleFromZeroToTheLargestCount) {
-    EXPECT_EQ(la::heatMapScaleMax({}), 1u);
-    EXPECT_EQ(la::heatMapScaleMax({0, 0}), 1u); // empty map: black, not a division by 0
-    EXPECT_EQ(la::heatMapScaleMax({3, 7, 2}), 7u);
+    EXPECT_EQ(passes::heatMapScaleMax({}), 1u);
+    EXPECT_EQ(passes::heatMapScaleMax({0, 0}), 1u); // empty map: black, not a division by 0
+    EXPECT_EQ(passes::heatMapScaleMax({3, 7, 2}), 7u);
 
     la::TileGrid g = la::makeTileGrid(32, 16, 8); // 4 x 2 tiles
     std::vector<uint32_t> counts = {0, 7, 3, 7, 0, 1, 2, 3};
-    ImageRGBA img = la::lightsPerTileHeatMap(g, counts);
+    ImageRGBA img = passes::lightsPerTileHeatMap(g, counts);
     ASSERT_EQ(img.width, 32u);
     ASSERT_GT(img.height, 16u); // the legend strip under the map
     auto same = [&](uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by) {
@@ -191,7 +191,7 @@ TEST(LightAssign, HeatMapHasOneScaleFromZeroToTheLargestCount) {
     // for 7: the scale is relative to the map's largest count.
     std::vector<uint32_t> doubled = counts;
     doubled[0] = 14;
-    ImageRGBA other = la::lightsPerTileHeatMap(g, doubled);
+    ImageRGBA other = passes::lightsPerTileHeatMap(g, doubled);
     EXPECT_NE(other.at(9, 1)[0] + other.at(9, 1)[1] + other.at(9, 1)[2],
               img.at(9, 1)[0] + img.at(9, 1)[1] + img.at(9, 1)[2]);
 }
@@ -200,10 +200,10 @@ TEST(LightAssign, HeatMapOutlinesTilesThatDroppedLights) {
     la::TileGrid g = la::makeTileGrid(32, 16, 8);
     std::vector<uint32_t> counts(8, 2), dropped(8, 0);
     dropped[5] = 1; // tile (1, 1): pixels x 8..15, y 8..15
-    ImageRGBA img = la::lightsPerTileHeatMap(g, counts, dropped);
+    ImageRGBA img = passes::lightsPerTileHeatMap(g, counts, dropped);
     EXPECT_EQ(img.at(8, 8)[1], 1.0f);
     EXPECT_EQ(img.at(8, 8)[0], 0.0f);
     EXPECT_EQ(img.at(15, 12)[1], 1.0f);
-    ImageRGBA plain = la::lightsPerTileHeatMap(g, counts);
+    ImageRGBA plain = passes::lightsPerTileHeatMap(g, counts);
     for (int c = 0; c < 4; ++c) EXPECT_EQ(img.at(11, 11)[c], plain.at(11, 11)[c]); // inside: unchanged
 }

@@ -1,4 +1,4 @@
-// The blended depth bounds pass (core/lightassign/blended_bounds.h) draws with the
+// The blended depth bounds pass (core/passes/blended_bounds.h) draws with the
 // position-only variant of scene.vert (TP_VERT_POSITION_ONLY) and reads only the position and
 // the interpolated 1: it must see the same fragments at the same positions as with the whole
 // interface the blended shading pass uses, so its bounds buffer is the same bit for bit.
@@ -10,7 +10,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/rendering.h"
-#include "core/lightassign/blended_bounds.h"
+#include "core/passes/blended_bounds.h"
 #include "core/lightassign/tile_grid.h"
 #include "gpu_test_util.h"
 

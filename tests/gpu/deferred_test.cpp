@@ -10,7 +10,7 @@
 #include "core/gpu/ledger.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
-#include "core/lightassign/blended_bounds.h"
+#include "core/passes/blended_bounds.h"
 #include "core/image/metrics.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
@@ -747,7 +747,7 @@ std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char
 }
 
 // The transparent lists are culled against each tile's blended depth bounds
-// (core/lightassign/blended_bounds.h): a tile with no blended fragment has an empty list
+// (core/passes/blended_bounds.h): a tile with no blended fragment has an empty list
 // (tile_stats' transparent column: what its test found), tiled and clustered, 1x and 4x.
 // Forward+ records the same bounds from its prepass depth (the same vertex shader, depth
 // test and fragments, at the same rate: per pixel or per sample under MSAA), bit for bit.

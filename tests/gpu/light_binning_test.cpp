@@ -1,4 +1,4 @@
-// GPU light binning (--light-bin gpu, core/lightassign/gpu_binning.h) against the CPU's
+// GPU light binning (--light-bin gpu, core/passes/light_binning.h) against the CPU's
 // la::binLights: the same bound, offsets and runs, every tile, exactly (the rectangle test
 // runs the same float operations on both sides: include/light_binning.h); and Forward+ and
 // deferred render byte-identical images either way.
@@ -13,7 +13,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
-#include "core/lightassign/gpu_binning.h"
+#include "core/passes/light_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"

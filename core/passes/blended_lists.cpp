@@ -1,4 +1,4 @@
-#include "deferred/transparent_lists.h"
+#include "core/passes/blended_lists.h"
 
 #include <string>
 

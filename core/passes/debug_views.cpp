@@ -1,10 +1,12 @@
-#include "core/lightassign/heat_map.h"
+#include "core/passes/debug_views.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/image/difference.h"
 
-namespace tp::la {
+namespace tp::passes {
 namespace {
 
 void outlineTile(ImageRGBA& img, const TileGrid& g, uint32_t tx, uint32_t ty) {
@@ -46,4 +48,29 @@ ImageRGBA lightsPerTileHeatMap(const TileGrid& g, const std::vector<uint32_t>& c
     return out;
 }
 
-} // namespace tp::la
+ImageRGBA tileDepthBoundsImage(const TileGrid& g, const std::vector<TileDepthRange>& tiles, const glm::mat4& invProj) {
+    auto distance = [&](float depth) {
+        glm::vec4 v = invProj * glm::vec4(0.0f, 0.0f, depth, 1.0f);
+        return std::abs(v.w) < 1e-30f ? std::numeric_limits<float>::infinity() : -v.z / v.w;
+    };
+    const uint32_t gap = 4;
+    ImageRGBA values(2 * g.width + gap, g.height);
+    float farthest = 0.0f;
+    for (const TileDepthRange& t : tiles)
+        if (t.nearDepth > 0.0f) farthest = std::max(farthest, distance(t.farDepth));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (uint32_t y = 0; y < g.height; ++y)
+        for (uint32_t x = 0; x < g.width; ++x) {
+            const TileDepthRange& t = tiles[(y / g.tileSize) * g.tilesX + x / g.tileSize];
+            bool sky = t.nearDepth <= 0.0f;
+            float n = sky ? nan : distance(t.nearDepth), f = sky ? nan : distance(t.farDepth);
+            float* a = values.at(x, y);
+            float* b = values.at(g.width + gap + x, y);
+            a[0] = a[1] = a[2] = n;
+            b[0] = b[1] = b[2] = f;
+            a[3] = b[3] = 1.0f;
+        }
+    return heatMap(values, farthest > 0.0f && std::isfinite(farthest) ? farthest : 1.0f);
+}
+
+} // namespace tp::passes

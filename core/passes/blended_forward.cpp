@@ -1,4 +1,4 @@
-#include "deferred/transparent_pass.h"
+#include "core/passes/blended_forward.h"
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -9,20 +9,20 @@
 
 namespace tp {
 
-TransparentPass::~TransparentPass() {
+BlendedForwardPass::~BlendedForwardPass() {
     if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     destroyPassSet(ctx_, set_);
 }
 
-void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle blendBounds, uint32_t slices,
+void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices,
                            ResourceHandle masks) {
-    t_ = &t;
+    t_ = t;
     slices_ = masks.valid() ? slices : 0u;
     masks_ = masks;
-    std::vector<PassUse> uses = {{t.transparentLists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
-                                 {t.gbufferDepth, Use::DepthTest},
-                                 {blendBounds, Use::StorageRead, TP_DEF_FWD_BINDING_BLEND_BOUNDS}};
+    std::vector<PassUse> uses = {{t.lists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
+                                 {t.depth, Use::DepthTest},
+                                 {t.bounds, Use::StorageRead, TP_DEF_FWD_BINDING_BLEND_BOUNDS}};
     if (masks.valid()) uses.push_back({masks, Use::StorageRead, TP_DEF_FWD_BINDING_MASKS});
     if (t.msaa()) {
         uses.push_back({t.hdrMsaa, Use::ColorAttachment});
@@ -33,7 +33,7 @@ void TransparentPass::plan(FrameGraph& graph, DeferredTargets& t, ResourceHandle
     graph.addPass("transparent_forward", uses, [this](PassContext& pc) { record(pc); });
 }
 
-void TransparentPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binned) {
+void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binned) {
     std::vector<ExternalBuffer> externals = {{TP_DEF_FWD_BINDING_CANDIDATES, candidates}};
     if (!masks_.valid()) {
         const uint32_t zeros[4] = {};
@@ -47,14 +47,14 @@ void TransparentPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binne
     GraphicsPipelineDesc d;
     // --msaa-shading pixel under MSAA: inputs at the pixel centre (scene_inputs.glsl), no
     // sample shading; each covered sample that passes the depth test blends the pixel's value.
-    d.fragmentShader = t_->blendedPerPixel() ? "deferred_transparent_pixel_frag" : "deferred_transparent_frag";
+    d.fragmentShader = t_.perPixel ? "deferred_transparent_pixel_frag" : "deferred_transparent_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
-    d.specConstants.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
+    d.specConstants.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
     d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
-    d.colorFormats = {t_->hdrFormat};
-    d.samples = VkSampleCountFlagBits(t_->layout.samples);
-    d.sampleShading = t_->msaa() && !t_->blendedPerPixel(); // --msaa-shading sample: every sample, as the reference
+    d.colorFormats = {t_.hdrFormat};
+    d.samples = VkSampleCountFlagBits(t_.samples);
+    d.sampleShading = t_.msaa() && !t_.perPixel; // --msaa-shading sample: every sample, as the reference
     d.depthWrite = false;
     d.blend = BlendMode::Alpha;
     d.layout = layout_;
@@ -62,9 +62,9 @@ void TransparentPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binne
     pipeline_ = createGraphicsPipeline(ctx_, d);
 }
 
-void TransparentPass::record(PassContext& pc) {
-    ColorTarget color = t_->msaa() ? ColorTarget{t_->hdrMsaa, t_->hdr, false} : ColorTarget{t_->hdr, {}, false};
-    DepthTarget depth{t_->gbufferDepth, {}, false, true};
+void BlendedForwardPass::record(PassContext& pc) {
+    ColorTarget color = t_.msaa() ? ColorTarget{t_.hdrMsaa, t_.hdr, false} : ColorTarget{t_.hdr, {}, false};
+    DepthTarget depth{t_.depth, {}, false, true};
     beginRendering(pc, {color}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0,

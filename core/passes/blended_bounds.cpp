@@ -1,4 +1,4 @@
-#include "core/lightassign/blended_bounds.h"
+#include "core/passes/blended_bounds.h"
 
 #include <cstring>
 
@@ -41,7 +41,7 @@ void BlendedBounds::prepare(FrameGraph& graph) {
     d.fragmentShader = std::string("blended_bounds") + (config_.inputsAtPixel ? "_pixel" : "") +
                        (config_.fullInterface ? "_full" : "") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
-    d.specConstants.push_back({TP_LA_BLEND_SPEC_TILE_SIZE, config_.grid.tileSize});
+    d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.grid.tileSize});
     d.samples = VkSampleCountFlagBits(config_.samples);
     d.sampleShading = config_.sampleShading;
     d.depthWrite = false;

@@ -1,4 +1,4 @@
-#include "core/lightassign/gpu_binning.h"
+#include "core/passes/light_binning.h"
 
 #include <algorithm>
 #include <cstring>

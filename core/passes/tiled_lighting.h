@@ -1,15 +1,21 @@
 #pragma once
-// Tiled deferred lighting in compute (one workgroup per tile: depth bounds, light culling
-// into shared memory, shading of the tile's pixels; per sample on MSAA edges only). Also
-// writes per-tile statistics and, for blended scenes, the transparent light lists.
+// Tiled lighting of a surface source in compute (one workgroup per tile: depth bounds, light
+// culling into shared memory, shading of the tile's pixels; per sample on MSAA edges only).
+// Also writes per-tile statistics and, for blended scenes, the transparent light lists the
+// hybrid blended pass (blended_forward.h) reads. The surface attributes come from a
+// SurfaceSource: deferred's G-buffer today; a visibility buffer adds its own source (its
+// reader and shader family) and reuses the culling, batching, lists and statistics.
 #include <memory>
+#include <string>
+#include <vector>
 
-#include "core/gpu/frame_graph.h"
-#include "deferred/deferred_targets.h"
-#include "deferred/deferred_shared.h"
 #include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
-#include "core/lightassign/gpu_binning.h"
+#include "core/passes/light_binning.h"
+#include "core/lightassign/tile_grid.h"
+#include "deferred/deferred_shared.h"
 
 namespace tp {
 
@@ -25,12 +31,35 @@ uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples);
 class GpuContext;
 class SceneGpu;
 
+// Where the lit surfaces' attributes come from. The shader family reads them through its
+// surface reader (shaders/deferred/gbuffer_read.glsl for the G-buffer) at the bindings given
+// here; the pass names the family's variants from the flags below.
+struct SurfaceSource {
+    std::string shaderFamily;          // variants FAMILY_m<M>_e<E>_t<T>_d<D>[_h16]_comp, FAMILY_lists_m<M>_comp
+    std::vector<PassUse> attributes;   // sampled images, each with its binding
+    ResourceHandle depth;              // per-sample depth: the tiles' bounds, positions from depth
+    uint32_t samples = 1;
+    bool emissive = false;             // an emissive attribute is among them
+    bool everySample = false;          // the material per sample (--msaa-shading sample): lit per sample
+    std::vector<SpecConstant> constants; // the source's own (the G-buffer's layout)
+};
+
+// What the pass writes. Invalid handles are left out: hdrMsaa (per-sample radiance, blended
+// scenes under MSAA), transparentLists (blended scenes), debug (--debug).
+struct TiledLightingTargets {
+    la::TileGrid grid;
+    ResourceHandle hdr, hdrMsaa;
+    VkFormat hdrFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    ResourceHandle tileStats, transparentLists, debug;
+    std::vector<uint32_t> listOffsets; // transparent lists: tileCount + 1 run offsets
+};
+
 class TiledLighting {
   public:
     // binned (--light-cull binned): each tile tests only its candidates (core/lightassign/light_bins.h).
     // slices > 0 (--light-assign clustered): each sample takes only its depth slice's lights.
     // gpuBinning (--light-bin resolved to gpu; binned only): pass light_binning builds the
-    // candidates every frame (core/lightassign/gpu_binning.h).
+    // candidates every frame (core/passes/light_binning.h).
     TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices, bool gpuBinning = false)
         : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices), gpuBinning_(binned && gpuBinning) {}
     ~TiledLighting();
@@ -39,9 +68,9 @@ class TiledLighting {
     // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
     // transparent lists that this pass writes for the blended pass (deferred_shared.h).
     // blendBounds (blended scenes): the blended depth bounds the transparent lists are culled
-    // against (core/lightassign/blended_bounds.h).
-    void plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly = false, ResourceHandle transparentMasks = {},
-              ResourceHandle blendBounds = {});
+    // against (core/passes/blended_bounds.h).
+    void plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t, bool listsOnly = false,
+              ResourceHandle transparentMasks = {}, ResourceHandle blendBounds = {});
     void prepare(FrameGraph& graph);
     // Binned: each tile's candidate count (per point/spot light rectangle covering it; the
     // transparent lists are sized from it too), binned once per configuration, on the CPU or
@@ -74,7 +103,9 @@ class TiledLighting {
     ResourceHandle transparentMasks_;
     uint32_t maxCandidates_ = 0; // binned: the most candidates of any tile (the batches' range)
     uint64_t candidateCount_ = 0;
-    const DeferredTargets* t_ = nullptr;
+    SurfaceSource source_;
+    TiledLightingTargets t_;
+    bool msaa() const { return source_.samples > 1; }
     PassSet set_;
     Buffer listOffsets_; // transparent lists' per-tile offsets (blended scenes)
     Buffer candidates_;  // binned culling's candidates (a 16-byte header otherwise)

@@ -1,4 +1,4 @@
-#include "deferred/tiled_lighting.h"
+#include "core/passes/tiled_lighting.h"
 
 #include <algorithm>
 
@@ -20,21 +20,18 @@ TiledLighting::~TiledLighting() {
     destroyPassSet(ctx_, set_);
 }
 
-void TiledLighting::plan(FrameGraph& graph, DeferredTargets& t, bool listsOnly, ResourceHandle transparentMasks,
-                         ResourceHandle blendBounds) {
-    t_ = &t;
+void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t,
+                         bool listsOnly, ResourceHandle transparentMasks, ResourceHandle blendBounds) {
+    source_ = source;
+    t_ = t;
     listsOnly_ = listsOnly;
     transparentMasks_ = transparentMasks;
     if (binned_) bound(t.grid, graph.owner());
     if (binning_) binning_->plan(graph); // the frame's light_binning runs before this pass
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
-    const uint32_t gbufferBindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
-                                        TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
     std::vector<PassUse> uses;
-    if (!listsOnly)
-        for (size_t i = 0; i < t.gbuffer.size(); ++i)
-            uses.push_back({t.gbuffer[i], Use::Sampled, gbufferBindings[i]});
-    uses.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+    if (!listsOnly) uses = source.attributes;
+    uses.push_back({source.depth, Use::Sampled, TP_DEF_BINDING_DEPTH});
     if (!listsOnly)
         uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_DEF_BINDING_HDR});
     uses.push_back({t.tileStats, Use::StorageWrite, TP_DEF_BINDING_TILE_STATS});
@@ -52,11 +49,12 @@ std::string TiledLighting::passName() const {
 }
 
 std::string TiledLighting::shaderName() const {
-    if (listsOnly_) return std::string("deferred_tiled_lists_m") + (t_->msaa() ? "1" : "0") + "_comp";
-    int m = !t_->msaa() ? 0 : t_->hdrMsaa.valid() ? 2 : 1;
-    return "deferred_tiled_m" + std::to_string(m) + "_e" + (t_->layout.emissive ? "1" : "0") + "_t" +
-           (t_->transparentLists.valid() ? "1" : "0") + "_d" + (t_->debug.valid() ? "1" : "0") +
-           (t_->hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : "") + "_comp";
+    const std::string& family = source_.shaderFamily;
+    if (listsOnly_) return family + "_lists_m" + (msaa() ? "1" : "0") + "_comp";
+    int m = !msaa() ? 0 : t_.hdrMsaa.valid() ? 2 : 1;
+    return family + "_m" + std::to_string(m) + "_e" + (source_.emissive ? "1" : "0") + "_t" +
+           (t_.transparentLists.valid() ? "1" : "0") + "_d" + (t_.debug.valid() ? "1" : "0") +
+           (t_.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : "") + "_comp";
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {
@@ -66,9 +64,9 @@ void TiledLighting::prepare(FrameGraph& graph) {
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
     std::vector<ExternalBuffer> externals;
-    if (t_->transparentLists.valid()) {
-        // Uploaded once per configuration: the compact layout's runs (deferred_renderer plans them).
-        listOffsets_ = createBufferWithData(ctx_, t_->listOffsets.data(), t_->listOffsets.size() * 4,
+    if (t_.transparentLists.valid()) {
+        // Uploaded once per configuration: the compact layout's runs (blended_lists.h plans them).
+        listOffsets_ = createBufferWithData(ctx_, t_.listOffsets.data(), t_.listOffsets.size() * 4,
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                             {graph.owner(), "", "transparent_list_offsets",
                                              "per tile: first slot of its transparent list (prefix sum)"});
@@ -88,10 +86,10 @@ void TiledLighting::prepare(FrameGraph& graph) {
 
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
-    spec.push_back({TP_DEF_SPEC_TILE_SIZE, t_->grid.tileSize});
-    spec.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
-    spec.push_back({TP_DEF_SPEC_SAMPLES, t_->layout.samples});
-    spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
+    spec.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
+    spec.insert(spec.end(), source_.constants.begin(), source_.constants.end());
+    spec.push_back({TP_SPEC_SAMPLES, source_.samples});
+    spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, source_.everySample ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
     // The shared slice masks: clustered shading only (tiled groups keep one word).
@@ -120,7 +118,7 @@ const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid, cons
 // directional lights, which every tile takes. Otherwise a header saying "no candidates".
 void TiledLighting::uploadCandidates(FrameGraph& graph) {
     std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
-    const uint32_t tiles = t_->grid.count();
+    const uint32_t tiles = t_.grid.count();
     if (binned_) {
         la::LightClasses classes = la::classifyLights(scene_.shadingLights());
         const la::LightBins& bins = bins_; // from plan (bound())
@@ -162,7 +160,7 @@ void TiledLighting::dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end) 
     push.TP_DEF_LIGHT_FIRST = first;
     push.TP_DEF_LIGHT_END = end;
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-    vkCmdDispatch(cmd, t_->grid.tilesX, t_->grid.tilesY, 1);
+    vkCmdDispatch(cmd, t_.grid.tilesX, t_.grid.tilesY, 1);
 }
 
 void TiledLighting::record(PassContext& pc) {
@@ -173,7 +171,7 @@ void TiledLighting::record(PassContext& pc) {
     // Binned: batches over each tile's candidates, up to the fullest tile's.
     const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();
     // Lists only: no shading loop, one dispatch whatever the light count.
-    uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_->grid.tileSize, t_->layout.samples);
+    uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_.grid.tileSize, source_.samples);
     // Clustered: the slice bitmasks of a batch fit the shared array (deferred_shared.h).
     if (slices_ > 0 && !listsOnly_) batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / slices_);
     for (uint32_t first = 0; first == 0 || first < lights; first += batch) {

@@ -1,0 +1,85 @@
+#include "core/lightassign/knobs.h"
+
+#include "core/gpu/context.h"
+
+namespace tp::la {
+
+const IntegerKnob& tileSizeKnob() {
+    // 8 to 32: one workgroup per tile within lavapipe's and every desktop GPU's limits.
+    static const IntegerKnob k{
+        Knob::integerOf("tile", {"8", "16", "32"}, "16", "Tile edge in pixels of the tiled light assignment")};
+    return k;
+}
+
+const ChoiceKnob<Assign>& lightAssignKnob() {
+    static const ChoiceKnob<Assign> k{
+        "light-assign",
+        {{Assign::Tiled, "tiled"}, {Assign::Clustered, "clustered"}},
+        "Light assignment: tiled (a list per screen tile and depth range) or clustered (tiles x "
+        "depth slices: a list per tile over its depth span, a bitmask over it per slice)"};
+    return k;
+}
+
+const IntegerKnob& slicesKnob() {
+    // Up to 64: a slice's bitmask costs one bit per light of the tile list.
+    static const IntegerKnob k{Knob::integerOf("slices", {"4", "8", "16", "32", "64"}, "16",
+                                               "Depth slices per tile of --light-assign clustered (exponential in "
+                                               "view distance)")};
+    return k;
+}
+
+const ChoiceKnob<Cull>& lightCullKnob() {
+    static const ChoiceKnob<Cull> k{
+        "light-cull",
+        {{Cull::Binned, "binned"}, {Cull::All, "all"}},
+        "Which lights a tile tests: binned (only those whose conservative tile rectangle covers it, "
+        "built as --light-bin says; cost lights + candidates) or all (every light: tiles x "
+        "lights); both keep exactly the same lists"};
+    return k;
+}
+
+const ChoiceKnob<Bin>& lightBinKnob() {
+    static const ChoiceKnob<Bin> k{
+        "light-bin",
+        {{Bin::Auto, "auto"}, {Bin::Cpu, "cpu"}, {Bin::Gpu, "gpu"}},
+        "Where --light-cull binned builds each tile's candidates: cpu (once per configuration), "
+        "gpu (every frame, timed passes light_binning: rectangles, counts, prefix sum; light_bin_fill; "
+        "light_bin_sort: each run ascending; the same runs as cpu) or auto (cpu on a CPU device "
+        "such as lavapipe, where the sort costs more than the CPU's scatter; else gpu)"};
+    return k;
+}
+
+const ChoiceKnob<Loop>& lightLoopKnob() {
+    static const ChoiceKnob<Loop> k{
+        "light-loop",
+        {{Loop::Lane, "lane"}, {Loop::Subgroup, "subgroup"}},
+        "Clustered shading loop: lane (each fragment walks its own cluster's bits) or subgroup "
+        "(lanes of one tile walk the OR of their bits together, light loads uniform; the same "
+        "image); changes nothing under --light-assign tiled"};
+    return k;
+}
+
+AssignSettings readAssignSettings(const RenderSettings& s) {
+    AssignSettings a;
+    a.tile = tileSizeKnob().in(s);
+    a.assign = lightAssignKnob().in(s);
+    a.slices = slicesKnob().in(s);
+    a.cull = lightCullKnob().in(s);
+    a.bin = lightBinKnob().in(s);
+    return a;
+}
+
+bool binsOnGpu(const GpuContext& ctx, Bin bin) {
+    return bin == Bin::Gpu || (bin == Bin::Auto && !ctx.isCpuDevice());
+}
+
+std::string subgroupLoopUnsupported(const DeviceCaps& caps) {
+    if (!(caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT))
+        return "the device has no subgroup operations in fragment shaders";
+    const uint32_t need =
+        VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
+    if ((caps.subgroupOps & need) != need) return "the device lacks subgroup vote, arithmetic or ballot operations";
+    return {};
+}
+
+} // namespace tp::la

@@ -1,0 +1,69 @@
+#pragma once
+// The light-assignment knobs of the tiled pipelines, declared once here so that Forward+ and
+// deferred share one option each with one set of values (the registry refuses two different
+// declarations of a name), and the typed settings they become (docs/clustered.md).
+#include <cstdint>
+#include <string>
+
+#include "core/render/knobs.h"
+
+namespace tp {
+class GpuContext;
+struct DeviceCaps;
+} // namespace tp
+
+namespace tp::la {
+
+// --light-assign tiled|clustered. tiled (default): a light list per screen tile (Forward+:
+// two when something is blended). clustered: tiles x depth slices; one list per tile over
+// its whole depth span plus, per slice, a bitmask over that list.
+enum class Assign { Tiled, Clustered };
+// --light-cull binned|all. binned (default): each tile tests only the lights whose
+// conservative tile rectangle covers it (tile_candidates.h); all: every tile tests every
+// light (brute force, tiles x lights), kept as the yardstick the binned lists must equal.
+enum class Cull { Binned, All };
+// --light-bin auto|cpu|gpu: where binned culling's candidate runs are built. cpu:
+// la::binLights, once per configuration (light_bins.h); gpu: the light_binning compute pass
+// every frame (core/passes/light_binning.h), after one plan-time run that sizes the buffers; auto
+// (default): cpu on a CPU device (lavapipe: the "GPU" is the same cores and the serial
+// scatter is cheapest), gpu otherwise. Meaningful only under --light-cull binned.
+enum class Bin { Auto, Cpu, Gpu };
+// --light-loop lane|subgroup (docs/clustered.md). lane (default): every fragment walks its
+// own cluster's bit row. subgroup: where every active lane of a subgroup shades the same
+// tile, the lanes walk the OR of their rows together, each adding a light only where its
+// own bit is set, so the light loads are uniform; other subgroups keep the lane loop. The
+// same lights in the same order per fragment either way: identical images.
+enum class Loop { Lane, Subgroup };
+
+const IntegerKnob& tileSizeKnob();   // --tile 8|16|32
+const ChoiceKnob<Assign>& lightAssignKnob();
+const IntegerKnob& slicesKnob();     // --slices N: depth slices per tile (clustered only)
+const ChoiceKnob<Cull>& lightCullKnob();
+const ChoiceKnob<Bin>& lightBinKnob();
+const ChoiceKnob<Loop>& lightLoopKnob();
+
+// The assignment knobs every tiled pipeline declares (tile, cull, bin, assign, slices), typed.
+struct AssignSettings {
+    uint32_t tile = 16;
+    Assign assign = Assign::Tiled;
+    uint32_t slices = 16; // read only when clustered
+    Cull cull = Cull::Binned;
+    Bin bin = Bin::Auto;
+    bool clustered() const { return assign == Assign::Clustered; }
+    bool binned() const { return cull == Cull::Binned; }
+    // Depth slices when clustered, 0 when tiled (the passes' "no slices").
+    uint32_t slicesOrZero() const { return clustered() ? slices : 0; }
+};
+// The knobs of tileSizeKnob() .. lightBinKnob() in `s` (their values checked by the schema).
+AssignSettings readAssignSettings(const RenderSettings& s);
+
+// --light-bin resolved on `ctx`: true for gpu. A run reports it (counter
+// light_binning_on_gpu), so two runs of one command on one device report the same.
+bool binsOnGpu(const GpuContext& ctx, Bin bin);
+
+// Whether the device runs the subgroup loop: vote (subgroupAllEqual), arithmetic
+// (subgroupOr) and ballot (subgroupBroadcastFirst) in the fragment stage. Empty when it
+// does; otherwise the reason, for the report's note.
+std::string subgroupLoopUnsupported(const DeviceCaps& caps);
+
+} // namespace tp::la

@@ -1,0 +1,54 @@
+#pragma once
+// The hybrid forward pass (pass "transparent_forward"): blended draws, back to front,
+// alpha-blended into hdr (into every covered sample of hdr_msaa, then resolved, under MSAA),
+// lit from the per-tile transparent light lists that tiled lighting writes
+// (tiled_lighting.h, blended_lists.h); shaded once per pixel or per sample as `perPixel`
+// says. A pipeline that shades opaque surfaces from a surface source (deferred, a
+// visibility buffer) composes it for what that source cannot hold.
+#include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/resources.h"
+#include "core/lightassign/tile_grid.h"
+
+namespace tp {
+
+// hdrMsaa valid under MSAA only; depth: the per-sample depth of the opaque surfaces (tested,
+// not written); lists: the transparent lists; bounds: the blended depth bounds.
+struct BlendedForwardTargets {
+    la::TileGrid grid;
+    uint32_t samples = 1;
+    bool perPixel = false; // under MSAA: once per pixel at the centre (--msaa-shading pixel)
+    ResourceHandle hdr, hdrMsaa, depth, lists, bounds;
+    VkFormat hdrFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    bool msaa() const { return samples > 1; }
+};
+
+class GpuContext;
+class SceneGpu;
+
+class BlendedForwardPass {
+  public:
+    BlendedForwardPass(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
+    ~BlendedForwardPass();
+    // slices > 0 with `masks` (--light-assign clustered): fragments take their cluster's
+    // lights through the slice rows the tiled pass wrote over the transparent lists.
+    // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
+    void plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices = 0, ResourceHandle masks = {});
+    // candidates: the tiled pass's light_candidates; binned: the transparent lists are
+    // bitmasks over them (deferred_shared.h: defMaskRowsBase).
+    void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);
+
+  private:
+    void record(PassContext& pc);
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    BlendedForwardTargets t_;
+    uint32_t slices_ = 0;
+    ResourceHandle masks_;
+    Buffer noMasks_; // tiled: a 16-byte stand-in for the unused slice rows
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+} // namespace tp

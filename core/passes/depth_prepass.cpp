@@ -1,0 +1,58 @@
+#include "core/passes/depth_prepass.h"
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/passes/scene_draws.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp::passes {
+
+DepthPrepass::DepthPrepass(GpuContext& ctx, const SceneGpu& scene, DepthPrepassParams params)
+    : ctx_(ctx), scene_(scene), params_(std::move(params)) {}
+
+DepthPrepass::~DepthPrepass() {
+    for (VkPipeline p : {opaque_, masked_})
+        if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+}
+
+void DepthPrepass::plan(FrameGraph& graph, DepthPrepassTargets t) {
+    t_ = t;
+    std::vector<PassUse> uses = {{t.depth, Use::DepthAttachment}};
+    if (t.resolve.valid()) uses.push_back({t.resolve, Use::DepthResolve});
+    graph.addPass("depth_prepass", uses, [this](PassContext& pc) { record(pc); });
+}
+
+void DepthPrepass::prepare() {
+    layout_ = scene_.createPipelineLayout();
+    GraphicsPipelineDesc d;
+    d.samples = VkSampleCountFlagBits(params_.samples);
+    d.layout = layout_;
+    if (!params_.opaque.empty()) {
+        d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+        opaque_ = createGraphicsPipeline(ctx_, d); // no fragment stage: depth only
+    }
+    if (!params_.masked.empty()) {
+        d.fragmentShader = "prepass_mask_frag";
+        d.sampleShading = params_.samples > 1 && params_.maskedRate == MaskedRate::Sample;
+        d.specConstants = scene_.specConstants(AlphaMode::Mask);
+        masked_ = createGraphicsPipeline(ctx_, d);
+    }
+}
+
+void DepthPrepass::record(PassContext& pc) {
+    beginRendering(pc, {}, DepthTarget{t_.depth, t_.resolve});
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    scene_.bindIndexBuffer(pc.cmd);
+    draws_ = 0;
+    for (auto [pipeline, list] : {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
+        if (!pipeline) continue;
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        for (const DrawItem* d : *list) recordSceneDraw(pc.cmd, layout_, *d);
+        draws_ += uint32_t(list->size());
+    }
+    endRendering(pc);
+}
+
+} // namespace tp::passes

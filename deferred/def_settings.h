@@ -1,0 +1,27 @@
+#pragma once
+// Deferred's knobs and the typed settings its passes read, turned from RenderSettings once in
+// the factory (register.cpp builds the schema from the same declarations).
+#include "core/lightassign/knobs.h"
+#include "core/render/knobs.h"
+#include "core/render/msaa_knob.h"
+
+namespace tp::def {
+
+enum class GBuffer { Compact, Wide };   // --gbuffer
+enum class Lighting { Tiled, Volumes }; // --deferred-lighting
+enum class Hdr { Fp32, Fp16 };          // --hdr
+
+struct Settings {
+    uint32_t width = 0, height = 0;
+    Sampling sampling;
+    bool debug = false;
+    la::AssignSettings assign;
+    GBuffer gbuffer = GBuffer::Compact;
+    Lighting lighting = Lighting::Tiled;
+    Hdr hdr = Hdr::Fp32;
+};
+
+KnobSchema knobs();
+Settings readSettings(const RenderSettings& s);
+
+} // namespace tp::def

@@ -1,0 +1,90 @@
+#include "forwardplus/forward_shading.h"
+
+#include <string>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/scene_gpu.h"
+#include "forwardplus/forwardplus_shared.h"
+
+namespace tp::fp {
+
+ForwardShading::~ForwardShading() {
+    for (VkPipeline p : pipelines_)
+        if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+// Uses with a binding are also the pass's descriptor set (prepare); both passes declare the
+// same bound uses and share one set.
+std::vector<PassUse> ForwardShading::uses(bool transparent) const {
+    const bool msaa = config_.sampling.msaa();
+    std::vector<PassUse> uses = {{msaa ? t_.hdrMsaa : t_.hdr, Use::ColorAttachment},
+                                 {msaa ? t_.depthMsaa : t_.depth, Use::DepthTest},
+                                 {t_.tiles, Use::StorageRead, TP_FP_BINDING_TILES},
+                                 {t_.indices, Use::StorageRead, TP_FP_BINDING_INDICES}};
+    if (config_.clustered) uses.push_back({t_.masks, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
+    const bool lastPass = transparent || !config_.blendPass;
+    if (msaa && lastPass) uses.push_back({t_.hdr, Use::ColorResolve});
+    return uses;
+}
+
+void ForwardShading::plan(FrameGraph& graph, const ShadingTargets& t) {
+    t_ = t;
+    graph.addPass("forward_opaque", uses(false), [this](PassContext& pc) { record(pc, false); });
+    if (config_.blendPass)
+        graph.addPass("forward_transparent", uses(true), [this](PassContext& pc) { record(pc, true); });
+}
+
+void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
+    set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, {{TP_FP_BINDING_PARAMS, params}});
+    layout_ = scene_.createPipelineLayout(set_.layout);
+    for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
+        if (!scene_.hasDraws(DrawFilter(mode))) continue;
+        GraphicsPipelineDesc d;
+        // --msaa-shading: pixel runs once per pixel at its centre (no `sample` inputs, no
+        // sample shading; the EQUAL depth test against the per-sample prepass gives each
+        // sample its coverage, masked materials included); sample shades every sample.
+        d.fragmentShader = std::string(config_.clustered ? "fp_shading_clustered" : "fp_shading") +
+                           (config_.subgroupLoop ? "_subgroup" : "") +
+                           (config_.sampling.perPixelUnderMsaa() ? "_pixel_frag" : "_frag");
+        d.colorFormats = {t_.hdrFormat};
+        d.samples = VkSampleCountFlagBits(config_.sampling.samples);
+        d.sampleShading = config_.sampling.perSample();
+        d.layout = layout_;
+        d.passSet = &set_;
+        d.depthWrite = false;
+        d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
+        d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
+        d.specConstants = scene_.specConstants(mode);
+        d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.tileSize});
+        d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
+        d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
+        if (config_.clustered) {
+            d.specConstants.push_back({TP_FP_SPEC_SLICES, config_.slices});
+            d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendPass ? 1u : 0u});
+        }
+        pipelines_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
+    }
+}
+
+void ForwardShading::record(PassContext& pc, bool transparent) {
+    const bool msaa = config_.sampling.msaa();
+    ColorTarget color;
+    color.image = msaa ? t_.hdrMsaa : t_.hdr;
+    const bool lastPass = transparent || !config_.blendPass;
+    if (msaa && lastPass) color.resolve = t_.hdr;
+    color.clear = !transparent;
+    DepthTarget depth{msaa ? t_.depthMsaa : t_.depth, {}, false, true};
+    beginRendering(pc, {color}, depth);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
+    std::vector<AlphaMode> modes = transparent ? std::vector<AlphaMode>{AlphaMode::Blend}
+                                               : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
+    for (AlphaMode mode : modes) scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
+    endRendering(pc);
+}
+
+} // namespace tp::fp

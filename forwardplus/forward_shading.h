@@ -1,0 +1,61 @@
+#pragma once
+// Forward+'s shading passes: forward_opaque (opaque and masked draws, depth EQUAL against the
+// prepass) and, when something blended is drawn, forward_transparent (blended draws back to
+// front, depth GREATER, alpha-blended), each fragment walking its tile's light list (its
+// cluster's bitmask when clustered). The last of them resolves hdr_msaa into hdr under MSAA.
+#include <vulkan/vulkan.h>
+
+#include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/render/msaa_knob.h"
+
+namespace tp {
+class GpuContext;
+class SceneGpu;
+} // namespace tp
+
+namespace tp::fp {
+
+// What the shaders' variant and constants depend on.
+struct ShadingConfig {
+    Sampling sampling;
+    uint32_t tileSize = 16;
+    uint32_t layout = 0;     // TP_FP_LAYOUT_*
+    uint32_t slices = 16;    // clustered only
+    bool twoLists = false;   // a separate transparent list per tile
+    bool clustered = false;
+    bool blendPass = false;  // blended draws are drawn: forward_transparent runs
+    bool subgroupLoop = false;
+};
+
+// hdr: the single-sample output; hdrMsaa/depthMsaa valid under MSAA only; depth: the
+// prepass's single-sample depth at 1x. tiles, indices, masks (clustered): the light lists.
+struct ShadingTargets {
+    ResourceHandle hdr, hdrMsaa, depth, depthMsaa, tiles, indices, masks;
+    VkFormat hdrFormat = VK_FORMAT_UNDEFINED;
+};
+
+class ForwardShading {
+  public:
+    ForwardShading(GpuContext& ctx, const SceneGpu& scene, ShadingConfig config)
+        : ctx_(ctx), scene_(scene), config_(config) {}
+    ~ForwardShading();
+    ForwardShading(const ForwardShading&) = delete;
+    ForwardShading& operator=(const ForwardShading&) = delete;
+    void plan(FrameGraph& graph, const ShadingTargets& t);
+    // params: fp_params (uploaded once, outside the graph).
+    void prepare(FrameGraph& graph, VkBuffer params);
+
+  private:
+    std::vector<PassUse> uses(bool transparent) const;
+    void record(PassContext& pc, bool transparent);
+    GpuContext& ctx_;
+    const SceneGpu& scene_;
+    ShadingConfig config_;
+    ShadingTargets t_;
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipelines_[3] = {}; // by AlphaMode
+};
+
+} // namespace tp::fp

@@ -1,0 +1,23 @@
+#pragma once
+// Multipass forward's knobs and the typed settings its passes read (register.cpp builds the
+// schema from the same declarations).
+#include "core/render/knobs.h"
+#include "core/render/msaa_knob.h"
+
+namespace tp::mp {
+
+enum class Accum { Fp32, Fp16 };                      // --accum
+enum class BlendedLights { Under, Additive, OnePass }; // --blended-lights
+
+struct Settings {
+    uint32_t width = 0, height = 0;
+    Sampling sampling;
+    Accum accum = Accum::Fp32;
+    BlendedLights blendedLights = BlendedLights::Under;
+};
+
+KnobSchema knobs();
+Settings readSettings(const RenderSettings& s);
+const ChoiceKnob<BlendedLights>& blendedLightsKnob();
+
+} // namespace tp::mp
