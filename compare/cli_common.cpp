@@ -13,6 +13,7 @@
 #include "core/render/camera_file.h"
 #include "core/image/tonemap.h"
 #include "core/render/renderer.h"
+#include "core/render/view_settings.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/procedural.h"
 
@@ -80,19 +81,6 @@ LightGenOptions lightOptions(const SceneOptions& o) {
         std::tie(g.intensityMin, g.intensityMax) =
             parseRange(o.lightIntensity, "--light-intensity", kMaxLightIntensity);
     return g;
-}
-
-// WIDTHxHEIGHT, digits only (sscanf's %u would take "-8", " 8" and wrap 2^32+8 to 8).
-bool parseResolution(const std::string& text, uint32_t& w, uint32_t& h) {
-    const size_t x = text.find_first_of("xX");
-    auto side = [](const std::string& digits, uint32_t& out) {
-        if (digits.empty() || digits.size() > 9) return false;
-        for (char c : digits)
-            if (c < '0' || c > '9') return false;
-        out = uint32_t(std::stoul(digits));
-        return true;
-    };
-    return x != std::string::npos && side(text.substr(0, x), w) && side(text.substr(x + 1), h);
 }
 
 } // namespace
@@ -240,7 +228,7 @@ std::string knobHelp(const KnobReaders& k, bool list) {
 void checkKnobs(const std::map<std::string, std::string>& values, bool sweep) {
     for (const KnobReaders& k : allKnobs()) {
         if (sweep && k.knob.sweepable) continue; // a list: runSweep checks each value
-        if (Status st = k.knob.check(k.knob.valueIn(values)); !st) throw UsageError(st.error());
+        if (Status st = checkSetting(k.knob.name, k.knob.valueIn(values)); !st) throw UsageError(st.error());
     }
 }
 
@@ -252,8 +240,7 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
     if (w == 0 || h == 0 || w > maxDim || h > maxDim)
         throw UsageError("--res " + v.resolution + ": each side must be between 1 and " +
                          std::to_string(maxDim) + " on " + ctx.info.name);
-    if (v.msaa != 1 && v.msaa != 2 && v.msaa != 4 && v.msaa != 8)
-        throw UsageError("--msaa " + std::to_string(v.msaa) + ": must be 1, 2, 4 or 8");
+    if (Status ok = checkSetting(kMsaaSetting, std::to_string(v.msaa)); !ok) throw UsageError(ok.error());
     if (Status ok = checkSampleCount(ctx, uint32_t(v.msaa)); !ok) throw UsageError(ok.error());
     s.width = w;
     s.height = h;

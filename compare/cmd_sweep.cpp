@@ -20,6 +20,7 @@
 #include "core/image/tonemap.h"
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
+#include "core/render/view_settings.h"
 #include "core/util/files.h"
 
 namespace tp::cli {
@@ -56,7 +57,7 @@ void checkKnobLists(const SweepOptions& o) {
     for (const KnobReaders& k : allKnobs()) {
         if (!k.knob.sweepable) continue;
         for (const std::string& v : knobValues(o, k.knob))
-            if (Status s = k.knob.check(v); !s) throw UsageError(s.error());
+            if (Status s = checkSetting(k.knob.name, v); !s) throw UsageError(s.error());
     }
 }
 
