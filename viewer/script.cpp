@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/cli/scene_input.h"
 #include "core/image/image_io.h"
 #include "core/render/renderer.h"
 #include "core/render/view_settings.h"

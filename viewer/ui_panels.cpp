@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
 #include "core/render/view_settings.h"

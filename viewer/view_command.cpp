@@ -7,8 +7,10 @@
 
 #include <imgui.h>
 
-#include "compare/cli_common.h"
-#include "compare/commands.h"
+#include "viewer/view_command.h"
+
+#include "core/cli/options.h"
+#include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/view_settings.h"
 #include "viewer/view_loop.h"

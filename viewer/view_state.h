@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "compare/cli_common.h"
+#include "core/cli/options.h"
 #include "core/scene/scene.h"
 
 namespace tp::view {
