@@ -13,12 +13,6 @@
 namespace tp::cli {
 namespace {
 
-double counter(const RunResult& run, const std::string& name, double fallback) {
-    for (const auto& [k, v] : run.stats.counters)
-        if (k == name) return v;
-    return fallback;
-}
-
 nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool isReference) {
     nlohmann::json j;
     j["name"] = p.name;
@@ -30,7 +24,7 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
     }
     j["run"] = runJson(*p.run, ctx);
     // Pipelines that cannot drop a light do not count drops: 0 for them.
-    j["lights_dropped"] = counter(*p.run, "lights_dropped", 0.0);
+    j["lights_dropped"] = counterValue(*p.run, "lights_dropped");
     if (!isReference) {
         j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)},
                                    {"tonemapped", metricsJson(p.display)},
