@@ -14,7 +14,6 @@
 #include "compare/report_html.h"
 #include "compare/report_json.h"
 #include "core/reference/reference_renderer.h"
-#include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
 #include "core/image/flip.h"
 #include "core/image/image_io.h"
@@ -72,14 +71,10 @@ PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& n
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
-    try {
-        Result<RunResult> result =
-            runRenderer(ctx, scene, *entry, r.features, r.settings, progressRunOptions(name, r.options->warmup, r.options->frames));
-        if (result) p.run = std::move(*result);
-        else p.error = result.error();
-    } catch (const GpuError& e) {
-        p.error = std::string("Vulkan error: ") + e.what();
-    }
+    Result<RunResult> result = tryRunRenderer(ctx, scene, *entry, r.features, r.settings,
+                                              progressRunOptions(name, r.options->warmup, r.options->frames));
+    if (result) p.run = std::move(*result);
+    else p.error = result.error();
     std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
     if (p.run) std::fprintf(stderr, "triptych: %s %s done in %.1f s\n", label.c_str(), name.c_str(), took.count());
     else std::fprintf(stderr, "triptych: %s %s FAILED: %s\n", label.c_str(), name.c_str(), p.error.c_str());
@@ -205,10 +200,7 @@ void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, cons
         PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, label);
         if (p.run) {
             writeImages(r.options->out, p, r.exposureEv);
-            double dropped = 0;
-            for (const auto& [k, v] : p.run->stats.counters)
-                if (k == "lights_dropped") dropped = v;
-            if (dropped > 0)
+            if (const double dropped = counterValue(*p.run, "lights_dropped"); dropped > 0)
                 std::fprintf(stderr, "triptych: warning: %s dropped %.0f lights (see its counters)\n",
                              p.name.c_str(), dropped);
         }

@@ -6,9 +6,8 @@
 
 #include "compare/cli_common.h"
 #include "compare/commands.h"
-#include "core/gpu/frame_graph.h"
 #include "core/render/camera_file.h"
-#include "core/render/renderer.h"
+#include "core/render/frame_runner.h"
 #include "core/render/scene_gpu.h"
 
 namespace tp::cli {
@@ -53,28 +52,19 @@ void printScene(const Scene& s, const SceneFeatures& f) {
 
 void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, const SceneFeatures& f,
                const RenderSettings& settings) {
-    scene.setView(settings.width, settings.height, settings.msaa);
     std::printf("\nPipeline %s: %s\n", entry.name.c_str(), entry.description.c_str());
-    RenderSettings resolved = settings;
-    resolveKnobs(entry.knobs, resolved);
+    // The values were checked by the CLI (checkKnobs); planRenderer checks them once more on
+    // the way to the renderer, as for every run.
     for (const Knob& k : entry.knobs)
-        std::printf("  --%s %s  (%s)\n", k.name.c_str(), resolved.text(k.name).c_str(), k.allowedText().c_str());
-    std::unique_ptr<Renderer> r;
-    FrameGraph graph(ctx, entry.name, settings.width, settings.height);
-    try {
-        r = createRenderer(entry, {ctx, scene, f, settings});
-        r->plan(graph);
-        graph.compile();
-    } catch (const RendererError& e) {
-        std::printf("  cannot be built here: %s\n", e.what());
-        return;
-    } catch (const GraphError& e) { // a declaration mistake: that pipeline only, as in the frame runner
-        std::printf("  cannot be built here: %s\n", e.what());
+        std::printf("  --%s %s  (%s)\n", k.name.c_str(), k.valueIn(settings.knobs).c_str(), k.allowedText().c_str());
+    Result<PlannedRenderer> planned = planRenderer(ctx, scene, entry, f, settings);
+    if (!planned) { // that pipeline only, as in a run
+        std::printf("  cannot be built here: %s\n", planned.error().c_str());
         return;
     }
     std::printf("  passes:");
-    for (const std::string& p : graph.livePasses()) std::printf(" %s", p.c_str());
-    for (const std::string& p : graph.culledPasses()) std::printf(" (%s: culled, output unused)", p.c_str());
+    for (const std::string& p : planned->graph->livePasses()) std::printf(" %s", p.c_str());
+    for (const std::string& p : planned->graph->culledPasses()) std::printf(" (%s: culled, output unused)", p.c_str());
     std::printf("\n");
     uint64_t total = 0;
     for (const LedgerEntry& e : ctx.ledger.entriesOf(entry.name)) {
@@ -84,7 +74,7 @@ void printPlan(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry, con
     }
     std::printf("  total %llu bytes (%.2f bytes/pixel)\n", (unsigned long long)total,
                 double(total) / (double(settings.width) * settings.height));
-    for (const LeftOut& l : r->stats().leftOut) std::printf("  left out: %s (%s)\n", l.what.c_str(), l.why.c_str());
+    for (const LeftOut& l : planned->renderer->stats().leftOut) std::printf("  left out: %s (%s)\n", l.what.c_str(), l.why.c_str());
 }
 
 int run(InfoOptions& o) {

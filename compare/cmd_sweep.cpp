@@ -16,10 +16,10 @@
 #include "compare/sweep.h"
 #include "compare/sweep_output.h"
 #include "core/reference/reference_renderer.h"
-#include "core/gpu/vk_check.h"
 #include "core/image/tonemap.h"
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
+#include "core/render/view_settings.h"
 #include "core/util/files.h"
 
 namespace tp::cli {
@@ -56,7 +56,7 @@ void checkKnobLists(const SweepOptions& o) {
     for (const KnobReaders& k : allKnobs()) {
         if (!k.knob.sweepable) continue;
         for (const std::string& v : knobValues(o, k.knob))
-            if (Status s = k.knob.check(v); !s) throw UsageError(s.error());
+            if (Status s = checkSetting(k.knob.name, v); !s) throw UsageError(s.error());
     }
 }
 
@@ -103,8 +103,7 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
     row.run = runJson(r, ctx);
     row.bytes = row.run["memory"]["total_bytes"].get<uint64_t>();
     row.bytesPerPixel = row.run["memory"]["bytes_per_pixel"].get<double>();
-    for (const auto& [k, v] : r.stats.counters)
-        if (k == "lights_dropped") row.dropped = v;
+    row.dropped = counterValue(r, "lights_dropped");
     if (ref.run && name != kReferenceRenderer) {
         MetricsOptions hdr;
         hdr.psnrPeak = ref.peak;
@@ -151,11 +150,7 @@ struct Progress {
 
 Result<RunResult> runOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const SceneFeatures& features,
                          const RenderSettings& s, const RunOptions& ro) {
-    try {
-        return runRenderer(ctx, scene, **findRenderer(name), features, s, ro);
-    } catch (const GpuError& e) {
-        return Error{std::string("Vulkan error: ") + e.what()};
-    }
+    return tryRunRenderer(ctx, scene, **findRenderer(name), features, s, ro);
 }
 
 // Under MSAA (unless --no-center-reference): the reference once more with --reference-msaa

@@ -1,15 +1,14 @@
 #pragma once
-// Each triptych command adds its subcommand to the app and returns the function that runs
-// it (the exit code). compare/main.cpp wires them together and catches errors.
-#include <functional>
+// The compare-side commands: each adds its subcommand to the app and returns the function
+// that runs it (core/cli/command.h). app/main.cpp wires them together and catches errors.
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-namespace tp::cli {
+#include "core/cli/command.h"
 
-using CommandRunner = std::function<int()>;
+namespace tp::cli {
 
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addInfoCommand(CLI::App& app);
@@ -17,7 +16,5 @@ CommandRunner addInfoCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLine);
-// viewer/view_command.cpp: the interactive viewer (commandLine: to find this program for export).
-CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine);
 
 } // namespace tp::cli

@@ -13,12 +13,6 @@
 namespace tp::cli {
 namespace {
 
-double counter(const RunResult& run, const std::string& name, double fallback) {
-    for (const auto& [k, v] : run.stats.counters)
-        if (k == name) return v;
-    return fallback;
-}
-
 nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool isReference) {
     nlohmann::json j;
     j["name"] = p.name;
@@ -30,7 +24,7 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
     }
     j["run"] = runJson(*p.run, ctx);
     // Pipelines that cannot drop a light do not count drops: 0 for them.
-    j["lights_dropped"] = counter(*p.run, "lights_dropped", 0.0);
+    j["lights_dropped"] = counterValue(*p.run, "lights_dropped");
     if (!isReference) {
         j["error_vs_reference"] = {{"hdr", metricsJson(p.hdr)},
                                    {"tonemapped", metricsJson(p.display)},
@@ -139,20 +133,6 @@ std::string shellJoin(const std::vector<std::string>& args) {
         out += plain ? a : quoted + "'";
     }
     return out;
-}
-
-float differencePercentile99(const ImageRGBA& signedDiff) {
-    std::vector<float> values;
-    values.reserve(signedDiff.pixelCount());
-    for (size_t i = 0; i < signedDiff.pixelCount(); ++i) {
-        const float* px = &signedDiff.rgba[i * 4];
-        float m = std::max({std::abs(px[0]), std::abs(px[1]), std::abs(px[2])});
-        if (std::isfinite(m)) values.push_back(m);
-    }
-    if (values.empty()) return 0.0f;
-    size_t k = std::min(values.size() - 1, size_t(std::ceil(0.99 * double(values.size()))) - 1);
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
-    return values[k];
 }
 
 std::string hashFile(const std::string& path) {

@@ -10,6 +10,7 @@
 #include "compare/compare.h"
 #include "compare/flip_measure.h"
 #include "compare/scene_hash.h"
+#include "core/cli/difference_scale.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
 #include "core/render/frame_runner.h"
@@ -63,9 +64,6 @@ struct CompareRecord {
 
 nlohmann::json reportJson(const CompareRecord& r);
 
-// 99th percentile of the per-pixel max-channel |value| of a signed difference image
-// (non-finite pixels ignored); 0 for an empty image.
-float differencePercentile99(const ImageRGBA& signedDiff);
 // argv as one string a POSIX shell splits back into the same words.
 std::string shellJoin(const std::vector<std::string>& args);
 // FNV-1a 64 of a file's bytes as 16 hex digits; empty when it cannot be read.

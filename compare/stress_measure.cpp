@@ -10,13 +10,7 @@
 namespace tp::cli {
 namespace {
 
-double counter(const RunResult& run, const std::string& name, double fallback) {
-    for (const auto& [k, v] : run.stats.counters)
-        if (k == name) return v;
-    return fallback;
-}
-
-bool hasCounter(const RunResult& run, const std::string& name) { return !std::isnan(counter(run, name, NAN)); }
+bool hasCounter(const RunResult& run, const std::string& name) { return !std::isnan(counterValue(run, name, NAN)); }
 
 bool fp16Hdr(const RunResult& run) {
     for (const LedgerEntry& e : run.memory)
@@ -92,7 +86,7 @@ double hdrBeyondBound(const ErrorBound& b, const ImageRGBA& checked, const Image
 // deferred_hdr_test count blended layers.
 void addBlendedTerm(ErrorBound& b, const stress::StressCase& c, const StressOutcome& p) {
     if (c.blendedLayers == 0) return;
-    const double layers = c.blendedLayers, blends = layers + counter(*p.run, "blended_light_draws", 0);
+    const double layers = c.blendedLayers, blends = layers + counterValue(*p.run, "blended_light_draws", 0);
     const std::string count = std::to_string(int64_t(blends)) + " blends per pixel at most (" +
                               std::to_string(c.blendedLayers) + " layers + blended_light_draws)";
     b.terms.push_back({"blended layers: fp32 blend arithmetic", 4.0 * (blends + layers) * kUlp32, 0,
@@ -145,7 +139,7 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
         entry.stressedCounters ? entry.stressedCounters({*r.c, scene, settings}) : std::vector<stress::CounterAtLeast>{};
     for (const stress::CounterAtLeast& s : stressed) {
         if (!hasCounter(*p.run, s.counter)) continue;
-        const double v = counter(*p.run, s.counter, 0);
+        const double v = counterValue(*p.run, s.counter, 0);
         p.checks.push_back({"stressed: " + s.counter, v >= s.atLeast, v, s.atLeast, s.why});
     }
 }
@@ -186,7 +180,7 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
     countNonFinite(p.run->hdr, p.nanPixels, p.infPixels);
     p.fp16Storage = fp16Hdr(*p.run);
-    p.lightsDropped = counter(*p.run, "lights_dropped", 0);
+    p.lightsDropped = counterValue(*p.run, "lights_dropped", 0);
     p.depthMismatch = depthMismatch(p.run->depth, reference.run->depth);
     const RendererEntry& entry = **findRenderer(p.name);
     RenderSettings settings = r.settings; // as the run saw it: its knobs' defaults filled in (it ran, so they are valid)

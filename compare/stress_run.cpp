@@ -15,7 +15,6 @@
 #include "compare/stress_report.h"
 #include "compare/svg_plot.h"
 #include "core/reference/reference_renderer.h"
-#include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
@@ -36,14 +35,10 @@ StressOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& nam
     RunOptions once;
     once.warmupFrames = 0;
     once.timedFrames = 1;
-    try {
-        Result<RunResult> result =
-            runRenderer(ctx, scene, **findRenderer(name), analyzeScene(cpuScene, settings.msaa), settings, once);
-        if (result) p.run = std::move(*result);
-        else p.error = result.error();
-    } catch (const GpuError& e) {
-        p.error = std::string("Vulkan error: ") + e.what();
-    }
+    Result<RunResult> result =
+        tryRunRenderer(ctx, scene, **findRenderer(name), analyzeScene(cpuScene, settings.msaa), settings, once);
+    if (result) p.run = std::move(*result);
+    else p.error = result.error();
     return p;
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "compare/report_json.h"
+#include "core/cli/difference_scale.h"
 #include "core/image/difference.h"
 #include "core/image/tonemap.h"
 
@@ -55,7 +55,7 @@ void composeDifference(const CompositeInput& in, Composite& out) {
     }
     ImageRGBA diff = signedDifference(*in.a, *in.b);
     // compare's rule (docs/report.md): the 99th percentile of max-channel |diff|, 1e-6 when 0.
-    out.diffScale = cli::differencePercentile99(diff);
+    out.diffScale = differencePercentile99(diff);
     if (!(out.diffScale > 0.0f)) out.diffScale = 1e-6f;
     ImageRGBA map = heatMap(diff, out.diffScale, kLegendHeight);
     blit(map, out, out.height, 0, out.width);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/cli/scene_input.h"
 #include "core/render/scene_gpu.h"
 #include "core/scene/lights.h"
 

@@ -8,8 +8,10 @@
 #include <map>
 #include <sstream>
 
+#include "core/cli/scene_input.h"
 #include "core/image/image_io.h"
 #include "core/render/renderer.h"
+#include "core/render/view_settings.h"
 #include "core/util/files.h"
 #include "viewer/keys.h"
 #include "viewer/viewer_app.h"
@@ -57,7 +59,6 @@ float number(const std::string& text, bool& ok) {
     ok = end && *end == '\0' && !text.empty() && std::isfinite(v);
     return v;
 }
-
 
 } // namespace
 
@@ -167,85 +168,111 @@ std::string ScriptRunner::inOut(const std::string& file) const {
     return !file.empty() && file[0] == '/' ? file : out_ + "/" + file;
 }
 
+float ScriptRunner::numberAt(const ScriptLine& line, size_t i) const {
+    bool ok = true;
+    const float v = number(line.words[i], ok);
+    if (!ok) fail(line, "'" + line.words[i] + "' is not a number");
+    return v;
+}
+
+// Counts and seeds are read as integers: through float a seed above 2^24 would change.
+uint64_t ScriptRunner::integerAt(const ScriptLine& line, size_t i, uint64_t lo, uint64_t hi) const {
+    const std::string& word = line.words[i];
+    uint64_t v = 0;
+    auto [end, err] = std::from_chars(word.data(), word.data() + word.size(), v);
+    if (err != std::errc() || end != word.data() + word.size() || v < lo || v > hi)
+        fail(line, "'" + word + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+    return v;
+}
+
 void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line) {
+    const std::string& cmd = line.words[0];
+    if (cmd == "pipeline" || cmd == "knob" || cmd == "lights" || cmd == "msaa" || cmd == "res" || cmd == "exposure")
+        applyViewSetting(app, line);
+    else if (cmd == "camera") applyCamera(app, line);
+    else if (cmd == "wait" || cmd == "frames" || cmd == "screenshot" || cmd == "stats" || cmd == "export" ||
+             cmd == "bench" || cmd == "expect-error")
+        applyWaitOrOutput(app, line);
+    else applyDisplay(app, mouse, line);
+}
+
+// What the image depends on: a change here renders again. Each value is checked as the
+// command line checks it (checkSetting, generatorOptions), with the same one-line errors.
+void ScriptRunner::applyViewSetting(ViewerApp& app, const ScriptLine& line) {
     const std::vector<std::string>& w = line.words;
     const std::string& cmd = w[0];
     ViewState& s = app.state();
-    bool ok = true;
-    auto num = [&](size_t i) {
-        float v = number(w[i], ok);
-        if (!ok) fail(line, "'" + w[i] + "' is not a number");
-        return v;
-    };
-    // Counts and seeds are read as integers: through float a seed above 2^24 would change.
-    auto integer = [&](size_t i, uint64_t lo, uint64_t hi) {
-        uint64_t v = 0;
-        const char* b = w[i].data();
-        const char* e = b + w[i].size();
-        auto [end, err] = std::from_chars(b, e, v);
-        if (err != std::errc() || end != e || v < lo || v > hi)
-            fail(line, "'" + w[i] + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
-        return v;
-    };
     if (cmd == "pipeline") {
         if (w[1] != "a" && w[1] != "b") fail(line, "expected 'pipeline a|b NAME'");
         if (Result<const RendererEntry*> e = findRenderer(w[2]); !e) fail(line, e.error());
         (w[1] == "a" ? s.pipelineA : s.pipelineB) = w[2];
     } else if (cmd == "knob") {
-        bool found = false;
-        for (const KnobReaders& k : allKnobs())
-            if (k.knob.name == w[1]) {
-                if (Status c = k.knob.check(w[2]); !c) fail(line, c.error());
-                found = true;
-            }
-        if (!found) fail(line, "no pipeline has a knob '" + w[1] + "'");
+        if (Status c = checkSetting(w[1], w[2]); !c) fail(line, c.error());
         s.knobs[w[1]] = w[2];
     } else if (cmd == "lights") {
-        cli::SceneOptions o = s.scene;
-        if (w[1] == "count") o.lightCount = int(integer(2, 0, 1u << 30));
-        else if (w[1] == "seed") o.seed = integer(2, 0, UINT64_MAX);
-        else if (w[1] == "types") o.lightTypes = w[2];
-        else if (w[1] == "range") o.lightRadius = w[2];
-        else if (w[1] == "intensity") o.lightIntensity = w[2];
-        else fail(line, "expected 'lights count|seed|types|range|intensity VALUE'");
-        try {
-            (void)cli::generatorOptions(o);
-        } catch (const std::exception& e) {
-            fail(line, e.what());
-        }
-        s.scene = o;
+        applyLights(app, line);
     } else if (cmd == "msaa") {
-        uint32_t n = uint32_t(integer(1, 1, 8));
-        if (n != 1 && n != 2 && n != 4 && n != 8) fail(line, "msaa must be 1, 2, 4 or 8");
+        if (Status c = checkSetting(kMsaaSetting, w[1]); !c) fail(line, c.error());
+        const uint32_t n = uint32_t(std::stoul(w[1]));
         // The panel greys such a count out; a script is refused with the same reason.
         if (!app.supportsMsaa(n)) fail(line, "msaa " + w[1] + ": not supported by " + app.deviceName());
         s.msaa = n;
     } else if (cmd == "res") {
-        unsigned rw = 0, rh = 0;
-        if (std::sscanf(w[1].c_str(), "%ux%u", &rw, &rh) != 2 || rw < 8 || rh < 8 || rw > 8192 || rh > 8192)
-            fail(line, "expected 'res WIDTHxHEIGHT', each side 8 to 8192");
-        s.width = rw, s.height = rh;
+        if (!parseViewResolution(w[1], s.width, s.height))
+            fail(line, "expected 'res WIDTHxHEIGHT', each side " + std::to_string(kViewMinSide) + " to " +
+                           std::to_string(kViewMaxSide));
     } else if (cmd == "exposure") {
         s.autoExposure = w[1] == "auto";
-        if (!s.autoExposure) s.exposureEv = num(1);
-    } else if (cmd == "camera") {
-        if (!app.sceneLoaded()) { // a move needs the scene's camera: run this line again next frame
-            if (!app.lastError().empty() && app.settled()) fail(line, "no scene to move in: " + app.lastError());
-            double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
-            if (waited > waitLimit_) fail(line, "the scene did not load in " + std::to_string(int(waitLimit_)) + " s");
-            --next_;
-            wait_ = Wait::Frames, framesLeft_ = 1;
-            return;
-        }
-        if (w[1] == "reset") app.resetCamera();
-        else if (w[1] == "move" && w.size() == 5) app.moveCamera(num(2), num(3), num(4));
-        else if (w[1] == "orbit" && w.size() == 4) app.orbitCamera(num(2), num(3));
-        else if (w[1] == "turn" && w.size() == 4) app.turnCamera(num(2), num(3));
-        else if (w[1] == "load" && w.size() == 3) app.loadBookmark(inOut(w[2]));
-        else if (w[1] == "save" && w.size() == 3) app.saveBookmark(inOut(w[2]));
-        else fail(line, std::string("expected '") + commands().at("camera").usage + "'");
-        if (!app.lastError().empty()) fail(line, app.lastError());
-    } else if (cmd == "split") {
+        if (!s.autoExposure) s.exposureEv = numberAt(line, 1);
+    }
+}
+
+void ScriptRunner::applyLights(ViewerApp& app, const ScriptLine& line) {
+    const std::vector<std::string>& w = line.words;
+    cli::SceneOptions o = app.state().scene;
+    if (w[1] == "count") o.lightCount = int(integerAt(line, 2, 0, 1u << 30));
+    else if (w[1] == "seed") o.seed = integerAt(line, 2, 0, UINT64_MAX);
+    else if (w[1] == "types") o.lightTypes = w[2];
+    else if (w[1] == "range") o.lightRadius = w[2];
+    else if (w[1] == "intensity") o.lightIntensity = w[2];
+    else fail(line, "expected 'lights count|seed|types|range|intensity VALUE'");
+    try {
+        (void)cli::generatorOptions(o);
+    } catch (const std::exception& e) {
+        fail(line, e.what());
+    }
+    app.state().scene = o;
+}
+
+void ScriptRunner::applyCamera(ViewerApp& app, const ScriptLine& line) {
+    const std::vector<std::string>& w = line.words;
+    if (!app.sceneLoaded()) { // a move needs the scene's camera: run this line again next frame
+        if (!app.lastError().empty() && app.settled()) fail(line, "no scene to move in: " + app.lastError());
+        double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+        if (waited > waitLimit_) fail(line, "the scene did not load in " + std::to_string(int(waitLimit_)) + " s");
+        --next_;
+        wait_ = Wait::Frames, framesLeft_ = 1;
+        return;
+    }
+    auto num = [&](size_t i) { return numberAt(line, i); };
+    if (w[1] == "reset") app.resetCamera();
+    else if (w[1] == "move" && w.size() == 5) app.moveCamera(num(2), num(3), num(4));
+    else if (w[1] == "orbit" && w.size() == 4) app.orbitCamera(num(2), num(3));
+    else if (w[1] == "turn" && w.size() == 4) app.turnCamera(num(2), num(3));
+    else if (w[1] == "load" && w.size() == 3) app.loadBookmark(inOut(w[2]));
+    else if (w[1] == "save" && w.size() == 3) app.saveBookmark(inOut(w[2]));
+    else fail(line, std::string("expected '") + commands().at("camera").usage + "'");
+    if (!app.lastError().empty()) fail(line, app.lastError());
+}
+
+// Display only (no render) and the user's hands: split, flip, mode, mouse, keys, the
+// reference switch, the scene.
+void ScriptRunner::applyDisplay(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line) {
+    const std::vector<std::string>& w = line.words;
+    const std::string& cmd = w[0];
+    ViewState& s = app.state();
+    auto num = [&](size_t i) { return numberAt(line, i); };
+    if (cmd == "split") {
         float v = num(1);
         if (v < 0.0f || v > 1.0f) fail(line, "split must be between 0 and 1");
         app.setSplit(v);
@@ -274,10 +301,17 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
     } else if (cmd == "scene") {
         s.scene.scene = w[1];
         s.cameraFromScene = true;
-    } else if (cmd == "wait") {
+    }
+}
+
+// Lines that wait for frames or write files.
+void ScriptRunner::applyWaitOrOutput(ViewerApp& app, const ScriptLine& line) {
+    const std::vector<std::string>& w = line.words;
+    const std::string& cmd = w[0];
+    if (cmd == "wait") {
         wait_ = Wait::Settled, framesLeft_ = 2;
     } else if (cmd == "frames") {
-        wait_ = Wait::Frames, framesLeft_ = int(integer(1, 1, 100000));
+        wait_ = Wait::Frames, framesLeft_ = int(integerAt(line, 1, 1, 100000));
     } else if (cmd == "screenshot") {
         screenshotFile_ = inOut(w[1]);
         wait_ = Wait::Screenshot, framesLeft_ = screenshots_ ? 3 : 1;
@@ -288,7 +322,7 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         if (!app.lastError().empty()) fail(line, app.lastError());
         wait_ = Wait::Export;
     } else if (cmd == "bench") {
-        benchTotal_ = benchLeft_ = int(integer(1, 1, 100000));
+        benchTotal_ = benchLeft_ = int(integerAt(line, 1, 1, 100000));
         benchFile_ = inOut(w[2]);
         benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear();
         benchRecordDue_ = false;

@@ -50,7 +50,17 @@ class ScriptRunner {
   private:
     enum class Wait { None, Frames, Settled, Screenshot, Export, Drag, Bench };
     bool blocked() const { return wait_ != Wait::None; }
+    // One line, by what it touches: the view's settings, the camera, the display and the
+    // mouse, or the waits and outputs.
     void apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line);
+    void applyViewSetting(ViewerApp& app, const ScriptLine& line);
+    void applyLights(ViewerApp& app, const ScriptLine& line);
+    void applyCamera(ViewerApp& app, const ScriptLine& line);
+    void applyDisplay(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line);
+    void applyWaitOrOutput(ViewerApp& app, const ScriptLine& line);
+    // Word i of the line as a finite number, or an integer in [lo, hi]; fail() otherwise.
+    float numberAt(const ScriptLine& line, size_t i) const;
+    uint64_t integerAt(const ScriptLine& line, size_t i, uint64_t lo, uint64_t hi) const;
     bool stillWaiting(ViewerApp& app, ScriptMouse& mouse);
     [[noreturn]] void fail(const ScriptLine& line, const std::string& message) const;
     void writeStats(ViewerApp& app, const std::string& file) const;

@@ -7,8 +7,10 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
+#include "core/render/view_settings.h"
 #include "viewer/viewer_app.h"
 
 namespace tp::view {
@@ -110,7 +112,7 @@ void Panels::view(ViewerApp& app) {
     if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
     // MSAA: every count is listed; the device's unsupported ones are greyed with the reason.
     if (ImGui::BeginCombo("MSAA", (std::to_string(s.msaa) + "x").c_str())) {
-        for (uint32_t n : {1u, 2u, 4u, 8u}) {
+        for (uint32_t n : kMsaaCounts) {
             const bool supported = (app.sampleCounts_ & n) != 0;
             std::string label = std::to_string(n) + "x" + (supported ? "" : "  (not supported by " + app.deviceName_ + ")");
             ImGuiSelectableFlags flags = supported ? 0 : ImGuiSelectableFlags_Disabled;
@@ -120,9 +122,9 @@ void Panels::view(ViewerApp& app) {
     }
     int size[2] = {int(app.draft_.width), int(app.draft_.height)};
     ImGui::InputInt2("resolution", size);
-    uint32_t maxDim = std::min<uint32_t>(app.ui_.caps.maxImageDimension2D, 8192);
-    app.draft_.width = uint32_t(std::clamp(size[0], 8, int(maxDim)));
-    app.draft_.height = uint32_t(std::clamp(size[1], 8, int(maxDim)));
+    uint32_t maxDim = std::min<uint32_t>(app.ui_.caps.maxImageDimension2D, kViewMaxSide);
+    app.draft_.width = uint32_t(std::clamp(size[0], int(kViewMinSide), int(maxDim)));
+    app.draft_.height = uint32_t(std::clamp(size[1], int(kViewMinSide), int(maxDim)));
     ImGui::SameLine();
     if (ImGui::Button("apply##res")) {
         s.width = app.draft_.width;

@@ -7,9 +7,12 @@
 
 #include <imgui.h>
 
-#include "compare/cli_common.h"
-#include "compare/commands.h"
+#include "viewer/view_command.h"
+
+#include "core/cli/options.h"
+#include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
+#include "core/render/view_settings.h"
 #include "viewer/view_loop.h"
 
 namespace tp::view {
@@ -87,12 +90,10 @@ int runView(ViewCommandOptions& o, const std::string& exe) {
     (void)generatorOptions(o.scene); // a bad light option is a usage error before any window opens
     view::ViewState& s = setup.viewer.initial;
     s.scene = o.scene;
-    unsigned w = 0, h = 0;
-    if (std::sscanf(o.view.resolution.c_str(), "%ux%u", &w, &h) != 2 || w < 8 || h < 8 || w > 8192 || h > 8192)
-        throw UsageError("--res '" + o.view.resolution + "': expected WIDTHxHEIGHT, each side 8 to 8192");
-    s.width = w, s.height = h;
-    if (o.view.msaa != 1 && o.view.msaa != 2 && o.view.msaa != 4 && o.view.msaa != 8)
-        throw UsageError("--msaa " + std::to_string(o.view.msaa) + ": must be 1, 2, 4 or 8");
+    if (!view::parseViewResolution(o.view.resolution, s.width, s.height))
+        throw UsageError("--res '" + o.view.resolution + "': expected WIDTHxHEIGHT, each side " +
+                         std::to_string(view::kViewMinSide) + " to " + std::to_string(view::kViewMaxSide));
+    if (Status ok = checkSetting(kMsaaSetting, std::to_string(o.view.msaa)); !ok) throw UsageError(ok.error());
     s.msaa = uint32_t(o.view.msaa);
     s.knobs = o.knobs;
     s.pipelineA = o.pipelineA;

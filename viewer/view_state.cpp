@@ -4,6 +4,7 @@
 
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
+#include "core/render/view_settings.h"
 
 namespace tp::view {
 namespace {
@@ -41,6 +42,14 @@ std::string referenceKey(const ViewState& s) {
     if (Result<const RendererEntry*> ref = findRenderer(kReferenceRenderer); ref)
         for (const Knob& k : (*ref)->knobs) key += "|" + k.name + "=" + k.valueIn(s.knobs);
     return key;
+}
+
+bool parseViewResolution(const std::string& text, uint32_t& width, uint32_t& height) {
+    uint32_t w = 0, h = 0;
+    if (!parseResolution(text, w, h) || w < kViewMinSide || h < kViewMinSide || w > kViewMaxSide || h > kViewMaxSide)
+        return false;
+    width = w, height = h;
+    return true;
 }
 
 std::string renderKey(const ViewState& s, bool debug) {

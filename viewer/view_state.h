@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "compare/cli_common.h"
+#include "core/cli/options.h"
 #include "core/scene/scene.h"
 
 namespace tp::view {
@@ -39,5 +39,10 @@ std::string renderKey(const ViewState& s, bool debug);
 // What the reference depends on: a reference whose key differs from the current one is stale.
 std::string referenceKey(const ViewState& s);
 std::string cameraText(const Camera& c);
+
+// The viewer's image: each side 8 to 8192 (the panel clamps to these, and to the device's limit).
+inline constexpr uint32_t kViewMinSide = 8, kViewMaxSide = 8192;
+// WIDTHxHEIGHT within those sides (view --res, the script's res); false otherwise.
+bool parseViewResolution(const std::string& text, uint32_t& width, uint32_t& height);
 
 } // namespace tp::view

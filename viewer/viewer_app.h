@@ -99,7 +99,6 @@ class ViewerApp {
     bool sceneLoaded() const { return hasSceneCamera_; }
     const Inspection& inspection() const { return inspection_; }
     const std::string& lastError() const { return error_; }
-    void setError(std::string e) { error_ = std::move(e); }
     // Render statistics for scripts and the benchmark.
     const Shown* shownA() const;
     const Shown* shownB() const;

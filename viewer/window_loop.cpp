@@ -43,6 +43,56 @@ void pollKeys(GLFWwindow* window, ViewerApp& app, std::map<int, bool>& wasDown) 
     }
 }
 
+// Frames until the window closes (or --quit-after, once the script is done); the script's
+// error, or empty.
+std::string frameLoop(GLFWwindow* window, GpuContext& ctx, UiRenderer& ui, Swapchain& swapchain, ViewerApp& app,
+                      const LoopSetup& setup) {
+    std::optional<ScriptRunner> runner;
+    if (setup.script) runner.emplace(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds, false);
+    ScriptMouse scriptMouse; // the real cursor wins in a window
+    std::map<int, bool> wasDown;
+    try {
+        for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
+            glfwPollEvents();
+            if (runner) runner->beforeFrame(app, scriptMouse);
+            auto start = std::chrono::steady_clock::now();
+            ImGui_ImplVulkan_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            pollKeys(window, app, wasDown);
+            app.frame();
+            ImGui::Render();
+            if (app.takeSceneDirty()) ui.setScene(app.scene());
+            int fw = 0, fh = 0;
+            glfwGetFramebufferSize(window, &fw, &fh);
+            swapchain.draw(ui, ImGui::GetDrawData(), uint32_t(fw), uint32_t(fh));
+            // The frame's work, present included (FIFO: paced by the display where it has one).
+            double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            if (runner) runner->afterFrame(app, nullptr, frameMs);
+            // On a CPU device the renders run on the same cores: leave them the CPU while they work.
+            if (ctx.isCpuDevice() && !app.settled()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            bool scriptDone = !runner || runner->done();
+            if (setup.quitAfterFrames > 0 && frame + 1 >= setup.quitAfterFrames && scriptDone) break;
+        }
+    } catch (const ScriptError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+// The viewer on a window surface the device presents to; the exit code.
+int runInWindow(GLFWwindow* window, GpuContext& ctx, VkSurfaceKHR surface, const LoopSetup& setup) {
+    VkFormat format = chooseSurfaceFormat(ctx, surface);
+    UiRenderer ui(ctx, format, 3, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+    Swapchain swapchain(ctx, surface, format, ui);
+    ViewerApp app(ctx, setup.viewer);
+    uint32_t w0 = 0, h0 = 0;
+    surfaceSize(app, w0, h0);
+    glfwSetWindowSize(window, int(w0), int(h0));
+    const std::string scriptError = frameLoop(window, ctx, ui, swapchain, app, setup);
+    return finish(app, ctx, scriptError);
+}
+
 } // namespace
 
 int runWindow(const LoopSetup& setup) {
@@ -80,45 +130,7 @@ int runWindow(const LoopSetup& setup) {
     if (!presentable) {
         code = noDisplay(ctx.info.name + " cannot present to this window");
     } else try { // a Vulkan failure ends the window below with its cleanup, as one line (exit 4)
-        VkFormat format = chooseSurfaceFormat(ctx, surface);
-        UiRenderer ui(ctx, format, 3, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
-        Swapchain swapchain(ctx, surface, format, ui);
-        ViewerApp app(ctx, setup.viewer);
-        uint32_t w0 = 0, h0 = 0;
-        surfaceSize(app, w0, h0);
-        glfwSetWindowSize(window, int(w0), int(h0));
-        std::optional<ScriptRunner> runner;
-        if (setup.script) runner.emplace(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds, false);
-        ScriptMouse scriptMouse; // the real cursor wins in a window
-        std::map<int, bool> wasDown;
-        std::string scriptError;
-        try {
-            for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
-                glfwPollEvents();
-                if (runner) runner->beforeFrame(app, scriptMouse);
-                auto start = std::chrono::steady_clock::now();
-                ImGui_ImplVulkan_NewFrame();
-                ImGui_ImplGlfw_NewFrame();
-                ImGui::NewFrame();
-                pollKeys(window, app, wasDown);
-                app.frame();
-                ImGui::Render();
-                if (app.takeSceneDirty()) ui.setScene(app.scene());
-                int fw = 0, fh = 0;
-                glfwGetFramebufferSize(window, &fw, &fh);
-                swapchain.draw(ui, ImGui::GetDrawData(), uint32_t(fw), uint32_t(fh));
-                // The frame's work, present included (FIFO: paced by the display where it has one).
-                double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-                if (runner) runner->afterFrame(app, nullptr, frameMs);
-                // On a CPU device the renders run on the same cores: leave them the CPU while they work.
-                if (ctx.isCpuDevice() && !app.settled()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-                bool scriptDone = !runner || runner->done();
-                if (setup.quitAfterFrames > 0 && frame + 1 >= setup.quitAfterFrames && scriptDone) break;
-            }
-        } catch (const ScriptError& e) {
-            scriptError = e.what();
-        }
-        code = finish(app, ctx, scriptError);
+        code = runInWindow(window, ctx, surface, setup);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "triptych: view: %s\n", e.what());
         code = 4;

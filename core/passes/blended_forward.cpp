@@ -5,7 +5,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpu/resources.h"
 #include "core/render/scene_gpu.h"
-#include "deferred/deferred_shared.h"
+#include "include/tiled_lighting.h"
 
 namespace tp {
 

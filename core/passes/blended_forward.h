@@ -35,7 +35,7 @@ class BlendedForwardPass {
     // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
     void plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices = 0, ResourceHandle masks = {});
     // candidates: the tiled pass's light_candidates; binned: the transparent lists are
-    // bitmasks over them (deferred_shared.h: defMaskRowsBase).
+    // bitmasks over them (include/tiled_lighting.h).
     void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);
 
   private:

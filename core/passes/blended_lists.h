@@ -26,7 +26,7 @@ struct TransparentListPlan {
 // maxStorageBufferRange (`limit`). masks (--light-cull binned): a list is a subset of its
 // tile's candidates (the directional lights and the lights whose conservative tile
 // rectangle covers it: the same rectangles as the bound), so its run is a bitmask over them,
-// ceil(candidates / 32) words (deferred_shared.h: defMaskRowsBase). localBound: that bound
+// ceil(candidates / 32) words (include/tiled_lighting.h). localBound: that bound
 // when the caller has binned the lights already (binned culling bins them once, on the CPU
 // or the GPU); null: computed here.
 TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene, uint64_t limit,

@@ -15,7 +15,7 @@
 #include "core/gpu/resources.h"
 #include "core/passes/light_binning.h"
 #include "core/lightassign/tile_grid.h"
-#include "deferred/deferred_shared.h"
+#include "include/tiled_lighting.h"
 
 namespace tp {
 
@@ -66,7 +66,7 @@ class TiledLighting {
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
     // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
-    // transparent lists that this pass writes for the blended pass (deferred_shared.h).
+    // transparent lists that this pass writes for the blended pass (include/tiled_lighting.h).
     // blendBounds (blended scenes): the blended depth bounds the transparent lists are culled
     // against (core/passes/blended_bounds.h).
     void plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t, bool listsOnly = false,

@@ -62,45 +62,22 @@ void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler, 
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
 
-} // namespace
-
-Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
-                              const SceneFeatures& features, const RenderSettings& settings,
-                              const RunOptions& options) {
-    if (Status s = checkSampleCount(ctx, settings.msaa); !s) return Error{s.error()};
-    RenderSettings resolved = settings;
-    if (Status s = resolveKnobs(entry.knobs, resolved); !s) return Error{"pipeline " + entry.name + ": " + s.error()};
-    scene.setView(settings.width, settings.height, settings.msaa);
-    RendererCreateInfo info{ctx, scene, features, resolved};
-    std::unique_ptr<Renderer> renderer;
-    FrameGraph graph(ctx, entry.name, settings.width, settings.height);
-    ResourceHandle hdr, depth;
+// A pipeline's own failure as one line naming it, so the other pipelines still run:
+// RendererError (this configuration cannot be built) or GraphError (its declarations disagree
+// with each other or with its shaders, or it records an attachment it did not declare).
+template <class Step> Status pipelineStep(const RendererEntry& entry, Step&& step) {
     try {
-        renderer = createRenderer(entry, info);
-        renderer->plan(graph);
-        hdr = graph.exported("hdr");
-        depth = graph.exported("depth");
-        if (!hdr.valid() || !depth.valid())
-            return Error{"pipeline " + entry.name + " does not export both 'hdr' and 'depth'"};
-        graph.compile();
-        renderer->prepare(graph);
+        step();
     } catch (const RendererError& e) {
         return Error{"pipeline " + entry.name + ": " + e.what()};
     } catch (const GraphError& e) {
-        // A pass's declarations disagree with each other or with its shaders: a bug in
-        // that pipeline, reported as one line so the other pipelines still run.
         return Error{"pipeline " + entry.name + ": " + e.what()};
     }
+    return {};
+}
 
-    GpuProfiler profiler(ctx, 64);
-    InvocationCounter invocations(ctx);
-    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    try {
-        recordFrame(cmd, graph, profiler, invocations);
-    } catch (const GraphError& e) { // a pass records an attachment it did not declare
-        ctx.freeCommandBuffer(cmd);
-        return Error{"pipeline " + entry.name + ": " + e.what()};
-    }
+// Warm-up then timed frames of the one recording; the profiler keeps the timed ones.
+void submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler, const RunOptions& options) {
     const uint32_t total = options.warmupFrames + options.timedFrames;
     for (uint32_t f = 0; f < total; ++f) {
         auto start = std::chrono::steady_clock::now();
@@ -110,18 +87,23 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
         if (f + 1 == options.warmupFrames) profiler.discardSamples();
         if (options.onFrame) options.onFrame(f, total, wall.count());
     }
-    ctx.freeCommandBuffer(cmd);
+}
 
+// What a report needs from the frames just run.
+RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const RenderSettings& settings,
+                        PlannedRenderer& planned, GpuProfiler& profiler, InvocationCounter& invocations) {
+    FrameGraph& graph = *planned.graph;
     RunResult result;
     result.renderer = entry.name;
     result.msaa = settings.msaa;
-    for (const Knob& k : entry.knobs) result.knobs.push_back({k, resolved.text(k.name)});
+    // createRenderer checked every value: each knob's is the given one or its default.
+    for (const Knob& k : entry.knobs) result.knobs.push_back({k, k.valueIn(settings.knobs)});
     result.timings = profiler.stats();
-    result.hdr = readbackColor(ctx, graph.image(hdr));
-    result.depth = readbackDepth(ctx, graph.image(depth));
-    renderer->collectStats(graph);
-    if (settings.debug) result.debugImages = renderer->debugImages(graph);
-    result.stats = renderer->stats();
+    result.hdr = readbackColor(ctx, graph.image(planned.hdr));
+    result.depth = readbackDepth(ctx, graph.image(planned.depth));
+    planned.renderer->collectStats(graph);
+    if (settings.debug) result.debugImages = planned.renderer->debugImages(graph);
+    result.stats = planned.renderer->stats();
     if (uint64_t n = 0; invocations.read(n)) {
         result.stats.counters.push_back({"fragment_shader_invocations", double(n)});
         result.stats.counters.push_back(
@@ -131,6 +113,66 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
     result.passes = graph.livePasses();
     result.culledPasses = graph.culledPasses();
     return result;
+}
+
+} // namespace
+
+Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
+                                     const SceneFeatures& features, const RenderSettings& settings) {
+    // The count alone, without the pipeline's name: the CLI's line (checkSampleCount).
+    if (Status s = checkSampleCount(ctx, settings.msaa); !s) return Error{s.error()};
+    scene.setView(settings.width, settings.height, settings.msaa);
+    PlannedRenderer planned;
+    planned.graph = std::make_unique<FrameGraph>(ctx, entry.name, settings.width, settings.height);
+    FrameGraph& graph = *planned.graph;
+    bool exports = true;
+    Status built = pipelineStep(entry, [&] {
+        planned.renderer = createRenderer(entry, {ctx, scene, features, settings});
+        planned.renderer->plan(graph);
+        planned.hdr = graph.exported("hdr");
+        planned.depth = graph.exported("depth");
+        exports = planned.hdr.valid() && planned.depth.valid();
+        if (exports) graph.compile();
+    });
+    if (!built) return Error{built.error()};
+    if (!exports) return Error{"pipeline " + entry.name + " does not export both 'hdr' and 'depth'"};
+    return planned;
+}
+
+Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
+                              const SceneFeatures& features, const RenderSettings& settings,
+                              const RunOptions& options) {
+    Result<PlannedRenderer> planned = planRenderer(ctx, scene, entry, features, settings);
+    if (!planned) return Error{planned.error()};
+    if (Status s = pipelineStep(entry, [&] { planned->renderer->prepare(*planned->graph); }); !s)
+        return Error{s.error()};
+
+    GpuProfiler profiler(ctx, 64);
+    InvocationCounter invocations(ctx);
+    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
+    if (Status s = pipelineStep(entry, [&] { recordFrame(cmd, *planned->graph, profiler, invocations); }); !s) {
+        ctx.freeCommandBuffer(cmd);
+        return Error{s.error()};
+    }
+    submitFrames(ctx, cmd, profiler, options);
+    ctx.freeCommandBuffer(cmd);
+    return collectResult(ctx, entry, settings, *planned, profiler, invocations);
+}
+
+Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
+                                 const SceneFeatures& features, const RenderSettings& settings,
+                                 const RunOptions& options) {
+    try {
+        return runRenderer(ctx, scene, entry, features, settings, options);
+    } catch (const GpuError& e) {
+        return Error{std::string("Vulkan error: ") + e.what()};
+    }
+}
+
+double counterValue(const RunResult& run, const std::string& name, double fallback) {
+    for (const auto& [k, v] : run.stats.counters)
+        if (k == name) return v;
+    return fallback;
 }
 
 } // namespace tp

@@ -1,11 +1,14 @@
 #pragma once
 // Runs one renderer on the shared scene: plan, compile, prepare, record once, submit
-// warm-up frames then timed frames, read back the standard outputs. Everything a report
+// warm-up frames then timed frames, read back the standard outputs (planRenderer alone:
+// the plan without running it). Everything a report
 // needs comes back in RunResult; nothing here knows which renderer ran.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/gpu/frame_graph.h"
 #include "core/gpu/ledger.h"
 #include "core/gpu/profiler.h"
 #include "core/image/image.h"
@@ -35,9 +38,34 @@ struct RunResult {
     std::vector<DebugImage> debugImages;   // only with settings.debug
 };
 
-// Error: a knob, the sample count or the renderer's plan refused (one line each).
+// A renderer built for the scene and planned, its frame graph compiled (resources exist), not
+// yet prepared: what `triptych info` prints, and the first half of runRenderer.
+struct PlannedRenderer {
+    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<FrameGraph> graph; // destroyed before the renderer, as it was built after it
+    ResourceHandle hdr, depth;         // the standard outputs it exports
+};
+
+// Sets the scene's view, creates the renderer (createRenderer: the one check of its knobs and
+// the sample count, defaults filled in), plans it, checks that it exports "hdr" and "depth",
+// compiles the graph. Error: the sample count ("--msaa N: not supported by DEVICE"), a knob or
+// the renderer's plan refused, as one line naming the pipeline.
+Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
+                                     const SceneFeatures& features, const RenderSettings& settings);
+
+// planRenderer, then prepare, record once, submit, read back. Error: as planRenderer, or the
+// renderer's prepare or recording refused (one line each). A Vulkan failure throws GpuError.
 Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
                               const SceneFeatures& features, const RenderSettings& settings,
                               const RunOptions& options);
+// runRenderer with a Vulkan failure as one more error ("Vulkan error: ..."), not thrown: the
+// commands that run several pipelines (compare, sweep, stress) record it and go on.
+Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
+                                 const SceneFeatures& features, const RenderSettings& settings,
+                                 const RunOptions& options);
+
+// A counter of the run (RendererStats::counters), or `fallback` where the renderer does not
+// count it (a pipeline that cannot drop a light counts no drops).
+double counterValue(const RunResult& run, const std::string& name, double fallback = 0.0);
 
 } // namespace tp

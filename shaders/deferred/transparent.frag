@@ -5,7 +5,7 @@
 // each fragment lit by its tile's transparent light list (culled by the tiled lighting
 // pass against the tile's blended depth bounds; compact layout, include/light_assign.h).
 // Clustered (kSlices > 0): only the lights of the fragment's cluster, through the slice rows
-// the tiled pass wrote over the list (deferred_shared.h: defClusterRowsBase; under
+// the tiled pass wrote over the list (include/tiled_lighting.h: defClusterRowsBase; under
 // --light-cull binned the rows and the list are bitmasks over the tile's candidate run:
 // defMaskRowsBase, candidates.glsl).
 // Rate: per sample (`sample` inputs, sample shading; 1x and --msaa-shading sample) or, built
@@ -34,7 +34,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_BLEND_BOUNDS) rea
 };
 
 // Binned (--light-cull binned): the lists and rows are bitmasks over the tile's candidates
-// (deferred_shared.h: defMaskRowsBase), walked in ascending candidate order.
+// (include/tiled_lighting.h: defMaskRowsBase), walked in ascending candidate order.
 layout(constant_id = TP_DEF_SPEC_BINNED) const bool kBinned = false;
 layout(std430, set = TP_SET_PASS, binding = TP_DEF_FWD_BINDING_CANDIDATES) readonly buffer Candidates {
     uint cand[]; // deferred_shared.h: TP_DEF_CAND_*

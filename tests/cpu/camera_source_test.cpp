@@ -1,4 +1,4 @@
-// Where a run's camera comes from (compare/cli_common.h, CameraSource): the glTF loader names
+// Where a run's camera comes from (core/cli/scene_input.h, CameraSource): the glTF loader names
 // the file's camera it used, and loadScene records a built-in scene's own camera, a glTF's
 // camera (by index) or framing, and --camera's file, which replaces any of them.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/cli_common.h"
+#include "core/cli/scene_input.h"
 #include "compare/report_html.h"
 #include "core/render/camera_file.h"
 #include "core/scene/gltf_loader.h"

@@ -1,8 +1,8 @@
-// The CLI's shared option checks (compare/cli_common) on hostile values, without a device; the
+// The CLI's shared option checks (core/cli/options.h) on hostile values, without a device; the
 // commands end to end are in tests/cli/hostile_input.sh.
 #include <gtest/gtest.h>
 
-#include "compare/cli_common.h"
+#include "core/cli/options.h"
 
 using namespace tp::cli;
 

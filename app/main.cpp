@@ -2,14 +2,17 @@
 // Errors end here: one line on stderr and a non-zero exit code (2: bad input, 4: Vulkan
 // failure, 3: validation messages with --validate, 5: compare wrote its report but a
 // pipeline failed, 6: stress wrote its report and a case failed, 1: anything else), never a crash.
+// The composition root: the one file that knows both compare/'s commands and viewer/'s, so
+// neither includes the other (docs/architecture.md, "Layers").
 #include <cstdio>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "compare/cli_common.h"
 #include "compare/commands.h"
+#include "core/cli/options.h"
 #include "core/gpu/vk_check.h"
+#include "viewer/view_command.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"triptych: Forward+, deferred and multipass forward side by side against a "
