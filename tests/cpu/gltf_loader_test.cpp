@@ -14,6 +14,7 @@
 
 #include "core/scene/gltf_internal.h"
 #include "core/scene/gltf_loader.h"
+#include "tests/cli/hostile_scenes.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -274,22 +275,8 @@ class GltfGenerated : public ::testing::Test {
         fs::remove_all(dir_);
         fs::create_directories(dir_ / "scene");
         // One triangle in the z = 0 plane, counter-clockwise seen from +z, and its indices.
-        float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-        uint16_t indices[4] = {0, 1, 2, 0};
-        bin_.resize(44);
-        std::memcpy(bin_.data(), positions, 36);
-        std::memcpy(bin_.data() + 36, indices, 8);
-        gltf_ = json::parse(R"({
-          "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
-          "nodes": [{"mesh": 0}],
-          "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-          "accessors": [
-            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-             "min": [0, 0, 0], "max": [1, 1, 0]},
-            {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
-          "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
-                          {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
-          "buffers": [{"uri": "tri.bin", "byteLength": 44}]})");
+        bin_ = hostile::triangleBin();
+        gltf_ = hostile::triangleJson();
     }
     void TearDown() override { fs::remove_all(dir_); }
 
