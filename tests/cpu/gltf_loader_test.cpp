@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <zlib.h>
 
 #include "core/scene/gltf_internal.h"
 #include "core/scene/gltf_loader.h"
@@ -455,18 +456,10 @@ TEST_F(GltfGenerated, LightsEmissiveStrengthAndFileCamera) {
     EXPECT_LT(s.camera.target.z, 4.0f);
 }
 
-// A PNG written by hand (stored deflate blocks), so the test needs no encoder.
+// A PNG written by hand (stored deflate blocks), so the test needs no encoder; zlib only for
+// the chunks' CRC.
 std::vector<uint8_t> makePng(uint32_t w, uint32_t h, uint8_t bitDepth, uint8_t colorType,
                              const std::vector<uint8_t>& raw /* filter bytes included */) {
-    auto crc = [](const uint8_t* p, size_t n) {
-        uint32_t c = 0xFFFFFFFFu;
-        for (size_t i = 0; i < n; ++i) {
-            c ^= p[i];
-            for (int k = 0; k < 8; ++k)
-                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-        }
-        return c ^ 0xFFFFFFFFu;
-    };
     std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     auto be32 = [](std::vector<uint8_t>& v, uint32_t x) {
         for (int s = 24; s >= 0; s -= 8)
@@ -477,7 +470,7 @@ std::vector<uint8_t> makePng(uint32_t w, uint32_t h, uint8_t bitDepth, uint8_t c
         std::vector<uint8_t> body(type, type + 4);
         body.insert(body.end(), data.begin(), data.end());
         png.insert(png.end(), body.begin(), body.end());
-        be32(png, crc(body.data(), body.size()));
+        be32(png, uint32_t(crc32(0, body.data(), uInt(body.size()))));
     };
     std::vector<uint8_t> ihdr;
     be32(ihdr, w);
