@@ -269,7 +269,6 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     Result<VkInstance> instance = createInstance(options.validate, options.instanceExtensions);
     if (!instance) return Error{instance.error()};
     ctx->instance = *instance;
-    ctx->validationEnabled_ = options.validate;
     if (options.validate) ctx->messenger_ = createMessenger(ctx->instance, ctx.get());
     std::vector<VkPhysicalDevice> devices = physicalDevices(ctx->instance);
     Result<uint32_t> chosen = chooseDevice(devices, options.device);
