@@ -164,6 +164,62 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     return c;
 }
 
+// The first queue family with graphics, compute and timestamps (-1: none); `timestampBits`
+// receives its timestampValidBits.
+int findQueueFamily(VkPhysicalDevice physical, uint32_t& timestampBits) {
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
+    for (uint32_t i = 0; i < familyCount; ++i) {
+        VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) {
+            timestampBits = families[i].timestampValidBits;
+            return int(i);
+        }
+    }
+    return -1;
+}
+
+// One queue of `family`; the features the renderers use where `caps` has them.
+VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const DeviceCaps& caps, bool swapchain,
+                             VkDevice& device) {
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = family;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    f13.dynamicRendering = VK_TRUE;
+    f13.synchronization2 = VK_TRUE;
+    // Required by Vulkan 1.3; glslang's vulkan1.3 target writes compute workgroup sizes as
+    // LocalSizeId, which the validation layers accept only with maintenance4 enabled.
+    f13.maintenance4 = VK_TRUE;
+    f13.subgroupSizeControl = caps.computeFullSubgroups;
+    f13.computeFullSubgroups = caps.computeFullSubgroups;
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+    f12.hostQueryReset = VK_TRUE;
+    f12.scalarBlockLayout = VK_FALSE;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+    features.features.shaderFloat64 = caps.float64;
+    features.features.sampleRateShading = caps.sampleRateShading;
+    features.features.pipelineStatisticsQuery = caps.pipelineStatisticsQuery;
+    features.features.shaderStorageImageMultisample = caps.storageImageMultisample;
+    features.features.fragmentStoresAndAtomics = caps.fragmentStoresAndAtomics;
+    features.features.independentBlend = VK_TRUE;
+
+    VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+    deviceInfo.queueCreateInfoCount = 1;
+    deviceInfo.pQueueCreateInfos = &queueInfo;
+    const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    if (swapchain) {
+        deviceInfo.enabledExtensionCount = 1;
+        deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
+    }
+    return vkCreateDevice(physical, &deviceInfo, nullptr, &device);
+}
+
 } // namespace
 
 VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
@@ -176,6 +232,27 @@ VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
     }
     return VK_FALSE;
 }
+
+namespace {
+
+// Warnings and errors, to debugCallback with `userData` (the context).
+VkDebugUtilsMessengerEXT createMessenger(VkInstance instance, void* userData) {
+    VkDebugUtilsMessengerEXT messenger;
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                           VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = debugCallback;
+    info.pUserData = userData;
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+    VK_CHECK(create(instance, &info, nullptr, &messenger));
+    return messenger;
+}
+
+} // namespace
 
 Result<std::vector<DeviceInfo>> GpuContext::listDevices() {
     Result<VkInstance> instance = createInstance(false, {});
@@ -192,20 +269,7 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     Result<VkInstance> instance = createInstance(options.validate, options.instanceExtensions);
     if (!instance) return Error{instance.error()};
     ctx->instance = *instance;
-    ctx->validationEnabled_ = options.validate;
-    if (options.validate) {
-        VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                           VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-        info.pfnUserCallback = debugCallback;
-        info.pUserData = ctx.get();
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(ctx->instance, "vkCreateDebugUtilsMessengerEXT"));
-        VK_CHECK(create(ctx->instance, &info, nullptr, &ctx->messenger_));
-    }
+    if (options.validate) ctx->messenger_ = createMessenger(ctx->instance, ctx.get());
     std::vector<VkPhysicalDevice> devices = physicalDevices(ctx->instance);
     Result<uint32_t> chosen = chooseDevice(devices, options.device);
     if (!chosen) return Error{chosen.error()};
@@ -215,56 +279,12 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
     vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memoryProperties);
     ctx->caps = readCaps(ctx->physical, ctx->properties);
 
-    uint32_t familyCount = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(ctx->physical, &familyCount, nullptr);
-    std::vector<VkQueueFamilyProperties> families(familyCount);
-    vkGetPhysicalDeviceQueueFamilyProperties(ctx->physical, &familyCount, families.data());
-    bool found = false;
-    for (uint32_t i = 0; i < familyCount && !found; ++i) {
-        VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
-        if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) {
-            ctx->queueFamily = i;
-            ctx->caps.timestampValidBits = families[i].timestampValidBits;
-            found = true;
-        }
-    }
-    if (!found)
+    const int family = findQueueFamily(ctx->physical, ctx->caps.timestampValidBits);
+    if (family < 0)
         return Error{"device '" + ctx->info.name + "' has no graphics+compute queue with timestamps"};
+    ctx->queueFamily = uint32_t(family);
 
-    float priority = 1.0f;
-    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queueInfo.queueFamilyIndex = ctx->queueFamily;
-    queueInfo.queueCount = 1;
-    queueInfo.pQueuePriorities = &priority;
-
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    f13.dynamicRendering = VK_TRUE;
-    f13.synchronization2 = VK_TRUE;
-    // Required by Vulkan 1.3; glslang's vulkan1.3 target writes compute workgroup sizes as
-    // LocalSizeId, which the validation layers accept only with maintenance4 enabled.
-    f13.maintenance4 = VK_TRUE;
-    f13.subgroupSizeControl = ctx->caps.computeFullSubgroups;
-    f13.computeFullSubgroups = ctx->caps.computeFullSubgroups;
-    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
-    f12.hostQueryReset = VK_TRUE;
-    f12.scalarBlockLayout = VK_FALSE;
-    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
-    features.features.shaderFloat64 = ctx->caps.float64;
-    features.features.sampleRateShading = ctx->caps.sampleRateShading;
-    features.features.pipelineStatisticsQuery = ctx->caps.pipelineStatisticsQuery;
-    features.features.shaderStorageImageMultisample = ctx->caps.storageImageMultisample;
-    features.features.fragmentStoresAndAtomics = ctx->caps.fragmentStoresAndAtomics;
-    features.features.independentBlend = VK_TRUE;
-
-    VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
-    deviceInfo.queueCreateInfoCount = 1;
-    deviceInfo.pQueueCreateInfos = &queueInfo;
-    const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
-    if (options.swapchain) {
-        deviceInfo.enabledExtensionCount = 1;
-        deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
-    }
-    VkResult r = vkCreateDevice(ctx->physical, &deviceInfo, nullptr, &ctx->device);
+    VkResult r = createLogicalDevice(ctx->physical, ctx->queueFamily, ctx->caps, options.swapchain, ctx->device);
     if (r != VK_SUCCESS)
         return Error{"cannot create a Vulkan device on '" + ctx->info.name + "': " + vkResultName(r)};
     vkGetDeviceQueue(ctx->device, ctx->queueFamily, 0, &ctx->queue);

@@ -84,7 +84,6 @@ class GpuContext {
 
     // Validation messages (warnings and errors) seen since creation; tests assert none.
     std::vector<std::string> validationMessages() const;
-    bool validationEnabled() const { return validationEnabled_; }
 
   private:
     GpuContext() = default;
@@ -93,7 +92,6 @@ class GpuContext {
                                   const VkDebugUtilsMessengerCallbackDataEXT*, void*);
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
-    bool validationEnabled_ = false;
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;
 };

@@ -36,27 +36,31 @@ void destroyPassSet(GpuContext& ctx, PassSet& s) {
     s = {};
 }
 
-void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
-                          VkImageView view, VkImageLayout layout, VkSampler sampler) {
-    VkDescriptorImageInfo ii{sampler, view, layout};
+namespace {
+
+void writeDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
+                     const VkDescriptorImageInfo* image, const VkDescriptorBufferInfo* buffer) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = type;
-    w.pImageInfo = &ii;
+    w.pImageInfo = image;
+    w.pBufferInfo = buffer;
     vkUpdateDescriptorSets(ctx.device, 1, &w, 0, nullptr);
+}
+
+} // namespace
+
+void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
+                          VkImageView view, VkImageLayout layout, VkSampler sampler) {
+    VkDescriptorImageInfo ii{sampler, view, layout};
+    writeDescriptor(ctx, set, binding, type, &ii, nullptr);
 }
 
 void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkBuffer buffer) {
     VkDescriptorBufferInfo bi{buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    w.pBufferInfo = &bi;
-    vkUpdateDescriptorSets(ctx.device, 1, &w, 0, nullptr);
+    writeDescriptor(ctx, set, binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nullptr, &bi);
 }
 
 } // namespace tp

@@ -1,5 +1,6 @@
 #include "core/gpu/frame_graph.h"
 
+#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/profiler.h"
 #include "core/gpu/vk_check.h"
@@ -137,33 +138,23 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
 }
 
 void FrameGraph::recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const {
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    VkImageMemoryBarrier2 ib{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
     const ResourceNode& r = resources_[b.resource];
     if (b.image) {
-        ib.srcStageMask = b.srcStages;
-        ib.srcAccessMask = b.srcAccess;
-        ib.dstStageMask = b.dstStages;
-        ib.dstAccessMask = b.dstAccess;
-        ib.oldLayout = b.oldLayout;
-        ib.newLayout = b.newLayout;
-        ib.srcQueueFamilyIndex = ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        ib.image = r.image.image;
-        ib.subresourceRange = {r.image.aspect, 0, 1, 0, 1};
-        dep.imageMemoryBarrierCount = 1;
-        dep.pImageMemoryBarriers = &ib;
-    } else {
-        bb.srcStageMask = b.srcStages;
-        bb.srcAccessMask = b.srcAccess;
-        bb.dstStageMask = b.dstStages;
-        bb.dstAccessMask = b.dstAccess;
-        bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        bb.buffer = r.buffer.buffer;
-        bb.size = VK_WHOLE_SIZE;
-        dep.bufferMemoryBarrierCount = 1;
-        dep.pBufferMemoryBarriers = &bb;
+        imageBarrier(cmd, r.image.image, b.oldLayout, b.newLayout, b.srcStages, b.srcAccess, b.dstStages,
+                     b.dstAccess, {r.image.aspect, 0, 1, 0, 1});
+        return;
     }
+    VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+    bb.srcStageMask = b.srcStages;
+    bb.srcAccessMask = b.srcAccess;
+    bb.dstStageMask = b.dstStages;
+    bb.dstAccessMask = b.dstAccess;
+    bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    bb.buffer = r.buffer.buffer;
+    bb.size = VK_WHOLE_SIZE;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.bufferMemoryBarrierCount = 1;
+    dep.pBufferMemoryBarriers = &bb;
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 

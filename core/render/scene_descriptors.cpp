@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/vk_check.h"
@@ -15,23 +16,9 @@ uint32_t mipCount(uint32_t w, uint32_t h) {
     return 1 + uint32_t(std::floor(std::log2(double(std::max(w, h)))));
 }
 
-void imageBarrier(VkCommandBuffer cmd, VkImage image, uint32_t mip, uint32_t mips, VkImageLayout from,
-                  VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = srcStage;
-    b.srcAccessMask = srcAccess;
-    b.dstStageMask = dstStage;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, mip, mips, 0, 1};
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = 1;
-    dep.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &dep);
+// Mips [mip, mip + mips) of a colour texture's one layer.
+VkImageSubresourceRange mipRange(uint32_t mip, uint32_t mips) {
+    return {VK_IMAGE_ASPECT_COLOR_BIT, mip, mips, 0, 1};
 }
 
 // Copies mip 0 from `staging` and blits the chain down. Hand-written barriers: uploads
@@ -39,8 +26,8 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, uint32_t mip, uint32_t mip
 void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging, VkDeviceSize offset) {
     const uint32_t mips = img.desc.mipLevels;
     const VkPipelineStageFlags2 T = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-    imageBarrier(cmd, img.image, 0, mips, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_PIPELINE_STAGE_2_NONE, 0, T, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_NONE, 0, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, mipRange(0, mips));
     VkBufferImageCopy region{};
     region.bufferOffset = offset;
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -48,9 +35,8 @@ void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging
     vkCmdCopyBufferToImage(cmd, staging, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     int32_t w = int32_t(img.desc.width), h = int32_t(img.desc.height);
     for (uint32_t m = 1; m < mips; ++m) {
-        imageBarrier(cmd, img.image, m - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, T,
-                     VK_ACCESS_2_TRANSFER_READ_BIT);
+        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     T, VK_ACCESS_2_TRANSFER_WRITE_BIT, T, VK_ACCESS_2_TRANSFER_READ_BIT, mipRange(m - 1, 1));
         VkImageBlit blit{};
         blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m - 1, 0, 1};
         blit.srcOffsets[1] = {w, h, 1};
@@ -63,11 +49,10 @@ void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging
     }
     const VkPipelineStageFlags2 S = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     if (mips > 1)
-        imageBarrier(cmd, img.image, 0, mips - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, 0, S, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    imageBarrier(cmd, img.image, mips - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, S,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     T, 0, S, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(0, mips - 1));
+    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT, S, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(mips - 1, 1));
 }
 
 } // namespace

@@ -70,8 +70,6 @@ class SceneGpu {
     const gpu::FrameUniforms& frame() const { return frame_; }
     const std::vector<gpu::LightGpu>& lightsGpu() const { return lightsGpu_; }
     uint32_t lightCount() const { return lightCount_; }
-    VkDescriptorSetLayout setLayout() const { return setLayout_; }
-    const Buffer& lightBuffer() const { return lights_; }
 
   private:
     void uploadGeometry();

@@ -204,6 +204,22 @@ uint32_t decodeIndex(const uint8_t* p, int type) {
     return v;
 }
 
+// The accessor's sparse substitutions, if any: apply(target element, its value's bytes) for
+// each, every target checked against the count first.
+template <class Apply>
+Status applySparse(const tinygltf::Accessor& a, const Located& loc, const std::string& what, Apply&& apply) {
+    if (!loc.sparseIndices) return {};
+    const size_t indexSize = componentSize(a.sparse.indices.componentType);
+    for (size_t k = 0; k < size_t(a.sparse.count); ++k) {
+        uint32_t target = decodeIndex(loc.sparseIndices + k * indexSize, a.sparse.indices.componentType);
+        if (target >= a.count)
+            return Error{what + ": sparse index " + std::to_string(target) + " is past its count " +
+                         std::to_string(a.count)};
+        apply(target, loc.sparseValues + k * loc.elementSize);
+    }
+    return {};
+}
+
 } // namespace
 
 Status checkAccessor(const tinygltf::Model& model, size_t index, bool compressed) {
@@ -239,17 +255,10 @@ Status readFloats(const tinygltf::Model& model, int index, const AttributeSpec& 
         for (size_t i = 0; i < a.count; ++i)
             decodeElement(loc.data + i * loc.stride, &out[i * comps]);
     }
-    if (loc.sparseIndices) {
-        size_t indexSize = componentSize(a.sparse.indices.componentType);
-        for (size_t k = 0; k < size_t(a.sparse.count); ++k) {
-            uint32_t target =
-                decodeIndex(loc.sparseIndices + k * indexSize, a.sparse.indices.componentType);
-            if (target >= a.count)
-                return Error{what + ": sparse index " + std::to_string(target) +
-                             " is past its count " + std::to_string(a.count)};
-            decodeElement(loc.sparseValues + k * loc.elementSize, &out[target * comps]);
-        }
-    }
+    s = applySparse(a, loc, what, [&](uint32_t target, const uint8_t* value) {
+        decodeElement(value, &out[target * comps]);
+    });
+    if (!s) return s;
     if (!keepNonFinite)
         for (float v : out)
             if (!std::isfinite(v)) return Error{what + " holds a NaN or infinite value"};
@@ -270,17 +279,10 @@ Status readIndices(const tinygltf::Model& model, int index, size_t vertexCount,
     if (loc.data)
         for (size_t i = 0; i < a.count; ++i)
             out[i] = decodeIndex(loc.data + i * loc.stride, a.componentType);
-    if (loc.sparseIndices) {
-        size_t indexSize = componentSize(a.sparse.indices.componentType);
-        for (size_t k = 0; k < size_t(a.sparse.count); ++k) {
-            uint32_t target =
-                decodeIndex(loc.sparseIndices + k * indexSize, a.sparse.indices.componentType);
-            if (target >= a.count)
-                return Error{what + ": sparse index " + std::to_string(target) +
-                             " is past its count " + std::to_string(a.count)};
-            out[target] = decodeIndex(loc.sparseValues + k * loc.elementSize, a.componentType);
-        }
-    }
+    s = applySparse(a, loc, what, [&](uint32_t target, const uint8_t* value) {
+        out[target] = decodeIndex(value, a.componentType);
+    });
+    if (!s) return s;
     for (size_t i = 0; i < out.size(); ++i)
         if (out[i] >= vertexCount)
             return Error{what + ": index " + std::to_string(out[i]) + " at position " +

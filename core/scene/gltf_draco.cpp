@@ -28,6 +28,60 @@ float normalizeScale(draco::DataType type) {
     }
 }
 
+// The bufferView holding the bitstream, checked to lie inside its buffer.
+Status findBitstream(const tinygltf::Model& model, int viewIndex, const tinygltf::BufferView*& out) {
+    if (viewIndex < 0 || size_t(viewIndex) >= model.bufferViews.size())
+        return Error{"bufferView " + std::to_string(viewIndex) + " does not exist"};
+    const tinygltf::BufferView& view = model.bufferViews[size_t(viewIndex)];
+    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+        return Error{"bufferView " + std::to_string(viewIndex) + " has no buffer"};
+    const std::vector<unsigned char>& bytes = model.buffers[size_t(view.buffer)].data;
+    if (view.byteOffset > bytes.size() || view.byteLength > bytes.size() - view.byteOffset)
+        return Error{"bufferView " + std::to_string(viewIndex) + " lies outside its buffer"};
+    out = &view;
+    return {};
+}
+
+// One attribute of `specs` as floats into out.attributes, when the extension lists it; its
+// component count must be its accessor's.
+Status readAttribute(const tinygltf::Model& model, const tinygltf::Primitive& p, const draco::Mesh& mesh,
+                     const tinygltf::Value& attributes, const AttributeSpec& spec, DracoPrimitive& out) {
+    if (!attributes.Has(spec.name)) return {};
+    const tinygltf::Value& id = attributes.Get(spec.name);
+    const draco::PointAttribute* a =
+        id.IsNumber() && id.GetNumberAsInt() >= 0
+            ? mesh.GetAttributeByUniqueId(uint32_t(id.GetNumberAsInt()))
+            : nullptr;
+    if (!a)
+        return Error{std::string(spec.name) + " names no attribute of the bitstream"};
+    auto accessor = p.attributes.find(spec.name);
+    if (accessor == p.attributes.end() || accessor->second < 0 ||
+        size_t(accessor->second) >= model.accessors.size())
+        return Error{std::string(spec.name) + " has no accessor in the primitive"};
+    const tinygltf::Accessor& acc = model.accessors[size_t(accessor->second)];
+    size_t comps = acc.type == TINYGLTF_TYPE_VEC2   ? 2
+                   : acc.type == TINYGLTF_TYPE_VEC3 ? 3
+                   : acc.type == TINYGLTF_TYPE_VEC4 ? 4
+                                                    : 0;
+    if (comps == 0 || a->num_components() != comps)
+        return Error{std::string(spec.name) + " has " + std::to_string(a->num_components()) +
+                     " components in the bitstream, its accessor another type"};
+    const bool normalize =
+        (acc.normalized || spec.forceNormalized) && !a->normalized();
+    const float scale = normalize ? normalizeScale(a->data_type()) : 1.0f;
+    std::vector<float>& values = out.attributes[spec.name];
+    values.resize(out.points * comps);
+    for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
+        float* dst = &values[size_t(i.value()) * comps];
+        if (!a->ConvertValue<float>(a->mapped_index(i), int8_t(comps), dst))
+            return Error{std::string(spec.name) + " cannot be converted to floats"};
+        for (size_t c = 0; c < comps; ++c)
+            dst[c] = scale == 1.0f ? dst[c] : std::max(dst[c] * scale, -1.0f);
+    }
+    out.comps[spec.name] = comps;
+    return {};
+}
+
 } // namespace
 
 bool hasDraco(const tinygltf::Primitive& p) {
@@ -40,15 +94,10 @@ Status decodeDraco(const tinygltf::Model& model, const tinygltf::Primitive& p,
     const std::string what = "KHR_draco_mesh_compression";
     if (!ext.IsObject() || !ext.Get("bufferView").IsNumber() || !ext.Get("attributes").IsObject())
         return Error{what + ": bufferView or attributes missing"};
-    const int viewIndex = ext.Get("bufferView").GetNumberAsInt();
-    if (viewIndex < 0 || size_t(viewIndex) >= model.bufferViews.size())
-        return Error{what + ": bufferView " + std::to_string(viewIndex) + " does not exist"};
-    const tinygltf::BufferView& view = model.bufferViews[size_t(viewIndex)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
-        return Error{what + ": bufferView " + std::to_string(viewIndex) + " has no buffer"};
-    const std::vector<unsigned char>& bytes = model.buffers[size_t(view.buffer)].data;
-    if (view.byteOffset > bytes.size() || view.byteLength > bytes.size() - view.byteOffset)
-        return Error{what + ": bufferView " + std::to_string(viewIndex) + " lies outside its buffer"};
+    const tinygltf::BufferView* view = nullptr;
+    if (Status v = findBitstream(model, ext.Get("bufferView").GetNumberAsInt(), view); !v)
+        return Error{what + ": " + v.error()};
+    const std::vector<unsigned char>& bytes = model.buffers[size_t(view->buffer)].data;
 
     // What the stream decodes to must match the counts its accessors declare (which
     // checkDeclaredSize bounded before anything was read).
@@ -62,7 +111,7 @@ Status decodeDraco(const tinygltf::Model& model, const tinygltf::Primitive& p,
     const uint64_t points = accessorCount(position->second);
 
     draco::DecoderBuffer buffer;
-    buffer.Init(reinterpret_cast<const char*>(bytes.data() + view.byteOffset), view.byteLength);
+    buffer.Init(reinterpret_cast<const char*>(bytes.data() + view->byteOffset), view->byteLength);
     auto type = draco::Decoder::GetEncodedGeometryType(&buffer);
     if (!type.ok()) return Error{what + ": " + type.status().error_msg_string()};
     if (type.value() != draco::TRIANGULAR_MESH)
@@ -85,41 +134,9 @@ Status decodeDraco(const tinygltf::Model& model, const tinygltf::Primitive& p,
             out.indices[size_t(f.value()) * 3 + size_t(k)] = mesh.face(f)[k].value();
 
     const tinygltf::Value& attributes = ext.Get("attributes");
-    for (const AttributeSpec& spec : specs) {
-        if (!attributes.Has(spec.name)) continue;
-        const tinygltf::Value& id = attributes.Get(spec.name);
-        const draco::PointAttribute* a =
-            id.IsNumber() && id.GetNumberAsInt() >= 0
-                ? mesh.GetAttributeByUniqueId(uint32_t(id.GetNumberAsInt()))
-                : nullptr;
-        if (!a)
-            return Error{what + ": " + spec.name + " names no attribute of the bitstream"};
-        auto accessor = p.attributes.find(spec.name);
-        if (accessor == p.attributes.end() || accessor->second < 0 ||
-            size_t(accessor->second) >= model.accessors.size())
-            return Error{what + ": " + spec.name + " has no accessor in the primitive"};
-        const tinygltf::Accessor& acc = model.accessors[size_t(accessor->second)];
-        size_t comps = acc.type == TINYGLTF_TYPE_VEC2   ? 2
-                       : acc.type == TINYGLTF_TYPE_VEC3 ? 3
-                       : acc.type == TINYGLTF_TYPE_VEC4 ? 4
-                                                        : 0;
-        if (comps == 0 || a->num_components() != comps)
-            return Error{what + ": " + spec.name + " has " + std::to_string(a->num_components()) +
-                         " components in the bitstream, its accessor another type"};
-        const bool normalize =
-            (acc.normalized || spec.forceNormalized) && !a->normalized();
-        const float scale = normalize ? normalizeScale(a->data_type()) : 1.0f;
-        std::vector<float>& values = out.attributes[spec.name];
-        values.resize(out.points * comps);
-        for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
-            float* dst = &values[size_t(i.value()) * comps];
-            if (!a->ConvertValue<float>(a->mapped_index(i), int8_t(comps), dst))
-                return Error{what + ": " + spec.name + " cannot be converted to floats"};
-            for (size_t c = 0; c < comps; ++c)
-                dst[c] = scale == 1.0f ? dst[c] : std::max(dst[c] * scale, -1.0f);
-        }
-        out.comps[spec.name] = comps;
-    }
+    for (const AttributeSpec& spec : specs)
+        if (Status r = readAttribute(model, p, mesh, attributes, spec, out); !r)
+            return Error{what + ": " + r.error()};
     return {};
 }
 

@@ -122,6 +122,226 @@ void makeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm
     }
 }
 
+namespace {
+
+const AttributeSpec kPosition{"POSITION", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
+const AttributeSpec kNormal{"NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kShort}, true};
+const AttributeSpec kTangent{"TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat, kByte, kShort}, true};
+// Non-normalized integer uvs are KHR_mesh_quantization's; they are read as they are.
+const AttributeSpec kUv{"TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
+const AttributeSpec kColor{
+    "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}, true};
+
+// One primitive's attributes: from the Draco bitstream when the extension lists them, else
+// from their accessors. `data` and `comps` hold the attribute fetched last.
+struct AttributeReader {
+    const tinygltf::Model& model;
+    const tinygltf::Primitive& p;
+    DracoPrimitive draco;
+    std::vector<float> data;
+    size_t comps = 0;
+
+    int accessor(const char* name) const {
+        auto it = p.attributes.find(name);
+        return it == p.attributes.end() ? -1 : it->second;
+    }
+
+    Status fetch(const AttributeSpec& spec, int index, bool keepNonFinite) {
+        auto it = draco.attributes.find(spec.name);
+        if (it == draco.attributes.end()) return readFloats(model, index, spec, data, comps, keepNonFinite);
+        data = std::move(it->second);
+        comps = draco.comps[spec.name];
+        if (!keepNonFinite)
+            for (float v : data)
+                if (!std::isfinite(v))
+                    return Error{std::string(spec.name) + " accessor " + std::to_string(index) +
+                                 " (Draco) holds a NaN or infinite value"};
+        return {};
+    }
+};
+
+// Vertices whose value must be replaced, per attribute (empty: none).
+struct BadVertices {
+    std::vector<uint8_t> normal, tangent;
+};
+
+bool finite(const float* v, size_t k) {
+    for (size_t c = 0; c < k; ++c)
+        if (!std::isfinite(v[c])) return false;
+    return true;
+}
+
+// A vector attribute's element that cannot give a direction: marked in `bad` for a repair.
+bool markIfNoDirection(const float* v, size_t k, glm::vec3 d, size_t i, size_t n, std::vector<uint8_t>& bad) {
+    float len2 = glm::dot(d, d);
+    if (finite(v, k) && len2 > 1e-30f && std::isfinite(len2)) return false;
+    if (bad.empty()) bad.assign(n, 0);
+    bad[i] = 1;
+    return true;
+}
+
+// Each store* fills its attribute from `data` and returns how many values it replaced.
+size_t storeNormals(const std::vector<float>& data, size_t n, LocalPrimitive& out, std::vector<uint8_t>& bad) {
+    out.normals.resize(n);
+    size_t count = 0;
+    for (size_t i = 0; i < n; ++i) {
+        glm::vec3 v(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
+        count += markIfNoDirection(&data[3 * i], 3, v, i, n, bad);
+        out.normals[i] = safeNormalize(v, glm::vec3(0, 1, 0));
+    }
+    return count;
+}
+
+size_t storeTangents(const std::vector<float>& data, size_t n, LocalPrimitive& out, std::vector<uint8_t>& bad) {
+    out.tangents.resize(n);
+    size_t count = 0;
+    for (size_t i = 0; i < n; ++i) {
+        glm::vec3 t(data[4 * i], data[4 * i + 1], data[4 * i + 2]);
+        count += markIfNoDirection(&data[4 * i], 4, t, i, n, bad);
+        out.tangents[i] = glm::vec4(t, data[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
+    }
+    return count;
+}
+
+size_t storeUvs(const std::vector<float>& data, size_t n, LocalPrimitive& out) {
+    out.uvs.resize(n);
+    size_t count = 0;
+    for (size_t i = 0; i < n; ++i) {
+        out.uvs[i] = glm::vec2(data[2 * i], data[2 * i + 1]);
+        if (!finite(&data[2 * i], 2)) {
+            out.uvs[i] = glm::vec2(0.0f);
+            ++count;
+        }
+    }
+    return count;
+}
+
+size_t storeColors(const std::vector<float>& data, size_t comps, size_t n, LocalPrimitive& out) {
+    out.colors.resize(n);
+    size_t count = 0;
+    for (size_t i = 0; i < n; ++i) {
+        out.colors[i] = glm::vec4(data[comps * i], data[comps * i + 1], data[comps * i + 2],
+                                  comps == 4 ? data[comps * i + 3] : 1.0f);
+        if (!finite(&data[comps * i], comps)) {
+            out.colors[i] = glm::vec4(1.0f);
+            ++count;
+        }
+    }
+    return count;
+}
+
+// POSITION, then the optional attributes; values that are not finite are refused under
+// --strict and otherwise repaired (each repair recorded in out.repairs).
+Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options, LocalPrimitive& out,
+                            BadVertices& bad) {
+    Status s = r.fetch(kPosition, r.accessor("POSITION"), false);
+    if (!s) return s;
+    const std::vector<float>& data = r.data;
+    const size_t n = data.size() / 3;
+    out.positions.resize(n);
+    for (size_t i = 0; i < n; ++i) // a loop, not memcpy: data.data() is null when n == 0
+        out.positions[i] = glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
+    const bool keep = !options.strict; // non-finite values are repaired later, not refused
+    auto readOptional = [&](const AttributeSpec& spec, const char* problem, const char* action,
+                            auto&& store) -> Status {
+        int index = r.accessor(spec.name);
+        if (index < 0) return {};
+        // Compared before reading: an attribute's count is not bounded by POSITION's.
+        if (size_t(index) < r.model.accessors.size() && r.model.accessors[size_t(index)].count != n)
+            return Error{std::string(spec.name) + " has " +
+                         std::to_string(r.model.accessors[size_t(index)].count) +
+                         " elements but POSITION has " + std::to_string(n)};
+        Status f = r.fetch(spec, index, keep);
+        if (!f) return f;
+        if (size_t count = store(); count > 0)
+            out.repairs.push_back(SceneRepair{spec.name, index, count, n, problem, action});
+        return {};
+    };
+    s = readOptional(kNormal, "NaN, infinite or zero-length",
+                     "replaced by the area-weighted average of the face normals of the triangles using "
+                     "the vertex",
+                     [&] { return storeNormals(data, n, out, bad.normal); });
+    if (s)
+        s = readOptional(kTangent, "NaN, infinite or zero-length", "regenerated from the positions, normals and uvs",
+                         [&] { return storeTangents(data, n, out, bad.tangent); });
+    if (s) s = readOptional(kUv, "NaN or infinite", "set to (0, 0)", [&] { return storeUvs(data, n, out); });
+    if (s)
+        s = readOptional(kColor, "NaN or infinite", "set to white, opaque",
+                         [&] { return storeColors(data, r.comps, n, out); });
+    return s;
+}
+
+// The primitive's indices (the bitstream's, the accessor's or 0..n-1), each below n.
+Status readIndexList(AttributeReader& r, bool compressed, size_t n, std::vector<uint32_t>& indices) {
+    if (compressed) {
+        indices = std::move(r.draco.indices);
+        for (uint32_t i : indices)
+            if (i >= n)
+                return Error{"Draco index " + std::to_string(i) + " is out of range (" + std::to_string(n) +
+                             " vertices)"};
+    } else if (r.p.indices >= 0) {
+        return readIndices(r.model, r.p.indices, n, indices);
+    } else {
+        indices.resize(n);
+        for (uint32_t i = 0; i < n; ++i)
+            indices[i] = i;
+    }
+    return {};
+}
+
+void applyUvTransform(const tinygltf::Material& material, std::vector<glm::vec2>& uvs) {
+    const UvTransform t = materialUvTransform(material);
+    if (!t.present) return;
+    for (glm::vec2& uv : uvs) {
+        uv = t.matrix * glm::vec3(uv, 1.0f);
+        // Huge (finite) uvs times a scale can overflow: no texel is meant there.
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
+    }
+}
+
+// Repairs the bad normals from the faces, or makes all of them where the file has none.
+void completeNormals(bool smoothNormals, BadVertices& bad, LocalPrimitive& out) {
+    if (!bad.normal.empty()) {
+        std::vector<glm::vec3> smooth;
+        makeSmoothNormals(out.positions, out.indices, smooth);
+        for (size_t i = 0; i < out.normals.size(); ++i)
+            if (bad.normal[i]) out.normals[i] = smooth[i];
+    }
+    if (!out.normals.empty()) return;
+    // The spec asks for flat normals; smooth ones are an option.
+    if (smoothNormals) {
+        makeSmoothNormals(out.positions, out.indices, out.normals);
+    } else {
+        if (!bad.tangent.empty()) deindex(bad.tangent, out.indices);
+        makeFlatNormals(out);
+    }
+}
+
+// From the uvs where a normal map will read them, else any vector perpendicular to the normal.
+void generateTangents(bool normalMapped, const LocalPrimitive& p, std::vector<glm::vec4>& tangents) {
+    if (normalMapped) {
+        makeTangents(p.positions, p.normals, p.uvs, p.indices, tangents);
+        return;
+    }
+    tangents.resize(p.positions.size());
+    for (size_t i = 0; i < p.positions.size(); ++i)
+        tangents[i] = glm::vec4(anyPerpendicular(p.normals[i]), 1.0f);
+}
+
+// Repairs the bad tangents, or makes all of them where the file has none.
+void completeTangents(bool normalMapped, const std::vector<uint8_t>& badTangent, LocalPrimitive& out) {
+    if (out.tangents.empty()) {
+        generateTangents(normalMapped, out, out.tangents);
+    } else if (!badTangent.empty()) {
+        std::vector<glm::vec4> generated;
+        generateTangents(normalMapped, out, generated);
+        for (size_t i = 0; i < out.tangents.size(); ++i)
+            if (badTangent[i]) out.tangents[i] = generated[i];
+    }
+}
+
+} // namespace
+
 Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
                      const PrimitiveOptions& options, LocalPrimitive& out, const WarnFn& warn) {
     const tinygltf::Mesh& mesh = model.meshes[size_t(meshIndex)];
@@ -137,157 +357,24 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
         warn(label + ": mode " + std::to_string(mode) + " (points or lines) skipped");
         return {};
     }
-    auto attribute = [&](const char* name) {
-        auto it = p.attributes.find(name);
-        return it == p.attributes.end() ? -1 : it->second;
-    };
-    if (attribute("POSITION") < 0) {
+    AttributeReader reader{model, p};
+    if (reader.accessor("POSITION") < 0) {
         warn(label + ": no POSITION attribute, skipped");
         return {};
     }
-    static const AttributeSpec kPosition{
-        "POSITION", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
-    static const AttributeSpec kNormal{
-        "NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kShort}, true};
-    static const AttributeSpec kTangent{
-        "TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat, kByte, kShort}, true};
-    // Non-normalized integer uvs are KHR_mesh_quantization's; they are read as they are.
-    static const AttributeSpec kUv{
-        "TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
-    static const AttributeSpec kColor{
-        "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}, true};
-    std::vector<float> data;
-    size_t comps = 0;
-    DracoPrimitive draco;
     const bool compressed = hasDraco(p);
     if (compressed) {
-        Status d = decodeDraco(model, p, {kPosition, kNormal, kTangent, kUv, kColor}, draco);
+        Status d = decodeDraco(model, p, {kPosition, kNormal, kTangent, kUv, kColor}, reader.draco);
         if (!d) return fail(d);
         mode = TINYGLTF_MODE_TRIANGLES; // the bitstream's faces, whatever the mode (strips) said
     }
-    // An attribute from the Draco bitstream when the extension lists it, else its accessor.
-    auto fetch = [&](const AttributeSpec& spec, int index, bool keepNonFinite) -> Status {
-        auto it = draco.attributes.find(spec.name);
-        if (it == draco.attributes.end())
-            return readFloats(model, index, spec, data, comps, keepNonFinite);
-        data = std::move(it->second);
-        comps = draco.comps[spec.name];
-        if (!keepNonFinite)
-            for (float v : data)
-                if (!std::isfinite(v))
-                    return Error{std::string(spec.name) + " accessor " + std::to_string(index) +
-                                 " (Draco) holds a NaN or infinite value"};
-        return {};
-    };
-    Status s = fetch(kPosition, attribute("POSITION"), false);
+    BadVertices bad;
+    Status s = readVertexAttributes(reader, options, out, bad);
     if (!s) return fail(s);
-    const size_t n = data.size() / 3;
-    out.positions.resize(n);
-    for (size_t i = 0; i < n; ++i) // a loop, not memcpy: data.data() is null when n == 0
-        out.positions[i] = glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
-    const bool keep = !options.strict; // non-finite values are repaired below, not refused
-    auto readOptional = [&](const AttributeSpec& spec, auto&& store) -> Status {
-        int index = attribute(spec.name);
-        if (index < 0) return {};
-        // Compared before reading: an attribute's count is not bounded by POSITION's.
-        if (size_t(index) < model.accessors.size() && model.accessors[size_t(index)].count != n)
-            return Error{std::string(spec.name) + " has " +
-                         std::to_string(model.accessors[size_t(index)].count) +
-                         " elements but POSITION has " + std::to_string(n)};
-        Status r = fetch(spec, index, keep);
-        if (!r) return r;
-        store();
-        return {};
-    };
-    auto finite = [](const float* v, size_t k) {
-        for (size_t c = 0; c < k; ++c)
-            if (!std::isfinite(v[c])) return false;
-        return true;
-    };
-    // Vertices whose value must be replaced, per attribute (empty: none).
-    std::vector<uint8_t> badNormal, badTangent;
-    auto record = [&](const char* name, size_t count, const char* problem, const char* action) {
-        if (count > 0)
-            out.repairs.push_back(SceneRepair{name, attribute(name), count, n, problem, action});
-    };
-    s = readOptional(kNormal, [&] {
-        out.normals.resize(n);
-        size_t bad = 0;
-        for (size_t i = 0; i < n; ++i) {
-            glm::vec3 v(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
-            float len2 = glm::dot(v, v);
-            if (!finite(&data[3 * i], 3) || !(len2 > 1e-30f) || !std::isfinite(len2)) {
-                if (badNormal.empty()) badNormal.assign(n, 0);
-                badNormal[i] = 1;
-                ++bad;
-            }
-            out.normals[i] = safeNormalize(v, glm::vec3(0, 1, 0));
-        }
-        record("NORMAL", bad, "NaN, infinite or zero-length",
-               "replaced by the area-weighted average of the face normals of the triangles using "
-               "the vertex");
-    });
-    if (s)
-        s = readOptional(kTangent, [&] {
-            out.tangents.resize(n);
-            size_t bad = 0;
-            for (size_t i = 0; i < n; ++i) {
-                glm::vec3 t(data[4 * i], data[4 * i + 1], data[4 * i + 2]);
-                float len2 = glm::dot(t, t);
-                if (!finite(&data[4 * i], 4) || !(len2 > 1e-30f) || !std::isfinite(len2)) {
-                    if (badTangent.empty()) badTangent.assign(n, 0);
-                    badTangent[i] = 1;
-                    ++bad;
-                }
-                out.tangents[i] = glm::vec4(t, data[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
-            }
-            record("TANGENT", bad, "NaN, infinite or zero-length",
-                   "regenerated from the positions, normals and uvs");
-        });
-    if (s)
-        s = readOptional(kUv, [&] {
-            out.uvs.resize(n);
-            size_t bad = 0;
-            for (size_t i = 0; i < n; ++i) {
-                out.uvs[i] = glm::vec2(data[2 * i], data[2 * i + 1]);
-                if (!finite(&data[2 * i], 2)) {
-                    out.uvs[i] = glm::vec2(0.0f);
-                    ++bad;
-                }
-            }
-            record("TEXCOORD_0", bad, "NaN or infinite", "set to (0, 0)");
-        });
-    if (s)
-        s = readOptional(kColor, [&] {
-            out.colors.resize(n);
-            size_t bad = 0;
-            for (size_t i = 0; i < n; ++i) {
-                out.colors[i] = glm::vec4(data[comps * i], data[comps * i + 1], data[comps * i + 2],
-                                          comps == 4 ? data[comps * i + 3] : 1.0f);
-                if (!finite(&data[comps * i], comps)) {
-                    out.colors[i] = glm::vec4(1.0f);
-                    ++bad;
-                }
-            }
-            record("COLOR_0", bad, "NaN or infinite", "set to white, opaque");
-        });
-    if (!s) return fail(s);
-
+    const size_t n = out.positions.size();
     std::vector<uint32_t> indices;
-    if (compressed) {
-        indices = std::move(draco.indices);
-        for (uint32_t i : indices)
-            if (i >= n)
-                return fail(Error{"Draco index " + std::to_string(i) + " is out of range (" +
-                                  std::to_string(n) + " vertices)"});
-    } else if (p.indices >= 0) {
-        s = readIndices(model, p.indices, n, indices);
-        if (!s) return fail(s);
-    } else {
-        indices.resize(n);
-        for (uint32_t i = 0; i < n; ++i)
-            indices[i] = i;
-    }
+    s = readIndexList(reader, compressed, n, indices);
+    if (!s) return fail(s);
     if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
         warn(label + ": " + std::to_string(indices.size()) +
              " indices is not a multiple of 3; the last partial triangle is dropped");
@@ -300,49 +387,12 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
 
     if (out.uvs.empty()) out.uvs.assign(n, glm::vec2(0.0f));
     if (out.colors.empty()) out.colors.assign(n, glm::vec4(1.0f));
-    if (p.material >= 0 && size_t(p.material) < model.materials.size()) {
-        const UvTransform t = materialUvTransform(model.materials[size_t(p.material)]);
-        if (t.present)
-            for (glm::vec2& uv : out.uvs) {
-                uv = t.matrix * glm::vec3(uv, 1.0f);
-                // Huge (finite) uvs times a scale can overflow: no texel is meant there.
-                if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
-            }
-    }
-    if (!badNormal.empty()) {
-        std::vector<glm::vec3> smooth;
-        makeSmoothNormals(out.positions, out.indices, smooth);
-        for (size_t i = 0; i < n; ++i)
-            if (badNormal[i]) out.normals[i] = smooth[i];
-    }
-    if (out.normals.empty()) {
-        // The spec asks for flat normals; smooth ones are an option.
-        if (options.smoothNormals) {
-            makeSmoothNormals(out.positions, out.indices, out.normals);
-        } else {
-            if (!badTangent.empty()) deindex(badTangent, out.indices);
-            makeFlatNormals(out);
-        }
-    }
-    const bool normalMapped = p.material >= 0 && size_t(p.material) < model.materials.size() &&
-                              model.materials[size_t(p.material)].normalTexture.index >= 0;
-    auto generateTangents = [&](std::vector<glm::vec4>& tangents) {
-        if (normalMapped) {
-            makeTangents(out.positions, out.normals, out.uvs, out.indices, tangents);
-        } else {
-            tangents.resize(out.positions.size());
-            for (size_t i = 0; i < out.positions.size(); ++i)
-                tangents[i] = glm::vec4(anyPerpendicular(out.normals[i]), 1.0f);
-        }
-    };
-    if (out.tangents.empty()) {
-        generateTangents(out.tangents);
-    } else if (!badTangent.empty()) {
-        std::vector<glm::vec4> generated;
-        generateTangents(generated);
-        for (size_t i = 0; i < out.tangents.size(); ++i)
-            if (badTangent[i]) out.tangents[i] = generated[i];
-    }
+    const tinygltf::Material* material =
+        p.material >= 0 && size_t(p.material) < model.materials.size() ? &model.materials[size_t(p.material)]
+                                                                        : nullptr;
+    if (material) applyUvTransform(*material, out.uvs);
+    completeNormals(options.smoothNormals, bad, out);
+    completeTangents(material && material->normalTexture.index >= 0, bad.tangent, out);
     return {};
 }
 

@@ -184,42 +184,55 @@ bool toRgba8(const unsigned char* data, size_t size, int width, int height, int 
     return true;
 }
 
-Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
-                     Scene& scene, const WarnFn& warn) {
-    // Pass 1: which image each texture slot of each material shows (-1: none or unusable).
-    auto slotsOf = [](const tinygltf::Material& m) {
-        const auto& pbr = m.pbrMetallicRoughness;
-        return std::vector<std::pair<int, Slot>>{
-            {pbr.baseColorTexture.index, Slot::BaseColor},
+namespace {
+
+// Which image each texture slot of a material shows.
+std::vector<std::pair<int, Slot>> slotsOf(const tinygltf::Material& m) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    return {{pbr.baseColorTexture.index, Slot::BaseColor},
             {pbr.metallicRoughnessTexture.index, Slot::MetallicRoughness},
             {m.normalTexture.index, Slot::Normal},
             {m.occlusionTexture.index, Slot::Occlusion},
             {m.emissiveTexture.index, Slot::Emissive}};
-    };
-    auto imageOf = [&](int texture) -> int {
-        if (texture < 0 || size_t(texture) >= model.textures.size()) return -1;
-        int source = model.textures[size_t(texture)].source;
-        return source >= 0 && size_t(source) < model.images.size() ? source : -1;
-    };
-    std::vector<char> needed(model.images.size(), 0);
-    std::vector<int> flavoursLeft(model.images.size(), 0); // distinct sRGB flags still to create
-    {
-        std::vector<char> seen(model.images.size() * 2, 0);
-        for (const tinygltf::Material& m : model.materials)
-            for (auto [texture, slot] : slotsOf(m))
-                if (int image = imageOf(texture); image >= 0) {
-                    needed[size_t(image)] = 1;
-                    char& s = seen[size_t(image) * 2 + (isSrgb(slot) ? 1 : 0)];
-                    if (!s) ++flavoursLeft[size_t(image)];
-                    s = 1;
-                }
-    }
+}
+
+// The image a texture shows (-1: none or unusable).
+int imageOf(const tinygltf::Model& model, int texture) {
+    if (texture < 0 || size_t(texture) >= model.textures.size()) return -1;
+    int source = model.textures[size_t(texture)].source;
+    return source >= 0 && size_t(source) < model.images.size() ? source : -1;
+}
+
+// Per image: whether a material shows it, and how many distinct sRGB flags it is shown with.
+struct ImageUse {
+    std::vector<char> needed;
+    std::vector<int> flavoursLeft; // distinct sRGB flags still to create
+};
+
+ImageUse imageUses(const tinygltf::Model& model) {
+    ImageUse use{std::vector<char>(model.images.size(), 0), std::vector<int>(model.images.size(), 0)};
+    std::vector<char> seen(model.images.size() * 2, 0);
+    for (const tinygltf::Material& m : model.materials)
+        for (auto [texture, slot] : slotsOf(m))
+            if (int image = imageOf(model, texture); image >= 0) {
+                use.needed[size_t(image)] = 1;
+                char& s = seen[size_t(image) * 2 + (isSrgb(slot) ? 1 : 0)];
+                if (!s) ++use.flavoursLeft[size_t(image)];
+                s = 1;
+            }
+    return use;
+}
+
+// Decodes the images a material shows and the loader could read; warns of every image
+// without pixels (its problem from the loader or the decoder).
+Status decodeImages(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
+                    const std::vector<char>& needed, std::vector<Decoded>& decoded, const WarnFn& warn) {
     std::vector<int> toDecode;
     for (size_t i = 0; i < needed.size(); ++i)
         if (needed[i] && (i >= imageProblems.size() || imageProblems[i].empty()))
             toDecode.push_back(int(i));
     if (Status s = checkTextureSizes(model, toDecode); !s) return s;
-    std::vector<Decoded> decoded(model.images.size());
+    decoded.assign(model.images.size(), Decoded{});
     decodeAll(model, toDecode, decoded);
     for (size_t i = 0; i < needed.size(); ++i) {
         if (i < imageProblems.size() && !imageProblems[i].empty())
@@ -230,92 +243,117 @@ Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string
             warn(imageLabel(model, int(i)) + ": " + decoded[i].problem +
                  (needed[i] ? "; using a placeholder" : " (no material uses it)"));
     }
+    return {};
+}
 
-    // Pass 2: materials, creating textures on first use.
-    std::map<std::pair<int, bool>, int32_t> textureOf; // (image, srgb) -> scene texture
-    std::map<Slot, int32_t> placeholderOf;
-    auto resolve = [&](size_t material, int texture, Slot slot) -> int32_t {
+// The scene's textures, each made on first use: one per (image, sRGB) pair, one placeholder
+// per slot for every texture without pixels.
+class TextureTable {
+  public:
+    TextureTable(const tinygltf::Model& model, std::vector<Decoded>& decoded, std::vector<int> flavoursLeft,
+                 Scene& scene, const WarnFn& warn)
+        : model_(model), decoded_(decoded), flavoursLeft_(std::move(flavoursLeft)), scene_(scene), warn_(warn) {}
+
+    int32_t resolve(size_t material, int texture, Slot slot) {
         if (texture < 0) return kNoTexture;
-        int image = imageOf(texture);
-        if (image < 0 || !decoded[size_t(image)].problem.empty()) {
+        int image = imageOf(model_, texture);
+        if (image < 0 || !decoded_[size_t(image)].problem.empty()) {
             if (image < 0)
-                warn("material " + std::to_string(material) + ": texture " +
-                     std::to_string(texture) +
-                     " does not exist or has no image this loader can read; using a placeholder");
-            auto [it, added] = placeholderOf.try_emplace(slot, int32_t(scene.textures.size()));
-            if (added) scene.textures.push_back(placeholder(slot));
+                warn_("material " + std::to_string(material) + ": texture " + std::to_string(texture) +
+                      " does not exist or has no image this loader can read; using a placeholder");
+            auto [it, added] = placeholderOf_.try_emplace(slot, int32_t(scene_.textures.size()));
+            if (added) scene_.textures.push_back(placeholder(slot));
             return it->second;
         }
-        auto [it, added] =
-            textureOf.try_emplace({image, isSrgb(slot)}, int32_t(scene.textures.size()));
-        if (added) {
-            Decoded& d = decoded[size_t(image)];
-            Texture t;
-            const tinygltf::Image& src = model.images[size_t(image)];
-            t.name = !src.name.empty() ? src.name : "image " + std::to_string(image);
-            if (src.name.empty() && !src.uri.empty() && src.uri.rfind("data:", 0) != 0)
-                t.name = src.uri;
-            t.width = uint32_t(d.width), t.height = uint32_t(d.height);
-            t.srgb = isSrgb(slot);
-            // The last texture made from an image takes its pixels; an earlier one copies them.
-            if (--flavoursLeft[size_t(image)] == 0)
-                t.rgba8 = std::move(d.rgba8);
-            else
-                t.rgba8 = d.rgba8;
-            scene.textures.push_back(std::move(t));
-        }
+        auto [it, added] = textureOf_.try_emplace({image, isSrgb(slot)}, int32_t(scene_.textures.size()));
+        if (added) scene_.textures.push_back(makeTexture(image, isSrgb(slot)));
         return it->second;
-    };
+    }
 
+  private:
+    Texture makeTexture(int image, bool srgb) {
+        Decoded& d = decoded_[size_t(image)];
+        Texture t;
+        const tinygltf::Image& src = model_.images[size_t(image)];
+        t.name = !src.name.empty() ? src.name : "image " + std::to_string(image);
+        if (src.name.empty() && !src.uri.empty() && src.uri.rfind("data:", 0) != 0) t.name = src.uri;
+        t.width = uint32_t(d.width), t.height = uint32_t(d.height);
+        t.srgb = srgb;
+        // The last texture made from an image takes its pixels; an earlier one copies them.
+        if (--flavoursLeft_[size_t(image)] == 0)
+            t.rgba8 = std::move(d.rgba8);
+        else
+            t.rgba8 = d.rgba8;
+        return t;
+    }
+
+    const tinygltf::Model& model_;
+    std::vector<Decoded>& decoded_;
+    std::vector<int> flavoursLeft_;
+    Scene& scene_;
+    const WarnFn& warn_;
+    std::map<std::pair<int, bool>, int32_t> textureOf_; // (image, srgb) -> scene texture
+    std::map<Slot, int32_t> placeholderOf_;
+};
+
+// Material `index`'s factors, alpha mode and sidedness (its textures are set apart).
+Material readFactors(const tinygltf::Material& src, size_t index, const WarnFn& warn) {
+    const auto& pbr = src.pbrMetallicRoughness;
+    Material m;
+    m.name = src.name;
+    if (pbr.baseColorFactor.size() == 4)
+        m.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                      pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+    m.metallicFactor = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
+    m.roughnessFactor = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+    if (src.emissiveFactor.size() == 3)
+        m.emissiveFactor = glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
+    if (auto it = src.extensions.find("KHR_materials_emissive_strength");
+        it != src.extensions.end() && it->second.IsObject() && it->second.Has("emissiveStrength") &&
+        it->second.Get("emissiveStrength").IsNumber())
+        m.emissiveFactor *= float(it->second.Get("emissiveStrength").GetNumberAsDouble());
+    m.normalScale = float(src.normalTexture.scale);
+    m.occlusionStrength = float(src.occlusionTexture.strength);
+    if (src.alphaMode == "MASK")
+        m.alphaMode = AlphaMode::Mask;
+    else if (src.alphaMode == "BLEND")
+        m.alphaMode = AlphaMode::Blend;
+    else if (src.alphaMode != "OPAQUE")
+        warn("material " + std::to_string(index) + ": unknown alphaMode '" + src.alphaMode + "', drawn opaque");
+    m.alphaCutoff = float(src.alphaCutoff);
+    m.doubleSided = src.doubleSided;
+    return m;
+}
+
+int32_t& textureSlot(Material& m, Slot slot) {
+    switch (slot) {
+    case Slot::BaseColor: return m.baseColorTexture;
+    case Slot::MetallicRoughness: return m.metallicRoughnessTexture;
+    case Slot::Normal: return m.normalTexture;
+    case Slot::Occlusion: return m.occlusionTexture;
+    case Slot::Emissive: break;
+    }
+    return m.emissiveTexture;
+}
+
+} // namespace
+
+Status loadMaterials(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
+                     Scene& scene, const WarnFn& warn) {
+    // Pass 1: decode the images the materials show.
+    ImageUse use = imageUses(model);
+    std::vector<Decoded> decoded;
+    if (Status s = decodeImages(model, imageProblems, use.needed, decoded, warn); !s) return s;
+
+    // Pass 2: materials, creating textures on first use.
+    TextureTable textures(model, decoded, std::move(use.flavoursLeft), scene, warn);
     bool warnedTexCoord = false;
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& src = model.materials[i];
         const auto& pbr = src.pbrMetallicRoughness;
-        Material m;
-        m.name = src.name;
-        if (pbr.baseColorFactor.size() == 4)
-            m.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                                          pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
-        m.metallicFactor = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
-        m.roughnessFactor = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
-        if (src.emissiveFactor.size() == 3)
-            m.emissiveFactor =
-                glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
-        if (auto it = src.extensions.find("KHR_materials_emissive_strength");
-            it != src.extensions.end() && it->second.IsObject() &&
-            it->second.Has("emissiveStrength") && it->second.Get("emissiveStrength").IsNumber())
-            m.emissiveFactor *= float(it->second.Get("emissiveStrength").GetNumberAsDouble());
-        m.normalScale = float(src.normalTexture.scale);
-        m.occlusionStrength = float(src.occlusionTexture.strength);
-        if (src.alphaMode == "MASK")
-            m.alphaMode = AlphaMode::Mask;
-        else if (src.alphaMode == "BLEND")
-            m.alphaMode = AlphaMode::Blend;
-        else if (src.alphaMode != "OPAQUE")
-            warn("material " + std::to_string(i) + ": unknown alphaMode '" + src.alphaMode +
-                 "', drawn opaque");
-        m.alphaCutoff = float(src.alphaCutoff);
-        m.doubleSided = src.doubleSided;
-        for (auto [texture, slot] : slotsOf(src)) {
-            int32_t t = resolve(i, texture, slot);
-            switch (slot) {
-            case Slot::BaseColor:
-                m.baseColorTexture = t;
-                break;
-            case Slot::MetallicRoughness:
-                m.metallicRoughnessTexture = t;
-                break;
-            case Slot::Normal:
-                m.normalTexture = t;
-                break;
-            case Slot::Occlusion:
-                m.occlusionTexture = t;
-                break;
-            case Slot::Emissive:
-                m.emissiveTexture = t;
-                break;
-            }
-        }
+        Material m = readFactors(src, i, warn);
+        for (auto [texture, slot] : slotsOf(src))
+            textureSlot(m, slot) = textures.resolve(i, texture, slot);
         int texCoord = std::max({pbr.baseColorTexture.texCoord,
                                  pbr.metallicRoughnessTexture.texCoord, src.normalTexture.texCoord,
                                  src.occlusionTexture.texCoord, src.emissiveTexture.texCoord});

@@ -89,18 +89,17 @@ CourtyardMaterials addMaterials(Scene& scene, const CourtyardTextures& tx) {
     Material lamp = plain("lamp", vec3(1.0f, 0.9f, 0.75f), 0.0f, 0.4f);
     lamp.emissiveFactor = vec3(4.0f, 3.0f, 1.8f);
     cm.lamp = add(lamp);
-    Material grille = plain("iron_grille", vec3(1.0f), 1.0f, 0.5f);
-    grille.baseColorTexture = tx.grille;
-    grille.alphaMode = AlphaMode::Mask;
-    grille.alphaCutoff = 0.5f;
-    grille.doubleSided = true;
-    cm.grille = add(grille);
-    Material leaves = plain("foliage", vec3(1.0f), 0.0f, 0.7f);
-    leaves.baseColorTexture = tx.foliage;
-    leaves.alphaMode = AlphaMode::Mask;
-    leaves.alphaCutoff = 0.5f;
-    leaves.doubleSided = true;
-    cm.foliage = add(leaves);
+    // Alpha-tested and seen from both sides: the grille's bars, the leaves.
+    auto cutout = [&](const char* name, float metallic, float roughness, int32_t texture) {
+        Material m = plain(name, vec3(1.0f), metallic, roughness);
+        m.baseColorTexture = texture;
+        m.alphaMode = AlphaMode::Mask;
+        m.alphaCutoff = 0.5f;
+        m.doubleSided = true;
+        return m;
+    };
+    cm.grille = add(cutout("iron_grille", 1.0f, 0.5f, tx.grille));
+    cm.foliage = add(cutout("foliage", 0.0f, 0.7f, tx.foliage));
     cm.terracotta = add(plain("terracotta", vec3(0.62f, 0.30f, 0.18f), 0.0f, 0.8f));
     cm.iron = add(plain("iron", vec3(0.30f, 0.30f, 0.32f), 1.0f, 0.45f));
     return cm;

@@ -12,24 +12,19 @@
 #include <nlohmann/json.hpp>
 
 namespace tp::hostile {
-namespace {
-
-namespace fs = std::filesystem;
-using nlohmann::json;
-using Bytes = std::vector<uint8_t>;
 
 // Three vertices (36 bytes of floats) and three uint16 indices (6 bytes, padded to 8).
-Bytes triangleBin() {
+std::vector<uint8_t> triangleBin() {
     const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     const uint16_t indices[4] = {0, 1, 2, 0};
-    Bytes bin(44);
+    std::vector<uint8_t> bin(44);
     std::memcpy(bin.data(), positions, 36);
     std::memcpy(bin.data() + 36, indices, 8);
     return bin;
 }
 
-json triangleJson() {
-    return json::parse(R"({
+nlohmann::json triangleJson() {
+    return nlohmann::json::parse(R"({
       "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
       "nodes": [{"mesh": 0}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
@@ -41,6 +36,12 @@ json triangleJson() {
                       {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
       "buffers": [{"uri": "tri.bin", "byteLength": 44}]})");
 }
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Bytes = std::vector<uint8_t>;
 
 void put32(Bytes& b, size_t at, uint32_t v) {
     std::memcpy(b.data() + at, &v, 4); // GLB is little-endian, as is every machine we build on

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace tp::hostile {
 
 enum class Expect {
@@ -29,5 +31,10 @@ std::vector<Case> writeHostileScenes(const std::filesystem::path& root);
 // A valid one-triangle scene, for seeds: .gltf text with its buffer as a data URI, and .glb.
 std::vector<uint8_t> validTriangleGltf();
 std::vector<uint8_t> validTriangleGlb();
+
+// The valid triangle's parts, for a test to break one way: its glTF, whose one buffer is the
+// file "tri.bin", and that buffer's 44 bytes (three float positions, three uint16 indices).
+nlohmann::json triangleJson();
+std::vector<uint8_t> triangleBin();
 
 } // namespace tp::hostile

@@ -11,9 +11,11 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <zlib.h>
 
 #include "core/scene/gltf_internal.h"
 #include "core/scene/gltf_loader.h"
+#include "tests/cli/hostile_scenes.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -274,22 +276,8 @@ class GltfGenerated : public ::testing::Test {
         fs::remove_all(dir_);
         fs::create_directories(dir_ / "scene");
         // One triangle in the z = 0 plane, counter-clockwise seen from +z, and its indices.
-        float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-        uint16_t indices[4] = {0, 1, 2, 0};
-        bin_.resize(44);
-        std::memcpy(bin_.data(), positions, 36);
-        std::memcpy(bin_.data() + 36, indices, 8);
-        gltf_ = json::parse(R"({
-          "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
-          "nodes": [{"mesh": 0}],
-          "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-          "accessors": [
-            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-             "min": [0, 0, 0], "max": [1, 1, 0]},
-            {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
-          "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
-                          {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
-          "buffers": [{"uri": "tri.bin", "byteLength": 44}]})");
+        bin_ = hostile::triangleBin();
+        gltf_ = hostile::triangleJson();
     }
     void TearDown() override { fs::remove_all(dir_); }
 
@@ -468,18 +456,10 @@ TEST_F(GltfGenerated, LightsEmissiveStrengthAndFileCamera) {
     EXPECT_LT(s.camera.target.z, 4.0f);
 }
 
-// A PNG written by hand (stored deflate blocks), so the test needs no encoder.
+// A PNG written by hand (stored deflate blocks), so the test needs no encoder; zlib only for
+// the chunks' CRC.
 std::vector<uint8_t> makePng(uint32_t w, uint32_t h, uint8_t bitDepth, uint8_t colorType,
                              const std::vector<uint8_t>& raw /* filter bytes included */) {
-    auto crc = [](const uint8_t* p, size_t n) {
-        uint32_t c = 0xFFFFFFFFu;
-        for (size_t i = 0; i < n; ++i) {
-            c ^= p[i];
-            for (int k = 0; k < 8; ++k)
-                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-        }
-        return c ^ 0xFFFFFFFFu;
-    };
     std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     auto be32 = [](std::vector<uint8_t>& v, uint32_t x) {
         for (int s = 24; s >= 0; s -= 8)
@@ -490,7 +470,7 @@ std::vector<uint8_t> makePng(uint32_t w, uint32_t h, uint8_t bitDepth, uint8_t c
         std::vector<uint8_t> body(type, type + 4);
         body.insert(body.end(), data.begin(), data.end());
         png.insert(png.end(), body.begin(), body.end());
-        be32(png, crc(body.data(), body.size()));
+        be32(png, uint32_t(crc32(0, body.data(), uInt(body.size()))));
     };
     std::vector<uint8_t> ihdr;
     be32(ihdr, w);

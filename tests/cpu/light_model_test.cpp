@@ -40,14 +40,24 @@ TEST(LightModel, DistanceClampKeepsTouchingLightFinite) {
     EXPECT_NEAR(a0, 1.0f / (TP_MIN_LIGHT_DISTANCE * TP_MIN_LIGHT_DISTANCE), 1.0f);
 }
 
-TEST(LightModel, BrdfFiniteAtRoughnessZeroAndGrazing) {
+namespace {
+
+// A white surface at the origin facing +z, seen from straight above.
+SurfaceSample whiteFacingUp(float metallic, float roughness) {
     SurfaceSample s;
     s.position = vec3(0.0f);
     s.normal = vec3(0, 0, 1);
     s.toViewer = vec3(0, 0, 1);
     s.baseColor = vec3(1.0f);
-    s.metallic = 1.0f;
-    s.roughness = 0.0f;
+    s.metallic = metallic;
+    s.roughness = roughness;
+    return s;
+}
+
+} // namespace
+
+TEST(LightModel, BrdfFiniteAtRoughnessZeroAndGrazing) {
+    SurfaceSample s = whiteFacingUp(1.0f, 0.0f);
     vec3 spike = brdfCos(s, vec3(0, 0, 1));
     EXPECT_TRUE(std::isfinite(spike.x));
     EXPECT_GT(spike.x, 0.0f);
@@ -59,13 +69,7 @@ TEST(LightModel, BrdfFiniteAtRoughnessZeroAndGrazing) {
 
 TEST(LightModel, LambertEnergyOfWhiteDielectricIsBelowOne) {
     // Monte-Carlo-free check: integrate brdfCos over the hemisphere on a grid.
-    SurfaceSample s;
-    s.position = vec3(0.0f);
-    s.normal = vec3(0, 0, 1);
-    s.toViewer = vec3(0, 0, 1);
-    s.baseColor = vec3(1.0f);
-    s.metallic = 0.0f;
-    s.roughness = 1.0f;
+    SurfaceSample s = whiteFacingUp(0.0f, 1.0f);
     double sum = 0.0;
     const int n = 256;
     for (int i = 0; i < n; ++i)

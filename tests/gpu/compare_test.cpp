@@ -81,6 +81,52 @@ void expectMemoryTotal(const json& memory, const std::string& where) {
     EXPECT_GT(sum, 0u) << where;
 }
 
+// One pipeline's entry in report.json: its run (timings on `device`, memory), its error
+// against the reference (metrics, FLIP) and no dropped lights.
+void expectPipelineEntry(const json& p, const std::string& name, const std::string& device) {
+    EXPECT_EQ(p["name"], name);
+    ASSERT_EQ(p["status"], "ok") << p.value("error", "");
+    ASSERT_GE(p["run"]["timings"].size(), 2u); // "frame" and at least one pass
+    EXPECT_EQ(p["run"]["timings"][0]["pass"], "frame");
+    for (const json& t : p["run"]["timings"]) {
+        EXPECT_EQ(t["device"], device);
+        EXPECT_LE(t["min_ms"].get<double>(), t["median_ms"].get<double>());
+        EXPECT_LE(t["median_ms"].get<double>(), t["max_ms"].get<double>());
+    }
+    expectMemoryTotal(p["run"]["memory"], name);
+    EXPECT_DOUBLE_EQ(p["run"]["memory"]["bytes_per_pixel"].get<double>(),
+                     p["run"]["memory"]["total_bytes"].get<double>() / (96.0 * 54.0));
+    for (const json& e : p["run"]["memory"]["resources"]) EXPECT_NE(e["name"], "vertices"); // scene is shared
+    expectMetrics(p["error_vs_reference"]["hdr"], "hdr");
+    expectMetrics(p["error_vs_reference"]["tonemapped"], "tonemapped");
+    for (const char* kind : {"ldr", "hdr"}) {
+        const json& f = p["error_vs_reference"]["flip"][kind];
+        for (const char* k : {"mean", "weighted_median", "weighted_q1", "weighted_q3", "min", "max"}) {
+            ASSERT_TRUE(f[k].is_number()) << kind << " " << k;
+            EXPECT_GE(f[k].get<double>(), 0.0);
+            EXPECT_LE(f[k].get<double>(), 1.0);
+        }
+    }
+    EXPECT_GE(p["error_vs_reference"]["flip"]["hdr"]["exposures"].get<int>(), 2);
+    EXPECT_EQ(p["lights_dropped"].get<double>(), 0.0);
+}
+
+// One pair's entry in report.json: its files, metrics, and an EXR of a - b that agrees with
+// them.
+void expectPairEntry(const json& pair, const std::string& out) {
+    const std::string stem = pair["a"].get<std::string>() + "_vs_" + pair["b"].get<std::string>() + "_diff";
+    EXPECT_EQ(pair["files"], json({stem + ".exr", stem + ".png"}));
+    expectMetrics(pair["hdr"], stem);
+    expectMetrics(pair["tonemapped"], stem);
+    Result<ImageRGBA> diff = readExr(out + "/" + stem + ".exr");
+    ASSERT_TRUE(diff.ok()) << diff.error();
+    // The EXR holds float(a - b): within one float rounding (2^-24 relative) of the metric's
+    // difference, which is taken in double.
+    const double maxAbs = pair["hdr"]["max_abs"].get<double>();
+    EXPECT_NEAR(computeError(*diff, ImageRGBA(96, 54)).maxAbs, maxAbs, maxAbs * 0x1p-24) << stem;
+    EXPECT_TRUE(fs::exists(out + "/" + stem + ".png")) << stem;
+}
+
 TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     const std::string out = freshDir("compare_all");
     int rc = runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "8", "--seed", "3", "--frames", "1",
@@ -111,47 +157,13 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     for (size_t i = 0; i < names.size(); ++i) {
         const json& p = r["pipelines"][i];
         SCOPED_TRACE(names[i]);
-        EXPECT_EQ(p["name"], names[i]);
-        ASSERT_EQ(p["status"], "ok") << p.value("error", "");
-        ASSERT_GE(p["run"]["timings"].size(), 2u); // "frame" and at least one pass
-        EXPECT_EQ(p["run"]["timings"][0]["pass"], "frame");
-        for (const json& t : p["run"]["timings"]) {
-            EXPECT_EQ(t["device"], device);
-            EXPECT_LE(t["min_ms"].get<double>(), t["median_ms"].get<double>());
-            EXPECT_LE(t["median_ms"].get<double>(), t["max_ms"].get<double>());
-        }
-        expectMemoryTotal(p["run"]["memory"], names[i]);
-        EXPECT_DOUBLE_EQ(p["run"]["memory"]["bytes_per_pixel"].get<double>(),
-                         p["run"]["memory"]["total_bytes"].get<double>() / (96.0 * 54.0));
-        for (const json& e : p["run"]["memory"]["resources"]) EXPECT_NE(e["name"], "vertices"); // scene is shared
-        expectMetrics(p["error_vs_reference"]["hdr"], "hdr");
-        expectMetrics(p["error_vs_reference"]["tonemapped"], "tonemapped");
-        for (const char* kind : {"ldr", "hdr"}) {
-            const json& f = p["error_vs_reference"]["flip"][kind];
-            for (const char* k : {"mean", "weighted_median", "weighted_q1", "weighted_q3", "min", "max"}) {
-                ASSERT_TRUE(f[k].is_number()) << kind << " " << k;
-                EXPECT_GE(f[k].get<double>(), 0.0);
-                EXPECT_LE(f[k].get<double>(), 1.0);
-            }
-        }
-        EXPECT_GE(p["error_vs_reference"]["flip"]["hdr"]["exposures"].get<int>(), 2);
-        EXPECT_EQ(p["lights_dropped"].get<double>(), 0.0);
+        ASSERT_NO_FATAL_FAILURE(expectPipelineEntry(p, names[i], device));
         largestP99 = std::max(largestP99, p["difference_p99"].get<float>());
     }
     EXPECT_FLOAT_EQ(r["difference_scale"]["value"].get<float>(), std::max(largestP99, 1e-6f));
     EXPECT_EQ(r["pairwise"].size(), names.size() * (names.size() - 1) / 2);
     for (const json& pair : r["pairwise"]) { // a - b as EXR and heat map, listed in the report
-        const std::string stem = pair["a"].get<std::string>() + "_vs_" + pair["b"].get<std::string>() + "_diff";
-        EXPECT_EQ(pair["files"], json({stem + ".exr", stem + ".png"}));
-        expectMetrics(pair["hdr"], stem);
-        expectMetrics(pair["tonemapped"], stem);
-        Result<ImageRGBA> diff = readExr(out + "/" + stem + ".exr");
-        ASSERT_TRUE(diff.ok()) << diff.error();
-        // The EXR holds float(a - b): within one float rounding (2^-24 relative) of the metric's
-        // difference, which is taken in double.
-        const double maxAbs = pair["hdr"]["max_abs"].get<double>();
-        EXPECT_NEAR(computeError(*diff, ImageRGBA(96, 54)).maxAbs, maxAbs, maxAbs * 0x1p-24) << stem;
-        EXPECT_TRUE(fs::exists(out + "/" + stem + ".png")) << stem;
+        ASSERT_NO_FATAL_FAILURE(expectPairEntry(pair, out));
     }
 
     // One exposure for every PNG: the automatic one of the reference image as written.

@@ -270,6 +270,41 @@ TEST(MultipassForward, LightsTouchingNoMeshIssueNoDraw) {
     expectNoValidationMessages(*ctx);
 }
 
+Material paneMaterial(glm::vec4 tint) {
+    Material m;
+    m.name = "pane";
+    m.baseColorFactor = tint;
+    m.roughnessFactor = 0.4f;
+    m.alphaMode = AlphaMode::Blend;
+    m.doubleSided = true;
+    return m;
+}
+
+// multipass_forward and the reference on one scene at 96x64 with `msaa` samples, shaded per
+// sample (against the supersampled reference).
+struct PaneRuns {
+    RunResult mp, ref;
+};
+
+PaneRuns runAgainstReference(GpuContext& ctx, SceneGpu& gpu, uint32_t msaa) {
+    RenderSettings s;
+    s.width = 96;
+    s.height = 64;
+    s.msaa = msaa;
+    s.set("msaa-shading", "sample");
+    return {runOrFail(ctx, gpu, "multipass_forward", s), runOrFail(ctx, gpu, "reference", s)};
+}
+
+// The multipass image within the reference's bound, the blended layers' roundings counted;
+// printed as `what`.
+void expectWithinBlendedBound(const PaneRuns& r, const Scene& scene, const SceneGpu& gpu, double lights,
+                              uint32_t msaa, const char* what) {
+    std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
+    BoundCheck b = checkBound(r.mp.hdr, r.ref.hdr, lights, kEps32, &layers);
+    EXPECT_LE(b.worstRatio, 1.0) << msaa << "x: max abs " << b.maxAbs;
+    std::printf("[   info   ] %s %ux: worst/bound %.3g, max abs %.3g\n", what, msaa, b.worstRatio, b.maxAbs);
+}
+
 // Overlapping blended panes (separate draws) over the floor, lit by several lights: each
 // draw finishes its passes before the next, so the composite equals the reference's.
 TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
@@ -280,13 +315,7 @@ TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
     Scene scene = makeFloorScene(lights);
     const glm::vec4 tints[3] = {{1, 0.2f, 0.2f, 0.5f}, {0.2f, 1, 0.3f, 0.35f}, {0.3f, 0.4f, 1, 0.7f}};
     for (int i = 0; i < 3; ++i) {
-        Material m;
-        m.name = "pane";
-        m.baseColorFactor = tints[i];
-        m.roughnessFactor = 0.4f;
-        m.alphaMode = AlphaMode::Blend;
-        m.doubleSided = true;
-        scene.materials.push_back(m);
+        scene.materials.push_back(paneMaterial(tints[i]));
         float z = 2.0f - 1.2f * float(i), x = -2.0f + 0.8f * float(i);
         scene.meshes.push_back(quad({x, 0.2f, z}, {2.5f, 0, 0}, {0, 2.0f, 0}, uint32_t(scene.materials.size() - 1)));
     }
@@ -294,31 +323,12 @@ TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
     SceneGpu gpu(*ctx, scene);
     gpu.setLights(scene.lights);
     for (uint32_t msaa : {1u, 4u}) {
-        RenderSettings s;
-        s.width = 96;
-        s.height = 64;
-        s.msaa = msaa;
-        s.set("msaa-shading", "sample"); // against the supersampled reference
-        RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
-        RunResult ref = runOrFail(*ctx, gpu, "reference", s);
+        PaneRuns r = runAgainstReference(*ctx, gpu, msaa);
         // 3 composites + every light on every pane, each a light draw and a transmittance reset.
-        EXPECT_EQ(statOf(mp, "blended_draws"), 3.0 + 2.0 * 9.0);
-        std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
-        BoundCheck b = checkBound(mp.hdr, ref.hdr, double(lights.size()), kEps32, &layers);
-        EXPECT_LE(b.worstRatio, 1.0) << msaa << "x: max abs " << b.maxAbs;
-        std::printf("[   info   ] panes %ux: worst/bound %.3g, max abs %.3g\n", msaa, b.worstRatio, b.maxAbs);
+        EXPECT_EQ(statOf(r.mp, "blended_draws"), 3.0 + 2.0 * 9.0);
+        expectWithinBlendedBound(r, scene, gpu, double(lights.size()), msaa, "panes");
     }
     expectNoValidationMessages(*ctx);
-}
-
-Material paneMaterial(glm::vec4 tint) {
-    Material m;
-    m.name = "pane";
-    m.baseColorFactor = tint;
-    m.roughnessFactor = 0.4f;
-    m.alphaMode = AlphaMode::Blend;
-    m.doubleSided = true;
-    return m;
 }
 
 // One blended mesh made of two panes, one behind the other on screen: a draw overlapping
@@ -351,20 +361,11 @@ TEST(MultipassForward, BlendedMeshOverlappingItselfCompositesLikeTheReference) {
     SceneGpu gpu(*ctx, scene);
     gpu.setLights(scene.lights);
     for (uint32_t msaa : {1u, 4u}) {
-        RenderSettings s;
-        s.width = 96;
-        s.height = 64;
-        s.msaa = msaa;
-        s.set("msaa-shading", "sample"); // against the supersampled reference
-        RunResult mp = runOrFail(*ctx, gpu, "multipass_forward", s);
-        RunResult ref = runOrFail(*ctx, gpu, "reference", s);
-        EXPECT_EQ(statOf(mp, "blended_draws"), 2.0 + 2.0 * 4.0);
-        EXPECT_EQ(statOf(mp, "blended_light_draws"), 4.0);
-        expectConsistentStats(mp);
-        std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
-        BoundCheck b = checkBound(mp.hdr, ref.hdr, double(lights.size()), kEps32, &layers);
-        EXPECT_LE(b.worstRatio, 1.0) << msaa << "x: max abs " << b.maxAbs;
-        std::printf("[   info   ] self-overlapping mesh %ux: worst/bound %.3g, max abs %.3g\n", msaa, b.worstRatio, b.maxAbs);
+        PaneRuns r = runAgainstReference(*ctx, gpu, msaa);
+        EXPECT_EQ(statOf(r.mp, "blended_draws"), 2.0 + 2.0 * 4.0);
+        EXPECT_EQ(statOf(r.mp, "blended_light_draws"), 4.0);
+        expectConsistentStats(r.mp);
+        expectWithinBlendedBound(r, scene, gpu, double(lights.size()), msaa, "self-overlapping mesh");
     }
     expectNoValidationMessages(*ctx);
 }
