@@ -4,6 +4,7 @@
 #include <bit>
 
 #include "core/gpu/context.h"
+#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/gpu/vk_check.h"
@@ -84,10 +85,7 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
 
 void VolumeLighting::prepare(FrameGraph& graph) {
     // texelFetch only: the sampler's filtering is never used.
-    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
-    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    sampler_ = createNearestClampSampler(ctx_);
     prepareBase(graph);
     prepareLights(graph);
     if (perSampleHdr()) prepareSampleBase(graph);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/gpu/context.h"
+#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
@@ -46,24 +47,18 @@ void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
 }
 
 void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
-    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
-    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    sampler_ = createNearestClampSampler(ctx_);
     std::vector<ExternalBuffer> externals = {{TP_FP_BINDING_PARAMS, params}};
     if (!blendBounds_) {
-        const uint32_t empty[4] = {TP_LA_BLEND_EMPTY, TP_LA_BLEND_EMPTY, 0, 0};
-        noBlendBounds_ = createBufferWithData(ctx_, empty, sizeof(empty), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                              {graph.owner(), "", "blended_bounds_unused",
-                                               "stand-in: no blended draws, no blended depth bounds"});
+        noBlendBounds_ = createStandInBuffer(ctx_, {graph.owner(), "", "blended_bounds_unused",
+                                                    "stand-in: no blended draws, no blended depth bounds"},
+                                             {TP_LA_BLEND_EMPTY, TP_LA_BLEND_EMPTY, 0, 0});
         externals.push_back({TP_FP_BINDING_BLEND_BOUNDS, noBlendBounds_.buffer});
     }
     if (!config_.spheres) {
         // The shader declares the spheres whatever kSpheres says.
-        const uint32_t zeros[4] = {};
-        noSpheres_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                          {graph.owner(), "", "light_spheres_unused",
-                                           "stand-in: each candidate's sphere is computed in the culling"});
+        noSpheres_ = createStandInBuffer(ctx_, {graph.owner(), "", "light_spheres_unused",
+                                                "stand-in: each candidate's sphere is computed in the culling"});
         externals.push_back({TP_FP_BINDING_SPHERES, noSpheres_.buffer});
     }
     set_ = graph.createPassSet("light_culling", sampler_, externals);

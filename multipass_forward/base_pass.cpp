@@ -3,7 +3,6 @@
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/render/scene_gpu.h"
-#include "core/passes/scene_draws.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -36,7 +35,7 @@ void BasePass::record(PassContext& pc, const Targets& t, bool resolve) {
     if (pipeline_) {
         bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const auto* list : {&env_.plan.opaque, &env_.plan.masked}) {
-            for (const DrawItem* d : *list) passes::recordSceneDraw(pc.cmd, env_.layout, *d);
+            for (const DrawItem* d : *list) recordDraw(pc.cmd, env_.layout, *d);
             draws_ += uint32_t(list->size());
         }
     }

@@ -17,7 +17,6 @@
 #include "core/gpu/rendering.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
-#include "core/passes/scene_draws.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -124,9 +123,9 @@ void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd, size
     for (const auto& [light, scissor] : bd.lights) {
         setScissor(pc.cmd, scissor);
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
-        passes::recordSceneDraw(pc.cmd, env_.layout, reversed, light);
+        recordDraw(pc.cmd, env_.layout, reversed, light);
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, reset_);
-        passes::recordSceneDraw(pc.cmd, env_.layout, reversed);
+        recordDraw(pc.cmd, env_.layout, reversed);
     }
 }
 
@@ -139,7 +138,7 @@ void BlendedPass::recordAdditiveLights(PassContext& pc, const BlendedDraw& bd) {
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
     for (const auto& [light, scissor] : bd.lights) {
         setScissor(pc.cmd, scissor);
-        passes::recordSceneDraw(pc.cmd, env_.layout, *bd.draw, light);
+        recordDraw(pc.cmd, env_.layout, *bd.draw, light);
     }
 }
 
@@ -154,7 +153,7 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, base_);
         scene.bindIndexBuffer(pc.cmd);
         setScissor(pc.cmd, full);
-        passes::recordSceneDraw(pc.cmd, env_.layout, *bd.draw);
+        recordDraw(pc.cmd, env_.layout, *bd.draw);
         if (additive_)
             recordAdditiveLights(pc, bd);
         else

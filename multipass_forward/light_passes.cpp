@@ -5,7 +5,6 @@
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/render/scene_gpu.h"
-#include "core/passes/scene_draws.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -29,7 +28,7 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
         bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const LightBatch& batch : env_.plan.batches) {
             setScissor(pc.cmd, batch.scissor);
-            for (const DrawItem* d : batch.draws) passes::recordSceneDraw(pc.cmd, env_.layout, *d, batch.light);
+            for (const DrawItem* d : batch.draws) recordDraw(pc.cmd, env_.layout, *d, batch.light);
             draws_ += uint32_t(batch.draws.size());
         }
     }

@@ -51,7 +51,7 @@ std::string fragmentShader(const PassEnv& env, const std::string& stem);
 // --msaa-shading sample (the reference's rate), else once per pixel; scene layout,
 // accumulation format.
 GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
-// Draws are recorded with passes::recordSceneDraw (core/passes/scene_draws.h); a light pass
+// Draws are recorded with recordDraw (core/render/scene_gpu.h); a light pass
 // gives its light as DrawPush.pad0 (TP_MP_LIGHT_INDEX), ignored by non-light shaders.
 // Binds `pipeline`, the scene set and the scene's index buffer: what every draw loop needs.
 void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline);

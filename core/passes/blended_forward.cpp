@@ -1,6 +1,7 @@
 #include "core/passes/blended_forward.h"
 
 #include "core/gpu/context.h"
+#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/gpu/resources.h"
@@ -36,10 +37,8 @@ void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t,
 void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binned) {
     std::vector<ExternalBuffer> externals = {{TP_DEF_FWD_BINDING_CANDIDATES, candidates}};
     if (!masks_.valid()) {
-        const uint32_t zeros[4] = {};
-        noMasks_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                        {graph.owner(), "", "transparent_cluster_masks_unused",
-                                         "stand-in: slice rows are clustered only"});
+        noMasks_ = createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
+                                              "stand-in: slice rows are clustered only"});
         externals.push_back({TP_DEF_FWD_BINDING_MASKS, noMasks_.buffer});
     }
     set_ = graph.createPassSet("transparent_forward", VK_NULL_HANDLE, externals);

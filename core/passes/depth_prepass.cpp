@@ -3,7 +3,6 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
-#include "core/passes/scene_draws.h"
 #include "core/render/scene_gpu.h"
 
 namespace tp::passes {
@@ -49,7 +48,7 @@ void DepthPrepass::record(PassContext& pc) {
     for (auto [pipeline, list] : {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
         if (!pipeline) continue;
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        for (const DrawItem* d : *list) recordSceneDraw(pc.cmd, layout_, *d);
+        for (const DrawItem* d : *list) recordDraw(pc.cmd, layout_, *d);
         draws_ += uint32_t(list->size());
     }
     endRendering(pc);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/gpu/context.h"
+#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
@@ -59,10 +60,7 @@ std::string TiledLighting::shaderName() const {
 
 void TiledLighting::prepare(FrameGraph& graph) {
     // texelFetch only: the sampler's filtering is never used.
-    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
-    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    sampler_ = createNearestClampSampler(ctx_);
     std::vector<ExternalBuffer> externals;
     if (t_.transparentLists.valid()) {
         // Uploaded once per configuration: the compact layout's runs (blended_lists.h plans them).
@@ -73,10 +71,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
         externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
         if (!transparentMasks_.valid()) {
             // The shader declares the slice rows whenever it writes lists; only clustered uses them.
-            const uint32_t zeros[4] = {};
-            noMasks_ = createBufferWithData(ctx_, zeros, sizeof(zeros), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                            {graph.owner(), "", "transparent_cluster_masks_unused",
-                                             "stand-in: slice rows are clustered only"});
+            noMasks_ = createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
+                                                  "stand-in: slice rows are clustered only"});
             externals.push_back({TP_DEF_BINDING_TRANSPARENT_MASKS, noMasks_.buffer});
         }
     }

@@ -235,12 +235,15 @@ void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFil
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     std::vector<const DrawItem*> items = drawList(filter);
     bindIndexBuffer(cmd);
-    for (const DrawItem* d : items) {
-        gpu::DrawPush push{d->material, 0, 0, 0};
-        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-        vkCmdSetCullMode(cmd, d->doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-        vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, d->vertexOffset, 0);
-    }
+    for (const DrawItem* d : items) recordDraw(cmd, layout, *d);
+}
+
+void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t pad0) {
+    gpu::DrawPush push{d.material, 0, 0, 0};
+    push.pad0 = pad0;
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdSetCullMode(cmd, d.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+    vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
 }
 
 } // namespace tp

@@ -98,4 +98,9 @@ class SceneGpu {
 
 gpu::LightGpu toGpu(const Light& light);
 
+// One scene draw as every pass records it: DrawPush (the material, and a pass's own word pad0:
+// multipass forward's light index), cull mode from the material's double-sidedness, the
+// indexed draw. The caller binds the pipeline, the scene set and the index buffer.
+void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t pad0 = 0);
+
 } // namespace tp
