@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
             tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
             tp::cli::addSweepCommand(app, std::vector<std::string>(argv, argv + argc)),
             tp::cli::addStressCommand(app, std::vector<std::string>(argv, argv + argc)),
-            tp::cli::addRenderCommand(app), tp::cli::addInfoCommand(app),
+            tp::cli::addRenderCommand(app),
+            tp::cli::addInfoCommand(app),
             tp::cli::addViewCommand(app, std::vector<std::string>(argv, argv + argc))};
         app.parse(argc, argv);
         for (auto& command : commands) {

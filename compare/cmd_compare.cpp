@@ -13,11 +13,11 @@
 #include "compare/compare.h"
 #include "compare/report_html.h"
 #include "compare/report_json.h"
-#include "core/reference/reference_renderer.h"
 #include "core/image/difference.h"
 #include "core/image/flip.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
+#include "core/reference/reference_renderer.h"
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
@@ -30,15 +30,19 @@ void check(const Status& s) {
 }
 
 // Files of the pair (a, b): the signed difference a - b.
-std::string pairDiffStem(const std::string& a, const std::string& b) { return a + "_vs_" + b + "_diff"; }
+std::string pairDiffStem(const std::string& a, const std::string& b) {
+    return a + "_vs_" + b + "_diff";
+}
 
 // The legend's font scales with its height: keep it readable when the page shrinks a large
 // image to a column (about 320-600 px wide).
-uint32_t legendHeight(const ImageRGBA& image) { return 24 * std::max(1u, image.width / 320); }
+uint32_t legendHeight(const ImageRGBA& image) {
+    return 24 * std::max(1u, image.width / 320);
+}
 
 // Signed EXR and heat map (on the report's one scale) of a difference image.
-void writeDifference(const std::string& out, const std::string& stem, const ImageRGBA& diff, float scale,
-                     std::vector<std::string>& files) {
+void writeDifference(const std::string& out, const std::string& stem, const ImageRGBA& diff,
+                     float scale, std::vector<std::string>& files) {
     check(writeExr(out + "/" + stem + ".exr", diff, ExrPixelType::Float));
     check(writePng(out + "/" + stem + ".png", heatMap(diff, scale, legendHeight(diff))));
     files.push_back(stem + ".exr");
@@ -47,15 +51,17 @@ void writeDifference(const std::string& out, const std::string& stem, const Imag
 
 // A previous run's report must not survive next to this run's partial output.
 void removeStaleOutputs(const std::string& out, const std::vector<std::string>& names) {
-    std::vector<std::string> files = {"report.json", "report.html", "lights.json", "camera.json", "reference.exr", "reference.png",
-                                      "reference_center.exr", "reference_center.png"};
+    std::vector<std::string> files = {
+        "report.json",   "report.html",   "lights.json",          "camera.json",
+        "reference.exr", "reference.png", "reference_center.exr", "reference_center.png"};
     for (const std::string& n : names)
-        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr", "_flip.png", "_flip_ldr.exr",
-                                   "_flip_ldr.png"})
+        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr",
+                                   "_flip.png", "_flip_ldr.exr", "_flip_ldr.png"})
             files.push_back(n + suffix);
     for (size_t i = 0; i < names.size(); ++i)
         for (size_t k = i + 1; k < names.size(); ++k)
-            for (const char* suffix : {".exr", ".png"}) files.push_back(pairDiffStem(names[i], names[k]) + suffix);
+            for (const char* suffix : {".exr", ".png"})
+                files.push_back(pairDiffStem(names[i], names[k]) + suffix);
     for (const std::string& f : files) {
         std::error_code ec;
         std::filesystem::remove(out + "/" + f, ec);
@@ -64,20 +70,27 @@ void removeStaleOutputs(const std::string& out, const std::vector<std::string>& 
 
 // Runs one renderer; a renderer that cannot be built, or a Vulkan failure inside it, becomes
 // a failed outcome so the other pipelines still run.
-PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const CompareRecord& r,
-                          const std::string& label) {
+PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
+                          const CompareRecord& r, const std::string& label) {
     PipelineOutcome p;
     p.name = name;
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
-    Result<RunResult> result = tryRunRenderer(ctx, scene, *entry, r.features, r.settings,
-                                              progressRunOptions(name, r.options->warmup, r.options->frames));
-    if (result) p.run = std::move(*result);
-    else p.error = result.error();
+    Result<RunResult> result =
+        tryRunRenderer(ctx, scene, *entry, r.features, r.settings,
+                       progressRunOptions(name, r.options->warmup, r.options->frames));
+    if (result)
+        p.run = std::move(*result);
+    else
+        p.error = result.error();
     std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    if (p.run) std::fprintf(stderr, "triptych: %s %s done in %.1f s\n", label.c_str(), name.c_str(), took.count());
-    else std::fprintf(stderr, "triptych: %s %s FAILED: %s\n", label.c_str(), name.c_str(), p.error.c_str());
+    if (p.run)
+        std::fprintf(stderr, "triptych: %s %s done in %.1f s\n", label.c_str(), name.c_str(),
+                     took.count());
+    else
+        std::fprintf(stderr, "triptych: %s %s FAILED: %s\n", label.c_str(), name.c_str(),
+                     p.error.c_str());
     return p;
 }
 
@@ -112,10 +125,12 @@ std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
 }
 
 // A FLIP map as EXR (the values, grey) and as the magma PNG with its legend.
-void writeFlipMap(const std::string& out, const std::string& stem, const ImageR32& map, std::vector<std::string>& files) {
+void writeFlipMap(const std::string& out, const std::string& stem, const ImageR32& map,
+                  std::vector<std::string>& files) {
     ImageRGBA grey(map.width, map.height);
     for (size_t i = 0; i < map.r.size(); ++i) {
-        for (int c = 0; c < 3; ++c) grey.rgba[i * 4 + size_t(c)] = map.r[i];
+        for (int c = 0; c < 3; ++c)
+            grey.rgba[i * 4 + size_t(c)] = map.r[i];
         grey.rgba[i * 4 + 3] = 1.0f;
     }
     check(writeExr(out + "/" + stem + ".exr", grey, ExrPixelType::Float));
@@ -153,7 +168,8 @@ void measurePairs(CompareRecord& r) {
                                           tonemapToDisplay(b.run->hdr, r.exposureEv))};
             ImageRGBA diff = signedDifference(a.run->hdr, b.run->hdr);
             pair.diffP99 = differencePercentile99(diff);
-            writeDifference(r.options->out, pairDiffStem(a.name, b.name), diff, r.diffScale, pair.files);
+            writeDifference(r.options->out, pairDiffStem(a.name, b.name), diff, r.diffScale,
+                            pair.files);
             r.pairs.push_back(std::move(pair));
         }
 }
@@ -166,42 +182,50 @@ double frameMedian(const RunResult& run) {
 
 void printSummary(const CompareRecord& r) {
     const std::string& device = r.ctx->info.name;
-    std::printf("%-18s %12s %12s %12s %14s %10s %11s  %s\n", "pipeline", "frame ms", "memory MiB", "bytes/px",
-                "rmse (hdr)", "psnr (tm)", "flip (hdr)", "status");
+    std::printf("%-18s %12s %12s %12s %14s %10s %11s  %s\n", "pipeline", "frame ms", "memory MiB",
+                "bytes/px", "rmse (hdr)", "psnr (tm)", "flip (hdr)", "status");
     auto row = [&](const PipelineOutcome& p, bool reference) {
         if (!p.run) {
-            std::printf("%-18s %12s %12s %12s %14s %10s %11s  FAILED: %s\n", p.name.c_str(), "-", "-", "-", "-", "-",
-                        "-", p.error.c_str());
+            std::printf("%-18s %12s %12s %12s %14s %10s %11s  FAILED: %s\n", p.name.c_str(), "-",
+                        "-", "-", "-", "-", "-", p.error.c_str());
             return;
         }
         uint64_t bytes = 0;
-        for (const LedgerEntry& e : p.run->memory) bytes += e.bytes;
+        for (const LedgerEntry& e : p.run->memory)
+            bytes += e.bytes;
         double bpp = double(bytes) / double(std::max<size_t>(1, p.run->hdr.pixelCount()));
         char rmse[32] = "-", psnr[32] = "-", flip[32] = "-";
         if (!reference) {
             std::snprintf(rmse, sizeof rmse, "%.3e", p.hdr.rmse);
-            std::snprintf(psnr, sizeof psnr, std::isfinite(p.display.psnr) ? "%.2f" : "inf", p.display.psnr);
+            std::snprintf(psnr, sizeof psnr, std::isfinite(p.display.psnr) ? "%.2f" : "inf",
+                          p.display.psnr);
             if (p.flip.measured) std::snprintf(flip, sizeof flip, "%.4f", p.flip.hdr.mean);
         }
-        std::printf("%-18s %12.3f %12.2f %12.1f %14s %10s %11s  ok\n", p.name.c_str(), frameMedian(*p.run),
-                    double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr, flip);
+        std::printf("%-18s %12.3f %12.2f %12.1f %14s %10s %11s  ok\n", p.name.c_str(),
+                    frameMedian(*p.run), double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr, flip);
     };
     row(r.reference, true);
-    for (const PipelineOutcome& p : r.pipelines) row(p, false);
+    for (const PipelineOutcome& p : r.pipelines)
+        row(p, false);
     uint64_t shared = 0;
-    for (const LedgerEntry& e : r.sharedMemory) shared += e.bytes;
-    std::printf("frame ms: median GPU time on %s%s; shared scene data %.2f MiB counted once\n", device.c_str(),
-                r.ctx->isCpuDevice() ? " (CPU-rasterizer times)" : "", double(shared) / (1024.0 * 1024.0));
+    for (const LedgerEntry& e : r.sharedMemory)
+        shared += e.bytes;
+    std::printf("frame ms: median GPU time on %s%s; shared scene data %.2f MiB counted once\n",
+                device.c_str(), r.ctx->isCpuDevice() ? " (CPU-rasterizer times)" : "",
+                double(shared) / (1024.0 * 1024.0));
 }
 
-void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, const std::vector<std::string>& names) {
+void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene,
+                     const std::vector<std::string>& names) {
     for (size_t i = 0; i < names.size(); ++i) {
-        std::string label = "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
+        std::string label =
+            "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
         PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, label);
         if (p.run) {
             writeImages(r.options->out, p, r.exposureEv);
             if (const double dropped = counterValue(*p.run, "lights_dropped"); dropped > 0)
-                std::fprintf(stderr, "triptych: warning: %s dropped %.0f lights (see its counters)\n",
+                std::fprintf(stderr,
+                             "triptych: warning: %s dropped %.0f lights (see its counters)\n",
                              p.name.c_str(), dropped);
         }
         r.pipelines.push_back(std::move(p));
@@ -222,7 +246,8 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
     // A reference already run with --reference-msaa center is the centre reference: not again.
     const auto mode = r.settings.knobs.find("reference-msaa");
     const bool alreadyCentre = mode != r.settings.knobs.end() && mode->second == "center";
-    centre = alreadyCentre ? r.reference : renderOne(ctx, gpuScene, kReferenceRenderer, c, "[center reference]");
+    centre = alreadyCentre ? r.reference
+                           : renderOne(ctx, gpuScene, kReferenceRenderer, c, "[center reference]");
     centre.name = "reference_center";
     if (!centre.run) return;
     writeImages(r.options->out, centre, r.exposureEv);
@@ -230,7 +255,8 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
     hdr.psnrPeak = r.hdrPsnrPeak;
     const ImageRGBA centreDisplay = tonemapToDisplay(centre.run->hdr, r.exposureEv);
     centre.hdr = computeError(centre.run->hdr, r.reference.run->hdr, hdr);
-    centre.display = computeError(centreDisplay, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
+    centre.display =
+        computeError(centreDisplay, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
     for (PipelineOutcome& p : r.pipelines) {
         if (!p.run) continue;
         p.hdrVsCenter = computeError(p.run->hdr, centre.run->hdr, hdr);
@@ -262,14 +288,18 @@ int runCompare(const CompareOptions& o) {
     r.lightsHash = hashLights(scene.lights);
     ensureDirectory(o.out);
     removeStaleOutputs(o.out, names);
-    std::fprintf(stderr, "triptych: compare %s, %zu triangles, %zu lights, %ux%u, %ux MSAA, %d+%d frames on %s\n",
-                 scene.source.c_str(), scene.triangleCount(), scene.lights.size(), r.settings.width,
-                 r.settings.height, r.settings.msaa, o.warmup, o.frames, ctx->info.name.c_str());
+    std::fprintf(
+        stderr,
+        "triptych: compare %s, %zu triangles, %zu lights, %ux%u, %ux MSAA, %d+%d frames on %s\n",
+        scene.source.c_str(), scene.triangleCount(), scene.lights.size(), r.settings.width,
+        r.settings.height, r.settings.msaa, o.warmup, o.frames, ctx->info.name.c_str());
 
     SceneGpu gpuScene(*ctx, scene);
     r.sharedMemory = ctx->ledger.entriesOf("scene");
-    r.reference = renderOne(*ctx, gpuScene, kReferenceRenderer, r, "[1/" + std::to_string(names.size() + 1) + "]");
-    if (!r.reference.run) throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
+    r.reference = renderOne(*ctx, gpuScene, kReferenceRenderer, r,
+                            "[1/" + std::to_string(names.size() + 1) + "]");
+    if (!r.reference.run)
+        throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
     writeImages(o.out, r.reference, r.exposureEv);
@@ -287,13 +317,15 @@ int runCompare(const CompareOptions& o) {
     Result<std::string> html = reportHtml(report, o.out);
     if (!html) throw UsageError(html.error());
     check(writeTextFile(o.out + "/report.html", *html));
-    check(writeTextFile(o.out + "/report.json", report.dump(2) + "\n")); // last: marks the run complete
+    check(writeTextFile(o.out + "/report.json",
+                        report.dump(2) + "\n")); // last: marks the run complete
     printSummary(r);
-    std::fprintf(stderr, "triptych: wrote %s/report.html, report.json and the images\n", o.out.c_str());
+    std::fprintf(stderr, "triptych: wrote %s/report.html, report.json and the images\n",
+                 o.out.c_str());
 
     if (!r.validationMessages.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", r.validationMessages.size(),
-                     r.validationMessages.front().c_str());
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n",
+                     r.validationMessages.size(), r.validationMessages.front().c_str());
         return 3;
     }
     return report["status"] == "ok" ? 0 : 5;
@@ -303,32 +335,41 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     auto o = std::make_shared<CompareOptions>();
     o->commandLine = std::move(commandLine);
     CLI::App* cmd = app.add_subcommand(
-        "compare", "Render the scene with the reference and each pipeline (same camera and lights); write images, "
-                   "difference maps against the reference and between pipelines, report.json and report.html. "
-                   "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a pipeline failed");
+        "compare",
+        "Render the scene with the reference and each pipeline (same camera and lights); write "
+        "images, "
+        "difference maps against the reference and between pipelines, report.json and report.html. "
+        "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a pipeline failed");
     addSceneOptions(*cmd, o->scene);
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
     cmd->add_option("--pipelines", o->pipelines,
-                    "Comma-separated pipelines to compare with the reference (default: all: " + defaultPipelineList() + ")");
+                    "Comma-separated pipelines to compare with the reference (default: all: " +
+                        defaultPipelineList() + ")");
     cmd->add_option("--out", o->out,
-                    "Output directory (created if missing) for the EXR/PNG images, difference maps, lights.json, "
+                    "Output directory (created if missing) for the EXR/PNG images, difference "
+                    "maps, lights.json, "
                     "report.json and report.html; this run's files there are replaced")
         ->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Timed frames per pipeline (median/min/max are over these)")
+    cmd->add_option("--frames", o->frames,
+                    "Timed frames per pipeline (median/min/max are over these)")
         ->capture_default_str();
-    cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")->capture_default_str();
+    cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")
+        ->capture_default_str();
     cmd->add_option("--exposure", o->exposure,
-                    "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the reference)")
+                    "Exposure in EV of every PNG (EXRs are linear): a number, or 'auto' (from the "
+                    "reference)")
         ->capture_default_str();
     cmd->add_flag("--no-center-reference{false}", o->centerReference,
-                  "Under MSAA, skip the second reference (--reference-msaa center, one more reference render) and "
+                  "Under MSAA, skip the second reference (--reference-msaa center, one more "
+                  "reference render) and "
                   "the error against it");
     addFlipDistanceOption(*cmd, o->flipDistance);
     addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;
-        checkKnobs(o->knobs.knobs); // runCompare itself records a bad knob as that pipeline's failure
+        checkKnobs(
+            o->knobs.knobs); // runCompare itself records a bad knob as that pipeline's failure
         return runCompare(*o);
     };
 }

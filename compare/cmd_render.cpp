@@ -7,10 +7,10 @@
 #include "compare/cli_common.h"
 #include "compare/commands.h"
 #include "compare/run_json.h"
-#include "core/reference/reference_renderer.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
+#include "core/reference/reference_renderer.h"
 #include "core/render/camera_file.h"
 #include "core/render/frame_runner.h"
 #include "core/render/scene_gpu.h"
@@ -32,18 +32,21 @@ struct RenderOptions {
     RenderSettings knobs;
 };
 
-void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource& camera, const RunResult& run,
-                  const GpuContext& ctx, const RenderSettings& settings, const SceneFeatures& features) {
+void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource& camera,
+                  const RunResult& run, const GpuContext& ctx, const RenderSettings& settings,
+                  const SceneFeatures& features) {
     const std::string base = o.out + "/" + run.renderer;
     float ev = parseExposure(o.exposure, run.hdr);
-    Status s = writeExr(base + ".exr", run.hdr, o.exrType == "half" ? ExrPixelType::Half : ExrPixelType::Float);
+    Status s = writeExr(base + ".exr", run.hdr,
+                        o.exrType == "half" ? ExrPixelType::Half : ExrPixelType::Float);
     if (s) s = writePng(base + ".png", tonemapToDisplay(run.hdr, ev));
     if (s) s = writeLightsFile(o.out + "/lights.json", scene.lights);
     if (s) s = writeCameraFile(o.out + "/camera.json", scene.camera); // ready for --camera
     for (const DebugImage& d : run.debugImages) {
         if (!s) break;
         const std::string path = base + "_debug_" + d.name;
-        s = d.display ? writePng(path + ".png", d.image) : writeExr(path + ".exr", d.image, ExrPixelType::Float);
+        s = d.display ? writePng(path + ".png", d.image)
+                      : writeExr(path + ".exr", d.image, ExrPixelType::Float);
     }
     nlohmann::json j;
     j["schema"] = "triptych.render/2";
@@ -82,10 +85,11 @@ int run(RenderOptions& o) {
     if (!result) throw UsageError(result.error());
     writeOutputs(o, scene, camera, *result, *ctx, settings, features);
     for (const TimingStats& t : result->timings)
-        std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)\n", t.name.c_str(),
-                     t.medianMs, t.minMs, t.maxMs, t.frames, ctx->info.name.c_str());
-    std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n", o.out.c_str(),
-                 o.pipeline.c_str());
+        std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)\n",
+                     t.name.c_str(), t.medianMs, t.minMs, t.maxMs, t.frames,
+                     ctx->info.name.c_str());
+    std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n",
+                 o.out.c_str(), o.pipeline.c_str());
     std::vector<std::string> messages = ctx->validationMessages();
     if (!messages.empty()) {
         std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
@@ -104,22 +108,29 @@ CommandRunner addRenderCommand(CLI::App& app) {
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
     std::string names;
-    for (const RendererEntry& e : registeredRenderers()) names += "\n    " + e.name + ": " + e.description;
-    cmd->add_option("--pipeline", o->pipeline, "Pipeline to render with:" + names)->capture_default_str();
-    cmd->add_option("--out", o->out, "Output directory (created if missing)")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Timed frames (median/min/max are over these)")->capture_default_str();
-    cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")->capture_default_str();
-    cmd->add_option("--exposure", o->exposure,
-                    "Exposure in EV for the PNG (the EXR is linear): a number, or 'auto' (log-average "
-                    "luminance to 0.18)")
+    for (const RendererEntry& e : registeredRenderers())
+        names += "\n    " + e.name + ": " + e.description;
+    cmd->add_option("--pipeline", o->pipeline, "Pipeline to render with:" + names)
+        ->capture_default_str();
+    cmd->add_option("--out", o->out, "Output directory (created if missing)")
+        ->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Timed frames (median/min/max are over these)")
+        ->capture_default_str();
+    cmd->add_option("--warmup", o->warmup, "Untimed warm-up frames before the timed ones")
+        ->capture_default_str();
+    cmd->add_option(
+           "--exposure", o->exposure,
+           "Exposure in EV for the PNG (the EXR is linear): a number, or 'auto' (log-average "
+           "luminance to 0.18)")
         ->capture_default_str();
     cmd->add_option("--exr-type", o->exrType, "EXR pixel type")
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
     addKnobOptions(*cmd, o->knobs.knobs);
-    cmd->add_flag("--debug", o->knobs.debug,
-                  "Also write the pipeline's debug images (lights-per-tile heat map, tile depth bounds, "
-                  "G-buffer channels, edge mask) as PIPELINE_debug_NAME.png");
+    cmd->add_flag(
+        "--debug", o->knobs.debug,
+        "Also write the pipeline's debug images (lights-per-tile heat map, tile depth bounds, "
+        "G-buffer channels, edge mask) as PIPELINE_debug_NAME.png");
     return [o, cmd]() { return cmd->parsed() ? run(*o) : -1; };
 }
 

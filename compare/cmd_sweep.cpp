@@ -15,8 +15,8 @@
 #include "compare/scene_hash.h"
 #include "compare/sweep.h"
 #include "compare/sweep_output.h"
-#include "core/reference/reference_renderer.h"
 #include "core/image/tonemap.h"
+#include "core/reference/reference_renderer.h"
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/render/view_settings.h"
@@ -40,7 +40,8 @@ std::vector<std::string> splitList(const std::string& text, const char* option) 
 int toInt(const std::string& s, const char* option) {
     char* end = nullptr;
     long v = std::strtol(s.c_str(), &end, 10);
-    if (end == s.c_str() || *end || v < 0 || v > 1000000) throw UsageError(std::string(option) + ": bad value '" + s + "'");
+    if (end == s.c_str() || *end || v < 0 || v > 1000000)
+        throw UsageError(std::string(option) + ": bad value '" + s + "'");
     return int(v);
 }
 
@@ -62,7 +63,8 @@ void checkKnobLists(const SweepOptions& o) {
 
 // A pipeline runs once per value of the knobs it reads, with the first value of the others,
 // so the sweep repeats no identical run.
-std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepOptions& o, const RenderSettings& base) {
+std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepOptions& o,
+                                       const RenderSettings& base) {
     std::vector<RenderSettings> combos = {base};
     for (const KnobReaders& k : allKnobs()) {
         std::vector<std::string> values = knobValues(o, k.knob);
@@ -87,8 +89,8 @@ struct Reference {
     FlipReference flip; // FLIP's share of the reference, prepared once (points into run)
 };
 
-SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s, const Result<RunResult>& result,
-                    const Reference& ref, const GpuContext& ctx) {
+SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s,
+                    const Result<RunResult>& result, const Reference& ref, const GpuContext& ctx) {
     SweepRow row;
     row.pipeline = name;
     row.lights = lights;
@@ -108,14 +110,16 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
         MetricsOptions hdr;
         hdr.psnrPeak = ref.peak;
         row.hdr = computeError(r.hdr, ref.run->hdr, hdr);
-        row.display = computeError(tonemapToDisplay(r.hdr, ref.ev), tonemapToDisplay(ref.run->hdr, ref.ev));
+        row.display =
+            computeError(tonemapToDisplay(r.hdr, ref.ev), tonemapToDisplay(ref.run->hdr, ref.ev));
         row.flip = measureFlip(r.hdr, ref.flip, /*keepMaps=*/false);
         row.measured = true;
         row.exposureEv = ref.ev;
         row.hdrPsnrPeak = ref.peak;
         if (ref.center) {
             row.hdrCenter = computeError(r.hdr, ref.center->hdr, hdr);
-            row.displayCenter = computeError(tonemapToDisplay(r.hdr, ref.ev), tonemapToDisplay(ref.center->hdr, ref.ev));
+            row.displayCenter = computeError(tonemapToDisplay(r.hdr, ref.ev),
+                                             tonemapToDisplay(ref.center->hdr, ref.ev));
             row.measuredCenter = true;
         }
     }
@@ -137,26 +141,30 @@ struct Progress {
         const size_t pipelinesDone = done - referencesDone, pipelinesTotal = total - references;
         const double perRef = referencesDone ? referenceSeconds / double(referencesDone) : 0.0;
         const double perRun = pipelinesDone ? pipelineSeconds / double(pipelinesDone) : perRef;
-        const double left = double(references - referencesDone) * (referencesDone ? perRef : perRun) +
-                            double(pipelinesTotal - pipelinesDone) * perRun;
+        const double left =
+            double(references - referencesDone) * (referencesDone ? perRef : perRun) +
+            double(pipelinesTotal - pipelinesDone) * perRun;
         const double spent = std::chrono::duration<double>(Clock::now() - start).count();
         const int filled = int(30 * done / std::max<size_t>(1, total));
-        std::fprintf(stderr, "[%s%s] %zu/%zu %s %d lights %s %ux: %s (%.1f s), %.0f s spent, ~%.0f s left\n",
-                     std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(), done,
-                     total, row.pipeline.c_str(), row.lights, resText.c_str(), row.s.msaa,
-                     row.status == "ok" ? "ok" : ("FAILED: " + row.error).c_str(), row.seconds, spent, left);
+        std::fprintf(
+            stderr, "[%s%s] %zu/%zu %s %d lights %s %ux: %s (%.1f s), %.0f s spent, ~%.0f s left\n",
+            std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(),
+            done, total, row.pipeline.c_str(), row.lights, resText.c_str(), row.s.msaa,
+            row.status == "ok" ? "ok" : ("FAILED: " + row.error).c_str(), row.seconds, spent, left);
     }
 };
 
-Result<RunResult> runOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const SceneFeatures& features,
-                         const RenderSettings& s, const RunOptions& ro) {
+Result<RunResult> runOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
+                         const SceneFeatures& features, const RenderSettings& s,
+                         const RunOptions& ro) {
     return tryRunRenderer(ctx, scene, **findRenderer(name), features, s, ro);
 }
 
 // Under MSAA (unless --no-center-reference): the reference once more with --reference-msaa
 // center, the second error's ground truth; its time is inside the reference row's seconds.
 std::optional<RunResult> centerReference(const SweepOptions& o, GpuContext& ctx, SceneGpu& scene,
-                                         const SceneFeatures& features, RenderSettings s, const RunOptions& ro) {
+                                         const SceneFeatures& features, RenderSettings s,
+                                         const RunOptions& ro) {
     if (s.msaa == 1 || !o.centerReference) return std::nullopt;
     s.set("reference-msaa", "center");
     Result<RunResult> r = runOne(ctx, scene, kReferenceRenderer, features, s, ro);
@@ -180,16 +188,22 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const Came
     j["scene"] = sceneJson(scene, analyzeScene(scene, 1));
     j["scene"].erase("lights"); // per run: it depends on the light count
     j["scene"]["path"] = o.scene.scene.empty() ? "builtin:courtyard" : o.scene.scene;
-    FileHashes files = scene.source.rfind("builtin:", 0) == 0 ? FileHashes{} : hashSceneFiles(scene.source);
-    j["scene"]["files_hash_fnv1a64"] = files.hash.empty() ? nlohmann::json(nullptr) : nlohmann::json(files.hash);
+    FileHashes files =
+        scene.source.rfind("builtin:", 0) == 0 ? FileHashes{} : hashSceneFiles(scene.source);
+    j["scene"]["files_hash_fnv1a64"] =
+        files.hash.empty() ? nlohmann::json(nullptr) : nlohmann::json(files.hash);
     j["scene"]["files_hashed"] = files.files;
     j["scene"]["content_hash_fnv1a64"] = hashSceneContent(scene);
     j["scene"]["camera_hash_fnv1a64"] = hashCamera(scene.camera);
     j["camera"] = cameraToJson(scene.camera); // a camera file, as in report.json
     j["camera_source"] = cameraSourceJson(camera);
     j["device"] = deviceJson(ctx);
-    j["axes"] = {{"lights", o.lights}, {"res", o.res}, {"msaa", o.msaa}, {"light_types", o.scene.lightTypes}};
-    for (const KnobReaders& k : allKnobs()) j["axes"][k.knob.key()] = k.knob.valueIn(o.knobs);
+    j["axes"] = {{"lights", o.lights},
+                 {"res", o.res},
+                 {"msaa", o.msaa},
+                 {"light_types", o.scene.lightTypes}};
+    for (const KnobReaders& k : allKnobs())
+        j["axes"][k.knob.key()] = k.knob.valueIn(o.knobs);
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["reference_frames"] = o.referenceFrames;
@@ -198,11 +212,15 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const Came
     return j;
 }
 
-void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows, const std::vector<std::string>& names,
-                  const nlohmann::json& header, const std::string& device) {
-    Status s = writeTextFile(o.out + "/sweep.html", sweepHtml(rows, names, device, shellJoin(o.commandLine)));
+void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows,
+                  const std::vector<std::string>& names, const nlohmann::json& header,
+                  const std::string& device) {
+    Status s = writeTextFile(o.out + "/sweep.html",
+                             sweepHtml(rows, names, device, shellJoin(o.commandLine)));
     if (s) s = writeTextFile(o.out + "/sweep.json", sweepJson(header, rows).dump(1) + "\n");
-    if (s) s = writeTextFile(o.out + "/sweep.csv", sweepCsv(rows, device)); // last: marks the sweep complete
+    if (s)
+        s = writeTextFile(o.out + "/sweep.csv",
+                          sweepCsv(rows, device)); // last: marks the sweep complete
     if (!s) throw UsageError(s.error());
 }
 
@@ -210,14 +228,17 @@ void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows, cons
 
 int runSweep(const SweepOptions& o) {
     checkFrameCounts(o.frames, o.warmup);
-    if (o.referenceFrames < 0 || o.referenceFrames > 1000) throw UsageError("--reference-frames must be between 0 and 1000");
+    if (o.referenceFrames < 0 || o.referenceFrames > 1000)
+        throw UsageError("--reference-frames must be between 0 and 1000");
     checkFlipDistance(o.flipDistance);
     checkKnobLists(o);
     std::vector<std::string> names = selectPipelines(o.pipelines);
     if (o.referenceFrames > 0) names.insert(names.begin(), kReferenceRenderer);
-    if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // refuse before any GPU work
+    if (!o.scene.cameraFile.empty())
+        readCameraOption(o.scene.cameraFile); // refuse before any GPU work
     std::vector<int> lightCounts;
-    for (const std::string& s : splitList(o.lights, "--lights")) lightCounts.push_back(toInt(s, "--lights"));
+    for (const std::string& s : splitList(o.lights, "--lights"))
+        lightCounts.push_back(toInt(s, "--lights"));
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings base;
     std::vector<View> views; // validated up front: bad input fails before any run
@@ -226,11 +247,13 @@ int runSweep(const SweepOptions& o) {
             views.push_back({makeSettings(ViewOptions{r, toInt(m, "--msaa")}, *ctx, base), r});
     Progress progress;
     for (const View& view : views)
-        for (const std::string& n : names) progress.total += knobCombos(n, o, view.settings).size();
+        for (const std::string& n : names)
+            progress.total += knobCombos(n, o, view.settings).size();
     progress.total *= lightCounts.size();
     progress.references = o.referenceFrames > 0 ? lightCounts.size() * views.size() : 0;
     ensureDirectory(o.out);
-    for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"}) std::remove((o.out + "/" + f).c_str());
+    for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"})
+        std::remove((o.out + "/" + f).c_str());
 
     std::vector<SweepRow> rows;
     nlohmann::json header;
@@ -248,7 +271,9 @@ int runSweep(const SweepOptions& o) {
             for (const std::string& name : names)
                 for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
                     const bool isRef = name == kReferenceRenderer;
-                    RunOptions ro = isRef ? progressRunOptions(kReferenceRenderer, 0, o.referenceFrames) : RunOptions{};
+                    RunOptions ro =
+                        isRef ? progressRunOptions(kReferenceRenderer, 0, o.referenceFrames)
+                              : RunOptions{};
                     if (!isRef) {
                         ro.warmupFrames = uint32_t(o.warmup);
                         ro.timedFrames = uint32_t(o.frames);
@@ -262,13 +287,14 @@ int runSweep(const SweepOptions& o) {
                         ref.flip = prepareFlipReference(ref.run->hdr, ref.ev, o.flipDistance);
                         // Already at --reference-msaa center: that run is the centre reference.
                         const auto mode = s.knobs.find("reference-msaa");
-                        ref.center = mode != s.knobs.end() && mode->second == "center" && s.msaa > 1 &&
-                                             o.centerReference
+                        ref.center = mode != s.knobs.end() && mode->second == "center" &&
+                                             s.msaa > 1 && o.centerReference
                                          ? ref.run
                                          : centerReference(o, *ctx, gpuScene, features, s, ro);
                     }
                     rows.push_back(measureRun(name, lights, s, result, ref, *ctx));
-                    rows.back().seconds = std::chrono::duration<double>(Clock::now() - start).count();
+                    rows.back().seconds =
+                        std::chrono::duration<double>(Clock::now() - start).count();
                     rows.back().lightsHash = lightsHash;
                     progress.report(rows.back(), view.text);
                 }
@@ -277,11 +303,14 @@ int runSweep(const SweepOptions& o) {
     const std::vector<std::string> validation = ctx->validationMessages();
     header["validation_messages"] = validation;
     writeOutputs(o, rows, names, header, ctx->info.name);
-    size_t failed = size_t(std::count_if(rows.begin(), rows.end(), [](const SweepRow& r) { return r.status != "ok"; }));
-    std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and sweep.html\n",
+    size_t failed = size_t(std::count_if(rows.begin(), rows.end(),
+                                         [](const SweepRow& r) { return r.status != "ok"; }));
+    std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and "
+                "sweep.html\n",
                 rows.size(), failed, ctx->info.name.c_str(), o.out.c_str());
     if (!validation.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(), validation.front().c_str());
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(),
+                     validation.front().c_str());
         return 3;
     }
     return failed == 0 ? 0 : 5;
@@ -291,9 +320,11 @@ CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLin
     auto o = std::make_shared<SweepOptions>();
     o->commandLine = std::move(commandLine);
     CLI::App* cmd = app.add_subcommand(
-        "sweep", "Every combination of lights, resolution, MSAA and pipeline knobs through the pipelines, the "
-                 "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html. "
-                 "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a run failed");
+        "sweep",
+        "Every combination of lights, resolution, MSAA and pipeline knobs through the pipelines, "
+        "the "
+        "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html. "
+        "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a run failed");
     addSweepOptions(*cmd, *o);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;

@@ -15,12 +15,12 @@ struct CompareOptions {
     SceneOptions scene;
     DeviceOptions device;
     ViewOptions view;
-    std::string pipelines;           // comma-separated; empty = every registered one but the reference
+    std::string pipelines; // comma-separated; empty = every registered one but the reference
     std::string out = "out";
     int frames = 3;
     int warmup = 1;
-    std::string exposure = "auto";   // of every PNG; "auto" is taken from the reference
-    float flipDistance = 0.7f;       // FLIP's viewing distance, metres (compare/flip_measure.h)
+    std::string exposure = "auto"; // of every PNG; "auto" is taken from the reference
+    float flipDistance = 0.7f;     // FLIP's viewing distance, metres (compare/flip_measure.h)
     RenderSettings knobs;
     // Under MSAA: also render the reference with --reference-msaa center and measure every
     // pipeline against it (one more reference render; --no-center-reference turns it off).

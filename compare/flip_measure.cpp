@@ -10,13 +10,18 @@ namespace tp::cli {
 namespace {
 
 nlohmann::json pooledJson(const FlipStats& s) {
-    return {{"mean", s.mean},         {"weighted_median", s.weightedMedian}, {"weighted_q1", s.weightedQ1},
-            {"weighted_q3", s.weightedQ3}, {"min", s.min},                  {"max", s.max}};
+    return {{"mean", s.mean},
+            {"weighted_median", s.weightedMedian},
+            {"weighted_q1", s.weightedQ1},
+            {"weighted_q3", s.weightedQ3},
+            {"min", s.min},
+            {"max", s.max}};
 }
 
 } // namespace
 
-FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float exposureEv, float distanceMetres) {
+FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float exposureEv,
+                                   float distanceMetres) {
     FlipReference r;
     r.linear = &referenceLinear;
     r.display = asStoredInPng(tonemapToDisplay(referenceLinear, exposureEv));
@@ -26,10 +31,11 @@ FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float expos
     return r;
 }
 
-FlipMeasure measureFlip(const ImageRGBA& testLinear, const FlipReference& reference, bool keepMaps) {
+FlipMeasure measureFlip(const ImageRGBA& testLinear, const FlipReference& reference,
+                        bool keepMaps) {
     FlipMeasure m;
-    FlipResult ldr = ldrFlip(asStoredInPng(tonemapToDisplay(testLinear, reference.exposureEv)), reference.display,
-                             reference.ppd);
+    FlipResult ldr = ldrFlip(asStoredInPng(tonemapToDisplay(testLinear, reference.exposureEv)),
+                             reference.display, reference.ppd);
     FlipResult hdr = hdrFlip(testLinear, *reference.linear, reference.ppd, &reference.exposures);
     if (ldr.map.r.empty() || hdr.map.r.empty()) return m;
     m.measured = true;
@@ -43,9 +49,10 @@ FlipMeasure measureFlip(const ImageRGBA& testLinear, const FlipReference& refere
     return m;
 }
 
-FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear, float exposureEv,
-                        float distanceMetres, bool keepMaps) {
-    return measureFlip(testLinear, prepareFlipReference(referenceLinear, exposureEv, distanceMetres), keepMaps);
+FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear,
+                        float exposureEv, float distanceMetres, bool keepMaps) {
+    return measureFlip(testLinear,
+                       prepareFlipReference(referenceLinear, exposureEv, distanceMetres), keepMaps);
 }
 
 nlohmann::json flipJson(const FlipMeasure& m) {
@@ -59,12 +66,13 @@ nlohmann::json flipJson(const FlipMeasure& m) {
 
 nlohmann::json flipConditionsJson(float distanceMetres) {
     // Rounded to 6 decimals: the float option read back as double would print 0.699999988.
-    return {{"viewing_distance_m", std::round(double(distanceMetres) * 1e6) / 1e6},
-            {"pixels_per_degree", flipPixelsPerDegree(distanceMetres)},
-            {"monitor", "0.7 m wide, 3840 pixels across (FLIP's default)"},
-            {"ldr_input", "the tonemapped PNGs (8-bit sRGB, the report's exposure)"},
-            {"hdr_input", "the linear EXR values; exposures from the reference (ACES tone mapper)"},
-            {"pooling", "mean over pixels; weighted percentiles weight each pixel by its own error"}};
+    return {
+        {"viewing_distance_m", std::round(double(distanceMetres) * 1e6) / 1e6},
+        {"pixels_per_degree", flipPixelsPerDegree(distanceMetres)},
+        {"monitor", "0.7 m wide, 3840 pixels across (FLIP's default)"},
+        {"ldr_input", "the tonemapped PNGs (8-bit sRGB, the report's exposure)"},
+        {"hdr_input", "the linear EXR values; exposures from the reference (ACES tone mapper)"},
+        {"pooling", "mean over pixels; weighted percentiles weight each pixel by its own error"}};
 }
 
 void addFlipDistanceOption(CLI::App& cmd, float& distanceMetres) {

@@ -25,12 +25,13 @@ struct FlipReference {
     FlipExposures exposures;
     float exposureEv = 0, ppd = 0;
 };
-FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float exposureEv, float distanceMetres);
+FlipReference prepareFlipReference(const ImageRGBA& referenceLinear, float exposureEv,
+                                   float distanceMetres);
 
 FlipMeasure measureFlip(const ImageRGBA& testLinear, const FlipReference& reference, bool keepMaps);
 // One image against a reference measured once (tests).
-FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear, float exposureEv,
-                        float distanceMetres, bool keepMaps);
+FlipMeasure measureFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear,
+                        float exposureEv, float distanceMetres, bool keepMaps);
 
 // {"ldr": {mean, weighted_median, weighted_q1, weighted_q3, min, max},
 //  "hdr": {the same, start_exposure, stop_exposure, exposures}}

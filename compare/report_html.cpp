@@ -1,6 +1,6 @@
 // report.html from report.json: what a person reads first. Everything is inline (images as
-// data URIs, CSS, SVG, the flip/loupe script) so the page opens offline from any directory; numbers come from report.json only, so the page and the
-// JSON cannot disagree.
+// data URIs, CSS, SVG, the flip/loupe script) so the page opens offline from any directory; numbers
+// come from report.json only, so the page and the JSON cannot disagree.
 #include "compare/report_html.h"
 
 #include <algorithm>
@@ -43,7 +43,9 @@ Result<std::string> readBinary(const std::string& path) {
     return ss.str();
 }
 
-std::string esc(const json& j) { return escapeXml(j.is_string() ? j.get<std::string>() : j.dump()); }
+std::string esc(const json& j) {
+    return escapeXml(j.is_string() ? j.get<std::string>() : j.dump());
+}
 
 std::string numberCell(const json& j) {
     if (j.is_null()) return "<td>inf</td>";
@@ -56,25 +58,34 @@ double frameMedian(const json& outcome) {
     return 0.0;
 }
 
-bool ok(const json& outcome) { return outcome["status"] == "ok"; }
+bool ok(const json& outcome) {
+    return outcome["status"] == "ok";
+}
 
 std::string header(const json& r) {
     const json& s = r["settings"];
-    std::string h = "<h1>triptych compare: " + esc(r["scene"]["path"]) + "</h1>\n<p class=\"meta\">";
-    h += std::to_string(s["width"].get<int>()) + "&times;" + std::to_string(s["height"].get<int>()) + ", " +
-         std::to_string(s["msaa"].get<int>()) + "&times; MSAA, " + std::to_string(r["scene"]["lights"].get<int>()) +
-         " lights (seed " + esc(r["seed"]) + "), " + std::to_string(r["scene"]["triangles"].get<int>()) +
+    std::string h =
+        "<h1>triptych compare: " + esc(r["scene"]["path"]) + "</h1>\n<p class=\"meta\">";
+    h += std::to_string(s["width"].get<int>()) + "&times;" +
+         std::to_string(s["height"].get<int>()) + ", " + std::to_string(s["msaa"].get<int>()) +
+         "&times; MSAA, " + std::to_string(r["scene"]["lights"].get<int>()) + " lights (seed " +
+         esc(r["seed"]) + "), " + std::to_string(r["scene"]["triangles"].get<int>()) +
          " triangles; " + std::to_string(s["warmup"].get<int>()) + " warm-up + " +
          std::to_string(s["frames"].get<int>()) + " timed frames per pipeline; exposure " +
          formatNumber(s["exposure_ev"].get<double>()) + " EV for every PNG.<br>Device: <b>" +
          esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) + ")<br>Camera: " +
-         (r.contains("camera_source") ? esc(r["camera_source"]["description"]) : std::string("&ndash;")) +
-         " (as a <code>--camera</code> file: camera.json)<br>Command: <code>" +
-         esc(r["command"]) + "</code></p>\n";
-    if (r["device"].contains("note")) h += "<div class=\"note\">" + esc(r["device"]["note"]) + ".</div>\n";
+         (r.contains("camera_source") ? esc(r["camera_source"]["description"])
+                                      : std::string("&ndash;")) +
+         " (as a <code>--camera</code> file: camera.json)<br>Command: <code>" + esc(r["command"]) +
+         "</code></p>\n";
+    if (r["device"].contains("note"))
+        h += "<div class=\"note\">" + esc(r["device"]["note"]) + ".</div>\n";
     for (const json& p : r["pipelines"])
-        if (!ok(p)) h += "<div class=\"failed\"><b>" + esc(p["name"]) + " failed:</b> " + esc(p["error"]) + "</div>\n";
-    for (const json& m : r["validation_messages"]) h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
+        if (!ok(p))
+            h += "<div class=\"failed\"><b>" + esc(p["name"]) + " failed:</b> " + esc(p["error"]) +
+                 "</div>\n";
+    for (const json& m : r["validation_messages"])
+        h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
     return h;
 }
 
@@ -84,24 +95,33 @@ json flipValue(const json& p, const char* kind, const char* key) {
     return f.is_object() ? f[kind][key] : json(nullptr);
 }
 
-const char* kFlipExplanation =
-    "FLIP (Andersson et al. 2020) estimates what a viewer flipping between the two images would notice, per "
-    "pixel in [0, 1]: both images are filtered by the eye's contrast sensitivity at the viewing distance, "
-    "compared in a perceptually uniform colour space, and the difference is raised where edges or points differ. "
-    "HDR-FLIP (2021) runs it on the linear images tonemapped at a range of exposures chosen from the reference "
-    "and keeps each pixel's worst. Read it next to RMSE: RMSE counts every unit of radiance equally, wherever it "
-    "lands, so a bright noisy highlight can dominate it while nobody would see it, and a faint banding step on a "
-    "flat wall barely moves it while everybody would. A mean FLIP near 0 means hard to tell apart; the weighted "
-    "median and quartiles say how large the errors that make up most of the total are; the map shows where.";
+const char* kFlipExplanation = "FLIP (Andersson et al. 2020) estimates what a viewer flipping "
+                               "between the two images would notice, per "
+                               "pixel in [0, 1]: both images are filtered by the eye's contrast "
+                               "sensitivity at the viewing distance, "
+                               "compared in a perceptually uniform colour space, and the "
+                               "difference is raised where edges or points differ. "
+                               "HDR-FLIP (2021) runs it on the linear images tonemapped at a range "
+                               "of exposures chosen from the reference "
+                               "and keeps each pixel's worst. Read it next to RMSE: RMSE counts "
+                               "every unit of radiance equally, wherever it "
+                               "lands, so a bright noisy highlight can dominate it while nobody "
+                               "would see it, and a faint banding step on a "
+                               "flat wall barely moves it while everybody would. A mean FLIP near "
+                               "0 means hard to tell apart; the weighted "
+                               "median and quartiles say how large the errors that make up most of "
+                               "the total are; the map shows where.";
 
 std::string flipSection(const json& r) {
     const json& c = r.value("flip", json(nullptr));
     if (!c.is_object()) return "";
-    std::string h = "<h2>FLIP</h2>\n<p class=\"meta\">" + std::string(kFlipExplanation) + " Viewing distance " +
-                    formatNumber(c["viewing_distance_m"].get<double>()) + " m, " +
-                    formatNumber(c["pixels_per_degree"].get<double>()) + " pixels per degree (" + esc(c["monitor"]) +
-                    "); FLIP (tonemapped) on " + esc(c["ldr_input"]) + ", HDR-FLIP on " + esc(c["hdr_input"]) + ".</p>\n";
-    h += "<table><tr><th class=\"l\">pipeline</th><th class=\"l\">input</th><th>mean</th><th>weighted median</th>"
+    std::string h = "<h2>FLIP</h2>\n<p class=\"meta\">" + std::string(kFlipExplanation) +
+                    " Viewing distance " + formatNumber(c["viewing_distance_m"].get<double>()) +
+                    " m, " + formatNumber(c["pixels_per_degree"].get<double>()) +
+                    " pixels per degree (" + esc(c["monitor"]) + "); FLIP (tonemapped) on " +
+                    esc(c["ldr_input"]) + ", HDR-FLIP on " + esc(c["hdr_input"]) + ".</p>\n";
+    h += "<table><tr><th class=\"l\">pipeline</th><th "
+         "class=\"l\">input</th><th>mean</th><th>weighted median</th>"
          "<th>weighted Q1</th><th>weighted Q3</th><th>max</th><th>exposures</th></tr>\n";
     for (const json& p : r["pipelines"]) {
         if (!ok(p) || !flipValue(p, "hdr", "mean").is_number()) continue;
@@ -114,9 +134,10 @@ std::string flipSection(const json& r) {
                             formatNumber(v["start_exposure"].get<double>()) + " to " +
                             formatNumber(v["stop_exposure"].get<double>()) + " EV";
             h += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" +
-                 (std::string(kind) == "hdr" ? "HDR-FLIP (linear)" : "FLIP (tonemapped)") + "</td>" +
-                 numberCell(v["mean"]) + numberCell(v["weighted_median"]) + numberCell(v["weighted_q1"]) +
-                 numberCell(v["weighted_q3"]) + numberCell(v["max"]) + "<td>" + exposures + "</td></tr>\n";
+                 (std::string(kind) == "hdr" ? "HDR-FLIP (linear)" : "FLIP (tonemapped)") +
+                 "</td>" + numberCell(v["mean"]) + numberCell(v["weighted_median"]) +
+                 numberCell(v["weighted_q1"]) + numberCell(v["weighted_q3"]) +
+                 numberCell(v["max"]) + "<td>" + exposures + "</td></tr>\n";
         }
     }
     return h + "</table>\n";
@@ -124,10 +145,13 @@ std::string flipSection(const json& r) {
 
 std::string summaryTable(const json& r) {
     std::string device = esc(r["device"]["name"]);
-    std::string t = "<h2>Summary</h2>\n<table><tr><th class=\"l\">pipeline</th><th>frame median ms<br>(" + device +
-                    ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>PSNR dB "
-                    "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>HDR-FLIP mean</th><th>FLIP mean "
-                    "(tonemapped)</th><th>lights dropped</th></tr>\n";
+    std::string t =
+        "<h2>Summary</h2>\n<table><tr><th class=\"l\">pipeline</th><th>frame median ms<br>(" +
+        device +
+        ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>PSNR dB "
+        "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>HDR-FLIP mean</th><th>FLIP "
+        "mean "
+        "(tonemapped)</th><th>lights dropped</th></tr>\n";
     auto row = [&](const json& p, bool reference) {
         t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>";
         if (!ok(p)) {
@@ -136,19 +160,23 @@ std::string summaryTable(const json& r) {
         }
         const json& mem = p["run"]["memory"];
         t += "<td>" + formatNumber(frameMedian(p)) + "</td><td>" +
-             formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" + numberCell(mem["bytes_per_pixel"]);
-        if (reference) t += "<td>0</td><td>inf</td><td>0</td><td>0</td><td>0</td>";
+             formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" +
+             numberCell(mem["bytes_per_pixel"]);
+        if (reference)
+            t += "<td>0</td><td>inf</td><td>0</td><td>0</td><td>0</td>";
         else {
             const json& e = p["error_vs_reference"];
             t += numberCell(e["hdr"]["rmse"]) + numberCell(e["tonemapped"]["psnr"]) +
-                 numberCell(e["tonemapped"]["share_over_threshold"]) + numberCell(flipValue(p, "hdr", "mean")) +
-                 numberCell(flipValue(p, "ldr", "mean"));
+                 numberCell(e["tonemapped"]["share_over_threshold"]) +
+                 numberCell(flipValue(p, "hdr", "mean")) + numberCell(flipValue(p, "ldr", "mean"));
         }
         t += numberCell(p["lights_dropped"]) + "</tr>\n";
     };
     row(r["reference"], true);
-    for (const json& p : r["pipelines"]) row(p, false);
-    t += "</table>\n<p class=\"meta\">Shared scene data (counted once, not in any pipeline's total): " +
+    for (const json& p : r["pipelines"])
+        row(p, false);
+    t += "</table>\n<p class=\"meta\">Shared scene data (counted once, not in any pipeline's "
+         "total): " +
          formatNumber(r["shared_memory"]["total_bytes"].get<double>() / 1048576.0) + " MiB.</p>\n";
     return t;
 }
@@ -163,31 +191,41 @@ std::string errorScatter(const json& r, const std::string& key, const std::strin
     std::vector<PlotPoint> points;
     points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
     for (const json& p : r["pipelines"])
-        if (ok(p) && p.contains(key)) points.push_back({p["name"].get<std::string>(), frameMedian(p), p[key]["hdr"]["rmse"].get<double>()});
-    return scatterLogLogSvg(points, "frame time, median ms on " + r["device"]["name"].get<std::string>(), yLabel);
+        if (ok(p) && p.contains(key))
+            points.push_back({p["name"].get<std::string>(), frameMedian(p),
+                              p[key]["hdr"]["rmse"].get<double>()});
+    return scatterLogLogSvg(
+        points, "frame time, median ms on " + r["device"]["name"].get<std::string>(), yLabel);
 }
 
 // Under MSAA with the centre reference: both errors per pipeline, one sentence on what
 // separates them, the extra cost, and a switch (radio buttons, no script) between two plots.
 std::string twoReferences(const json& r) {
     const json& c = r["center_reference"];
-    std::string t = "<h2>Two errors under MSAA</h2>\n<p class=\"meta\">Against the supersampled reference the error "
-                    "is the total; against the centre reference (<code>--reference-msaa center</code>: every sample "
-                    "shaded at the pixel centre) it is the method alone, because the shading rate is left out: their "
-                    "difference is what shading once per pixel costs. The centre reference itself is RMSE " +
-                    formatNumber(c["error_vs_reference"]["hdr"]["rmse"].get<double>()) +
-                    " from the supersampled one; it cost one more reference render (frame median " +
-                    formatNumber(frameMedian(c)) + " ms; <code>--no-center-reference</code> skips it).</p>\n"
-                    "<table><tr><th class=\"l\">pipeline</th><th class=\"l\">MSAA shading</th><th>RMSE (HDR) vs "
-                    "supersampled: total</th><th>RMSE (HDR) vs centre: method</th><th>PSNR dB (tonemapped) vs "
-                    "supersampled</th><th>PSNR dB (tonemapped) vs centre</th></tr>\n";
+    std::string t =
+        "<h2>Two errors under MSAA</h2>\n<p class=\"meta\">Against the supersampled reference the "
+        "error "
+        "is the total; against the centre reference (<code>--reference-msaa center</code>: every "
+        "sample "
+        "shaded at the pixel centre) it is the method alone, because the shading rate is left out: "
+        "their "
+        "difference is what shading once per pixel costs. The centre reference itself is RMSE " +
+        formatNumber(c["error_vs_reference"]["hdr"]["rmse"].get<double>()) +
+        " from the supersampled one; it cost one more reference render (frame median " +
+        formatNumber(frameMedian(c)) +
+        " ms; <code>--no-center-reference</code> skips it).</p>\n"
+        "<table><tr><th class=\"l\">pipeline</th><th class=\"l\">MSAA shading</th><th>RMSE (HDR) "
+        "vs "
+        "supersampled: total</th><th>RMSE (HDR) vs centre: method</th><th>PSNR dB (tonemapped) vs "
+        "supersampled</th><th>PSNR dB (tonemapped) vs centre</th></tr>\n";
     for (const json& p : r["pipelines"]) {
         if (!ok(p) || !p.contains("error_vs_center_reference")) continue;
         const json &a = p["error_vs_reference"], &b = p["error_vs_center_reference"];
         t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" +
-             (p["run"].contains("msaa_shading") ? esc(p["run"]["msaa_shading"]) : std::string("&ndash;")) + "</td>" +
-             numberCell(a["hdr"]["rmse"]) + numberCell(b["hdr"]["rmse"]) + numberCell(a["tonemapped"]["psnr"]) +
-             numberCell(b["tonemapped"]["psnr"]) + "</tr>\n";
+             (p["run"].contains("msaa_shading") ? esc(p["run"]["msaa_shading"])
+                                                : std::string("&ndash;")) +
+             "</td>" + numberCell(a["hdr"]["rmse"]) + numberCell(b["hdr"]["rmse"]) +
+             numberCell(a["tonemapped"]["psnr"]) + numberCell(b["tonemapped"]["psnr"]) + "</tr>\n";
     }
     return t + "</table>\n";
 }
@@ -198,58 +236,75 @@ std::string flipScatter(const json& r) {
     points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
     for (const json& p : r["pipelines"])
         if (ok(p) && flipValue(p, "hdr", "mean").is_number())
-            points.push_back({p["name"].get<std::string>(), frameMedian(p), flipValue(p, "hdr", "mean").get<double>()});
+            points.push_back({p["name"].get<std::string>(), frameMedian(p),
+                              flipValue(p, "hdr", "mean").get<double>()});
     if (points.size() < 2) return "";
-    return scatterLogLogSvg(points, "frame time, median ms on " + r["device"]["name"].get<std::string>(),
+    return scatterLogLogSvg(points,
+                            "frame time, median ms on " + r["device"]["name"].get<std::string>(),
                             "mean HDR-FLIP vs reference");
 }
 
 std::string errorPlot(const json& r) {
-    const std::string note = "<p class=\"meta\">Lower left is better: cheaper and closer to the reference (by "
-                             "RMSE, and by what a viewer would see: HDR-FLIP).</p>\n";
+    const std::string note =
+        "<p class=\"meta\">Lower left is better: cheaper and closer to the reference (by "
+        "RMSE, and by what a viewer would see: HDR-FLIP).</p>\n";
     if (!hasCenterReference(r))
         return "<h2>Error against run time</h2>\n" +
-               errorScatter(r, "error_vs_reference", "RMSE vs reference (linear HDR)") + flipScatter(r) + note;
-    return "<h2>Error against run time</h2>\n<style>#ep-c:checked~.ep-s,#ep-s:checked~.ep-c{display:none}</style>"
-           "<input type=\"radio\" name=\"ep\" id=\"ep-s\" checked><label for=\"ep-s\">against the supersampled "
-           "reference (total)</label> <input type=\"radio\" name=\"ep\" id=\"ep-c\"><label for=\"ep-c\">against "
+               errorScatter(r, "error_vs_reference", "RMSE vs reference (linear HDR)") +
+               flipScatter(r) + note;
+    return "<h2>Error against run "
+           "time</h2>\n<style>#ep-c:checked~.ep-s,#ep-s:checked~.ep-c{display:none}</style>"
+           "<input type=\"radio\" name=\"ep\" id=\"ep-s\" checked><label for=\"ep-s\">against the "
+           "supersampled "
+           "reference (total)</label> <input type=\"radio\" name=\"ep\" id=\"ep-c\"><label "
+           "for=\"ep-c\">against "
            "the centre reference (method alone)</label>\n<div class=\"ep-s\">" +
            errorScatter(r, "error_vs_reference", "RMSE vs supersampled reference (linear HDR)") +
            "</div><div class=\"ep-c\">" +
-           errorScatter(r, "error_vs_center_reference", "RMSE vs centre reference (linear HDR)") + "</div>\n" +
-           flipScatter(r) + note;
+           errorScatter(r, "error_vs_center_reference", "RMSE vs centre reference (linear HDR)") +
+           "</div>\n" + flipScatter(r) + note;
 }
 
 // `attributes`: more of the <img> tag, e.g. the hooks of the flip script (report_viewer_js.h).
-Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption,
-                           const std::string& attributes = "") {
+Result<std::string> figure(const std::string& outDir, const std::string& file,
+                           const std::string& caption, const std::string& attributes = "") {
     Result<std::string> bytes = readBinary(outDir + "/" + file);
     if (!bytes) return Error{bytes.error()};
-    return "<figure><img alt=\"" + escapeXml(file) + "\"" + attributes + " src=\"data:image/png;base64," +
-           base64(*bytes) + "\"><figcaption>" + caption + "</figcaption></figure>\n";
+    return "<figure><img alt=\"" + escapeXml(file) + "\"" + attributes +
+           " src=\"data:image/png;base64," + base64(*bytes) + "\"><figcaption>" + caption +
+           "</figcaption></figure>\n";
 }
 
 Result<std::string> imagesSection(const json& r, const std::string& outDir) {
-    std::string h = "<h2>Images and differences</h2>\n<p class=\"meta\">Left: tonemapped image. Middle: heat map of "
-                    "|pipeline &minus; reference| (max over RGB, linear), one scale for the whole report: 0 to " +
+    std::string h = "<h2>Images and differences</h2>\n<p class=\"meta\">Left: tonemapped image. "
+                    "Middle: heat map of "
+                    "|pipeline &minus; reference| (max over RGB, linear), one scale for the whole "
+                    "report: 0 to " +
                     formatNumber(r["difference_scale"]["value"].get<double>()) + " (" +
-                    esc(r["difference_scale"]["rule"]) + "). Magenta: NaN/Inf. Right: the HDR-FLIP error map (0 to 1, magma as in FLIP; see FLIP below). "
-                    "<b>Flip</b>: click a pipeline's image, or press F over it, to swap it in place with the reference "
-                    "(F elsewhere flips them all). <b>Loupe</b>: hover any image for its pixels, magnified.</p>\n"
+                    esc(r["difference_scale"]["rule"]) +
+                    "). Magenta: NaN/Inf. Right: the HDR-FLIP error map (0 to 1, magma as in FLIP; "
+                    "see FLIP below). "
+                    "<b>Flip</b>: click a pipeline's image, or press F over it, to swap it in "
+                    "place with the reference "
+                    "(F elsewhere flips them all). <b>Loupe</b>: hover any image for its pixels, "
+                    "magnified.</p>\n"
                     "<div class=\"grid\">\n";
     Result<std::string> ref = figure(outDir, "reference.png", "reference", " id=\"img-reference\"");
     if (!ref) return ref;
-    h += *ref + "<figure><figcaption>The reference: every light at every sample.</figcaption></figure><figure></figure>\n";
+    h += *ref + "<figure><figcaption>The reference: every light at every "
+                "sample.</figcaption></figure><figure></figure>\n";
     for (const json& p : r["pipelines"]) {
         if (!ok(p)) continue;
         const std::string name = p["name"];
         const json& e = p["error_vs_reference"];
-        Result<std::string> img = figure(outDir, name + ".png",
-                                         escapeXml(name) + " <span class=\"flip-state\"></span>",
-                                         " class=\"flip\" data-pipeline=\"" + escapeXml(name) + "\"");
-        Result<std::string> diff = figure(outDir, name + "_diff.png",
-                                          escapeXml(name) + " &minus; reference: RMSE " + formatNumber(e["hdr"]["rmse"].get<double>()) +
-                                              ", max " + formatNumber(e["hdr"]["max_abs"].get<double>()) + " (HDR)");
+        Result<std::string> img =
+            figure(outDir, name + ".png", escapeXml(name) + " <span class=\"flip-state\"></span>",
+                   " class=\"flip\" data-pipeline=\"" + escapeXml(name) + "\"");
+        Result<std::string> diff =
+            figure(outDir, name + "_diff.png",
+                   escapeXml(name) + " &minus; reference: RMSE " +
+                       formatNumber(e["hdr"]["rmse"].get<double>()) + ", max " +
+                       formatNumber(e["hdr"]["max_abs"].get<double>()) + " (HDR)");
         if (!img) return img;
         if (!diff) return diff;
         h += *img + *diff;
@@ -258,11 +313,14 @@ Result<std::string> imagesSection(const json& r, const std::string& outDir) {
                 outDir, name + "_flip.png",
                 "HDR-FLIP " + escapeXml(name) + " vs reference (magma, 0 to 1): mean " +
                     formatNumber(flipValue(p, "hdr", "mean").get<double>()) + ", weighted median " +
-                    formatNumber(flipValue(p, "hdr", "weighted_median").get<double>()) + "; FLIP of the PNGs: mean " +
-                    formatNumber(flipValue(p, "ldr", "mean").get<double>()) + " (" + escapeXml(name) + "_flip_ldr.png)");
+                    formatNumber(flipValue(p, "hdr", "weighted_median").get<double>()) +
+                    "; FLIP of the PNGs: mean " +
+                    formatNumber(flipValue(p, "ldr", "mean").get<double>()) + " (" +
+                    escapeXml(name) + "_flip_ldr.png)");
             if (!flip) return flip;
             h += *flip;
-        } else h += "<figure></figure>\n";
+        } else
+            h += "<figure></figure>\n";
     }
     return h + "</div>\n";
 }
@@ -272,44 +330,61 @@ std::string timingSection(const json& r) {
     auto add = [&](const json& p) {
         if (!ok(p)) return;
         BarGroup g{p["name"].get<std::string>(), {}};
-        for (const json& t : p["run"]["timings"]) g.bars.push_back({t["pass"].get<std::string>(), t["median_ms"].get<double>()});
+        for (const json& t : p["run"]["timings"])
+            g.bars.push_back({t["pass"].get<std::string>(), t["median_ms"].get<double>()});
         groups.push_back(std::move(g));
     };
     add(r["reference"]);
-    for (const json& p : r["pipelines"]) add(p);
-    std::string h = "<h2>GPU time per pass (median over timed frames, " + esc(r["device"]["name"]) + ")</h2>\n" +
-                    barChartSvg(groups, "ms");
-    h += "<details><summary>median / min / max per pass</summary><table><tr><th class=\"l\">pipeline</th><th "
-         "class=\"l\">pass</th><th>median ms</th><th>min ms</th><th>max ms</th><th>frames</th><th class=\"l\">device</th></tr>\n";
+    for (const json& p : r["pipelines"])
+        add(p);
+    std::string h = "<h2>GPU time per pass (median over timed frames, " + esc(r["device"]["name"]) +
+                    ")</h2>\n" + barChartSvg(groups, "ms");
+    h += "<details><summary>median / min / max per pass</summary><table><tr><th "
+         "class=\"l\">pipeline</th><th "
+         "class=\"l\">pass</th><th>median ms</th><th>min ms</th><th>max ms</th><th>frames</th><th "
+         "class=\"l\">device</th></tr>\n";
     auto rows = [&](const json& p) {
         if (!ok(p)) return;
         for (const json& t : p["run"]["timings"])
-            h += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" + esc(t["pass"]) + "</td>" +
-                 numberCell(t["median_ms"]) + numberCell(t["min_ms"]) + numberCell(t["max_ms"]) + "<td>" +
-                 esc(t["frames"]) + "</td><td class=\"l\">" + esc(t["device"]) + "</td></tr>\n";
+            h += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" +
+                 esc(t["pass"]) + "</td>" + numberCell(t["median_ms"]) + numberCell(t["min_ms"]) +
+                 numberCell(t["max_ms"]) + "<td>" + esc(t["frames"]) + "</td><td class=\"l\">" +
+                 esc(t["device"]) + "</td></tr>\n";
     };
     rows(r["reference"]);
-    for (const json& p : r["pipelines"]) rows(p);
+    for (const json& p : r["pipelines"])
+        rows(p);
     return h + "</table></details>\n";
 }
 
 std::string ledgerTable(const json& memory) {
-    std::string t = "<table><tr><th class=\"l\">name</th><th class=\"l\">pass</th><th class=\"l\">kind</th><th "
-                    "class=\"l\">format</th><th>extent</th><th>samples</th><th>bytes</th><th class=\"l\">purpose</th></tr>\n";
+    std::string t =
+        "<table><tr><th class=\"l\">name</th><th class=\"l\">pass</th><th class=\"l\">kind</th><th "
+        "class=\"l\">format</th><th>extent</th><th>samples</th><th>bytes</th><th "
+        "class=\"l\">purpose</th></tr>\n";
     for (const json& e : memory["resources"])
-        t += "<tr><td class=\"l\">" + esc(e["name"]) + "</td><td class=\"l\">" + esc(e["pass"]) + "</td><td class=\"l\">" +
-             esc(e["kind"]) + "</td><td class=\"l\">" + esc(e["format"]) + "</td><td>" +
-             (e["kind"] == "image" ? esc(e["width"]) + "&times;" + esc(e["height"]) : std::string("")) + "</td><td>" +
-             esc(e["samples"]) + "</td><td>" + esc(e["bytes"]) + "</td><td class=\"l\">" + esc(e["purpose"]) + "</td></tr>\n";
-    return t + "<tr><th class=\"l\" colspan=\"6\">total</th><th>" + esc(memory["total_bytes"]) + "</th><th></th></tr></table>\n";
+        t += "<tr><td class=\"l\">" + esc(e["name"]) + "</td><td class=\"l\">" + esc(e["pass"]) +
+             "</td><td class=\"l\">" + esc(e["kind"]) + "</td><td class=\"l\">" + esc(e["format"]) +
+             "</td><td>" +
+             (e["kind"] == "image" ? esc(e["width"]) + "&times;" + esc(e["height"])
+                                   : std::string("")) +
+             "</td><td>" + esc(e["samples"]) + "</td><td>" + esc(e["bytes"]) +
+             "</td><td class=\"l\">" + esc(e["purpose"]) + "</td></tr>\n";
+    return t + "<tr><th class=\"l\" colspan=\"6\">total</th><th>" + esc(memory["total_bytes"]) +
+           "</th><th></th></tr></table>\n";
 }
 
 std::string memorySection(const json& r) {
-    std::string h = "<h2>Memory</h2>\n<table><tr><th class=\"l\">owner</th><th>resources</th><th>total bytes</th><th>MiB</th><th>bytes / pixel</th></tr>\n";
+    std::string h =
+        "<h2>Memory</h2>\n<table><tr><th class=\"l\">owner</th><th>resources</th><th>total "
+        "bytes</th><th>MiB</th><th>bytes / pixel</th></tr>\n";
     auto row = [&](const std::string& name, const json& mem) {
-        h += "<tr><td class=\"l\">" + escapeXml(name) + "</td><td>" + std::to_string(mem["resources"].size()) + "</td><td>" +
-             esc(mem["total_bytes"]) + "</td><td>" + formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" +
-             (mem.contains("bytes_per_pixel") ? numberCell(mem["bytes_per_pixel"]) : "<td>&ndash;</td>") + "</tr>\n";
+        h += "<tr><td class=\"l\">" + escapeXml(name) + "</td><td>" +
+             std::to_string(mem["resources"].size()) + "</td><td>" + esc(mem["total_bytes"]) +
+             "</td><td>" + formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" +
+             (mem.contains("bytes_per_pixel") ? numberCell(mem["bytes_per_pixel"])
+                                              : "<td>&ndash;</td>") +
+             "</tr>\n";
     };
     row("scene (shared, counted once)", r["shared_memory"]);
     if (ok(r["reference"])) row("reference", r["reference"]["run"]["memory"]);
@@ -317,7 +392,8 @@ std::string memorySection(const json& r) {
         if (ok(p)) row(p["name"], p["run"]["memory"]);
     h += "</table>\n";
     auto details = [&](const std::string& name, const json& mem) {
-        h += "<details><summary>" + escapeXml(name) + "</summary>" + ledgerTable(mem) + "</details>\n";
+        h += "<details><summary>" + escapeXml(name) + "</summary>" + ledgerTable(mem) +
+             "</details>\n";
     };
     if (ok(r["reference"])) details("reference", r["reference"]["run"]["memory"]);
     for (const json& p : r["pipelines"])
@@ -329,10 +405,12 @@ std::string memorySection(const json& r) {
 // One pair: its heat map (a - b on the report's scale) with the numbers under it.
 Result<std::string> pairCell(const json& pair, const std::string& outDir) {
     const std::string a = pair["a"], b = pair["b"];
-    std::string caption = escapeXml(a) + " &minus; " + escapeXml(b) + ": RMSE " + formatNumber(pair["hdr"]["rmse"].get<double>()) +
-                          ", max " + formatNumber(pair["hdr"]["max_abs"].get<double>()) + " (HDR)";
+    std::string caption = escapeXml(a) + " &minus; " + escapeXml(b) + ": RMSE " +
+                          formatNumber(pair["hdr"]["rmse"].get<double>()) + ", max " +
+                          formatNumber(pair["hdr"]["max_abs"].get<double>()) + " (HDR)";
     for (const json& f : pair.value("files", json::array()))
-        if (const std::string file = f; file.ends_with(".png")) return figure(outDir, file, caption);
+        if (const std::string file = f; file.ends_with(".png"))
+            return figure(outDir, file, caption);
     return "<p class=\"meta\">" + caption + "</p>\n";
 }
 
@@ -348,11 +426,14 @@ Result<std::string> pairwiseSection(const json& r, const std::string& outDir) {
         add(rows, p["a"]);
         add(cols, p["b"]);
     }
-    std::string h = "<h2>Pipelines against each other</h2>\n<p class=\"meta\">Row a, column b: heat map of |a &minus; b| "
+    std::string h = "<h2>Pipelines against each other</h2>\n<p class=\"meta\">Row a, column b: "
+                    "heat map of |a &minus; b| "
                     "(max over RGB, linear) on the same scale as the maps above (0 to " +
                     formatNumber(r["difference_scale"]["value"].get<double>()) +
-                    "; above it saturates). Signed differences: a_vs_b_diff.exr.</p>\n<table class=\"pairs\"><tr><th></th>";
-    for (const std::string& c : cols) h += "<th>" + escapeXml(c) + "</th>";
+                    "; above it saturates). Signed differences: a_vs_b_diff.exr.</p>\n<table "
+                    "class=\"pairs\"><tr><th></th>";
+    for (const std::string& c : cols)
+        h += "<th>" + escapeXml(c) + "</th>";
     h += "</tr>\n";
     for (const std::string& a : rows) {
         h += "<tr><th class=\"l\">" + escapeXml(a) + "</th>";
@@ -369,12 +450,16 @@ Result<std::string> pairwiseSection(const json& r, const std::string& outDir) {
         }
         h += "</tr>\n";
     }
-    h += "</table>\n<table><tr><th class=\"l\">a</th><th class=\"l\">b</th><th>RMSE (HDR)</th><th>max |a&minus;b| "
-         "(HDR)</th><th>99th percentile |a&minus;b|</th><th>PSNR dB (tonemapped)</th><th>max (tonemapped)</th></tr>\n";
+    h += "</table>\n<table><tr><th class=\"l\">a</th><th class=\"l\">b</th><th>RMSE "
+         "(HDR)</th><th>max |a&minus;b| "
+         "(HDR)</th><th>99th percentile |a&minus;b|</th><th>PSNR dB (tonemapped)</th><th>max "
+         "(tonemapped)</th></tr>\n";
     for (const json& p : r["pairwise"])
-        h += "<tr><td class=\"l\">" + esc(p["a"]) + "</td><td class=\"l\">" + esc(p["b"]) + "</td>" + numberCell(p["hdr"]["rmse"]) +
-             numberCell(p["hdr"]["max_abs"]) + numberCell(p.value("difference_p99", json(nullptr))) +
-             numberCell(p["tonemapped"]["psnr"]) + numberCell(p["tonemapped"]["max_abs"]) + "</tr>\n";
+        h += "<tr><td class=\"l\">" + esc(p["a"]) + "</td><td class=\"l\">" + esc(p["b"]) +
+             "</td>" + numberCell(p["hdr"]["rmse"]) + numberCell(p["hdr"]["max_abs"]) +
+             numberCell(p.value("difference_p99", json(nullptr))) +
+             numberCell(p["tonemapped"]["psnr"]) + numberCell(p["tonemapped"]["max_abs"]) +
+             "</tr>\n";
     return h + "</table>\n";
 }
 
@@ -386,17 +471,22 @@ std::string detailsSection(const json& r) {
         for (const auto& [k, v] : p["run"]["counters"].items())
             h += "<tr><td class=\"l\">" + escapeXml(k) + "</td>" + numberCell(v) + "</tr>";
         h += "</table><ul>";
-        for (const json& l : p["run"]["left_out"]) h += "<li>left out: " + esc(l["what"]) + " &mdash; " + esc(l["why"]) + "</li>";
-        for (const json& c : p["run"]["culled_passes"]) h += "<li>culled pass: " + esc(c) + "</li>";
+        for (const json& l : p["run"]["left_out"])
+            h += "<li>left out: " + esc(l["what"]) + " &mdash; " + esc(l["why"]) + "</li>";
+        for (const json& c : p["run"]["culled_passes"])
+            h += "<li>culled pass: " + esc(c) + "</li>";
         h += "</ul></details>\n";
     };
     block(r["reference"]);
-    for (const json& p : r["pipelines"]) block(p);
+    for (const json& p : r["pipelines"])
+        block(p);
     h += "<h2>Metrics</h2>\n<table>";
     for (const json& m : r["metrics_table"]["metrics"])
-        h += "<tr><td class=\"l\">" + esc(m["name"]) + "</td><td class=\"l\">" + esc(m["description"]) + "</td></tr>";
-    return h + "</table>\n<p class=\"meta\">HDR PSNR peak: " + formatNumber(r["metrics_table"]["psnr_peak_hdr"].get<double>()) +
-           " (" + esc(r["metrics_table"]["hdr_psnr_peak_rule"]) + "); tonemapped PSNR peak 1.</p>\n";
+        h += "<tr><td class=\"l\">" + esc(m["name"]) + "</td><td class=\"l\">" +
+             esc(m["description"]) + "</td></tr>";
+    return h + "</table>\n<p class=\"meta\">HDR PSNR peak: " +
+           formatNumber(r["metrics_table"]["psnr_peak_hdr"].get<double>()) + " (" +
+           esc(r["metrics_table"]["hdr_psnr_peak_rule"]) + "); tonemapped PSNR peak 1.</p>\n";
 }
 
 } // namespace
@@ -407,8 +497,10 @@ std::string base64(const std::string& bytes) {
     out.reserve((bytes.size() + 2) / 3 * 4);
     size_t i = 0;
     for (; i + 2 < bytes.size(); i += 3) {
-        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16 | uint32_t(uint8_t(bytes[i + 1])) << 8 | uint8_t(bytes[i + 2]);
-        for (int s = 18; s >= 0; s -= 6) out += table[(v >> s) & 63];
+        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16 | uint32_t(uint8_t(bytes[i + 1])) << 8 |
+                     uint8_t(bytes[i + 2]);
+        for (int s = 18; s >= 0; s -= 6)
+            out += table[(v >> s) & 63];
     }
     if (i < bytes.size()) {
         uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
@@ -422,20 +514,26 @@ std::string base64(const std::string& bytes) {
 }
 
 Result<std::string> reportHtml(const json& r, const std::string& outDir) {
-    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych compare</title>\n<style>";
+    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta "
+                    "charset=\"utf-8\"><title>triptych compare</title>\n<style>";
     h += kBaseStyle;
     h += kStyle;
     h += reportViewerStyle();
-    h += "</style></head><body>\n" + header(r) + summaryTable(r) + (hasCenterReference(r) ? twoReferences(r) : "") + errorPlot(r);
+    h += "</style></head><body>\n" + header(r) + summaryTable(r) +
+         (hasCenterReference(r) ? twoReferences(r) : "") + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
     if (!images) return images;
     Result<std::string> pairs = pairwiseSection(r, outDir);
     if (!pairs) return pairs;
-    h += *images + flipSection(r) + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
-    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in report.json.</p>\n" +
-           reportViewerScript() + "</body></html>\n";
+    h +=
+        *images + flipSection(r) + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
+    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) +
+           "; every number above is in report.json.</p>\n" + reportViewerScript() +
+           "</body></html>\n";
 }
 
-const char* reportPageStyle() { return kBaseStyle; }
+const char* reportPageStyle() {
+    return kBaseStyle;
+}
 
 } // namespace tp::cli

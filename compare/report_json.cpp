@@ -40,21 +40,25 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
 // The second reference under MSAA: whether it ran, what it cost, how far it is from the first.
 nlohmann::json centerReferenceJson(const CompareRecord& r) {
     const PipelineOutcome& c = r.centerReference;
-    if (r.settings.msaa == 1) return {{"rendered", false}, {"why", "MSAA is 1x: both references are one image"}};
+    if (r.settings.msaa == 1)
+        return {{"rendered", false}, {"why", "MSAA is 1x: both references are one image"}};
     if (!r.options->centerReference) return {{"rendered", false}, {"why", "--no-center-reference"}};
     if (!c.run) return {{"rendered", false}, {"why", "failed: " + c.error}};
     nlohmann::json j = {{"rendered", true}, {"knob", "reference-msaa center"}, {"files", c.files}};
     j["run"] = runJson(*c.run, *r.ctx);
     j["error_vs_reference"] = {{"hdr", metricsJson(c.hdr)}, {"tonemapped", metricsJson(c.display)}};
-    j["meaning"] = "error against the supersampled reference = total; against the centre reference = the method "
-                   "alone (the shading rate left out); the centre reference's own error is the cost of shading once "
+    j["meaning"] = "error against the supersampled reference = total; against the centre reference "
+                   "= the method "
+                   "alone (the shading rate left out); the centre reference's own error is the "
+                   "cost of shading once "
                    "per pixel";
     return j;
 }
 
 nlohmann::json metricTableJson(const CompareRecord& r) {
     nlohmann::json list = nlohmann::json::array();
-    for (const MetricInfo& m : metricTable()) list.push_back({{"name", m.name}, {"description", m.description}});
+    for (const MetricInfo& m : metricTable())
+        list.push_back({{"name", m.name}, {"description", m.description}});
     MetricsOptions defaults;
     return {{"metrics", list},
             {"relative_epsilon", defaults.relativeEpsilon},
@@ -72,20 +76,24 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["schema"] = "triptych.report/2";
     j["command_line"] = o.commandLine;
     j["command"] = shellJoin(o.commandLine);
-    bool allOk = std::all_of(r.pipelines.begin(), r.pipelines.end(), [](const PipelineOutcome& p) { return bool(p.run); });
+    bool allOk = std::all_of(r.pipelines.begin(), r.pipelines.end(),
+                             [](const PipelineOutcome& p) { return bool(p.run); });
     j["status"] = allOk ? "ok" : "failed";
     j["seed"] = o.scene.seed;
     j["scene"] = sceneJson(*r.scene, r.features);
     j["scene"]["path"] = o.scene.scene.empty() ? "builtin:courtyard" : o.scene.scene;
-    j["scene"]["hash_fnv1a64"] = r.sceneHash.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.sceneHash);
+    j["scene"]["hash_fnv1a64"] =
+        r.sceneHash.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.sceneHash);
     const bool fromFile = !r.sceneFiles.hash.empty();
-    j["scene"]["files_hash_fnv1a64"] = fromFile ? nlohmann::json(r.sceneFiles.hash) : nlohmann::json(nullptr);
+    j["scene"]["files_hash_fnv1a64"] =
+        fromFile ? nlohmann::json(r.sceneFiles.hash) : nlohmann::json(nullptr);
     j["scene"]["files_hashed"] = r.sceneFiles.files;
     j["scene"]["files_missing"] = r.sceneFiles.missing;
     j["scene"]["content_hash_fnv1a64"] = r.contentHash;
     j["scene"]["lights_hash_fnv1a64"] = r.lightsHash;
     j["scene"]["camera_hash_fnv1a64"] = hashCamera(r.scene->camera);
-    j["camera"] = cameraToJson(r.scene->camera); // a camera file: `jq .camera report.json` is a --camera FILE
+    j["camera"] =
+        cameraToJson(r.scene->camera); // a camera file: `jq .camera report.json` is a --camera FILE
     j["camera_source"] = cameraSourceJson(r.cameraSource);
     j["camera_file"] = "camera.json";
     j["scene"]["lights_file"] = "lights.json";
@@ -97,16 +105,18 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["settings"]["light_types"] = o.scene.lightTypes;
     j["settings"]["lights_requested"] = o.scene.lightCount;
     j["device"] = deviceJson(*r.ctx);
-    j["difference_scale"] = {{"value", r.diffScale},
-                             {"unit", "linear radiance, max over RGB of |pipeline - reference|"},
-                             {"rule", "largest 99th percentile of |difference| over the pipelines"}};
+    j["difference_scale"] = {
+        {"value", r.diffScale},
+        {"unit", "linear radiance, max over RGB of |pipeline - reference|"},
+        {"rule", "largest 99th percentile of |difference| over the pipelines"}};
     j["metrics_table"] = metricTableJson(r);
     j["flip"] = flipConditionsJson(o.flipDistance);
     j["shared_memory"] = ledgerJson(r.sharedMemory);
     j["shared_memory"]["owner"] = "scene";
     j["reference"] = outcomeJson(r.reference, *r.ctx, true);
     nlohmann::json pipelines = nlohmann::json::array();
-    for (const PipelineOutcome& p : r.pipelines) pipelines.push_back(outcomeJson(p, *r.ctx, false));
+    for (const PipelineOutcome& p : r.pipelines)
+        pipelines.push_back(outcomeJson(p, *r.ctx, false));
     j["pipelines"] = pipelines;
     j["center_reference"] = centerReferenceJson(r);
     nlohmann::json pairs = nlohmann::json::array();
@@ -127,9 +137,11 @@ std::string shellJoin(const std::vector<std::string>& args) {
     std::string out;
     for (const std::string& a : args) {
         if (!out.empty()) out += ' ';
-        bool plain = !a.empty() && a.find_first_of(" \t\n\"'\\$`;&|<>()*?[]{}#~!") == std::string::npos;
+        bool plain =
+            !a.empty() && a.find_first_of(" \t\n\"'\\$`;&|<>()*?[]{}#~!") == std::string::npos;
         std::string quoted = "'";
-        for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        for (char c : a)
+            quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
         out += plain ? a : quoted + "'";
     }
     return out;

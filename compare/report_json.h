@@ -20,12 +20,12 @@ namespace tp::cli {
 
 struct PipelineOutcome {
     std::string name;
-    std::string error;            // why it failed; empty when it ran
-    std::optional<RunResult> run; // set when it ran
-    ErrorReport hdr;              // against the reference, linear
-    ErrorReport display;          // against the reference, tonemapped (same exposure)
-    float diffP99 = 0;            // 99th percentile of max-channel |diff| (linear)
-    FlipMeasure flip;             // FLIP and HDR-FLIP against the reference
+    std::string error;              // why it failed; empty when it ran
+    std::optional<RunResult> run;   // set when it ran
+    ErrorReport hdr;                // against the reference, linear
+    ErrorReport display;            // against the reference, tonemapped (same exposure)
+    float diffP99 = 0;              // 99th percentile of max-channel |diff| (linear)
+    FlipMeasure flip;               // FLIP and HDR-FLIP against the reference
     std::vector<std::string> files; // written into --out, relative names
     // Under MSAA, against the reference shaded at the pixel centre (--reference-msaa center).
     std::optional<ErrorReport> hdrVsCenter, displayVsCenter;
@@ -44,14 +44,14 @@ struct CompareRecord {
     SceneFeatures features;
     RenderSettings settings;
     const GpuContext* ctx = nullptr;
-    std::string sceneHash;        // FNV-1a 64 of the scene file, hex; empty for built-ins
-    FileHashes sceneFiles;        // the file and every file it references; empty for built-ins
-    std::string contentHash;      // the loaded geometry, materials, textures, camera (any scene)
-    std::string lightsHash;       // the lights rendered (file lights and generated ones)
-    CameraSource cameraSource;    // where scene->camera came from (--camera, glTF, built-in)
+    std::string sceneHash;     // FNV-1a 64 of the scene file, hex; empty for built-ins
+    FileHashes sceneFiles;     // the file and every file it references; empty for built-ins
+    std::string contentHash;   // the loaded geometry, materials, textures, camera (any scene)
+    std::string lightsHash;    // the lights rendered (file lights and generated ones)
+    CameraSource cameraSource; // where scene->camera came from (--camera, glTF, built-in)
     float exposureEv = 0;
-    float diffScale = 0;          // shared heat-map scale
-    float hdrPsnrPeak = 1;        // brightest finite reference channel
+    float diffScale = 0;                   // shared heat-map scale
+    float hdrPsnrPeak = 1;                 // brightest finite reference channel
     std::vector<LedgerEntry> sharedMemory; // owner "scene": counted once
     PipelineOutcome reference;
     // Under MSAA (unless --no-center-reference): the reference with --reference-msaa center;

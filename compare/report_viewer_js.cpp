@@ -78,8 +78,12 @@ document.querySelectorAll('figure img').forEach(function(img){
 
 } // namespace
 
-const char* reportViewerStyle() { return kViewerStyle; }
+const char* reportViewerStyle() {
+    return kViewerStyle;
+}
 
-std::string reportViewerScript() { return std::string("<script>") + kViewerScript + "</script>\n"; }
+std::string reportViewerScript() {
+    return std::string("<script>") + kViewerScript + "</script>\n";
+}
 
 } // namespace tp::cli

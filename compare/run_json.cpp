@@ -27,7 +27,6 @@ nlohmann::json deviceJson(const GpuContext& ctx) {
     return j;
 }
 
-
 nlohmann::json settingsJson(const RenderSettings& s) {
     nlohmann::json j = {{"width", s.width}, {"height", s.height}, {"msaa", s.msaa}};
     // Every registered knob by its key, as the run had it (a knob nobody set: its default).
@@ -71,13 +70,15 @@ nlohmann::json cameraSourceJson(const CameraSource& s) {
     nlohmann::json j = {{"kind", s.kind}};
     if (s.kind == "gltf") {
         j["gltf_camera"] = s.gltfCamera;
-        j["description"] = "the glTF file's camera " + std::to_string(s.gltfCamera) + " (its first perspective camera "
+        j["description"] = "the glTF file's camera " + std::to_string(s.gltfCamera) +
+                           " (its first perspective camera "
                            "on a drawn node)";
     } else if (s.kind == "file") {
         j["path"] = s.path;
         j["description"] = "--camera " + s.path;
     } else if (s.kind == "framed") {
-        j["description"] = "framed from the scene's bounds: the glTF file has no perspective camera on a drawn node";
+        j["description"] = "framed from the scene's bounds: the glTF file has no perspective "
+                           "camera on a drawn node";
     } else {
         j["description"] = "the built-in scene's camera";
     }
@@ -88,11 +89,13 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     nlohmann::json j;
     j["pipeline"] = run.renderer;
     j["knobs"] = nlohmann::json::object(); // the knobs this pipeline reads, as it ran
-    for (const auto& [knob, value] : run.knobs) j["knobs"][knob.key()] = knobJson(knob, value);
+    for (const auto& [knob, value] : run.knobs)
+        j["knobs"][knob.key()] = knobJson(knob, value);
     // The shading rate it ran (docs/shading.md): "pixel" or "sample" under MSAA for a
     // pipeline with the msaa-shading knob, "1x" without MSAA.
     for (const auto& [knob, value] : run.knobs)
-        if (knob.name == "msaa-shading") j["msaa_shading"] = run.msaa > 1 ? value : std::string("1x");
+        if (knob.name == "msaa-shading")
+            j["msaa_shading"] = run.msaa > 1 ? value : std::string("1x");
     nlohmann::json timings = nlohmann::json::array();
     for (const TimingStats& t : run.timings)
         timings.push_back({{"pass", t.name},
@@ -104,12 +107,15 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     j["timings"] = timings;
     j["memory"] = ledgerJson(run.memory);
     const double pixels = double(run.hdr.pixelCount());
-    j["memory"]["bytes_per_pixel"] = pixels > 0 ? double(j["memory"]["total_bytes"].get<uint64_t>()) / pixels : 0.0;
+    j["memory"]["bytes_per_pixel"] =
+        pixels > 0 ? double(j["memory"]["total_bytes"].get<uint64_t>()) / pixels : 0.0;
     nlohmann::json counters = nlohmann::json::object();
-    for (const auto& [k, v] : run.stats.counters) counters[k] = v;
+    for (const auto& [k, v] : run.stats.counters)
+        counters[k] = v;
     j["counters"] = counters;
     nlohmann::json leftOut = nlohmann::json::array();
-    for (const LeftOut& l : run.stats.leftOut) leftOut.push_back({{"what", l.what}, {"why", l.why}});
+    for (const LeftOut& l : run.stats.leftOut)
+        leftOut.push_back({{"what", l.what}, {"why", l.why}});
     j["left_out"] = leftOut;
     j["passes"] = run.passes;
     j["culled_passes"] = run.culledPasses;
@@ -139,8 +145,10 @@ nlohmann::json metricsJson(const ErrorReport& e) {
     nlohmann::json j;
     for (const MetricInfo& m : metricTable()) {
         double v = m.value(e);
-        if (std::isfinite(v)) j[m.name] = v;
-        else j[m.name] = nullptr; // JSON has no infinity: PSNR of identical images
+        if (std::isfinite(v))
+            j[m.name] = v;
+        else
+            j[m.name] = nullptr; // JSON has no infinity: PSNR of identical images
     }
     j["max_abs_x"] = e.maxAbsX;
     j["max_abs_y"] = e.maxAbsY;

@@ -17,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class Fnv1a64 {
-public:
+  public:
     void bytes(const void* data, size_t n) {
         const auto* p = static_cast<const uint8_t*>(data);
         for (size_t i = 0; i < n; ++i) {
@@ -43,7 +43,7 @@ public:
         return out;
     }
 
-private:
+  private:
     uint64_t h_ = 1469598103934665603ull; // offset basis
 };
 
@@ -67,7 +67,8 @@ std::string decodeUri(const std::string& s) { // as the loader decodes it (gltf_
         if (s[i] == '%' && i + 2 < s.size()) {
             out += char(std::stoi(s.substr(i + 1, 2), nullptr, 16));
             i += 2;
-        } else out += s[i] == '+' ? ' ' : s[i];
+        } else
+            out += s[i] == '+' ? ' ' : s[i];
     }
     return out;
 }
@@ -92,8 +93,8 @@ std::vector<fs::path> referencedFiles(const std::string& json, const fs::path& f
 }
 
 void hashCameraInto(Fnv1a64& h, const Camera& c) {
-    for (float f : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
-                    c.up.z, c.yfov, c.znear, c.zfar})
+    for (float f : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z,
+                    c.up.x, c.up.y, c.up.z, c.yfov, c.znear, c.zfar})
         h.f32(f);
 }
 
@@ -106,12 +107,14 @@ FileHashes hashSceneFiles(const std::string& path) {
     if (!ok) return result;
     Fnv1a64 h;
     std::vector<fs::path> files = {fs::path(path)};
-    for (const fs::path& f : referencedFiles(gltfJson(scene), fs::path(path).parent_path())) files.push_back(f);
+    for (const fs::path& f : referencedFiles(gltfJson(scene), fs::path(path).parent_path()))
+        files.push_back(f);
     for (size_t i = 0; i < files.size(); ++i) {
         const std::string bytes = i == 0 ? scene : readAll(files[i], ok);
         result.files.push_back(files[i].string());
         // The name as the JSON gives it (relative to the scene), so a moved folder hashes the same.
-        h.text(i == 0 ? files[i].filename().string() : files[i].lexically_relative(files[0].parent_path()).string());
+        h.text(i == 0 ? files[i].filename().string()
+                      : files[i].lexically_relative(files[0].parent_path()).string());
         if (!ok) {
             result.missing.push_back(files[i].string());
             h.text("<missing>");
@@ -144,8 +147,8 @@ std::string hashSceneContent(const Scene& scene) {
                         m.emissiveFactor.z, m.normalScale, m.occlusionStrength, m.alphaCutoff})
             h.f32(f);
         for (int64_t v : {int64_t(m.alphaMode), int64_t(m.doubleSided), int64_t(m.baseColorTexture),
-                          int64_t(m.metallicRoughnessTexture), int64_t(m.normalTexture), int64_t(m.occlusionTexture),
-                          int64_t(m.emissiveTexture)})
+                          int64_t(m.metallicRoughnessTexture), int64_t(m.normalTexture),
+                          int64_t(m.occlusionTexture), int64_t(m.emissiveTexture)})
             h.u64(uint64_t(v));
     }
     h.u64(scene.textures.size());
@@ -157,7 +160,8 @@ std::string hashSceneContent(const Scene& scene) {
         h.array(t.rgba8);
     }
     hashCameraInto(h, scene.camera);
-    for (float f : {scene.ambient.x, scene.ambient.y, scene.ambient.z}) h.f32(f);
+    for (float f : {scene.ambient.x, scene.ambient.y, scene.ambient.z})
+        h.f32(f);
     return h.hex();
 }
 
@@ -172,8 +176,9 @@ std::string hashLights(const std::vector<Light>& lights) {
     h.u64(lights.size());
     for (const Light& l : lights) {
         h.u64(uint64_t(l.type));
-        for (float f : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y, l.direction.z,
-                        l.color.x, l.color.y, l.color.z, l.intensity, l.range, l.innerConeAngle, l.outerConeAngle})
+        for (float f : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
+                        l.direction.z, l.color.x, l.color.y, l.color.z, l.intensity, l.range,
+                        l.innerConeAngle, l.outerConeAngle})
             h.f32(f);
     }
     return h.hex();

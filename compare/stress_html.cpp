@@ -20,16 +20,21 @@ td.pass{background:#e3f6e3}td.fail{background:#fde2e2;font-weight:bold}
 summary{font-weight:normal}
 )";
 
-std::string esc(const json& j) { return escapeXml(j.is_string() ? j.get<std::string>() : j.dump()); }
-std::string num(const json& j) { return j.is_number() ? formatNumber(j.get<double>()) : "&ndash;"; }
+std::string esc(const json& j) {
+    return escapeXml(j.is_string() ? j.get<std::string>() : j.dump());
+}
+std::string num(const json& j) {
+    return j.is_number() ? formatNumber(j.get<double>()) : "&ndash;";
+}
 
-Result<std::string> figure(const std::string& outDir, const std::string& file, const std::string& caption) {
+Result<std::string> figure(const std::string& outDir, const std::string& file,
+                           const std::string& caption) {
     std::ifstream in(outDir + "/" + file, std::ios::binary);
     if (!in) return Error{outDir + "/" + file + ": cannot read for stress.html"};
     std::ostringstream ss;
     ss << in.rdbuf();
-    return "<figure><img alt=\"" + escapeXml(file) + "\" src=\"data:image/png;base64," + base64(ss.str()) +
-           "\"><figcaption>" + caption + "</figcaption></figure>\n";
+    return "<figure><img alt=\"" + escapeXml(file) + "\" src=\"data:image/png;base64," +
+           base64(ss.str()) + "\"><figcaption>" + caption + "</figcaption></figure>\n";
 }
 
 const json* checkNamed(const json& p, const std::string& name) {
@@ -43,18 +48,24 @@ std::string verdictCell(const json& p) {
     std::string figure;
     if (const json* c = checkNamed(p, "tonemapped max |p - r|"))
         figure = " " + num((*c)["measured"]) + " / " + num((*c)["limit"]);
-    return "<td class=\"" + std::string(pass ? "pass" : "fail") + "\">" + (pass ? "pass" : "FAIL") + figure + "</td>";
+    return "<td class=\"" + std::string(pass ? "pass" : "fail") + "\">" + (pass ? "pass" : "FAIL") +
+           figure + "</td>";
 }
 
 std::string matrix(const json& r) {
-    std::string h = "<h2>Verdicts</h2>\n<p class=\"meta\">Each cell: verdict, then the tonemapped max |pipeline "
-                    "&minus; reference| / its derived bound.</p>\n<table><tr><th class=\"l\">case</th>";
+    std::string h =
+        "<h2>Verdicts</h2>\n<p class=\"meta\">Each cell: verdict, then the tonemapped max "
+        "|pipeline "
+        "&minus; reference| / its derived bound.</p>\n<table><tr><th class=\"l\">case</th>";
     if (r["cases"].empty()) return h + "</tr></table>\n";
-    for (const json& p : r["cases"][0]["pipelines"]) h += "<th>" + esc(p["name"]) + "</th>";
+    for (const json& p : r["cases"][0]["pipelines"])
+        h += "<th>" + esc(p["name"]) + "</th>";
     h += "</tr>\n";
     for (const json& c : r["cases"]) {
-        h += "<tr><td class=\"l\"><a href=\"#" + esc(c["name"]) + "\">" + esc(c["name"]) + "</a></td>";
-        for (const json& p : c["pipelines"]) h += verdictCell(p);
+        h += "<tr><td class=\"l\"><a href=\"#" + esc(c["name"]) + "\">" + esc(c["name"]) +
+             "</a></td>";
+        for (const json& p : c["pipelines"])
+            h += verdictCell(p);
         h += "</tr>\n";
     }
     return h + "</table>\n";
@@ -64,26 +75,33 @@ std::string failedChecks(const json& p) {
     std::string s;
     for (const json& c : p["checks"])
         if (!c["pass"].get<bool>())
-            s += (s.empty() ? "" : "<br>") + esc(c["name"]) + ": " + num(c["measured"]) + " (limit " + num(c["limit"]) + ")";
+            s += (s.empty() ? "" : "<br>") + esc(c["name"]) + ": " + num(c["measured"]) +
+                 " (limit " + num(c["limit"]) + ")";
     return s.empty() ? "&ndash;" : s;
 }
 
 std::string caseTable(const json& c) {
-    std::string t = "<table><tr><th class=\"l\">pipeline</th><th>verdict</th><th>tonemapped max (bound)</th><th>RMSE "
-                    "(HDR)</th><th>max |d| (HDR)</th><th>NaN px</th><th>Inf px</th><th>lights dropped</th><th "
-                    "class=\"l\">beyond 65,504</th><th>depth px &ne; ref</th><th class=\"l\">failed checks</th></tr>\n";
+    std::string t =
+        "<table><tr><th class=\"l\">pipeline</th><th>verdict</th><th>tonemapped max "
+        "(bound)</th><th>RMSE "
+        "(HDR)</th><th>max |d| (HDR)</th><th>NaN px</th><th>Inf px</th><th>lights dropped</th><th "
+        "class=\"l\">beyond 65,504</th><th>depth px &ne; ref</th><th class=\"l\">failed "
+        "checks</th></tr>\n";
     for (const json& p : c["pipelines"]) {
         t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>" + verdictCell(p);
         if (p["status"] != "ok") {
-            t += "<td colspan=\"9\" class=\"l\">did not run: " + esc(p.value("error", json(""))) + "</td></tr>\n";
+            t += "<td colspan=\"9\" class=\"l\">did not run: " + esc(p.value("error", json(""))) +
+                 "</td></tr>\n";
             continue;
         }
         const json& e = p["error_vs_reference"]["hdr"];
-        t += "<td>" + num(p["checked_max_tonemapped"]) + " (" + num(p["bound"].value("tonemapped", json())) + ")</td>" +
-             "<td>" + num(e["rmse"]) + "</td><td>" + num(e["max_abs"]) + "</td><td>" + num(p["nan_pixels"]) + "</td><td>" +
-             num(p["inf_pixels"]) + "</td><td>" + num(p["lights_dropped"]) + "</td><td class=\"l\">" +
-             esc(p["beyond_half_float"]["behaviour"]) + "</td><td>" + num(p["depth_mismatch_pixels"]) +
-             "</td><td class=\"l\">" + failedChecks(p) + "</td></tr>\n";
+        t += "<td>" + num(p["checked_max_tonemapped"]) + " (" +
+             num(p["bound"].value("tonemapped", json())) + ")</td>" + "<td>" + num(e["rmse"]) +
+             "</td><td>" + num(e["max_abs"]) + "</td><td>" + num(p["nan_pixels"]) + "</td><td>" +
+             num(p["inf_pixels"]) + "</td><td>" + num(p["lights_dropped"]) +
+             "</td><td class=\"l\">" + esc(p["beyond_half_float"]["behaviour"]) + "</td><td>" +
+             num(p["depth_mismatch_pixels"]) + "</td><td class=\"l\">" + failedChecks(p) +
+             "</td></tr>\n";
     }
     return t + "</table>\n";
 }
@@ -92,13 +110,16 @@ std::string boundDetails(const json& c) {
     std::string h = "<details><summary>bounds and checks, term by term</summary>";
     for (const json& p : c["pipelines"]) {
         if (!p.contains("bound")) continue;
-        h += "<p class=\"meta\"><b>" + esc(p["name"]) + "</b>: " + esc(p["bound"]["why"]) + "</p><table>";
+        h += "<p class=\"meta\"><b>" + esc(p["name"]) + "</b>: " + esc(p["bound"]["why"]) +
+             "</p><table>";
         for (const json& t : p["bound"]["terms"])
-            h += "<tr><td class=\"l\">" + esc(t["name"]) + "</td><td>" + num(t["relative"]) + "</td><td>" +
-                 num(t["absolute"]) + "</td><td class=\"l\">" + esc(t["why"]) + "</td></tr>";
+            h += "<tr><td class=\"l\">" + esc(t["name"]) + "</td><td>" + num(t["relative"]) +
+                 "</td><td>" + num(t["absolute"]) + "</td><td class=\"l\">" + esc(t["why"]) +
+                 "</td></tr>";
         for (const json& k : p["checks"])
-            h += "<tr><td class=\"l\">check: " + esc(k["name"]) + "</td><td>" + num(k["measured"]) + "</td><td>" +
-                 num(k["limit"]) + "</td><td class=\"l\">" + esc(k["why"]) + "</td></tr>";
+            h += "<tr><td class=\"l\">check: " + esc(k["name"]) + "</td><td>" + num(k["measured"]) +
+                 "</td><td>" + num(k["limit"]) + "</td><td class=\"l\">" + esc(k["why"]) +
+                 "</td></tr>";
         h += "</table>";
     }
     return h + "</details>\n";
@@ -107,16 +128,21 @@ std::string boundDetails(const json& c) {
 Result<std::string> caseSection(const json& c, const std::string& outDir) {
     const bool pass = c["verdict"] == "pass";
     const json& s = c["settings"];
-    std::string h = "<h2 id=\"" + esc(c["name"]) + "\">" + esc(c["name"]) + ": " + (pass ? "pass" : "FAIL") + "</h2>\n";
-    h += "<p class=\"meta\"><b>Stresses:</b> " + esc(c["stresses"]) + "<br><b>Expected:</b> " + esc(c["expectation"]) +
-         "<br>" + esc(s["width"]) + "&times;" + esc(s["height"]) + ", " + esc(s["msaa"]) + "&times; MSAA, " +
-         esc(c["lights"]) + " lights, " + esc(c["triangles"]) + " triangles, exposure " + num(c["exposure_ev"]) +
-         " EV, " + num(c["seconds"]) + " s.</p>\n";
+    std::string h = "<h2 id=\"" + esc(c["name"]) + "\">" + esc(c["name"]) + ": " +
+                    (pass ? "pass" : "FAIL") + "</h2>\n";
+    h += "<p class=\"meta\"><b>Stresses:</b> " + esc(c["stresses"]) + "<br><b>Expected:</b> " +
+         esc(c["expectation"]) + "<br>" + esc(s["width"]) + "&times;" + esc(s["height"]) + ", " +
+         esc(s["msaa"]) + "&times; MSAA, " + esc(c["lights"]) + " lights, " + esc(c["triangles"]) +
+         " triangles, exposure " + num(c["exposure_ev"]) + " EV, " + num(c["seconds"]) +
+         " s.</p>\n";
     if (c["reference"]["status"] != "ok")
-        h += "<div class=\"failed\">reference failed: " + esc(c["reference"].value("error", json(""))) + "</div>\n";
+        h += "<div class=\"failed\">reference failed: " +
+             esc(c["reference"].value("error", json(""))) + "</div>\n";
     h += caseTable(c) + boundDetails(c);
-    h += "<p class=\"meta\">Per pipeline: the reference, the pipeline, and the heat map of |pipeline &minus; reference| "
-         "(max over RGB, linear) from 0 to " + num(c["difference_scale"]["value"]) +
+    h += "<p class=\"meta\">Per pipeline: the reference, the pipeline, and the heat map of "
+         "|pipeline &minus; reference| "
+         "(max over RGB, linear) from 0 to " +
+         num(c["difference_scale"]["value"]) +
          " (one scale per case); magenta: NaN/Inf.</p>\n<div class=\"grid\">\n";
     std::string ref;
     for (const json& f : c["reference"]["files"])
@@ -130,11 +156,15 @@ Result<std::string> caseSection(const json& c, const std::string& outDir) {
         for (const json& f : p["files"]) {
             const std::string file = f;
             if (!file.ends_with(".png")) continue;
-            Result<std::string> fig = figure(outDir, file, esc(p["name"]) + (file.ends_with("_diff.png") ? " &minus; reference" : ""));
+            Result<std::string> fig =
+                figure(outDir, file,
+                       esc(p["name"]) + (file.ends_with("_diff.png") ? " &minus; reference" : ""));
             if (!fig) return fig;
             h += *fig;
         }
-        if (p["status"] != "ok") h += "<figure><figcaption>" + esc(p["name"]) + " did not run</figcaption></figure><figure></figure>\n";
+        if (p["status"] != "ok")
+            h += "<figure><figcaption>" + esc(p["name"]) +
+                 " did not run</figcaption></figure><figure></figure>\n";
     }
     return h + "</div>\n";
 }
@@ -142,23 +172,28 @@ Result<std::string> caseSection(const json& c, const std::string& outDir) {
 } // namespace
 
 Result<std::string> stressHtml(const json& r, const std::string& outDir) {
-    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>triptych stress</title>\n<style>";
+    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta "
+                    "charset=\"utf-8\"><title>triptych stress</title>\n<style>";
     h += reportPageStyle();
     h += kStyle;
     const json& sum = r["summary"];
-    h += "</style></head><body>\n<h1>triptych stress: " + esc(sum["passed"]) + " of " + esc(sum["cases"]) +
-         " cases pass</h1>\n<p class=\"meta\">Device: <b>" + esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) +
-         ")<br>Command: <code>" + esc(r["command"]) + "</code><br>Tonemapped bounds: K = " +
-         num(r["tonemap_slopes"]["relative_K"]) + ", S0 = " + num(r["tonemap_slopes"]["absolute_S0"]) + " (" +
+    h += "</style></head><body>\n<h1>triptych stress: " + esc(sum["passed"]) + " of " +
+         esc(sum["cases"]) + " cases pass</h1>\n<p class=\"meta\">Device: <b>" +
+         esc(r["device"]["name"]) + "</b> (" + esc(r["device"]["driver"]) + ")<br>Command: <code>" +
+         esc(r["command"]) +
+         "</code><br>Tonemapped bounds: K = " + num(r["tonemap_slopes"]["relative_K"]) +
+         ", S0 = " + num(r["tonemap_slopes"]["absolute_S0"]) + " (" +
          esc(r["tonemap_slopes"]["rule"]) + "); docs/stress.md derives every term.</p>\n";
-    for (const json& m : r["validation_messages"]) h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
+    for (const json& m : r["validation_messages"])
+        h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
     h += matrix(r);
     for (const json& c : r["cases"]) {
         Result<std::string> s = caseSection(c, outDir);
         if (!s) return s;
         h += *s;
     }
-    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) + "; every number above is in stress.json.</p>\n</body></html>\n";
+    return h + "<p class=\"meta\">Schema " + esc(r["schema"]) +
+           "; every number above is in stress.json.</p>\n</body></html>\n";
 }
 
 } // namespace tp::cli

@@ -10,7 +10,9 @@
 namespace tp::cli {
 namespace {
 
-bool hasCounter(const RunResult& run, const std::string& name) { return !std::isnan(counterValue(run, name, NAN)); }
+bool hasCounter(const RunResult& run, const std::string& name) {
+    return !std::isnan(counterValue(run, name, NAN));
+}
 
 bool fp16Hdr(const RunResult& run) {
     for (const LedgerEntry& e : run.memory)
@@ -30,9 +32,12 @@ ImageRGBA maskOverflow(StressOutcome& p, const ImageRGBA& ref) {
             ++p.overflowChannels;
             if (!p.fp16Storage) continue;
             const float v = p.run->hdr.rgba[k];
-            if (std::isinf(v) && v > 0) ++p.overflowInf;
-            else if (v >= kHalfMax * (1.0f - 1.0f / 1024.0f) && v <= kHalfMax) ++p.saturated;
-            else continue; // anything else (NaN included) stays in the comparison
+            if (std::isinf(v) && v > 0)
+                ++p.overflowInf;
+            else if (v >= kHalfMax * (1.0f - 1.0f / 1024.0f) && v <= kHalfMax)
+                ++p.saturated;
+            else
+                continue; // anything else (NaN included) stays in the comparison
             checked.rgba[k] = ref.rgba[k];
         }
     return checked;
@@ -65,7 +70,8 @@ double hdrBeyondBound(const ErrorBound& b, const ImageRGBA& checked, const Image
         for (int c = 0; c < 3; ++c) {
             const double r = ref.rgba[i * 4 + c], d = std::abs(double(checked.rgba[i * 4 + c]) - r);
             if (std::isnan(d)) return INFINITY;
-            worst = std::max(worst, std::max(d - allowance, 0.0) / (b.relative() * std::abs(r) + b.absolute()));
+            worst = std::max(worst, std::max(d - allowance, 0.0) /
+                                        (b.relative() * std::abs(r) + b.absolute()));
         }
     }
     return worst;
@@ -86,26 +92,30 @@ double hdrBeyondBound(const ErrorBound& b, const ImageRGBA& checked, const Image
 // deferred_hdr_test count blended layers.
 void addBlendedTerm(ErrorBound& b, const stress::StressCase& c, const StressOutcome& p) {
     if (c.blendedLayers == 0) return;
-    const double layers = c.blendedLayers, blends = layers + counterValue(*p.run, "blended_light_draws", 0);
+    const double layers = c.blendedLayers,
+                 blends = layers + counterValue(*p.run, "blended_light_draws", 0);
     const std::string count = std::to_string(int64_t(blends)) + " blends per pixel at most (" +
                               std::to_string(c.blendedLayers) + " layers + blended_light_draws)";
     b.terms.push_back({"blended layers: fp32 blend arithmetic", 4.0 * (blends + layers) * kUlp32, 0,
-                       count + " and " + std::to_string(c.blendedLayers) + " in the reference, each <= 4 fp32 "
-                       "roundings of values weighing <= the pixel: 4 * (B + L) * 2^-24"});
+                       count + " and " + std::to_string(c.blendedLayers) +
+                           " in the reference, each <= 4 fp32 "
+                           "roundings of values weighing <= the pixel: 4 * (B + L) * 2^-24"});
     if (p.fp16Storage)
-        b.terms.push_back({"blended layers: fp16 stores", blends * kHalfUlp16, blends * 6e-8,
-                           count + ", each result stored in the RGBA16F target once: B * 2^-10, B * 6e-8"});
+        b.terms.push_back(
+            {"blended layers: fp16 stores", blends * kHalfUlp16, blends * 6e-8,
+             count + ", each result stored in the RGBA16F target once: B * 2^-10, B * 6e-8"});
 }
 
 uint64_t depthMismatch(const ImageR32& a, const ImageR32& b) {
     if (a.r.size() != b.r.size()) return a.r.size() + b.r.size();
     uint64_t n = 0;
-    for (size_t i = 0; i < a.r.size(); ++i) n += a.r[i] != b.r[i];
+    for (size_t i = 0; i < a.r.size(); ++i)
+        n += a.r[i] != b.r[i];
     return n;
 }
 
-void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref, const Scene& scene,
-               const RenderSettings& settings) {
+void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref,
+               const Scene& scene, const RenderSettings& settings) {
     auto check = [&](std::string name, double measured, double limit, std::string why) {
         p.checks.push_back({std::move(name), measured <= limit, measured, limit, std::move(why)});
     };
@@ -114,29 +124,37 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
           "+Inf only where the reference exceeds 65,504 and the target is fp16");
     check("lights dropped", p.lightsDropped, 0, "the default list layouts never drop a light");
     if (p.bound.bounded)
-        check(p.bound.perPixel.name.empty() ? "tonemapped max |p - r|" : "tonemapped max |p - r| beyond the per-pixel allowance",
+        check(p.bound.perPixel.name.empty()
+                  ? "tonemapped max |p - r|"
+                  : "tonemapped max |p - r| beyond the per-pixel allowance",
               p.checkedMaxTonemapped, p.bound.tonemapped(r.exposureEv),
-              "the pipeline's derived bound (relative " + std::to_string(p.bound.relative()) + ", absolute " +
-                  std::to_string(p.bound.absolute()) + ") through the tonemap" +
-                  (p.bound.perPixel.name.empty() ? "" : "; each pixel's limit widened by " + p.bound.perPixel.name));
+              "the pipeline's derived bound (relative " + std::to_string(p.bound.relative()) +
+                  ", absolute " + std::to_string(p.bound.absolute()) + ") through the tonemap" +
+                  (p.bound.perPixel.name.empty()
+                       ? ""
+                       : "; each pixel's limit widened by " + p.bound.perPixel.name));
     if (p.bound.bounded && !p.bound.perPixel.name.empty())
         check("pixels the per-pixel allowance leaves unchecked", double(p.unboundedPixels), 0,
-              "a light within the position error of a shaded point bounds nothing there; no case may have one "
+              "a light within the position error of a shaded point bounds nothing there; no case "
+              "may have one "
               "unnoticed");
     if (p.bound.bounded && r.c->hdrChecked)
         check("HDR max |p - r| / (relative |r| + absolute)", p.hdrBeyondBound, 1,
-              "the bound itself on linear values, per pixel and channel (less the per-pixel allowance where the "
+              "the bound itself on linear values, per pixel and channel (less the per-pixel "
+              "allowance where the "
               "model has one): the case's values span more than the tonemap shows at one exposure");
     if (p.inertChecked)
         check("pixels the inert lights change", double(p.inertChanged), 0,
-              "the last " + std::to_string(r.c->inertLights) + " lights must contribute exactly nothing: the image "
-              "equals bit for bit this renderer's image of the scene with their intensity 0");
+              "the last " + std::to_string(r.c->inertLights) +
+                  " lights must contribute exactly nothing: the image "
+                  "equals bit for bit this renderer's image of the scene with their intensity 0");
     if (r.c->depthExact)
         check("depth pixels differing from the reference", double(p.depthMismatch), 0,
               "same triangles, same vertex shader (precise gl_Position), D32 reverse-Z");
     const RendererEntry& entry = **findRenderer(p.name);
     const std::vector<stress::CounterAtLeast> stressed =
-        entry.stressedCounters ? entry.stressedCounters({*r.c, scene, settings}) : std::vector<stress::CounterAtLeast>{};
+        entry.stressedCounters ? entry.stressedCounters({*r.c, scene, settings})
+                               : std::vector<stress::CounterAtLeast>{};
     for (const stress::CounterAtLeast& s : stressed) {
         if (!hasCounter(*p.run, s.counter)) continue;
         const double v = counterValue(*p.run, s.counter, 0);
@@ -167,7 +185,8 @@ void countNonFinite(const ImageRGBA& image, uint64_t& nanPixels, uint64_t& infPi
     }
 }
 
-void measureOutcome(StressOutcome& p, const StressOutcome& reference, const StressCaseResult& r, const Scene& scene) {
+void measureOutcome(StressOutcome& p, const StressOutcome& reference, const StressCaseResult& r,
+                    const Scene& scene) {
     const ImageRGBA& ref = reference.run->hdr;
     MetricsOptions hdrOptions;
     float peak = 1.0f;
@@ -183,9 +202,11 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     p.lightsDropped = counterValue(*p.run, "lights_dropped", 0);
     p.depthMismatch = depthMismatch(p.run->depth, reference.run->depth);
     const RendererEntry& entry = **findRenderer(p.name);
-    RenderSettings settings = r.settings; // as the run saw it: its knobs' defaults filled in (it ran, so they are valid)
+    RenderSettings settings =
+        r.settings; // as the run saw it: its knobs' defaults filled in (it ran, so they are valid)
     resolveKnobs(entry.knobs, settings);
-    p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings, &reference.run->depth, r.subPixelBits});
+    p.bound = expectedBound(entry.errorModel,
+                            {*r.c, scene, settings, &reference.run->depth, r.subPixelBits});
     if (p.bound.bounded) addBlendedTerm(p.bound, *r.c, p);
     const ImageRGBA checked = maskOverflow(p, ref);
     p.rawMaxTonemapped = computeError(tonemapToDisplay(checked, r.exposureEv), refDisplay).maxAbs;
@@ -196,7 +217,8 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     p.unboundedPixels += beyond.unboundedPixels;
     addChecks(p, r, ref, scene, settings);
     p.pass = true;
-    for (const StressCheck& c : p.checks) p.pass &= c.pass;
+    for (const StressCheck& c : p.checks)
+        p.pass &= c.pass;
 }
 
 std::string overflowBehaviour(const StressOutcome& p) {
@@ -204,9 +226,13 @@ std::string overflowBehaviour(const StressOutcome& p) {
     if (!p.fp16Storage) return "fp32 target: values beyond 65,504 kept";
     std::string s;
     if (p.saturated) s += "saturates at 65,504 (" + std::to_string(p.saturated) + " channels)";
-    if (p.overflowInf) s += std::string(s.empty() ? "" : "; ") + "overflows to +Inf (" + std::to_string(p.overflowInf) + " channels)";
+    if (p.overflowInf)
+        s += std::string(s.empty() ? "" : "; ") + "overflows to +Inf (" +
+             std::to_string(p.overflowInf) + " channels)";
     const uint64_t other = p.overflowChannels - p.saturated - p.overflowInf;
-    if (other) s += std::string(s.empty() ? "" : "; ") + std::to_string(other) + " channels neither (checked against the bound)";
+    if (other)
+        s += std::string(s.empty() ? "" : "; ") + std::to_string(other) +
+             " channels neither (checked against the bound)";
     return s;
 }
 

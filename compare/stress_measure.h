@@ -8,7 +8,8 @@ namespace tp::cli {
 constexpr float kHalfMax = 65504.0f; // largest finite fp16
 
 // Fills the figures, the bound, the checks and the verdict of `p` (which ran).
-void measureOutcome(StressOutcome& p, const StressOutcome& reference, const StressCaseResult& r, const Scene& scene);
+void measureOutcome(StressOutcome& p, const StressOutcome& reference, const StressCaseResult& r,
+                    const Scene& scene);
 
 // Pixels whose RGB bits differ (images of one size; every pixel if the sizes differ).
 uint64_t bitDifferentPixels(const ImageRGBA& a, const ImageRGBA& b);

@@ -12,15 +12,17 @@ using nlohmann::json;
 std::string quoted(const std::vector<std::string>& args) {
     std::string out;
     for (const std::string& a : args)
-        out += (out.empty() ? "" : " ") +
-               (!a.empty() && a.find_first_of(" \t\"'\\$`") == std::string::npos ? a : "'" + a + "'");
+        out +=
+            (out.empty() ? "" : " ") +
+            (!a.empty() && a.find_first_of(" \t\"'\\$`") == std::string::npos ? a : "'" + a + "'");
     return out;
 }
 
 json boundJson(const ErrorBound& b, float ev) {
     json terms = json::array();
     for (const BoundTerm& t : b.terms)
-        terms.push_back({{"name", t.name}, {"relative", t.relative}, {"absolute", t.absolute}, {"why", t.why}});
+        terms.push_back(
+            {{"name", t.name}, {"relative", t.relative}, {"absolute", t.absolute}, {"why", t.why}});
     json j = {{"bounded", b.bounded}, {"why", b.why}, {"terms", terms}};
     if (b.bounded) {
         j["relative"] = b.relative();
@@ -36,7 +38,11 @@ json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool r
     if (!reference) {
         json checks = json::array();
         for (const StressCheck& c : p.checks)
-            checks.push_back({{"name", c.name}, {"pass", c.pass}, {"measured", c.measured}, {"limit", c.limit}, {"why", c.why}});
+            checks.push_back({{"name", c.name},
+                              {"pass", c.pass},
+                              {"measured", c.measured},
+                              {"limit", c.limit},
+                              {"why", c.why}});
         j["verdict"] = p.pass ? "pass" : "fail";
         j["checks"] = checks;
     }
@@ -69,7 +75,8 @@ json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool r
 
 json caseJson(const StressCaseResult& r, const GpuContext& ctx) {
     json pipelines = json::array();
-    for (const StressOutcome& p : r.pipelines) pipelines.push_back(outcomeJson(p, ctx, r.exposureEv, false));
+    for (const StressOutcome& p : r.pipelines)
+        pipelines.push_back(outcomeJson(p, ctx, r.exposureEv, false));
     return {{"name", r.c->name},
             {"stresses", r.c->stresses},
             {"expectation", r.c->expectation},
@@ -79,15 +86,18 @@ json caseJson(const StressCaseResult& r, const GpuContext& ctx) {
             {"triangles", r.triangles},
             {"settings", settingsJson(r.settings)},
             {"exposure_ev", r.exposureEv},
-            {"difference_scale", {{"value", r.diffScale}, {"unit", "linear radiance, max over RGB"},
-                                  {"rule", "largest 99th percentile of |pipeline - reference| over the pipelines"}}},
+            {"difference_scale",
+             {{"value", r.diffScale},
+              {"unit", "linear radiance, max over RGB"},
+              {"rule", "largest 99th percentile of |pipeline - reference| over the pipelines"}}},
             {"reference", outcomeJson(r.reference, ctx, r.exposureEv, true)},
             {"pipelines", pipelines}};
 }
 
 } // namespace
 
-json stressJson(const StressOptions& o, const GpuContext& ctx, const std::vector<StressCaseResult>& results,
+json stressJson(const StressOptions& o, const GpuContext& ctx,
+                const std::vector<StressCaseResult>& results,
                 const std::vector<std::string>& validationMessages) {
     json cases = json::array(), failures = json::array();
     size_t passed = 0;
@@ -105,12 +115,16 @@ json stressJson(const StressOptions& o, const GpuContext& ctx, const std::vector
     j["command"] = quoted(o.commandLine);
     j["status"] = passed == results.size() ? "pass" : "fail";
     j["device"] = deviceJson(ctx);
-    // Deferred's per-pixel allowance depends on it (docs/stress.md, "Position from depth next to a light").
+    // Deferred's per-pixel allowance depends on it (docs/stress.md, "Position from depth next to a
+    // light").
     j["device"]["sub_pixel_precision_bits"] = ctx.properties.limits.subPixelPrecisionBits;
     j["tonemap_slopes"] = {{"relative_K", tonemapRelativeSlope()},
                            {"absolute_S0", tonemapAbsoluteSlope()},
                            {"rule", "tonemapped bound = K * relative + S0 * 2^ev * absolute"}};
-    j["summary"] = {{"cases", results.size()}, {"passed", passed}, {"failed", results.size() - passed}, {"failures", failures}};
+    j["summary"] = {{"cases", results.size()},
+                    {"passed", passed},
+                    {"failed", results.size() - passed},
+                    {"failures", failures}};
     j["validation_messages"] = validationMessages;
     j["cases"] = cases;
     j["files"] = {"stress.json", "stress.html"};

@@ -11,7 +11,8 @@
 
 namespace tp::cli {
 
-nlohmann::json stressJson(const StressOptions& o, const GpuContext& ctx, const std::vector<StressCaseResult>& results,
+nlohmann::json stressJson(const StressOptions& o, const GpuContext& ctx,
+                          const std::vector<StressCaseResult>& results,
                           const std::vector<std::string>& validationMessages);
 
 // PNGs named in the cases' "files" are read from outDir; fails naming an unreadable one.

@@ -14,10 +14,10 @@
 #include "compare/stress_measure.h"
 #include "compare/stress_report.h"
 #include "compare/svg_plot.h"
-#include "core/reference/reference_renderer.h"
 #include "core/image/difference.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
+#include "core/reference/reference_renderer.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
 
@@ -28,17 +28,19 @@ void check(const Status& s) {
     if (!s) throw UsageError(s.error());
 }
 
-StressOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name, const Scene& cpuScene,
-                        const RenderSettings& settings) {
+StressOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
+                        const Scene& cpuScene, const RenderSettings& settings) {
     StressOutcome p;
     p.name = name;
     RunOptions once;
     once.warmupFrames = 0;
     once.timedFrames = 1;
-    Result<RunResult> result =
-        tryRunRenderer(ctx, scene, **findRenderer(name), analyzeScene(cpuScene, settings.msaa), settings, once);
-    if (result) p.run = std::move(*result);
-    else p.error = result.error();
+    Result<RunResult> result = tryRunRenderer(
+        ctx, scene, **findRenderer(name), analyzeScene(cpuScene, settings.msaa), settings, once);
+    if (result)
+        p.run = std::move(*result);
+    else
+        p.error = result.error();
     return p;
 }
 
@@ -53,7 +55,8 @@ void writeDifferences(const std::string& dir, const std::string& rel, StressCase
     if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f; // a legend needs a non-zero end
     for (size_t i = 0; i < r.pipelines.size(); ++i) {
         StressOutcome& p = r.pipelines[i];
-        if (!p.run || diffs[i].pixelCount() == 0) continue; // not measured (e.g. the reference unusable)
+        if (!p.run || diffs[i].pixelCount() == 0)
+            continue; // not measured (e.g. the reference unusable)
         check(writeExr(dir + "/" + p.name + "_diff.exr", diffs[i], ExrPixelType::Float));
         check(writePng(dir + "/" + p.name + "_diff.png", heatMap(diffs[i], r.diffScale, 12)));
         p.files.push_back(rel + "/" + p.name + "_diff.exr");
@@ -69,12 +72,14 @@ struct InertTwin {
     Scene scene;
     std::unique_ptr<SceneGpu> gpu;
     InertTwin(GpuContext& ctx, const Scene& s, uint32_t inert) : scene(s) {
-        for (size_t i = scene.lights.size() - inert; i < scene.lights.size(); ++i) scene.lights[i].intensity = 0.0f;
+        for (size_t i = scene.lights.size() - inert; i < scene.lights.size(); ++i)
+            scene.lights[i].intensity = 0.0f;
         gpu = std::make_unique<SceneGpu>(ctx, scene);
     }
 };
 
-void checkInert(GpuContext& ctx, InertTwin* twin, StressOutcome& p, const RenderSettings& settings) {
+void checkInert(GpuContext& ctx, InertTwin* twin, StressOutcome& p,
+                const RenderSettings& settings) {
     if (!twin || !p.run) return;
     StressOutcome t = renderOne(ctx, *twin->gpu, p.name, twin->scene, settings);
     p.inertChecked = true;
@@ -90,11 +95,12 @@ void failUnrun(StressOutcome& p, const std::string& why) {
 std::string referenceFault(const StressOutcome& ref) {
     if (!ref.run) return "failed: " + ref.error;
     if (ref.nanPixels + ref.infPixels) return "has NaN/Inf pixels";
-    return "changes " + std::to_string(ref.inertChanged) + " pixels with lights that must contribute nothing";
+    return "changes " + std::to_string(ref.inertChanged) +
+           " pixels with lights that must contribute nothing";
 }
 
-StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std::vector<std::string>& names,
-                         const StressOptions& o) {
+StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c,
+                         const std::vector<std::string>& names, const StressOptions& o) {
     const std::string& out = o.out;
     auto start = std::chrono::steady_clock::now();
     StressCaseResult r;
@@ -112,7 +118,8 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std
     ensureDirectory(dir);
     SceneGpu gpuScene(ctx, scene);
     std::unique_ptr<InertTwin> twin;
-    if (c.inertLights) twin = std::make_unique<InertTwin>(ctx, scene, std::min(c.inertLights, uint32_t(r.lights)));
+    if (c.inertLights)
+        twin = std::make_unique<InertTwin>(ctx, scene, std::min(c.inertLights, uint32_t(r.lights)));
     r.reference = renderOne(ctx, gpuScene, kReferenceRenderer, scene, r.settings);
     if (r.reference.run) {
         r.exposureEv = autoExposureEv(r.reference.run->hdr);
@@ -144,7 +151,8 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c, const std
     }
     writeDifferences(dir, c.name, r, diffs);
     r.pass = refUsable;
-    for (const StressOutcome& p : r.pipelines) r.pass &= p.pass;
+    for (const StressOutcome& p : r.pipelines)
+        r.pass &= p.pass;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
@@ -154,8 +162,11 @@ void printCase(const StressCaseResult& r) {
     for (const StressOutcome& p : r.pipelines) {
         std::string failed;
         for (const StressCheck& k : p.checks)
-            if (!k.pass) failed += (failed.empty() ? "" : "; ") + k.name + " " + formatNumber(k.measured) + " (limit " + formatNumber(k.limit) + ")";
-        std::printf("  %-20s %s%s%s\n", p.name.c_str(), p.pass ? "pass" : "FAIL", failed.empty() ? "" : ": ", failed.c_str());
+            if (!k.pass)
+                failed += (failed.empty() ? "" : "; ") + k.name + " " + formatNumber(k.measured) +
+                          " (limit " + formatNumber(k.limit) + ")";
+        std::printf("  %-20s %s%s%s\n", p.name.c_str(), p.pass ? "pass" : "FAIL",
+                    failed.empty() ? "" : ": ", failed.c_str());
     }
 }
 
@@ -168,9 +179,11 @@ int runStress(const StressOptions& o) {
     std::vector<std::string> names = selectPipelines(o.pipelines);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     for (const stress::StressCase* c : *cases)
-        makeSettings({std::to_string(c->width) + "x" + std::to_string(c->height), int(c->msaa)}, *ctx);
+        makeSettings({std::to_string(c->width) + "x" + std::to_string(c->height), int(c->msaa)},
+                     *ctx);
     ensureDirectory(o.out);
-    for (const char* f : {"stress.json", "stress.html"}) std::filesystem::remove(o.out + "/" + f);
+    for (const char* f : {"stress.json", "stress.html"})
+        std::filesystem::remove(o.out + "/" + f);
     std::vector<StressCaseResult> results;
     for (const stress::StressCase* c : *cases) {
         results.push_back(runCase(*ctx, *c, names, o));
@@ -181,13 +194,17 @@ int runStress(const StressOptions& o) {
     Result<std::string> html = stressHtml(report, o.out);
     if (!html) throw UsageError(html.error());
     check(writeTextFile(o.out + "/stress.html", *html));
-    check(writeTextFile(o.out + "/stress.json", report.dump(2) + "\n")); // last: marks the run complete
+    check(writeTextFile(o.out + "/stress.json",
+                        report.dump(2) + "\n")); // last: marks the run complete
     size_t failed = 0;
-    for (const StressCaseResult& r : results) failed += !r.pass;
-    std::fprintf(stderr, "triptych: %zu of %zu cases passed; wrote %s/stress.html and stress.json\n",
+    for (const StressCaseResult& r : results)
+        failed += !r.pass;
+    std::fprintf(stderr,
+                 "triptych: %zu of %zu cases passed; wrote %s/stress.html and stress.json\n",
                  results.size() - failed, results.size(), o.out.c_str());
     if (!validation.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(), validation.front().c_str());
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(),
+                     validation.front().c_str());
         return 3;
     }
     return failed ? 6 : 0;

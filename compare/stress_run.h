@@ -1,26 +1,26 @@
 #pragma once
 // triptych stress: every selected case of the catalogue (core/scene/stress_scenes.h) through
 // the reference and every registered pipeline, measured against the case's expectations
-// (core/render/error_model.h and each pipeline's register.cpp), written as images, difference maps, stress.json and
-// stress.html (docs/stress.md).
+// (core/render/error_model.h and each pipeline's register.cpp), written as images, difference maps,
+// stress.json and stress.html (docs/stress.md).
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "compare/cli_common.h"
-#include "core/render/error_model.h"
 #include "core/image/metrics.h"
+#include "core/render/error_model.h"
 #include "core/render/frame_runner.h"
 #include "core/scene/stress_scenes.h"
 
 namespace tp::cli {
 
 struct StressOptions {
-    std::string cases;      // comma-separated names; empty = all
-    std::string pipelines;  // comma-separated; empty = every registered pipeline
+    std::string cases;     // comma-separated names; empty = all
+    std::string pipelines; // comma-separated; empty = every registered pipeline
     std::string out = "stress";
     DeviceOptions device;
-    RenderSettings knobs;   // the pipelines' knobs (each case sets resolution and MSAA)
+    RenderSettings knobs; // the pipelines' knobs (each case sets resolution and MSAA)
     std::vector<std::string> commandLine;
 };
 
@@ -38,13 +38,13 @@ struct StressOutcome {
     std::string name;
     std::string error; // empty when it ran
     std::optional<RunResult> run;
-    ErrorReport hdr, display;     // against the reference, whole image
+    ErrorReport hdr, display; // against the reference, whole image
     uint64_t nanPixels = 0, infPixels = 0;
     // Channels where the reference exceeds the fp16 maximum 65,504, and what this pipeline
     // wrote there: about 65,504 (saturated), +Inf, or a value within the bound.
     uint64_t overflowChannels = 0, saturated = 0, overflowInf = 0;
-    bool fp16Storage = false;     // its "hdr" target is RGBA16F (from the memory ledger)
-    uint64_t depthMismatch = 0;   // pixels whose depth differs from the reference's
+    bool fp16Storage = false;   // its "hdr" target is RGBA16F (from the memory ledger)
+    uint64_t depthMismatch = 0; // pixels whose depth differs from the reference's
     // Cases with inert lights (StressCase::inertLights): pixels whose colour bits differ from
     // the same renderer's image of the twin scene, where those lights have intensity 0.
     bool inertChecked = false;

@@ -9,7 +9,8 @@
 namespace tp::cli {
 namespace {
 
-const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                          "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
 std::string num(double v) {
     char buf[32];
@@ -17,15 +18,16 @@ std::string num(double v) {
     return buf;
 }
 
-std::string text(double x, double y, const std::string& s, const char* anchor = "start", int size = 12,
-                 const char* extra = "") {
-    return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + anchor + "\" font-size=\"" +
-           std::to_string(size) + "\"" + extra + ">" + escapeXml(s) + "</text>\n";
+std::string text(double x, double y, const std::string& s, const char* anchor = "start",
+                 int size = 12, const char* extra = "") {
+    return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + anchor +
+           "\" font-size=\"" + std::to_string(size) + "\"" + extra + ">" + escapeXml(s) +
+           "</text>\n";
 }
 
 std::string line(double x1, double y1, double x2, double y2, const char* stroke, double w = 1) {
-    return "<line x1=\"" + num(x1) + "\" y1=\"" + num(y1) + "\" x2=\"" + num(x2) + "\" y2=\"" + num(y2) +
-           "\" stroke=\"" + stroke + "\" stroke-width=\"" + num(w) + "\"/>\n";
+    return "<line x1=\"" + num(x1) + "\" y1=\"" + num(y1) + "\" x2=\"" + num(x2) + "\" y2=\"" +
+           num(y2) + "\" stroke=\"" + stroke + "\" stroke-width=\"" + num(w) + "\"/>\n";
 }
 
 // A log axis range covering [lo, hi] with a margin, in log10 units.
@@ -78,12 +80,23 @@ std::string escapeXml(const std::string& s) {
     out.reserve(s.size());
     for (char c : s) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&#39;"; break;
-        default: out += c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\'':
+            out += "&#39;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -93,8 +106,10 @@ std::string formatNumber(double v) {
     char buf[32];
     if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
     double a = std::abs(v);
-    if (a != 0.0 && (a < 1e-3 || a >= 1e6)) std::snprintf(buf, sizeof buf, "%.2e", v);
-    else std::snprintf(buf, sizeof buf, "%.4g", v);
+    if (a != 0.0 && (a < 1e-3 || a >= 1e6))
+        std::snprintf(buf, sizeof buf, "%.2e", v);
+    else
+        std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
 }
 
@@ -104,13 +119,14 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
     int rows = 0;
     for (const BarGroup& g : groups) {
         rows += 1 + int(g.bars.size());
-        for (const auto& b : g.bars) maxValue = std::max(maxValue, b.second);
+        for (const auto& b : g.bars)
+            maxValue = std::max(maxValue, b.second);
     }
     if (!(maxValue > 0)) maxValue = 1;
     const double barW = width - labelW - valueW;
     const double height = top + rows * rowH + 8;
-    std::string svg = "<svg width=\"" + std::to_string(width) +
-                      "\" height=\"" + num(height) + "\" font-family=\"sans-serif\">\n";
+    std::string svg = "<svg width=\"" + std::to_string(width) + "\" height=\"" + num(height) +
+                      "\" font-family=\"sans-serif\">\n";
     double y = top;
     for (size_t gi = 0; gi < groups.size(); ++gi) {
         const char* colour = kPalette[gi % std::size(kPalette)];
@@ -137,8 +153,10 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
     bool anyZero = false;
     for (const PlotPoint& p : points) {
         if (p.x > 0) xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x);
-        if (p.y > 0) ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
-        else anyZero = true;
+        if (p.y > 0)
+            ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
+        else
+            anyZero = true;
     }
     if (!(xhi > 0)) xlo = 1, xhi = 10;
     if (!(yhi > 0)) ylo = 1e-4, yhi = 1e-2;
@@ -146,13 +164,17 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
     auto [ya, yb] = logRange(ylo, yhi);
     if (anyZero) ya -= 0.12 * (yb - ya); // room on the bottom edge for exact (zero-error) points
     const double pw = width - left - right, ph = height - top - bottom;
-    auto px = [&](double v) { return left + pw * (std::log10(std::max(v, 1e-30)) - xa) / (xb - xa); };
-    auto py = [&](double v) { return v > 0 ? top + ph * (yb - std::log10(v)) / (yb - ya) : top + ph; };
+    auto px = [&](double v) {
+        return left + pw * (std::log10(std::max(v, 1e-30)) - xa) / (xb - xa);
+    };
+    auto py = [&](double v) {
+        return v > 0 ? top + ph * (yb - std::log10(v)) / (yb - ya) : top + ph;
+    };
 
-    std::string svg = "<svg width=\"" + std::to_string(width) +
-                      "\" height=\"" + std::to_string(height) + "\" font-family=\"sans-serif\">\n";
-    svg += "<rect x=\"" + num(left) + "\" y=\"" + num(top) + "\" width=\"" + num(pw) + "\" height=\"" + num(ph) +
-           "\" fill=\"#fafafa\" stroke=\"#888\"/>\n";
+    std::string svg = "<svg width=\"" + std::to_string(width) + "\" height=\"" +
+                      std::to_string(height) + "\" font-family=\"sans-serif\">\n";
+    svg += "<rect x=\"" + num(left) + "\" y=\"" + num(top) + "\" width=\"" + num(pw) +
+           "\" height=\"" + num(ph) + "\" fill=\"#fafafa\" stroke=\"#888\"/>\n";
     for (double t : logTicks(xa, xb)) {
         svg += line(px(t), top, px(t), top + ph, "#e2e2e2");
         svg += text(px(t), top + ph + 16, tickLabel(t), "middle", 11);
@@ -164,18 +186,21 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
     }
     if (anyZero) svg += text(left - 6, top + ph + 4, "0", "end", 11);
     svg += text(left + pw / 2, height - 18, xLabel + " (log)", "middle", 13);
-    svg += "<text transform=\"translate(18," + num(top + ph / 2) + ") rotate(-90)\" text-anchor=\"middle\" "
-           "font-size=\"13\">" + escapeXml(yLabel + " (log)") + "</text>\n";
+    svg += "<text transform=\"translate(18," + num(top + ph / 2) +
+           ") rotate(-90)\" text-anchor=\"middle\" "
+           "font-size=\"13\">" +
+           escapeXml(yLabel + " (log)") + "</text>\n";
     for (size_t si = 0; si < seriesNames.size(); ++si) {
         std::vector<std::pair<double, double>> xy;
         for (const PlotPoint& p : points)
             if (p.series == int(si)) xy.push_back({px(p.x), py(p.y)});
         std::sort(xy.begin(), xy.end());
         std::string path;
-        for (const auto& [x, y] : xy) path += (path.empty() ? "M" : " L") + num(x) + "," + num(y);
+        for (const auto& [x, y] : xy)
+            path += (path.empty() ? "M" : " L") + num(x) + "," + num(y);
         if (joinSeries && xy.size() > 1)
-            svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"" + kPalette[si % std::size(kPalette)] +
-                   "\" stroke-width=\"1.5\"/>\n";
+            svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"" +
+                   kPalette[si % std::size(kPalette)] + "\" stroke-width=\"1.5\"/>\n";
         double ly = top + 14 + 16 * double(si);
         svg += "<circle cx=\"" + num(left + 12) + "\" cy=\"" + num(ly - 4) + "\" r=\"5\" fill=\"" +
                kPalette[si % std::size(kPalette)] + "\"/>\n" + text(left + 22, ly, seriesNames[si]);
@@ -185,13 +210,15 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
         const char* colour = kPalette[(p.series >= 0 ? size_t(p.series) : i) % std::size(kPalette)];
         double x = px(p.x), y = py(p.y);
         if (p.ring)
-            svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"10\" fill=\"none\" stroke=\"#000\" "
+            svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) +
+                   "\" r=\"10\" fill=\"none\" stroke=\"#000\" "
                    "stroke-width=\"1.5\"/>\n";
         svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"6\" fill=\"" + colour +
                "\" stroke=\"#000\" stroke-width=\"0.8\"/>\n";
         // Labels go left of points in the right third so they stay inside the plot.
         bool leftSide = x > left + pw * 0.66;
-        if (!p.label.empty()) svg += text(leftSide ? x - 10 : x + 10, y - 8, p.label, leftSide ? "end" : "start", 12);
+        if (!p.label.empty())
+            svg += text(leftSide ? x - 10 : x + 10, y - 8, p.label, leftSide ? "end" : "start", 12);
     }
     return svg + "</svg>\n";
 }

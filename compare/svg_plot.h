@@ -7,13 +7,14 @@
 namespace tp::cli {
 
 struct BarGroup {
-    std::string title;                                 // e.g. the pipeline
-    std::vector<std::pair<std::string, double>> bars;  // label, value
+    std::string title;                                // e.g. the pipeline
+    std::vector<std::pair<std::string, double>> bars; // label, value
 };
 
 // One bar per value on a shared linear scale (0 .. largest value), grouped under titles;
 // each bar is labelled on the left and its value (with `unit`) on the right.
-std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& unit, int width = 900);
+std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& unit,
+                        int width = 900);
 
 struct PlotPoint {
     std::string label;   // drawn beside the point; may be empty
@@ -26,7 +27,8 @@ struct PlotPoint {
 // of one series share a colour, are joined in x order (joinSeries), and a legend names the series.
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
                              const std::string& yLabel, int width = 720, int height = 440,
-                             const std::vector<std::string>& seriesNames = {}, bool joinSeries = true);
+                             const std::vector<std::string>& seriesNames = {},
+                             bool joinSeries = true);
 
 // Escapes &, <, >, " and ' for HTML/SVG text and attributes.
 std::string escapeXml(const std::string& text);

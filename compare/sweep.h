@@ -12,7 +12,7 @@
 namespace tp::cli {
 
 struct SweepOptions {
-    SceneOptions scene;   // lightCount is ignored: `lights` lists the counts
+    SceneOptions scene; // lightCount is ignored: `lights` lists the counts
     DeviceOptions device;
     // Comma-separated lists.
     std::string lights = "16,64,256", res = "320x180", msaa = "1";
@@ -22,7 +22,7 @@ struct SweepOptions {
     std::string pipelines; // empty: every registered one
     std::string out = "sweep";
     int frames = 2, warmup = 1;
-    int referenceFrames = 1; // timed reference frames, no warm-up; 0: no reference, no errors
+    int referenceFrames = 1;   // timed reference frames, no warm-up; 0: no reference, no errors
     float flipDistance = 0.7f; // FLIP's viewing distance, metres (compare/flip_measure.h)
     // Under MSAA, the reference also with --reference-msaa center (as many frames), and the
     // error against it beside the error against the supersampled one.

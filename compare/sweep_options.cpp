@@ -8,42 +8,53 @@
 namespace tp::cli {
 
 void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
-    cmd.add_option("scene", o.scene.scene,
-                   "Scene: a glTF 2.0 file (.gltf/.glb) or builtin:NAME (courtyard, courtyard-small). "
-                   "Default: the built-in courtyard");
+    cmd.add_option(
+        "scene", o.scene.scene,
+        "Scene: a glTF 2.0 file (.gltf/.glb) or builtin:NAME (courtyard, courtyard-small). "
+        "Default: the built-in courtyard");
     cmd.add_option("--lights", o.lights,
-                   "Comma-separated counts of generated lights (added to the scene's own); one uploaded scene "
+                   "Comma-separated counts of generated lights (added to the scene's own); one "
+                   "uploaded scene "
                    "per count")
         ->capture_default_str();
-    cmd.add_option("--res", o.res, "Comma-separated output resolutions WIDTHxHEIGHT")->capture_default_str();
-    cmd.add_option("--msaa", o.msaa, "Comma-separated samples per pixel (1, 2, 4, 8 as the device supports)")
+    cmd.add_option("--res", o.res, "Comma-separated output resolutions WIDTHxHEIGHT")
+        ->capture_default_str();
+    cmd.add_option("--msaa", o.msaa,
+                   "Comma-separated samples per pixel (1, 2, 4, 8 as the device supports)")
         ->capture_default_str();
     addKnobOptions(cmd, o.knobs, true); // a list where the sweep may vary a knob, else one value
     cmd.add_option("--pipelines", o.pipelines,
-                   "Comma-separated pipelines to run (default: every registered one); the reference runs anyway "
+                   "Comma-separated pipelines to run (default: every registered one); the "
+                   "reference runs anyway "
                    "unless --reference-frames 0");
-    cmd.add_option("--frames", o.frames, "Timed frames per pipeline run (median/min/max are over these)")
+    cmd.add_option("--frames", o.frames,
+                   "Timed frames per pipeline run (median/min/max are over these)")
         ->capture_default_str();
-    cmd.add_option("--warmup", o.warmup, "Untimed warm-up frames before each pipeline run's timed ones")
+    cmd.add_option("--warmup", o.warmup,
+                   "Untimed warm-up frames before each pipeline run's timed ones")
         ->capture_default_str();
     cmd.add_option("--reference-frames", o.referenceFrames,
-                   "Timed frames of the reference, with no warm-up: it is rendered for its image, once per light "
+                   "Timed frames of the reference, with no warm-up: it is rendered for its image, "
+                   "once per light "
                    "count, resolution and MSAA. 0: no reference, no error figures")
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
     addFlipDistanceOption(cmd, o.flipDistance);
     cmd.add_flag("--no-center-reference{false}", o.centerReference,
-                 "Under MSAA, skip the second reference (--reference-msaa center, one more reference render per light "
+                 "Under MSAA, skip the second reference (--reference-msaa center, one more "
+                 "reference render per light "
                  "count, resolution and MSAA) and the *_center error columns");
     addSeedOption(cmd, o.scene.seed);
     cmd.add_option("--light-types", o.scene.lightTypes,
-                   "Generated light type mix: point, spot, directional with optional weights, e.g. point:3,spot:1")
+                   "Generated light type mix: point, spot, directional with optional weights, e.g. "
+                   "point:3,spot:1")
         ->capture_default_str();
     cmd.add_option("--light-radius", o.scene.lightRadius,
                    "MIN,MAX light range in scene units (default: 4%-12% of the scene's diagonal)");
     cmd.add_option("--light-intensity", o.scene.lightIntensity,
                    "MIN,MAX intensity in candela (default: derived from the radius)");
-    cmd.add_flag("--no-scene-lights", o.scene.dropSceneLights, "Ignore lights defined in the glTF file");
+    cmd.add_flag("--no-scene-lights", o.scene.dropSceneLights,
+                 "Ignore lights defined in the glTF file");
     addStrictFlag(cmd, o.scene.strict);
     addCameraOption(cmd, o.scene.cameraFile);
     cmd.add_option("--out", o.out,

@@ -18,16 +18,16 @@ struct SweepRow {
     std::string pipeline, status = "ok", error;
     int lights = 0;
     RenderSettings s;
-    TimingStats frame;             // the whole frame; zero when failed
-    uint64_t bytes = 0;            // the pipeline's ledger total (scene data not included)
+    TimingStats frame;  // the whole frame; zero when failed
+    uint64_t bytes = 0; // the pipeline's ledger total (scene data not included)
     double bytesPerPixel = 0, dropped = 0, seconds = 0;
-    bool measured = false;         // error against the reference known
-    ErrorReport hdr, display;      // against the reference: linear, and tonemapped
-    FlipMeasure flip;              // FLIP (tonemapped) and HDR-FLIP against the reference
-    bool measuredCenter = false;   // under MSAA: error against the centre reference known
+    bool measured = false;                // error against the reference known
+    ErrorReport hdr, display;             // against the reference: linear, and tonemapped
+    FlipMeasure flip;                     // FLIP (tonemapped) and HDR-FLIP against the reference
+    bool measuredCenter = false;          // under MSAA: error against the centre reference known
     ErrorReport hdrCenter, displayCenter; // against --reference-msaa center
     float exposureEv = 0, hdrPsnrPeak = 1;
-    nlohmann::json run;            // runJson(): every pass, the ledger, counters, left-out
+    nlohmann::json run; // runJson(): every pass, the ledger, counters, left-out
     std::string lightsHash;
 };
 

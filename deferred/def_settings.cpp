@@ -4,9 +4,10 @@ namespace tp::def {
 namespace {
 
 const ChoiceKnob<GBuffer>& gbufferKnob() {
-    static const ChoiceKnob<GBuffer> k{"gbuffer",
-                                       {{GBuffer::Compact, "compact"}, {GBuffer::Wide, "wide"}},
-                                       "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"};
+    static const ChoiceKnob<GBuffer> k{
+        "gbuffer",
+        {{GBuffer::Compact, "compact"}, {GBuffer::Wide, "wide"}},
+        "Deferred G-buffer layout: compact (8/16-bit) or wide (fp32)"};
     return k;
 }
 
@@ -19,26 +20,23 @@ const ChoiceKnob<Lighting>& lightingKnob() {
 }
 
 const ChoiceKnob<Hdr>& hdrKnob() {
-    static const ChoiceKnob<Hdr> k{"hdr",
-                                   {{Hdr::Fp32, "fp32"}, {Hdr::Fp16, "fp16"}},
-                                   "Deferred hdr (and hdr_msaa) target: fp32 (RGBA32F, the light sum exact to "
-                                   "readback) or fp16 (RGBA16F as Forward+'s: half the bytes, one fp16 rounding per "
-                                   "store)"};
+    static const ChoiceKnob<Hdr> k{
+        "hdr",
+        {{Hdr::Fp32, "fp32"}, {Hdr::Fp16, "fp16"}},
+        "Deferred hdr (and hdr_msaa) target: fp32 (RGBA32F, the light sum exact to "
+        "readback) or fp16 (RGBA16F as Forward+'s: half the bytes, one fp16 rounding per "
+        "store)"};
     return k;
 }
 
 } // namespace
 
 KnobSchema knobs() {
-    return {la::tileSizeKnob().knob(),
-            la::lightCullKnob().knob(),
-            la::lightBinKnob().knob(),
-            la::lightAssignKnob().knob(),
-            la::slicesKnob().knob(),
-            gbufferKnob().knob(),
+    return {la::tileSizeKnob().knob(), la::lightCullKnob().knob(),
+            la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
+            la::slicesKnob().knob(),   gbufferKnob().knob(),
             msaaShadingKnob().knob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
-            lightingKnob().knob(),
-            hdrKnob().knob()};
+            lightingKnob().knob(),     hdrKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {

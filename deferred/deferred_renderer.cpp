@@ -8,9 +8,9 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
 #include "core/passes/blended_bounds.h"
-#include "core/passes/debug_views.h"
 #include "core/passes/blended_forward.h"
 #include "core/passes/blended_lists.h"
+#include "core/passes/debug_views.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/def_settings.h"
@@ -25,9 +25,10 @@ class DeferredRenderer final : public Renderer {
     explicit DeferredRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
           def_(def::readSettings(info.settings)), gbuffer_(info.ctx, info.scene),
-          lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(), def_.assign.slicesOrZero(),
-                    la::binsOnGpu(info.ctx, def_.assign.bin)),
-          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene), blendBounds_(info.ctx, info.scene) {
+          lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
+                    def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin)),
+          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene),
+          blendBounds_(info.ctx, info.scene) {
         // Values were checked against the schema (deferred/register.cpp) before this runs.
         useVolumes_ = def_.lighting == def::Lighting::Volumes;
         slices_ = def_.assign.slicesOrZero();
@@ -40,44 +41,55 @@ class DeferredRenderer final : public Renderer {
         // the tile knob's values (8, 16, 32) are all multiples of 8.
         t_.grid = la::makeTileGrid(graph.width(), graph.height(), def_.assign.tile);
         const uint32_t tiles = t_.grid.count();
-        // --hdr: fp32 keeps the light sum exact to readback; fp16 halves the bytes (Forward+'s format).
-        t_.hdrFormat = def_.hdr == def::Hdr::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
-        t_.hdr = graph.createImage("hdr", {t_.hdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT, "linear radiance (resolved)"});
-        t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                               t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
+        // --hdr: fp32 keeps the light sum exact to readback; fp16 halves the bytes (Forward+'s
+        // format).
+        t_.hdrFormat = def_.hdr == def::Hdr::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
+                                                  : VK_FORMAT_R32G32B32A32_SFLOAT;
+        t_.hdr = graph.createImage(
+            "hdr", {t_.hdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT, "linear radiance (resolved)"});
+        t_.depth = graph.createImage("depth",
+                                     {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                      t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
         blended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
         // The tiled pass writes per-sample radiance as a multisample storage image: refuse a
         // device without them in one line rather than meet a validation error.
         if (blended_ && t_.msaa() && !ctx_.caps.storageImageMultisample)
-            throw RendererError("deferred: blended surfaces under --msaa " + std::to_string(settings_.msaa) +
+            throw RendererError("deferred: blended surfaces under --msaa " +
+                                std::to_string(settings_.msaa) +
                                 " need multisample storage images, which " + ctx_.info.name +
                                 " lacks (shaderStorageImageMultisample); use --msaa 1");
         if (blended_ && t_.msaa())
-            t_.hdrMsaa = graph.createImage("hdr_msaa", {t_.hdrFormat, 0, 0,
-                                                        VkSampleCountFlagBits(settings_.msaa),
-                                                        "per-sample radiance (blended under MSAA)"});
+            t_.hdrMsaa = graph.createImage(
+                "hdr_msaa", {t_.hdrFormat, 0, 0, VkSampleCountFlagBits(settings_.msaa),
+                             "per-sample radiance (blended under MSAA)"});
         // Volumes lighting of an opaque-only scene runs no tile pass at all.
         const bool tilePass = !useVolumes_ || blended_;
         if (tilePass)
-            t_.tileStats = graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
-                                              "per tile: lights, transparent lights, edge pixels, overflow");
+            t_.tileStats =
+                graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
+                                   "per tile: lights, transparent lights, edge pixels, overflow");
         if (blended_) planBlendedLists(graph);
         if (settings_.debug && !useVolumes_)
-            t_.debug = graph.createImage("debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
-                                                           VK_SAMPLE_COUNT_1_BIT,
-                                                           "debug: edge mask, roughness, metallic"});
+            t_.debug = graph.createImage(
+                "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                  "debug: edge mask, roughness, metallic"});
         gbuffer_.plan(graph, t_);
         // Blended depth bounds: the fragments of the blended pass at the rate it shades them
-        // (per pixel or per sample under MSAA), before the transparent lists are culled against them.
+        // (per pixel or per sample under MSAA), before the transparent lists are culled against
+        // them.
         ResourceHandle bounds;
         if (blended_)
-            bounds = blendBounds_.plan(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples,
-                                               t_.msaa() && !t_.blendedPerPixel(), t_.blendedPerPixel()});
-        if (tilePass) lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes_, transparentMasks_, bounds);
+            bounds = blendBounds_.plan(graph,
+                                       {t_.grid, t_.gbufferDepth, t_.layout.samples,
+                                        t_.msaa() && !t_.blendedPerPixel(), t_.blendedPerPixel()});
+        if (tilePass)
+            lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes_,
+                           transparentMasks_, bounds);
         if (useVolumes_) volumes_.plan(graph, t_);
         if (blended_)
-            transparent_.plan(graph, {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr, t_.hdrMsaa, t_.gbufferDepth,
-                                      t_.transparentLists, bounds, t_.hdrFormat},
+            transparent_.plan(graph,
+                              {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr, t_.hdrMsaa,
+                               t_.gbufferDepth, t_.transparentLists, bounds, t_.hdrFormat},
                               slices_, transparentMasks_);
         exportOutputs(graph, tilePass, bounds);
     }
@@ -91,31 +103,36 @@ class DeferredRenderer final : public Renderer {
         // Binned: bitmasks over each tile's candidates instead of light indices.
         // Binned: the lights are binned once (tiled lighting's candidates) and the lists
         // sized from the same bound.
-        const std::vector<uint32_t>* bound = binned() ? &lighting_.bound(t_.grid, graph.owner()) : nullptr;
-        TransparentListPlan lists = planTransparentLists(t_.grid, scene_, ctx_.caps.maxStorageBufferRange,
-                                                         ctx_.info.name, binned(), bound);
-        t_.transparentLists = graph.createBuffer("transparent_lists", lists.bytes(),
-                                                 lists.masks ? "per tile: list header, then a bitmask over its "
-                                                               "binned candidates"
-                                                             : "per tile: list header, then packed transparent "
-                                                               "light indices");
+        const std::vector<uint32_t>* bound =
+            binned() ? &lighting_.bound(t_.grid, graph.owner()) : nullptr;
+        TransparentListPlan lists = planTransparentLists(
+            t_.grid, scene_, ctx_.caps.maxStorageBufferRange, ctx_.info.name, binned(), bound);
+        t_.transparentLists =
+            graph.createBuffer("transparent_lists", lists.bytes(),
+                               lists.masks ? "per tile: list header, then a bitmask over its "
+                                             "binned candidates"
+                                           : "per tile: list header, then packed transparent "
+                                             "light indices");
         transparentMasksOverCandidates_ = lists.masks;
         t_.listOffsets = std::move(lists.offsets);
         transparentSlots_ = lists.slots;
         // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
         // defClusterRowsBase); volumes lighting keeps the plain lists.
         if (slices_ > 0 && !useVolumes_) {
-            const uint64_t words = 2ull * tiles + uint64_t(slices_) * (lists.masks ? lists.slots
-                                                                                   : lists.slots / 32 + tiles);
+            const uint64_t words =
+                2ull * tiles +
+                uint64_t(slices_) * (lists.masks ? lists.slots : lists.slots / 32 + tiles);
             if (words * 4 > ctx_.caps.maxStorageBufferRange)
-                throw RendererError("deferred: the transparent slice rows need " + std::to_string(words * 4) +
+                throw RendererError("deferred: the transparent slice rows need " +
+                                    std::to_string(words * 4) +
                                     " bytes, more than maxStorageBufferRange of " + ctx_.info.name +
                                     "; use fewer --slices, a larger --tile or fewer lights");
-            transparentMasks_ = graph.createBuffer("transparent_cluster_masks", words * 4,
-                                                   lists.masks ? "per tile: slicing, then per slice a bitmask "
-                                                                 "row over its binned candidates"
-                                                               : "per tile: slicing, then per slice a bitmask "
-                                                                 "row over its transparent list");
+            transparentMasks_ =
+                graph.createBuffer("transparent_cluster_masks", words * 4,
+                                   lists.masks ? "per tile: slicing, then per slice a bitmask "
+                                                 "row over its binned candidates"
+                                               : "per tile: slicing, then per slice a bitmask "
+                                                 "row over its transparent list");
         }
     }
 
@@ -124,11 +141,14 @@ class DeferredRenderer final : public Renderer {
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
         if (blended_) graph.exportResource("blended_bounds", bounds);
-        if (blended_) graph.exportResource("transparent_lists", t_.transparentLists); // tests: their order
-        if (t_.edgeMask.valid()) graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
+        if (blended_)
+            graph.exportResource("transparent_lists", t_.transparentLists); // tests: their order
+        if (t_.edgeMask.valid())
+            graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
         if (settings_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
-            if (!t_.msaa()) graph.exportResource("gbuffer_base", t_.gbuffer[0]); // readback: 1x only
+            if (!t_.msaa())
+                graph.exportResource("gbuffer_base", t_.gbuffer[0]); // readback: 1x only
         }
     }
 
@@ -137,7 +157,9 @@ class DeferredRenderer final : public Renderer {
         if (blended_) blendBounds_.prepare(graph);
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes_) volumes_.prepare(graph);
-        if (blended_) transparent_.prepare(graph, lighting_.candidatesBuffer(), transparentMasksOverCandidates_);
+        if (blended_)
+            transparent_.prepare(graph, lighting_.candidatesBuffer(),
+                                 transparentMasksOverCandidates_);
     }
 
     void collectStats(FrameGraph& graph) override {
@@ -149,7 +171,8 @@ class DeferredRenderer final : public Renderer {
         if (t_.edgeMask.valid()) {
             ImageRGBA mask = readbackColor(ctx_, graph.image(t_.edgeMask));
             volumeEdges_ = 0;
-            for (size_t i = 0; i < mask.pixelCount(); ++i) volumeEdges_ += mask.rgba[i * 4] > 0.5f ? 1 : 0;
+            for (size_t i = 0; i < mask.pixelCount(); ++i)
+                volumeEdges_ += mask.rgba[i * 4] > 0.5f ? 1 : 0;
         }
     }
 
@@ -162,11 +185,12 @@ class DeferredRenderer final : public Renderer {
     // The G-buffer as tiled lighting's surface source: its colour targets at the bindings
     // gbuffer_read.glsl declares, in layout.colors order.
     SurfaceSource surfaceSource() const {
-        const uint32_t bindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
-                                     TP_DEF_BINDING_EMISSIVE};
+        const uint32_t bindings[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
+                                     TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
         SurfaceSource s;
         s.shaderFamily = "deferred_tiled";
-        for (size_t i = 0; i < t_.gbuffer.size(); ++i) s.attributes.push_back({t_.gbuffer[i], Use::Sampled, bindings[i]});
+        for (size_t i = 0; i < t_.gbuffer.size(); ++i)
+            s.attributes.push_back({t_.gbuffer[i], Use::Sampled, bindings[i]});
         s.depth = t_.gbufferDepth;
         s.samples = t_.layout.samples;
         s.emissive = t_.layout.emissive;
@@ -176,7 +200,9 @@ class DeferredRenderer final : public Renderer {
     }
 
     TiledLightingTargets lightingTargets() const {
-        return {t_.grid, t_.hdr, t_.hdrMsaa, t_.hdrFormat, t_.tileStats, t_.transparentLists, t_.debug, t_.listOffsets};
+        return {t_.grid,      t_.hdr,        t_.hdrMsaa,
+                t_.hdrFormat, t_.tileStats,  t_.transparentLists,
+                t_.debug,     t_.listOffsets};
     }
 
     GpuContext& ctx_;
@@ -192,12 +218,14 @@ class DeferredRenderer final : public Renderer {
     TiledLighting lighting_;
     VolumeLighting volumes_;
     BlendedForwardPass transparent_;
-    la::BlendedBounds blendBounds_; // blended scenes: where each tile's blended fragments are
+    la::BlendedBounds blendBounds_;   // blended scenes: where each tile's blended fragments are
     std::vector<uint32_t> tileStats_; // uvec4 per tile
     uint64_t transparentSlots_ = 0;
-    bool transparentMasksOverCandidates_ = false; // binned: the lists are bitmasks over the candidates
-    uint32_t slices_ = 0;               // --light-assign clustered: depth slices; 0 when tiled
-    ResourceHandle transparentMasks_;   // clustered blended scenes: slice rows over the transparent lists
+    bool transparentMasksOverCandidates_ =
+        false;            // binned: the lists are bitmasks over the candidates
+    uint32_t slices_ = 0; // --light-assign clustered: depth slices; 0 when tiled
+    ResourceHandle
+        transparentMasks_; // clustered blended scenes: slice rows over the transparent lists
 };
 
 // Transparent lights per tile, kept and dropped: the tile statistics hold what each tile's
@@ -208,8 +236,8 @@ struct TransparentCounts {
 };
 
 // masks: the runs are bitmasks over every candidate, so every light found is kept.
-TransparentCounts transparentCounts(const std::vector<uint32_t>& stats, const std::vector<uint32_t>& offsets,
-                                    bool masks) {
+TransparentCounts transparentCounts(const std::vector<uint32_t>& stats,
+                                    const std::vector<uint32_t>& offsets, bool masks) {
     TransparentCounts c;
     const size_t tiles = std::min(stats.size() / 4, offsets.empty() ? 0 : offsets.size() - 1);
     c.kept.resize(tiles);
@@ -225,7 +253,8 @@ TransparentCounts transparentCounts(const std::vector<uint32_t>& stats, const st
 // Column `c` of the per-tile statistics (uvec4 per tile).
 std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c) {
     std::vector<uint32_t> out(stats.size() / 4);
-    for (size_t t = 0; t < out.size(); ++t) out[t] = stats[t * 4 + c];
+    for (size_t t = 0; t < out.size(); ++t)
+        out[t] = stats[t * 4 + c];
     return out;
 }
 
@@ -233,20 +262,27 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     std::vector<DebugImage> out;
     uint32_t w = graph.width(), h = graph.height();
     // RGBA8_SRGB reads back as the raw encoded bytes / 255: already display sRGB.
-    if (!t_.msaa()) out.push_back({"gbuffer_base_color", readbackColor(ctx_, graph.image(t_.gbuffer[0])), true});
+    if (!t_.msaa())
+        out.push_back(
+            {"gbuffer_base_color", readbackColor(ctx_, graph.image(t_.gbuffer[0])), true});
     if (useVolumes_) { // no tile pass shaded: the edge mask is the base pass's (MSAA only)
-        if (t_.edgeMask.valid()) out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
+        if (t_.edgeMask.valid())
+            out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
         return out;
     }
-    out.push_back({"lights_per_tile", passes::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
+    out.push_back({"lights_per_tile",
+                   passes::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
     if (blended_) {
-        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
-        out.push_back({"lights_per_tile_transparent", passes::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
+        TransparentCounts c =
+            transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
+        out.push_back({"lights_per_tile_transparent",
+                       passes::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
     }
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
     for (size_t i = 0; i < dbg.pixelCount(); ++i) {
-        for (int c = 0; c < 3; ++c) edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
+        for (int c = 0; c < 3; ++c)
+            edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
         rm.rgba[i * 4] = dbg.rgba[i * 4 + 1];
         rm.rgba[i * 4 + 1] = dbg.rgba[i * 4 + 2];
         edge.rgba[i * 4 + 3] = rm.rgba[i * 4 + 3] = 1.0f;
@@ -261,7 +297,8 @@ RendererStats DeferredRenderer::stats() const {
     const uint32_t samples = t_.layout.samples;
     s.counters.push_back({"gbuffer_bytes_per_sample", double(t_.layout.bytesPerSample())});
     s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});
-    double lights = 0, maxLights = 0, edges = 0, overflow = 0, tiles = double(tileStats_.size() / 4);
+    double lights = 0, maxLights = 0, edges = 0, overflow = 0,
+           tiles = double(tileStats_.size() / 4);
     for (size_t i = 0; i + 3 < tileStats_.size(); i += 4) {
         lights += tileStats_[i];
         maxLights = std::max(maxLights, double(tileStats_[i]));
@@ -272,11 +309,13 @@ RendererStats DeferredRenderer::stats() const {
     if (useVolumes_) {
         edges = double(volumeEdges_);
         s.counters.push_back({"light_volume_draws", double(scene_.lightCount())});
-        s.leftOut.push_back({"lights per tile (statistics, heat map)", "volumes lighting has no opaque tiles"});
+        s.leftOut.push_back(
+            {"lights per tile (statistics, heat map)", "volumes lighting has no opaque tiles"});
     } else {
         s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
         s.counters.push_back({"lights_per_tile_max", maxLights});
-        s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
+        s.counters.push_back(
+            {"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
     }
     if (t_.tileStats.valid()) {
         // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).
@@ -286,38 +325,48 @@ RendererStats DeferredRenderer::stats() const {
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)
-        s.leftOut.push_back({"exact MSAA sample positions",
-                             "device reports non-standard sample locations: edge samples use the standard ones"});
-    if (!t_.layout.emissive) s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
+        s.leftOut.push_back(
+            {"exact MSAA sample positions",
+             "device reports non-standard sample locations: edge samples use the standard ones"});
+    if (!t_.layout.emissive)
+        s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
     if (!blended_)
-        s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds", "no blended material"});
+        s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds",
+                             "no blended material"});
     const bool clustered = def_.assign.clustered();
     if (!clustered)
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
     else if (useVolumes_)
-        s.leftOut.push_back({"depth slices and their bitmasks",
-                             "volumes lighting draws each light's volume; --light-assign applies to tiled lighting"});
+        s.leftOut.push_back(
+            {"depth slices and their bitmasks", "volumes lighting draws each light's volume; "
+                                                "--light-assign applies to tiled lighting"});
     else if (!blended_)
         s.leftOut.push_back({"slice rows over the transparent lists", "no blended material"});
     if (blended_) {
-        TransparentCounts c = transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
+        TransparentCounts c =
+            transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
         double kept = 0, dropped = 0;
         for (size_t t = 0; t < c.kept.size(); ++t) {
             kept += c.kept[t];
             dropped += c.dropped[t];
         }
         double most = 0;
-        for (uint32_t k : c.kept) most = std::max(most, double(k));
-        s.counters.push_back({"transparent_lights_per_tile_mean", c.kept.empty() ? 0.0 : kept / double(c.kept.size())});
+        for (uint32_t k : c.kept)
+            most = std::max(most, double(k));
+        s.counters.push_back({"transparent_lights_per_tile_mean",
+                              c.kept.empty() ? 0.0 : kept / double(c.kept.size())});
         s.counters.push_back({"transparent_lights_per_tile_max", most});
         // Index slots, or (binned) bitmask words over the candidates.
-        s.counters.push_back({transparentMasksOverCandidates_ ? "transparent_list_mask_words" : "transparent_list_slots",
+        s.counters.push_back({transparentMasksOverCandidates_ ? "transparent_list_mask_words"
+                                                              : "transparent_list_slots",
                               double(transparentSlots_)});
         s.counters.push_back({"transparent_lights_stored", kept});
-        s.counters.push_back({"transparent_lights_dropped", dropped}); // 0: the bound is conservative
+        s.counters.push_back(
+            {"transparent_lights_dropped", dropped}); // 0: the bound is conservative
     }
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
-    if (samples > 1) s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
+    if (samples > 1)
+        s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
     return s;
 }
 

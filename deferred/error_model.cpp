@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/passes/tiled_lighting.h"
 #include "core/render/msaa_knob.h"
 #include "deferred/def_settings.h"
 #include "deferred/deferred_shared.h"
 #include "deferred/position_allowance.h"
-#include "core/passes/tiled_lighting.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 
@@ -40,16 +40,19 @@ float inexactRoughness(const Scene& scene) {
 void addCompactGBuffer(ErrorBound& b, const ErrorModelInput& in) {
     const float d = darkestBase(in.scene);
     const double srgb = gpu::srgbEncode(d);
-    b.terms.push_back({"8-bit sRGB base colour", 2.4 * (0.5 / 255.0) / (srgb + 0.055), 0,
-                       "2.4 * (0.5/255) / (s + 0.055) at the darkest base channel " + std::to_string(d)});
+    b.terms.push_back(
+        {"8-bit sRGB base colour", 2.4 * (0.5 / 255.0) / (srgb + 0.055), 0,
+         "2.4 * (0.5/255) / (s + 0.055) at the darkest base channel " + std::to_string(d)});
     const float r = inexactRoughness(in.scene);
     if (r > 0.0f)
         b.terms.push_back({"8-bit roughness", 6.0 * (0.5 / 255.0) / r, 0,
-                           "6 * (0.5/255) / r at r = " + std::to_string(r) + " (|dlnD/dlnr| <= 4, |dlnVis/dlnr| <= 2)"});
+                           "6 * (0.5/255) / r at r = " + std::to_string(r) +
+                               " (|dlnD/dlnr| <= 4, |dlnVis/dlnr| <= 2)"});
     if (in.stressCase.freeNormals)
-        b.terms.push_back({"octahedral normals", 6.5e-5 * 10.0, 0,
-                           "RG16_SNORM octahedral normals move <= 6.5e-5 rad; times |tan| <= 10 of the light "
-                           "angle where n.l >= 0.1"});
+        b.terms.push_back(
+            {"octahedral normals", 6.5e-5 * 10.0, 0,
+             "RG16_SNORM octahedral normals move <= 6.5e-5 rad; times |tan| <= 10 of the light "
+             "angle where n.l >= 0.1"});
 }
 
 bool hasBlended(const Scene& scene) {
@@ -75,7 +78,8 @@ void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
         what = "base pass, one blend per light volume";
     } else {
         uint32_t batch = tiledLightBatch(s.assign.tile, s.sampling.samples);
-        if (s.assign.clustered()) batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
+        if (s.assign.clustered())
+            batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
         stores = int(std::max(1u, (lights + batch - 1) / batch));
         what = "one per lighting batch of " + std::to_string(batch) + " lights";
     }
@@ -89,15 +93,18 @@ void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
 } // namespace
 
 void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
-    b.terms.push_back({"position from depth", 2.5e-4, 2.5e-8,
-                       "positions reconstructed from D32 depth with the inverse view-projection, fp32 sums in "
-                       "tile order: docs/deferred.md's per-pixel bound (2.5e-4 of |r| + 1e-4)"});
+    b.terms.push_back(
+        {"position from depth", 2.5e-4, 2.5e-8,
+         "positions reconstructed from D32 depth with the inverse view-projection, fp32 sums in "
+         "tile order: docs/deferred.md's per-pixel bound (2.5e-4 of |r| + 1e-4)"});
     if (in.referenceDepth)
-        b.perPixel = {"position from depth next to lights",
-                      "the reconstructed point is up to sqrt(2) * 2^-(" + std::to_string(in.subPixelBits) +
-                          " + 1) pixel widths off the shaded surface (vertex snapping before the depth plane); "
-                          "per pixel, that times a bound on the gradient of every light term reaching it",
-                      positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits)};
+        b.perPixel = {
+            "position from depth next to lights",
+            "the reconstructed point is up to sqrt(2) * 2^-(" + std::to_string(in.subPixelBits) +
+                " + 1) pixel widths off the shaded surface (vertex snapping before the depth "
+                "plane); "
+                "per pixel, that times a bound on the gradient of every light term reaching it",
+            positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits)};
     if (def::readSettings(in.settings).gbuffer == def::GBuffer::Compact) addCompactGBuffer(b, in);
     // Under --msaa-shading pixel, non-edge pixels lit once at the centre (the Lauritzen path)
     // and blended surfaces shaded once at the centre (the hybrid forward pass, as Forward+'s

@@ -19,24 +19,27 @@ bool canRenderAndSample(GpuContext& ctx, VkFormat format, uint32_t samples) {
 
 uint32_t GBufferLayout::bytesPerSample() const {
     uint32_t bytes = formatBytesPerTexel(depth);
-    for (const GBufferTarget& t : colors) bytes += formatBytesPerTexel(t.format);
+    for (const GBufferTarget& t : colors)
+        bytes += formatBytesPerTexel(t.format);
     return bytes;
 }
 
-GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features, def::GBuffer gbuffer,
-                                uint32_t samples) {
+GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features,
+                                def::GBuffer gbuffer, uint32_t samples) {
     GBufferLayout g;
     g.wide = gbuffer == def::GBuffer::Wide;
     g.emissive = features.emissive;
     g.samples = samples;
     if (g.wide) {
-        g.colors = {{"gbuffer_base", VK_FORMAT_R32G32B32A32_SFLOAT, "base colour rgb, occlusion a (fp32)"},
-                    {"gbuffer_normal", VK_FORMAT_R32G32B32A32_SFLOAT, "normal xyz (fp32)"},
-                    {"gbuffer_rough_metal", VK_FORMAT_R32G32_SFLOAT, "roughness, metallic (fp32)"}};
+        g.colors = {
+            {"gbuffer_base", VK_FORMAT_R32G32B32A32_SFLOAT, "base colour rgb, occlusion a (fp32)"},
+            {"gbuffer_normal", VK_FORMAT_R32G32B32A32_SFLOAT, "normal xyz (fp32)"},
+            {"gbuffer_rough_metal", VK_FORMAT_R32G32_SFLOAT, "roughness, metallic (fp32)"}};
     } else {
-        g.colors = {{"gbuffer_base", VK_FORMAT_R8G8B8A8_SRGB, "base colour rgb (sRGB), occlusion a"},
-                    {"gbuffer_normal", VK_FORMAT_R16G16_SNORM, "octahedral normal"},
-                    {"gbuffer_rough_metal", VK_FORMAT_R8G8_UNORM, "roughness, metallic"}};
+        g.colors = {
+            {"gbuffer_base", VK_FORMAT_R8G8B8A8_SRGB, "base colour rgb (sRGB), occlusion a"},
+            {"gbuffer_normal", VK_FORMAT_R16G16_SNORM, "octahedral normal"},
+            {"gbuffer_rough_metal", VK_FORMAT_R8G8_UNORM, "roughness, metallic"}};
     }
     if (g.emissive) {
         VkFormat f = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -13,8 +13,8 @@
 
 #include <vulkan/vulkan.h>
 
-#include "deferred/def_settings.h"
 #include "core/scene/scene.h"
+#include "deferred/def_settings.h"
 
 namespace tp {
 
@@ -36,7 +36,7 @@ struct GBufferLayout {
     uint32_t bytesPerSample() const;
 };
 
-GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features, def::GBuffer gbuffer,
-                                uint32_t samples);
+GBufferLayout planGBufferLayout(GpuContext& ctx, const SceneFeatures& features,
+                                def::GBuffer gbuffer, uint32_t samples);
 
 } // namespace tp

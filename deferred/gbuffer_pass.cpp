@@ -20,10 +20,11 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t) {
     for (const GBufferTarget& c : t.layout.colors)
         t.gbuffer.push_back(graph.createImage(c.name, {c.format, 0, 0, samples, c.purpose}));
     std::vector<PassUse> uses;
-    for (ResourceHandle h : t.gbuffer) uses.push_back({h, Use::ColorAttachment});
+    for (ResourceHandle h : t.gbuffer)
+        uses.push_back({h, Use::ColorAttachment});
     if (t.msaa()) {
-        t.gbufferDepth = graph.createImage("gbuffer_depth_msaa", {t.layout.depth, 0, 0, samples,
-                                                                  "per-sample depth (reverse-Z)"});
+        t.gbufferDepth = graph.createImage(
+            "gbuffer_depth_msaa", {t.layout.depth, 0, 0, samples, "per-sample depth (reverse-Z)"});
         uses.push_back({t.gbufferDepth, Use::DepthAttachment});
         uses.push_back({t.depth, Use::DepthResolve});
     } else {
@@ -40,7 +41,8 @@ void GBufferPass::prepare() {
     d.fragmentShader = std::string("deferred_gbuffer") + (perSample ? "_sample" : "") +
                        (t_->layout.emissive ? "_emissive_frag" : "_frag");
     d.sampleShading = perSample;
-    for (const GBufferTarget& c : t_->layout.colors) d.colorFormats.push_back(c.format);
+    for (const GBufferTarget& c : t_->layout.colors)
+        d.colorFormats.push_back(c.format);
     d.depthFormat = t_->layout.depth;
     d.samples = VkSampleCountFlagBits(t_->layout.samples);
     d.layout = layout_;
@@ -54,7 +56,8 @@ void GBufferPass::prepare() {
 
 void GBufferPass::record(PassContext& pc) {
     std::vector<ColorTarget> colors;
-    for (ResourceHandle h : t_->gbuffer) colors.push_back({h, {}, true, {{0.0f, 0.0f, 0.0f, 0.0f}}});
+    for (ResourceHandle h : t_->gbuffer)
+        colors.push_back({h, {}, true, {{0.0f, 0.0f, 0.0f, 0.0f}}});
     DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}};
     beginRendering(pc, colors, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);

@@ -31,9 +31,10 @@ struct BrdfMaterial {
 std::set<BrdfMaterial> materialsOf(const Scene& scene) {
     std::set<BrdfMaterial> out;
     for (const Material& m : scene.materials) {
-        const float base = m.baseColorTexture != kNoTexture
-                               ? 1.0f
-                               : std::max({m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b});
+        const float base =
+            m.baseColorTexture != kNoTexture
+                ? 1.0f
+                : std::max({m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b});
         if (m.metallicRoughnessTexture != kNoTexture) {
             out.insert({base, 0.0f, TP_MIN_ROUGHNESS});
             out.insert({base, 1.0f, TP_MIN_ROUGHNESS});
@@ -64,7 +65,8 @@ double brdfAt(const BrdfMaterial& m, glm::vec3 v, glm::vec3 l) {
 // Grows `limits` with one grid of light directions l(i, j) for view v: the values, and the
 // change between neighbours in i and in j over the angle between them.
 template <class LightDir>
-void sampleGrid(BrdfLimits& limits, const BrdfMaterial& m, glm::vec3 v, int ni, int nj, LightDir lightDir) {
+void sampleGrid(BrdfLimits& limits, const BrdfMaterial& m, glm::vec3 v, int ni, int nj,
+                LightDir lightDir) {
     std::vector<double> prev(size_t(nj), 0.0);
     std::vector<glm::vec3> prevL(static_cast<size_t>(nj));
     for (int i = 0; i < ni; ++i) {
@@ -76,7 +78,8 @@ void sampleGrid(BrdfLimits& limits, const BrdfMaterial& m, glm::vec3 v, int ni, 
             limits.maxValue = std::max(limits.maxValue, f);
             auto slope = [&](double f2, glm::vec3 l2) {
                 const double angle = std::acos(std::clamp(double(glm::dot(l, l2)), -1.0, 1.0));
-                if (angle > 1e-7) limits.lipschitz = std::max(limits.lipschitz, std::abs(f - f2) / angle);
+                if (angle > 1e-7)
+                    limits.lipschitz = std::max(limits.lipschitz, std::abs(f - f2) / angle);
             };
             if (i > 0) slope(prev[size_t(j)], prevL[size_t(j)]);
             if (j > 0) slope(left, leftL);
@@ -100,7 +103,8 @@ std::vector<BrdfLimits> limitsOf(const BrdfMaterial& m) {
         BrdfLimits limits;
         // Light directions: the hemisphere at 1 degree x 3 degrees, then the specular lobe
         // (half vectors within 20 alpha of the normal at alpha/10 steps).
-        sampleGrid(limits, m, v, 91, 61, [](int i, int j) { return polar(i * kDegree, j * 3.0 * kDegree); });
+        sampleGrid(limits, m, v, 91, 61,
+                   [](int i, int j) { return polar(i * kDegree, j * 3.0 * kDegree); });
         const double lobe = std::min(20.0 * alpha, 89.0 * kDegree);
         sampleGrid(limits, m, v, 201, 61, [&](int i, int j) {
             const glm::vec3 h = polar(lobe * i / 200.0, j * 3.0 * kDegree);
@@ -112,7 +116,8 @@ std::vector<BrdfLimits> limitsOf(const BrdfMaterial& m) {
             const glm::vec3 l = polar(il * kDegree, 3.14159265358979323846);
             const double f0 = brdfAt(m, v, l), f1 = brdfAt(m, v2, l);
             const double angle = std::acos(std::clamp(double(glm::dot(v, v2)), -1.0, 1.0));
-            if (angle > 1e-7) limits.lipschitz = std::max(limits.lipschitz, std::abs(f1 - f0) / angle);
+            if (angle > 1e-7)
+                limits.lipschitz = std::max(limits.lipschitz, std::abs(f1 - f0) / angle);
         }
         for (int b : {iv - 1, iv}) // the sample is the upper end of bucket iv-1, the lower of iv
             if (b >= 0 && b < kViewBuckets) {
@@ -126,7 +131,8 @@ std::vector<BrdfLimits> limitsOf(const BrdfMaterial& m) {
 // Gradient bound of one light's term at a point `d` from it (segment within `eps`), per
 // unit of light intensity times colour, with the BRDF limits `b` and the point `eyeDistance`
 // from the eye. Returns +Inf where the light may sit on the segment.
-double lightGradientBound(const Light& light, double d, double eps, double eyeDistance, const BrdfLimits& b) {
+double lightGradientBound(const Light& light, double d, double eps, double eyeDistance,
+                          const BrdfLimits& b) {
     const double dlo = d - 1.01 * eps;
     if (dlo <= 0.0) return std::numeric_limits<double>::infinity();
     const double m = std::max(dlo, double(TP_MIN_LIGHT_DISTANCE));
@@ -134,7 +140,8 @@ double lightGradientBound(const Light& light, double d, double eps, double eyeDi
     // |d/dd (window / max(d, dmin)^2)| <= |window'| / m^2 + 2 / m^3, |window'| <= 2.42 / r.
     double attenuationGrad = 2.42 / (r * m * m) + 2.0 / (m * m * m);
     if (light.type == LightType::Spot) {
-        const double spread = std::cos(double(light.innerConeAngle)) - std::cos(double(light.outerConeAngle));
+        const double spread =
+            std::cos(double(light.innerConeAngle)) - std::cos(double(light.outerConeAngle));
         attenuationGrad += 2.0 / std::max(0.001, spread) / dlo / (m * m);
     }
     const double directionGrad = b.lipschitz * (1.0 / dlo + 1.0 / eyeDistance) / (m * m);
@@ -143,7 +150,9 @@ double lightGradientBound(const Light& light, double d, double eps, double eyeDi
 
 } // namespace
 
-double snappedPositionPixels(uint32_t subPixelBits) { return std::sqrt(2.0) * std::ldexp(1.0, -int(subPixelBits) - 1); }
+double snappedPositionPixels(uint32_t subPixelBits) {
+    return std::sqrt(2.0) * std::ldexp(1.0, -int(subPixelBits) - 1);
+}
 
 std::vector<BrdfLimits> brdfLimits(const Scene& scene) {
     std::vector<BrdfLimits> all(kViewBuckets);
@@ -162,12 +171,14 @@ namespace {
 // Camera-relative position of every pixel centre from a reverse-Z depth (NaN: sky).
 std::vector<glm::dvec3> positionsOf(const Camera& cam, const ImageR32& depth) {
     const glm::dmat4 invViewProj = inverseShadingViewProjection(cam, depth.width, depth.height);
-    std::vector<glm::dvec3> out(depth.r.size(), glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
+    std::vector<glm::dvec3> out(depth.r.size(),
+                                glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
     for (uint32_t y = 0; y < depth.height; ++y)
         for (uint32_t x = 0; x < depth.width; ++x) {
             const size_t i = size_t(y) * depth.width + x;
             if (depth.r[i] > 0.0f)
-                out[i] = pixelCentrePosition(invViewProj, depth.width, depth.height, x, y, depth.r[i]);
+                out[i] =
+                    pixelCentrePosition(invViewProj, depth.width, depth.height, x, y, depth.r[i]);
         }
     return out;
 }
@@ -175,7 +186,8 @@ std::vector<glm::dvec3> positionsOf(const Camera& cam, const ImageR32& depth) {
 // The view-angle buckets [first, last] a pixel's surface may be in: from the normal of its
 // neighbours' positions (the closer neighbour on each axis); every bucket where that is not
 // clear (sky next to it, or the two neighbours of an axis disagree: a depth edge).
-std::pair<int, int> viewBuckets(const std::vector<glm::dvec3>& pos, const ImageR32& depth, uint32_t x, uint32_t y) {
+std::pair<int, int> viewBuckets(const std::vector<glm::dvec3>& pos, const ImageR32& depth,
+                                uint32_t x, uint32_t y) {
     const std::pair<int, int> all{0, kViewBuckets - 1};
     auto at = [&](int xx, int yy) -> const glm::dvec3* {
         if (xx < 0 || yy < 0 || xx >= int(depth.width) || yy >= int(depth.height)) return nullptr;
@@ -214,7 +226,8 @@ BrdfLimits limitsIn(const std::vector<BrdfLimits>& limits, std::pair<int, int> b
 
 } // namespace
 
-ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth, uint32_t subPixelBits) {
+ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
+                                    uint32_t subPixelBits) {
     ImageR32 out{depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)};
     const Camera& cam = scene.camera;
     const glm::dmat4 view = viewRotation(cam);
@@ -232,8 +245,10 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth, u
     double directional = 0;
     for (const Light& l : scene.lights) {
         const double strength = double(l.intensity) * std::max({l.color.r, l.color.g, l.color.b});
-        if (l.type == LightType::Directional) directional += strength;
-        else locals.push_back({&l, glm::dvec3(l.position) - glm::dvec3(cam.position), strength});
+        if (l.type == LightType::Directional)
+            directional += strength;
+        else
+            locals.push_back({&l, glm::dvec3(l.position) - glm::dvec3(cam.position), strength});
     }
     for (uint32_t y = 0; y < depth.height; ++y)
         for (uint32_t x = 0; x < depth.width; ++x) {
@@ -249,7 +264,8 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth, u
             for (const Local& l : locals) {
                 const double d = glm::length(p - l.position);
                 if (d >= double(l.light->range) + 1.01 * eps) continue;
-                allowance += l.strength * eps * lightGradientBound(*l.light, d, eps, eyeDistance, b);
+                allowance +=
+                    l.strength * eps * lightGradientBound(*l.light, d, eps, eyeDistance, b);
             }
             out.r[i] = float(allowance);
         }

@@ -38,6 +38,7 @@ std::vector<BrdfLimits> brdfLimits(const Scene& scene);
 // with the scene's camera: 0 where the pixel has no geometry; directional lights add their
 // (small) view-direction term everywhere; +Inf where a local light may lie within 1.01 eps of
 // the shaded point (nothing is bounded there).
-ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth, uint32_t subPixelBits);
+ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
+                                    uint32_t subPixelBits);
 
 } // namespace tp

@@ -4,9 +4,9 @@
 #include <bit>
 
 #include "core/gpu/context.h"
-#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/gpu/stand_ins.h"
 #include "core/gpu/vk_check.h"
 #include "core/render/scene_gpu.h"
 
@@ -42,18 +42,22 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
     const bool msaa = t.msaa();
     if (msaa) {
         // RGBA8 rather than R8 so the statistics and --debug can read it back.
-        t.edgeMask = graph.createImage("volume_edge_mask", {VK_FORMAT_R8G8B8A8_UNORM, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                                            "edge mask: pixels shaded per sample"});
-        t.volumeDepth = graph.createImage("volume_depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                                           "nearest sample depth (1 on edges): volumes' depth test"});
+        t.edgeMask = graph.createImage("volume_edge_mask",
+                                       {VK_FORMAT_R8G8B8A8_UNORM, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                        "edge mask: pixels shaded per sample"});
+        t.volumeDepth = graph.createImage(
+            "volume_depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                             "nearest sample depth (1 on edges): volumes' depth test"});
     }
     // Each resource once, with the binding (set TP_SET_PASS) the shaders read it at.
-    const uint32_t numbers[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL, TP_DEF_BINDING_ROUGH_METAL,
-                                TP_DEF_BINDING_EMISSIVE};
+    const uint32_t numbers[] = {TP_DEF_BINDING_BASE, TP_DEF_BINDING_NORMAL,
+                                TP_DEF_BINDING_ROUGH_METAL, TP_DEF_BINDING_EMISSIVE};
     std::vector<PassUse> gbuffer, lights;
-    for (size_t i = 0; i < t.gbuffer.size(); ++i) gbuffer.push_back({t.gbuffer[i], Use::Sampled, numbers[i]});
+    for (size_t i = 0; i < t.gbuffer.size(); ++i)
+        gbuffer.push_back({t.gbuffer[i], Use::Sampled, numbers[i]});
     gbuffer.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
-    for (size_t i = 0; i < 3; ++i) lights.push_back({t.gbuffer[i], Use::Sampled, numbers[i]}); // no emissive
+    for (size_t i = 0; i < 3; ++i)
+        lights.push_back({t.gbuffer[i], Use::Sampled, numbers[i]}); // no emissive
     std::vector<PassUse> base = gbuffer, sampleBase = gbuffer;
     base.push_back({t.hdr, Use::ColorAttachment});
     if (perSampleHdr()) {
@@ -70,7 +74,8 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
             lights.push_back({t.volumeDepth, Use::DepthTest});
             lights.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
         } else {
-            lights.push_back({t.gbufferDepth, Use::DepthTest, TP_DEF_BINDING_DEPTH}); // tested and sampled
+            lights.push_back(
+                {t.gbufferDepth, Use::DepthTest, TP_DEF_BINDING_DEPTH}); // tested and sampled
         }
     }
     if (msaa) {
@@ -79,7 +84,8 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
     }
     graph.addPass("volume_base", base, [this](PassContext& pc) { recordBase(pc); });
     if (perSampleHdr())
-        graph.addPass("volume_sample_base", sampleBase, [this](PassContext& pc) { recordSampleBase(pc); });
+        graph.addPass("volume_sample_base", sampleBase,
+                      [this](PassContext& pc) { recordSampleBase(pc); });
     graph.addPass("volume_lights", lights, [this](PassContext& pc) { recordLights(pc); });
 }
 
@@ -121,11 +127,16 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     lights_.layout = scene_.createPipelineLayout(lights_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_volume_vert";
-    d.fragmentShader = std::string("deferred_volume_light_m") + (perSampleHdr() ? "2" : t_->msaa() ? "1" : "0") + "_frag";
+    d.fragmentShader = std::string("deferred_volume_light_m") +
+                       (perSampleHdr() ? "2"
+                        : t_->msaa()   ? "1"
+                                       : "0") +
+                       "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
-    d.specConstants.push_back({TP_DEF_SPEC_SPHERE_SCALE, std::bit_cast<uint32_t>(circumscribedSphereScale())});
+    d.specConstants.push_back(
+        {TP_DEF_SPEC_SPHERE_SCALE, std::bit_cast<uint32_t>(circumscribedSphereScale())});
     d.colorFormats = {t_->hdrFormat};
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL; // reverse-Z: back face at or behind the surface
@@ -146,7 +157,8 @@ void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
     sampleBase_.layout = scene_.createPipelineLayout(sampleBase_.set.layout);
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_fullscreen_vert";
-    d.fragmentShader = std::string("deferred_volume_sample_base_e") + (t_->layout.emissive ? "1" : "0") + "_frag";
+    d.fragmentShader =
+        std::string("deferred_volume_sample_base_e") + (t_->layout.emissive ? "1" : "0") + "_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
@@ -162,8 +174,8 @@ void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
 
 void VolumeLighting::bind(VkCommandBuffer cmd, const Stage& stage) {
     scene_.bindSceneSet(cmd, stage.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, stage.layout, TP_SET_PASS, 1, &stage.set.set,
-                            0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, stage.layout, TP_SET_PASS, 1,
+                            &stage.set.set, 0, nullptr);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, stage.pipeline);
 }
 

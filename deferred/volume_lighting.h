@@ -9,8 +9,8 @@
 // run per sample against the G-buffer's per-sample depth.
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
-#include "deferred/deferred_targets.h"
 #include "deferred/deferred_shared.h"
+#include "deferred/deferred_targets.h"
 
 namespace tp {
 

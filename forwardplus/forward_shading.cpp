@@ -25,7 +25,8 @@ std::vector<PassUse> ForwardShading::uses(bool transparent) const {
                                  {msaa ? t_.depthMsaa : t_.depth, Use::DepthTest},
                                  {t_.tiles, Use::StorageRead, TP_FP_BINDING_TILES},
                                  {t_.indices, Use::StorageRead, TP_FP_BINDING_INDICES}};
-    if (config_.clustered) uses.push_back({t_.masks, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
+    if (config_.clustered)
+        uses.push_back({t_.masks, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
     const bool lastPass = transparent || !config_.blendPass;
     if (msaa && lastPass) uses.push_back({t_.hdr, Use::ColorResolve});
     return uses;
@@ -35,7 +36,8 @@ void ForwardShading::plan(FrameGraph& graph, const ShadingTargets& t) {
     t_ = t;
     graph.addPass("forward_opaque", uses(false), [this](PassContext& pc) { record(pc, false); });
     if (config_.blendPass)
-        graph.addPass("forward_transparent", uses(true), [this](PassContext& pc) { record(pc, true); });
+        graph.addPass("forward_transparent", uses(true),
+                      [this](PassContext& pc) { record(pc, true); });
 }
 
 void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
@@ -80,10 +82,13 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
     DepthTarget depth{msaa ? t_.depthMsaa : t_.depth, {}, false, true};
     beginRendering(pc, {color}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
-    std::vector<AlphaMode> modes = transparent ? std::vector<AlphaMode>{AlphaMode::Blend}
-                                               : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
-    for (AlphaMode mode : modes) scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
+                            &set_.set, 0, nullptr);
+    std::vector<AlphaMode> modes = transparent
+                                       ? std::vector<AlphaMode>{AlphaMode::Blend}
+                                       : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
+    for (AlphaMode mode : modes)
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
     endRendering(pc);
 }
 

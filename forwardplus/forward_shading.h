@@ -20,11 +20,11 @@ namespace tp::fp {
 struct ShadingConfig {
     Sampling sampling;
     uint32_t tileSize = 16;
-    uint32_t layout = 0;     // TP_FP_LAYOUT_*
-    uint32_t slices = 16;    // clustered only
-    bool twoLists = false;   // a separate transparent list per tile
+    uint32_t layout = 0;   // TP_FP_LAYOUT_*
+    uint32_t slices = 16;  // clustered only
+    bool twoLists = false; // a separate transparent list per tile
     bool clustered = false;
-    bool blendPass = false;  // blended draws are drawn: forward_transparent runs
+    bool blendPass = false; // blended draws are drawn: forward_transparent runs
     bool subgroupLoop = false;
 };
 

@@ -30,8 +30,9 @@ TileListSummary summarize(const std::vector<gpu::FpTileLists>& tiles, uint32_t l
 namespace {
 
 // Lights in tile t's cluster of slice `sl`: the set bits of its row (read-back masks).
-uint32_t clusterLights(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
-                       const std::vector<uint32_t>& masks, uint32_t slices, size_t t, uint32_t sl) {
+uint32_t clusterLights(const std::vector<gpu::FpTileLists>& tiles,
+                       const std::vector<uint32_t>& maskOffsets, const std::vector<uint32_t>& masks,
+                       uint32_t slices, size_t t, uint32_t sl) {
     const uint32_t stride = (maskOffsets[t + 1] - maskOffsets[t]) / slices;
     const uint32_t words = std::min((tiles[t].list[0].count + 31) / 32, stride);
     uint32_t n = 0;
@@ -44,7 +45,8 @@ uint32_t clusterLights(const std::vector<gpu::FpTileLists>& tiles, const std::ve
 
 } // namespace
 
-ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
+ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles,
+                                 const std::vector<uint32_t>& maskOffsets,
                                  const std::vector<uint32_t>& masks, uint32_t slices) {
     ClusterSummary s;
     double clusters = 0.0, inClusters = 0.0;
@@ -63,8 +65,9 @@ ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, con
 }
 
 ClusterSummary summarizeFrontClusters(const std::vector<gpu::FpTileLists>& tiles,
-                                      const std::vector<uint32_t>& maskOffsets, const std::vector<uint32_t>& masks,
-                                      uint32_t slices, uint32_t frontSlices) {
+                                      const std::vector<uint32_t>& maskOffsets,
+                                      const std::vector<uint32_t>& masks, uint32_t slices,
+                                      uint32_t frontSlices) {
     ClusterSummary s;
     double clusters = 0.0;
     for (size_t t = 0; t + 1 < maskOffsets.size() && t < tiles.size(); ++t) {
@@ -80,7 +83,8 @@ ClusterSummary summarizeFrontClusters(const std::vector<gpu::FpTileLists>& tiles
     return s;
 }
 
-ImageRGBA lightsPerTileHeatMap(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles, uint32_t list) {
+ImageRGBA lightsPerTileHeatMap(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles,
+                               uint32_t list) {
     std::vector<uint32_t> counts(tiles.size()), dropped(tiles.size());
     for (size_t t = 0; t < tiles.size(); ++t) {
         counts[t] = tiles[t].list[list].count;
@@ -92,7 +96,8 @@ ImageRGBA lightsPerTileHeatMap(const la::TileGrid& g, const std::vector<gpu::FpT
 ImageRGBA tileDepthBoundsImage(const la::TileGrid& g, const std::vector<gpu::FpTileLists>& tiles,
                                const glm::mat4& invProj) {
     std::vector<passes::TileDepthRange> ranges(tiles.size());
-    for (size_t i = 0; i < tiles.size(); ++i) ranges[i] = {tiles[i].nearDepth, tiles[i].farDepth};
+    for (size_t i = 0; i < tiles.size(); ++i)
+        ranges[i] = {tiles[i].nearDepth, tiles[i].farDepth};
     return passes::tileDepthBoundsImage(g, ranges, invProj);
 }
 

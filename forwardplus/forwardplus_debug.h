@@ -34,19 +34,22 @@ struct ClusterSummary {
     uint32_t max = 0;
     double bits = 0.0; // set bits in all masks
 };
-ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles, const std::vector<uint32_t>& maskOffsets,
+ClusterSummary summarizeClusters(const std::vector<gpu::FpTileLists>& tiles,
+                                 const std::vector<uint32_t>& maskOffsets,
                                  const std::vector<uint32_t>& masks, uint32_t slices);
 // Clustered blended scenes: lights per front cluster (the first `frontSlices` slices, which a
 // blended fragment nearer than its tile's opaque range looks up), over the tiles whose front
 // slices start at a blended fragment (frontNear < sliceNear).
 ClusterSummary summarizeFrontClusters(const std::vector<gpu::FpTileLists>& tiles,
-                                      const std::vector<uint32_t>& maskOffsets, const std::vector<uint32_t>& masks,
-                                      uint32_t slices, uint32_t frontSlices);
+                                      const std::vector<uint32_t>& maskOffsets,
+                                      const std::vector<uint32_t>& masks, uint32_t slices,
+                                      uint32_t frontSlices);
 
 // Lights per tile (list 0 opaque, 1 transparent) on light assignment's one heat-map scale
 // (core/passes/debug_views.h); tiles that dropped lights (overflow of the "fixed" layout)
 // are outlined.
-ImageRGBA lightsPerTileHeatMap(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles, uint32_t list);
+ImageRGBA lightsPerTileHeatMap(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles,
+                               uint32_t list);
 
 // passes::tileDepthBoundsImage of the lists' depth ranges.
 ImageRGBA tileDepthBoundsImage(const la::TileGrid& grid, const std::vector<gpu::FpTileLists>& tiles,

@@ -15,22 +15,22 @@
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
-#include "core/passes/depth_prepass.h"
-#include "core/render/msaa_knob.h"
-#include "core/render/scene_gpu.h"
-#include "core/passes/blended_bounds.h"
-#include "core/passes/light_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
-#include "forwardplus/forwardplus_debug.h"
+#include "core/passes/blended_bounds.h"
+#include "core/passes/depth_prepass.h"
+#include "core/passes/light_binning.h"
+#include "core/render/msaa_knob.h"
+#include "core/render/scene_gpu.h"
 #include "forwardplus/forward_shading.h"
-#include "forwardplus/fp_settings.h"
+#include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
+#include "forwardplus/fp_settings.h"
 #include "forwardplus/light_culling.h"
-#include "forwardplus/list_counters.h"
 #include "forwardplus/light_lists.h"
 #include "forwardplus/light_spheres.h"
+#include "forwardplus/list_counters.h"
 
 namespace tp {
 namespace {
@@ -51,19 +51,24 @@ class ForwardPlusRenderer final : public Renderer {
         // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
         // transform in every tile it is tested in); on a GPU the transform is cheap and the
         // buffer (16 MB at 1,000,000 lights) would take Forward+ past 100 MB there.
-        spherePass_ = fp_.spheres == fp::Spheres::Pass || (fp_.spheres == fp::Spheres::Auto && ctx_.isCpuDevice());
+        spherePass_ = fp_.spheres == fp::Spheres::Pass ||
+                      (fp_.spheres == fp::Spheres::Auto && ctx_.isCpuDevice());
         // --light-loop subgroup where the device has the operations; otherwise the lane loop
         // (the same image), with a note in the report.
         if (clustered_ && fp_.loop == la::Loop::Subgroup) {
             subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
             subgroupLoop_ = subgroupMissing_.empty();
         }
-        // --cull-by: asked for, a subgroup per tile must be possible; auto takes it on a GPU that can.
+        // --cull-by: asked for, a subgroup per tile must be possible; auto takes it on a GPU that
+        // can.
         const fp::CullBy cullBy = fp_.cullBy;
         const std::string noSubgroupCull = fp::subgroupCullingUnsupported(ctx_.caps);
         if (cullBy == fp::CullBy::Subgroup && !noSubgroupCull.empty())
-            throw RendererError("--cull-by subgroup: " + noSubgroupCull + " (use --cull-by invocation)");
-        subgroupCull_ = cullBy == fp::CullBy::Subgroup || (cullBy == fp::CullBy::Auto && !ctx_.isCpuDevice() && noSubgroupCull.empty());
+            throw RendererError("--cull-by subgroup: " + noSubgroupCull +
+                                " (use --cull-by invocation)");
+        subgroupCull_ =
+            cullBy == fp::CullBy::Subgroup ||
+            (cullBy == fp::CullBy::Auto && !ctx_.isCpuDevice() && noSubgroupCull.empty());
         if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
             throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
                                 fp::listsText(fp_.lists) + "')");
@@ -86,48 +91,59 @@ class ForwardPlusRenderer final : public Renderer {
         const auto samples = VkSampleCountFlagBits(settings_.msaa);
         hdr_ = graph.createImage("hdr", {kHdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                          "linear radiance, resolved (RGBA16F)"});
-        depth_ = graph.createImage("depth", {kDepthFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                             msaa ? "depth (resolved: sample 0)" : "prepass depth"});
+        depth_ =
+            graph.createImage("depth", {kDepthFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                        msaa ? "depth (resolved: sample 0)" : "prepass depth"});
         if (msaa) {
-            hdrMsaa_ = graph.createImage("hdr_msaa", {kHdrFormat, 0, 0, samples, "per-sample radiance (RGBA16F)"});
-            depthMsaa_ = graph.createImage("depth_msaa", {kDepthFormat, 0, 0, samples, "per-sample prepass depth"});
+            hdrMsaa_ = graph.createImage(
+                "hdr_msaa", {kHdrFormat, 0, 0, samples, "per-sample radiance (RGBA16F)"});
+            depthMsaa_ = graph.createImage(
+                "depth_msaa", {kDepthFormat, 0, 0, samples, "per-sample prepass depth"});
         }
         const ResourceHandle depthSrc = msaa ? depthMsaa_ : depth_;
 
-        tiles_ = graph.createBuffer("tile_lists", VkDeviceSize(grid_.count()) * sizeof(gpu::FpTileLists),
-                                    "per tile: list counts, starts, drops, depth bounds");
+        tiles_ =
+            graph.createBuffer("tile_lists", VkDeviceSize(grid_.count()) * sizeof(gpu::FpTileLists),
+                               "per tile: list counts, starts, drops, depth bounds");
         indices_ = graph.createBuffer("light_indices", lists_.bytes, lists_.purpose);
         if (layout_ == TP_FP_LAYOUT_LINKED)
-            counter_ = graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
+            counter_ =
+                graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
         if (clustered_)
-            masks_ = graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
-                                        "per tile and depth slice: a bitmask over the tile's list");
+            masks_ =
+                graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
+                                   "per tile and depth slice: a bitmask over the tile's list");
 
         // Masked materials' alpha test once per pixel under MSAA (the shading pass's EQUAL test
         // then gives each sample the pixel's coverage): passes::MaskedRate::Pixel.
         prepass_.emplace(ctx_, scene_,
                          passes::DepthPrepassParams{settings_.msaa, passes::MaskedRate::Pixel,
-                                                    scene_.drawList(DrawFilter::Opaque), scene_.drawList(DrawFilter::Mask)});
+                                                    scene_.drawList(DrawFilter::Opaque),
+                                                    scene_.drawList(DrawFilter::Mask)});
         prepass_->plan(graph, {depthSrc, msaa ? depth_ : ResourceHandle{}});
 
         if (layout_ == TP_FP_LAYOUT_LINKED)
-            graph.addPass("node_counter_reset", {{counter_, Use::TransferDst}}, [this](PassContext& pc) {
-                vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
-            });
+            graph.addPass(
+                "node_counter_reset", {{counter_, Use::TransferDst}}, [this](PassContext& pc) {
+                    vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
+                });
 
         if (binning_) binning_->plan(graph); // the candidates the culling reads, every frame
-        // Blended depth bounds: the blended shading pass's fragments, before the culling reads them.
+        // Blended depth bounds: the blended shading pass's fragments, before the culling reads
+        // them.
         ResourceHandle blendBounds;
         if (blendPass_)
-            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa, fp_.sampling.perSample(),
+            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa,
+                                                     fp_.sampling.perSample(),
                                                      fp_.sampling.perPixelUnderMsaa()});
         const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
 
         shading_.emplace(ctx_, scene_,
-                         fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout_, slices_, twoLists_, clustered_,
-                                           blendPass_, subgroupLoop_});
-        shading_->plan(graph, {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat});
+                         fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout_, slices_,
+                                           twoLists_, clustered_, blendPass_, subgroupLoop_});
+        shading_->plan(graph,
+                       {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat});
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
         // Read back after the frame for the statistics, debug images and tests.
@@ -155,7 +171,8 @@ class ForwardPlusRenderer final : public Renderer {
             std::memcpy(&nodesUsed_, c.data(), sizeof(uint32_t));
         }
         if (blendBounds_)
-            blended_ = la::unpackBlendedBounds(readbackBuffer(ctx_, graph.buffer(blendBounds_->buffer())), grid_.count());
+            blended_ = la::unpackBlendedBounds(
+                readbackBuffer(ctx_, graph.buffer(blendBounds_->buffer())), grid_.count());
         if (clustered_) {
             std::vector<uint8_t> m = readbackBuffer(ctx_, graph.buffer(masks_));
             maskBits_.resize(m.size() / 4);
@@ -169,8 +186,10 @@ class ForwardPlusRenderer final : public Renderer {
         std::vector<DebugImage> out;
         out.push_back({"lights_per_tile", fp::lightsPerTileHeatMap(grid_, tileLists_, 0), true});
         if (twoLists_)
-            out.push_back({"lights_per_tile_transparent", fp::lightsPerTileHeatMap(grid_, tileLists_, 1), true});
-        out.push_back({"tile_depth_bounds", fp::tileDepthBoundsImage(grid_, tileLists_, scene_.frame().invProj), true});
+            out.push_back({"lights_per_tile_transparent",
+                           fp::lightsPerTileHeatMap(grid_, tileLists_, 1), true});
+        out.push_back({"tile_depth_bounds",
+                       fp::tileDepthBoundsImage(grid_, tileLists_, scene_.frame().invProj), true});
         return out;
     }
 
@@ -184,19 +203,23 @@ class ForwardPlusRenderer final : public Renderer {
         add("local_lights", double(classes_.local.size()));
         add("hdr_storage_bits_per_channel", 16.0);
         add("light_list_slots", double(lists_.slots));
-        add("culling_dispatches", double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
-        add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);       // --light-spheres, resolved
-        add("culling_by_subgroup", subgroupCull_ ? 1.0 : 0.0);     // --cull-by, resolved
-        if (binned_) add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
+        add("culling_dispatches",
+            double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
+        add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);    // --light-spheres, resolved
+        add("culling_by_subgroup", subgroupCull_ ? 1.0 : 0.0); // --cull-by, resolved
+        if (binned_)
+            add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
         if (binned_) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered_) {
             add("slices", double(slices_));
             add("cluster_mask_words", double(maskLayout_.words));
-            add("light_loop_subgroup", subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
+            add("light_loop_subgroup",
+                subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
         if (collected_) {
             static const std::vector<uint32_t> none;
-            fp::ListCounterInput in{tileLists_, blended_, binned_ ? tileBound_ : none, maskLayout_.offsets, maskBits_};
+            fp::ListCounterInput in{tileLists_, blended_, binned_ ? tileBound_ : none,
+                                    maskLayout_.offsets, maskBits_};
             in.localLights = classes_.local.size();
             in.slices = slices_;
             in.twoLists = twoLists_;
@@ -208,37 +231,47 @@ class ForwardPlusRenderer final : public Renderer {
             fp::addListCounters(s.counters, in);
         }
         if (!blendPass_)
-            s.leftOut.push_back({"transparent light list, blended depth bounds, forward_transparent pass and their "
-                                 "memory",
-                                 "the scene has no blended materials"});
+            s.leftOut.push_back(
+                {"transparent light list, blended depth bounds, forward_transparent pass and their "
+                 "memory",
+                 "the scene has no blended materials"});
         else if (clustered_)
-            s.leftOut.push_back({"the second (transparent) light list per tile",
-                                 "clustered: one list spans the tile's opaque range widened to its blended "
-                                 "fragments' depths, and blended surfaces look up their own depth slice"});
+            s.leftOut.push_back(
+                {"the second (transparent) light list per tile",
+                 "clustered: one list spans the tile's opaque range widened to its blended "
+                 "fragments' depths, and blended surfaces look up their own depth slice"});
         if (binned_ && !gpuBinning_)
-            s.leftOut.push_back({"light_binning pass (GPU binning)", "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
-                                                                       " resolved to cpu: candidates built once per configuration"});
+            s.leftOut.push_back({"light_binning pass (GPU binning)",
+                                 "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
+                                     " resolved to cpu: candidates built once per configuration"});
         if (!clustered_)
-            s.leftOut.push_back({"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
+            s.leftOut.push_back(
+                {"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
         if (!spherePass_)
             s.leftOut.push_back({"light_spheres pass and its buffer (16 bytes per light)",
                                  "--light-spheres " + fp::spheresText(fp_.spheres) +
                                      ": the culling computes each candidate's sphere itself"});
         if (!subgroupMissing_.empty())
-            s.leftOut.push_back({"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
-                                 "the same image",
-                                 subgroupMissing_});
+            s.leftOut.push_back(
+                {"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
+                 "the same image",
+                 subgroupMissing_});
         if (settings_.msaa == 1)
-            s.leftOut.push_back({"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
+            s.leftOut.push_back(
+                {"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
         if (!scene_.hasDraws(DrawFilter::Mask))
-            s.leftOut.push_back({"alpha-masked prepass and shading pipelines", "the scene has no masked materials"});
+            s.leftOut.push_back({"alpha-masked prepass and shading pipelines",
+                                 "the scene has no masked materials"});
         if (!features_.spotLights)
-            s.leftOut.push_back({"spot-light shading code (TP_SPEC_HAS_SPOT = 0)", "the scene has no spot lights"});
+            s.leftOut.push_back(
+                {"spot-light shading code (TP_SPEC_HAS_SPOT = 0)", "the scene has no spot lights"});
         if (layout_ != TP_FP_LAYOUT_LINKED)
-            s.leftOut.push_back({"node counter and its reset pass", "only the 'linked' layout allocates nodes"});
-        s.leftOut.push_back({"fp32 colour storage",
-                             "hdr and hdr_msaa are RGBA16F (storage-precision choice: half the bytes of "
-                             "RGBA32F; each rounding below one ulp, <= 2^-10 relative; values saturate at 65504)"});
+            s.leftOut.push_back(
+                {"node counter and its reset pass", "only the 'linked' layout allocates nodes"});
+        s.leftOut.push_back(
+            {"fp32 colour storage",
+             "hdr and hdr_msaa are RGBA16F (storage-precision choice: half the bytes of "
+             "RGBA32F; each rounding below one ulp, <= 2^-10 relative; values saturate at 65504)"});
         return s;
     }
 
@@ -250,28 +283,43 @@ class ForwardPlusRenderer final : public Renderer {
         // The uploaded (camera-relative) view and lights: what the culling shader tests.
         const gpu::FrameUniforms& f = scene_.shadingFrame();
         // --light-bin gpu: the frame builds the candidates; one plan-time run sizes them.
-        if (gpuBinning_) binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local, "forwardplus");
-        la::LightBins bins = gpuBinning_ ? binning_->sizes()
-                                         : la::binLights(grid_, f.view, f.proj, scene_.shadingLights(), classes_.local, binned_);
+        if (gpuBinning_)
+            binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local,
+                                                        "forwardplus");
+        la::LightBins bins = gpuBinning_
+                                 ? binning_->sizes()
+                                 : la::binLights(grid_, f.view, f.proj, scene_.shadingLights(),
+                                                 classes_.local, binned_);
         tileBound_ = std::move(bins.bound);
         tileOffsets_ = std::move(bins.offsets);
         boundSlots_ = bins.slots;
         maxBound_ = bins.maxBound;
         // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
         if (boundSlots_ > 0xffffffffull - classes_.local.size() - grid_.count() - 64)
-            throw RendererError("the tile lists need " + std::to_string(boundSlots_) +
-                                " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
-                                "fewer lights");
+            throw RendererError(
+                "the tile lists need " + std::to_string(boundSlots_) +
+                " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
+                "fewer lights");
         candidates_ = std::move(bins.candidates);
         if (clustered_) maskLayout_ = fp::sizeMasks(ctx_, tileBound_, slices_);
     }
 
     void createParams() {
-        fp::ParamsInput in{grid_, &classes_, layout_, binned_, gpuBinning_, &tileOffsets_, &candidates_, boundSlots_,
-                           &maskLayout_.offsets, fp_.tileCapacity, lists_};
+        fp::ParamsInput in{grid_,
+                           &classes_,
+                           layout_,
+                           binned_,
+                           gpuBinning_,
+                           &tileOffsets_,
+                           &candidates_,
+                           boundSlots_,
+                           &maskLayout_.offsets,
+                           fp_.tileCapacity,
+                           lists_};
         fp::PackedParams packed = fp::packParams(ctx_, in);
         candidateWord_ = packed.candidateWord;
-        params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+        params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        {"forwardplus", "", "fp_params", packed.purpose});
     }
 
@@ -311,17 +359,17 @@ class ForwardPlusRenderer final : public Renderer {
     la::LightClasses classes_;
     bool binned_ = true, clustered_ = false, blendPass_ = false;
     uint32_t slices_ = 16;
-    bool spherePass_ = false;      // --light-spheres resolved: the light_spheres pass runs
-    bool subgroupCull_ = false;    // --cull-by resolved: one subgroup culls a tile
-    bool subgroupLoop_ = false;    // clustered, --light-loop subgroup, and the device runs it
+    bool spherePass_ = false;     // --light-spheres resolved: the light_spheres pass runs
+    bool subgroupCull_ = false;   // --cull-by resolved: one subgroup culls a tile
+    bool subgroupLoop_ = false;   // clustered, --light-loop subgroup, and the device runs it
     std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
-    fp::MaskLayout maskLayout_; // clustered: the slice rows' word offsets per tile
+    fp::MaskLayout maskLayout_;   // clustered: the slice rows' word offsets per tile
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
     std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
     uint64_t boundSlots_ = 0;
     uint32_t maxBound_ = 0; // binned: the most candidates of any tile (the culling batches' range)
-    bool gpuBinning_ = false;                // --light-bin resolved to gpu (binned only)
+    bool gpuBinning_ = false;                 // --light-bin resolved to gpu (binned only)
     std::unique_ptr<la::GpuBinning> binning_; // then: the light_binning pass
     uint64_t candidateWord_ = 0;              // the candidates' first word in fp_params
     fp::ListSizes lists_;
@@ -329,8 +377,10 @@ class ForwardPlusRenderer final : public Renderer {
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;
     Buffer params_;
     fp::LightSpheres spheres_{ctx_, scene_};
-    std::optional<fp::LightCulling> culling_; // made once the lists are sized (its batches depend on them)
-    std::optional<la::BlendedBounds> blendBounds_; // blended scenes: where each tile's blended fragments are
+    std::optional<fp::LightCulling>
+        culling_; // made once the lists are sized (its batches depend on them)
+    std::optional<la::BlendedBounds>
+        blendBounds_; // blended scenes: where each tile's blended fragments are
     std::optional<passes::DepthPrepass> prepass_;
     std::optional<fp::ForwardShading> shading_; // forward_opaque, forward_transparent
 

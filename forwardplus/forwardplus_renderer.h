@@ -2,7 +2,8 @@
 // Forward+ (tiled forward shading; AMD ForwardPlus11, Harada et al. 2012):
 //   depth_prepass      depth only; masked draws discard, blended draws are not in it
 //   node_counter_reset "linked" layout only: the node pool's allocation counter to 0
-//   light_culling      compute, one 64-invocation workgroup per tile: depth bounds over every sample,
+//   light_culling      compute, one 64-invocation workgroup per tile: depth bounds over every
+//   sample,
 //                      point/spot lights against the tile sub-frustum, lists written out
 //   forward_opaque     opaque + masked draws, depth test EQUAL, no discard, tile list loop
 //   forward_transparent blended draws back to front with the transparent list (only when

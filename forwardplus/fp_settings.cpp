@@ -6,7 +6,9 @@ namespace {
 const ChoiceKnob<ListLayout>& listsKnob() {
     static const ChoiceKnob<ListLayout> k{
         "light-lists",
-        {{ListLayout::Compact, "compact"}, {ListLayout::Fixed, "fixed"}, {ListLayout::Linked, "linked"}},
+        {{ListLayout::Compact, "compact"},
+         {ListLayout::Fixed, "fixed"},
+         {ListLayout::Linked, "linked"}},
         "Forward+ light-list layout: compact (count, prefix sum, fill; never drops), fixed (fixed "
         "capacity per tile; drops are counted), linked (per-tile linked lists)"};
     return k;
@@ -14,7 +16,8 @@ const ChoiceKnob<ListLayout>& listsKnob() {
 
 const IntegerKnob& capacityKnob() {
     static const IntegerKnob k =
-        IntegerKnob{Knob::integer("tile-capacity", 1, 65536, 256, "Light slots per tile of the 'fixed' light-list layout")}
+        IntegerKnob{Knob::integer("tile-capacity", 1, 65536, 256,
+                                  "Light slots per tile of the 'fixed' light-list layout")}
             .fixed();
     return k;
 }
@@ -34,10 +37,13 @@ const ChoiceKnob<Spheres>& spheresKnob() {
 const ChoiceKnob<CullBy>& cullByKnob() {
     static const ChoiceKnob<CullBy> k{
         "cull-by",
-        {{CullBy::Auto, "auto"}, {CullBy::Invocation, "invocation"}, {CullBy::Subgroup, "subgroup"}},
+        {{CullBy::Auto, "auto"},
+         {CullBy::Invocation, "invocation"},
+         {CullBy::Subgroup, "subgroup"}},
         "Who culls a tile in light_culling: invocation (one thread walks the tile's candidates; "
         "cheapest on a CPU device such as lavapipe), subgroup (one subgroup per tile, a candidate "
-        "per lane, survivors placed in order by a ballot: a GPU runs tiles x lanes threads) or auto "
+        "per lane, survivors placed in order by a ballot: a GPU runs tiles x lanes threads) or "
+        "auto "
         "(invocation on a CPU device, subgroup on a GPU that supports it); the same lists either "
         "way"};
     return k;
@@ -46,10 +52,10 @@ const ChoiceKnob<CullBy>& cullByKnob() {
 } // namespace
 
 KnobSchema knobs() {
-    return {la::tileSizeKnob().knob(),  la::lightCullKnob().knob(), la::lightBinKnob().knob(),
-            la::lightAssignKnob().knob(), la::slicesKnob().knob(),  la::lightLoopKnob().knob(),
-            msaaShadingKnob().knob(),   listsKnob().knob(),         capacityKnob().knob(),
-            spheresKnob().knob(),       cullByKnob().knob()};
+    return {la::tileSizeKnob().knob(),    la::lightCullKnob().knob(), la::lightBinKnob().knob(),
+            la::lightAssignKnob().knob(), la::slicesKnob().knob(),    la::lightLoopKnob().knob(),
+            msaaShadingKnob().knob(),     listsKnob().knob(),         capacityKnob().knob(),
+            spheresKnob().knob(),         cullByKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -66,7 +72,11 @@ Settings readSettings(const RenderSettings& s) {
     return f;
 }
 
-const std::string& listsText(ListLayout l) { return listsKnob().text(l); }
-const std::string& spheresText(Spheres s) { return spheresKnob().text(s); }
+const std::string& listsText(ListLayout l) {
+    return listsKnob().text(l);
+}
+const std::string& spheresText(Spheres s) {
+    return spheresKnob().text(s);
+}
 
 } // namespace tp::fp

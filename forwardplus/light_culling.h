@@ -22,13 +22,15 @@ namespace fp {
 
 struct CullConfig {
     la::TileGrid grid;
-    uint32_t layout = 0;    // TP_FP_LAYOUT_*
-    uint32_t samples = 1;   // --msaa
-    uint32_t slices = 16;   // clustered depth slices
-    uint32_t mostTested = 0; // the most lights any tile tests (binned: its candidates; all: every local light)
+    uint32_t layout = 0;  // TP_FP_LAYOUT_*
+    uint32_t samples = 1; // --msaa
+    uint32_t slices = 16; // clustered depth slices
+    uint32_t mostTested =
+        0; // the most lights any tile tests (binned: its candidates; all: every local light)
     bool binned = true, clustered = false, twoLists = false, blendedSpan = false;
     bool spheres = true; // read the light_spheres pass's buffer (else a stand-in is bound)
-    uint32_t subgroupLanes = 0; // > 0: one subgroup of this many lanes per tile (--cull-by subgroup)
+    uint32_t subgroupLanes =
+        0; // > 0: one subgroup of this many lanes per tile (--cull-by subgroup)
 };
 
 // Whether the device can cull a tile with one subgroup (light_culling_subgroup.comp): compute

@@ -16,7 +16,8 @@ ListSizes sizeLists(const GpuContext& ctx, const ListConfig& c) {
         s.stride = c.tiles * c.capacity;
         s.slots = s.stride * c.numLists;
         s.bytes = s.slots * 4;
-        s.purpose = "light indices, " + std::to_string(c.capacity) + " slots per tile" + (c.numLists == 2 ? " and list" : "");
+        s.purpose = "light indices, " + std::to_string(c.capacity) + " slots per tile" +
+                    (c.numLists == 2 ? " and list" : "");
     } else {
         s.stride = c.boundSlots;
         s.slots = c.boundSlots * c.numLists;
@@ -32,10 +33,11 @@ ListSizes sizeLists(const GpuContext& ctx, const ListConfig& c) {
     s.bytes = std::max<uint64_t>(s.bytes, 16);
     const uint64_t limit = ctx.caps.maxStorageBufferRange;
     if (s.bytes > limit || s.slots > 0xffffffffull)
-        throw RendererError("the '" + c.layoutName + "' light lists need " + std::to_string(s.bytes) +
-                            " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
-                            ctx.info.name + "; use a larger --tile, a lower --res, fewer lights" +
-                            (c.layout == TP_FP_LAYOUT_FIXED ? " or a smaller --tile-capacity" : ""));
+        throw RendererError(
+            "the '" + c.layoutName + "' light lists need " + std::to_string(s.bytes) +
+            " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
+            ctx.info.name + "; use a larger --tile, a lower --res, fewer lights" +
+            (c.layout == TP_FP_LAYOUT_FIXED ? " or a smaller --tile-capacity" : ""));
     return s;
 }
 
@@ -50,7 +52,8 @@ MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, 
     if (m.words * 4 > ctx.caps.maxStorageBufferRange)
         throw RendererError("the cluster bitmasks need " + std::to_string(m.words * 4) +
                             " bytes, more than maxStorageBufferRange (" +
-                            std::to_string(ctx.caps.maxStorageBufferRange) + ") of " + ctx.info.name +
+                            std::to_string(ctx.caps.maxStorageBufferRange) + ") of " +
+                            ctx.info.name +
                             "; use fewer --slices, a larger --tile, a lower --res or fewer lights");
     return m;
 }
@@ -74,12 +77,15 @@ PackedParams packParams(const GpuContext& ctx, const ParamsInput& in) {
     data.push_back(0); // never empty
     const uint64_t limit = ctx.caps.maxStorageBufferRange;
     if (sizeof(p) + data.size() * 4 > limit)
-        throw RendererError("fp_params (light classes, tile offsets, binned candidates) needs " +
-                            std::to_string(sizeof(p) + data.size() * 4) + " bytes, more than maxStorageBufferRange (" +
-                            std::to_string(limit) + ") of " + ctx.info.name +
-                            "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
+        throw RendererError(
+            "fp_params (light classes, tile offsets, binned candidates) needs " +
+            std::to_string(sizeof(p) + data.size() * 4) +
+            " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
+            ctx.info.name +
+            "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
     p.lights = glm::uvec4(dirCount, localCount, offsetBase, in.tileCapacity);
-    p.lists = glm::uvec4(uint32_t(in.lists.stride), uint32_t(in.lists.poolNodes), candidateBase, maskOffsetBase);
+    p.lists = glm::uvec4(uint32_t(in.lists.stride), uint32_t(in.lists.poolNodes), candidateBase,
+                         maskOffsetBase);
     PackedParams out;
     out.candidateWord = sizeof(p) / 4 + candidateBase;
     out.bytes.resize(sizeof(p) + data.size() * 4);

@@ -19,8 +19,8 @@ struct LightClasses;
 namespace fp {
 
 struct ListConfig {
-    uint32_t layout = 0;     // TP_FP_LAYOUT_*
-    std::string layoutName;  // --light-lists, for the error message
+    uint32_t layout = 0;    // TP_FP_LAYOUT_*
+    std::string layoutName; // --light-lists, for the error message
     uint64_t tiles = 0;
     uint32_t capacity = 0;   // fixed: --tile-capacity slots per tile and list
     uint64_t boundSlots = 0; // compact and linked: the conservative bound's slots (one list kind)

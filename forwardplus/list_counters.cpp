@@ -16,7 +16,8 @@ double transparentTests(const ListCounterInput& in) {
     return tests;
 }
 
-void addClusterCounters(std::vector<std::pair<std::string, double>>& out, const ListCounterInput& in) {
+void addClusterCounters(std::vector<std::pair<std::string, double>>& out,
+                        const ListCounterInput& in) {
     ClusterSummary c = summarizeClusters(in.tiles, in.maskOffsets, in.maskBits, in.slices);
     out.push_back({"lights_per_cluster_mean", c.mean});
     out.push_back({"lights_per_cluster_max", double(c.max)});
@@ -32,7 +33,8 @@ void addClusterCounters(std::vector<std::pair<std::string, double>>& out, const 
 
 void addListCounters(std::vector<std::pair<std::string, double>>& out, const ListCounterInput& in) {
     auto add = [&](const std::string& name, double v) { out.push_back({name, v}); };
-    TileListSummary o = summarize(in.tiles, 0, in.clustered && in.blendPass, in.localLights, in.tested);
+    TileListSummary o =
+        summarize(in.tiles, 0, in.clustered && in.blendPass, in.localLights, in.tested);
     add("lights_per_tile_mean", o.mean);
     add("lights_per_tile_max", double(o.max));
     add("tiles_without_geometry", double(o.skyTiles));
@@ -42,7 +44,8 @@ void addListCounters(std::vector<std::pair<std::string, double>>& out, const Lis
         add("transparent_lights_per_tile_mean", t.mean);
         add("transparent_lights_per_tile_max", double(t.max));
         add("tiles_with_blended_fragments",
-            double(std::count_if(in.blended.begin(), in.blended.end(), [](const auto& b) { return b.any; })));
+            double(std::count_if(in.blended.begin(), in.blended.end(),
+                                 [](const auto& b) { return b.any; })));
         tested += transparentTests(in);
         kept += t.passed;
         dropped += t.dropped;

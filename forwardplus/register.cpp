@@ -20,15 +20,16 @@ void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
 // the drops instead).
 std::vector<stress::CounterAtLeast> forwardPlusStressed(const ErrorModelInput& in) {
     const stress::StressCase& c = in.stressCase;
-    if (c.lightsInOneTile <= 4096 || fp::readSettings(in.settings).lists == fp::ListLayout::Fixed) return {};
-    return {{"lights_per_tile_max", 4097, "a tile list must hold more than 4,096 lights (the case puts " +
-                                              std::to_string(c.lightsInOneTile) + " in one tile)"}};
+    if (c.lightsInOneTile <= 4096 || fp::readSettings(in.settings).lists == fp::ListLayout::Fixed)
+        return {};
+    return {{"lights_per_tile_max", 4097,
+             "a tile list must hold more than 4,096 lights (the case puts " +
+                 std::to_string(c.lightsInOneTile) + " in one tile)"}};
 }
 
-const RendererRegistration registration{{"forwardplus",
-                                         "Forward+: depth prepass, per-tile light lists in compute, forward shading",
-                                         createForwardPlusRenderer, 10, fp::knobs(), forwardPlusErrorModel,
-                                         forwardPlusStressed}};
+const RendererRegistration registration{
+    {"forwardplus", "Forward+: depth prepass, per-tile light lists in compute, forward shading",
+     createForwardPlusRenderer, 10, fp::knobs(), forwardPlusErrorModel, forwardPlusStressed}};
 
 } // namespace
 } // namespace tp

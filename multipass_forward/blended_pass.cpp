@@ -35,8 +35,8 @@ VkPipelineColorBlendAttachmentState underBlend() {
     a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
     a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     a.alphaBlendOp = VK_BLEND_OP_ADD;
-    a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                       VK_COLOR_COMPONENT_A_BIT;
+    a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                       VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     return a;
 }
 
@@ -56,7 +56,8 @@ BlendedPass::BlendedPass(const PassEnv& env)
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Blend);
     d.depthWrite = false;
     GraphicsPipelineDesc base = d;
-    for (SpecConstant c : directionalSpec(env.plan)) base.specConstants.push_back(c);
+    for (SpecConstant c : directionalSpec(env.plan))
+        base.specConstants.push_back(c);
     base.fragmentShader = fragmentShader(env, onePass_ ? "one_pass" : "base");
     base.blend = BlendMode::Alpha;
     base_ = createGraphicsPipeline(env.ctx, base);
@@ -104,13 +105,15 @@ void BlendedPass::createReversedIndices() {
         if (!mesh) throw RendererError("multipass_forward: a blended draw matches no mesh");
         reversedFirst_[b] = uint32_t(reversed.size());
         for (size_t t = mesh->indices.size(); t >= 3; t -= 3)
-            reversed.insert(reversed.end(), mesh->indices.begin() + ptrdiff_t(t - 3), mesh->indices.begin() + ptrdiff_t(t));
+            reversed.insert(reversed.end(), mesh->indices.begin() + ptrdiff_t(t - 3),
+                            mesh->indices.begin() + ptrdiff_t(t));
     }
     if (reversed.empty()) return;
-    reversedIndices_ = createBufferWithData(env_.ctx, reversed.data(), reversed.size() * sizeof(uint32_t),
-                                            VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                            {"multipass_forward", "blended", "blended_indices_reversed",
-                                             "lit blended meshes' triangles in reverse order (light passes)"});
+    reversedIndices_ =
+        createBufferWithData(env_.ctx, reversed.data(), reversed.size() * sizeof(uint32_t),
+                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                             {"multipass_forward", "blended", "blended_indices_reversed",
+                              "lit blended meshes' triangles in reverse order (light passes)"});
 }
 
 // The exact light passes: each light's triangles of the draw in reverse order, composited

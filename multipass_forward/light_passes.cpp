@@ -19,7 +19,9 @@ LightPasses::LightPasses(const PassEnv& env) : env_(env) {
     pipeline_ = createGraphicsPipeline(env.ctx, d);
 }
 
-LightPasses::~LightPasses() { destroyPipeline(env_.ctx, pipeline_); }
+LightPasses::~LightPasses() {
+    destroyPipeline(env_.ctx, pipeline_);
+}
 
 void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
     beginShading(pc, t, resolve, false);
@@ -28,7 +30,8 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
         bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const LightBatch& batch : env_.plan.batches) {
             setScissor(pc.cmd, batch.scissor);
-            for (const DrawItem* d : batch.draws) recordDraw(pc.cmd, env_.layout, *d, batch.light);
+            for (const DrawItem* d : batch.draws)
+                recordDraw(pc.cmd, env_.layout, *d, batch.light);
             draws_ += uint32_t(batch.draws.size());
         }
     }

@@ -47,9 +47,9 @@ glm::vec2 tangentNdc(float u, float depth, float r, float scale) {
 ScreenRect sphereScreenRect(const gpu::FrameUniforms& f, glm::vec3 center, float radius) {
     const float znear = f.projParams.x;
     glm::vec3 c = glm::vec3(f.view * glm::vec4(center, 1.0f));
-    float depth = -c.z; // distance in front of the eye along the view axis
-    if (depth + radius <= znear) return {};                 // entirely behind the near plane
-    if (depth - radius <= znear) return fullScreen(f);      // crosses it (or holds the eye)
+    float depth = -c.z;                     // distance in front of the eye along the view axis
+    if (depth + radius <= znear) return {}; // entirely behind the near plane
+    if (depth - radius <= znear) return fullScreen(f); // crosses it (or holds the eye)
     // The projection here is symmetric (proj[2][0] = proj[2][1] = 0), so NDC = focal * slope.
     glm::vec2 x = tangentNdc(c.x, depth, radius, f.proj[0][0]);
     glm::vec2 y = tangentNdc(c.y, depth, radius, f.proj[1][1]);
@@ -98,7 +98,9 @@ namespace {
 // cloth edge shaded 2 m past its box at 96x64; docs/multipass_forward.md). No world-space
 // margin is conservative, but the extrapolated position still projects into the pixel being
 // shaded, so the screen-space tests stay exact: under MSAA only those are used.
-bool shadedInsideBox(const gpu::FrameUniforms& f) { return f.viewport.w <= 1; }
+bool shadedInsideBox(const gpu::FrameUniforms& f) {
+    return f.viewport.w <= 1;
+}
 
 struct VisibleDraw {
     const DrawItem* draw;
@@ -121,9 +123,11 @@ std::vector<VisibleDraw> visibleDraws(const SceneGpu& scene, DrawFilter filter) 
 
 // A draw is lit by a light when their rectangles overlap and (where shading stays on the
 // triangles, see shadedInsideBox) its box touches the sphere.
-bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleDraw& d, bool boxTest) {
+bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleDraw& d,
+             bool boxTest) {
     if (l.type == TP_LIGHT_DIRECTIONAL) return true;
-    return lightRect.overlaps(d.rect) && (!boxTest || sphereTouchesBox(l.position, l.range, d.bounds));
+    return lightRect.overlaps(d.rect) &&
+           (!boxTest || sphereTouchesBox(l.position, l.range, d.bounds));
 }
 
 } // namespace
@@ -134,21 +138,27 @@ LightPlan planLights(const SceneGpu& scene, bool lightBlended) {
     auto opaque = visibleDraws(scene, DrawFilter::Opaque);
     auto masked = visibleDraws(scene, DrawFilter::Mask);
     auto blended = visibleDraws(scene, DrawFilter::Blend);
-    for (const VisibleDraw& v : opaque) plan.opaque.push_back(v.draw);
-    for (const VisibleDraw& v : masked) plan.masked.push_back(v.draw);
-    for (const VisibleDraw& v : blended) plan.blended.push_back({v.draw, {}});
+    for (const VisibleDraw& v : opaque)
+        plan.opaque.push_back(v.draw);
+    for (const VisibleDraw& v : masked)
+        plan.masked.push_back(v.draw);
+    for (const VisibleDraw& v : blended)
+        plan.blended.push_back({v.draw, {}});
 
     const std::vector<gpu::LightGpu>& lights = scene.shadingLights();
     const bool boxTest = shadedInsideBox(f);
     for (uint32_t i = 0; i < scene.lightCount(); ++i) {
         const gpu::LightGpu& l = lights[i];
-        if (l.type == TP_LIGHT_DIRECTIONAL && plan.baseDirectional.size() < TP_MP_MAX_BASE_DIRECTIONAL) {
+        if (l.type == TP_LIGHT_DIRECTIONAL &&
+            plan.baseDirectional.size() < TP_MP_MAX_BASE_DIRECTIONAL) {
             plan.baseDirectional.push_back(i);
             continue;
         }
         ++plan.localLights;
-        LightBatch batch{i, l.type == TP_LIGHT_DIRECTIONAL ? fullScreen(f)
-                                                            : sphereScreenRect(f, l.position, l.range), {}};
+        LightBatch batch{i,
+                         l.type == TP_LIGHT_DIRECTIONAL ? fullScreen(f)
+                                                        : sphereScreenRect(f, l.position, l.range),
+                         {}};
         uint32_t meshes = 0;
         if (!batch.scissor.empty()) {
             for (auto* list : {&opaque, &masked})

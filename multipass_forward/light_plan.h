@@ -46,9 +46,9 @@ struct BlendedDraw {
 };
 
 struct LightPlan {
-    std::vector<uint32_t> baseDirectional; // evaluated in the base pass
-    std::vector<LightBatch> batches;       // light passes over opaque + masked draws
-    std::vector<BlendedDraw> blended;      // back to front, as the reference draws them
+    std::vector<uint32_t> baseDirectional;       // evaluated in the base pass
+    std::vector<LightBatch> batches;             // light passes over opaque + masked draws
+    std::vector<BlendedDraw> blended;            // back to front, as the reference draws them
     std::vector<const DrawItem*> opaque, masked; // draws on screen (prepass and base pass)
     uint32_t localLights = 0;   // point/spot lights (and directional ones beyond the base's)
     uint32_t lightsSkipped = 0; // of those: off-screen or touching no draw on screen

@@ -15,16 +15,21 @@ const ChoiceKnob<Accum>& accumKnob() {
 const ChoiceKnob<BlendedLights>& blendedLightsKnob() {
     static const ChoiceKnob<BlendedLights> k{
         "blended-lights",
-        {{BlendedLights::Under, "under"}, {BlendedLights::Additive, "additive"}, {BlendedLights::OnePass, "one-pass"}},
+        {{BlendedLights::Under, "under"},
+         {BlendedLights::Additive, "additive"},
+         {BlendedLights::OnePass, "one-pass"}},
         "Multipass forward lights on blended surfaces: under (a pass per light, composited under "
         "the draw's own nearer layers: exact where a mesh overlaps itself), additive (the textbook "
-        "pass per light, alpha * light added: too bright by a_near * a_far * L_far where it does) or "
+        "pass per light, alpha * light added: too bright by a_near * a_far * L_far where it does) "
+        "or "
         "one-pass (every light in the blended draw's one shading pass, as forward engines light "
         "transparent objects)"};
     return k;
 }
 
-KnobSchema knobs() { return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob()}; }
+KnobSchema knobs() {
+    return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob()};
+}
 
 Settings readSettings(const RenderSettings& s) {
     return {s.width, s.height, readSampling(s), accumKnob().in(s), blendedLightsKnob().in(s)};

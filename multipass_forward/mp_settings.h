@@ -6,7 +6,7 @@
 
 namespace tp::mp {
 
-enum class Accum { Fp32, Fp16 };                      // --accum
+enum class Accum { Fp32, Fp16 };                       // --accum
 enum class BlendedLights { Under, Additive, OnePass }; // --blended-lights
 
 struct Settings {

@@ -16,9 +16,10 @@ using namespace mp;
 class MultipassForwardRenderer final : public Renderer {
   public:
     explicit MultipassForwardRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), settings_(info.settings), mp_(readSettings(info.settings)),
+        : ctx_(info.ctx), scene_(info.scene), settings_(info.settings),
+          mp_(readSettings(info.settings)),
           accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
-                                                    : VK_FORMAT_R32G32B32A32_SFLOAT),
+                                                : VK_FORMAT_R32G32B32A32_SFLOAT),
           plan_(planLights(info.scene, mp_.blendedLights != BlendedLights::OnePass)) {}
 
     ~MultipassForwardRenderer() override {
@@ -33,19 +34,25 @@ class MultipassForwardRenderer final : public Renderer {
         createTargets(graph);
         // The last pass that shades resolves the per-sample target into hdr.
         const bool hasLights = !plan_.batches.empty(), hasBlended = !plan_.blended.empty();
-        // Masked materials' alpha test per sample under MSAA, as the reference: the coverage matches.
+        // Masked materials' alpha test per sample under MSAA, as the reference: the coverage
+        // matches.
         prepass_ = std::make_unique<passes::DepthPrepass>(
-            ctx_, scene_, passes::DepthPrepassParams{mp_.sampling.samples, passes::MaskedRate::Sample, plan_.opaque, plan_.masked});
-        prepass_->plan(graph, {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
+            ctx_, scene_,
+            passes::DepthPrepassParams{mp_.sampling.samples, passes::MaskedRate::Sample,
+                                       plan_.opaque, plan_.masked});
+        prepass_->plan(graph,
+                       {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;
-        graph.addPass("base_pass", shadingUses(t_, last), [this, last](PassContext& pc) { base_->record(pc, t_, last); });
+        graph.addPass("base_pass", shadingUses(t_, last),
+                      [this, last](PassContext& pc) { base_->record(pc, t_, last); });
         if (hasLights) {
             last = !hasBlended;
             graph.addPass("light_passes", shadingUses(t_, last),
                           [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
         }
         if (hasBlended)
-            graph.addPass("blended", shadingUses(t_, true), [this](PassContext& pc) { blended_->record(pc, t_, true); });
+            graph.addPass("blended", shadingUses(t_, true),
+                          [this](PassContext& pc) { blended_->record(pc, t_, true); });
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
     }
@@ -64,14 +71,17 @@ class MultipassForwardRenderer final : public Renderer {
   private:
     void createTargets(FrameGraph& graph) {
         const bool fp16 = accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT;
-        const std::string accum = fp16 ? "accumulated radiance, fp16 (resolved)" : "accumulated radiance, fp32 (resolved)";
+        const std::string accum = fp16 ? "accumulated radiance, fp16 (resolved)"
+                                       : "accumulated radiance, fp32 (resolved)";
         t_.hdr = graph.createImage("hdr", {accumFormat_, 0, 0, VK_SAMPLE_COUNT_1_BIT, accum});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                "prepass depth (resolved: sample 0)"});
         if (settings_.msaa > 1) {
             const auto samples = VkSampleCountFlagBits(settings_.msaa);
-            t_.hdrMsaa = graph.createImage("hdr_msaa", {accumFormat_, 0, 0, samples, "per-sample accumulation"});
-            t_.depthMsaa = graph.createImage("depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "per-sample prepass depth"});
+            t_.hdrMsaa = graph.createImage(
+                "hdr_msaa", {accumFormat_, 0, 0, samples, "per-sample accumulation"});
+            t_.depthMsaa = graph.createImage(
+                "depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "per-sample prepass depth"});
         }
     }
 
@@ -92,8 +102,10 @@ class MultipassForwardRenderer final : public Renderer {
 RendererStats MultipassForwardRenderer::stats() const {
     RendererStats s;
     auto count = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
-    const uint32_t lightDraws = lights_ ? lights_->draws() : 0, blendDraws = blended_ ? blended_->draws() : 0;
-    const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0, baseDraws = base_ ? base_->draws() : 0;
+    const uint32_t lightDraws = lights_ ? lights_->draws() : 0,
+                   blendDraws = blended_ ? blended_->draws() : 0;
+    const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0,
+                   baseDraws = base_ ? base_->draws() : 0;
     count("draws", double(prepassDraws + baseDraws + lightDraws + blendDraws));
     count("depth_prepass_draws", prepassDraws);
     count("base_pass_draws", baseDraws);
@@ -108,18 +120,23 @@ RendererStats MultipassForwardRenderer::stats() const {
     count("meshes_per_light_max", plan_.meshesPerLightMax);
     count("accumulation_bits", accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT ? 16.0 : 32.0);
     if (plan_.batches.empty())
-        s.leftOut.push_back({"light_passes", plan_.localLights ? "no local light touches a mesh on screen"
-                                                               : "no point or spot lights"});
+        s.leftOut.push_back({"light_passes", plan_.localLights
+                                                 ? "no local light touches a mesh on screen"
+                                                 : "no point or spot lights"});
     if (plan_.blended.empty())
-        s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend) ? "no blended draw on screen"
-                                                                               : "no blended materials"});
+        s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend)
+                                                 ? "no blended draw on screen"
+                                                 : "no blended materials"});
     if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
     if (!plan_.blended.empty() && mp_.blendedLights == BlendedLights::Additive)
         s.leftOut.push_back({"blended_indices_reversed and transmittance resets",
-                             "--blended-lights additive (the textbook pass: not exact where a blended mesh overlaps itself)"});
+                             "--blended-lights additive (the textbook pass: not exact where a "
+                             "blended mesh overlaps itself)"});
     if (!plan_.blended.empty() && mp_.blendedLights == BlendedLights::OnePass)
-        s.leftOut.push_back({"blended light passes", "--blended-lights one-pass: every light in the blended composite"});
-    if (plan_.masked.empty()) s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
+        s.leftOut.push_back({"blended light passes",
+                             "--blended-lights one-pass: every light in the blended composite"});
+    if (plan_.masked.empty())
+        s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
     return s;
 }
 

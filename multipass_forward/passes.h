@@ -1,8 +1,9 @@
 #pragma once
 // The passes of multipass forward, one file each: base_pass.cpp, light_passes.cpp,
-// blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each creates its pipelines in its constructor (after
-// the graph allocated resources) and records into the targets below. They share the scene's
-// pipeline layout (set 0 + DrawPush); nothing has a set 1.
+// blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each
+// creates its pipelines in its constructor (after the graph allocated resources) and records into
+// the targets below. They share the scene's pipeline layout (set 0 + DrawPush); nothing has a
+// set 1.
 #include <string>
 #include <vector>
 
@@ -11,8 +12,8 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
-#include "multipass_forward/mp_settings.h"
 #include "multipass_forward/light_plan.h"
+#include "multipass_forward/mp_settings.h"
 #include "multipass_forward/multipass_shared.h"
 
 namespace tp {
@@ -24,8 +25,8 @@ namespace tp::mp {
 // The accumulation target and depth every pass renders into: the single-sample exported
 // images at 1x, the per-sample ones under MSAA (resolved by the last pass into hdr).
 struct Targets {
-    ResourceHandle hdr, depth;          // exported
-    ResourceHandle hdrMsaa, depthMsaa;  // valid only when msaa > 1
+    ResourceHandle hdr, depth;         // exported
+    ResourceHandle hdrMsaa, depthMsaa; // valid only when msaa > 1
     ResourceHandle color() const { return hdrMsaa.valid() ? hdrMsaa : hdr; }
     ResourceHandle depthTarget() const { return depthMsaa.valid() ? depthMsaa : depth; }
 };

@@ -8,7 +8,8 @@
 namespace tp::mp {
 
 std::vector<PassUse> shadingUses(const Targets& t, bool resolve) {
-    std::vector<PassUse> uses = {{t.color(), Use::ColorAttachment}, {t.depthTarget(), Use::DepthTest}};
+    std::vector<PassUse> uses = {{t.color(), Use::ColorAttachment},
+                                 {t.depthTarget(), Use::DepthTest}};
     if (resolve && t.hdrMsaa.valid()) uses.push_back({t.hdr, Use::ColorResolve});
     return uses;
 }

@@ -61,13 +61,15 @@ void ViewerApp::startExport(const std::string& dir) {
     render.insert(render.end(), {"--pipeline", state_.pipelineA, "--out", dir + "/render"});
     std::vector<std::string> compare = exportArguments(state_, "compare", camera, ev);
     compare.insert(compare.begin(), options_.exe);
-    std::string pipelines; // A then B, without the reference (compare always renders it) or a repeat
+    std::string
+        pipelines; // A then B, without the reference (compare always renders it) or a repeat
     for (const std::string& p : {state_.pipelineA, state_.pipelineB})
         if (p != kReferenceRenderer && pipelines != p && pipelines.rfind(p + ",", 0) != 0)
             pipelines += (pipelines.empty() ? "" : ",") + p;
     if (pipelines.empty()) pipelines = cli::defaultPipelineList();
     compare.insert(compare.end(), {"--pipelines", pipelines, "--out", dir + "/compare"});
-    if (!exporter_.start({render, compare}, dir + "/export.log")) error_ = "an export is still running";
+    if (!exporter_.start({render, compare}, dir + "/export.log"))
+        error_ = "an export is still running";
 }
 
 } // namespace tp::view

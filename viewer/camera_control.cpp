@@ -12,7 +12,8 @@ namespace {
 constexpr float kMaxPitchCos = 0.995f;
 
 glm::vec3 rotated(glm::vec3 v, glm::vec3 axis, float degrees) {
-    return glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::normalize(axis)) * glm::vec4(v, 0.0f));
+    return glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::normalize(axis)) *
+                     glm::vec4(v, 0.0f));
 }
 
 // Yaw about `up`, then pitch about the right axis, refusing a pitch that would pass the pole.
@@ -27,7 +28,9 @@ glm::vec3 turn(glm::vec3 dir, glm::vec3 up, float yaw, float pitch) {
 
 } // namespace
 
-float moveStep(const Camera& c) { return std::max(glm::length(c.target - c.position) / 20.0f, 1e-3f); }
+float moveStep(const Camera& c) {
+    return std::max(glm::length(c.target - c.position) / 20.0f, 1e-3f);
+}
 
 void flyMove(Camera& c, float forward, float right, float up) {
     glm::vec3 f = c.target - c.position;

@@ -24,7 +24,8 @@ void blit(const ImageRGBA& display, Composite& out, uint32_t height, uint32_t x0
             uint32_t sy = uint32_t(uint64_t(y) * display.height / height);
             const float* p = display.at(sx, sy);
             uint8_t* o = &out.rgba[(size_t(y) * out.width + x) * 4];
-            for (int c = 0; c < 3; ++c) o[c] = toByte(p[c]);
+            for (int c = 0; c < 3; ++c)
+                o[c] = toByte(p[c]);
             o[3] = 255;
         }
 }
@@ -40,12 +41,14 @@ void composeSplit(const CompositeInput& in, Composite& out, uint32_t height) {
     const ImageRGBA* left = in.flip ? in.b : in.a;
     const ImageRGBA* right = in.flip ? in.a : in.b;
     // A's columns end where B's begin; at split 1 that is past the last column (A whole).
-    const uint32_t boundary = std::min(out.width, uint32_t(std::floor(std::clamp(in.split, 0.0f, 1.0f) * float(out.width))));
+    const uint32_t boundary = std::min(
+        out.width, uint32_t(std::floor(std::clamp(in.split, 0.0f, 1.0f) * float(out.width))));
     if (left) blit(tonemapToDisplay(*left, in.exposureEv), out, height, 0, boundary);
     if (right) blit(tonemapToDisplay(*right, in.exposureEv), out, height, boundary, out.width);
     if (!left || !right) out.note = "rendering...";
     // The divider only where both sides show something (at 0 or 1 the whole image is one side).
-    if (in.split > 0.0f && in.split < 1.0f) drawDivider(out, dividerColumn(in.split, out.width), height);
+    if (in.split > 0.0f && in.split < 1.0f)
+        drawDivider(out, dividerColumn(in.split, out.width), height);
 }
 
 void composeDifference(const CompositeInput& in, Composite& out) {
@@ -73,11 +76,16 @@ Composite compose(const CompositeInput& in, uint32_t width, uint32_t height) {
     out.width = width;
     out.height = height + (in.mode == DisplayMode::Difference ? kLegendHeight : 0);
     out.rgba.assign(size_t(out.width) * out.height * 4, 0);
-    for (size_t i = 3; i < out.rgba.size(); i += 4) out.rgba[i] = 255;
-    if (in.mode == DisplayMode::Split) composeSplit(in, out, height);
-    else if (in.mode == DisplayMode::Difference) composeDifference(in, out);
-    else if (in.overlay) blit(*in.overlay, out, height, 0, width);
-    else out.note = "this pipeline has no such debug image (or it is being rendered)";
+    for (size_t i = 3; i < out.rgba.size(); i += 4)
+        out.rgba[i] = 255;
+    if (in.mode == DisplayMode::Split)
+        composeSplit(in, out, height);
+    else if (in.mode == DisplayMode::Difference)
+        composeDifference(in, out);
+    else if (in.overlay)
+        blit(*in.overlay, out, height, 0, width);
+    else
+        out.note = "this pipeline has no such debug image (or it is being rendered)";
     return out;
 }
 

@@ -19,7 +19,7 @@ inline constexpr uint8_t kDividerRgb[3] = {255, 176, 0};
 inline constexpr uint32_t kLegendHeight = 24;
 
 struct CompositeInput {
-    const ImageRGBA* a = nullptr;       // linear HDR, null until rendered
+    const ImageRGBA* a = nullptr; // linear HDR, null until rendered
     const ImageRGBA* b = nullptr;
     const ImageRGBA* overlay = nullptr; // display-space debug image (any size: scaled)
     DisplayMode mode = DisplayMode::Split;

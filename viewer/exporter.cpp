@@ -9,7 +9,8 @@ namespace {
 
 std::string quoted(const std::string& arg) {
     std::string out = "'";
-    for (char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    for (char c : arg)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return out + "'";
 }
 
@@ -29,7 +30,8 @@ std::vector<std::string> exportArguments(const ViewState& s, const std::string& 
     if (o.strict) a.push_back("--strict");
     a.insert(a.end(), {"--res", std::to_string(s.width) + "x" + std::to_string(s.height), "--msaa",
                        std::to_string(s.msaa)});
-    for (const auto& [name, value] : s.knobs) a.insert(a.end(), {"--" + name, value});
+    for (const auto& [name, value] : s.knobs)
+        a.insert(a.end(), {"--" + name, value});
     char ev[32];
     std::snprintf(ev, sizeof(ev), "%.6g", exposureEv);
     a.insert(a.end(), {"--exposure", ev});
@@ -53,7 +55,8 @@ bool Exporter::start(std::vector<std::vector<std::string>> commands, std::string
         std::string result = "export done: see " + log;
         for (const std::vector<std::string>& argv : commands) {
             std::string line;
-            for (const std::string& a : argv) line += quoted(a) + " ";
+            for (const std::string& a : argv)
+                line += quoted(a) + " ";
             line += ">> " + quoted(log) + " 2>&1";
             int rc = std::system(line.c_str());
             if (rc != 0) {

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <thread>
 
-#include <imgui.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include "core/gpu/context.h"
 #include "core/gpu/readback.h"
@@ -27,7 +27,8 @@ struct Target {
         ImageDesc d;
         d.format = VK_FORMAT_R8G8B8A8_UNORM;
         d.width = w, d.height = h;
-        d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
         image = createImage(ctx, d, {"viewer", "", "ui_target", "the offscreen UI frame"});
         extent = {w, h};
         framebuffer = ui.createFramebuffer(image.view, extent);
@@ -58,7 +59,8 @@ int runHeadless(const LoopSetup& setup) {
     {
         UiRenderer ui(ctx, VK_FORMAT_R8G8B8A8_UNORM, 2, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
         ViewerApp app(ctx, setup.viewer);
-        ScriptRunner runner(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds, true);
+        ScriptRunner runner(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds,
+                            true);
         ScriptMouse mouse;
         Target target;
         ImGuiIO& io = ImGui::GetIO();
@@ -81,7 +83,8 @@ int runHeadless(const LoopSetup& setup) {
                 if (app.takeSceneDirty()) ui.setScene(app.scene());
                 VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
                 VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-                ui.record(cmd, target.image.image, target.framebuffer, target.extent, ImGui::GetDrawData());
+                ui.record(cmd, target.image.image, target.framebuffer, target.extent,
+                          ImGui::GetDrawData());
                 VK_CHECK(vkEndCommandBuffer(cmd));
                 ctx.submitAndWait(cmd);
                 std::optional<ImageRGBA> shot;

@@ -6,7 +6,8 @@
 
 namespace tp::view {
 
-std::optional<glm::dvec3> surfaceAt(const Camera& camera, const ImageR32& depth, uint32_t x, uint32_t y) {
+std::optional<glm::dvec3> surfaceAt(const Camera& camera, const ImageR32& depth, uint32_t x,
+                                    uint32_t y) {
     if (x >= depth.width || y >= depth.height) return std::nullopt;
     const double d = depth.r[size_t(y) * depth.width + x];
     if (!(d > 0.0)) return std::nullopt; // the far plane / sky

@@ -15,7 +15,8 @@
 namespace tp::view {
 
 // World position of the surface at pixel (x, y) (reverse-Z depth, 0 = nothing there).
-std::optional<glm::dvec3> surfaceAt(const Camera& camera, const ImageR32& depth, uint32_t x, uint32_t y);
+std::optional<glm::dvec3> surfaceAt(const Camera& camera, const ImageR32& depth, uint32_t x,
+                                    uint32_t y);
 // Indices into `lights` of those that reach `p`.
 std::vector<uint32_t> lightsReaching(const std::vector<Light>& lights, const glm::dvec3& p);
 

@@ -10,7 +10,8 @@ namespace tp::view {
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 } // namespace
@@ -20,7 +21,9 @@ RenderWorker::RenderWorker(ContextOptions options, std::string label)
     thread_ = std::thread([this] { loop(); });
 }
 
-RenderWorker::~RenderWorker() { stop(); }
+RenderWorker::~RenderWorker() {
+    stop();
+}
 
 std::vector<std::string> RenderWorker::stop() {
     {
@@ -54,8 +57,10 @@ bool RenderWorker::idle() const {
 
 void RenderWorker::loop() {
     Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(options_);
-    if (ctx) ctx_ = std::move(*ctx);
-    else contextError_ = ctx.error();
+    if (ctx)
+        ctx_ = std::move(*ctx);
+    else
+        contextError_ = ctx.error();
     for (;;) {
         RenderJob job;
         {
@@ -104,7 +109,8 @@ void RenderWorker::prepareScene(const RenderJob& job, RenderOutcome& out) {
             if (!file) throw cli::UsageError(file.error());
             lights = std::move(*file);
         } else {
-            std::vector<Light> generated = generateLights(scene_->bounds, cli::generatorOptions(s.scene));
+            std::vector<Light> generated =
+                generateLights(scene_->bounds, cli::generatorOptions(s.scene));
             lights.insert(lights.end(), generated.begin(), generated.end());
         }
         scene_->lights = std::move(lights);
@@ -127,7 +133,8 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     }
     try {
         prepareScene(job, out);
-    } catch (const std::exception& e) { // cli::UsageError: a scene or lights file that fails to load
+    } catch (
+        const std::exception& e) { // cli::UsageError: a scene or lights file that fails to load
         out.error = e.what();
         sceneKey_.clear();
         return out;
@@ -155,10 +162,13 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
         auto runStart = std::chrono::steady_clock::now();
         Result<const RendererEntry*> entry = findRenderer(name);
         try {
-            Result<RunResult> run = entry ? runRenderer(*ctx_, *gpuScene_, **entry, features, settings, runOptions)
-                                          : Result<RunResult>(Error{entry.error()});
-            if (run) image.run = std::move(*run);
-            else image.error = run.error();
+            Result<RunResult> run =
+                entry ? runRenderer(*ctx_, *gpuScene_, **entry, features, settings, runOptions)
+                      : Result<RunResult>(Error{entry.error()});
+            if (run)
+                image.run = std::move(*run);
+            else
+                image.error = run.error();
         } catch (const std::exception& e) { // a Vulkan failure: shown in the viewer, not a crash
             image.error = name + ": " + e.what();
         }

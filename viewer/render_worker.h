@@ -26,8 +26,8 @@ struct RenderJob {
     uint64_t id = 0;
     ViewState state;
     std::vector<std::string> pipelines;
-    bool debug = false;   // renderers export their debug images (overlays)
-    std::string key;      // renderKey/referenceKey of `state`: tags the outcome
+    bool debug = false; // renderers export their debug images (overlays)
+    std::string key;    // renderKey/referenceKey of `state`: tags the outcome
     uint32_t timedFrames = 1;
 };
 
@@ -47,10 +47,10 @@ struct RenderOutcome {
     double totalMs = 0;  // the whole job
     std::vector<PipelineImage> images;
     std::vector<LedgerEntry> sceneMemory; // the shared scene upload (owner "scene")
-    Camera sceneCamera;  // the scene's own camera (for "reset camera")
+    Camera sceneCamera;                   // the scene's own camera (for "reset camera")
     size_t lightCount = 0;
     std::shared_ptr<const std::vector<Light>> lights; // the job's lights (the inspector's)
-    Camera camera;                                     // the camera it rendered with
+    Camera camera;                                    // the camera it rendered with
     size_t triangleCount = 0;
 };
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -33,7 +33,9 @@ const std::map<std::string, CommandSpec>& commands() {
         {"msaa", {1, 1, "msaa N"}},
         {"res", {1, 1, "res WIDTHxHEIGHT"}},
         {"exposure", {1, 1, "exposure auto|EV"}},
-        {"camera", {1, 3, "camera move F R U | orbit YAW PITCH | turn YAW PITCH | reset | load FILE | save FILE"}},
+        {"camera",
+         {1, 3,
+          "camera move F R U | orbit YAW PITCH | turn YAW PITCH | reset | load FILE | save FILE"}},
         {"split", {1, 1, "split SHARE (0 to 1)"}},
         {"flip", {0, 1, "flip [on|off]"}},
         {"mode", {1, 2, "mode split|difference|overlay [DEBUG_IMAGE]"}},
@@ -74,11 +76,13 @@ Result<std::vector<ScriptLine>> readScript(const std::string& path) {
         if (size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
         std::istringstream words(text);
         ScriptLine line{n, {}};
-        for (std::string w; words >> w;) line.words.push_back(w);
+        for (std::string w; words >> w;)
+            line.words.push_back(w);
         if (line.words.empty()) continue;
         auto it = commands().find(line.words[0]);
         const std::string where = path + ":" + std::to_string(n) + ": ";
-        if (it == commands().end()) return refuse(where + "unknown command '" + line.words[0] + "'");
+        if (it == commands().end())
+            return refuse(where + "unknown command '" + line.words[0] + "'");
         size_t args = line.words.size() - 1;
         if (args < it->second.minArgs || args > it->second.maxArgs)
             return refuse(where + "expected '" + it->second.usage + "'");
@@ -89,8 +93,8 @@ Result<std::vector<ScriptLine>> readScript(const std::string& path) {
 
 ScriptRunner::ScriptRunner(std::vector<ScriptLine> lines, std::string path, std::string outDir,
                            double waitLimitSeconds, bool screenshots)
-    : lines_(std::move(lines)), path_(std::move(path)), out_(std::move(outDir)), waitLimit_(waitLimitSeconds),
-      screenshots_(screenshots) {}
+    : lines_(std::move(lines)), path_(std::move(path)), out_(std::move(outDir)),
+      waitLimit_(waitLimitSeconds), screenshots_(screenshots) {}
 
 void ScriptRunner::fail(const ScriptLine& line, const std::string& message) const {
     throw ScriptError(printableLine(path_ + ":" + std::to_string(line.number) + ": " + message));
@@ -100,7 +104,8 @@ void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {
     while (true) {
         if (blocked() && stillWaiting(app, mouse)) return;
         if (next_ >= lines_.size()) return;
-        if (next_ != startedLine_) waitStart_ = std::chrono::steady_clock::now(); // not when a line runs again
+        if (next_ != startedLine_)
+            waitStart_ = std::chrono::steady_clock::now(); // not when a line runs again
         startedLine_ = next_;
         current_ = &lines_[next_++];
         apply(app, mouse, *current_);
@@ -110,9 +115,11 @@ void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {
 
 // False when the current wait is over (the next line may run).
 bool ScriptRunner::stillWaiting(ViewerApp& app, ScriptMouse& mouse) {
-    double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+    double waited =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
     if (waited > waitLimit_)
-        fail(*current_, "still waiting after " + std::to_string(int(waitLimit_)) + " s (--wait-limit)");
+        fail(*current_,
+             "still waiting after " + std::to_string(int(waitLimit_)) + " s (--wait-limit)");
     switch (wait_) {
     case Wait::Frames:
     case Wait::Screenshot:
@@ -128,7 +135,8 @@ bool ScriptRunner::stillWaiting(ViewerApp& app, ScriptMouse& mouse) {
         break;
     case Wait::Export:
         if (app.exporting()) return true;
-        if (app.exportStatus().find("failed") != std::string::npos) fail(*current_, app.exportStatus());
+        if (app.exportStatus().find("failed") != std::string::npos)
+            fail(*current_, app.exportStatus());
         break;
     case Wait::Drag:
         if (dragStage_ == 1) { // pressed last frame: move
@@ -146,7 +154,8 @@ bool ScriptRunner::stillWaiting(ViewerApp& app, ScriptMouse& mouse) {
         if (!app.settled()) return true;
         if (benchStep(app)) return true;
         break;
-    case Wait::None: break;
+    case Wait::None:
+        break;
     }
     wait_ = Wait::None;
     return false;
@@ -181,19 +190,23 @@ uint64_t ScriptRunner::integerAt(const ScriptLine& line, size_t i, uint64_t lo, 
     uint64_t v = 0;
     auto [end, err] = std::from_chars(word.data(), word.data() + word.size(), v);
     if (err != std::errc() || end != word.data() + word.size() || v < lo || v > hi)
-        fail(line, "'" + word + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+        fail(line, "'" + word + "' is not an integer from " + std::to_string(lo) + " to " +
+                       std::to_string(hi));
     return v;
 }
 
 void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line) {
     const std::string& cmd = line.words[0];
-    if (cmd == "pipeline" || cmd == "knob" || cmd == "lights" || cmd == "msaa" || cmd == "res" || cmd == "exposure")
+    if (cmd == "pipeline" || cmd == "knob" || cmd == "lights" || cmd == "msaa" || cmd == "res" ||
+        cmd == "exposure")
         applyViewSetting(app, line);
-    else if (cmd == "camera") applyCamera(app, line);
-    else if (cmd == "wait" || cmd == "frames" || cmd == "screenshot" || cmd == "stats" || cmd == "export" ||
-             cmd == "bench" || cmd == "expect-error")
+    else if (cmd == "camera")
+        applyCamera(app, line);
+    else if (cmd == "wait" || cmd == "frames" || cmd == "screenshot" || cmd == "stats" ||
+             cmd == "export" || cmd == "bench" || cmd == "expect-error")
         applyWaitOrOutput(app, line);
-    else applyDisplay(app, mouse, line);
+    else
+        applyDisplay(app, mouse, line);
 }
 
 // What the image depends on: a change here renders again. Each value is checked as the
@@ -215,12 +228,13 @@ void ScriptRunner::applyViewSetting(ViewerApp& app, const ScriptLine& line) {
         if (Status c = checkSetting(kMsaaSetting, w[1]); !c) fail(line, c.error());
         const uint32_t n = uint32_t(std::stoul(w[1]));
         // The panel greys such a count out; a script is refused with the same reason.
-        if (!app.supportsMsaa(n)) fail(line, "msaa " + w[1] + ": not supported by " + app.deviceName());
+        if (!app.supportsMsaa(n))
+            fail(line, "msaa " + w[1] + ": not supported by " + app.deviceName());
         s.msaa = n;
     } else if (cmd == "res") {
         if (!parseViewResolution(w[1], s.width, s.height))
-            fail(line, "expected 'res WIDTHxHEIGHT', each side " + std::to_string(kViewMinSide) + " to " +
-                           std::to_string(kViewMaxSide));
+            fail(line, "expected 'res WIDTHxHEIGHT', each side " + std::to_string(kViewMinSide) +
+                           " to " + std::to_string(kViewMaxSide));
     } else if (cmd == "exposure") {
         s.autoExposure = w[1] == "auto";
         if (!s.autoExposure) s.exposureEv = numberAt(line, 1);
@@ -230,12 +244,18 @@ void ScriptRunner::applyViewSetting(ViewerApp& app, const ScriptLine& line) {
 void ScriptRunner::applyLights(ViewerApp& app, const ScriptLine& line) {
     const std::vector<std::string>& w = line.words;
     cli::SceneOptions o = app.state().scene;
-    if (w[1] == "count") o.lightCount = int(integerAt(line, 2, 0, 1u << 30));
-    else if (w[1] == "seed") o.seed = integerAt(line, 2, 0, UINT64_MAX);
-    else if (w[1] == "types") o.lightTypes = w[2];
-    else if (w[1] == "range") o.lightRadius = w[2];
-    else if (w[1] == "intensity") o.lightIntensity = w[2];
-    else fail(line, "expected 'lights count|seed|types|range|intensity VALUE'");
+    if (w[1] == "count")
+        o.lightCount = int(integerAt(line, 2, 0, 1u << 30));
+    else if (w[1] == "seed")
+        o.seed = integerAt(line, 2, 0, UINT64_MAX);
+    else if (w[1] == "types")
+        o.lightTypes = w[2];
+    else if (w[1] == "range")
+        o.lightRadius = w[2];
+    else if (w[1] == "intensity")
+        o.lightIntensity = w[2];
+    else
+        fail(line, "expected 'lights count|seed|types|range|intensity VALUE'");
     try {
         (void)cli::generatorOptions(o);
     } catch (const std::exception& e) {
@@ -247,21 +267,31 @@ void ScriptRunner::applyLights(ViewerApp& app, const ScriptLine& line) {
 void ScriptRunner::applyCamera(ViewerApp& app, const ScriptLine& line) {
     const std::vector<std::string>& w = line.words;
     if (!app.sceneLoaded()) { // a move needs the scene's camera: run this line again next frame
-        if (!app.lastError().empty() && app.settled()) fail(line, "no scene to move in: " + app.lastError());
-        double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
-        if (waited > waitLimit_) fail(line, "the scene did not load in " + std::to_string(int(waitLimit_)) + " s");
+        if (!app.lastError().empty() && app.settled())
+            fail(line, "no scene to move in: " + app.lastError());
+        double waited =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+        if (waited > waitLimit_)
+            fail(line, "the scene did not load in " + std::to_string(int(waitLimit_)) + " s");
         --next_;
         wait_ = Wait::Frames, framesLeft_ = 1;
         return;
     }
     auto num = [&](size_t i) { return numberAt(line, i); };
-    if (w[1] == "reset") app.resetCamera();
-    else if (w[1] == "move" && w.size() == 5) app.moveCamera(num(2), num(3), num(4));
-    else if (w[1] == "orbit" && w.size() == 4) app.orbitCamera(num(2), num(3));
-    else if (w[1] == "turn" && w.size() == 4) app.turnCamera(num(2), num(3));
-    else if (w[1] == "load" && w.size() == 3) app.loadBookmark(inOut(w[2]));
-    else if (w[1] == "save" && w.size() == 3) app.saveBookmark(inOut(w[2]));
-    else fail(line, std::string("expected '") + commands().at("camera").usage + "'");
+    if (w[1] == "reset")
+        app.resetCamera();
+    else if (w[1] == "move" && w.size() == 5)
+        app.moveCamera(num(2), num(3), num(4));
+    else if (w[1] == "orbit" && w.size() == 4)
+        app.orbitCamera(num(2), num(3));
+    else if (w[1] == "turn" && w.size() == 4)
+        app.turnCamera(num(2), num(3));
+    else if (w[1] == "load" && w.size() == 3)
+        app.loadBookmark(inOut(w[2]));
+    else if (w[1] == "save" && w.size() == 3)
+        app.saveBookmark(inOut(w[2]));
+    else
+        fail(line, std::string("expected '") + commands().at("camera").usage + "'");
     if (!app.lastError().empty()) fail(line, app.lastError());
 }
 
@@ -280,10 +310,14 @@ void ScriptRunner::applyDisplay(ViewerApp& app, ScriptMouse& mouse, const Script
         bool want = w.size() == 1 ? !s.flip : w[1] == "on";
         if (want != s.flip) app.toggleFlip();
     } else if (cmd == "mode") {
-        if (w[1] == "split") s.mode = DisplayMode::Split;
-        else if (w[1] == "difference") s.mode = DisplayMode::Difference;
-        else if (w[1] == "overlay") s.mode = DisplayMode::Overlay;
-        else fail(line, "expected 'mode split|difference|overlay [DEBUG_IMAGE]'");
+        if (w[1] == "split")
+            s.mode = DisplayMode::Split;
+        else if (w[1] == "difference")
+            s.mode = DisplayMode::Difference;
+        else if (w[1] == "overlay")
+            s.mode = DisplayMode::Overlay;
+        else
+            fail(line, "expected 'mode split|difference|overlay [DEBUG_IMAGE]'");
         if (w.size() == 3) s.overlay = w[2];
     } else if (cmd == "hover") {
         mouse.x = num(1), mouse.y = num(2);
@@ -296,8 +330,10 @@ void ScriptRunner::applyDisplay(ViewerApp& app, ScriptMouse& mouse, const Script
         if (w[1].size() != 1 || !applyKey(app, std::toupper(static_cast<unsigned char>(w[1][0]))))
             fail(line, "no such key '" + w[1] + "' (docs/viewer.md lists the keys)");
     } else if (cmd == "reference") {
-        if (w[1] == "now") app.requestReference();
-        else s.reference = w[1] == "on";
+        if (w[1] == "now")
+            app.requestReference();
+        else
+            s.reference = w[1] == "on";
     } else if (cmd == "scene") {
         s.scene.scene = w[1];
         s.cameraFromScene = true;
@@ -329,7 +365,8 @@ void ScriptRunner::applyWaitOrOutput(ViewerApp& app, const ScriptLine& line) {
         wait_ = Wait::Bench;
     } else if (cmd == "expect-error") {
         if (app.lastError().find(w[1]) == std::string::npos)
-            fail(line, "expected an error containing '" + w[1] + "', the viewer shows '" + app.lastError() + "'");
+            fail(line, "expected an error containing '" + w[1] + "', the viewer shows '" +
+                           app.lastError() + "'");
     }
 }
 

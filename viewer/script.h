@@ -38,8 +38,8 @@ struct ScriptMouse {
 
 class ScriptRunner {
   public:
-    ScriptRunner(std::vector<ScriptLine> lines, std::string path, std::string outDir, double waitLimitSeconds,
-                 bool screenshots);
+    ScriptRunner(std::vector<ScriptLine> lines, std::string path, std::string outDir,
+                 double waitLimitSeconds, bool screenshots);
     // Before each UI frame: applies lines until one needs frames to pass.
     void beforeFrame(ViewerApp& app, ScriptMouse& mouse);
     // The frame after beforeFrame must be read back (a screenshot is due).

@@ -33,8 +33,10 @@ nlohmann::json shownJson(const Shown* s) {
     if (s->run) {
         j["gpu_frame_ms"] = frameGpuMs(s);
         j["debug_images"] = nlohmann::json::array();
-        for (const DebugImage& d : s->run->debugImages) j["debug_images"].push_back(d.name);
-        for (const auto& [name, value] : s->run->stats.counters) j["counters"][name] = value;
+        for (const DebugImage& d : s->run->debugImages)
+            j["debug_images"].push_back(d.name);
+        for (const auto& [name, value] : s->run->stats.counters)
+            j["counters"][name] = value;
     }
     return j;
 }
@@ -49,7 +51,9 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
     j["device"] = app.deviceName();
     j["pipeline_a"] = shownJson(app.shownA());
     j["pipeline_b"] = shownJson(app.shownB());
-    j["mode"] = s.mode == DisplayMode::Split ? "split" : s.mode == DisplayMode::Difference ? "difference" : "overlay";
+    j["mode"] = s.mode == DisplayMode::Split        ? "split"
+                : s.mode == DisplayMode::Difference ? "difference"
+                                                    : "overlay";
     j["split"] = s.split;
     j["split_column"] = dividerColumn(s.split, c.width ? c.width : s.width);
     j["flip"] = s.flip;
@@ -58,11 +62,16 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
     j["error"] = app.lastError();
     j["reference_stale"] = app.referenceStale();
     j["last_render_ms"] = app.lastRenderMs();
-    if (const auto& e = app.errorVsReference(); e) j["a_vs_reference"] = {{"rmse", e->rmse}, {"psnr", e->psnr}, {"max_abs", e->maxAbs}};
+    if (const auto& e = app.errorVsReference(); e)
+        j["a_vs_reference"] = {{"rmse", e->rmse}, {"psnr", e->psnr}, {"max_abs", e->maxAbs}};
     const Inspection& i = app.inspection();
     if (i.valid)
-        j["inspection"] = {{"x", i.x}, {"y", i.y}, {"a", {i.a[0], i.a[1], i.a[2]}}, {"b", {i.b[0], i.b[1], i.b[2]}},
-                           {"surface", i.surface}, {"lights", i.lights}};
+        j["inspection"] = {{"x", i.x},
+                           {"y", i.y},
+                           {"a", {i.a[0], i.a[1], i.a[2]}},
+                           {"b", {i.b[0], i.b[1], i.b[2]}},
+                           {"surface", i.surface},
+                           {"lights", i.lights}};
     const Camera& cam = app.state().camera;
     j["camera"] = {{"position", {cam.position.x, cam.position.y, cam.position.z}},
                    {"target", {cam.target.x, cam.target.y, cam.target.z}}};
@@ -89,8 +98,9 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
     j["resolution"] = std::to_string(s.width) + "x" + std::to_string(s.height);
     j["msaa"] = s.msaa;
     j["renders"] = benchRenderMs_.size();
-    j["what"] = "each render: a camera step, the renderer built again, its frame on the GPU, readback; "
-                "the UI frames draw the panels and the scene area meanwhile";
+    j["what"] =
+        "each render: a camera step, the renderer built again, its frame on the GPU, readback; "
+        "the UI frames draw the panels and the scene area meanwhile";
     j["render_ms"] = benchRenderMs_;
     j["render_ms_median"] = median(benchRenderMs_);
     j["renders_per_second"] = median(benchRenderMs_) > 0 ? 1000.0 / median(benchRenderMs_) : 0.0;

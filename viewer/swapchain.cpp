@@ -37,9 +37,12 @@ Swapchain::~Swapchain() {
 }
 
 void Swapchain::destroy() {
-    for (VkFramebuffer fb : framebuffers_) vkDestroyFramebuffer(ctx_.device, fb, nullptr);
-    for (VkImageView v : views_) vkDestroyImageView(ctx_.device, v, nullptr);
-    for (VkSemaphore s : renderDone_) vkDestroySemaphore(ctx_.device, s, nullptr);
+    for (VkFramebuffer fb : framebuffers_)
+        vkDestroyFramebuffer(ctx_.device, fb, nullptr);
+    for (VkImageView v : views_)
+        vkDestroyImageView(ctx_.device, v, nullptr);
+    for (VkSemaphore s : renderDone_)
+        vkDestroySemaphore(ctx_.device, s, nullptr);
     framebuffers_.clear(), views_.clear(), renderDone_.clear(), images_.clear();
     if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
     swapchain_ = VK_NULL_HANDLE;
@@ -53,11 +56,13 @@ void Swapchain::create(uint32_t width, uint32_t height) {
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(ctx_.physical, surface_, &caps));
     extent_ = caps.currentExtent.width != UINT32_MAX
                   ? caps.currentExtent
-                  : VkExtent2D{std::clamp(width, caps.minImageExtent.width, caps.maxImageExtent.width),
-                               std::clamp(height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+                  : VkExtent2D{
+                        std::clamp(width, caps.minImageExtent.width, caps.maxImageExtent.width),
+                        std::clamp(height, caps.minImageExtent.height, caps.maxImageExtent.height)};
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     info.surface = surface_;
-    info.minImageCount = caps.maxImageCount ? std::min(caps.minImageCount + 1, caps.maxImageCount) : caps.minImageCount + 1;
+    info.minImageCount = caps.maxImageCount ? std::min(caps.minImageCount + 1, caps.maxImageCount)
+                                            : caps.minImageCount + 1;
     info.imageFormat = format_;
     info.imageColorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     info.imageExtent = extent_;
@@ -94,9 +99,11 @@ void Swapchain::create(uint32_t width, uint32_t height) {
 
 void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t height) {
     if (width == 0 || height == 0) return; // minimised
-    if (!swapchain_ || stale_ || width != requested_.width || height != requested_.height) create(width, height);
+    if (!swapchain_ || stale_ || width != requested_.width || height != requested_.height)
+        create(width, height);
     uint32_t index = 0;
-    VkResult r = vkAcquireNextImageKHR(ctx_.device, swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
+    VkResult r = vkAcquireNextImageKHR(ctx_.device, swapchain_, UINT64_MAX, acquired_,
+                                       VK_NULL_HANDLE, &index);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
         stale_ = true;
         return;
@@ -108,7 +115,8 @@ void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t 
     VK_CHECK(vkEndCommandBuffer(cmd_));
     VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
     wait.semaphore = acquired_;
-    wait.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT; // the first use is a transfer (the clear)
+    wait.stageMask =
+        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT; // the first use is a transfer (the clear)
     VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
     signal.semaphore = renderDone_[index];
     signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
@@ -129,9 +137,12 @@ void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t 
     present.pSwapchains = &swapchain_;
     present.pImageIndices = &index;
     r = vkQueuePresentKHR(ctx_.queue, &present);
-    if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) stale_ = true;
-    else VK_CHECK(r);
-    // One frame at a time: the command buffer, the acquire semaphore and ImGui's buffers are reused.
+    if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR)
+        stale_ = true;
+    else
+        VK_CHECK(r);
+    // One frame at a time: the command buffer, the acquire semaphore and ImGui's buffers are
+    // reused.
     VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));
     VK_CHECK(vkResetFences(ctx_.device, 1, &fence_));
 }

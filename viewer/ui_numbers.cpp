@@ -28,8 +28,10 @@ Spread spreadOf(const std::deque<double>& values) {
 void timingGraph(const std::string& pipeline, const TimingHistory& h, const std::string& device) {
     ImGui::Text("%s: GPU ms over the last %zu renders on %s", pipeline.c_str(),
                 h.passes.count("frame") ? h.passes.at("frame").size() : size_t(0), device.c_str());
-    if (ImGui::BeginTable(("timing" + pipeline).c_str(), 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
-        for (const char* c : {"pass", "median", "min", "max"}) ImGui::TableSetupColumn(c);
+    if (ImGui::BeginTable(("timing" + pipeline).c_str(), 4,
+                          ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
+        for (const char* c : {"pass", "median", "min", "max"})
+            ImGui::TableSetupColumn(c);
         ImGui::TableHeadersRow();
         for (const std::string& name : h.order) {
             Spread s = spreadOf(h.passes.at(name));
@@ -45,17 +47,20 @@ void timingGraph(const std::string& pipeline, const TimingHistory& h, const std:
     }
     if (h.passes.count("frame")) {
         std::vector<float> values(h.passes.at("frame").begin(), h.passes.at("frame").end());
-        ImGui::PlotLines(("frame ms##" + pipeline).c_str(), values.data(), int(values.size()), 0, nullptr, 0.0f,
-                         FLT_MAX, ImVec2(0, 48));
+        ImGui::PlotLines(("frame ms##" + pipeline).c_str(), values.data(), int(values.size()), 0,
+                         nullptr, 0.0f, FLT_MAX, ImVec2(0, 48));
     }
 }
 
 void ledgerTable(const char* id, const std::vector<LedgerEntry>& entries) {
     uint64_t total = 0;
-    for (const LedgerEntry& e : entries) total += e.bytes;
+    for (const LedgerEntry& e : entries)
+        total += e.bytes;
     ImGui::Text("%s: %.2f MiB", id, double(total) / (1 << 20));
-    if (!ImGui::BeginTable(id, 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) return;
-    for (const char* c : {"pass", "resource", "KiB"}) ImGui::TableSetupColumn(c);
+    if (!ImGui::BeginTable(id, 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp))
+        return;
+    for (const char* c : {"pass", "resource", "KiB"})
+        ImGui::TableSetupColumn(c);
     ImGui::TableHeadersRow();
     for (const LedgerEntry& e : entries) {
         ImGui::TableNextRow();
@@ -88,8 +93,10 @@ void Panels::numbers(ViewerApp& app) {
     }
     for (const Shown* s : {a, app.shownB()}) {
         if (!s || !s->run) continue;
-        if (app.history_.count(s->pipeline)) timingGraph(s->pipeline, app.history_.at(s->pipeline), app.deviceName_);
-        for (const auto& [name, value] : s->run->stats.counters) ImGui::Text("  %s: %.6g", name.c_str(), value);
+        if (app.history_.count(s->pipeline))
+            timingGraph(s->pipeline, app.history_.at(s->pipeline), app.deviceName_);
+        for (const auto& [name, value] : s->run->stats.counters)
+            ImGui::Text("  %s: %.6g", name.c_str(), value);
         ledgerTable(("memory of " + s->pipeline).c_str(), s->run->memory);
         if (s == app.shownB()) break;
     }
@@ -113,9 +120,11 @@ void Panels::inspector(ViewerApp& app) {
     }
     // The lights every pipeline must shade here; a tile's list may hold more (its conservatism).
     std::string list;
-    for (size_t k = 0; k < i.lights.size() && k < 12; ++k) list += (k ? ", " : "") + std::to_string(i.lights[k]);
+    for (size_t k = 0; k < i.lights.size() && k < 12; ++k)
+        list += (k ? ", " : "") + std::to_string(i.lights[k]);
     if (i.lights.size() > 12) list += ", ...";
-    ImGui::TextWrapped("lights reaching this surface: %zu%s%s", i.lights.size(), list.empty() ? "" : ": ", list.c_str());
+    ImGui::TextWrapped("lights reaching this surface: %zu%s%s", i.lights.size(),
+                       list.empty() ? "" : ": ", list.c_str());
 }
 
 void Panels::exporting(ViewerApp& app) {

@@ -55,7 +55,8 @@ void knobControl(const Knob& k, std::string& value) {
             value = std::to_string(std::clamp<int64_t>(v, k.min, k.max));
     }
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s\nallowed: %s; default %s", k.help.c_str(), k.allowedText().c_str(), k.defaultValue.c_str());
+        ImGui::SetTooltip("%s\nallowed: %s; default %s", k.help.c_str(), k.allowedText().c_str(),
+                          k.defaultValue.c_str());
 }
 
 } // namespace
@@ -82,9 +83,12 @@ void Panels::pipelines(ViewerApp& app) {
     if (s.mode == DisplayMode::Overlay) {
         std::vector<std::string> names;
         if (const Shown* a = app.shownA(); a && a->run)
-            for (const DebugImage& d : a->run->debugImages) names.push_back(d.name);
-        if (names.empty()) ImGui::TextDisabled("(debug images of A: rendering...)");
-        else valueCombo("overlay", s.overlay, names);
+            for (const DebugImage& d : a->run->debugImages)
+                names.push_back(d.name);
+        if (names.empty())
+            ImGui::TextDisabled("(debug images of A: rendering...)");
+        else
+            valueCombo("overlay", s.overlay, names);
         if (s.overlay.empty() && !names.empty()) s.overlay = names.front();
     }
 }
@@ -103,7 +107,8 @@ void Panels::knobs(ViewerApp& app) {
         if (value.empty()) value = k.knob.defaultValue;
         knobControl(k.knob, value);
         ImGui::EndDisabled();
-        if (disabled) ImGui::TextDisabled("  %s changes nothing at 1x: only under MSAA", k.knob.name.c_str());
+        if (disabled)
+            ImGui::TextDisabled("  %s changes nothing at 1x: only under MSAA", k.knob.name.c_str());
     }
 }
 
@@ -114,7 +119,8 @@ void Panels::view(ViewerApp& app) {
     if (ImGui::BeginCombo("MSAA", (std::to_string(s.msaa) + "x").c_str())) {
         for (uint32_t n : kMsaaCounts) {
             const bool supported = (app.sampleCounts_ & n) != 0;
-            std::string label = std::to_string(n) + "x" + (supported ? "" : "  (not supported by " + app.deviceName_ + ")");
+            std::string label = std::to_string(n) + "x" +
+                                (supported ? "" : "  (not supported by " + app.deviceName_ + ")");
             ImGuiSelectableFlags flags = supported ? 0 : ImGuiSelectableFlags_Disabled;
             if (ImGui::Selectable(label.c_str(), n == s.msaa, flags)) s.msaa = n;
         }
@@ -193,13 +199,17 @@ void Panels::status(ViewerApp& app) {
         ImGui::TextWrapped("%s", app.error_.c_str());
         ImGui::PopStyleColor();
     }
-    ImGui::Text("last rebuild: %s, %.0f ms (scene/lights %.0f ms)", app.lastRebuilt_.c_str(), app.lastRenderMs_,
-                app.lastSceneMs_);
+    ImGui::Text("last rebuild: %s, %.0f ms (scene/lights %.0f ms)", app.lastRebuilt_.c_str(),
+                app.lastRenderMs_, app.lastSceneMs_);
     for (const Shown* s : {app.shownA(), app.shownB()})
-        if (s) ImGui::Text("%s: %.0f ms to build and render%s", s->pipeline.c_str(), s->buildMs,
-                           s->pipeline == kReferenceRenderer && app.referenceStale() ? " (STALE: another view)" : "");
+        if (s)
+            ImGui::Text("%s: %.0f ms to build and render%s", s->pipeline.c_str(), s->buildMs,
+                        s->pipeline == kReferenceRenderer && app.referenceStale()
+                            ? " (STALE: another view)"
+                            : "");
     if (!app.worker_->idle()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "rendering...");
-    if (!app.referenceWorker_->idle()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "reference rendering in the background...");
+    if (!app.referenceWorker_->idle())
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "reference rendering in the background...");
     if (!app.composite_.note.empty()) ImGui::TextDisabled("%s", app.composite_.note.c_str());
 }
 
@@ -208,7 +218,8 @@ void ViewerApp::drawPanels() {
     const float width = float(options_.panelWidth);
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
-    ImGui::Begin("triptych view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin("triptych view", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-150.0f); // room for the knobs' names
     Panels::status(*this);
     Panels::pipelines(*this);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include <imgui.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
@@ -59,7 +59,8 @@ VkDescriptorPool createPool(VkDevice device) {
 
 } // namespace
 
-UiRenderer::UiRenderer(GpuContext& ctx, VkFormat format, uint32_t imageCount, VkImageLayout finalLayout)
+UiRenderer::UiRenderer(GpuContext& ctx, VkFormat format, uint32_t imageCount,
+                       VkImageLayout finalLayout)
     : ctx_(ctx), format_(format), finalLayout_(finalLayout) {
     renderPass_ = createRenderPass(ctx.device, format);
     pool_ = createPool(ctx.device);
@@ -107,19 +108,21 @@ void UiRenderer::setScene(const Composite& scene) {
         return;
     }
     if (staging_.size < size)
-        staging_ = createBuffer(ctx_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
-                                {"viewer", "", "scene_area", "the composed scene area, copied into each UI frame"});
+        staging_ = createBuffer(
+            ctx_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
+            {"viewer", "", "scene_area", "the composed scene area, copied into each UI frame"});
     std::memcpy(staging_.mapped, scene.rgba.data(), size);
     if (format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB) {
         auto* p = static_cast<uint8_t*>(staging_.mapped);
-        for (VkDeviceSize i = 0; i < size; i += 4) std::swap(p[i], p[i + 2]);
+        for (VkDeviceSize i = 0; i < size; i += 4)
+            std::swap(p[i], p[i + 2]);
     }
     sceneWidth_ = scene.width;
     sceneHeight_ = scene.height;
 }
 
-void UiRenderer::record(VkCommandBuffer cmd, VkImage image, VkFramebuffer framebuffer, VkExtent2D extent,
-                        ImDrawData* drawData) {
+void UiRenderer::record(VkCommandBuffer cmd, VkImage image, VkFramebuffer framebuffer,
+                        VkExtent2D extent, ImDrawData* drawData) {
     // ALL_COMMANDS as the first scope: it chains with a swapchain acquire's semaphore wait.
     imageBarrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
@@ -129,18 +132,21 @@ void UiRenderer::record(VkCommandBuffer cmd, VkImage image, VkFramebuffer frameb
     vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &grey, 1, &range);
     if (sceneWidth_ && sceneHeight_) {
         // The clear and the copy both write: the copy must land after the clear.
-        imageBarrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        imageBarrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT);
         VkBufferImageCopy region{};
         region.bufferRowLength = sceneWidth_; // the scene may be wider than the window: clipped
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {std::min(sceneWidth_, extent.width), std::min(sceneHeight_, extent.height), 1};
-        vkCmdCopyBufferToImage(cmd, staging_.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        region.imageExtent = {std::min(sceneWidth_, extent.width),
+                              std::min(sceneHeight_, extent.height), 1};
+        vkCmdCopyBufferToImage(cmd, staging_.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                               &region);
     }
-    imageBarrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                 VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+    imageBarrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = renderPass_;
@@ -152,7 +158,8 @@ void UiRenderer::record(VkCommandBuffer cmd, VkImage image, VkFramebuffer frameb
     const bool present = finalLayout_ == VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
     // Present needs no access of ours (the semaphore orders it); a readback copies next.
     imageBarrier(cmd, image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, finalLayout_,
-                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                  present ? VK_PIPELINE_STAGE_2_NONE : VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                  present ? VK_ACCESS_2_NONE : VK_ACCESS_2_TRANSFER_READ_BIT);
 }

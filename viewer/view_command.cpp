@@ -20,7 +20,8 @@ namespace tp::view {
 void createImGuiContext() {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr; // the layout is the program's, not a file left in the working directory
+    io.IniFilename =
+        nullptr; // the layout is the program's, not a file left in the working directory
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
 }
@@ -41,7 +42,8 @@ int finish(ViewerApp& app, const GpuContext& ui, const std::string& scriptError)
         return 2;
     }
     if (!messages.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(), messages.front().c_str());
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
+                     messages.front().c_str());
         return 3;
     }
     return 0;
@@ -76,8 +78,10 @@ std::string firstPipeline() {
 int runView(ViewCommandOptions& o, const std::string& exe) {
     checkKnobs(o.knobs);
     for (const std::string& p : {o.pipelineA, o.pipelineB})
-        if (Result<const RendererEntry*> e = findRenderer(p); !e) throw UsageError("--a/--b: " + e.error());
-    if (o.headless && o.script.empty()) throw UsageError("view --headless needs --script FILE (docs/viewer.md)");
+        if (Result<const RendererEntry*> e = findRenderer(p); !e)
+            throw UsageError("--a/--b: " + e.error());
+    if (o.headless && o.script.empty())
+        throw UsageError("view --headless needs --script FILE (docs/viewer.md)");
     if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be between 1 and 1000");
     view::LoopSetup setup;
     if (!o.script.empty()) {
@@ -92,8 +96,10 @@ int runView(ViewCommandOptions& o, const std::string& exe) {
     s.scene = o.scene;
     if (!view::parseViewResolution(o.view.resolution, s.width, s.height))
         throw UsageError("--res '" + o.view.resolution + "': expected WIDTHxHEIGHT, each side " +
-                         std::to_string(view::kViewMinSide) + " to " + std::to_string(view::kViewMaxSide));
-    if (Status ok = checkSetting(kMsaaSetting, std::to_string(o.view.msaa)); !ok) throw UsageError(ok.error());
+                         std::to_string(view::kViewMinSide) + " to " +
+                         std::to_string(view::kViewMaxSide));
+    if (Status ok = checkSetting(kMsaaSetting, std::to_string(o.view.msaa)); !ok)
+        throw UsageError(ok.error());
     s.msaa = uint32_t(o.view.msaa);
     s.knobs = o.knobs;
     s.pipelineA = o.pipelineA;
@@ -121,25 +127,31 @@ std::string selfPath(const std::string& argv0) {
 CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine) {
     auto o = std::make_shared<ViewCommandOptions>();
     o->pipelineA = firstPipeline();
-    CLI::App* cmd = app.add_subcommand("view", "Interactive viewer: pipelines side by side, live knobs, "
-                                               "difference view, pixel inspector (Dear ImGui)");
+    CLI::App* cmd =
+        app.add_subcommand("view", "Interactive viewer: pipelines side by side, live knobs, "
+                                   "difference view, pixel inspector (Dear ImGui)");
     addSceneOptions(*cmd, o->scene);
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);
     addKnobOptions(*cmd, o->knobs);
     cmd->add_option("--a", o->pipelineA, "Pipeline left of the divider (A)")->capture_default_str();
-    cmd->add_option("--b", o->pipelineB, "Pipeline right of the divider (B)")->capture_default_str();
-    cmd->add_flag("--headless", o->headless, "No window: run --script offscreen (screenshots hold the UI)");
+    cmd->add_option("--b", o->pipelineB, "Pipeline right of the divider (B)")
+        ->capture_default_str();
+    cmd->add_flag("--headless", o->headless,
+                  "No window: run --script offscreen (screenshots hold the UI)");
     cmd->add_option("--script", o->script, "Actions to run, one per line (docs/viewer.md)");
-    cmd->add_option("--out", o->out, "Folder for the script's screenshots, stats and exports")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Timed GPU frames per render (the timing graph's samples)")
+    cmd->add_option("--out", o->out, "Folder for the script's screenshots, stats and exports")
+        ->capture_default_str();
+    cmd->add_option("--frames", o->frames,
+                    "Timed GPU frames per render (the timing graph's samples)")
         ->capture_default_str();
     cmd->add_option("--wait-limit", o->waitLimit, "Seconds a script line may wait before it fails")
         ->capture_default_str();
     cmd->add_option("--quit-after", o->quitAfter, "Window: close after this many frames (0: never)")
         ->capture_default_str();
-    cmd->add_flag("--no-reference", o->noReference,
-                  "Do not render the reference of each view in the background (render it on request: key R)");
+    cmd->add_flag(
+        "--no-reference", o->noReference,
+        "Do not render the reference of each view in the background (render it on request: key R)");
     const std::string exe = selfPath(commandLine.empty() ? "triptych" : commandLine.front());
     return [o, cmd, exe]() { return cmd->parsed() ? runView(*o, exe) : -1; };
 }

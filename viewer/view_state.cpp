@@ -29,8 +29,9 @@ std::string sceneKey(const ViewState& s) {
 
 std::string lightsKey(const ViewState& s) {
     const cli::SceneOptions& o = s.scene;
-    return sceneKey(s) + "|" + o.lightsFile + "|" + std::to_string(o.lightCount) + "|" + std::to_string(o.seed) +
-           "|" + o.lightTypes + "|" + o.lightRadius + "|" + o.lightIntensity + "|" + (o.dropSceneLights ? "drop" : "keep");
+    return sceneKey(s) + "|" + o.lightsFile + "|" + std::to_string(o.lightCount) + "|" +
+           std::to_string(o.seed) + "|" + o.lightTypes + "|" + o.lightRadius + "|" +
+           o.lightIntensity + "|" + (o.dropSceneLights ? "drop" : "keep");
 }
 
 std::string referenceKey(const ViewState& s) {
@@ -40,13 +41,15 @@ std::string referenceKey(const ViewState& s) {
                       std::to_string(s.height) + "x" + std::to_string(s.msaa);
     // The reference's own knobs (e.g. the MSAA shading rate) change it too.
     if (Result<const RendererEntry*> ref = findRenderer(kReferenceRenderer); ref)
-        for (const Knob& k : (*ref)->knobs) key += "|" + k.name + "=" + k.valueIn(s.knobs);
+        for (const Knob& k : (*ref)->knobs)
+            key += "|" + k.name + "=" + k.valueIn(s.knobs);
     return key;
 }
 
 bool parseViewResolution(const std::string& text, uint32_t& width, uint32_t& height) {
     uint32_t w = 0, h = 0;
-    if (!parseResolution(text, w, h) || w < kViewMinSide || h < kViewMinSide || w > kViewMaxSide || h > kViewMaxSide)
+    if (!parseResolution(text, w, h) || w < kViewMinSide || h < kViewMinSide || w > kViewMaxSide ||
+        h > kViewMaxSide)
         return false;
     width = w, height = h;
     return true;
@@ -54,7 +57,8 @@ bool parseViewResolution(const std::string& text, uint32_t& width, uint32_t& hei
 
 std::string renderKey(const ViewState& s, bool debug) {
     std::string key = referenceKey(s) + (debug ? "|debug" : "");
-    for (const auto& [name, value] : s.knobs) key += "|" + name + "=" + value;
+    for (const auto& [name, value] : s.knobs)
+        key += "|" + name + "=" + value;
     return key;
 }
 

@@ -26,10 +26,10 @@ struct ViewState {
     bool autoExposure = true;
     float exposureEv = 0.0f;
     DisplayMode mode = DisplayMode::Split;
-    float split = 0.5f;          // divider position, share of the width from the left
-    bool flip = false;           // A and B swapped (the flip key)
-    std::string overlay;         // debug image name shown in Overlay mode
-    bool reference = true;       // keep a reference of the current view rendering in the background
+    float split = 0.5f;    // divider position, share of the width from the left
+    bool flip = false;     // A and B swapped (the flip key)
+    std::string overlay;   // debug image name shown in Overlay mode
+    bool reference = true; // keep a reference of the current view rendering in the background
 };
 
 std::string sceneKey(const ViewState& s);

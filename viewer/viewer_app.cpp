@@ -17,7 +17,9 @@ namespace {
 constexpr float kGrabDistance = 4.0f;
 
 // Which image a composite or a metric was made from (an address could be reused).
-std::string serialKey(const Shown* s) { return s && s->run ? std::to_string(s->serial) + "|" : "-|"; }
+std::string serialKey(const Shown* s) {
+    return s && s->run ? std::to_string(s->serial) + "|" : "-|";
+}
 
 } // namespace
 
@@ -26,19 +28,23 @@ void TimingHistory::add(const std::vector<TimingStats>& timings) {
         if (!passes.count(t.name)) order.push_back(t.name);
         std::deque<double>& h = passes[t.name];
         h.push_back(t.medianMs);
-        while (h.size() > kHistory) h.pop_front();
+        while (h.size() > kHistory)
+            h.pop_front();
     }
 }
 
 ViewerApp::ViewerApp(const GpuContext& uiContext, ViewerOptions options)
-    : ui_(uiContext), options_(std::move(options)), state_(options_.initial), draft_(options_.initial) {
+    : ui_(uiContext), options_(std::move(options)), state_(options_.initial),
+      draft_(options_.initial) {
     deviceName_ = ui_.info.name;
     sampleCounts_ = ui_.caps.colorSampleCounts;
     worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines");
     referenceWorker_ = std::make_unique<RenderWorker>(options_.context, "reference");
 }
 
-ViewerApp::~ViewerApp() { stop(); }
+ViewerApp::~ViewerApp() {
+    stop();
+}
 
 std::vector<std::string> ViewerApp::stop() {
     std::vector<std::string> messages;
@@ -61,10 +67,16 @@ const Shown* ViewerApp::shownFor(const std::string& pipeline) const {
     auto it = shown_.find(pipeline);
     return it == shown_.end() ? nullptr : &it->second;
 }
-const Shown* ViewerApp::shownA() const { return shownFor(state_.pipelineA); }
-const Shown* ViewerApp::shownB() const { return shownFor(state_.pipelineB); }
+const Shown* ViewerApp::shownA() const {
+    return shownFor(state_.pipelineA);
+}
+const Shown* ViewerApp::shownB() const {
+    return shownFor(state_.pipelineB);
+}
 
-bool ViewerApp::referenceStale() const { return !reference_ || reference_->key != referenceKey(state_); }
+bool ViewerApp::referenceStale() const {
+    return !reference_ || reference_->key != referenceKey(state_);
+}
 
 bool ViewerApp::settled() const {
     if (!worker_->idle() || !referenceWorker_->idle()) return false;
@@ -93,7 +105,8 @@ void ViewerApp::takeOutcomes() {
             if (state_.cameraFromScene) state_.camera = sceneCamera_;
         }
         for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++, o->lights, o->camera};
+            Shown s{image.pipeline, o->key,        image.error, nullptr,
+                    image.buildMs,  nextSerial_++, o->lights,   o->camera};
             if (image.error.empty()) {
                 history_[image.pipeline].add(image.run.timings);
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
@@ -107,8 +120,10 @@ void ViewerApp::takeOutcomes() {
     if (std::optional<RenderOutcome> o = referenceWorker_->take()) {
         if (!o->error.empty() && error_.empty()) error_ = o->error;
         for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key, image.error, nullptr, image.buildMs, nextSerial_++, o->lights, o->camera};
-            if (image.error.empty()) s.run = std::make_shared<const RunResult>(std::move(image.run));
+            Shown s{image.pipeline, o->key,        image.error, nullptr,
+                    image.buildMs,  nextSerial_++, o->lights,   o->camera};
+            if (image.error.empty())
+                s.run = std::make_shared<const RunResult>(std::move(image.run));
             reference_ = std::move(s);
         }
         sceneInputsChanged_ = true;
@@ -119,7 +134,8 @@ void ViewerApp::submitJobs() {
     const bool debug = state_.mode == DisplayMode::Overlay;
     std::vector<std::string> pipelines;
     for (const std::string& p : {state_.pipelineA, state_.pipelineB})
-        if (p != kReferenceRenderer && std::find(pipelines.begin(), pipelines.end(), p) == pipelines.end())
+        if (p != kReferenceRenderer &&
+            std::find(pipelines.begin(), pipelines.end(), p) == pipelines.end())
             pipelines.push_back(p);
     const std::string key = renderKey(state_, debug);
     if (key != submittedKey_ || pipelines != submittedPipelines_) {
@@ -129,7 +145,8 @@ void ViewerApp::submitJobs() {
         submittedKey_ = key;
         submittedPipelines_ = pipelines;
     }
-    bool wantReference = state_.reference || referenceRequested_ || state_.pipelineA == kReferenceRenderer ||
+    bool wantReference = state_.reference || referenceRequested_ ||
+                         state_.pipelineA == kReferenceRenderer ||
                          state_.pipelineB == kReferenceRenderer;
     const std::string refKey = referenceKey(state_);
     if (wantReference && refKey != submittedReferenceKey_) {
@@ -155,13 +172,20 @@ void ViewerApp::recompose() {
         for (const DebugImage& d : runA->debugImages)
             if (d.name == state_.overlay && d.display) overlay = &d.image;
     char buf[160];
-    std::snprintf(buf, sizeof(buf), "|%d|%.6f|%d|%.6f|%ux%u", int(state_.mode), state_.split, int(state_.flip), ev,
-                  state_.width, state_.height);
-    std::string key = serialKey(a) + serialKey(b) + (overlay ? state_.overlay : std::string("-")) + buf;
+    std::snprintf(buf, sizeof(buf), "|%d|%.6f|%d|%.6f|%ux%u", int(state_.mode), state_.split,
+                  int(state_.flip), ev, state_.width, state_.height);
+    std::string key =
+        serialKey(a) + serialKey(b) + (overlay ? state_.overlay : std::string("-")) + buf;
     if (key == composedFor_) return;
-    CompositeInput in{runA ? &runA->hdr : nullptr, runB ? &runB->hdr : nullptr, overlay, state_.mode,
-                      state_.split, state_.flip, ev};
-    // The images' own size: a render of the previous resolution stays shown until the new one lands.
+    CompositeInput in{runA ? &runA->hdr : nullptr,
+                      runB ? &runB->hdr : nullptr,
+                      overlay,
+                      state_.mode,
+                      state_.split,
+                      state_.flip,
+                      ev};
+    // The images' own size: a render of the previous resolution stays shown until the new one
+    // lands.
     uint32_t w = runA ? runA->hdr.width : state_.width, h = runA ? runA->hdr.height : state_.height;
     composite_ = compose(in, w, h);
     composedFor_ = key;
@@ -176,7 +200,8 @@ bool ViewerApp::takeSceneDirty() {
 
 void ViewerApp::measureAgainstReference() {
     const Shown* a = shownA();
-    const bool valid = a && a->run && !referenceStale() && reference_->run && a->key == submittedKey_;
+    const bool valid =
+        a && a->run && !referenceStale() && reference_->run && a->key == submittedKey_;
     const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
     // Measured once per pair of images (and exposure), not per UI frame.
     char evText[32];
@@ -192,7 +217,8 @@ void ViewerApp::measureAgainstReference() {
     MetricsOptions hdr;
     hdr.psnrPeak = brightestFiniteChannel(ref); // compare's HDR PSNR peak
     errorVsReference_ = computeError(a->run->hdr, ref, hdr);
-    errorVsReferenceDisplay_ = computeError(tonemapToDisplay(a->run->hdr, ev), tonemapToDisplay(ref, ev));
+    errorVsReferenceDisplay_ =
+        computeError(tonemapToDisplay(a->run->hdr, ev), tonemapToDisplay(ref, ev));
 }
 
 void ViewerApp::handleSceneMouse() {
@@ -205,9 +231,11 @@ void ViewerApp::handleSceneMouse() {
         inspection_.valid = true;
         inspection_.x = uint32_t(m.x);
         inspection_.y = uint32_t(m.y);
-        for (auto [shown, out] : {std::pair{shownA(), inspection_.a}, std::pair{shownB(), inspection_.b}}) {
+        for (auto [shown, out] :
+             {std::pair{shownA(), inspection_.a}, std::pair{shownB(), inspection_.b}}) {
             std::fill(out, out + 4, 0.0f);
-            if (shown && shown->run && inspection_.x < shown->run->hdr.width && inspection_.y < shown->run->hdr.height)
+            if (shown && shown->run && inspection_.x < shown->run->hdr.width &&
+                inspection_.y < shown->run->hdr.height)
                 std::copy_n(shown->run->hdr.at(inspection_.x, inspection_.y), 4, out);
         }
         inspectLights();
@@ -223,8 +251,10 @@ void ViewerApp::handleSceneMouse() {
     if (!inside) return;
     // Camera: left drag orbits, right drag turns the view (fly), the wheel dollies.
     const ImVec2 d = io.MouseDelta;
-    if (io.MouseDown[0] && (d.x != 0 || d.y != 0)) orbitCamera(d.x * 0.3f, d.y * 0.3f);
-    else if (io.MouseDown[1] && (d.x != 0 || d.y != 0)) turnCamera(d.x * 0.2f, d.y * 0.2f);
+    if (io.MouseDown[0] && (d.x != 0 || d.y != 0))
+        orbitCamera(d.x * 0.3f, d.y * 0.3f);
+    else if (io.MouseDown[1] && (d.x != 0 || d.y != 0))
+        turnCamera(d.x * 0.2f, d.y * 0.2f);
     if (io.MouseWheel != 0 && hasSceneCamera_) {
         userCamera();
         dolly(state_.camera, io.MouseWheel * 0.1f);
@@ -235,7 +265,8 @@ void ViewerApp::handleSceneMouse() {
 // while the cursor stays on one pixel of one image.
 void ViewerApp::inspectLights() {
     const Shown* a = shownA();
-    std::string key = serialKey(a) + std::to_string(inspection_.x) + "," + std::to_string(inspection_.y);
+    std::string key =
+        serialKey(a) + std::to_string(inspection_.x) + "," + std::to_string(inspection_.y);
     if (key == inspectedFor_) return;
     inspectedFor_ = key;
     inspection_.surface = false;

@@ -22,20 +22,20 @@ namespace tp::view {
 
 struct ViewerOptions {
     ViewState initial;
-    ContextOptions context;     // each worker opens its own device with these
-    uint32_t timedFrames = 1;   // frames per render (the timing graph's samples)
-    uint32_t panelWidth = 420;  // the control panel, right of the scene area
-    std::string exe;            // this program, for export (it runs `render` / `compare`)
+    ContextOptions context;    // each worker opens its own device with these
+    uint32_t timedFrames = 1;  // frames per render (the timing graph's samples)
+    uint32_t panelWidth = 420; // the control panel, right of the scene area
+    std::string exe;           // this program, for export (it runs `render` / `compare`)
 };
 
 // A finished render of one pipeline, as the UI keeps it.
 struct Shown {
     std::string pipeline;
-    std::string key;      // renderKey (pipelines) or referenceKey (the reference) it was made for
+    std::string key; // renderKey (pipelines) or referenceKey (the reference) it was made for
     std::string error;
     std::shared_ptr<const RunResult> run;
     double buildMs = 0;
-    uint64_t serial = 0;  // unique per image: what the composite and metrics were made from
+    uint64_t serial = 0; // unique per image: what the composite and metrics were made from
     std::shared_ptr<const std::vector<Light>> lights; // what it was rendered with
     Camera camera;
 };
@@ -43,7 +43,7 @@ struct Shown {
 // Per-pass GPU times of the last frames of one pipeline (the graph and its median/min/max).
 struct TimingHistory {
     std::map<std::string, std::deque<double>> passes; // name -> last kHistory times (ms)
-    std::vector<std::string> order;                    // "frame" first, then passes
+    std::vector<std::string> order;                   // "frame" first, then passes
     static constexpr size_t kHistory = 64;
     void add(const std::vector<TimingStats>& timings);
 };
@@ -75,7 +75,10 @@ class ViewerApp {
     // Nothing rendering or queued, and (when enabled) the reference of this view present.
     bool settled() const;
     // Actions shared by the panels, the keys and the script runner.
-    void toggleFlip() { state_.flip = !state_.flip; sceneInputsChanged_ = true; }
+    void toggleFlip() {
+        state_.flip = !state_.flip;
+        sceneInputsChanged_ = true;
+    }
     void setSplit(float share);
     void requestReference() { referenceRequested_ = true; }
     // Camera moves (scene units are steps of moveStep; angles in degrees). The first move
@@ -86,7 +89,10 @@ class ViewerApp {
     void orbitCamera(float yaw, float pitch);
     void resetCamera();
     // A frame after a camera load or bookmark: the camera given, no longer the scene's.
-    void setCamera(const Camera& c) { state_.camera = c; state_.cameraFromScene = false; }
+    void setCamera(const Camera& c) {
+        state_.camera = c;
+        state_.cameraFromScene = false;
+    }
     // Bookmarks: one camera file each (core/render/camera_file.h), or a list of them (load
     // takes the first). Errors go to the status line.
     void saveBookmark(const std::string& path);
@@ -130,7 +136,7 @@ class ViewerApp {
     uint64_t nextJob_ = 1;
     std::string submittedKey_, submittedReferenceKey_;
     std::vector<std::string> submittedPipelines_;
-    std::map<std::string, Shown> shown_;        // latest finished image per pipeline
+    std::map<std::string, Shown> shown_; // latest finished image per pipeline
     std::optional<Shown> reference_;
     std::map<std::string, TimingHistory> history_;
     std::optional<ErrorReport> errorVsReference_, errorVsReferenceDisplay_;

@@ -7,9 +7,9 @@
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include "core/gpu/context.h"
 #include "viewer/keys.h"
@@ -22,7 +22,9 @@ namespace {
 
 std::string glfwMessage;
 
-void onGlfwError(int, const char* description) { glfwMessage = description ? description : "unknown error"; }
+void onGlfwError(int, const char* description) {
+    glfwMessage = description ? description : "unknown error";
+}
 
 int noDisplay(const std::string& why) {
     std::fprintf(stderr,
@@ -45,10 +47,11 @@ void pollKeys(GLFWwindow* window, ViewerApp& app, std::map<int, bool>& wasDown) 
 
 // Frames until the window closes (or --quit-after, once the script is done); the script's
 // error, or empty.
-std::string frameLoop(GLFWwindow* window, GpuContext& ctx, UiRenderer& ui, Swapchain& swapchain, ViewerApp& app,
-                      const LoopSetup& setup) {
+std::string frameLoop(GLFWwindow* window, GpuContext& ctx, UiRenderer& ui, Swapchain& swapchain,
+                      ViewerApp& app, const LoopSetup& setup) {
     std::optional<ScriptRunner> runner;
-    if (setup.script) runner.emplace(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds, false);
+    if (setup.script)
+        runner.emplace(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds, false);
     ScriptMouse scriptMouse; // the real cursor wins in a window
     std::map<int, bool> wasDown;
     try {
@@ -67,12 +70,17 @@ std::string frameLoop(GLFWwindow* window, GpuContext& ctx, UiRenderer& ui, Swapc
             glfwGetFramebufferSize(window, &fw, &fh);
             swapchain.draw(ui, ImGui::GetDrawData(), uint32_t(fw), uint32_t(fh));
             // The frame's work, present included (FIFO: paced by the display where it has one).
-            double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            double frameMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
             if (runner) runner->afterFrame(app, nullptr, frameMs);
-            // On a CPU device the renders run on the same cores: leave them the CPU while they work.
-            if (ctx.isCpuDevice() && !app.settled()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            // On a CPU device the renders run on the same cores: leave them the CPU while they
+            // work.
+            if (ctx.isCpuDevice() && !app.settled())
+                std::this_thread::sleep_for(std::chrono::milliseconds(10));
             bool scriptDone = !runner || runner->done();
-            if (setup.quitAfterFrames > 0 && frame + 1 >= setup.quitAfterFrames && scriptDone) break;
+            if (setup.quitAfterFrames > 0 && frame + 1 >= setup.quitAfterFrames && scriptDone)
+                break;
         }
     } catch (const ScriptError& e) {
         return e.what();
@@ -105,7 +113,8 @@ int runWindow(const LoopSetup& setup) {
     ContextOptions co = setup.viewer.context;
     uint32_t n = 0;
     const char** extensions = glfwGetRequiredInstanceExtensions(&n);
-    for (uint32_t i = 0; i < n; ++i) co.instanceExtensions.push_back(extensions[i]);
+    for (uint32_t i = 0; i < n; ++i)
+        co.instanceExtensions.push_back(extensions[i]);
     co.swapchain = true;
     Result<std::unique_ptr<GpuContext>> created = GpuContext::create(co);
     if (!created) {
@@ -129,12 +138,13 @@ int runWindow(const LoopSetup& setup) {
     ImGui_ImplGlfw_InitForVulkan(window, true);
     if (!presentable) {
         code = noDisplay(ctx.info.name + " cannot present to this window");
-    } else try { // a Vulkan failure ends the window below with its cleanup, as one line (exit 4)
-        code = runInWindow(window, ctx, surface, setup);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "triptych: view: %s\n", e.what());
-        code = 4;
-    }
+    } else
+        try { // a Vulkan failure ends the window below with its cleanup, as one line (exit 4)
+            code = runInWindow(window, ctx, surface, setup);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "triptych: view: %s\n", e.what());
+            code = 4;
+        }
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     vkDestroySurfaceKHR(ctx.instance, surface, nullptr);

@@ -12,10 +12,12 @@
 namespace tp::cli {
 
 void addSceneOptions(CLI::App& app, SceneOptions& o) {
-    app.add_option("scene", o.scene,
-                   "Scene: a glTF 2.0 file (.gltf/.glb) or builtin:NAME (courtyard, courtyard-small). "
-                   "Default: the built-in courtyard");
-    app.add_option("--lights", o.lightCount, "Number of generated lights (added to the scene's own)")
+    app.add_option(
+        "scene", o.scene,
+        "Scene: a glTF 2.0 file (.gltf/.glb) or builtin:NAME (courtyard, courtyard-small). "
+        "Default: the built-in courtyard");
+    app.add_option("--lights", o.lightCount,
+                   "Number of generated lights (added to the scene's own)")
         ->capture_default_str();
     addSeedOption(app, o.seed);
     app.add_option("--light-types", o.lightTypes,
@@ -27,20 +29,26 @@ void addSceneOptions(CLI::App& app, SceneOptions& o) {
     app.add_option("--light-intensity", o.lightIntensity,
                    "MIN,MAX intensity in candela (default: derived from the radius)");
     app.add_option("--lights-file", o.lightsFile,
-                   "Read lights from this JSON file instead of generating them (see lights.json in any output)");
+                   "Read lights from this JSON file instead of generating them (see lights.json in "
+                   "any output)");
     app.add_flag("--no-scene-lights", o.dropSceneLights, "Ignore lights defined in the glTF file");
     addStrictFlag(app, o.strict);
     addCameraOption(app, o.cameraFile);
 }
 
 CLI::Option* addCameraOption(CLI::App& app, std::string& path) {
-    return app.add_option(
-        "--camera", path,
-        "Camera bookmark FILE replacing the scene's camera (its glTF camera or the built-in one) for this run: "
-        "JSON {\"schema\":\"triptych.camera/1\",\"position\":[x,y,z],\"target\":[x,y,z],\"up\":[x,y,z],"
-        "\"yfov_degrees\":f,\"znear\":f,\"zfar\":f} (zfar 0: infinite). 'triptych info --print-camera' "
-        "writes a scene's camera in this form; render and compare write the camera they used as camera.json, and "
-        "report.json, render.json and sweep.json hold it as their \"camera\" object")
+    return app
+        .add_option("--camera", path,
+                    "Camera bookmark FILE replacing the scene's camera (its glTF camera or the "
+                    "built-in one) for this run: "
+                    "JSON "
+                    "{\"schema\":\"triptych.camera/"
+                    "1\",\"position\":[x,y,z],\"target\":[x,y,z],\"up\":[x,y,z],"
+                    "\"yfov_degrees\":f,\"znear\":f,\"zfar\":f} (zfar 0: infinite). 'triptych info "
+                    "--print-camera' "
+                    "writes a scene's camera in this form; render and compare write the camera "
+                    "they used as camera.json, and "
+                    "report.json, render.json and sweep.json hold it as their \"camera\" object")
         ->type_name("FILE");
 }
 
@@ -67,12 +75,14 @@ CLI::Option* addSeedOption(CLI::App& app, uint64_t& seed) {
 }
 
 void addDeviceOptions(CLI::App& app, DeviceOptions& o) {
-    app.add_option("--device", o.device,
-                   "Vulkan device by index or name substring (default: a discrete GPU if present, else "
-                   "lavapipe); 'triptych info' lists them");
-    app.add_flag("--validate", o.validate,
-                 "Enable the Khronos validation layers with synchronization validation; any message "
-                 "makes the command fail");
+    app.add_option(
+        "--device", o.device,
+        "Vulkan device by index or name substring (default: a discrete GPU if present, else "
+        "lavapipe); 'triptych info' lists them");
+    app.add_flag(
+        "--validate", o.validate,
+        "Enable the Khronos validation layers with synchronization validation; any message "
+        "makes the command fail");
 }
 
 void addViewOptions(CLI::App& app, ViewOptions& o) {
@@ -94,21 +104,24 @@ void addKnobOptions(CLI::App& app, std::map<std::string, std::string>& values, b
     for (const KnobReaders& k : allKnobs()) {
         std::string& value = values[k.knob.name]; // a map node: the reference stays valid
         value = k.knob.defaultValue;
-        app.add_option("--" + k.knob.name, value, knobHelp(k, sweep && k.knob.sweepable))->capture_default_str();
+        app.add_option("--" + k.knob.name, value, knobHelp(k, sweep && k.knob.sweepable))
+            ->capture_default_str();
     }
 }
 
 std::string knobHelp(const KnobReaders& k, bool list) {
     std::string readers;
-    for (const std::string& r : k.readers) readers += (readers.empty() ? "" : ", ") + r;
-    return (list ? "Comma-separated values. " : "") + k.knob.help + " [" + k.knob.allowedText() + "; read by " +
-           readers + (k.knob.msaaOnly ? "; matters only under MSAA" : "") + "]";
+    for (const std::string& r : k.readers)
+        readers += (readers.empty() ? "" : ", ") + r;
+    return (list ? "Comma-separated values. " : "") + k.knob.help + " [" + k.knob.allowedText() +
+           "; read by " + readers + (k.knob.msaaOnly ? "; matters only under MSAA" : "") + "]";
 }
 
 void checkKnobs(const std::map<std::string, std::string>& values, bool sweep) {
     for (const KnobReaders& k : allKnobs()) {
         if (sweep && k.knob.sweepable) continue; // a list: runSweep checks each value
-        if (Status st = checkSetting(k.knob.name, k.knob.valueIn(values)); !st) throw UsageError(st.error());
+        if (Status st = checkSetting(k.knob.name, k.knob.valueIn(values)); !st)
+            throw UsageError(st.error());
     }
 }
 
@@ -120,7 +133,8 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
     if (w == 0 || h == 0 || w > maxDim || h > maxDim)
         throw UsageError("--res " + v.resolution + ": each side must be between 1 and " +
                          std::to_string(maxDim) + " on " + ctx.info.name);
-    if (Status ok = checkSetting(kMsaaSetting, std::to_string(v.msaa)); !ok) throw UsageError(ok.error());
+    if (Status ok = checkSetting(kMsaaSetting, std::to_string(v.msaa)); !ok)
+        throw UsageError(ok.error());
     if (Status ok = checkSampleCount(ctx, uint32_t(v.msaa)); !ok) throw UsageError(ok.error());
     s.width = w;
     s.height = h;
@@ -137,7 +151,8 @@ void ensureDirectory(const std::string& dir) {
 
 std::string defaultPipelineList() {
     std::string names;
-    for (const std::string& n : selectPipelines("")) names += (names.empty() ? "" : ",") + n;
+    for (const std::string& n : selectPipelines(""))
+        names += (names.empty() ? "" : ",") + n;
     return names;
 }
 
@@ -151,7 +166,8 @@ std::vector<std::string> selectPipelines(const std::string& list) {
     std::stringstream ss(list);
     std::string name;
     while (std::getline(ss, name, ',')) {
-        if (name == kReferenceRenderer) throw UsageError("--pipelines: the reference is always rendered; list the others");
+        if (name == kReferenceRenderer)
+            throw UsageError("--pipelines: the reference is always rendered; list the others");
         Result<const RendererEntry*> e = findRenderer(name);
         if (!e) throw UsageError("--pipelines: " + e.error());
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);

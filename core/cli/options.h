@@ -23,15 +23,15 @@ struct UsageError : std::runtime_error {
 };
 
 struct SceneOptions {
-    std::string scene;        // path to .gltf/.glb, or builtin:NAME; empty = builtin:courtyard
-    std::string lightsFile;   // lights JSON (replaces generated lights)
+    std::string scene;      // path to .gltf/.glb, or builtin:NAME; empty = builtin:courtyard
+    std::string lightsFile; // lights JSON (replaces generated lights)
     int lightCount = 128;
     uint64_t seed = 1;
     std::string lightTypes = "point"; // e.g. "point", "point,spot", "point:3,spot:1,directional:0"
-    std::string lightRadius;  // "MIN,MAX" in scene units; empty = from the scene bounds
-    std::string lightIntensity; // "MIN,MAX" candela; empty = from the radius
+    std::string lightRadius;          // "MIN,MAX" in scene units; empty = from the scene bounds
+    std::string lightIntensity;       // "MIN,MAX" candela; empty = from the radius
     bool dropSceneLights = false;
-    bool strict = false; // glTF: refuse non-finite attributes instead of repairing them
+    bool strict = false;    // glTF: refuse non-finite attributes instead of repairing them
     std::string cameraFile; // --camera: a camera bookmark replacing the scene's camera
 };
 

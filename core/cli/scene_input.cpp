@@ -31,8 +31,8 @@ std::pair<float, float> parseRange(const std::string& text, const char* option, 
     std::snprintf(limitText, sizeof limitText, "%g", limit);
     if (comma == std::string::npos || !parseNumber(text.substr(0, comma), a) ||
         !parseNumber(text.substr(comma + 1), b) || !(a > 0) || !(b >= a) || b > limit)
-        throw UsageError(std::string(option) + " '" + text + "': expected MIN,MAX with 0 < MIN <= MAX <= " +
-                         limitText);
+        throw UsageError(std::string(option) + " '" + text +
+                         "': expected MIN,MAX with 0 < MIN <= MAX <= " + limitText);
     return {float(a), float(b)};
 }
 
@@ -53,10 +53,15 @@ void parseTypes(const std::string& text, LightGenOptions& g) {
         if (seen.find("," + name + ",") != std::string::npos)
             throw UsageError("--light-types '" + text + "': '" + name + "' is listed twice");
         seen += name + ",";
-        if (name == "point") g.pointWeight = float(weight);
-        else if (name == "spot") g.spotWeight = float(weight);
-        else if (name == "directional") g.directionalWeight = float(weight);
-        else throw UsageError("--light-types: unknown type '" + name + "' (point, spot, directional)");
+        if (name == "point")
+            g.pointWeight = float(weight);
+        else if (name == "spot")
+            g.spotWeight = float(weight);
+        else if (name == "directional")
+            g.directionalWeight = float(weight);
+        else
+            throw UsageError("--light-types: unknown type '" + name +
+                             "' (point, spot, directional)");
     }
     if (g.pointWeight + g.spotWeight + g.directionalWeight <= 0.0f)
         throw UsageError("--light-types '" + text + "': all weights are zero");
@@ -89,7 +94,8 @@ Scene loadScene(const SceneOptions& o, CameraSource* cameraSource) {
         options.cameraIndex = &source.gltfCamera;
         Result<Scene> s = loadGltf(name, options);
         if (!s) throw UsageError(s.error());
-        for (const std::string& w : warnings) std::fprintf(stderr, "triptych: warning: %s\n", w.c_str());
+        for (const std::string& w : warnings)
+            std::fprintf(stderr, "triptych: warning: %s\n", w.c_str());
         scene = std::move(*s);
         source.kind = source.gltfCamera >= 0 ? "gltf" : "framed";
     }
@@ -112,13 +118,15 @@ Scene loadScene(const SceneOptions& o, CameraSource* cameraSource) {
 
 LightGenOptions generatorOptions(const SceneOptions& o) {
     if (o.lightCount < 0 || o.lightCount > 1000000)
-        throw UsageError("--lights " + std::to_string(o.lightCount) + ": must be between 0 and 1000000");
+        throw UsageError("--lights " + std::to_string(o.lightCount) +
+                         ": must be between 0 and 1000000");
     LightGenOptions g;
     g.count = uint32_t(o.lightCount);
     g.seed = o.seed;
     parseTypes(o.lightTypes, g);
     if (!o.lightRadius.empty())
-        std::tie(g.radiusMin, g.radiusMax) = parseRange(o.lightRadius, "--light-radius", kMaxLightRange);
+        std::tie(g.radiusMin, g.radiusMax) =
+            parseRange(o.lightRadius, "--light-radius", kMaxLightRange);
     if (!o.lightIntensity.empty())
         std::tie(g.intensityMin, g.intensityMax) =
             parseRange(o.lightIntensity, "--light-intensity", kMaxLightIntensity);

@@ -13,21 +13,31 @@ const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 std::string deviceTypeName(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return "cpu";
+    default:
+        return "other";
     }
 }
 
 int typeRank(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-    default: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return 3;
+    default:
+        return 4;
     }
 }
 
@@ -61,7 +71,8 @@ Result<VkInstance> createInstance(bool validate, const std::vector<std::string>&
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         info.pNext = &features;
     }
-    for (const std::string& e : extra) extensions.push_back(e.c_str());
+    for (const std::string& e : extra)
+        extensions.push_back(e.c_str());
     info.enabledLayerCount = uint32_t(layers.size());
     info.ppEnabledLayerNames = layers.data();
     info.enabledExtensionCount = uint32_t(extensions.size());
@@ -102,7 +113,8 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
     return info;
 }
 
-Result<uint32_t> chooseDevice(const std::vector<VkPhysicalDevice>& devices, const std::string& want) {
+Result<uint32_t> chooseDevice(const std::vector<VkPhysicalDevice>& devices,
+                              const std::string& want) {
     if (devices.empty())
         return Error{"no Vulkan 1.3 device found (install mesa-vulkan-drivers for lavapipe)"};
     if (want.empty()) {
@@ -115,7 +127,8 @@ Result<uint32_t> chooseDevice(const std::vector<VkPhysicalDevice>& devices, cons
         }
         return best;
     }
-    bool numeric = std::all_of(want.begin(), want.end(), [](char c) { return c >= '0' && c <= '9'; });
+    bool numeric =
+        std::all_of(want.begin(), want.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (numeric) {
         unsigned long i = std::strtoul(want.c_str(), nullptr, 10);
         if (i < devices.size()) return uint32_t(i);
@@ -136,7 +149,8 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     VkPhysicalDeviceFeatures f;
     vkGetPhysicalDeviceFeatures(device, &f);
     VkPhysicalDeviceVulkan13Properties p13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_PROPERTIES};
-    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES, &p13};
+    VkPhysicalDeviceSubgroupProperties sub{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES,
+                                           &p13};
     VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &sub};
     vkGetPhysicalDeviceProperties2(device, &p2);
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
@@ -148,8 +162,8 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.pipelineStatisticsQuery = f.pipelineStatisticsQuery;
     c.storageImageMultisample = f.shaderStorageImageMultisample;
     c.fragmentStoresAndAtomics = f.fragmentStoresAndAtomics;
-    c.colorSampleCounts = p.limits.framebufferColorSampleCounts &
-                          p.limits.framebufferDepthSampleCounts;
+    c.colorSampleCounts =
+        p.limits.framebufferColorSampleCounts & p.limits.framebufferDepthSampleCounts;
     c.timestampPeriodNs = p.limits.timestampPeriod;
     c.maxImageDimension2D = p.limits.maxImageDimension2D;
     c.maxStorageBufferRange = p.limits.maxStorageBufferRange;
@@ -159,7 +173,8 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.subgroupOps = sub.supportedOperations;
     c.computeFullSubgroups = f13.subgroupSizeControl && f13.computeFullSubgroups &&
                              (p13.requiredSubgroupSizeStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
-                             p13.minSubgroupSize <= sub.subgroupSize && sub.subgroupSize <= p13.maxSubgroupSize;
+                             p13.minSubgroupSize <= sub.subgroupSize &&
+                             sub.subgroupSize <= p13.maxSubgroupSize;
     c.standardSampleLocations = p.limits.standardSampleLocations;
     return c;
 }
@@ -182,8 +197,8 @@ int findQueueFamily(VkPhysicalDevice physical, uint32_t& timestampBits) {
 }
 
 // One queue of `family`; the features the renderers use where `caps` has them.
-VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const DeviceCaps& caps, bool swapchain,
-                             VkDevice& device) {
+VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const DeviceCaps& caps,
+                             bool swapchain, VkDevice& device) {
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queueInfo.queueFamilyIndex = family;
@@ -198,7 +213,8 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     f13.maintenance4 = VK_TRUE;
     f13.subgroupSizeControl = caps.computeFullSubgroups;
     f13.computeFullSubgroups = caps.computeFullSubgroups;
-    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                         &f13};
     f12.hostQueryReset = VK_TRUE;
     f12.scalarBlockLayout = VK_FALSE;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
@@ -223,8 +239,8 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
 } // namespace
 
 VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                       VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
-                       void* user) {
+                       VkDebugUtilsMessageTypeFlagsEXT,
+                       const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     auto* ctx = static_cast<GpuContext*>(user);
     if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
         std::lock_guard<std::mutex> lock(ctx->messagesMutex_);
@@ -238,7 +254,8 @@ namespace {
 // Warnings and errors, to debugCallback with `userData` (the context).
 VkDebugUtilsMessengerEXT createMessenger(VkInstance instance, void* userData) {
     VkDebugUtilsMessengerEXT messenger;
-    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    VkDebugUtilsMessengerCreateInfoEXT info{
+        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                            VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
@@ -259,7 +276,8 @@ Result<std::vector<DeviceInfo>> GpuContext::listDevices() {
     if (!instance) return Error{instance.error()};
     std::vector<DeviceInfo> out;
     std::vector<VkPhysicalDevice> devices = physicalDevices(*instance);
-    for (uint32_t i = 0; i < devices.size(); ++i) out.push_back(describe(devices[i], i));
+    for (uint32_t i = 0; i < devices.size(); ++i)
+        out.push_back(describe(devices[i], i));
     vkDestroyInstance(*instance, nullptr);
     return out;
 }
@@ -281,12 +299,15 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
 
     const int family = findQueueFamily(ctx->physical, ctx->caps.timestampValidBits);
     if (family < 0)
-        return Error{"device '" + ctx->info.name + "' has no graphics+compute queue with timestamps"};
+        return Error{"device '" + ctx->info.name +
+                     "' has no graphics+compute queue with timestamps"};
     ctx->queueFamily = uint32_t(family);
 
-    VkResult r = createLogicalDevice(ctx->physical, ctx->queueFamily, ctx->caps, options.swapchain, ctx->device);
+    VkResult r = createLogicalDevice(ctx->physical, ctx->queueFamily, ctx->caps, options.swapchain,
+                                     ctx->device);
     if (r != VK_SUCCESS)
-        return Error{"cannot create a Vulkan device on '" + ctx->info.name + "': " + vkResultName(r)};
+        return Error{"cannot create a Vulkan device on '" + ctx->info.name +
+                     "': " + vkResultName(r)};
     vkGetDeviceQueue(ctx->device, ctx->queueFamily, 0, &ctx->queue);
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -26,7 +26,8 @@ struct DeviceInfo {
 
 struct ContextOptions {
     bool validate = false; // Khronos validation + synchronization validation
-    std::string device;    // "" = best (discrete > integrated > virtual > cpu), an index, or a name substring
+    std::string
+        device; // "" = best (discrete > integrated > virtual > cpu), an index, or a name substring
     // For a window (the viewer): the surface extensions GLFW asks for, and VK_KHR_swapchain
     // on the device. Empty/false: a headless context, as every other command uses.
     std::vector<std::string> instanceExtensions;

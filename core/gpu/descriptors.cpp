@@ -52,13 +52,15 @@ void writeDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkD
 
 } // namespace
 
-void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
-                          VkImageView view, VkImageLayout layout, VkSampler sampler) {
+void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding,
+                          VkDescriptorType type, VkImageView view, VkImageLayout layout,
+                          VkSampler sampler) {
     VkDescriptorImageInfo ii{sampler, view, layout};
     writeDescriptor(ctx, set, binding, type, &ii, nullptr);
 }
 
-void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkBuffer buffer) {
+void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding,
+                           VkBuffer buffer) {
     VkDescriptorBufferInfo bi{buffer, 0, VK_WHOLE_SIZE};
     writeDescriptor(ctx, set, binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nullptr, &bi);
 }

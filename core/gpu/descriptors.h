@@ -18,7 +18,7 @@ struct SetBinding {
 };
 
 struct PassSet {
-    std::string pass;               // the pass whose uses it was made from (FrameGraph::createPassSet)
+    std::string pass; // the pass whose uses it was made from (FrameGraph::createPassSet)
     std::vector<SetBinding> bindings; // what the pipelines' shaders are checked against
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
@@ -27,8 +27,9 @@ struct PassSet {
 
 PassSet createPassSet(GpuContext& ctx, const std::vector<SetBinding>& bindings);
 void destroyPassSet(GpuContext& ctx, PassSet& set);
-void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
-                          VkImageView view, VkImageLayout layout, VkSampler sampler);
+void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding,
+                          VkDescriptorType type, VkImageView view, VkImageLayout layout,
+                          VkSampler sampler);
 void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkBuffer buffer);
 
 } // namespace tp

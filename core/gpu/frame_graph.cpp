@@ -7,8 +7,12 @@
 
 namespace tp {
 
-const Image& PassContext::image(ResourceHandle h) const { return graph.image(h); }
-const Buffer& PassContext::buffer(ResourceHandle h) const { return graph.buffer(h); }
+const Image& PassContext::image(ResourceHandle h) const {
+    return graph.image(h);
+}
+const Buffer& PassContext::buffer(ResourceHandle h) const {
+    return graph.buffer(h);
+}
 void PassContext::expectUse(ResourceHandle h, Use use) const {
     if (pass != ~0u) graph.declarations().expectUse(pass, h, use);
 }
@@ -106,42 +110,50 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
     std::vector<SetBinding> bindings;
     for (const PassUse& u : p.uses) {
         if (u.binding == kNoBinding) continue;
-        if (!isAllocated(u.resource)) throw GraphError("pass '" + pass + "' is culled: it has no descriptor set");
-        bindings.push_back({u.binding, descriptorType(u.use, decl_.resources()[u.resource.index].isImage)});
+        if (!isAllocated(u.resource))
+            throw GraphError("pass '" + pass + "' is culled: it has no descriptor set");
+        bindings.push_back(
+            {u.binding, descriptorType(u.use, decl_.resources()[u.resource.index].isImage)});
     }
-    for (const ExternalBuffer& e : externals) bindings.push_back({e.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    for (const ExternalBuffer& e : externals)
+        bindings.push_back({e.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     // Every check before anything is created (a PassSet owns nothing until it is destroyed).
     for (size_t i = 0; i < bindings.size(); ++i) {
         for (size_t j = 0; j < i; ++j)
             if (bindings[j].binding == bindings[i].binding)
-                throw GraphError("pass '" + pass + "': binding " + std::to_string(bindings[i].binding) +
+                throw GraphError("pass '" + pass + "': binding " +
+                                 std::to_string(bindings[i].binding) +
                                  " is given twice (a use and an external buffer)");
         if (bindings[i].type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER && !sampler)
-            throw GraphError("pass '" + pass + "' samples binding " + std::to_string(bindings[i].binding) +
-                             " but was given no sampler");
+            throw GraphError("pass '" + pass + "' samples binding " +
+                             std::to_string(bindings[i].binding) + " but was given no sampler");
     }
     PassSet set = tp::createPassSet(ctx_, bindings);
     set.pass = pass;
     set.bindings = bindings;
     for (const PassUse& u : p.uses) {
         if (u.binding == kNoBinding) continue;
-        const VkDescriptorType type = descriptorType(u.use, decl_.resources()[u.resource.index].isImage);
+        const VkDescriptorType type =
+            descriptorType(u.use, decl_.resources()[u.resource.index].isImage);
         if (type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER) {
             writeBufferDescriptor(ctx_, set.set, u.binding, buffer(u.resource).buffer);
         } else {
-            VkSampler s = type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER ? sampler : VK_NULL_HANDLE;
-            writeImageDescriptor(ctx_, set.set, u.binding, type, image(u.resource).view, useInfo(u.use).layout, s);
+            VkSampler s =
+                type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER ? sampler : VK_NULL_HANDLE;
+            writeImageDescriptor(ctx_, set.set, u.binding, type, image(u.resource).view,
+                                 useInfo(u.use).layout, s);
         }
     }
-    for (const ExternalBuffer& e : externals) writeBufferDescriptor(ctx_, set.set, e.binding, e.buffer);
+    for (const ExternalBuffer& e : externals)
+        writeBufferDescriptor(ctx_, set.set, e.binding, e.buffer);
     return set;
 }
 
 void FrameGraph::recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const {
     const ResourceNode& r = resources_[b.resource];
     if (b.image) {
-        imageBarrier(cmd, r.image.image, b.oldLayout, b.newLayout, b.srcStages, b.srcAccess, b.dstStages,
-                     b.dstAccess, {r.image.aspect, 0, 1, 0, 1});
+        imageBarrier(cmd, r.image.image, b.oldLayout, b.newLayout, b.srcStages, b.srcAccess,
+                     b.dstStages, b.dstAccess, {r.image.aspect, 0, 1, 0, 1});
         return;
     }
     VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
@@ -161,33 +173,38 @@ void FrameGraph::recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const 
 void FrameGraph::record(VkCommandBuffer cmd, GpuProfiler* profiler) {
     if (!compiled_) throw GraphError("FrameGraph::record before compile");
     for (const PlannedPass& p : plan_.passes) {
-        for (const PlanBarrier& b : p.barriers) recordBarrier(cmd, b);
+        for (const PlanBarrier& b : p.barriers)
+            recordBarrier(cmd, b);
         const std::string& name = decl_.passes()[p.pass].name;
         uint32_t scope = profiler ? profiler->beginScope(cmd, name) : 0;
         PassContext pc{cmd, *this, p.pass};
         executes_[p.pass](pc);
         if (profiler) profiler->endScope(cmd, scope);
     }
-    for (const PlanBarrier& b : plan_.exportBarriers) recordBarrier(cmd, b);
+    for (const PlanBarrier& b : plan_.exportBarriers)
+        recordBarrier(cmd, b);
 }
 
 const Image& FrameGraph::image(ResourceHandle h) const {
     const ResourceNode& r = resources_.at(h.index);
     if (!decl_.resources()[h.index].isImage || !r.image.image)
-        throw GraphError("resource '" + decl_.resources()[h.index].name + "' is not an allocated image");
+        throw GraphError("resource '" + decl_.resources()[h.index].name +
+                         "' is not an allocated image");
     return r.image;
 }
 
 const Buffer& FrameGraph::buffer(ResourceHandle h) const {
     const ResourceNode& r = resources_.at(h.index);
     if (decl_.resources()[h.index].isImage || !r.buffer.buffer)
-        throw GraphError("resource '" + decl_.resources()[h.index].name + "' is not an allocated buffer");
+        throw GraphError("resource '" + decl_.resources()[h.index].name +
+                         "' is not an allocated buffer");
     return r.buffer;
 }
 
 bool FrameGraph::isAllocated(ResourceHandle h) const {
     const ResourceNode& r = resources_.at(h.index);
-    return decl_.resources()[h.index].isImage ? r.image.image != VK_NULL_HANDLE : r.buffer.buffer != VK_NULL_HANDLE;
+    return decl_.resources()[h.index].isImage ? r.image.image != VK_NULL_HANDLE
+                                              : r.buffer.buffer != VK_NULL_HANDLE;
 }
 
 ResourceHandle FrameGraph::exported(const std::string& publicName) const {

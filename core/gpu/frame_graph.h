@@ -58,7 +58,8 @@ class FrameGraph {
     ~FrameGraph();
 
     ResourceHandle createImage(const std::string& name, const GraphImageInfo& info);
-    ResourceHandle createBuffer(const std::string& name, VkDeviceSize size, const std::string& purpose);
+    ResourceHandle createBuffer(const std::string& name, VkDeviceSize size,
+                                const std::string& purpose);
     void addPass(const std::string& name, std::vector<PassUse> uses,
                  std::function<void(PassContext&)> execute);
     // An output read after the frame (readback, report): left in TRANSFER_SRC layout/access.
@@ -70,7 +71,7 @@ class FrameGraph {
     PassSet createPassSet(const std::string& pass, VkSampler sampler = VK_NULL_HANDLE,
                           const std::vector<ExternalBuffer>& externals = {}) const;
 
-    void compile();                                   // plan (cull, check, barriers), allocate
+    void compile(); // plan (cull, check, barriers), allocate
     void record(VkCommandBuffer cmd, GpuProfiler* profiler); // barriers, timestamps, passes
 
     const Image& image(ResourceHandle h) const;

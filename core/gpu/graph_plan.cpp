@@ -13,29 +13,39 @@ constexpr VkPipelineStageFlags2 kDepthStages =
 VkImageUsageFlags imageUsage(Use use) {
     switch (use) {
     case Use::ColorAttachment:
-    case Use::ColorResolve: return VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    case Use::ColorResolve:
+        return VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     case Use::DepthAttachment:
     case Use::DepthResolve:
-    case Use::DepthTest: return VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    case Use::Sampled: return VK_IMAGE_USAGE_SAMPLED_BIT;
+    case Use::DepthTest:
+        return VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    case Use::Sampled:
+        return VK_IMAGE_USAGE_SAMPLED_BIT;
     case Use::StorageRead:
-    case Use::StorageWrite: return VK_IMAGE_USAGE_STORAGE_BIT;
-    case Use::TransferSrc: return VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    case Use::TransferDst: return VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    case Use::StorageWrite:
+        return VK_IMAGE_USAGE_STORAGE_BIT;
+    case Use::TransferSrc:
+        return VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    case Use::TransferDst:
+        return VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     }
     return 0;
 }
 
 VkBufferUsageFlags bufferUsage(Use use) {
     switch (use) {
-    case Use::TransferSrc: return VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    case Use::TransferDst: return VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    default: return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    case Use::TransferSrc:
+        return VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    case Use::TransferDst:
+        return VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    default:
+        return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     }
 }
 
 bool bindable(Use use) {
-    return use == Use::Sampled || use == Use::DepthTest || use == Use::StorageRead || use == Use::StorageWrite;
+    return use == Use::Sampled || use == Use::DepthTest || use == Use::StorageRead ||
+           use == Use::StorageWrite;
 }
 
 // Where a resource stands between uses. Every frame starts from "unknown contents, written
@@ -43,7 +53,8 @@ bool bindable(Use use) {
 // first use waits on all commands.
 struct State {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT; // what a later write waits for
+    VkPipelineStageFlags2 stages =
+        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT; // what a later write waits for
     VkAccessFlags2 access = VK_ACCESS_2_MEMORY_WRITE_BIT;
     bool lastWasWrite = true;
     // Since the last write (or layout change): the stages and accesses its barrier made the
@@ -64,8 +75,8 @@ void transition(uint32_t resource, bool isImage, Use use, State& s, std::vector<
         // and the writes, already available, become visible to this reader.
         if ((u.stages & ~s.visibleStages) || (u.access & ~s.visibleAccess)) {
             out.push_back({resource, isImage, isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED,
-                           isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED, s.visibleStages, u.stages, 0,
-                           u.access});
+                           isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED, s.visibleStages,
+                           u.stages, 0, u.access});
             s.visibleStages |= u.stages;
             s.visibleAccess |= u.access;
         }
@@ -74,9 +85,14 @@ void transition(uint32_t resource, bool isImage, Use use, State& s, std::vector<
         s.access |= u.access;
         return;
     }
-    PlanBarrier b{resource, isImage, isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED,
-                  isImage ? u.layout : VK_IMAGE_LAYOUT_UNDEFINED, s.stages, u.stages,
-                  s.lastWasWrite ? s.access : VkAccessFlags2(0), u.access};
+    PlanBarrier b{resource,
+                  isImage,
+                  isImage ? s.layout : VK_IMAGE_LAYOUT_UNDEFINED,
+                  isImage ? u.layout : VK_IMAGE_LAYOUT_UNDEFINED,
+                  s.stages,
+                  u.stages,
+                  s.lastWasWrite ? s.access : VkAccessFlags2(0),
+                  u.access};
     out.push_back(b);
     s = {u.layout, u.stages, u.access, u.writes, u.stages, u.access};
 }
@@ -85,16 +101,26 @@ void transition(uint32_t resource, bool isImage, Use use, State& s, std::vector<
 
 const char* useName(Use use) {
     switch (use) {
-    case Use::ColorAttachment: return "colour attachment";
-    case Use::ColorResolve: return "colour resolve";
-    case Use::DepthAttachment: return "depth attachment";
-    case Use::DepthResolve: return "depth resolve";
-    case Use::DepthTest: return "depth test";
-    case Use::Sampled: return "sampled";
-    case Use::StorageRead: return "storage read";
-    case Use::StorageWrite: return "storage write";
-    case Use::TransferSrc: return "transfer source";
-    case Use::TransferDst: return "transfer destination";
+    case Use::ColorAttachment:
+        return "colour attachment";
+    case Use::ColorResolve:
+        return "colour resolve";
+    case Use::DepthAttachment:
+        return "depth attachment";
+    case Use::DepthResolve:
+        return "depth resolve";
+    case Use::DepthTest:
+        return "depth test";
+    case Use::Sampled:
+        return "sampled";
+    case Use::StorageRead:
+        return "storage read";
+    case Use::StorageWrite:
+        return "storage write";
+    case Use::TransferSrc:
+        return "transfer source";
+    case Use::TransferDst:
+        return "transfer destination";
     }
     return "unknown use";
 }
@@ -106,29 +132,34 @@ UseInfo useInfo(Use use) {
                 VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true, true};
     case Use::ColorResolve:
-        return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true, false};
+        return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                true, false};
     case Use::DepthAttachment:
         return {kDepthStages,
-                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true, true};
     case Use::DepthResolve:
         // Depth resolves run in the colour-output stage with colour-attachment access
         // (render pass resolve rules); name both so any reading of the spec is covered.
         return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | kDepthStages,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true, false};
     case Use::DepthTest:
         return {kDepthStages | kShaderStages,
                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, false, true};
     case Use::Sampled:
-        return {kShaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                false, true};
+        return {kShaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, false, true};
     case Use::StorageRead:
-        return {kShaderStages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_GENERAL, false, true};
+        return {kShaderStages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_GENERAL, false,
+                true};
     case Use::StorageWrite:
-        return {kShaderStages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+        return {kShaderStages,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_IMAGE_LAYOUT_GENERAL, true, true};
     case Use::TransferSrc:
         return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
@@ -146,7 +177,8 @@ bool imageOnly(Use use) {
 }
 
 VkDescriptorType descriptorType(Use use, bool isImage) {
-    if (use == Use::Sampled || use == Use::DepthTest) return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    if (use == Use::Sampled || use == Use::DepthTest)
+        return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     return isImage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
@@ -165,14 +197,16 @@ void GraphDecl::addPass(const std::string& name, std::vector<PassUse> uses) {
             throw GraphError("pass '" + name + "' uses an unknown resource");
         const Resource& r = resources_[u.resource.index];
         if (!r.isImage && imageOnly(u.use))
-            throw GraphError("pass '" + name + "' uses buffer '" + r.name + "' as " + useName(u.use) +
-                             ", which needs an image");
+            throw GraphError("pass '" + name + "' uses buffer '" + r.name + "' as " +
+                             useName(u.use) + ", which needs an image");
         if (u.binding == kNoBinding) continue;
         if (!bindable(u.use))
-            throw GraphError("pass '" + name + "' binds '" + r.name + "' at binding " + std::to_string(u.binding) +
-                             " as " + useName(u.use) + ", which no descriptor can hold");
+            throw GraphError("pass '" + name + "' binds '" + r.name + "' at binding " +
+                             std::to_string(u.binding) + " as " + useName(u.use) +
+                             ", which no descriptor can hold");
         if (!bindings.insert(u.binding).second)
-            throw GraphError("pass '" + name + "' declares binding " + std::to_string(u.binding) + " twice");
+            throw GraphError("pass '" + name + "' declares binding " + std::to_string(u.binding) +
+                             " twice");
     }
     passes_.push_back({name, std::move(uses)});
 }
@@ -194,7 +228,8 @@ void GraphDecl::expectUse(uint32_t pass, ResourceHandle h, Use use) const {
     const Pass& p = passes_.at(pass);
     for (const PassUse& u : p.uses)
         if (u.resource.index == h.index && u.use == use) return;
-    const std::string name = h.index < resources_.size() ? resources_[h.index].name : "an unknown resource";
+    const std::string name =
+        h.index < resources_.size() ? resources_[h.index].name : "an unknown resource";
     throw GraphError("pass '" + p.name + "' uses '" + name + "' as " + useName(use) +
                      " without declaring it");
 }
@@ -202,12 +237,14 @@ void GraphDecl::expectUse(uint32_t pass, ResourceHandle h, Use use) const {
 // Walks the passes backwards from the exports: a pass lives when it writes something needed.
 std::vector<bool> GraphDecl::cull() const {
     std::vector<bool> needed(resources_.size()), live(passes_.size());
-    for (size_t i = 0; i < resources_.size(); ++i) needed[i] = resources_[i].exported;
+    for (size_t i = 0; i < resources_.size(); ++i)
+        needed[i] = resources_[i].exported;
     for (size_t p = passes_.size(); p-- > 0;) {
         for (const PassUse& u : passes_[p].uses)
             if (useInfo(u.use).writes && needed[u.resource.index]) live[p] = true;
         if (!live[p]) continue;
-        for (const PassUse& u : passes_[p].uses) needed[u.resource.index] = true;
+        for (const PassUse& u : passes_[p].uses)
+            needed[u.resource.index] = true;
     }
     return live;
 }
@@ -221,15 +258,17 @@ void GraphDecl::checkReads(const std::vector<bool>& live) const {
         for (const PassUse& u : passes_[p].uses) {
             UseInfo info = useInfo(u.use);
             if (info.reads && !info.writes && !written[u.resource.index])
-                throw GraphError("pass '" + passes_[p].name + "' reads '" + resources_[u.resource.index].name +
-                                 "' (" + useName(u.use) + ") before any pass writes it");
+                throw GraphError("pass '" + passes_[p].name + "' reads '" +
+                                 resources_[u.resource.index].name + "' (" + useName(u.use) +
+                                 ") before any pass writes it");
         }
         for (const PassUse& u : passes_[p].uses)
             if (useInfo(u.use).writes) written[u.resource.index] = true;
     }
     for (const auto& [name, h] : exports_)
         if (!written[h.index])
-            throw GraphError("export '" + name + "' ('" + resources_[h.index].name + "') is never written");
+            throw GraphError("export '" + name + "' ('" + resources_[h.index].name +
+                             "') is never written");
 }
 
 GraphPlan GraphDecl::plan() const {
@@ -251,13 +290,14 @@ GraphPlan GraphDecl::plan() const {
             r.imageUsage |= imageUsage(u.use);
             r.bufferUsage |= bufferUsage(u.use);
             if (r.firstWriter.empty() && useInfo(u.use).writes) r.firstWriter = passes_[p].name;
-            transition(u.resource.index, resources_[u.resource.index].isImage, u.use, states[u.resource.index],
-                       planned.barriers);
+            transition(u.resource.index, resources_[u.resource.index].isImage, u.use,
+                       states[u.resource.index], planned.barriers);
         }
         plan.passes.push_back(std::move(planned));
     }
     for (const auto& [name, h] : exports_)
-        transition(h.index, resources_[h.index].isImage, Use::TransferSrc, states[h.index], plan.exportBarriers);
+        transition(h.index, resources_[h.index].isImage, Use::TransferSrc, states[h.index],
+                   plan.exportBarriers);
     return plan;
 }
 

@@ -29,7 +29,7 @@ enum class Use {
     DepthTest,       // depth test without writes; may be sampled in the same pass
     Sampled,         // sampled or texelFetch'd in fragment/compute shaders
     StorageRead,
-    StorageWrite,    // write-only or read-write storage access
+    StorageWrite, // write-only or read-write storage access
     TransferSrc,
     TransferDst,
 };

@@ -11,7 +11,8 @@
 namespace tp {
 
 struct LedgerTag {
-    std::string owner;   // "scene" (shared by every pipeline), "reference" or the pipeline's registered name
+    std::string
+        owner; // "scene" (shared by every pipeline), "reference" or the pipeline's registered name
     std::string pass;    // pass that first writes it, or "" for shared data
     std::string name;    // e.g. "hdr", "depth_msaa", "light_lists"
     std::string purpose; // one line for the report

@@ -85,28 +85,35 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
     addStage(VK_SHADER_STAGE_VERTEX_BIT, d.vertexShader);
     if (!d.fragmentShader.empty()) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, d.fragmentShader);
 
-    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    VkPipelineVertexInputStateCreateInfo vertexInput{
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    VkPipelineRasterizationStateCreateInfo raster{
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_BACK_BIT;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    VkPipelineMultisampleStateCreateInfo ms{
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     ms.rasterizationSamples = d.samples;
     ms.sampleShadingEnable = d.sampleShading ? VK_TRUE : VK_FALSE;
     ms.minSampleShading = 1.0f;
-    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    VkPipelineDepthStencilStateCreateInfo depth{
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = d.depthTest;
     depth.depthWriteEnable = d.depthWrite;
     depth.depthCompareOp = d.depthCompare;
     std::vector<VkPipelineColorBlendAttachmentState> blends(
         d.colorFormats.size(), d.blend == BlendMode::Custom ? d.customBlend : blendState(d.blend));
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    VkPipelineColorBlendStateCreateInfo blend{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = uint32_t(blends.size());
     blend.pAttachments = blends.data();
     VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
@@ -132,15 +139,18 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
     info.pDynamicState = &dynamic;
     info.layout = d.layout;
     VkPipeline pipeline;
-    VkResult r = vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-    for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device, m, nullptr);
+    VkResult r =
+        vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    for (VkShaderModule m : modules)
+        vkDestroyShaderModule(ctx.device, m, nullptr);
     VK_CHECK(r);
     return pipeline;
 }
 
 VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
-                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout,
-                                 const PassSet* passSet, uint32_t fullSubgroups) {
+                                 const std::vector<SpecConstant>& specConstants,
+                                 VkPipelineLayout layout, const PassSet* passSet,
+                                 uint32_t fullSubgroups) {
     checkPassBindings(passSet, {shader});
     SpecData spec;
     fillSpec(spec, specConstants);
@@ -155,7 +165,8 @@ VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
     if (fullSubgroups > 0) {
         if (!ctx.caps.computeFullSubgroups || fullSubgroups != ctx.caps.subgroupSize)
             throw std::runtime_error("compute shader " + shader + " needs full subgroups of " +
-                                     std::to_string(fullSubgroups) + " lanes, which the device cannot guarantee");
+                                     std::to_string(fullSubgroups) +
+                                     " lanes, which the device cannot guarantee");
         required.requiredSubgroupSize = fullSubgroups;
         info.stage.pNext = &required;
         info.stage.flags = VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT;

@@ -49,8 +49,9 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
 // (it must be ctx.caps.subgroupSize, with ctx.caps.computeFullSubgroups): a shader whose
 // workgroup is that size is then one subgroup.
 VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
-                                 const std::vector<SpecConstant>& specConstants, VkPipelineLayout layout,
-                                 const PassSet* passSet = nullptr, uint32_t fullSubgroups = 0);
+                                 const std::vector<SpecConstant>& specConstants,
+                                 VkPipelineLayout layout, const PassSet* passSet = nullptr,
+                                 uint32_t fullSubgroups = 0);
 
 // Viewport (negative height, depth 0..1) and scissor covering width x height.
 void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height);

@@ -7,14 +7,17 @@
 
 namespace tp {
 
-GpuProfiler::GpuProfiler(GpuContext& ctx, uint32_t maxScopes) : ctx_(ctx), capacity_(maxScopes + 1) {
+GpuProfiler::GpuProfiler(GpuContext& ctx, uint32_t maxScopes)
+    : ctx_(ctx), capacity_(maxScopes + 1) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = capacity_ * 2;
     VK_CHECK(vkCreateQueryPool(ctx.device, &info, nullptr, &pool_));
 }
 
-GpuProfiler::~GpuProfiler() { vkDestroyQueryPool(ctx_.device, pool_, nullptr); }
+GpuProfiler::~GpuProfiler() {
+    vkDestroyQueryPool(ctx_.device, pool_, nullptr);
+}
 
 void GpuProfiler::beginFrame(VkCommandBuffer cmd) {
     vkCmdResetQueryPool(cmd, pool_, 0, capacity_ * 2);
@@ -38,12 +41,14 @@ void GpuProfiler::endScope(VkCommandBuffer cmd, uint32_t scope) {
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, pool_, scope * 2 + 1);
 }
 
-void GpuProfiler::endFrame(VkCommandBuffer cmd) { endScope(cmd, 0); }
+void GpuProfiler::endFrame(VkCommandBuffer cmd) {
+    endScope(cmd, 0);
+}
 
 void GpuProfiler::collect() {
     std::vector<uint64_t> ticks(used_ * 2);
-    VK_CHECK(vkGetQueryPoolResults(ctx_.device, pool_, 0, used_ * 2, ticks.size() * sizeof(uint64_t),
-                                   ticks.data(), sizeof(uint64_t),
+    VK_CHECK(vkGetQueryPoolResults(ctx_.device, pool_, 0, used_ * 2,
+                                   ticks.size() * sizeof(uint64_t), ticks.data(), sizeof(uint64_t),
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     uint32_t bits = ctx_.caps.timestampValidBits;
     uint64_t mask = bits >= 64 ? ~0ull : ((1ull << bits) - 1);
@@ -55,12 +60,14 @@ void GpuProfiler::collect() {
 }
 
 void GpuProfiler::discardSamples() {
-    for (auto& s : samples_) s.clear();
+    for (auto& s : samples_)
+        s.clear();
 }
 
 std::vector<TimingStats> GpuProfiler::stats() const {
     std::vector<TimingStats> out;
-    for (size_t i = 0; i < names_.size(); ++i) out.push_back(summarize(names_[i], samples_[i]));
+    for (size_t i = 0; i < names_.size(); ++i)
+        out.push_back(summarize(names_[i], samples_[i]));
     return out;
 }
 

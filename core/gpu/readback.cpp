@@ -25,8 +25,8 @@ std::vector<uint8_t> copyToHost(GpuContext& ctx, const Image& image, uint32_t te
         VkBufferImageCopy region{};
         region.imageSubresource = {image.aspect, 0, 0, 1};
         region.imageExtent = {image.desc.width, image.desc.height, 1};
-        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer,
-                               1, &region);
+        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               staging.buffer, 1, &region);
         transferToHostBarrier(cmd);
     });
     std::vector<uint8_t> bytes(size);
@@ -52,9 +52,11 @@ ImageRGBA readbackColor(GpuContext& ctx, const Image& image) {
         } else if (f == VK_FORMAT_R16G16B16A16_SFLOAT) {
             uint16_t h[4];
             std::memcpy(h, src, 8);
-            for (int c = 0; c < 4; ++c) dst[c] = glm::unpackHalf1x16(h[c]);
+            for (int c = 0; c < 4; ++c)
+                dst[c] = glm::unpackHalf1x16(h[c]);
         } else if (f == VK_FORMAT_R8G8B8A8_UNORM || f == VK_FORMAT_R8G8B8A8_SRGB) {
-            for (int c = 0; c < 4; ++c) dst[c] = src[c] / 255.0f;
+            for (int c = 0; c < 4; ++c)
+                dst[c] = src[c] / 255.0f;
         } else if (f == VK_FORMAT_R32_SFLOAT || f == VK_FORMAT_R32_UINT) {
             float v;
             if (f == VK_FORMAT_R32_SFLOAT) {
@@ -67,7 +69,8 @@ ImageRGBA readbackColor(GpuContext& ctx, const Image& image) {
             dst[0] = dst[1] = dst[2] = v;
             dst[3] = 1.0f;
         } else {
-            throw std::logic_error(std::string("readbackColor: unsupported format ") + formatName(f));
+            throw std::logic_error(std::string("readbackColor: unsupported format ") +
+                                   formatName(f));
         }
     }
     return out;
@@ -83,8 +86,8 @@ ImageR32 readbackDepth(GpuContext& ctx, const Image& image) {
 }
 
 std::vector<uint8_t> readbackBuffer(GpuContext& ctx, const Buffer& buffer) {
-    Buffer staging = createBuffer(ctx, buffer.size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Readback,
-                                  {"readback", "", "staging", "readback"});
+    Buffer staging = createBuffer(ctx, buffer.size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                  MemoryKind::Readback, {"readback", "", "staging", "readback"});
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferCopy copy{0, 0, buffer.size};
         vkCmdCopyBuffer(cmd, buffer.buffer, staging.buffer, 1, &copy);

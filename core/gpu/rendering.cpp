@@ -37,7 +37,8 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
         depthInfo.imageLayout = depth->readOnly ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL
                                                 : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
         depthInfo.loadOp = depth->clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-        depthInfo.storeOp = depth->readOnly ? VK_ATTACHMENT_STORE_OP_NONE : VK_ATTACHMENT_STORE_OP_STORE;
+        depthInfo.storeOp =
+            depth->readOnly ? VK_ATTACHMENT_STORE_OP_NONE : VK_ATTACHMENT_STORE_OP_STORE;
         depthInfo.clearValue.depthStencil = {depth->clearValue, 0};
         if (depth->resolve.valid()) {
             depthInfo.resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
@@ -56,6 +57,8 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
     setViewportAndScissor(pc.cmd, any.desc.width, any.desc.height);
 }
 
-void endRendering(PassContext& pc) { vkCmdEndRendering(pc.cmd); }
+void endRendering(PassContext& pc) {
+    vkCmdEndRendering(pc.cmd);
+}
 
 } // namespace tp

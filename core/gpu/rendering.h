@@ -21,9 +21,9 @@ struct ColorTarget {
 
 struct DepthTarget {
     ResourceHandle image;
-    ResourceHandle resolve; // invalid = none; else sample 0 is copied into it
-    bool clear = true;      // false = load
-    bool readOnly = false;  // DepthTest use (no writes)
+    ResourceHandle resolve;  // invalid = none; else sample 0 is copied into it
+    bool clear = true;       // false = load
+    bool readOnly = false;   // DepthTest use (no writes)
     float clearValue = 0.0f; // reverse-Z: 0 is the far plane
 };
 

@@ -18,7 +18,8 @@ uint32_t findMemoryType(const GpuContext& ctx, uint32_t bits, VkMemoryPropertyFl
 
 VkMemoryPropertyFlags memoryFlags(MemoryKind kind) {
     switch (kind) {
-    case MemoryKind::Device: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    case MemoryKind::Device:
+        return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     case MemoryKind::Upload:
         return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     case MemoryKind::Readback:
@@ -27,7 +28,8 @@ VkMemoryPropertyFlags memoryFlags(MemoryKind kind) {
     return 0;
 }
 
-VkDeviceMemory allocate(GpuContext& ctx, const VkMemoryRequirements& req, VkMemoryPropertyFlags flags) {
+VkDeviceMemory allocate(GpuContext& ctx, const VkMemoryRequirements& req,
+                        VkMemoryPropertyFlags flags) {
     VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     info.allocationSize = req.size;
     info.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, flags);
@@ -119,7 +121,8 @@ Buffer createBuffer(GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage
     vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
     b.memory = allocate(ctx, req, memoryFlags(kind));
     VK_CHECK(vkBindBufferMemory(ctx.device, b.buffer, b.memory, 0));
-    if (kind != MemoryKind::Device) VK_CHECK(vkMapMemory(ctx.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+    if (kind != MemoryKind::Device)
+        VK_CHECK(vkMapMemory(ctx.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
     LedgerEntry e;
     e.tag = tag;
     e.requestedBytes = size;
@@ -132,8 +135,10 @@ namespace {
 
 std::string usageNames(VkImageUsageFlags usage) {
     static const std::pair<VkImageUsageFlagBits, const char*> names[] = {
-        {VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "transfer-src"}, {VK_IMAGE_USAGE_TRANSFER_DST_BIT, "transfer-dst"},
-        {VK_IMAGE_USAGE_SAMPLED_BIT, "sampled"}, {VK_IMAGE_USAGE_STORAGE_BIT, "storage"},
+        {VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "transfer-src"},
+        {VK_IMAGE_USAGE_TRANSFER_DST_BIT, "transfer-dst"},
+        {VK_IMAGE_USAGE_SAMPLED_BIT, "sampled"},
+        {VK_IMAGE_USAGE_STORAGE_BIT, "storage"},
         {VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "colour attachment"},
         {VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "depth attachment"},
         {VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT, "input attachment"}};
@@ -150,16 +155,20 @@ std::string usageNames(VkImageUsageFlags usage) {
 
 Status checkImageSupported(const GpuContext& ctx, const ImageDesc& desc) {
     VkImageFormatProperties props{};
-    VkResult r = vkGetPhysicalDeviceImageFormatProperties(ctx.physical, desc.format, VK_IMAGE_TYPE_2D,
-                                                          VK_IMAGE_TILING_OPTIMAL, desc.usage, 0, &props);
-    const std::string what = std::string(formatName(desc.format)) + " with " + usageNames(desc.usage) + " use";
+    VkResult r =
+        vkGetPhysicalDeviceImageFormatProperties(ctx.physical, desc.format, VK_IMAGE_TYPE_2D,
+                                                 VK_IMAGE_TILING_OPTIMAL, desc.usage, 0, &props);
+    const std::string what =
+        std::string(formatName(desc.format)) + " with " + usageNames(desc.usage) + " use";
     if (r != VK_SUCCESS) return Error{what + ": not supported by " + ctx.info.name};
     if (!(props.sampleCounts & desc.samples))
-        return Error{std::to_string(uint32_t(desc.samples)) + " samples of " + what + ": not supported by " +
-                     ctx.info.name};
-    if (desc.width > props.maxExtent.width || desc.height > props.maxExtent.height || desc.mipLevels > props.maxMipLevels)
+        return Error{std::to_string(uint32_t(desc.samples)) + " samples of " + what +
+                     ": not supported by " + ctx.info.name};
+    if (desc.width > props.maxExtent.width || desc.height > props.maxExtent.height ||
+        desc.mipLevels > props.maxMipLevels)
         return Error{std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " + what +
-                     ": larger than " + ctx.info.name + " allows (" + std::to_string(props.maxExtent.width) + "x" +
+                     ": larger than " + ctx.info.name + " allows (" +
+                     std::to_string(props.maxExtent.width) + "x" +
                      std::to_string(props.maxExtent.height) + ")"};
     return {};
 }
@@ -204,7 +213,8 @@ Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag) 
     e.height = desc.height;
     e.mipLevels = desc.mipLevels;
     e.samples = uint32_t(desc.samples);
-    e.requestedBytes = uint64_t(desc.width) * desc.height * desc.samples * formatBytesPerTexel(desc.format);
+    e.requestedBytes =
+        uint64_t(desc.width) * desc.height * desc.samples * formatBytesPerTexel(desc.format);
     e.bytes = req.size;
     img.ledgerId = ctx.ledger.add(e);
     return img;
@@ -212,7 +222,8 @@ Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag) 
 
 Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size,
                             VkBufferUsageFlags usage, const LedgerTag& tag) {
-    Buffer dst = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Device, tag);
+    Buffer dst =
+        createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Device, tag);
     if (size == 0) return dst;
     Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
                                   {"staging", "", "staging", "upload"});

@@ -5,8 +5,10 @@
 
 namespace tp {
 
-Buffer createStandInBuffer(GpuContext& ctx, const LedgerTag& tag, const std::array<uint32_t, 4>& words) {
-    return createBufferWithData(ctx, words.data(), sizeof(words), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, tag);
+Buffer createStandInBuffer(GpuContext& ctx, const LedgerTag& tag,
+                           const std::array<uint32_t, 4>& words) {
+    return createBufferWithData(ctx, words.data(), sizeof(words),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, tag);
 }
 
 VkSampler createNearestClampSampler(GpuContext& ctx) {

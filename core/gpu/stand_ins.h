@@ -13,7 +13,8 @@ namespace tp {
 
 // A 16-byte device-local storage buffer holding `words` (what a stray read would see; zeros by
 // default), in the ledger under `tag` (purpose "stand-in: ..." by convention).
-Buffer createStandInBuffer(GpuContext& ctx, const LedgerTag& tag, const std::array<uint32_t, 4>& words = {});
+Buffer createStandInBuffer(GpuContext& ctx, const LedgerTag& tag,
+                           const std::array<uint32_t, 4>& words = {});
 
 // Nearest filtering, clamped to the edge, no mip levels: for passes that only texelFetch, where
 // the filtering is never used. The caller destroys it (vkDestroySampler).

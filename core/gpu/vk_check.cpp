@@ -6,7 +6,9 @@ namespace tp {
 
 const char* vkResultName(VkResult result) {
     switch (result) {
-#define TP_CASE(x) case x: return #x;
+#define TP_CASE(x)                                                                                 \
+    case x:                                                                                        \
+        return #x;
         TP_CASE(VK_SUCCESS)
         TP_CASE(VK_NOT_READY)
         TP_CASE(VK_TIMEOUT)
@@ -26,7 +28,8 @@ const char* vkResultName(VkResult result) {
         TP_CASE(VK_ERROR_OUT_OF_POOL_MEMORY)
         TP_CASE(VK_ERROR_UNKNOWN)
 #undef TP_CASE
-    default: return "VK_ERROR_(unnamed)";
+    default:
+        return "VK_ERROR_(unnamed)";
     }
 }
 

@@ -121,7 +121,8 @@ std::string formatScale(float value) {
 
 // Legend rows [top, top + height): a bar from 0 to scaleMax with the two labels under it.
 // Too short for text (under 14 px at scale 1) leaves only the bar.
-void drawLegend(ImageRGBA& image, uint32_t top, uint32_t height, float scaleMax, const Ramp& colours = kInferno) {
+void drawLegend(ImageRGBA& image, uint32_t top, uint32_t height, float scaleMax,
+                const Ramp& colours = kInferno) {
     for (uint32_t y = top; y < top + height; ++y)
         for (uint32_t x = 0; x < image.width; ++x)
             setPixel(image, int(x), int(y), kLegendBackground);
@@ -158,7 +159,8 @@ ImageRGBA flipErrorMap(const ImageR32& flipValues, uint32_t legendHeight) {
             const float v = flipValues.r[size_t(y) * flipValues.width + x];
             setPixel(out, int(x), int(y), std::isfinite(v) ? ramp(v, kMagma) : kMagenta);
         }
-    if (legendHeight > 0 && out.width > 0) drawLegend(out, flipValues.height, legendHeight, 1.0f, kMagma);
+    if (legendHeight > 0 && out.width > 0)
+        drawLegend(out, flipValues.height, legendHeight, 1.0f, kMagma);
     return out;
 }
 

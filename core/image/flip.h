@@ -42,9 +42,10 @@ FlipStats poolFlip(const ImageR32& map);
 
 // HDR-FLIP's exposure range (stops relative to the linear values).
 struct FlipExposures {
-    float start = 0; // shortest exposure: the reference's brightest luminance just below tonemap 0.85
-    float stop = 0;  // longest: its median luminance at 0.85
-    int count = 0;   // max(2, ceil(stop - start)), evenly spaced from start to stop
+    float start =
+        0; // shortest exposure: the reference's brightest luminance just below tonemap 0.85
+    float stop = 0; // longest: its median luminance at 0.85
+    int count = 0;  // max(2, ceil(stop - start)), evenly spaced from start to stop
 };
 FlipExposures flipAutoExposures(const ImageRGBA& referenceLinear);
 

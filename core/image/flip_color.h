@@ -56,8 +56,12 @@ inline Vec3 mul3(const float* m, Vec3 v) {
             m[6] * v.x + m[7] * v.y + m[8] * v.z};
 }
 
-inline Vec3 linearRgbToXyz(Vec3 rgb) { return mul3(kColor.rgbToXyz, rgb); }
-inline Vec3 xyzToLinearRgb(Vec3 xyz) { return mul3(kColor.xyzToRgb, xyz); }
+inline Vec3 linearRgbToXyz(Vec3 rgb) {
+    return mul3(kColor.rgbToXyz, rgb);
+}
+inline Vec3 xyzToLinearRgb(Vec3 xyz) {
+    return mul3(kColor.xyzToRgb, xyz);
+}
 
 // YyCxCz: Yy = 116 Y/Yn - 16, Cx = 500 (X/Xn - Y/Yn), Cz = 200 (Y/Yn - Z/Zn); like L*a*b*
 // without the cube root, so it is linear and a blur in it is a blur of light.
@@ -101,17 +105,22 @@ inline float fastLog2(float x) {
     m = high ? 0.5f * m : m;
     e = high ? e + 1 : e;
     const float t = (m - 1.0f) / (m + 1.0f), t2 = t * t; // |t| <= 0.172
-    const float series = 1.0f + t2 * (1.0f / 3 + t2 * (1.0f / 5 + t2 * (1.0f / 7 + t2 * (1.0f / 9))));
+    const float series =
+        1.0f + t2 * (1.0f / 3 + t2 * (1.0f / 5 + t2 * (1.0f / 7 + t2 * (1.0f / 9))));
     return float(e) + 2.0f * t * series * 1.44269504f;
 }
 
 // 2^v, v clamped to [-126, 126]: integer part into the exponent, Taylor series for the rest.
 inline float fastExp2(float v) {
     v = std::min(std::max(v, -126.0f), 126.0f);
-    const int n = int(v + 127.5f) - 127; // round to nearest: v + 127.5 > 0
+    const int n = int(v + 127.5f) - 127;           // round to nearest: v + 127.5 > 0
     const float z = (v - float(n)) * 0.693147181f; // |z| <= 0.347
     const float p =
-        1.0f + z * (1.0f + z * (1.0f / 2 + z * (1.0f / 6 + z * (1.0f / 24 + z * (1.0f / 120 + z * (1.0f / 720 + z * (1.0f / 5040)))))));
+        1.0f +
+        z * (1.0f +
+             z * (1.0f / 2 +
+                  z * (1.0f / 6 +
+                       z * (1.0f / 24 + z * (1.0f / 120 + z * (1.0f / 720 + z * (1.0f / 5040)))))));
     return p * std::bit_cast<float>(uint32_t(n + 127) << 23);
 }
 
@@ -140,7 +149,9 @@ inline Vec3 xyzToLab(Vec3 xyz) {
 }
 
 // Hunt effect: chroma is less visible at low luminance, so a* and b* scale with L*/100.
-inline Vec3 huntAdjust(Vec3 lab) { return {lab.x, 0.01f * lab.x * lab.y, 0.01f * lab.x * lab.z}; }
+inline Vec3 huntAdjust(Vec3 lab) {
+    return {lab.x, 0.01f * lab.x * lab.y, 0.01f * lab.x * lab.z};
+}
 
 // HyAB (Abasi et al. 2020): city-block in lightness plus Euclidean in the chroma plane, which
 // follows large colour differences better than Euclidean L*a*b*.
@@ -151,7 +162,8 @@ inline float hyab(Vec3 a, Vec3 b) {
 
 // Linear RGB clamped to [0,1] -> Hunt-adjusted L*a*b*: what the colour pipeline compares.
 inline Vec3 linearRgbToHuntLab(Vec3 rgb) {
-    rgb = {std::clamp(rgb.x, 0.0f, 1.0f), std::clamp(rgb.y, 0.0f, 1.0f), std::clamp(rgb.z, 0.0f, 1.0f)};
+    rgb = {std::clamp(rgb.x, 0.0f, 1.0f), std::clamp(rgb.y, 0.0f, 1.0f),
+           std::clamp(rgb.z, 0.0f, 1.0f)};
     return huntAdjust(xyzToLab(linearRgbToXyz(rgb)));
 }
 

@@ -61,8 +61,8 @@ void convolveRow(const float* in, int width, const Kernel* const* kernels, float
 // for output row y of an image of `height` rows, `stride` floats apart, starting at `plane`
 // (offset it to filter a strip of columns). Accumulates `scale` times the result into out
 // when accumulate is set, else writes it.
-void convolveColumn(const float* plane, int stride, int count, int height, int y, const Kernel& kernel,
-                    float* out, float scale = 1.0f, bool accumulate = false);
+void convolveColumn(const float* plane, int stride, int count, int height, int y,
+                    const Kernel& kernel, float* out, float scale = 1.0f, bool accumulate = false);
 
 // Runs fn(begin, end) on disjoint row ranges covering [0, rows), on the machine's cores.
 void parallelRows(int rows, const std::function<void(int, int)>& fn);

@@ -28,12 +28,15 @@ float tonemapInverse(float target) {
     return std::max(0.0f, (-b + std::sqrt(b * b - 4.0f * a * c)) / (2.0f * a));
 }
 
-float finiteOrZero(float v) { return std::isfinite(v) ? v : 0.0f; }
+float finiteOrZero(float v) {
+    return std::isfinite(v) ? v : 0.0f;
+}
 
 // Rec. 709 luminance with its published 4-digit weights (not the Y row of flip_color.h's
 // matrix): the reference tool's start/stop exposures match these to 1e-6 (tests/cpu/flip_test).
 float luminance(const float* px) {
-    return 0.2126f * finiteOrZero(px[0]) + 0.7152f * finiteOrZero(px[1]) + 0.0722f * finiteOrZero(px[2]);
+    return 0.2126f * finiteOrZero(px[0]) + 0.7152f * finiteOrZero(px[1]) +
+           0.0722f * finiteOrZero(px[2]);
 }
 
 void tonemap(const ImageRGBA& linear, float exposure, flip::LinearPlanes& p) {
@@ -42,7 +45,8 @@ void tonemap(const ImageRGBA& linear, float exposure, flip::LinearPlanes& p) {
     flip::parallelRows(int(linear.height), [&](int y0, int y1) {
         for (size_t i = size_t(y0) * linear.width; i < size_t(y1) * linear.width; ++i)
             for (int c = 0; c < 3; ++c)
-                (*planes[c])[i] = flipTonemapAces(finiteOrZero(linear.rgba[i * 4 + size_t(c)]) * scale);
+                (*planes[c])[i] =
+                    flipTonemapAces(finiteOrZero(linear.rgba[i * 4 + size_t(c)]) * scale);
     });
 }
 
@@ -50,7 +54,8 @@ void tonemap(const ImageRGBA& linear, float exposure, flip::LinearPlanes& p) {
 
 float flipTonemapAces(float x) {
     const float x2 = x * x;
-    const float v = (kAces[0] * x2 + kAces[1] * x + kAces[2]) / (kAces[3] * x2 + kAces[4] * x + kAces[5]);
+    const float v =
+        (kAces[0] * x2 + kAces[1] * x + kAces[2]) / (kAces[3] * x2 + kAces[4] * x + kAces[5]);
     return std::clamp(v, 0.0f, 1.0f);
 }
 
@@ -59,7 +64,8 @@ FlipExposures flipAutoExposures(const ImageRGBA& referenceLinear) {
     const size_t n = referenceLinear.pixelCount();
     if (n == 0) return e;
     std::vector<float> lum(n);
-    for (size_t i = 0; i < n; ++i) lum[i] = luminance(&referenceLinear.rgba[i * 4]);
+    for (size_t i = 0; i < n; ++i)
+        lum[i] = luminance(&referenceLinear.rgba[i * 4]);
     const float maxLum = *std::max_element(lum.begin(), lum.end());
     auto median = lum.begin() + std::ptrdiff_t(n / 2);
     std::nth_element(lum.begin(), median, lum.end());
@@ -83,7 +89,8 @@ FlipResult hdrFlip(const ImageRGBA& testLinear, const ImageRGBA& referenceLinear
     const FlipExposures& e = result.exposures;
     const int count = std::max(e.count, 1);
     const float step = count > 1 ? (e.stop - e.start) / float(count - 1) : 0.0f;
-    result.map = {testLinear.width, testLinear.height, std::vector<float>(testLinear.pixelCount(), 0.0f)};
+    result.map = {testLinear.width, testLinear.height,
+                  std::vector<float>(testLinear.pixelCount(), 0.0f)};
     const int w = int(testLinear.width), h = int(testLinear.height);
     flip::LinearPlanes ref(w, h), test(w, h);
     flip::FlipWorkspace workspace;

@@ -22,10 +22,10 @@
 namespace tp::flip {
 namespace {
 
-constexpr float kColorExponent = 0.7f;   // qc
-constexpr float kFeatureExponent = 0.5f; // qf
-constexpr float kRedistributeCutoff = 0.4f;   // pc: share of cmax ...
-constexpr float kRedistributeShare = 0.95f;   // pt: ... that gets this share of [0,1]
+constexpr float kColorExponent = 0.7f;      // qc
+constexpr float kFeatureExponent = 0.5f;    // qf
+constexpr float kRedistributeCutoff = 0.4f; // pc: share of cmax ...
+constexpr float kRedistributeShare = 0.95f; // pt: ... that gets this share of [0,1]
 
 // The largest perceptible colour distance: HyAB between Hunt-adjusted pure green and blue.
 float maxColorDistance() {
@@ -37,15 +37,17 @@ float maxColorDistance() {
 inline float redistribute(float powered, float cmax) {
     const float cut = kRedistributeCutoff * cmax;
     return powered < cut ? (kRedistributeShare / cut) * powered
-                         : kRedistributeShare + ((powered - cut) / (cmax - cut)) * (1.0f - kRedistributeShare);
+                         : kRedistributeShare +
+                               ((powered - cut) / (cmax - cut)) * (1.0f - kRedistributeShare);
 }
 
 // The 7 row-filtered planes of one image.
 enum Plane { HA, HRG, HBY1, HBY2, HG, HD1, HD2, PlaneCount };
 using RowFiltered = std::vector<float>[PlaneCount];
 
-TP_FLIP_SIMD void toOpponent(const float* __restrict r, const float* __restrict g, const float* __restrict b, int w,
-                             float* __restrict yy, float* __restrict cx, float* __restrict cz, float* __restrict lum) {
+TP_FLIP_SIMD void toOpponent(const float* __restrict r, const float* __restrict g,
+                             const float* __restrict b, int w, float* __restrict yy,
+                             float* __restrict cx, float* __restrict cz, float* __restrict lum) {
     for (int x = 0; x < w; ++x) {
         const Vec3 c = xyzToYcxcz(linearRgbToXyz({r[x], g[x], b[x]}));
         yy[x] = c.x;
@@ -58,13 +60,15 @@ TP_FLIP_SIMD void toOpponent(const float* __restrict r, const float* __restrict 
 void rowPass(const LinearPlanes& in, const CsfFilters& csf, const FeatureFilters& feat,
              RowFiltered& out) {
     const int w = in.width;
-    for (auto& p : out) p.resize(size_t(w) * size_t(in.height));
+    for (auto& p : out)
+        p.resize(size_t(w) * size_t(in.height));
     parallelRows(in.height, [&](int y0, int y1) {
         const size_t n = static_cast<size_t>(w);
         std::vector<float> yy(n), cx(n), cz(n), lum(n), padded;
         for (int y = y0; y < y1; ++y) {
             const size_t base = size_t(y) * size_t(w);
-            toOpponent(&in.r[base], &in.g[base], &in.b[base], w, yy.data(), cx.data(), cz.data(), lum.data());
+            toOpponent(&in.r[base], &in.g[base], &in.b[base], w, yy.data(), cx.data(), cz.data(),
+                       lum.data());
             auto at = [&](Plane p) { return out[p].data() + base; };
             const Kernel* ka = &csf.achromatic.gaussians[0];
             float* oa = at(HA);
@@ -85,14 +89,16 @@ void rowPass(const LinearPlanes& in, const CsfFilters& csf, const FeatureFilters
 // One image's column-filtered row y: the CSF-filtered YyCxCz and the four feature responses.
 struct FilteredRow {
     std::vector<float> yy, cx, cz, edgeX, edgeY, pointX, pointY;
-    explicit FilteredRow(size_t w) : yy(w), cx(w), cz(w), edgeX(w), edgeY(w), pointX(w), pointY(w) {}
+    explicit FilteredRow(size_t w)
+        : yy(w), cx(w), cz(w), edgeX(w), edgeY(w), pointX(w), pointY(w) {}
 };
 
 // Columns [x0, x0 + count) of output row y.
-void columnPass(const RowFiltered& in, int w, int h, int x0, int count, int y, const CsfFilters& csf,
-                const FeatureFilters& feat, FilteredRow& out) {
+void columnPass(const RowFiltered& in, int w, int h, int x0, int count, int y,
+                const CsfFilters& csf, const FeatureFilters& feat, FilteredRow& out) {
     auto plane = [&](Plane p) { return in[p].data() + x0; };
-    auto column = [&](Plane p, const Kernel& k, std::vector<float>& o, float scale = 1.0f, bool accumulate = false) {
+    auto column = [&](Plane p, const Kernel& k, std::vector<float>& o, float scale = 1.0f,
+                      bool accumulate = false) {
         convolveColumn(plane(p), w, count, h, y, k, o.data(), scale, accumulate);
     };
     column(HA, csf.achromatic.gaussians[0], out.yy);
@@ -106,7 +112,9 @@ void columnPass(const RowFiltered& in, int w, int h, int x0, int count, int y, c
     column(HG, feat.secondDerivative, out.pointY);
 }
 
-inline float magnitude(float a, float b) { return std::sqrt(a * a + b * b); }
+inline float magnitude(float a, float b) {
+    return std::sqrt(a * a + b * b);
+}
 
 inline Vec3 filteredToHuntLab(float yy, float cx, float cz) {
     return linearRgbToHuntLab(xyzToLinearRgb(ycxczToXyz({yy, cx, cz})));
@@ -131,8 +139,8 @@ TP_FLIP_SIMD void flipRow(const FilteredRow& refRow, const FilteredRow& testRow,
     const float* __restrict tpx = testRow.pointX.data();
     const float* __restrict tpy = testRow.pointY.data();
     for (int x = 0; x < w; ++x) {
-        const float distance =
-            hyab(filteredToHuntLab(ry[x], rcx[x], rcz[x]), filteredToHuntLab(ty[x], tcx[x], tcz[x]));
+        const float distance = hyab(filteredToHuntLab(ry[x], rcx[x], rcz[x]),
+                                    filteredToHuntLab(ty[x], tcx[x], tcz[x]));
         const float colour = redistribute(fastPow(distance, kColorExponent), cmax);
         const float edge = std::abs(magnitude(rex[x], rey[x]) - magnitude(tex[x], tey[x]));
         const float point = std::abs(magnitude(rpx[x], rpy[x]) - magnitude(tpx[x], tpy[x]));
@@ -179,7 +187,8 @@ flip::LinearPlanes decodeDisplay(const ImageRGBA& display) {
     for (size_t i = 0; i < display.pixelCount(); ++i)
         for (int c = 0; c < 3; ++c) {
             const float v = display.rgba[i * 4 + size_t(c)];
-            (*planes[c])[i] = flip::srgbToLinear(std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f);
+            (*planes[c])[i] =
+                flip::srgbToLinear(std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f);
         }
     return p;
 }
@@ -188,13 +197,14 @@ flip::LinearPlanes decodeDisplay(const ImageRGBA& display) {
 
 FlipResult ldrFlip(const ImageRGBA& testDisplay, const ImageRGBA& referenceDisplay, float ppd) {
     FlipResult result;
-    if (testDisplay.width != referenceDisplay.width || testDisplay.height != referenceDisplay.height ||
-        testDisplay.pixelCount() == 0)
+    if (testDisplay.width != referenceDisplay.width ||
+        testDisplay.height != referenceDisplay.height || testDisplay.pixelCount() == 0)
         return result;
-    result.map = {testDisplay.width, testDisplay.height, std::vector<float>(testDisplay.pixelCount())};
+    result.map = {testDisplay.width, testDisplay.height,
+                  std::vector<float>(testDisplay.pixelCount())};
     flip::FlipWorkspace workspace;
-    flip::flipLinear(decodeDisplay(referenceDisplay), decodeDisplay(testDisplay), ppd, result.map.r.data(),
-                     workspace);
+    flip::flipLinear(decodeDisplay(referenceDisplay), decodeDisplay(testDisplay), ppd,
+                     result.map.r.data(), workspace);
     result.stats = poolFlip(result.map);
     return result;
 }

@@ -11,7 +11,8 @@ struct LinearPlanes {
     std::vector<float> r, g, b; // linear RGB in [0, 1], row-major, row 0 on top
 
     LinearPlanes() = default;
-    LinearPlanes(int w, int h) : width(w), height(h), r(size_t(w) * h), g(size_t(w) * h), b(size_t(w) * h) {}
+    LinearPlanes(int w, int h)
+        : width(w), height(h), r(size_t(w) * h), g(size_t(w) * h), b(size_t(w) * h) {}
 };
 
 // Scratch planes of flipLinear, kept between calls (HDR-FLIP calls it once per exposure).

@@ -1,8 +1,8 @@
 // FLIP's viewing geometry and pooled statistics (see flip.h).
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -20,15 +20,20 @@ void sortFlipValues(std::vector<float>& values) {
             return;
         }
     std::vector<uint32_t> keys(values.size()), scratch(values.size());
-    for (size_t i = 0; i < values.size(); ++i) keys[i] = std::bit_cast<uint32_t>(values[i]);
+    for (size_t i = 0; i < values.size(); ++i)
+        keys[i] = std::bit_cast<uint32_t>(values[i]);
     for (int shift = 0; shift < 33; shift += 11) {
         std::vector<size_t> offsets(2049, 0);
-        for (uint32_t k : keys) ++offsets[((k >> shift) & 2047u) + 1];
-        for (size_t b = 1; b < offsets.size(); ++b) offsets[b] += offsets[b - 1];
-        for (uint32_t k : keys) scratch[offsets[(k >> shift) & 2047u]++] = k;
+        for (uint32_t k : keys)
+            ++offsets[((k >> shift) & 2047u) + 1];
+        for (size_t b = 1; b < offsets.size(); ++b)
+            offsets[b] += offsets[b - 1];
+        for (uint32_t k : keys)
+            scratch[offsets[(k >> shift) & 2047u]++] = k;
         keys.swap(scratch);
     }
-    for (size_t i = 0; i < values.size(); ++i) values[i] = std::bit_cast<float>(keys[i]);
+    for (size_t i = 0; i < values.size(); ++i)
+        values[i] = std::bit_cast<float>(keys[i]);
 }
 
 } // namespace
@@ -44,7 +49,8 @@ FlipStats poolFlip(const ImageR32& map) {
     std::vector<float> sorted = map.r;
     sortFlipValues(sorted);
     double total = 0.0;
-    for (float v : sorted) total += v;
+    for (float v : sorted)
+        total += v;
     s.mean = total / double(sorted.size());
     s.min = sorted.front();
     s.max = sorted.back();

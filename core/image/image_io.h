@@ -1,6 +1,6 @@
 #pragma once
-// EXR read/write (OpenEXR) and PNG write/read (stb_image_write, stb_image). One file per third-party library
-// behind this header: exr_io.cpp, png_io.cpp.
+// EXR read/write (OpenEXR) and PNG write/read (stb_image_write, stb_image). One file per
+// third-party library behind this header: exr_io.cpp, png_io.cpp.
 #include <string>
 
 #include "core/image/image.h"

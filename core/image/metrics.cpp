@@ -56,7 +56,8 @@ void finish(const Sums& sums, const MetricsOptions& options, ErrorReport& report
 
 uint64_t countNonFinitePixels(const ImageRGBA& image) {
     uint64_t n = 0;
-    for (size_t i = 0; i < image.pixelCount(); ++i) n += !finiteRgb(&image.rgba[i * 4]);
+    for (size_t i = 0; i < image.pixelCount(); ++i)
+        n += !finiteRgb(&image.rgba[i * 4]);
     return n;
 }
 

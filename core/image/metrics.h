@@ -12,19 +12,19 @@
 namespace tp {
 
 struct MetricsOptions {
-    float relativeEpsilon = 1e-3f;   // mean relative error: |t-r| / max(|r|, eps)
-    float overThreshold = 0.01f;     // share of pixels whose max channel |t-r| exceeds this
-    float psnrPeak = 1.0f;           // PSNR peak value (1 for tonemapped, chosen for HDR)
+    float relativeEpsilon = 1e-3f; // mean relative error: |t-r| / max(|r|, eps)
+    float overThreshold = 0.01f;   // share of pixels whose max channel |t-r| exceeds this
+    float psnrPeak = 1.0f;         // PSNR peak value (1 for tonemapped, chosen for HDR)
 };
 
 struct ErrorReport {
-    double rmse = 0;            // sqrt(mean over pixels and RGB channels of (t-r)^2)
-    double psnr = 0;            // 10 log10(peak^2 / mse); +inf when identical
-    double maxAbs = 0;          // max over pixels and RGB channels of |t-r|
+    double rmse = 0;   // sqrt(mean over pixels and RGB channels of (t-r)^2)
+    double psnr = 0;   // 10 log10(peak^2 / mse); +inf when identical
+    double maxAbs = 0; // max over pixels and RGB channels of |t-r|
     uint32_t maxAbsX = 0, maxAbsY = 0;
-    double meanRelative = 0;    // mean over pixels and RGB channels of |t-r|/max(|r|,eps)
+    double meanRelative = 0;       // mean over pixels and RGB channels of |t-r|/max(|r|,eps)
     double shareOverThreshold = 0; // fraction of compared pixels with max channel |t-r| > thr
-    uint64_t nanInfCount = 0;   // pixels of the test image with a NaN or Inf in RGB
+    uint64_t nanInfCount = 0;      // pixels of the test image with a NaN or Inf in RGB
     uint64_t comparedPixels = 0;
 };
 

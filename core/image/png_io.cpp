@@ -30,7 +30,8 @@ uint8_t quantize(float v) {
 } // namespace
 
 ImageRGBA asStoredInPng(ImageRGBA display) {
-    for (float& v : display.rgba) v = float(quantize(v)) / 255.0f;
+    for (float& v : display.rgba)
+        v = float(quantize(v)) / 255.0f;
     return display;
 }
 

@@ -6,8 +6,8 @@ namespace tp::la {
 
 const IntegerKnob& tileSizeKnob() {
     // 8 to 32: one workgroup per tile within lavapipe's and every desktop GPU's limits.
-    static const IntegerKnob k{
-        Knob::integerOf("tile", {"8", "16", "32"}, "16", "Tile edge in pixels of the tiled light assignment")};
+    static const IntegerKnob k{Knob::integerOf(
+        "tile", {"8", "16", "32"}, "16", "Tile edge in pixels of the tiled light assignment")};
     return k;
 }
 
@@ -22,9 +22,10 @@ const ChoiceKnob<Assign>& lightAssignKnob() {
 
 const IntegerKnob& slicesKnob() {
     // Up to 64: a slice's bitmask costs one bit per light of the tile list.
-    static const IntegerKnob k{Knob::integerOf("slices", {"4", "8", "16", "32", "64"}, "16",
-                                               "Depth slices per tile of --light-assign clustered (exponential in "
-                                               "view distance)")};
+    static const IntegerKnob k{
+        Knob::integerOf("slices", {"4", "8", "16", "32", "64"}, "16",
+                        "Depth slices per tile of --light-assign clustered (exponential in "
+                        "view distance)")};
     return k;
 }
 
@@ -32,7 +33,8 @@ const ChoiceKnob<Cull>& lightCullKnob() {
     static const ChoiceKnob<Cull> k{
         "light-cull",
         {{Cull::Binned, "binned"}, {Cull::All, "all"}},
-        "Which lights a tile tests: binned (only those whose conservative tile rectangle covers it, "
+        "Which lights a tile tests: binned (only those whose conservative tile rectangle covers "
+        "it, "
         "built as --light-bin says; cost lights + candidates) or all (every light: tiles x "
         "lights); both keep exactly the same lists"};
     return k;
@@ -43,7 +45,8 @@ const ChoiceKnob<Bin>& lightBinKnob() {
         "light-bin",
         {{Bin::Auto, "auto"}, {Bin::Cpu, "cpu"}, {Bin::Gpu, "gpu"}},
         "Where --light-cull binned builds each tile's candidates: cpu (once per configuration), "
-        "gpu (every frame, timed passes light_binning: rectangles, counts, prefix sum; light_bin_fill; "
+        "gpu (every frame, timed passes light_binning: rectangles, counts, prefix sum; "
+        "light_bin_fill; "
         "light_bin_sort: each run ascending; the same runs as cpu) or auto (cpu on a CPU device "
         "such as lavapipe, where the sort costs more than the CPU's scatter; else gpu)"};
     return k;
@@ -76,9 +79,10 @@ bool binsOnGpu(const GpuContext& ctx, Bin bin) {
 std::string subgroupLoopUnsupported(const DeviceCaps& caps) {
     if (!(caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT))
         return "the device has no subgroup operations in fragment shaders";
-    const uint32_t need =
-        VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
-    if ((caps.subgroupOps & need) != need) return "the device lacks subgroup vote, arithmetic or ballot operations";
+    const uint32_t need = VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT |
+                          VK_SUBGROUP_FEATURE_BALLOT_BIT;
+    if ((caps.subgroupOps & need) != need)
+        return "the device lacks subgroup vote, arithmetic or ballot operations";
     return {};
 }
 

@@ -35,9 +35,9 @@ enum class Bin { Auto, Cpu, Gpu };
 // same lights in the same order per fragment either way: identical images.
 enum class Loop { Lane, Subgroup };
 
-const IntegerKnob& tileSizeKnob();   // --tile 8|16|32
+const IntegerKnob& tileSizeKnob(); // --tile 8|16|32
 const ChoiceKnob<Assign>& lightAssignKnob();
-const IntegerKnob& slicesKnob();     // --slices N: depth slices per tile (clustered only)
+const IntegerKnob& slicesKnob(); // --slices N: depth slices per tile (clustered only)
 const ChoiceKnob<Cull>& lightCullKnob();
 const ChoiceKnob<Bin>& lightBinKnob();
 const ChoiceKnob<Loop>& lightLoopKnob();

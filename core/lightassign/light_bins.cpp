@@ -17,7 +17,8 @@ LightBins binLights(const TileGrid& grid, const glm::mat4& view, const glm::mat4
     CompactLayout compact = makeCompactLayout(bins.bound);
     bins.offsets = std::move(compact.offsets);
     bins.slots = compact.slots;
-    if (!bins.bound.empty()) bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
+    if (!bins.bound.empty())
+        bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
     // Clamped offsets would send tileCandidates past its output: such bins are refused anyway.
     if (withCandidates && bins.slots <= 0xffffffffull)
         bins.candidates = tileCandidates(grid, rects, local, bins.offsets);

@@ -15,11 +15,13 @@
 namespace tp::la {
 
 struct LightBins {
-    std::vector<uint32_t> bound;      // per tile: how many local lights' rectangles cover it
-    std::vector<uint32_t> offsets;    // compact layout of `bound`: tileCount + 1 entries (clamped to 32 bits)
-    uint64_t slots = 0;               // offsets' total, unclamped: callers refuse what they cannot address
-    std::vector<uint32_t> candidates; // tile t's are [offsets[t], offsets[t + 1]); empty unless asked for
-    uint32_t maxBound = 0;            // the largest bound of any tile
+    std::vector<uint32_t> bound; // per tile: how many local lights' rectangles cover it
+    std::vector<uint32_t>
+        offsets;        // compact layout of `bound`: tileCount + 1 entries (clamped to 32 bits)
+    uint64_t slots = 0; // offsets' total, unclamped: callers refuse what they cannot address
+    std::vector<uint32_t>
+        candidates;        // tile t's are [offsets[t], offsets[t + 1]); empty unless asked for
+    uint32_t maxBound = 0; // the largest bound of any tile
 };
 
 // view/proj/lights must be what the GPU tests (the uploaded, camera-relative ones); `local`

@@ -20,8 +20,8 @@ glm::vec4 edgePlane(const glm::dmat4& proj, int row, double edge, double sign) {
 
 // The two bounding planes of every slab [i*tile, min((i+1)*tile, size)) along one axis:
 // "ndc >= lower edge" planes into lo, "ndc <= upper edge" into hi.
-void appendSlabs(std::vector<glm::vec4>& lo, std::vector<glm::vec4>& hi, const glm::dmat4& proj, int row,
-                 bool flipY, uint32_t size, uint32_t tile, uint32_t count) {
+void appendSlabs(std::vector<glm::vec4>& lo, std::vector<glm::vec4>& hi, const glm::dmat4& proj,
+                 int row, bool flipY, uint32_t size, uint32_t tile, uint32_t count) {
     auto ndcOf = [&](double px) {
         double t = 2.0 * px / double(size);
         return flipY ? 1.0 - t : t - 1.0;
@@ -44,8 +44,8 @@ void appendSlabs(std::vector<glm::vec4>& lo, std::vector<glm::vec4>& hi, const g
 // binSlabRange), so where float rounding makes a family non-monotone at a near-tie both
 // sides still agree; a tie lies within the padding (include/light_binning.h), never at a
 // tile the culling keeps.
-void slabRange(const std::vector<glm::vec4>& slabs, uint32_t loFirst, uint32_t hiFirst, uint32_t count, bool flip,
-               const glm::vec3& c, float r, int& first, int& last) {
+void slabRange(const std::vector<glm::vec4>& slabs, uint32_t loFirst, uint32_t hiFirst,
+               uint32_t count, bool flip, const glm::vec3& c, float r, int& first, int& last) {
     first = int(count);
     last = -1;
     if (gpu::binInFront(c, r)) {
@@ -53,15 +53,19 @@ void slabRange(const std::vector<glm::vec4>& slabs, uint32_t loFirst, uint32_t h
         uint32_t lo = 0, hi = count; // the first slab that `before` does not exclude
         while (lo < hi) {
             const uint32_t mid = (lo + hi) / 2;
-            if (gpu::binOutside(slabs[before + mid], c, r)) lo = mid + 1;
-            else hi = mid;
+            if (gpu::binOutside(slabs[before + mid], c, r))
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         const uint32_t begin = lo;
         hi = count; // the first slab from `begin` on that `after` excludes
         while (lo < hi) {
             const uint32_t mid = (lo + hi) / 2;
-            if (gpu::binOutside(slabs[after + mid], c, r)) hi = mid;
-            else lo = mid + 1;
+            if (gpu::binOutside(slabs[after + mid], c, r))
+                hi = mid;
+            else
+                lo = mid + 1;
         }
         if (begin < lo) {
             first = int(begin);
@@ -91,7 +95,8 @@ std::vector<glm::vec4> binSlabPlanes(const TileGrid& grid, const glm::mat4& proj
     return all;
 }
 
-std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view, const glm::mat4& proj,
+std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view,
+                                            const glm::mat4& proj,
                                             const std::vector<gpu::LightGpu>& lights,
                                             const std::vector<uint32_t>& local) {
     std::vector<TileRect> rects(local.size());
@@ -130,7 +135,8 @@ std::vector<uint32_t> countTileRects(const TileGrid& grid, const std::vector<Til
             if (y > 0) s += acc[(y - 1) * W + x];
             if (x > 0 && y > 0) s -= acc[(y - 1) * W + x - 1];
             acc[y * W + x] = s;
-            if (x < grid.tilesX && y < grid.tilesY) bound[y * grid.tilesX + x] = uint32_t(std::max<int64_t>(0, s));
+            if (x < grid.tilesX && y < grid.tilesY)
+                bound[y * grid.tilesX + x] = uint32_t(std::max<int64_t>(0, s));
         }
     return bound;
 }

@@ -25,7 +25,8 @@ std::vector<glm::vec4> binSlabPlanes(const TileGrid& grid, const glm::mat4& proj
 // Per local light (in `local` order), the rectangle of tiles whose depth-unbounded frustum
 // its padded sphere meets; conservativeTileBound counts these rectangles per tile. In float,
 // with the operations of include/light_binning.h: the GPU binning computes the same rectangles.
-std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view, const glm::mat4& proj,
+std::vector<TileRect> conservativeTileRects(const TileGrid& grid, const glm::mat4& view,
+                                            const glm::mat4& proj,
                                             const std::vector<gpu::LightGpu>& lights,
                                             const std::vector<uint32_t>& local);
 

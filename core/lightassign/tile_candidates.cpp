@@ -3,7 +3,8 @@
 namespace tp::la {
 
 std::vector<uint32_t> tileCandidates(const TileGrid& grid, const std::vector<TileRect>& rects,
-                                     const std::vector<uint32_t>& local, const std::vector<uint32_t>& offsets) {
+                                     const std::vector<uint32_t>& local,
+                                     const std::vector<uint32_t>& offsets) {
     std::vector<uint32_t> out(offsets.empty() ? 0 : offsets.back());
     // Each tile's cursor walks its run; lights are visited in ascending order, so every run
     // comes out ascending without a sort.

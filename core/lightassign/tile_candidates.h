@@ -18,6 +18,7 @@ namespace tp::la {
 // every rectangle rects[k] that covers t, ascending in k. `offsets` is the compact layout of
 // countTileRects(grid, rects) (makeCompactLayout with no extra slots).
 std::vector<uint32_t> tileCandidates(const TileGrid& grid, const std::vector<TileRect>& rects,
-                                     const std::vector<uint32_t>& local, const std::vector<uint32_t>& offsets);
+                                     const std::vector<uint32_t>& local,
+                                     const std::vector<uint32_t>& offsets);
 
 } // namespace tp::la

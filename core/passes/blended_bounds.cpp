@@ -19,16 +19,19 @@ BlendedBounds::~BlendedBounds() {
 ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig& config) {
     config_ = config;
     const uint32_t tiles = config.grid.count();
-    bounds_ = graph.createBuffer("blended_bounds", uint64_t(tiles) * 8,
-                                 "per tile: min and max view distance of the blended fragments shaded");
-    graph.addPass("blended_bounds_clear", {{bounds_, Use::TransferDst}}, [this, tiles](PassContext& pc) {
-        VkBuffer b = pc.buffer(bounds_).buffer;
-        vkCmdFillBuffer(pc.cmd, b, 0, VkDeviceSize(tiles) * 4, TP_LA_BLEND_EMPTY);
-        vkCmdFillBuffer(pc.cmd, b, VkDeviceSize(tiles) * 4, VkDeviceSize(tiles) * 4, 0u);
-    });
-    graph.addPass("blended_bounds",
-                  {{config.depth, Use::DepthTest}, {bounds_, Use::StorageWrite, TP_LA_BLEND_BINDING_BOUNDS}},
-                  [this](PassContext& pc) { record(pc); });
+    bounds_ =
+        graph.createBuffer("blended_bounds", uint64_t(tiles) * 8,
+                           "per tile: min and max view distance of the blended fragments shaded");
+    graph.addPass(
+        "blended_bounds_clear", {{bounds_, Use::TransferDst}}, [this, tiles](PassContext& pc) {
+            VkBuffer b = pc.buffer(bounds_).buffer;
+            vkCmdFillBuffer(pc.cmd, b, 0, VkDeviceSize(tiles) * 4, TP_LA_BLEND_EMPTY);
+            vkCmdFillBuffer(pc.cmd, b, VkDeviceSize(tiles) * 4, VkDeviceSize(tiles) * 4, 0u);
+        });
+    graph.addPass(
+        "blended_bounds",
+        {{config.depth, Use::DepthTest}, {bounds_, Use::StorageWrite, TP_LA_BLEND_BINDING_BOUNDS}},
+        [this](PassContext& pc) { record(pc); });
     return bounds_;
 }
 
@@ -55,13 +58,14 @@ void BlendedBounds::record(PassContext& pc) {
     DepthTarget depth{config_.depth, {}, false, true};
     beginRendering(pc, {}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
+                            &set_.set, 0, nullptr);
     scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
     endRendering(pc);
 }
 
-std::vector<TileBlendedBounds> unpackBlendedBounds(const std::vector<uint8_t>& bytes, uint32_t tiles) {
+std::vector<TileBlendedBounds> unpackBlendedBounds(const std::vector<uint8_t>& bytes,
+                                                   uint32_t tiles) {
     std::vector<TileBlendedBounds> out(tiles);
     if (bytes.size() < size_t(tiles) * 8) return out;
     for (uint32_t t = 0; t < tiles; ++t) {

@@ -26,10 +26,10 @@ namespace la {
 // fragments at the same positions.
 struct BlendedBoundsConfig {
     TileGrid grid;
-    ResourceHandle depth;        // the opaque depth the blended pass tests against (per sample under MSAA)
-    uint32_t samples = 1;        // its sample count
-    bool sampleShading = false;  // the blended pass shades per sample
-    bool inputsAtPixel = false;  // its fragment inputs are TP_INPUTS_AT_PIXEL (scene_inputs.glsl)
+    ResourceHandle depth; // the opaque depth the blended pass tests against (per sample under MSAA)
+    uint32_t samples = 1; // its sample count
+    bool sampleShading = false; // the blended pass shades per sample
+    bool inputsAtPixel = false; // its fragment inputs are TP_INPUTS_AT_PIXEL (scene_inputs.glsl)
     // Tests only: draw with the whole scene.vert interface (every output and input) instead
     // of its position-only variant, to check that the variant records the same bounds.
     bool fullInterface = false;
@@ -65,7 +65,8 @@ struct TileBlendedBounds {
     bool any = false;
     float nearDist = 0.0f, farDist = 0.0f;
 };
-std::vector<TileBlendedBounds> unpackBlendedBounds(const std::vector<uint8_t>& bytes, uint32_t tiles);
+std::vector<TileBlendedBounds> unpackBlendedBounds(const std::vector<uint8_t>& bytes,
+                                                   uint32_t tiles);
 
 } // namespace la
 } // namespace tp

@@ -1,10 +1,10 @@
 #include "core/passes/blended_forward.h"
 
 #include "core/gpu/context.h"
-#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/gpu/resources.h"
+#include "core/gpu/stand_ins.h"
 #include "core/render/scene_gpu.h"
 #include "include/tiled_lighting.h"
 
@@ -17,7 +17,7 @@ BlendedForwardPass::~BlendedForwardPass() {
 }
 
 void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices,
-                           ResourceHandle masks) {
+                              ResourceHandle masks) {
     t_ = t;
     slices_ = masks.valid() ? slices : 0u;
     masks_ = masks;
@@ -46,14 +46,16 @@ void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool bi
     GraphicsPipelineDesc d;
     // --msaa-shading pixel under MSAA: inputs at the pixel centre (scene_inputs.glsl), no
     // sample shading; each covered sample that passes the depth test blends the pixel's value.
-    d.fragmentShader = t_.perPixel ? "deferred_transparent_pixel_frag" : "deferred_transparent_frag";
+    d.fragmentShader =
+        t_.perPixel ? "deferred_transparent_pixel_frag" : "deferred_transparent_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
     d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
     d.colorFormats = {t_.hdrFormat};
     d.samples = VkSampleCountFlagBits(t_.samples);
-    d.sampleShading = t_.msaa() && !t_.perPixel; // --msaa-shading sample: every sample, as the reference
+    d.sampleShading =
+        t_.msaa() && !t_.perPixel; // --msaa-shading sample: every sample, as the reference
     d.depthWrite = false;
     d.blend = BlendMode::Alpha;
     d.layout = layout_;
@@ -62,12 +64,13 @@ void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool bi
 }
 
 void BlendedForwardPass::record(PassContext& pc) {
-    ColorTarget color = t_.msaa() ? ColorTarget{t_.hdrMsaa, t_.hdr, false} : ColorTarget{t_.hdr, {}, false};
+    ColorTarget color =
+        t_.msaa() ? ColorTarget{t_.hdrMsaa, t_.hdr, false} : ColorTarget{t_.hdr, {}, false};
     DepthTarget depth{t_.depth, {}, false, true};
     beginRendering(pc, {color}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1, &set_.set, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
+                            &set_.set, 0, nullptr);
     scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
     endRendering(pc);
 }

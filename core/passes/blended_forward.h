@@ -33,7 +33,8 @@ class BlendedForwardPass {
     // slices > 0 with `masks` (--light-assign clustered): fragments take their cluster's
     // lights through the slice rows the tiled pass wrote over the transparent lists.
     // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
-    void plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices = 0, ResourceHandle masks = {});
+    void plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices = 0,
+              ResourceHandle masks = {});
     // candidates: the tiled pass's light_candidates; binned: the transparent lists are
     // bitmasks over them (include/tiled_lighting.h).
     void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);

@@ -16,23 +16,27 @@ uint64_t TransparentListPlan::bytes() const {
     return (tiles * TP_LA_HEADER_WORDS + slots) * 4;
 }
 
-TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene, uint64_t limit,
-                                         const std::string& deviceName, bool masks,
+TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene,
+                                         uint64_t limit, const std::string& deviceName, bool masks,
                                          const std::vector<uint32_t>* localBound) {
     // The uploaded (camera-relative) view and lights: what the tiled pass tests.
     const gpu::FrameUniforms& f = scene.shadingFrame();
     const std::vector<gpu::LightGpu>& lights = scene.shadingLights();
     la::LightClasses classes = la::classifyLights(lights);
     std::vector<uint32_t> bound =
-        localBound ? *localBound : la::conservativeTileBound(grid, f.view, f.proj, lights, classes.local);
+        localBound ? *localBound
+                   : la::conservativeTileBound(grid, f.view, f.proj, lights, classes.local);
     if (masks) // candidates per tile: the directional lights + the bound (the binned run's length)
-        for (uint32_t& b : bound) b = (uint32_t(classes.directional.size()) + b + 31) / 32;
-    la::CompactLayout compact = la::makeCompactLayout(bound, masks ? 0u : uint32_t(classes.directional.size()));
+        for (uint32_t& b : bound)
+            b = (uint32_t(classes.directional.size()) + b + 31) / 32;
+    la::CompactLayout compact =
+        la::makeCompactLayout(bound, masks ? 0u : uint32_t(classes.directional.size()));
     TransparentListPlan plan{std::move(compact.offsets), compact.slots, masks};
     if (plan.bytes() > limit || plan.slots > 0xffffffffull)
-        throw RendererError("deferred: the transparent light lists need " + std::to_string(plan.bytes()) +
-                            " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
-                            deviceName + "; use a larger --tile, a lower --res or fewer lights");
+        throw RendererError(
+            "deferred: the transparent light lists need " + std::to_string(plan.bytes()) +
+            " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
+            deviceName + "; use a larger --tile, a lower --res or fewer lights");
     return plan;
 }
 

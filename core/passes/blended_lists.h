@@ -29,8 +29,8 @@ struct TransparentListPlan {
 // ceil(candidates / 32) words (include/tiled_lighting.h). localBound: that bound
 // when the caller has binned the lights already (binned culling bins them once, on the CPU
 // or the GPU); null: computed here.
-TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene, uint64_t limit,
-                                         const std::string& deviceName, bool masks,
+TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene,
+                                         uint64_t limit, const std::string& deviceName, bool masks,
                                          const std::vector<uint32_t>* localBound = nullptr);
 
 } // namespace tp

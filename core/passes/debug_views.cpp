@@ -11,7 +11,8 @@ namespace {
 
 void outlineTile(ImageRGBA& img, const TileGrid& g, uint32_t tx, uint32_t ty) {
     uint32_t x0 = tx * g.tileSize, y0 = ty * g.tileSize;
-    uint32_t x1 = std::min(x0 + g.tileSize, g.width) - 1, y1 = std::min(y0 + g.tileSize, g.height) - 1;
+    uint32_t x1 = std::min(x0 + g.tileSize, g.width) - 1,
+             y1 = std::min(y0 + g.tileSize, g.height) - 1;
     for (uint32_t y = y0; y <= y1; ++y)
         for (uint32_t x = x0; x <= x1; ++x) {
             if (x != x0 && x != x1 && y != y0 && y != y1) continue;
@@ -27,7 +28,8 @@ void outlineTile(ImageRGBA& img, const TileGrid& g, uint32_t tx, uint32_t ty) {
 
 uint32_t heatMapScaleMax(const std::vector<uint32_t>& counts) {
     uint32_t m = 1;
-    for (uint32_t c : counts) m = std::max(m, c);
+    for (uint32_t c : counts)
+        m = std::max(m, c);
     return m;
 }
 
@@ -48,7 +50,8 @@ ImageRGBA lightsPerTileHeatMap(const TileGrid& g, const std::vector<uint32_t>& c
     return out;
 }
 
-ImageRGBA tileDepthBoundsImage(const TileGrid& g, const std::vector<TileDepthRange>& tiles, const glm::mat4& invProj) {
+ImageRGBA tileDepthBoundsImage(const TileGrid& g, const std::vector<TileDepthRange>& tiles,
+                               const glm::mat4& invProj) {
     auto distance = [&](float depth) {
         glm::vec4 v = invProj * glm::vec4(0.0f, 0.0f, depth, 1.0f);
         return std::abs(v.w) < 1e-30f ? std::numeric_limits<float>::infinity() : -v.z / v.w;

@@ -31,6 +31,7 @@ struct TileDepthRange {
 
 // Tile depth bounds as view distance, nearest | farthest side by side on one scale (0 to
 // the farthest bound); tiles without geometry are magenta (the scale's "not a number").
-ImageRGBA tileDepthBoundsImage(const TileGrid& grid, const std::vector<TileDepthRange>& tiles, const glm::mat4& invProj);
+ImageRGBA tileDepthBoundsImage(const TileGrid& grid, const std::vector<TileDepthRange>& tiles,
+                               const glm::mat4& invProj);
 
 } // namespace tp::passes

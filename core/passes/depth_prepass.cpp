@@ -45,10 +45,12 @@ void DepthPrepass::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     scene_.bindIndexBuffer(pc.cmd);
     draws_ = 0;
-    for (auto [pipeline, list] : {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
+    for (auto [pipeline, list] :
+         {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
         if (!pipeline) continue;
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        for (const DrawItem* d : *list) recordDraw(pc.cmd, layout_, *d);
+        for (const DrawItem* d : *list)
+            recordDraw(pc.cmd, layout_, *d);
         draws_ += uint32_t(list->size());
     }
     endRendering(pc);

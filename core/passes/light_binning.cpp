@@ -17,9 +17,9 @@ namespace tp::la {
 namespace {
 
 enum Step { kClear, kRects, kRows, kColumns, kFill, kSort, kSortStep, kSortLocal, kSteps };
-const char* const kShaders[kSteps] = {"la_bin_clear_comp",        "la_bin_rects_comp", "la_bin_scan_rows_comp",
-                                      "la_bin_scan_columns_comp", "la_bin_fill_comp",  "la_bin_sort_comp",
-                                      "la_bin_sort_step_comp",    "la_bin_sort_local_comp"};
+const char* const kShaders[kSteps] = {
+    "la_bin_clear_comp", "la_bin_rects_comp", "la_bin_scan_rows_comp", "la_bin_scan_columns_comp",
+    "la_bin_fill_comp",  "la_bin_sort_comp",  "la_bin_sort_step_comp", "la_bin_sort_local_comp"};
 
 // Between the steps of the pass: each reads what the one before wrote (hand-written: the
 // graph orders passes, not the dispatches within one).
@@ -31,22 +31,25 @@ void stepBarrier(VkCommandBuffer cmd) {
 
 uint32_t sortSize(uint32_t n) {
     uint32_t s = 1;
-    while (s < n) s <<= 1;
+    while (s < n)
+        s <<= 1;
     return s;
 }
 
 } // namespace
 
-GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, const std::vector<uint32_t>& local,
-                       std::string owner)
-    : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())), owner_(std::move(owner)) {
+GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
+                       const std::vector<uint32_t>& local, std::string owner)
+    : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
+      owner_(std::move(owner)) {
     // Its largest buffer: the light list, bound whole.
     if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
                             " point/spot lights needs more than maxStorageBufferRange (" +
-                            std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
-                            "; use --light-bin cpu or fewer lights");
-    // Uploaded once per configuration: the grid and its slab planes (the CPU's floats), the lights to bin.
+                            std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " +
+                            ctx_.info.name + "; use --light-bin cpu or fewer lights");
+    // Uploaded once per configuration: the grid and its slab planes (the CPU's floats), the lights
+    // to bin.
     const std::vector<glm::vec4> slabs = binSlabPlanes(grid_, scene_.shadingFrame().proj);
     gpu::BinInputs in{};
     const uint32_t X = grid_.tilesX, Y = grid_.tilesY;
@@ -55,11 +58,13 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     std::vector<uint8_t> bytes(sizeof(in) + slabs.size() * sizeof(glm::vec4));
     std::memcpy(bytes.data(), &in, sizeof(in));
     std::memcpy(bytes.data() + sizeof(in), slabs.data(), slabs.size() * sizeof(glm::vec4));
-    inputs_ = createBufferWithData(ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                   {owner_, "light_binning", "light_bin_inputs", "GPU binning: tile grid, slab planes"});
+    inputs_ = createBufferWithData(
+        ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+        {owner_, "light_binning", "light_bin_inputs", "GPU binning: tile grid, slab planes"});
     std::vector<uint32_t> list = local.empty() ? std::vector<uint32_t>{0} : local;
-    localList_ = createBufferWithData(ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                      {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
+    localList_ = createBufferWithData(
+        ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+        {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
     std::vector<SetBinding> bindings;
     for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_BIG; ++b)
         bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
@@ -68,11 +73,13 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     set_.bindings = bindings;
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
-    // Vulkan guarantees only 128 invocations per workgroup: a GPU that allows fewer than 256 gets its limit.
+    // Vulkan guarantees only 128 invocations per workgroup: a GPU that allows fewer than 256 gets
+    // its limit.
     const VkPhysicalDeviceLimits& limits = ctx_.properties.limits;
-    const uint32_t sortGroup = ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU
-                                                  : std::min({TP_BIN_SORT_GROUP_GPU, limits.maxComputeWorkGroupInvocations,
-                                                              limits.maxComputeWorkGroupSize[0]});
+    const uint32_t sortGroup =
+        ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU
+                           : std::min({TP_BIN_SORT_GROUP_GPU, limits.maxComputeWorkGroupInvocations,
+                                       limits.maxComputeWorkGroupSize[0]});
     spec.push_back({TP_BIN_SPEC_SORT_GROUP, sortGroup});
     try {
         for (const char* shader : kShaders)
@@ -83,10 +90,13 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, c
     }
 }
 
-GpuBinning::~GpuBinning() { destroyPipelines(); }
+GpuBinning::~GpuBinning() {
+    destroyPipelines();
+}
 
 void GpuBinning::destroyPipelines() {
-    for (VkPipeline p : pipelines_) vkDestroyPipeline(ctx_.device, p, nullptr);
+    for (VkPipeline p : pipelines_)
+        vkDestroyPipeline(ctx_.device, p, nullptr);
     pipelines_.clear();
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     layout_ = VK_NULL_HANDLE;
@@ -105,21 +115,27 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
 
 LightBins GpuBinning::sizes() {
     // Plan-time buffers, freed on return; the frame's live in its graph.
-    const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    const VkBufferUsageFlags usage =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     auto make = [&](uint64_t words, const char* name) {
-        return createBuffer(ctx_, std::max<uint64_t>(words, 4) * 4, usage, MemoryKind::Device,
-                            {owner_, "light_binning", name, "GPU binning at plan time (freed before the frame)"});
+        return createBuffer(
+            ctx_, std::max<uint64_t>(words, 4) * 4, usage, MemoryKind::Device,
+            {owner_, "light_binning", name, "GPU binning at plan time (freed before the frame)"});
     };
     const uint32_t tiles = grid_.count();
-    Buffer counts = make(tiles, "light_bin_sizing_counts"), offsets = make(tiles + 1, "light_bin_sizing_offsets"),
-           rows = make(grid_.tilesY, "light_bin_sizing_rows"), big = make(1, "light_bin_sizing_big");
-    bind({counts.buffer, offsets.buffer, rows.buffer, big.buffer}, rows.buffer); // target: unused here
+    Buffer counts = make(tiles, "light_bin_sizing_counts"),
+           offsets = make(tiles + 1, "light_bin_sizing_offsets"),
+           rows = make(grid_.tilesY, "light_bin_sizing_rows"),
+           big = make(1, "light_bin_sizing_big");
+    bind({counts.buffer, offsets.buffer, rows.buffer, big.buffer},
+         rows.buffer); // target: unused here
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         begin(cmd);
         recordSizing(cmd, 0); // large rectangles counted, not listed
         // readbackBuffer copies in a later submission.
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT);
     });
     auto words = [&](const Buffer& b, uint32_t n) {
         std::vector<uint8_t> bytes = readbackBuffer(ctx_, b);
@@ -132,7 +148,8 @@ LightBins GpuBinning::sizes() {
     bins.offsets = words(offsets, tiles + 1);
     // The unclamped total (and the layout callers refuse) from the counts, as on the CPU.
     bins.slots = makeCompactLayout(bins.bound).slots;
-    if (!bins.bound.empty()) bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
+    if (!bins.bound.empty())
+        bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
     maxBound_ = bins.maxBound;
     bigLights_ = words(big, 1)[0];
     return bins;
@@ -140,12 +157,15 @@ LightBins GpuBinning::sizes() {
 
 void GpuBinning::plan(FrameGraph& graph) {
     const uint32_t tiles = grid_.count();
-    counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4, "GPU binning: lights covering each tile");
+    counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4,
+                                 "GPU binning: lights covering each tile");
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum)");
-    rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4, "GPU binning: per row, its scans' sum");
-    big_ = graph.createBuffer("light_bin_big", (uint64_t(bigLights_) + 1) * 4,
-                              "GPU binning: the lights of large rectangles, filled by a workgroup each");
+    rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4,
+                               "GPU binning: per row, its scans' sum");
+    big_ = graph.createBuffer(
+        "light_bin_big", (uint64_t(bigLights_) + 1) * 4,
+        "GPU binning: the lights of large rectangles, filled by a workgroup each");
     // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
     // the sort. Their runs go to a buffer outside the graph (ordered by hand-written barriers).
     graph.addPass("light_binning",
@@ -157,12 +177,13 @@ void GpuBinning::plan(FrameGraph& graph) {
                       begin(pc.cmd);
                       recordSizing(pc.cmd, bigLights_);
                   });
-    graph.addPass("light_bin_fill",
-                  {{counts_, Use::StorageWrite}, {offsets_, Use::StorageRead}, {big_, Use::StorageRead}},
-                  [this](PassContext& pc) {
-                      begin(pc.cmd);
-                      recordFill(pc.cmd);
-                  });
+    graph.addPass(
+        "light_bin_fill",
+        {{counts_, Use::StorageWrite}, {offsets_, Use::StorageRead}, {big_, Use::StorageRead}},
+        [this](PassContext& pc) {
+            begin(pc.cmd);
+            recordFill(pc.cmd);
+        });
     // The sort touches no count (the fill counted them down); it declares them written so that
     // the graph keeps the fill and the sort live (a pass lives when it writes something needed)
     // and orders it after the fill.
@@ -177,7 +198,8 @@ void GpuBinning::plan(FrameGraph& graph) {
 }
 
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
-    if (baseWord > 0xffffffffull) throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
+    if (baseWord > 0xffffffffull)
+        throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
     bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(rows_).buffer,
           graph.buffer(big_).buffer},
@@ -186,16 +208,19 @@ void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) 
 
 void GpuBinning::begin(VkCommandBuffer cmd) {
     scene_.bindSceneSet(cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set,
+                            0, nullptr);
 }
 
 // 64 invocations per workgroup over `count` items.
-void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push) {
+void GpuBinning::dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count,
+                              const gpu::DrawPush& push) {
     dispatchGroups(cmd, pipeline, (count + 63) / 64, push);
 }
 
 // `groups` workgroups, in rows of at most 65,535 (a dispatch dimension's limit).
-void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups, const gpu::DrawPush& push) {
+void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups,
+                                const gpu::DrawPush& push) {
     if (groups == 0) return;
     const uint32_t x = std::min(groups, 65535u), y = (groups + x - 1) / x;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
@@ -206,7 +231,8 @@ void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32
 // Steps 1-4: counts and offsets; the big list, up to `bigCapacity` lights.
 void GpuBinning::recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity) {
     const gpu::DrawPush push{0, base_, 0, 0};
-    dispatchFlat(cmd, pipelines_[kClear], std::max(grid_.count(), 1u), push); // 1: the big list's count
+    dispatchFlat(cmd, pipelines_[kClear], std::max(grid_.count(), 1u),
+                 push); // 1: the big list's count
     stepBarrier(cmd);
     dispatchFlat(cmd, pipelines_[kRects], locals_, {bigCapacity, base_, 0, 0});
     stepBarrier(cmd);
@@ -227,7 +253,8 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     const uint32_t rows = std::max(1u, TP_BIN_FILL_BUDGET / std::max(1u, grid_.tilesX));
     for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
-        if (first > 0) stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
+        if (first > 0)
+            stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
         // The small rectangles' workgroups, then one per large rectangle (bin_fill.comp).
         const uint32_t small = (locals_ + 63) / 64;
         dispatchGroups(cmd, pipelines_[kFill], small + bigLights_,

@@ -6,7 +6,8 @@
 //     1. clear   the counts (a difference array) and the big list's count
 //     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
 //                corners in the difference array; lights of large rectangles to the big list
-//                (rectangles are computed again by the fill rather than stored: no memory per light)
+//                (rectangles are computed again by the fill rather than stored: no memory per
+//                light)
 //     3. rows    a workgroup per row of tiles: prefix sums along it
 //     4. columns a workgroup per column: the counts (the bound) and their row-major exclusive
 //                prefix sum (the offsets: the compact layout) in one pass down the column
@@ -42,15 +43,16 @@ class GpuBinning {
   public:
     // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
     // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
-    GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid, const std::vector<uint32_t>& local,
-               std::string owner);
+    GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
+               const std::vector<uint32_t>& local, std::string owner);
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
 
     // Plan time: steps 1-4 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
     LightBins sizes();
-    // From sizes(): how many lights the fill gives a workgroup each (more than TP_BIN_BIG_RECT tiles).
+    // From sizes(): how many lights the fill gives a workgroup each (more than TP_BIN_BIG_RECT
+    // tiles).
     uint32_t bigLights() const { return bigLights_; }
     // The frame: passes "light_binning" (steps 1-4), "light_bin_fill" (5), "light_bin_sort" (6),
     // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_counts).
@@ -68,8 +70,10 @@ class GpuBinning {
     void recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity);
     void recordFill(VkCommandBuffer cmd);
     void recordSort(VkCommandBuffer cmd);
-    void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count, const gpu::DrawPush& push);
-    void dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups, const gpu::DrawPush& push);
+    void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count,
+                      const gpu::DrawPush& push);
+    void dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t groups,
+                        const gpu::DrawPush& push);
     void begin(VkCommandBuffer cmd);
 
     GpuContext& ctx_;
@@ -78,8 +82,9 @@ class GpuBinning {
     uint32_t locals_ = 0;
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
-    uint32_t maxBound_ = 0;  // from sizes(): whether long runs need bin_sort_step
-    uint32_t bigLights_ = 0; // from sizes(): lights whose rectangle covers more than TP_BIN_BIG_RECT tiles
+    uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
+    uint32_t bigLights_ =
+        0; // from sizes(): lights whose rectangle covers more than TP_BIN_BIG_RECT tiles
     Buffer inputs_, localList_;
     ResourceHandle counts_, offsets_, rows_, big_;
     PassSet set_;

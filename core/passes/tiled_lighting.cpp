@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "core/gpu/context.h"
-#include "core/gpu/stand_ins.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
+#include "core/gpu/stand_ins.h"
 #include "core/gpu/vk_check.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
@@ -21,8 +21,9 @@ TiledLighting::~TiledLighting() {
     destroyPassSet(ctx_, set_);
 }
 
-void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t,
-                         bool listsOnly, ResourceHandle transparentMasks, ResourceHandle blendBounds) {
+void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source,
+                         const TiledLightingTargets& t, bool listsOnly,
+                         ResourceHandle transparentMasks, ResourceHandle blendBounds) {
     source_ = source;
     t_ = t;
     listsOnly_ = listsOnly;
@@ -34,13 +35,15 @@ void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source, const T
     if (!listsOnly) uses = source.attributes;
     uses.push_back({source.depth, Use::Sampled, TP_DEF_BINDING_DEPTH});
     if (!listsOnly)
-        uses.push_back({t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_DEF_BINDING_HDR});
+        uses.push_back(
+            {t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_DEF_BINDING_HDR});
     uses.push_back({t.tileStats, Use::StorageWrite, TP_DEF_BINDING_TILE_STATS});
     if (t.transparentLists.valid())
         uses.push_back({t.transparentLists, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_LISTS});
     if (transparentMasks.valid())
         uses.push_back({transparentMasks, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_MASKS});
-    if (t.transparentLists.valid()) uses.push_back({blendBounds, Use::StorageRead, TP_DEF_BINDING_BLEND_BOUNDS});
+    if (t.transparentLists.valid())
+        uses.push_back({blendBounds, Use::StorageRead, TP_DEF_BINDING_BLEND_BOUNDS});
     if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_DEF_BINDING_DEBUG});
     graph.addPass(passName(), uses, [this](PassContext& pc) { record(pc); });
 }
@@ -64,15 +67,18 @@ void TiledLighting::prepare(FrameGraph& graph) {
     std::vector<ExternalBuffer> externals;
     if (t_.transparentLists.valid()) {
         // Uploaded once per configuration: the compact layout's runs (blended_lists.h plans them).
-        listOffsets_ = createBufferWithData(ctx_, t_.listOffsets.data(), t_.listOffsets.size() * 4,
-                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                            {graph.owner(), "", "transparent_list_offsets",
-                                             "per tile: first slot of its transparent list (prefix sum)"});
+        listOffsets_ =
+            createBufferWithData(ctx_, t_.listOffsets.data(), t_.listOffsets.size() * 4,
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 {graph.owner(), "", "transparent_list_offsets",
+                                  "per tile: first slot of its transparent list (prefix sum)"});
         externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
         if (!transparentMasks_.valid()) {
-            // The shader declares the slice rows whenever it writes lists; only clustered uses them.
-            noMasks_ = createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
-                                                  "stand-in: slice rows are clustered only"});
+            // The shader declares the slice rows whenever it writes lists; only clustered uses
+            // them.
+            noMasks_ =
+                createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
+                                           "stand-in: slice rows are clustered only"});
             externals.push_back({TP_DEF_BINDING_TRANSPARENT_MASKS, noMasks_.buffer});
         }
     }
@@ -89,11 +95,13 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
     spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
     // The shared slice masks: clustered shading only (tiled groups keep one word).
-    spec.push_back({TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
+    spec.push_back(
+        {TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 
-const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid, const std::string& owner) {
+const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid,
+                                                  const std::string& owner) {
     if (!binnedOnce_) {
         binnedOnce_ = true;
         const gpu::FrameUniforms& f = scene_.shadingFrame();
@@ -120,12 +128,14 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         const la::LightBins& bins = bins_; // from plan (bound())
         const uint32_t directional = uint32_t(classes.directional.size());
         // The buffer's size from the unclamped slot count: refused before it is built.
-        const uint64_t bytes = (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
+        const uint64_t bytes =
+            (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
         if (bytes > ctx_.caps.maxStorageBufferRange)
-            throw RendererError("deferred: the binned light candidates need " + std::to_string(bytes) +
-                                " bytes, more than maxStorageBufferRange (" +
-                                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
-                                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
+            throw RendererError(
+                "deferred: the binned light candidates need " + std::to_string(bytes) +
+                " bytes, more than maxStorageBufferRange (" +
+                std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
+                "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
         words[TP_DEF_CAND_DIRECTIONAL] = directional;
         words[TP_DEF_CAND_OFFSETS] = TP_DEF_CAND_HEADER + directional;
         words[TP_DEF_CAND_RUNS] = TP_DEF_CAND_HEADER + directional + tiles + 1;
@@ -139,10 +149,11 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
         candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
     }
     std::vector<uint32_t>().swap(bins_.candidates); // uploaded: the host copy is not needed again
-    candidates_ = createBufferWithData(ctx_, words.data(), words.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                       {graph.owner(), "", "light_candidates",
-                                        binned_ ? "binned culling: directional lights, per-tile offsets, candidates"
-                                                : "binned culling off (--light-cull all): header only"});
+    candidates_ = createBufferWithData(
+        ctx_, words.data(), words.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+        {graph.owner(), "", "light_candidates",
+         binned_ ? "binned culling: directional lights, per-tile offsets, candidates"
+                 : "binned culling off (--light-cull all): header only"});
     if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_DEF_CAND_RUNS]);
 }
 
@@ -161,21 +172,24 @@ void TiledLighting::dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end) 
 
 void TiledLighting::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
-    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1, &set_.set, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1,
+                            &set_.set, 0, nullptr);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     // Binned: batches over each tile's candidates, up to the fullest tile's.
     const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();
     // Lists only: no shading loop, one dispatch whatever the light count.
-    uint32_t batch = listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_.grid.tileSize, source_.samples);
+    uint32_t batch =
+        listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_.grid.tileSize, source_.samples);
     // Clustered: the slice bitmasks of a batch fit the shared array (include/tiled_lighting.h).
-    if (slices_ > 0 && !listsOnly_) batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / slices_);
+    if (slices_ > 0 && !listsOnly_)
+        batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / slices_);
     for (uint32_t first = 0; first == 0 || first < lights; first += batch) {
         if (first > 0) {
             // The next batch adds to hdr and the tile statistics that this one wrote.
-            memoryBarrier(pc.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            memoryBarrier(
+                pc.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         }
         dispatch(pc.cmd, first, std::min(lights, first + batch));
     }

@@ -13,8 +13,8 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
-#include "core/passes/light_binning.h"
 #include "core/lightassign/tile_grid.h"
+#include "core/passes/light_binning.h"
 #include "include/tiled_lighting.h"
 
 namespace tp {
@@ -35,12 +35,13 @@ class SceneGpu;
 // surface reader (shaders/deferred/gbuffer_read.glsl for the G-buffer) at the bindings given
 // here; the pass names the family's variants from the flags below.
 struct SurfaceSource {
-    std::string shaderFamily;          // variants FAMILY_m<M>_e<E>_t<T>_d<D>[_h16]_comp, FAMILY_lists_m<M>_comp
-    std::vector<PassUse> attributes;   // sampled images, each with its binding
-    ResourceHandle depth;              // per-sample depth: the tiles' bounds, positions from depth
+    std::string
+        shaderFamily; // variants FAMILY_m<M>_e<E>_t<T>_d<D>[_h16]_comp, FAMILY_lists_m<M>_comp
+    std::vector<PassUse> attributes; // sampled images, each with its binding
+    ResourceHandle depth;            // per-sample depth: the tiles' bounds, positions from depth
     uint32_t samples = 1;
-    bool emissive = false;             // an emissive attribute is among them
-    bool everySample = false;          // the material per sample (--msaa-shading sample): lit per sample
+    bool emissive = false;    // an emissive attribute is among them
+    bool everySample = false; // the material per sample (--msaa-shading sample): lit per sample
     std::vector<SpecConstant> constants; // the source's own (the G-buffer's layout)
 };
 
@@ -56,12 +57,14 @@ struct TiledLightingTargets {
 
 class TiledLighting {
   public:
-    // binned (--light-cull binned): each tile tests only its candidates (core/lightassign/light_bins.h).
-    // slices > 0 (--light-assign clustered): each sample takes only its depth slice's lights.
-    // gpuBinning (--light-bin resolved to gpu; binned only): pass light_binning builds the
-    // candidates every frame (core/passes/light_binning.h).
-    TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices, bool gpuBinning = false)
-        : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices), gpuBinning_(binned && gpuBinning) {}
+    // binned (--light-cull binned): each tile tests only its candidates
+    // (core/lightassign/light_bins.h). slices > 0 (--light-assign clustered): each sample takes
+    // only its depth slice's lights. gpuBinning (--light-bin resolved to gpu; binned only): pass
+    // light_binning builds the candidates every frame (core/passes/light_binning.h).
+    TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices,
+                  bool gpuBinning = false)
+        : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices),
+          gpuBinning_(binned && gpuBinning) {}
     ~TiledLighting();
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
@@ -69,8 +72,9 @@ class TiledLighting {
     // transparent lists that this pass writes for the blended pass (include/tiled_lighting.h).
     // blendBounds (blended scenes): the blended depth bounds the transparent lists are culled
     // against (core/passes/blended_bounds.h).
-    void plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t, bool listsOnly = false,
-              ResourceHandle transparentMasks = {}, ResourceHandle blendBounds = {});
+    void plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t,
+              bool listsOnly = false, ResourceHandle transparentMasks = {},
+              ResourceHandle blendBounds = {});
     void prepare(FrameGraph& graph);
     // Binned: each tile's candidate count (per point/spot light rectangle covering it; the
     // transparent lists are sized from it too), binned once per configuration, on the CPU or
@@ -97,7 +101,7 @@ class TiledLighting {
     uint32_t slices_ = 0;
     bool gpuBinning_ = false;
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
-    la::LightBins bins_;                      // binned: the runs (CPU) or their sizes (GPU: no candidates)
+    la::LightBins bins_; // binned: the runs (CPU) or their sizes (GPU: no candidates)
     bool binnedOnce_ = false;
     bool listsOnly_ = false;
     ResourceHandle transparentMasks_;

@@ -34,12 +34,14 @@ class ReferenceRenderer final : public Renderer {
                                              "depth (resolved: sample 0)"});
         std::vector<PassUse> uses;
         if (settings_.msaa > 1) {
-            hdrMsaa_ = graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, samples,
-                                                      "per-sample radiance"});
-            depthMsaa_ = graph.createImage("depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples,
-                                                          "per-sample depth"});
-            uses = {{hdrMsaa_, Use::ColorAttachment}, {depthMsaa_, Use::DepthAttachment},
-                    {hdr_, Use::ColorResolve}, {depth_, Use::DepthResolve}};
+            hdrMsaa_ = graph.createImage(
+                "hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, samples, "per-sample radiance"});
+            depthMsaa_ = graph.createImage(
+                "depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "per-sample depth"});
+            uses = {{hdrMsaa_, Use::ColorAttachment},
+                    {depthMsaa_, Use::DepthAttachment},
+                    {hdr_, Use::ColorResolve},
+                    {depth_, Use::DepthResolve}};
         } else {
             uses = {{hdr_, Use::ColorAttachment}, {depth_, Use::DepthAttachment}};
         }
@@ -76,13 +78,14 @@ class ReferenceRenderer final : public Renderer {
         s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});
         s.counters.push_back({"lights_evaluated_per_sample", double(scene_.lightCount())});
         if (settings_.msaa > 1)
-            s.counters.push_back({"shaded_at_pixel_center", ref_.msaa == ref::MsaaMode::Center ? 1.0 : 0.0});
+            s.counters.push_back(
+                {"shaded_at_pixel_center", ref_.msaa == ref::MsaaMode::Center ? 1.0 : 0.0});
         if (!fp64_)
-            s.leftOut.push_back({"fp64 accumulation", ref_.precision == ref::Precision::Fp64
-                                                          ? "device has no shaderFloat64"
-                                                          : "fp32 chosen (--reference-precision fp32)"});
-        if (settings_.msaa == 1)
-            s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+            s.leftOut.push_back(
+                {"fp64 accumulation", ref_.precision == ref::Precision::Fp64
+                                          ? "device has no shaderFloat64"
+                                          : "fp32 chosen (--reference-precision fp32)"});
+        if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
         return s;
     }
 

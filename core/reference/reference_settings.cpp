@@ -14,13 +14,15 @@ const ChoiceKnob<Precision>& precisionKnob() {
 
 const ChoiceKnob<MsaaMode>& msaaKnob() {
     static const ChoiceKnob<MsaaMode> k =
-        ChoiceKnob<MsaaMode>{
-            "reference-msaa",
-            {{MsaaMode::Sample, "sample"}, {MsaaMode::Center, "center"}},
-            "Reference under MSAA: sample (every sample shaded at its own location: supersampling, the "
-            "ground truth) or center (every covered sample shaded with the inputs at the pixel centre, a "
-            "masked surface's alpha still tested per sample: what shading once per pixel with per-sample "
-            "coverage gives; the error against it leaves out the shading rate)"}
+        ChoiceKnob<MsaaMode>{"reference-msaa",
+                             {{MsaaMode::Sample, "sample"}, {MsaaMode::Center, "center"}},
+                             "Reference under MSAA: sample (every sample shaded at its own "
+                             "location: supersampling, the "
+                             "ground truth) or center (every covered sample shaded with the inputs "
+                             "at the pixel centre, a "
+                             "masked surface's alpha still tested per sample: what shading once "
+                             "per pixel with per-sample "
+                             "coverage gives; the error against it leaves out the shading rate)"}
             .onlyUnderMsaa()
             .fixed();
     return k;
@@ -32,8 +34,10 @@ const ChoiceKnob<Position>& positionKnob() {
             "reference-position",
             {{Position::Interpolated, "interpolated"}, {Position::Depth, "depth"}},
             "Position the reference lights opaque and masked surfaces at: interpolated (the vertex "
-            "shader's, the ground truth) or depth (reconstructed from the sample's own depth exactly as "
-            "a deferred pipeline does: for separating a deferred pipeline's position-reconstruction "
+            "shader's, the ground truth) or depth (reconstructed from the sample's own depth "
+            "exactly as "
+            "a deferred pipeline does: for separating a deferred pipeline's "
+            "position-reconstruction "
             "error, depth against interpolated, from its other errors, deferred against depth). "
             "Blended surfaces keep the interpolated position, as deferred lights them forward"}
             .fixed();
@@ -42,7 +46,9 @@ const ChoiceKnob<Position>& positionKnob() {
 
 } // namespace
 
-KnobSchema knobs() { return {precisionKnob().knob(), msaaKnob().knob(), positionKnob().knob()}; }
+KnobSchema knobs() {
+    return {precisionKnob().knob(), msaaKnob().knob(), positionKnob().knob()};
+}
 
 Settings readSettings(const RenderSettings& s) {
     return {precisionKnob().in(s), msaaKnob().in(s), positionKnob().in(s)};

@@ -5,8 +5,8 @@
 
 namespace tp::ref {
 
-enum class Precision { Fp64, Fp32 };        // --reference-precision
-enum class MsaaMode { Sample, Center };     // --reference-msaa
+enum class Precision { Fp64, Fp32 };         // --reference-precision
+enum class MsaaMode { Sample, Center };      // --reference-msaa
 enum class Position { Interpolated, Depth }; // --reference-position
 
 struct Settings {

@@ -8,9 +8,14 @@ namespace tp {
 namespace {
 
 // The reference is measured against itself: its model is never asked for.
-const RendererRegistration registration{{kReferenceRenderer,
-                                         "ground truth: every light at every sample, no culling, fp64 accumulation",
-                                         createReferenceRenderer, 0, ref::knobs(), {}, {}}};
+const RendererRegistration registration{
+    {kReferenceRenderer,
+     "ground truth: every light at every sample, no culling, fp64 accumulation",
+     createReferenceRenderer,
+     0,
+     ref::knobs(),
+     {},
+     {}}};
 
 } // namespace
 } // namespace tp

@@ -10,8 +10,8 @@ namespace tp {
 
 // Per channel, the allowance a explains T(r + a) - T(r) or T(r) - T(r - a), whichever side
 // p is on (T is monotone per channel); only what is left beyond it counts.
-AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pipeline, const ImageRGBA& reference,
-                                    float ev) {
+AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pipeline,
+                                    const ImageRGBA& reference, float ev) {
     const ImageR32& a = bound.perPixel.radiance;
     const bool any = !a.r.empty() && a.r.size() == reference.pixelCount();
     AllowanceCheck out;
@@ -28,14 +28,16 @@ AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pi
         const gpu::vec3 tp = gpu::tonemap(gpu::vec3(pv[0], pv[1], pv[2]), ev);
         const gpu::vec3 tr = gpu::tonemap(r, ev);
         const gpu::vec3 hi = allow > 0 ? gpu::tonemap(r + gpu::vec3(allow), ev) : tr;
-        const gpu::vec3 lo = allow > 0 ? gpu::tonemap(max(r - gpu::vec3(allow), gpu::vec3(0.0f)), ev) : tr;
+        const gpu::vec3 lo =
+            allow > 0 ? gpu::tonemap(max(r - gpu::vec3(allow), gpu::vec3(0.0f)), ev) : tr;
         for (int c = 0; c < 3; ++c) {
             const double d = double(tp[c]) - double(tr[c]);
             if (std::isnan(d)) {
                 out.worstBeyond = std::numeric_limits<double>::infinity();
                 return out; // as stress always did: the counts stop here too
             }
-            const double explained = d > 0 ? double(hi[c]) - double(tr[c]) : double(tr[c]) - double(lo[c]);
+            const double explained =
+                d > 0 ? double(hi[c]) - double(tr[c]) : double(tr[c]) - double(lo[c]);
             out.worstBeyond = std::max(out.worstBeyond, std::abs(d) - explained);
         }
     }

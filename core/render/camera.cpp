@@ -11,7 +11,8 @@ glm::dmat4 viewRotation(const Camera& camera) {
     glm::dvec3 up = camera.up;
     // A camera looking straight along its up vector would give a singular basis.
     if (glm::length(glm::cross(forward, up)) < 1e-6 * glm::length(forward))
-        up = std::abs(forward.y) > 0.9 * glm::length(forward) ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+        up = std::abs(forward.y) > 0.9 * glm::length(forward) ? glm::dvec3(0, 0, 1)
+                                                              : glm::dvec3(0, 1, 0);
     return glm::lookAt(glm::dvec3(0.0), forward, up);
 }
 
@@ -19,7 +20,9 @@ glm::dmat4 viewMatrixWorld(const Camera& camera) {
     return glm::translate(viewRotation(camera), -glm::dvec3(camera.position));
 }
 
-glm::mat4 viewMatrix(const Camera& camera) { return glm::mat4(viewMatrixWorld(camera)); }
+glm::mat4 viewMatrix(const Camera& camera) {
+    return glm::mat4(viewMatrixWorld(camera));
+}
 
 glm::mat4 reverseZPerspective(float yfov, float aspect, float znear, float zfar) {
     float f = 1.0f / std::tan(yfov * 0.5f);

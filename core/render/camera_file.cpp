@@ -1,11 +1,11 @@
 #include "core/render/camera_file.h"
 
 #include <array>
+#include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -33,11 +33,13 @@ constexpr double kMinUpSine = 1e-3;
 // (16384 on lavapipe, 32768 at most on the GPUs we know) over one pixel.
 constexpr float kMaxAspect = 32768.0f;
 
-const std::array<const char*, 7> kKeys = {"schema", "position", "target", "up",
-                                          "yfov_degrees", "znear", "zfar"};
+const std::array<const char*, 7> kKeys = {"schema",       "position", "target", "up",
+                                          "yfov_degrees", "znear",    "zfar"};
 
 // Shortest round-trip text of a number (std::to_string would print "180.000000").
-std::string num(double v) { return json(v).dump(); }
+std::string num(double v) {
+    return json(v).dump();
+}
 
 // The shortest decimal that reads back as the same float: 1.8, not 1.7999999523162842 (the
 // file is for people to read and edit too).
@@ -59,7 +61,9 @@ double shortestDegrees(float radians) {
     return exact;
 }
 
-json vecJson(const glm::vec3& v) { return json::array({shortest(v.x), shortest(v.y), shortest(v.z)}); }
+json vecJson(const glm::vec3& v) {
+    return json::array({shortest(v.x), shortest(v.y), shortest(v.z)});
+}
 
 // A JSON number that is also a finite float (1e300 is finite as a double, not as a float).
 bool finiteFloat(const json& v, double& out) {
@@ -78,13 +82,16 @@ bool finiteFloat(const json& v, float& out) {
 Status readVec(const json& j, const char* key, const std::string& where, glm::vec3& out) {
     const json& v = j.at(key);
     bool ok = v.is_array() && v.size() == 3;
-    for (int i = 0; ok && i < 3; ++i) ok = finiteFloat(v[i], out[i]);
+    for (int i = 0; ok && i < 3; ++i)
+        ok = finiteFloat(v[i], out[i]);
     if (!ok) return Error{where + ": \"" + key + "\" must be an array of 3 finite numbers"};
     return {};
 }
 
-template <class T> Status readNumber(const json& j, const char* key, const std::string& where, T& out) {
-    if (!finiteFloat(j.at(key), out)) return Error{where + ": \"" + key + "\" must be a finite number"};
+template <class T>
+Status readNumber(const json& j, const char* key, const std::string& where, T& out) {
+    if (!finiteFloat(j.at(key), out))
+        return Error{where + ": \"" + key + "\" must be a finite number"};
     return {};
 }
 
@@ -94,12 +101,14 @@ Status checkKeys(const json& j, const std::string& where) {
         if (!j.contains(key)) return Error{where + ": missing \"" + key + "\""};
     for (const auto& item : j.items()) {
         bool known = false;
-        for (const char* key : kKeys) known = known || item.key() == key;
+        for (const char* key : kKeys)
+            known = known || item.key() == key;
         if (!known) return Error{where + ": unknown key \"" + item.key() + "\""};
     }
     const json& schema = j.at("schema");
     if (!schema.is_string() || schema.get<std::string>() != kCameraSchema)
-        return Error{where + ": \"schema\" must be \"" + kCameraSchema + "\" (got " + schema.dump() + ")"};
+        return Error{where + ": \"schema\" must be \"" + kCameraSchema + "\" (got " +
+                     schema.dump() + ")"};
     return {};
 }
 
@@ -117,7 +126,8 @@ template <class M> bool finiteMatrix(const M& m) {
 Status checkMatrices(Camera c, double yfovDegrees, const std::string& where) {
     c.yfov = float(yfovDegrees * glm::pi<double>() / 180.0);
     if (!finiteMatrix(viewMatrix(c)))
-        return Error{where + ": \"position\" is too far from the origin: the view matrix overflows fp32"};
+        return Error{where +
+                     ": \"position\" is too far from the origin: the view matrix overflows fp32"};
     for (float aspect : {1.0f / kMaxAspect, kMaxAspect}) {
         const glm::mat4 p = reverseZPerspective(c.yfov, aspect, c.znear, c.zfar);
         if (!std::isfinite(p[0][0]) || !std::isfinite(p[1][1]))
@@ -137,12 +147,15 @@ Status checkMatrices(Camera c, double yfovDegrees, const std::string& where) {
 // The geometry a view matrix and a projection need (computed in double, as camera.cpp does).
 Status checkCamera(const Camera& c, double yfovDegrees, const std::string& where) {
     glm::dvec3 dir = glm::dvec3(c.target) - glm::dvec3(c.position);
-    if (glm::length(dir) == 0.0) return Error{where + ": \"position\" and \"target\" are the same point"};
+    if (glm::length(dir) == 0.0)
+        return Error{where + ": \"position\" and \"target\" are the same point"};
     if (glm::length(glm::dvec3(c.up)) == 0.0) return Error{where + ": \"up\" is the zero vector"};
     double sine = glm::length(glm::cross(glm::normalize(dir), glm::normalize(glm::dvec3(c.up))));
-    if (!(sine >= kMinUpSine)) return Error{where + ": \"up\" is parallel to the view direction (target - position)"};
+    if (!(sine >= kMinUpSine))
+        return Error{where + ": \"up\" is parallel to the view direction (target - position)"};
     if (!(yfovDegrees > 0.0 && yfovDegrees < 180.0))
-        return Error{where + ": \"yfov_degrees\" must be between 0 and 180 (exclusive), got " + num(yfovDegrees)};
+        return Error{where + ": \"yfov_degrees\" must be between 0 and 180 (exclusive), got " +
+                     num(yfovDegrees)};
     if (!(c.znear > 0.0f)) return Error{where + ": \"znear\" must be > 0, got " + num(c.znear)};
     if (c.zfar != 0.0f && !(c.zfar > c.znear))
         return Error{where + ": \"zfar\" must be 0 (infinite) or greater than \"znear\", got " +
@@ -154,9 +167,10 @@ Result<Camera> parseCamera(const json& j, const std::string& where) {
     if (Status s = checkKeys(j, where); !s) return Error{s.error()};
     Camera c;
     double yfovDegrees = 0.0; // double: the float radians come back exactly
-    for (Status s : {readVec(j, "position", where, c.position), readVec(j, "target", where, c.target),
-                     readVec(j, "up", where, c.up), readNumber(j, "yfov_degrees", where, yfovDegrees),
-                     readNumber(j, "znear", where, c.znear), readNumber(j, "zfar", where, c.zfar)})
+    for (Status s :
+         {readVec(j, "position", where, c.position), readVec(j, "target", where, c.target),
+          readVec(j, "up", where, c.up), readNumber(j, "yfov_degrees", where, yfovDegrees),
+          readNumber(j, "znear", where, c.znear), readNumber(j, "zfar", where, c.zfar)})
         if (!s) return Error{s.error()};
     if (Status s = checkCamera(c, yfovDegrees, where); !s) return Error{s.error()};
     c.yfov = float(yfovDegrees * glm::pi<double>() / 180.0);
@@ -175,7 +189,8 @@ json cameraToJson(const Camera& camera) {
     j["up"] = vecJson(camera.up);
     j["yfov_degrees"] = shortestDegrees(camera.yfov);
     j["znear"] = shortest(camera.znear);
-    j["zfar"] = camera.zfar > 0.0f ? shortest(camera.zfar) : 0.0; // Camera's "zfar <= 0" is the file's 0
+    j["zfar"] =
+        camera.zfar > 0.0f ? shortest(camera.zfar) : 0.0; // Camera's "zfar <= 0" is the file's 0
     return j;
 }
 
@@ -188,10 +203,13 @@ Result<Camera> cameraFromJson(const json& j, const std::string& where) {
 
 Result<Camera> readCameraFile(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return Error{printableLine(path + ": camera file not found")};
-    if (!std::filesystem::is_regular_file(path, ec)) return Error{printableLine(path + ": not a regular file")};
+    if (!std::filesystem::exists(path, ec))
+        return Error{printableLine(path + ": camera file not found")};
+    if (!std::filesystem::is_regular_file(path, ec))
+        return Error{printableLine(path + ": not a regular file")};
     if (uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxCameraFileBytes)
-        return Error{printableLine(path + ": " + std::to_string(size) + " bytes, too large for a camera file")};
+        return Error{printableLine(path + ": " + std::to_string(size) +
+                                   " bytes, too large for a camera file")};
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{printableLine(path + ": cannot open (" + std::strerror(errno) + ")")};
     std::ostringstream text;

@@ -64,8 +64,8 @@ struct AllowanceCheck {
 
 // `pipeline` and `reference` are HDR images of the same size, tonemapped at `ev` here. With
 // no per-pixel allowance (or one of another size) worstBeyond is the plain max |T(p) - T(r)|.
-AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pipeline, const ImageRGBA& reference,
-                                    float ev);
+AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pipeline,
+                                    const ImageRGBA& reference, float ev);
 
 // Rounding units the pipelines' models are written in.
 constexpr double kHalfUlp16 = 1.0 / 1024.0; // fp16 store: below one ulp, 2^-10 relative
@@ -95,7 +95,8 @@ struct ErrorModelInput {
 using ErrorModel = std::function<void(ErrorBound& bound, const ErrorModelInput& in)>;
 // The counters a case must drive up for this pipeline, as configured, to have stressed what
 // the case claims.
-using StressedCounters = std::function<std::vector<stress::CounterAtLeast>(const ErrorModelInput& in)>;
+using StressedCounters =
+    std::function<std::vector<stress::CounterAtLeast>(const ErrorModelInput& in)>;
 
 // The bound for a pipeline with model `model` (may be empty: a generic two-fp16-roundings
 // model) in a case: the shared terms (summation, same code in another shader) plus its own.

@@ -43,7 +43,8 @@ class InvocationCounter {
     bool read(uint64_t& out) {
         if (!pool_) return false;
         return vkGetQueryPoolResults(ctx_.device, pool_, 0, 1, sizeof(out), &out, sizeof(out),
-                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS;
+                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) ==
+               VK_SUCCESS;
     }
 
   private:
@@ -51,7 +52,8 @@ class InvocationCounter {
     VkQueryPool pool_ = VK_NULL_HANDLE;
 };
 
-void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler, InvocationCounter& counter) {
+void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
+                 InvocationCounter& counter) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
     profiler.beginFrame(cmd);
@@ -77,7 +79,8 @@ template <class Step> Status pipelineStep(const RendererEntry& entry, Step&& ste
 }
 
 // Warm-up then timed frames of the one recording; the profiler keeps the timed ones.
-void submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler, const RunOptions& options) {
+void submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
+                  const RunOptions& options) {
     const uint32_t total = options.warmupFrames + options.timedFrames;
     for (uint32_t f = 0; f < total; ++f) {
         auto start = std::chrono::steady_clock::now();
@@ -91,13 +94,15 @@ void submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler, c
 
 // What a report needs from the frames just run.
 RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const RenderSettings& settings,
-                        PlannedRenderer& planned, GpuProfiler& profiler, InvocationCounter& invocations) {
+                        PlannedRenderer& planned, GpuProfiler& profiler,
+                        InvocationCounter& invocations) {
     FrameGraph& graph = *planned.graph;
     RunResult result;
     result.renderer = entry.name;
     result.msaa = settings.msaa;
     // createRenderer checked every value: each knob's is the given one or its default.
-    for (const Knob& k : entry.knobs) result.knobs.push_back({k, k.valueIn(settings.knobs)});
+    for (const Knob& k : entry.knobs)
+        result.knobs.push_back({k, k.valueIn(settings.knobs)});
     result.timings = profiler.stats();
     result.hdr = readbackColor(ctx, graph.image(planned.hdr));
     result.depth = readbackDepth(ctx, graph.image(planned.depth));
@@ -106,8 +111,8 @@ RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const Rende
     result.stats = planned.renderer->stats();
     if (uint64_t n = 0; invocations.read(n)) {
         result.stats.counters.push_back({"fragment_shader_invocations", double(n)});
-        result.stats.counters.push_back(
-            {"fragment_invocations_per_pixel", double(n) / double(settings.width * settings.height)});
+        result.stats.counters.push_back({"fragment_invocations_per_pixel",
+                                         double(n) / double(settings.width * settings.height)});
     }
     result.memory = ctx.ledger.entriesOf(entry.name);
     result.passes = graph.livePasses();
@@ -118,7 +123,8 @@ RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const Rende
 } // namespace
 
 Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
-                                     const SceneFeatures& features, const RenderSettings& settings) {
+                                     const SceneFeatures& features,
+                                     const RenderSettings& settings) {
     // The count alone, without the pipeline's name: the CLI's line (checkSampleCount).
     if (Status s = checkSampleCount(ctx, settings.msaa); !s) return Error{s.error()};
     scene.setView(settings.width, settings.height, settings.msaa);
@@ -135,7 +141,8 @@ Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const Ren
         if (exports) graph.compile();
     });
     if (!built) return Error{built.error()};
-    if (!exports) return Error{"pipeline " + entry.name + " does not export both 'hdr' and 'depth'"};
+    if (!exports)
+        return Error{"pipeline " + entry.name + " does not export both 'hdr' and 'depth'"};
     return planned;
 }
 
@@ -150,7 +157,9 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
     GpuProfiler profiler(ctx, 64);
     InvocationCounter invocations(ctx);
     VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    if (Status s = pipelineStep(entry, [&] { recordFrame(cmd, *planned->graph, profiler, invocations); }); !s) {
+    if (Status s =
+            pipelineStep(entry, [&] { recordFrame(cmd, *planned->graph, profiler, invocations); });
+        !s) {
         ctx.freeCommandBuffer(cmd);
         return Error{s.error()};
     }

@@ -21,27 +21,34 @@ namespace tp {
 
 struct Knob {
     enum class Kind { Choice, Integer };
-    std::string name;                // option --NAME; report.json and sweep.csv key NAME with '-' -> '_'
+    std::string name; // option --NAME; report.json and sweep.csv key NAME with '-' -> '_'
     Kind kind = Kind::Choice;
     std::vector<std::string> values; // allowed values (Choice; Integer: empty = any in [min, max])
     uint32_t min = 0, max = 0;       // Integer: inclusive range
     std::string defaultValue;
-    std::string help;                // one line: what it does (the CLI adds values and default)
-    bool msaaOnly = false;           // changes nothing at 1x (sweep runs one value there)
-    bool sweepable = true;           // sweep may take a list of values
+    std::string help;      // one line: what it does (the CLI adds values and default)
+    bool msaaOnly = false; // changes nothing at 1x (sweep runs one value there)
+    bool sweepable = true; // sweep may take a list of values
 
     // Declarations read as one line each in a pipeline's register.cpp:
     //   Knob::choice("accum", {"fp32", "fp16"}, "...")          default: the first value
     //   Knob::integer("tile-capacity", 1, 65536, 256, "...").fixed()
     static Knob choice(std::string name, std::vector<std::string> values, std::string help);
-    static Knob integer(std::string name, uint32_t min, uint32_t max, uint32_t defaultValue, std::string help);
+    static Knob integer(std::string name, uint32_t min, uint32_t max, uint32_t defaultValue,
+                        std::string help);
     // An integer from a list (e.g. tile sizes 8, 16, 32); default: `defaultValue`.
-    static Knob integerOf(std::string name, std::vector<std::string> values, std::string defaultValue,
-                          std::string help);
-    Knob& onlyUnderMsaa() { msaaOnly = true; return *this; }
-    Knob& fixed() { sweepable = false; return *this; } // one value per sweep
+    static Knob integerOf(std::string name, std::vector<std::string> values,
+                          std::string defaultValue, std::string help);
+    Knob& onlyUnderMsaa() {
+        msaaOnly = true;
+        return *this;
+    }
+    Knob& fixed() {
+        sweepable = false;
+        return *this;
+    } // one value per sweep
 
-    std::string key() const;         // report.json / sweep.csv name
+    std::string key() const; // report.json / sweep.csv name
     // Its value in `values` (knob name -> value), or its default when absent.
     const std::string& valueIn(const std::map<std::string, std::string>& values) const;
     std::string allowedText() const; // "8, 16, 32" or "1 to 65536"
@@ -60,13 +67,13 @@ using KnobSchema = std::vector<Knob>;
 // side by side, so a misspelt value does not compile and nothing compares text.
 //   const ChoiceKnob<Layout> lists{"light-lists", {{Layout::Compact, "compact"}, ...}, "help"};
 //   schema: lists.knob()          read: lists.in(settings) == Layout::Compact
-template <class E>
-class ChoiceKnob {
+template <class E> class ChoiceKnob {
   public:
     ChoiceKnob(std::string name, std::vector<std::pair<E, std::string>> values, std::string help)
         : values_(std::move(values)) {
         std::vector<std::string> texts;
-        for (const auto& v : values_) texts.push_back(v.second);
+        for (const auto& v : values_)
+            texts.push_back(v.second);
         knob_ = Knob::choice(std::move(name), std::move(texts), std::move(help));
     }
     ChoiceKnob&& onlyUnderMsaa() && {

@@ -16,7 +16,7 @@ glm::dmat4 inverseShadingViewProjection(const Camera& camera, uint32_t width, ui
 
 // Camera-relative position of the centre of pixel (x, y) (row 0 at the top) at reverse-Z
 // `depth`, with `inverse` from inverseShadingViewProjection.
-glm::dvec3 pixelCentrePosition(const glm::dmat4& inverse, uint32_t width, uint32_t height, uint32_t x, uint32_t y,
-                               double depth);
+glm::dvec3 pixelCentrePosition(const glm::dmat4& inverse, uint32_t width, uint32_t height,
+                               uint32_t x, uint32_t y, double depth);
 
 } // namespace tp

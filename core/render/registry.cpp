@@ -20,15 +20,17 @@ void checkSharedKnobs(const RendererEntry& entry) {
         for (const Knob& a : other.name == entry.name ? KnobSchema{} : other.knobs)
             for (const Knob& b : entry.knobs)
                 if (a.name == b.name && !(a == b))
-                    throw std::logic_error("knob '--" + a.name + "' is declared differently by " + other.name +
-                                           " and " + entry.name + ": a shared knob must be one declaration");
+                    throw std::logic_error("knob '--" + a.name + "' is declared differently by " +
+                                           other.name + " and " + entry.name +
+                                           ": a shared knob must be one declaration");
 }
 
 } // namespace
 
 void registerRenderer(RendererEntry entry) {
     auto& r = registry();
-    checkSharedKnobs(entry); // before anything changes: a refused entry leaves the registry as it was
+    checkSharedKnobs(
+        entry); // before anything changes: a refused entry leaves the registry as it was
     std::erase_if(r, [&](const RendererEntry& e) { return e.name == entry.name; });
     auto at = std::find_if(r.begin(), r.end(), [&](const RendererEntry& e) {
         return e.order > entry.order || (e.order == entry.order && e.name > entry.name);
@@ -36,13 +38,16 @@ void registerRenderer(RendererEntry entry) {
     r.insert(at, std::move(entry));
 }
 
-const std::vector<RendererEntry>& registeredRenderers() { return registry(); }
+const std::vector<RendererEntry>& registeredRenderers() {
+    return registry();
+}
 
 Result<const RendererEntry*> findRenderer(const std::string& name) {
     for (const RendererEntry& e : registeredRenderers())
         if (e.name == name) return &e;
     std::string names;
-    for (const RendererEntry& e : registeredRenderers()) names += (names.empty() ? "" : ", ") + e.name;
+    for (const RendererEntry& e : registeredRenderers())
+        names += (names.empty() ? "" : ", ") + e.name;
     return Error{"unknown pipeline '" + name + "' (available: " + names + ")"};
 }
 
@@ -50,9 +55,12 @@ std::vector<KnobReaders> allKnobs() {
     std::vector<KnobReaders> all;
     for (const RendererEntry& e : registeredRenderers())
         for (const Knob& k : e.knobs) {
-            auto it = std::find_if(all.begin(), all.end(), [&](const KnobReaders& r) { return r.knob.name == k.name; });
-            if (it == all.end()) all.push_back({k, {e.name}});
-            else it->readers.push_back(e.name);
+            auto it = std::find_if(all.begin(), all.end(),
+                                   [&](const KnobReaders& r) { return r.knob.name == k.name; });
+            if (it == all.end())
+                all.push_back({k, {e.name}});
+            else
+                it->readers.push_back(e.name);
         }
     return all;
 }
@@ -66,7 +74,8 @@ Status checkSampleCount(const GpuContext& ctx, uint32_t samples) {
 }
 
 std::unique_ptr<Renderer> createRenderer(const RendererEntry& entry, RendererCreateInfo info) {
-    if (Status s = checkSampleCount(info.ctx, info.settings.msaa); !s) throw RendererError(s.error());
+    if (Status s = checkSampleCount(info.ctx, info.settings.msaa); !s)
+        throw RendererError(s.error());
     if (Status s = resolveKnobs(entry.knobs, info.settings); !s) throw RendererError(s.error());
     return entry.factory(info);
 }

@@ -86,8 +86,8 @@ struct RendererEntry {
     std::string name;
     std::string description;
     RendererFactory factory;
-    int order = 100;       // position in default lists and reports (the reference is 0)
-    KnobSchema knobs;      // every setting it reads (core/render/knobs.h)
+    int order = 100;  // position in default lists and reports (the reference is 0)
+    KnobSchema knobs; // every setting it reads (core/render/knobs.h)
     // `triptych stress`: the pipeline's own precision terms and the counters a case must
     // drive up for it (core/render/error_model.h); empty: a generic model.
     ErrorModel errorModel;

@@ -23,7 +23,8 @@ VkImageSubresourceRange mipRange(uint32_t mip, uint32_t mips) {
 
 // Copies mip 0 from `staging` and blits the chain down. Hand-written barriers: uploads
 // happen once, outside the frame graph. Ends in SHADER_READ_ONLY for every later submission.
-void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging, VkDeviceSize offset) {
+void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging,
+                         VkDeviceSize offset) {
     const uint32_t mips = img.desc.mipLevels;
     const VkPipelineStageFlags2 T = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
     imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -32,11 +33,13 @@ void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging
     region.bufferOffset = offset;
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {img.desc.width, img.desc.height, 1};
-    vkCmdCopyBufferToImage(cmd, staging, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    vkCmdCopyBufferToImage(cmd, staging, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region);
     int32_t w = int32_t(img.desc.width), h = int32_t(img.desc.height);
     for (uint32_t m = 1; m < mips; ++m) {
-        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     T, VK_ACCESS_2_TRANSFER_WRITE_BIT, T, VK_ACCESS_2_TRANSFER_READ_BIT, mipRange(m - 1, 1));
+        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, T,
+                     VK_ACCESS_2_TRANSFER_READ_BIT, mipRange(m - 1, 1));
         VkImageBlit blit{};
         blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m - 1, 0, 1};
         blit.srcOffsets[1] = {w, h, 1};
@@ -49,10 +52,12 @@ void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging
     }
     const VkPipelineStageFlags2 S = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     if (mips > 1)
-        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                     T, 0, S, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(0, mips - 1));
-    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T,
-                 VK_ACCESS_2_TRANSFER_WRITE_BIT, S, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(mips - 1, 1));
+        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, 0, S,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(0, mips - 1));
+    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, S,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(mips - 1, 1));
 }
 
 } // namespace
@@ -62,7 +67,8 @@ void SceneGpu::uploadTextures() {
     if (textures.empty()) // the array binding needs one element; never sampled (index -1)
         textures.push_back({"placeholder", 1, 1, false, {255, 255, 255, 255}});
     VkDeviceSize total = 0;
-    for (const Texture& t : textures) total += t.rgba8.size();
+    for (const Texture& t : textures)
+        total += t.rgba8.size();
     Buffer staging = createBuffer(ctx_, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
                                   {"staging", "", "staging", "upload"});
     for (const Texture& t : textures) {
@@ -71,8 +77,10 @@ void SceneGpu::uploadTextures() {
         d.width = t.width;
         d.height = t.height;
         d.mipLevels = mipCount(t.width, t.height);
-        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        textures_.push_back(createImage(ctx_, d, {"scene", "", "texture:" + t.name, "material texture"}));
+        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        textures_.push_back(
+            createImage(ctx_, d, {"scene", "", "texture:" + t.name, "material texture"}));
     }
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         VkDeviceSize offset = 0;
@@ -98,7 +106,8 @@ void SceneGpu::createDescriptors() {
         {TP_BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr},
         {TP_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr},
         {TP_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr},
-        {TP_BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, texCount, VK_SHADER_STAGE_ALL, nullptr},
+        {TP_BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, texCount,
+         VK_SHADER_STAGE_ALL, nullptr},
     };
     VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     li.bindingCount = 5;

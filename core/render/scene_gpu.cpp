@@ -56,8 +56,9 @@ SceneGpu::SceneGpu(GpuContext& ctx, const Scene& scene)
     uploadGeometry();
     uploadMaterials();
     uploadTextures();
-    frameBuffer_ = createBuffer(ctx_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                MemoryKind::Upload, {"scene", "", "frame_uniforms", "camera and frame constants"});
+    frameBuffer_ = createBuffer(ctx_, sizeof(gpu::FrameUniforms),
+                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::Upload,
+                                {"scene", "", "frame_uniforms", "camera and frame constants"});
     createDescriptors();
     setLights(scene.lights);
     setView(1, 1, 1);
@@ -89,7 +90,8 @@ void SceneGpu::uploadGeometry() {
             glm::vec2 uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
             gpu::Vertex v;
             v.positionU = glm::vec4(mesh.positions[i], uv.x);
-            v.normalV = glm::vec4(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1), uv.y);
+            v.normalV =
+                glm::vec4(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1), uv.y);
             v.tangent = i < mesh.tangents.size() ? mesh.tangents[i] : glm::vec4(1, 0, 0, 1);
             v.color = i < mesh.colors.size() ? mesh.colors[i] : glm::vec4(1.0f);
             vertices.push_back(v);
@@ -100,7 +102,8 @@ void SceneGpu::uploadGeometry() {
                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      {"scene", "", "vertices", "interleaved vertices (pulled)"});
     indices_ = createBufferWithData(ctx_, indices.data(), indices.size() * sizeof(uint32_t),
-                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, {"scene", "", "indices", "triangle indices"});
+                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                    {"scene", "", "indices", "triangle indices"});
 }
 
 void SceneGpu::uploadMaterials() {
@@ -125,7 +128,8 @@ void SceneGpu::uploadMaterials() {
     }
     if (mats.empty()) mats.push_back(gpu::MaterialGpu{});
     materials_ = createBufferWithData(ctx_, mats.data(), mats.size() * sizeof(gpu::MaterialGpu),
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "materials", "material table"});
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                      {"scene", "", "materials", "material table"});
 }
 
 void SceneGpu::setLights(const std::vector<Light>& lights) {
@@ -142,15 +146,19 @@ void SceneGpu::setLights(const std::vector<Light>& lights) {
 // The uploaded lights: positions relative to the eye, subtracted in double and rounded once.
 void SceneGpu::uploadLights() {
     shadingLights_ = lightsGpu_;
-    for (gpu::LightGpu& l : shadingLights_) l.position = toShading(l.position);
-    lights_ = createBufferWithData(ctx_, shadingLights_.data(), shadingLights_.size() * sizeof(gpu::LightGpu),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "lights", "light array"});
+    for (gpu::LightGpu& l : shadingLights_)
+        l.position = toShading(l.position);
+    lights_ = createBufferWithData(
+        ctx_, shadingLights_.data(), shadingLights_.size() * sizeof(gpu::LightGpu),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "lights", "light array"});
     writeLightDescriptor();
     frame_.viewport.z = shadingFrame_.viewport.z = lightCount_;
     std::memcpy(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_));
 }
 
-glm::vec3 SceneGpu::toShading(glm::vec3 world) const { return glm::vec3(glm::dvec3(world) - eye_); }
+glm::vec3 SceneGpu::toShading(glm::vec3 world) const {
+    return glm::vec3(glm::dvec3(world) - eye_);
+}
 
 Aabb SceneGpu::toShading(const Aabb& world) const {
     if (world.empty()) return world;
@@ -164,7 +172,8 @@ Aabb SceneGpu::toShading(const Aabb& world) const {
 
 void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
     const Camera& cam = scene_.camera;
-    glm::mat4 proj = reverseZPerspective(cam.yfov, float(width) / float(height), cam.znear, cam.zfar);
+    glm::mat4 proj =
+        reverseZPerspective(cam.yfov, float(width) / float(height), cam.znear, cam.zfar);
     frame_ = makeFrame(viewMatrixWorld(cam), proj);
     shadingFrame_ = makeFrame(viewRotation(cam), proj);
     for (gpu::FrameUniforms* f : {&frame_, &shadingFrame_}) {
@@ -201,13 +210,15 @@ VkPipelineLayout SceneGpu::createPipelineLayout(VkDescriptorSetLayout passSet) c
     return layout;
 }
 
-void SceneGpu::bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const {
+void SceneGpu::bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout,
+                            VkPipelineBindPoint point) const {
     vkCmdBindDescriptorSets(cmd, point, layout, TP_SET_SCENE, 1, &set_, 0, nullptr);
 }
 
 bool SceneGpu::hasDraws(DrawFilter filter) const {
-    return std::any_of(draws_.begin(), draws_.end(),
-                       [&](const DrawItem& d) { return uint32_t(d.alphaMode) == uint32_t(filter); });
+    return std::any_of(draws_.begin(), draws_.end(), [&](const DrawItem& d) {
+        return uint32_t(d.alphaMode) == uint32_t(filter);
+    });
 }
 
 std::vector<const DrawItem*> SceneGpu::drawList(DrawFilter filter) const {
@@ -217,7 +228,8 @@ std::vector<const DrawItem*> SceneGpu::drawList(DrawFilter filter) const {
     if (filter == DrawFilter::Blend) {
         // In double: far from the origin fp32 world distances differ by whole spacings.
         auto dist = [&](const DrawItem* d) {
-            return glm::length((glm::dvec3(d->bounds.min) + glm::dvec3(d->bounds.max)) * 0.5 - eye_);
+            return glm::length((glm::dvec3(d->bounds.min) + glm::dvec3(d->bounds.max)) * 0.5 -
+                               eye_);
         };
         std::stable_sort(items.begin(), items.end(),
                          [&](const DrawItem* a, const DrawItem* b) { return dist(a) > dist(b); });
@@ -235,7 +247,8 @@ void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFil
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     std::vector<const DrawItem*> items = drawList(filter);
     bindIndexBuffer(cmd);
-    for (const DrawItem* d : items) recordDraw(cmd, layout, *d);
+    for (const DrawItem* d : items)
+        recordDraw(cmd, layout, *d);
 }
 
 void recordDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const DrawItem& d, uint32_t pad0) {

@@ -42,7 +42,8 @@ class SceneGpu {
     std::vector<SpecConstant> specConstants(AlphaMode mode) const;
     // Layout with set 0 = the scene, optional set 1 = the pass's own, and the DrawPush range.
     VkPipelineLayout createPipelineLayout(VkDescriptorSetLayout passSet = VK_NULL_HANDLE) const;
-    void bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const;
+    void bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout,
+                      VkPipelineBindPoint point) const;
     // Binds `pipeline` and records the draws of one alpha mode; Blend draws are sorted back
     // to front (by the distance from the camera to each mesh's bounds centre). A null
     // pipeline (the renderer built none: no such draws) records nothing.

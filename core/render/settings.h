@@ -10,10 +10,10 @@
 namespace tp {
 
 struct RenderSettings {
-    uint32_t width = 320;  // output resolution
+    uint32_t width = 320; // output resolution
     uint32_t height = 180;
-    uint32_t msaa = 1;     // samples per pixel: 1, 2, 4, 8 (as the device supports)
-    bool debug = false;    // renderers export their debug images (heat maps, ...)
+    uint32_t msaa = 1;  // samples per pixel: 1, 2, 4, 8 (as the device supports)
+    bool debug = false; // renderers export their debug images (heat maps, ...)
     // Knob values as text, by knob name ("tile" -> "16"). A renderer is built only after its
     // schema has checked them and filled in its defaults (resolveKnobs), so a knob it declared
     // is always here; values of other renderers' knobs are carried along untouched.

@@ -9,7 +9,10 @@ namespace {
 std::string msaaCountsText() {
     std::string text;
     for (size_t i = 0; i < kMsaaCounts.size(); ++i)
-        text += (i == 0 ? "" : i + 1 == kMsaaCounts.size() ? " or " : ", ") + std::to_string(kMsaaCounts[i]);
+        text += (i == 0                        ? ""
+                 : i + 1 == kMsaaCounts.size() ? " or "
+                                               : ", ") +
+                std::to_string(kMsaaCounts[i]);
     return text;
 }
 
@@ -35,7 +38,8 @@ bool parseResolution(const std::string& text, uint32_t& width, uint32_t& height)
         out = uint32_t(std::stoul(digits));
         return true;
     };
-    return x != std::string::npos && side(text.substr(0, x), width) && side(text.substr(x + 1), height);
+    return x != std::string::npos && side(text.substr(0, x), width) &&
+           side(text.substr(x + 1), height);
 }
 
 } // namespace tp

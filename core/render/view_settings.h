@@ -14,7 +14,8 @@ namespace tp {
 // Samples per pixel a render may ask for; a device may support fewer (checkSampleCount).
 inline constexpr std::array<uint32_t, 4> kMsaaCounts = {1, 2, 4, 8};
 
-// The setting name of the sample count (`--msaa`, the script's `msaa`); every other name is a knob's.
+// The setting name of the sample count (`--msaa`, the script's `msaa`); every other name is a
+// knob's.
 inline constexpr const char* kMsaaSetting = "msaa";
 
 // One user value for the setting `name` (kMsaaSetting or a registered knob). Error, one line:

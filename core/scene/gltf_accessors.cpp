@@ -207,11 +207,13 @@ uint32_t decodeIndex(const uint8_t* p, int type) {
 // The accessor's sparse substitutions, if any: apply(target element, its value's bytes) for
 // each, every target checked against the count first.
 template <class Apply>
-Status applySparse(const tinygltf::Accessor& a, const Located& loc, const std::string& what, Apply&& apply) {
+Status applySparse(const tinygltf::Accessor& a, const Located& loc, const std::string& what,
+                   Apply&& apply) {
     if (!loc.sparseIndices) return {};
     const size_t indexSize = componentSize(a.sparse.indices.componentType);
     for (size_t k = 0; k < size_t(a.sparse.count); ++k) {
-        uint32_t target = decodeIndex(loc.sparseIndices + k * indexSize, a.sparse.indices.componentType);
+        uint32_t target =
+            decodeIndex(loc.sparseIndices + k * indexSize, a.sparse.indices.componentType);
         if (target >= a.count)
             return Error{what + ": sparse index " + std::to_string(target) + " is past its count " +
                          std::to_string(a.count)};

@@ -29,7 +29,8 @@ float normalizeScale(draco::DataType type) {
 }
 
 // The bufferView holding the bitstream, checked to lie inside its buffer.
-Status findBitstream(const tinygltf::Model& model, int viewIndex, const tinygltf::BufferView*& out) {
+Status findBitstream(const tinygltf::Model& model, int viewIndex,
+                     const tinygltf::BufferView*& out) {
     if (viewIndex < 0 || size_t(viewIndex) >= model.bufferViews.size())
         return Error{"bufferView " + std::to_string(viewIndex) + " does not exist"};
     const tinygltf::BufferView& view = model.bufferViews[size_t(viewIndex)];
@@ -44,16 +45,16 @@ Status findBitstream(const tinygltf::Model& model, int viewIndex, const tinygltf
 
 // One attribute of `specs` as floats into out.attributes, when the extension lists it; its
 // component count must be its accessor's.
-Status readAttribute(const tinygltf::Model& model, const tinygltf::Primitive& p, const draco::Mesh& mesh,
-                     const tinygltf::Value& attributes, const AttributeSpec& spec, DracoPrimitive& out) {
+Status readAttribute(const tinygltf::Model& model, const tinygltf::Primitive& p,
+                     const draco::Mesh& mesh, const tinygltf::Value& attributes,
+                     const AttributeSpec& spec, DracoPrimitive& out) {
     if (!attributes.Has(spec.name)) return {};
     const tinygltf::Value& id = attributes.Get(spec.name);
     const draco::PointAttribute* a =
         id.IsNumber() && id.GetNumberAsInt() >= 0
             ? mesh.GetAttributeByUniqueId(uint32_t(id.GetNumberAsInt()))
             : nullptr;
-    if (!a)
-        return Error{std::string(spec.name) + " names no attribute of the bitstream"};
+    if (!a) return Error{std::string(spec.name) + " names no attribute of the bitstream"};
     auto accessor = p.attributes.find(spec.name);
     if (accessor == p.attributes.end() || accessor->second < 0 ||
         size_t(accessor->second) >= model.accessors.size())
@@ -66,8 +67,7 @@ Status readAttribute(const tinygltf::Model& model, const tinygltf::Primitive& p,
     if (comps == 0 || a->num_components() != comps)
         return Error{std::string(spec.name) + " has " + std::to_string(a->num_components()) +
                      " components in the bitstream, its accessor another type"};
-    const bool normalize =
-        (acc.normalized || spec.forceNormalized) && !a->normalized();
+    const bool normalize = (acc.normalized || spec.forceNormalized) && !a->normalized();
     const float scale = normalize ? normalizeScale(a->data_type()) : 1.0f;
     std::vector<float>& values = out.attributes[spec.name];
     values.resize(out.points * comps);

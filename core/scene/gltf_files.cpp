@@ -18,7 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-
 // tinygltf's own decoding (dlib::urldecode, '+' included), so that what is checked here is the
 // path tinygltf then asks for.
 std::string urlDecode(const std::string& s) {
@@ -47,10 +46,13 @@ bool isDataUri(const std::string& uri) {
 }
 
 // The data URIs tinygltf 2.7 decodes (any other "data:" URI it takes for a file name).
-const char* const kDataUriPrefixes[] = {
-    "data:application/octet-stream;base64,", "data:application/gltf-buffer;base64,",
-    "data:image/jpeg;base64,",  "data:image/png;base64,", "data:image/bmp;base64,",
-    "data:image/gif;base64,",   "data:text/plain;base64,"};
+const char* const kDataUriPrefixes[] = {"data:application/octet-stream;base64,",
+                                        "data:application/gltf-buffer;base64,",
+                                        "data:image/jpeg;base64,",
+                                        "data:image/png;base64,",
+                                        "data:image/bmp;base64,",
+                                        "data:image/gif;base64,",
+                                        "data:text/plain;base64,"};
 
 bool decodableDataUri(const std::string& uri) {
     for (const char* p : kDataUriPrefixes)
@@ -84,9 +86,8 @@ Status checkBufferDataUri(const std::string& uri, const json& buffer, const std:
     uint64_t bytes = 0;
     if (std::string problem = base64Problem(uri, bytes); !problem.empty())
         return Error{label + ": " + problem};
-    const json* length = buffer.is_object() && buffer.contains("byteLength")
-                             ? &buffer["byteLength"]
-                             : nullptr;
+    const json* length =
+        buffer.is_object() && buffer.contains("byteLength") ? &buffer["byteLength"] : nullptr;
     if (length && length->is_number_unsigned() && length->get<uint64_t>() != bytes)
         return Error{label + ": the data URI holds " + std::to_string(bytes) +
                      " bytes, byteLength says " + std::to_string(length->get<uint64_t>())};
@@ -175,8 +176,8 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
 
 // Fully supported extensions; any other one in extensionsRequired is an error.
 const char* const kSupportedExtensions[] = {
-    "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_mesh_quantization",
-    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_texture_transform"};
+    "KHR_materials_emissive_strength", "KHR_lights_punctual",     "KHR_mesh_quantization",
+    "KHR_draco_mesh_compression",      "EXT_meshopt_compression", "KHR_texture_transform"};
 
 Status checkAssetAndExtensions(const json& root, const WarnFn& warn) {
     const json* asset = jsonMember(root, "asset");

@@ -124,11 +124,13 @@ void makeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm
 
 namespace {
 
-const AttributeSpec kPosition{"POSITION", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
+const AttributeSpec kPosition{
+    "POSITION", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
 const AttributeSpec kNormal{"NORMAL", {TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kShort}, true};
 const AttributeSpec kTangent{"TANGENT", {TINYGLTF_TYPE_VEC4}, {kFloat, kByte, kShort}, true};
 // Non-normalized integer uvs are KHR_mesh_quantization's; they are read as they are.
-const AttributeSpec kUv{"TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
+const AttributeSpec kUv{
+    "TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, {kFloat, kByte, kUByte, kShort, kUShort}, false};
 const AttributeSpec kColor{
     "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}, true};
 
@@ -148,7 +150,8 @@ struct AttributeReader {
 
     Status fetch(const AttributeSpec& spec, int index, bool keepNonFinite) {
         auto it = draco.attributes.find(spec.name);
-        if (it == draco.attributes.end()) return readFloats(model, index, spec, data, comps, keepNonFinite);
+        if (it == draco.attributes.end())
+            return readFloats(model, index, spec, data, comps, keepNonFinite);
         data = std::move(it->second);
         comps = draco.comps[spec.name];
         if (!keepNonFinite)
@@ -172,7 +175,8 @@ bool finite(const float* v, size_t k) {
 }
 
 // A vector attribute's element that cannot give a direction: marked in `bad` for a repair.
-bool markIfNoDirection(const float* v, size_t k, glm::vec3 d, size_t i, size_t n, std::vector<uint8_t>& bad) {
+bool markIfNoDirection(const float* v, size_t k, glm::vec3 d, size_t i, size_t n,
+                       std::vector<uint8_t>& bad) {
     float len2 = glm::dot(d, d);
     if (finite(v, k) && len2 > 1e-30f && std::isfinite(len2)) return false;
     if (bad.empty()) bad.assign(n, 0);
@@ -181,7 +185,8 @@ bool markIfNoDirection(const float* v, size_t k, glm::vec3 d, size_t i, size_t n
 }
 
 // Each store* fills its attribute from `data` and returns how many values it replaced.
-size_t storeNormals(const std::vector<float>& data, size_t n, LocalPrimitive& out, std::vector<uint8_t>& bad) {
+size_t storeNormals(const std::vector<float>& data, size_t n, LocalPrimitive& out,
+                    std::vector<uint8_t>& bad) {
     out.normals.resize(n);
     size_t count = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -192,7 +197,8 @@ size_t storeNormals(const std::vector<float>& data, size_t n, LocalPrimitive& ou
     return count;
 }
 
-size_t storeTangents(const std::vector<float>& data, size_t n, LocalPrimitive& out, std::vector<uint8_t>& bad) {
+size_t storeTangents(const std::vector<float>& data, size_t n, LocalPrimitive& out,
+                     std::vector<uint8_t>& bad) {
     out.tangents.resize(n);
     size_t count = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -232,8 +238,8 @@ size_t storeColors(const std::vector<float>& data, size_t comps, size_t n, Local
 
 // POSITION, then the optional attributes; values that are not finite are refused under
 // --strict and otherwise repaired (each repair recorded in out.repairs).
-Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options, LocalPrimitive& out,
-                            BadVertices& bad) {
+Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options,
+                            LocalPrimitive& out, BadVertices& bad) {
     Status s = r.fetch(kPosition, r.accessor("POSITION"), false);
     if (!s) return s;
     const std::vector<float>& data = r.data;
@@ -257,14 +263,18 @@ Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options,
             out.repairs.push_back(SceneRepair{spec.name, index, count, n, problem, action});
         return {};
     };
-    s = readOptional(kNormal, "NaN, infinite or zero-length",
-                     "replaced by the area-weighted average of the face normals of the triangles using "
-                     "the vertex",
-                     [&] { return storeNormals(data, n, out, bad.normal); });
+    s = readOptional(
+        kNormal, "NaN, infinite or zero-length",
+        "replaced by the area-weighted average of the face normals of the triangles using "
+        "the vertex",
+        [&] { return storeNormals(data, n, out, bad.normal); });
     if (s)
-        s = readOptional(kTangent, "NaN, infinite or zero-length", "regenerated from the positions, normals and uvs",
+        s = readOptional(kTangent, "NaN, infinite or zero-length",
+                         "regenerated from the positions, normals and uvs",
                          [&] { return storeTangents(data, n, out, bad.tangent); });
-    if (s) s = readOptional(kUv, "NaN or infinite", "set to (0, 0)", [&] { return storeUvs(data, n, out); });
+    if (s)
+        s = readOptional(kUv, "NaN or infinite", "set to (0, 0)",
+                         [&] { return storeUvs(data, n, out); });
     if (s)
         s = readOptional(kColor, "NaN or infinite", "set to white, opaque",
                          [&] { return storeColors(data, r.comps, n, out); });
@@ -272,13 +282,14 @@ Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options,
 }
 
 // The primitive's indices (the bitstream's, the accessor's or 0..n-1), each below n.
-Status readIndexList(AttributeReader& r, bool compressed, size_t n, std::vector<uint32_t>& indices) {
+Status readIndexList(AttributeReader& r, bool compressed, size_t n,
+                     std::vector<uint32_t>& indices) {
     if (compressed) {
         indices = std::move(r.draco.indices);
         for (uint32_t i : indices)
             if (i >= n)
-                return Error{"Draco index " + std::to_string(i) + " is out of range (" + std::to_string(n) +
-                             " vertices)"};
+                return Error{"Draco index " + std::to_string(i) + " is out of range (" +
+                             std::to_string(n) + " vertices)"};
     } else if (r.p.indices >= 0) {
         return readIndices(r.model, r.p.indices, n, indices);
     } else {
@@ -318,7 +329,8 @@ void completeNormals(bool smoothNormals, BadVertices& bad, LocalPrimitive& out) 
 }
 
 // From the uvs where a normal map will read them, else any vector perpendicular to the normal.
-void generateTangents(bool normalMapped, const LocalPrimitive& p, std::vector<glm::vec4>& tangents) {
+void generateTangents(bool normalMapped, const LocalPrimitive& p,
+                      std::vector<glm::vec4>& tangents) {
     if (normalMapped) {
         makeTangents(p.positions, p.normals, p.uvs, p.indices, tangents);
         return;
@@ -329,7 +341,8 @@ void generateTangents(bool normalMapped, const LocalPrimitive& p, std::vector<gl
 }
 
 // Repairs the bad tangents, or makes all of them where the file has none.
-void completeTangents(bool normalMapped, const std::vector<uint8_t>& badTangent, LocalPrimitive& out) {
+void completeTangents(bool normalMapped, const std::vector<uint8_t>& badTangent,
+                      LocalPrimitive& out) {
     if (out.tangents.empty()) {
         generateTangents(normalMapped, out, out.tangents);
     } else if (!badTangent.empty()) {
@@ -388,8 +401,9 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
     if (out.uvs.empty()) out.uvs.assign(n, glm::vec2(0.0f));
     if (out.colors.empty()) out.colors.assign(n, glm::vec4(1.0f));
     const tinygltf::Material* material =
-        p.material >= 0 && size_t(p.material) < model.materials.size() ? &model.materials[size_t(p.material)]
-                                                                        : nullptr;
+        p.material >= 0 && size_t(p.material) < model.materials.size()
+            ? &model.materials[size_t(p.material)]
+            : nullptr;
     if (material) applyUvTransform(*material, out.uvs);
     completeNormals(options.smoothNormals, bad, out);
     completeTangents(material && material->normalTexture.index >= 0, bad.tangent, out);

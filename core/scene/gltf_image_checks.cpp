@@ -23,7 +23,8 @@ uint32_t be32(const unsigned char* p) {
 // "'IDAT'", or the type in hex when it is not four letters (a damaged one).
 std::string chunkName(const unsigned char* type) {
     bool letters = true;
-    for (int i = 0; i < 4; ++i) letters = letters && std::isalpha(type[i]);
+    for (int i = 0; i < 4; ++i)
+        letters = letters && std::isalpha(type[i]);
     static const char hex[] = "0123456789abcdef";
     std::string out = letters ? "'" : "0x";
     for (int k = 0; k < 4; ++k) {
@@ -38,7 +39,9 @@ std::string chunkName(const unsigned char* type) {
 
 // Bytes of filtered scanlines the image needs (a filter byte per row), Adam7 passes summed.
 uint64_t scanlineBytes(uint32_t width, uint32_t height, int bitsPerPixel, bool interlaced) {
-    auto pass = [&](uint64_t w, uint64_t h) { return w && h ? ((w * uint64_t(bitsPerPixel) + 7) / 8 + 1) * h : 0; };
+    auto pass = [&](uint64_t w, uint64_t h) {
+        return w && h ? ((w * uint64_t(bitsPerPixel) + 7) / 8 + 1) * h : 0;
+    };
     if (!interlaced) return pass(width, height);
     static const int xo[7] = {0, 4, 0, 2, 0, 1, 0}, yo[7] = {0, 0, 4, 0, 2, 0, 1};
     static const int xs[7] = {8, 8, 4, 4, 2, 2, 1}, ys[7] = {8, 8, 8, 4, 4, 2, 2};
@@ -162,8 +165,8 @@ std::string checkPng(const unsigned char* b, size_t size, std::vector<unsigned c
         if (std::memcmp(type, "IEND", 4) == 0) break;
     }
     // An empty IDAT carries nothing, but stb copies it into its not yet allocated buffer
-    // (memcpy to a null pointer) when it comes first: decode a copy without the empty ones (also when every IDAT is
-    // empty: stb then refuses the copy for having none).
+    // (memcpy to a null pointer) when it comes first: decode a copy without the empty ones (also
+    // when every IDAT is empty: stb then refuses the copy for having none).
     if (emptyIdat) {
         cleaned.assign(b, b + 8);
         for (size_t q = 8; q < p;) {

@@ -108,8 +108,7 @@ Status collectInstances(const tinygltf::Model& model, std::vector<Instance>& out
 void addLight(const tinygltf::Model& model, const Instance& inst, Scene& scene, const WarnFn& warn);
 // The file's first perspective camera on a drawn node, else one framing scene.bounds.
 // Returns that camera's index into the file's "cameras", or -1 when it framed the bounds.
-int placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
-                 Scene& scene);
+int placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances, Scene& scene);
 
 // --- gltf_accessors.cpp ------------------------------------------------------------------
 
@@ -172,7 +171,7 @@ struct LocalPrimitive {
     std::vector<glm::vec2> uvs;
     std::vector<glm::vec4> colors;
     std::vector<uint32_t> indices;
-    int material = -1; // as in the file, unchecked
+    int material = -1;                // as in the file, unchecked
     std::vector<SceneRepair> repairs; // what readPrimitive replaced, one per attribute
 };
 
@@ -224,9 +223,9 @@ bool toRgba8(const unsigned char* data, size_t size, int width, int height, int 
 // occlusion, emissive) and loadMaterials warns once per material.
 constexpr const char* kTextureTransform = "KHR_texture_transform";
 struct UvTransform {
-    bool present = false;          // some texture of the material has the extension
-    glm::mat3x2 matrix{1.0f};      // uv' = matrix * vec3(uv, 1)
-    std::string problem;           // non-empty: what is not applied faithfully (one line)
+    bool present = false;     // some texture of the material has the extension
+    glm::mat3x2 matrix{1.0f}; // uv' = matrix * vec3(uv, 1)
+    std::string problem;      // non-empty: what is not applied faithfully (one line)
 };
 UvTransform materialUvTransform(const tinygltf::Material& m);
 

@@ -55,8 +55,8 @@ void noteRepair(SceneRepair r, Scene& scene, const WarnFn& warn) {
     for (const SceneRepair& seen : scene.repairs)
         if (seen.attribute == r.attribute && seen.accessor == r.accessor) return;
     warn("repaired " + r.attribute + " accessor " + std::to_string(r.accessor) + ": " +
-         std::to_string(r.count) + " of " + std::to_string(r.total) + " values were " +
-         r.problem + "; " + r.action + " (--strict refuses the file instead)");
+         std::to_string(r.count) + " of " + std::to_string(r.total) + " values were " + r.problem +
+         "; " + r.action + " (--strict refuses the file instead)");
     scene.repairs.push_back(std::move(r));
 }
 
@@ -83,7 +83,8 @@ Status buildMeshes(const tinygltf::Model& model, const std::vector<Instance>& in
                 Status s =
                     readPrimitive(model, inst.mesh, int(p), primitiveOptions, prims[p], warn);
                 if (!s) return s;
-                for (SceneRepair& r : prims[p].repairs) noteRepair(std::move(r), scene, warn);
+                for (SceneRepair& r : prims[p].repairs)
+                    noteRepair(std::move(r), scene, warn);
             }
         }
         for (size_t p = 0; p < prims.size(); ++p) {
@@ -121,7 +122,8 @@ Result<Scene> parse(std::vector<unsigned char>& bytes, const std::string& name,
                     const fs::path& folder, bool binaryByName, const GltfLoadOptions& options,
                     const WarnFn& warn) {
     if (bytes.empty()) return Error{"file is empty"};
-    if (bytes.size() >= (1ull << 32)) return Error{"file is over 4 GiB, which tinygltf cannot load"};
+    if (bytes.size() >= (1ull << 32))
+        return Error{"file is over 4 GiB, which tinygltf cannot load"};
     // By extension, or by the GLB magic whatever the extension says.
     const bool binary =
         binaryByName || (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0);
@@ -168,7 +170,8 @@ Result<Scene> parse(std::vector<unsigned char>& bytes, const std::string& name,
             if (!hasDraco(p)) continue;
             anyDraco = true;
             for (const auto& [name, index] : p.attributes)
-                if (index >= 0 && size_t(index) < dracoAccessor.size()) dracoAccessor[size_t(index)] = 1;
+                if (index >= 0 && size_t(index) < dracoAccessor.size())
+                    dracoAccessor[size_t(index)] = 1;
             if (p.indices >= 0 && size_t(p.indices) < dracoAccessor.size())
                 dracoAccessor[size_t(p.indices)] = 1;
         }

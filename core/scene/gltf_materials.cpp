@@ -144,8 +144,7 @@ Status checkTextureSizes(const tinygltf::Model& model, const std::vector<int>& t
         int w = image.width, h = image.height;
         if (image.as_is && !peekImageSize(image.image.data(), image.image.size(), w, h)) continue;
         if (w <= 0 || h <= 0) continue;
-        if (w > kMaxTextureSide || h > kMaxTextureSide)
-            return Error{tooLargeError(model, i, w, h)};
+        if (w > kMaxTextureSide || h > kMaxTextureSide) return Error{tooLargeError(model, i, w, h)};
         total += uint64_t(w) * uint64_t(h);
     }
     if (total > kMaxTexturePixels)
@@ -210,7 +209,8 @@ struct ImageUse {
 };
 
 ImageUse imageUses(const tinygltf::Model& model) {
-    ImageUse use{std::vector<char>(model.images.size(), 0), std::vector<int>(model.images.size(), 0)};
+    ImageUse use{std::vector<char>(model.images.size(), 0),
+                 std::vector<int>(model.images.size(), 0)};
     std::vector<char> seen(model.images.size() * 2, 0);
     for (const tinygltf::Material& m : model.materials)
         for (auto [texture, slot] : slotsOf(m))
@@ -226,7 +226,8 @@ ImageUse imageUses(const tinygltf::Model& model) {
 // Decodes the images a material shows and the loader could read; warns of every image
 // without pixels (its problem from the loader or the decoder).
 Status decodeImages(const tinygltf::Model& model, const std::vector<std::string>& imageProblems,
-                    const std::vector<char>& needed, std::vector<Decoded>& decoded, const WarnFn& warn) {
+                    const std::vector<char>& needed, std::vector<Decoded>& decoded,
+                    const WarnFn& warn) {
     std::vector<int> toDecode;
     for (size_t i = 0; i < needed.size(); ++i)
         if (needed[i] && (i >= imageProblems.size() || imageProblems[i].empty()))
@@ -250,22 +251,25 @@ Status decodeImages(const tinygltf::Model& model, const std::vector<std::string>
 // per slot for every texture without pixels.
 class TextureTable {
   public:
-    TextureTable(const tinygltf::Model& model, std::vector<Decoded>& decoded, std::vector<int> flavoursLeft,
-                 Scene& scene, const WarnFn& warn)
-        : model_(model), decoded_(decoded), flavoursLeft_(std::move(flavoursLeft)), scene_(scene), warn_(warn) {}
+    TextureTable(const tinygltf::Model& model, std::vector<Decoded>& decoded,
+                 std::vector<int> flavoursLeft, Scene& scene, const WarnFn& warn)
+        : model_(model), decoded_(decoded), flavoursLeft_(std::move(flavoursLeft)), scene_(scene),
+          warn_(warn) {}
 
     int32_t resolve(size_t material, int texture, Slot slot) {
         if (texture < 0) return kNoTexture;
         int image = imageOf(model_, texture);
         if (image < 0 || !decoded_[size_t(image)].problem.empty()) {
             if (image < 0)
-                warn_("material " + std::to_string(material) + ": texture " + std::to_string(texture) +
+                warn_("material " + std::to_string(material) + ": texture " +
+                      std::to_string(texture) +
                       " does not exist or has no image this loader can read; using a placeholder");
             auto [it, added] = placeholderOf_.try_emplace(slot, int32_t(scene_.textures.size()));
             if (added) scene_.textures.push_back(placeholder(slot));
             return it->second;
         }
-        auto [it, added] = textureOf_.try_emplace({image, isSrgb(slot)}, int32_t(scene_.textures.size()));
+        auto [it, added] =
+            textureOf_.try_emplace({image, isSrgb(slot)}, int32_t(scene_.textures.size()));
         if (added) scene_.textures.push_back(makeTexture(image, isSrgb(slot)));
         return it->second;
     }
@@ -276,7 +280,8 @@ class TextureTable {
         Texture t;
         const tinygltf::Image& src = model_.images[size_t(image)];
         t.name = !src.name.empty() ? src.name : "image " + std::to_string(image);
-        if (src.name.empty() && !src.uri.empty() && src.uri.rfind("data:", 0) != 0) t.name = src.uri;
+        if (src.name.empty() && !src.uri.empty() && src.uri.rfind("data:", 0) != 0)
+            t.name = src.uri;
         t.width = uint32_t(d.width), t.height = uint32_t(d.height);
         t.srgb = srgb;
         // The last texture made from an image takes its pixels; an earlier one copies them.
@@ -307,7 +312,8 @@ Material readFactors(const tinygltf::Material& src, size_t index, const WarnFn& 
     m.metallicFactor = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
     m.roughnessFactor = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
     if (src.emissiveFactor.size() == 3)
-        m.emissiveFactor = glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
+        m.emissiveFactor =
+            glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
     if (auto it = src.extensions.find("KHR_materials_emissive_strength");
         it != src.extensions.end() && it->second.IsObject() && it->second.Has("emissiveStrength") &&
         it->second.Get("emissiveStrength").IsNumber())
@@ -319,7 +325,8 @@ Material readFactors(const tinygltf::Material& src, size_t index, const WarnFn& 
     else if (src.alphaMode == "BLEND")
         m.alphaMode = AlphaMode::Blend;
     else if (src.alphaMode != "OPAQUE")
-        warn("material " + std::to_string(index) + ": unknown alphaMode '" + src.alphaMode + "', drawn opaque");
+        warn("material " + std::to_string(index) + ": unknown alphaMode '" + src.alphaMode +
+             "', drawn opaque");
     m.alphaCutoff = float(src.alphaCutoff);
     m.doubleSided = src.doubleSided;
     return m;
@@ -327,11 +334,16 @@ Material readFactors(const tinygltf::Material& src, size_t index, const WarnFn& 
 
 int32_t& textureSlot(Material& m, Slot slot) {
     switch (slot) {
-    case Slot::BaseColor: return m.baseColorTexture;
-    case Slot::MetallicRoughness: return m.metallicRoughnessTexture;
-    case Slot::Normal: return m.normalTexture;
-    case Slot::Occlusion: return m.occlusionTexture;
-    case Slot::Emissive: break;
+    case Slot::BaseColor:
+        return m.baseColorTexture;
+    case Slot::MetallicRoughness:
+        return m.metallicRoughnessTexture;
+    case Slot::Normal:
+        return m.normalTexture;
+    case Slot::Occlusion:
+        return m.occlusionTexture;
+    case Slot::Emissive:
+        break;
     }
     return m.emissiveTexture;
 }
@@ -379,7 +391,7 @@ namespace {
 glm::mat3x2 transformOf(const tinygltf::Value& ext) {
     auto number = [&](const tinygltf::Value& v, float fallback) {
         return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? float(v.GetNumberAsDouble())
-                                                                     : fallback;
+                                                                    : fallback;
     };
     auto pair = [&](const char* key, glm::vec2 fallback) {
         const tinygltf::Value& a = ext.Get(key);
@@ -401,8 +413,8 @@ glm::mat3x2 transformOf(const tinygltf::Value& ext) {
 UvTransform materialUvTransform(const tinygltf::Material& m) {
     const auto& pbr = m.pbrMetallicRoughness;
     const std::pair<const char*, const tinygltf::ExtensionMap*> slots[] = {
-        {"baseColorTexture", pbr.baseColorTexture.index >= 0 ? &pbr.baseColorTexture.extensions
-                                                             : nullptr},
+        {"baseColorTexture",
+         pbr.baseColorTexture.index >= 0 ? &pbr.baseColorTexture.extensions : nullptr},
         {"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index >= 0
                                          ? &pbr.metallicRoughnessTexture.extensions
                                          : nullptr},

@@ -33,8 +33,9 @@ MeshoptView readFields(const tinygltf::Value& ext) {
         const tinygltf::Value& s = ext.Get(key);
         return s.IsString() ? s.Get<std::string>() : std::string(fallback);
     };
-    return {number("buffer", -1), number("byteOffset", 0), number("byteLength", -1), number("byteStride", -1),
-            number("count", -1),  text("mode", ""),         text("filter", "NONE")};
+    return {number("buffer", -1),     number("byteOffset", 0), number("byteLength", -1),
+            number("byteStride", -1), number("count", -1),     text("mode", ""),
+            text("filter", "NONE")};
 }
 
 // Decodes `in` (m.length bytes) into `out` (count x stride bytes) with the mode's codec,
@@ -45,18 +46,22 @@ Status runCodec(const MeshoptView& m, const unsigned char* in, std::vector<unsig
     int rc = -1;
     if (mode == "ATTRIBUTES") {
         if (stride % 4 != 0) return Error{"ATTRIBUTES byteStride is not a multiple of 4"};
-        rc = meshopt_decodeVertexBuffer(out.data(), size_t(count), size_t(stride), in, size_t(length));
+        rc = meshopt_decodeVertexBuffer(out.data(), size_t(count), size_t(stride), in,
+                                        size_t(length));
     } else if (mode == "TRIANGLES" || mode == "INDICES") {
         if (stride != 2 && stride != 4) return Error{"index byteStride is not 2 or 4"};
-        if (mode == "TRIANGLES" && count % 3 != 0) return Error{"TRIANGLES count is not a multiple of 3"};
-        rc = mode == "TRIANGLES"
-                 ? meshopt_decodeIndexBuffer(out.data(), size_t(count), size_t(stride), in, size_t(length))
-                 : meshopt_decodeIndexSequence(out.data(), size_t(count), size_t(stride), in, size_t(length));
+        if (mode == "TRIANGLES" && count % 3 != 0)
+            return Error{"TRIANGLES count is not a multiple of 3"};
+        rc = mode == "TRIANGLES" ? meshopt_decodeIndexBuffer(out.data(), size_t(count),
+                                                             size_t(stride), in, size_t(length))
+                                 : meshopt_decodeIndexSequence(out.data(), size_t(count),
+                                                               size_t(stride), in, size_t(length));
     } else {
         return Error{"unknown mode \"" + mode + "\""};
     }
     if (rc != 0)
-        return Error{"the compressed data is corrupt or truncated (meshoptimizer " + std::to_string(rc) + ")"};
+        return Error{"the compressed data is corrupt or truncated (meshoptimizer " +
+                     std::to_string(rc) + ")"};
     const std::string& filter = m.filter;
     if (filter == "OCTAHEDRAL" && mode == "ATTRIBUTES" && (stride == 4 || stride == 8))
         meshopt_decodeFilterOct(out.data(), size_t(count), size_t(stride));
@@ -65,7 +70,8 @@ Status runCodec(const MeshoptView& m, const unsigned char* in, std::vector<unsig
     else if (filter == "EXPONENTIAL" && mode == "ATTRIBUTES")
         meshopt_decodeFilterExp(out.data(), size_t(count), size_t(stride));
     else if (filter != "NONE")
-        return Error{"filter " + filter + " does not fit mode " + mode + " and byteStride " + std::to_string(stride)};
+        return Error{"filter " + filter + " does not fit mode " + mode + " and byteStride " +
+                     std::to_string(stride)};
     return {};
 }
 
@@ -79,16 +85,18 @@ Status decodeView(tinygltf::Model& model, size_t v, const tinygltf::Value& ext) 
     const std::vector<unsigned char>& src = model.buffers[size_t(m.buffer)].data;
     if (m.offset < 0 || m.length < 0 || uint64_t(m.offset) > src.size() ||
         uint64_t(m.length) > src.size() - uint64_t(m.offset))
-        return Error{"compressed bytes " + std::to_string(m.offset) + "+" + std::to_string(m.length) +
-                     " lie outside buffer " + std::to_string(m.buffer) + " of " + std::to_string(src.size()) +
-                     " bytes"};
-    if (m.count < 0 || m.stride < 1 || m.stride > 256) return Error{"count or byteStride missing or out of range"};
+        return Error{"compressed bytes " + std::to_string(m.offset) + "+" +
+                     std::to_string(m.length) + " lie outside buffer " + std::to_string(m.buffer) +
+                     " of " + std::to_string(src.size()) + " bytes"};
+    if (m.count < 0 || m.stride < 1 || m.stride > 256)
+        return Error{"count or byteStride missing or out of range"};
     const uint64_t size = uint64_t(m.count) * uint64_t(m.stride);
     if (size != view.byteLength)
-        return Error{"count x byteStride is " + std::to_string(size) + " bytes, the bufferView's byteLength " +
-                     std::to_string(view.byteLength)};
+        return Error{"count x byteStride is " + std::to_string(size) +
+                     " bytes, the bufferView's byteLength " + std::to_string(view.byteLength)};
     if (size > uint64_t(m.length) * kMaxRatio + kSlack)
-        return Error{std::to_string(m.length) + " compressed bytes cannot hold " + std::to_string(size) + " bytes"};
+        return Error{std::to_string(m.length) + " compressed bytes cannot hold " +
+                     std::to_string(size) + " bytes"};
     std::vector<unsigned char> out(size_t(size), 0);
     if (Status s = runCodec(m, src.data() + m.offset, out); !s) return s;
     tinygltf::Buffer decoded;
@@ -111,7 +119,8 @@ Status decodeMeshopt(tinygltf::Model& model, bool& any) {
         any = true;
         const std::string what = "bufferView " + std::to_string(v) + ": " + kMeshopt;
         if (!found->second.IsObject()) return Error{what + " is not an object"};
-        if (Status s = decodeView(model, v, found->second); !s) return Error{what + ": " + s.error()};
+        if (Status s = decodeView(model, v, found->second); !s)
+            return Error{what + ": " + s.error()};
     }
     return {};
 }

@@ -162,7 +162,7 @@ void addLight(const tinygltf::Model& model, const Instance& inst, Scene& scene,
 
 // The file's first perspective camera on a drawn node, else one framing the bounds.
 int placeCamera(const tinygltf::Model& model, const std::vector<Instance>& instances,
-                 Scene& scene) {
+                Scene& scene) {
     Camera& cam = scene.camera;
     const glm::vec3 center = scene.bounds.center();
     const float radius = std::max(0.5f * glm::length(scene.bounds.extent()), 1e-4f);

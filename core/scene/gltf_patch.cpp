@@ -38,8 +38,8 @@ bool patchJson(json& root) {
             ext = ext ? jsonMember(*ext, "KHR_draco_mesh_compression") : nullptr;
             const json* indices = jsonMember(p, "indices");
             const json* view = ext ? jsonMember(*ext, "bufferView") : nullptr;
-            if (!indices || !indices->is_number_unsigned() || !view || !view->is_number_unsigned() ||
-                indices->get<uint64_t>() >= accessors.size())
+            if (!indices || !indices->is_number_unsigned() || !view ||
+                !view->is_number_unsigned() || indices->get<uint64_t>() >= accessors.size())
                 continue;
             json& a = accessors[indices->get<size_t>()];
             if (!a.is_object() || a.contains("bufferView")) continue;
@@ -51,7 +51,8 @@ bool patchJson(json& root) {
 
 } // namespace
 
-Status patchForTinygltf(std::vector<unsigned char>& bytes, bool binary, std::string_view& jsonText) {
+Status patchForTinygltf(std::vector<unsigned char>& bytes, bool binary,
+                        std::string_view& jsonText) {
     if (jsonText.find("EXT_meshopt_compression") == std::string_view::npos &&
         jsonText.find("KHR_draco_mesh_compression") == std::string_view::npos)
         return {};

@@ -1,8 +1,8 @@
 #include "core/scene/lights.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -133,7 +133,8 @@ double shortest(float f) {
     char buf[32];
     auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), f);
     double d = 0.0;
-    if (ec != std::errc() || std::from_chars(buf, end, d).ec != std::errc() || float(d) != f) return double(f);
+    if (ec != std::errc() || std::from_chars(buf, end, d).ec != std::errc() || float(d) != f)
+        return double(f);
     return d;
 }
 

@@ -37,7 +37,8 @@ std::vector<Light> generateLights(const Aabb& bounds, const LightGenOptions& opt
 // {"version":1,"lights":[{"type":"point","position":[..],"direction":[..],"color":[..],
 //   "intensity":..,"range":..,"inner_cone":..,"outer_cone":..}]}
 std::string lightsToJson(const std::vector<Light>& lights);
-Result<std::vector<Light>> lightsFromJson(const std::string& text, const std::string& nameForErrors);
+Result<std::vector<Light>> lightsFromJson(const std::string& text,
+                                          const std::string& nameForErrors);
 Result<std::vector<Light>> readLightsFile(const std::string& path);
 Status writeLightsFile(const std::string& path, const std::vector<Light>& lights);
 

@@ -6,20 +6,23 @@ void Scene::computeBounds() {
     bounds = Aabb{};
     for (Mesh& mesh : meshes) {
         mesh.bounds = Aabb{};
-        for (const glm::vec3& p : mesh.positions) mesh.bounds.extend(p);
+        for (const glm::vec3& p : mesh.positions)
+            mesh.bounds.extend(p);
         if (!mesh.bounds.empty()) bounds.extend(mesh.bounds);
     }
 }
 
 size_t Scene::triangleCount() const {
     size_t n = 0;
-    for (const Mesh& mesh : meshes) n += mesh.indices.size() / 3;
+    for (const Mesh& mesh : meshes)
+        n += mesh.indices.size() / 3;
     return n;
 }
 
 size_t Scene::vertexCount() const {
     size_t n = 0;
-    for (const Mesh& mesh : meshes) n += mesh.positions.size();
+    for (const Mesh& mesh : meshes)
+        n += mesh.positions.size();
     return n;
 }
 
@@ -32,9 +35,9 @@ SceneFeatures analyzeScene(const Scene& scene, uint32_t msaaSamples) {
         f.masked |= m.alphaMode == AlphaMode::Mask;
         f.normalMaps |= m.normalTexture != kNoTexture;
         f.emissive |= m.emissiveFactor != glm::vec3(0.0f);
-        f.textures |= m.baseColorTexture != kNoTexture || m.metallicRoughnessTexture != kNoTexture ||
-                      m.normalTexture != kNoTexture || m.occlusionTexture != kNoTexture ||
-                      m.emissiveTexture != kNoTexture;
+        f.textures |= m.baseColorTexture != kNoTexture ||
+                      m.metallicRoughnessTexture != kNoTexture || m.normalTexture != kNoTexture ||
+                      m.occlusionTexture != kNoTexture || m.emissiveTexture != kNoTexture;
         for (const glm::vec4& c : mesh.colors) {
             if (c != glm::vec4(1.0f)) {
                 f.vertexColors = true;

@@ -82,8 +82,8 @@ struct Light {
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // spot and directional: where the light points
     glm::vec3 color{1.0f};
-    float intensity = 1.0f;    // candela (point/spot), lux (directional)
-    float range = 1.0f;        // point/spot: contribution is exactly zero at and past it
+    float intensity = 1.0f;      // candela (point/spot), lux (directional)
+    float range = 1.0f;          // point/spot: contribution is exactly zero at and past it
     float innerConeAngle = 0.0f; // radians, spot only
     float outerConeAngle = 0.7853982f;
 };
@@ -110,7 +110,7 @@ struct SceneRepair {
 };
 
 struct Scene {
-    std::string source; // file path, or "builtin:courtyard" etc.
+    std::string source;                  // file path, or "builtin:courtyard" etc.
     std::vector<SceneRepair> repairs;    // loader repairs, one per accessor
     std::vector<std::string> extensions; // glTF extensions the loader decoded or applied
     std::vector<Mesh> meshes;

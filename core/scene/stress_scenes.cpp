@@ -40,7 +40,8 @@ void rect(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v, glm::vec3 n) {
     // Counter-clockwise seen from n whatever the order of u and v.
     const bool ccw = glm::dot(glm::cross(u, v), n) > 0.0f;
     static constexpr uint32_t front[6] = {0, 1, 2, 0, 2, 3}, back[6] = {0, 2, 1, 0, 3, 2};
-    for (uint32_t i : ccw ? front : back) m.indices.push_back(base + i);
+    for (uint32_t i : ccw ? front : back)
+        m.indices.push_back(base + i);
 }
 
 Mesh meshOf(const char* name, uint32_t material) {
@@ -96,7 +97,9 @@ Scene stage(const char* source) {
     return s;
 }
 
-void finish(Scene& s) { s.computeBounds(); }
+void finish(Scene& s) {
+    s.computeBounds();
+}
 
 } // namespace build
 
@@ -109,7 +112,8 @@ Scene tileOverflow() {
     // wall near it holds all of them (above the deferred shared list's 4,096).
     Sequence seq{11};
     for (int i = 0; i < 5000; ++i) {
-        vec3 p(0.5f + 0.1f * seq.next() - 0.05f, 1.5f + 0.1f * seq.next() - 0.05f, -4.5f + 0.1f * seq.next() - 0.05f);
+        vec3 p(0.5f + 0.1f * seq.next() - 0.05f, 1.5f + 0.1f * seq.next() - 0.05f,
+               -4.5f + 0.1f * seq.next() - 0.05f);
         s.lights.push_back(point(p, 0.01f, 2.5f, vec3(0.5f + 0.5f * seq.next(), 0.8f, 1.0f)));
     }
     finish(s);
@@ -120,7 +124,8 @@ Scene depthDiscontinuity() {
     Scene s = stage("stress:depth-discontinuity");
     s.meshes.pop_back(); // no box: a pole and a far wall
     const uint32_t grey = 0, red = 1;
-    Mesh far = meshOf("far_wall", grey), pole = meshOf("pole", red), ground = meshOf("far_ground", grey);
+    Mesh far = meshOf("far_wall", grey), pole = meshOf("pole", red),
+         ground = meshOf("far_ground", grey);
     rect(far, {-2000, -5, -1000}, {4000, 0, 0}, {0, 2000, 0}, {0, 0, 1});
     rect(ground, {-2000, -5, 5}, {4000, 0, 0}, {0, 0, -1005}, {0, 1, 0});
     // A 2 cm pole 0.4 m in front of the camera: its tiles span 0.4 m to 1 km.
@@ -131,7 +136,8 @@ Scene depthDiscontinuity() {
     s.camera.target = {0, 2.8f, 0};
     Sequence seq{23};
     for (int i = 0; i < 64; ++i) // near the far wall
-        s.lights.push_back(point({-600 + 1200 * seq.next(), 300 * seq.next(), -980}, 4.0e4f, 60.0f));
+        s.lights.push_back(
+            point({-600 + 1200 * seq.next(), 300 * seq.next(), -980}, 4.0e4f, 60.0f));
     for (int i = 0; i < 16; ++i) // near the pole and the stage
         s.lights.push_back(point({-1 + 2 * seq.next(), 4 * seq.next(), 6.2f}, 0.5f, 1.0f));
     s.lights.push_back(point({0, 3, 0}, 20.0f, 10.0f));
@@ -156,7 +162,8 @@ Scene mirrorSpike() {
     s.camera.target = {0, 1, -5};
     for (float x : {-1.5f, 1.5f}) {
         s.lights.push_back(point({x, 0.2f, -4.5f}, 1.0e4f, 20.0f)); // grazing on the floor patches
-        s.lights.push_back(point({x, 1.5f, 3.0f}, 1.0e4f, 20.0f));  // near-normal on the wall patches
+        s.lights.push_back(
+            point({x, 1.5f, 3.0f}, 1.0e4f, 20.0f)); // near-normal on the wall patches
     }
     finish(s);
     return s;
@@ -164,12 +171,12 @@ Scene mirrorSpike() {
 
 Scene lightOnSurface() {
     Scene s = stage("stress:light-on-surface");
-    s.lights.push_back(point({1, 0, 1}, 10.0f, 2.0f));             // centre on the floor plane
-    s.lights.push_back(point({-1, 0.0001f, 2}, 10.0f, 2.0f));      // 0.1 mm in front of the floor
-    s.lights.push_back(point({1, 2, -5.001f}, 10.0f, 2.0f));       // 1 mm behind the wall
-    s.lights.push_back(point({-1, 2.5f, -5}, 10.0f, 2.0f));        // centre on the wall plane
-    s.lights.push_back(point({-2, 1, -1.5f}, 10.0f, 2.0f));        // on the box's top face
-    s.lights.push_back(point({-5, 0, 5}, 10.0f, 2.0f));            // on a floor vertex
+    s.lights.push_back(point({1, 0, 1}, 10.0f, 2.0f));        // centre on the floor plane
+    s.lights.push_back(point({-1, 0.0001f, 2}, 10.0f, 2.0f)); // 0.1 mm in front of the floor
+    s.lights.push_back(point({1, 2, -5.001f}, 10.0f, 2.0f));  // 1 mm behind the wall
+    s.lights.push_back(point({-1, 2.5f, -5}, 10.0f, 2.0f));   // centre on the wall plane
+    s.lights.push_back(point({-2, 1, -1.5f}, 10.0f, 2.0f));   // on the box's top face
+    s.lights.push_back(point({-5, 0, 5}, 10.0f, 2.0f));       // on a floor vertex
     finish(s);
     return s;
 }
@@ -188,14 +195,18 @@ Scene farFromOrigin() {
     Scene s = stage("stress:far-from-origin");
     Sequence seq{5};
     for (int i = 0; i < 24; ++i)
-        s.lights.push_back(point({-4.5f + 9 * seq.next(), 0.2f + 2.5f * seq.next(), -4.5f + 9 * seq.next()}, 3.0f, 2.5f));
+        s.lights.push_back(
+            point({-4.5f + 9 * seq.next(), 0.2f + 2.5f * seq.next(), -4.5f + 9 * seq.next()}, 3.0f,
+                  2.5f));
     // Every coordinate 1e6 away (fp32 spacing there: 0.0625). The stage's coordinates are
     // multiples of 1/16, so the geometry and the camera keep their shape exactly; the
     // lights round to the 1/16 grid (the same rounded lights for every pipeline).
     const vec3 t(1.0e6f);
     for (Mesh& m : s.meshes)
-        for (vec3& p : m.positions) p += t;
-    for (Light& l : s.lights) l.position += t;
+        for (vec3& p : m.positions)
+            p += t;
+    for (Light& l : s.lights)
+        l.position += t;
     s.camera.position += t;
     s.camera.target += t;
     finish(s);
@@ -208,7 +219,8 @@ Scene depthPrecision(bool infiniteFar) {
     s.camera.zfar = infiniteFar ? 0.0f : 1e6f;
     const uint32_t white = addMaterial(s, plain("white", vec3(0.9f), 0.0f, 1.0f));
     const uint32_t blue = addMaterial(s, plain("blue", vec3(0.1f, 0.2f, 0.9f), 0.0f, 1.0f));
-    Mesh nearBox = meshOf("near_box", white), far = meshOf("far_panel", white), farFront = meshOf("far_front", blue);
+    Mesh nearBox = meshOf("near_box", white), far = meshOf("far_panel", white),
+         farFront = meshOf("far_front", blue);
     // 5 mm cube 2 cm in front of the camera, at the lower left of the view.
     const vec3 eye = s.camera.position;
     nearBox.name = "near_box";
@@ -220,7 +232,8 @@ Scene depthPrecision(bool infiniteFar) {
     s.meshes.push_back(far);
     s.meshes.push_back(farFront);
     // The wall of the stage hides the far panels; lower it so they show above it.
-    for (vec3& p : s.meshes[1].positions) p.y = std::min(p.y, 1.0f);
+    for (vec3& p : s.meshes[1].positions)
+        p.y = std::min(p.y, 1.0f);
     s.lights.push_back(sun(vec3(0.2f, -0.5f, -1.0f), 2.0f));
     s.lights.push_back(point(eye + vec3(0, -0.005f, -0.01f), 0.002f, 0.05f)); // lights the near box
     s.lights.push_back(point({0, 2, 1}, 20.0f, 8.0f));
@@ -234,7 +247,8 @@ Scene msaaEdges() {
     Scene s = stage("stress:msaa-edges");
     s.materials[0] = plain("black", vec3(0.02f), 0.0f, 1.0f);
     s.materials[1] = plain("white", vec3(0.9f), 0.0f, 1.0f);
-    for (vec3& p : s.meshes[1].positions) p.y = std::min(p.y, 2.0f); // sky above the wall
+    for (vec3& p : s.meshes[1].positions)
+        p.y = std::min(p.y, 2.0f); // sky above the wall
     Mesh more = meshOf("slivers", 1);
     box(more, {0.5f, 0, -1}, {0.55f, 2.5f, -0.95f}); // thin posts: edges on both sides in one pixel
     box(more, {1.5f, 0, 0}, {1.52f, 3.0f, 0.02f});
@@ -250,76 +264,111 @@ const std::vector<StressCase>& stressCases() {
     static const std::vector<StressCase> cases = [] {
         std::vector<StressCase> c;
         auto add = [&](StressCase sc) { c.push_back(std::move(sc)); };
-        add({"tile-overflow", "5,000 point lights overlap the same tiles (beyond deferred's 4,096-light shared list)",
-             "every light shaded: none dropped, image within the pipeline's precision bound", 96, 64, 1,
-             tileOverflow, false, false, false, 5000});
-        add({"depth-discontinuity", "a 2 cm pole 0.4 m from the eye in front of a wall 1 km away: tiles span 0.4 m to 1 km",
-             "culling efficiency collapses, correctness must not: within the precision bound", 96, 64, 1,
-             depthDiscontinuity});
-        add({"mirror-spike", "roughness 0.03 (the clamp) and 0 under 10^4 cd lights, grazing and near-normal incidence",
-             "the spike is finite (roughness clamped), no NaN/Inf, within the bound (G-buffer roughness quantization counted)",
+        add({"tile-overflow",
+             "5,000 point lights overlap the same tiles (beyond deferred's 4,096-light shared "
+             "list)",
+             "every light shaded: none dropped, image within the pipeline's precision bound", 96,
+             64, 1, tileOverflow, false, false, false, 5000});
+        add({"depth-discontinuity",
+             "a 2 cm pole 0.4 m from the eye in front of a wall 1 km away: tiles span 0.4 m to 1 "
+             "km",
+             "culling efficiency collapses, correctness must not: within the precision bound", 96,
+             64, 1, depthDiscontinuity});
+        add({"mirror-spike",
+             "roughness 0.03 (the clamp) and 0 under 10^4 cd lights, grazing and near-normal "
+             "incidence",
+             "the spike is finite (roughness clamped), no NaN/Inf, within the bound (G-buffer "
+             "roughness quantization counted)",
              96, 64, 1, mirrorSpike});
-        add({"light-on-surface", "point lights centred on a surface, 0.1 mm in front, 1 mm behind, on a vertex",
-             "finite (distance clamped at 1 cm, l = n at distance 0), the back side unlit, within the bound", 96, 64, 1,
-             lightOnSurface});
+        add({"light-on-surface",
+             "point lights centred on a surface, 0.1 mm in front, 1 mm behind, on a vertex",
+             "finite (distance clamped at 1 cm, l = n at distance 0), the back side unlit, within "
+             "the bound",
+             96, 64, 1, lightOnSurface});
         add({"beyond-half-float", "a 10^6 cd light: radiance up to 1.6e5, beyond fp16's 65,504",
-             "no NaN; fp32 targets exact within the bound; fp16 targets saturate or overflow only where the "
+             "no NaN; fp32 targets exact within the bound; fp16 targets saturate or overflow only "
+             "where the "
              "reference exceeds 65,504 (the report says which); the rest within the bound",
              96, 64, 1, beyondHalfFloat});
-        add({"far-from-origin", "the lit stage translated by 10^6 units on every axis (fp32 spacing 0.0625)",
-             "same data, same vertex shader: within the same bound as at the origin", 96, 64, 1, farFromOrigin});
-        add({"depth-precision", "near 1e-3, far 1e6: a 5 mm cube 2 cm away and panels 5e5 m away 1 m apart",
-             "reverse-Z D32 resolves both; depth equals the reference's exactly; within the bound", 96, 64, 1,
-             [] { return depthPrecision(false); }, true});
+        add({"far-from-origin",
+             "the lit stage translated by 10^6 units on every axis (fp32 spacing 0.0625)",
+             "same data, same vertex shader: within the same bound as at the origin", 96, 64, 1,
+             farFromOrigin});
+        add({"depth-precision",
+             "near 1e-3, far 1e6: a 5 mm cube 2 cm away and panels 5e5 m away 1 m apart",
+             "reverse-Z D32 resolves both; depth equals the reference's exactly; within the bound",
+             96, 64, 1, [] { return depthPrecision(false); }, true});
         add({"depth-precision-infinite", "as depth-precision with an infinite far plane",
-             "reverse-Z D32 resolves both; depth equals the reference's exactly; within the bound", 96, 64, 1,
-             [] { return depthPrecision(true); }, true});
-        add({"degenerate-geometry", "zero-area triangles, zero-length and NaN normals, missing and zero tangents under a normal map",
-             "no NaN/Inf (geometric normal fallback, normal map skipped), within the bound", 96, 64, 1,
-             degenerateGeometry, false, true});
-        add({"lights-0", "no light at all: ambient only", "ambient exactly as the reference, nothing else", 96, 64, 1,
+             "reverse-Z D32 resolves both; depth equals the reference's exactly; within the bound",
+             96, 64, 1, [] { return depthPrecision(true); }, true});
+        add({"degenerate-geometry",
+             "zero-area triangles, zero-length and NaN normals, missing and zero tangents under a "
+             "normal map",
+             "no NaN/Inf (geometric normal fallback, normal map skipped), within the bound", 96, 64,
+             1, degenerateGeometry, false, true});
+        add({"lights-0", "no light at all: ambient only",
+             "ambient exactly as the reference, nothing else", 96, 64, 1,
              [] { return lightCount(0); }});
-        add({"lights-1", "a single point light", "within the bound", 96, 64, 1, [] { return lightCount(1); }});
-        add({"lights-65536", "65,536 point lights (4 cm grid over the floor and the wall), at 48x32",
+        add({"lights-1", "a single point light", "within the bound", 96, 64, 1,
+             [] { return lightCount(1); }});
+        add({"lights-65536",
+             "65,536 point lights (4 cm grid over the floor and the wall), at 48x32",
              "none dropped, within the bound (summation of up to 65,536 terms counted)", 48, 32, 1,
              [] { return lightCount(65536); }});
-        add({"lights-whole-screen", "lights whose range covers the whole view, one around the camera, a 172-degree spot",
+        add({"lights-whole-screen",
+             "lights whose range covers the whole view, one around the camera, a 172-degree spot",
              "every tile holds every light; within the bound", 96, 64, 1, lightsWholeScreen});
-        add({"lights-subpixel", "400 lights of 2 cm range 5 mm above the floor, a pixel is ~9 cm there",
-             "culling keeps lights smaller than a pixel: within the bound", 96, 64, 1, lightsSubpixel});
-        add({"msaa-edges", "4x MSAA, white boxes and thin posts against a near-black wall and the sky",
-             "edges resolved per sample like the reference: within the bound", 96, 64, 4, msaaEdges, false, false,
-             true});
+        add({"lights-subpixel",
+             "400 lights of 2 cm range 5 mm above the floor, a pixel is ~9 cm there",
+             "culling keeps lights smaller than a pixel: within the bound", 96, 64, 1,
+             lightsSubpixel});
+        add({"msaa-edges",
+             "4x MSAA, white boxes and thin posts against a near-black wall and the sky",
+             "edges resolved per sample like the reference: within the bound", 96, 64, 4, msaaEdges,
+             false, false, true});
         add({.name = "dynamic-range",
-             .stresses = "four lights from 1e3 cd down to 1e-6 cd (10^9) on one screen, no ambient: radiance from "
+             .stresses = "four lights from 1e3 cd down to 1e-6 cd (10^9) on one screen, no "
+                         "ambient: radiance from "
                          "~600 down to ~6e-7 (fp16 subnormals)",
-             .expectation = "within the bound per HDR pixel, the dim end too (the tonemapped check cannot see it)",
+             .expectation = "within the bound per HDR pixel, the dim end too (the tonemapped check "
+                            "cannot see it)",
              .build = dynamicRange,
              .hdrChecked = true});
         add({.name = "blended-64",
-             .stresses = "64 blended panels (alpha 0.1-0.4) over 240 pixels, lit by two point lights and the sun",
-             .expectation = "composited back to front like the reference: within the bound, with the roundings of "
+             .stresses = "64 blended panels (alpha 0.1-0.4) over 240 pixels, lit by two point "
+                         "lights and the sun",
+             .expectation = "composited back to front like the reference: within the bound, with "
+                            "the roundings of "
                             "every blend (each layer, each blended light draw)",
              .build = blendedLayers,
              .blendedLayers = 64});
         add({.name = "lights-range-0",
-             .stresses = "18 lights of range 0, 1e-40 and 1.4e-45 (subnormal), points and spots, in mid-air, in "
+             .stresses = "18 lights of range 0, 1e-40 and 1.4e-45 (subnormal), points and spots, "
+                         "in mid-air, in "
                          "the floor and wall planes, on the box, at the eye; one ordinary light",
-             .expectation = "no NaN/Inf, none dropped; each image equals bit for bit the same renderer's image "
+             .expectation = "no NaN/Inf, none dropped; each image equals bit for bit the same "
+                            "renderer's image "
                             "with their intensity 0; within the bound",
              .build = zeroRangeLights,
              .inertLights = 18});
         add({.name = "camera-in-light",
-             .stresses = "the eye inside six lights' spheres: behind it, on the near plane, crossing it, 1 mm "
-                         "inside the surface, reaching nothing visible, a spot with its apex at the eye",
-             .expectation = "each light on exactly the part of the view it reaches, no more, no less: within the "
+             .stresses =
+                 "the eye inside six lights' spheres: behind it, on the near plane, crossing it, 1 "
+                 "mm "
+                 "inside the surface, reaching nothing visible, a spot with its apex at the eye",
+             .expectation = "each light on exactly the part of the view it reaches, no more, no "
+                            "less: within the "
                             "bound",
              .build = cameraInLights});
         add({.name = "spot-zero-cone",
-             .stresses = "74 spots with outer = inner = 0, their axes through pixel centres (the cosine to the axis "
-                         "rounds to 1 or above) or straight down, and one with outer 0 below inner 0.3; one point light",
-             .expectation = "no NaN/Inf; a zero cone lights nothing, not even on its axis: each image equals bit "
-                            "for bit the same renderer's image with the spots at intensity 0; within the bound",
+             .stresses = "74 spots with outer = inner = 0, their axes through pixel centres (the "
+                         "cosine to the axis "
+                         "rounds to 1 or above) or straight down, and one with outer 0 below inner "
+                         "0.3; one point light",
+             .expectation = "no NaN/Inf; a zero cone lights nothing, not even on its axis: each "
+                            "image equals bit "
+                            "for bit the same renderer's image with the spots at intensity 0; "
+                            "within the bound",
              .build = zeroConeSpots,
              .inertLights = 74});
         return c;
@@ -330,16 +379,19 @@ const std::vector<StressCase>& stressCases() {
 Result<std::vector<const StressCase*>> selectStressCases(const std::string& list) {
     std::vector<const StressCase*> out;
     if (list.empty()) {
-        for (const StressCase& c : stressCases()) out.push_back(&c);
+        for (const StressCase& c : stressCases())
+            out.push_back(&c);
         return out;
     }
     std::vector<std::string> names;
     std::stringstream ss(list);
     std::string item;
-    while (std::getline(ss, item, ',')) names.push_back(item);
+    while (std::getline(ss, item, ','))
+        names.push_back(item);
     for (const std::string& n : names) {
         bool known = false;
-        for (const StressCase& c : stressCases()) known |= c.name == n;
+        for (const StressCase& c : stressCases())
+            known |= c.name == n;
         if (!known) return Error{"--case: unknown case '" + n + "' (see triptych stress --list)"};
     }
     for (const StressCase& c : stressCases())

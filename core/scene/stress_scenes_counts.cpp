@@ -29,13 +29,15 @@ Scene degenerateGeometry() {
     nanNormals.normals[2] = vec3(nan, 0, 0);
     Mesh zeroNormals = meshOf("zero_normals", 1);
     rect(zeroNormals, {0.5f, 0, 2.5f}, {0, 1, 0}, {2, 0, 0}, {0, 0, 1});
-    for (vec3& n : zeroNormals.normals) n = vec3(0.0f);
+    for (vec3& n : zeroNormals.normals)
+        n = vec3(0.0f);
     // Normal-mapped quads: one without any tangents (the arrays empty), one with zero ones.
     Mesh noTangents = meshOf("no_tangents", bump), zeroTangents = meshOf("zero_tangents", bump);
     rect(noTangents, {-4, 0.01f, 1}, {2, 0, 0}, {0, 0, -2}, {0, 1, 0});
     noTangents.tangents.clear();
     rect(zeroTangents, {-4, 0.5f, -4.99f}, {2, 0, 0}, {0, 2, 0}, {0, 0, 1});
-    for (glm::vec4& t : zeroTangents.tangents) t = glm::vec4(0.0f);
+    for (glm::vec4& t : zeroTangents.tangents)
+        t = glm::vec4(0.0f);
     // Zero-area triangles inside an ordinary mesh: collinear, repeated vertex, all equal.
     Mesh slivers = meshOf("zero_area", 1);
     rect(slivers, {2.5f, 0.01f, 2}, {1.5f, 0, 0}, {0, 0, -1.5f}, {0, 1, 0});
@@ -47,7 +49,8 @@ Scene degenerateGeometry() {
         slivers.uvs.push_back(glm::vec2(0));
         slivers.colors.push_back(glm::vec4(1));
     }
-    for (uint32_t i : {b, b + 1, b + 2, b, b, b + 1, b + 2, b + 2, b + 2, 0u, 0u, 1u}) slivers.indices.push_back(i);
+    for (uint32_t i : {b, b + 1, b + 2, b, b, b + 1, b + 2, b + 2, b + 2, 0u, 0u, 1u})
+        slivers.indices.push_back(i);
     s.meshes.insert(s.meshes.end(), {nanNormals, zeroNormals, noTangents, zeroTangents, slivers});
     s.lights.push_back(point({0, 2, 2}, 15.0f, 8.0f));
     s.lights.push_back(point({-3, 1.5f, -3}, 8.0f, 5.0f, vec3(1.0f, 0.8f, 0.6f)));
@@ -56,7 +59,9 @@ Scene degenerateGeometry() {
 }
 
 Scene lightCount(uint32_t count) {
-    Scene s = stage(count == 0 ? "stress:lights-0" : count == 1 ? "stress:lights-1" : "stress:lights-65536");
+    Scene s = stage(count == 0   ? "stress:lights-0"
+                    : count == 1 ? "stress:lights-1"
+                                 : "stress:lights-65536");
     if (count == 1) s.lights.push_back(point({0.5f, 1.5f, 1}, 20.0f, 8.0f));
     if (count <= 1) {
         finish(s);
@@ -80,7 +85,8 @@ Scene lightsWholeScreen() {
     Scene s = stage("stress:lights-whole-screen");
     const vec3 colors[4] = {{1, 0.3f, 0.3f}, {0.3f, 1, 0.3f}, {0.3f, 0.3f, 1}, {1, 1, 0.6f}};
     for (int i = 0; i < 8; ++i)
-        s.lights.push_back(point({-4 + float(i), 1 + 0.3f * float(i), -4 + float(i)}, 3.0f, 1000.0f, colors[i % 4]));
+        s.lights.push_back(point({-4 + float(i), 1 + 0.3f * float(i), -4 + float(i)}, 3.0f, 1000.0f,
+                                 colors[i % 4]));
     s.lights.push_back(point(s.camera.position, 5.0f, 500.0f)); // the camera inside its sphere
     Light spot = point({0, 4.5f, 4}, 40.0f, 1000.0f);
     spot.type = LightType::Spot;
@@ -98,7 +104,8 @@ Scene lightsSubpixel() {
     // 2 cm, so most light no pixel centre and a few light one or two.
     for (int j = 0; j < 20; ++j)
         for (int i = 0; i < 20; ++i) {
-            float x = -4.75f + 0.5f * float(i) + 0.013f * float(j % 7), z = -4.75f + 0.5f * float(j) + 0.011f * float(i % 5);
+            float x = -4.75f + 0.5f * float(i) + 0.013f * float(j % 7),
+                  z = -4.75f + 0.5f * float(j) + 0.011f * float(i % 5);
             s.lights.push_back(point({x, 0.005f, z}, 0.05f, 0.02f, vec3(1.0f, 0.9f, 0.7f)));
         }
     s.lights.push_back(sun(vec3(0.3f, -1.0f, -0.4f), 0.2f));

@@ -18,12 +18,15 @@ using namespace tp;
 
 namespace {
 
-bool isExr(const std::string& path) { return path.size() > 4 && path.substr(path.size() - 4) == ".exr"; }
+bool isExr(const std::string& path) {
+    return path.size() > 4 && path.substr(path.size() - 4) == ".exr";
+}
 
 void print(const char* what, const FlipResult& r, double seconds, double cpuSeconds) {
-    std::printf("%s: mean %.9f  w.median %.9f  w.Q1 %.9f  w.Q3 %.9f  min %.9f  max %.9f  (%.3f s, CPU %.3f s)\n",
-                what, r.stats.mean, r.stats.weightedMedian, r.stats.weightedQ1, r.stats.weightedQ3, r.stats.min,
-                r.stats.max, seconds, cpuSeconds);
+    std::printf("%s: mean %.9f  w.median %.9f  w.Q1 %.9f  w.Q3 %.9f  min %.9f  max %.9f  (%.3f s, "
+                "CPU %.3f s)\n",
+                what, r.stats.mean, r.stats.weightedMedian, r.stats.weightedQ1, r.stats.weightedQ3,
+                r.stats.min, r.stats.max, seconds, cpuSeconds);
     if (r.exposures.count > 0)
         std::printf("  exposures: start %.7f stop %.7f count %d\n", double(r.exposures.start),
                     double(r.exposures.stop), r.exposures.count);
@@ -78,14 +81,17 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s\n", (!ref ? ref : test).error().c_str());
             return 1;
         }
-        if (isExr(refPath)) timed("HDR-FLIP", [&] { return hdrFlip(*test, *ref, ppd); });
-        else timed("LDR-FLIP", [&] { return ldrFlip(*test, *ref, ppd); });
+        if (isExr(refPath))
+            timed("HDR-FLIP", [&] { return hdrFlip(*test, *ref, ppd); });
+        else
+            timed("LDR-FLIP", [&] { return ldrFlip(*test, *ref, ppd); });
         return 0;
     }
     ImageRGBA ref, test;
     synthetic(ref, test);
     const float ev = autoExposureEv(ref);
-    const ImageRGBA refDisplay = tonemapToDisplay(ref, ev), testDisplay = tonemapToDisplay(test, ev);
+    const ImageRGBA refDisplay = tonemapToDisplay(ref, ev),
+                    testDisplay = tonemapToDisplay(test, ev);
     for (int run = 0; run < 3; ++run) {
         auto t0 = std::chrono::steady_clock::now();
         const std::clock_t c0 = std::clock();
@@ -93,7 +99,8 @@ int main(int argc, char** argv) {
         timed("HDR-FLIP 1920x1080", [&] { return hdrFlip(test, ref, ppd); });
         std::chrono::duration<double> took = std::chrono::steady_clock::now() - t0;
         std::printf("LDR + HDR: %.3f s (CPU %.3f s over %u threads)\n", took.count(),
-                    double(std::clock() - c0) / CLOCKS_PER_SEC, std::thread::hardware_concurrency());
+                    double(std::clock() - c0) / CLOCKS_PER_SEC,
+                    std::thread::hardware_concurrency());
     }
     return 0;
 }

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "core/gpu/context.h"
-#include "core/passes/light_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
+#include "core/passes/light_binning.h"
 #include "core/render/scene_gpu.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
@@ -23,11 +23,15 @@ using namespace tp;
 
 namespace {
 
-double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-double cpuNow() { return double(std::clock()) / CLOCKS_PER_SEC; }
+double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+double cpuNow() {
+    return double(std::clock()) / CLOCKS_PER_SEC;
+}
 
-template <class F>
-void timeIt(const char* what, int runs, F&& f) {
+template <class F> void timeIt(const char* what, int runs, F&& f) {
     std::vector<double> wall, cpu;
     for (int i = 0; i < runs; ++i) {
         double w0 = now(), c0 = cpuNow();
@@ -37,15 +41,16 @@ void timeIt(const char* what, int runs, F&& f) {
     }
     std::sort(wall.begin(), wall.end());
     std::sort(cpu.begin(), cpu.end());
-    std::printf("%-28s median %9.3f ms (min %9.3f), CPU median %9.3f ms, %d runs\n", what, 1e3 * wall[runs / 2],
-                1e3 * wall[0], 1e3 * cpu[runs / 2], runs);
+    std::printf("%-28s median %9.3f ms (min %9.3f), CPU median %9.3f ms, %d runs\n", what,
+                1e3 * wall[runs / 2], 1e3 * wall[0], 1e3 * cpu[runs / 2], runs);
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
     const uint32_t lights = argc > 1 ? uint32_t(std::atol(argv[1])) : 1024;
-    const uint32_t w = argc > 3 ? uint32_t(std::atol(argv[2])) : 1280, h = argc > 3 ? uint32_t(std::atol(argv[3])) : 720;
+    const uint32_t w = argc > 3 ? uint32_t(std::atol(argv[2])) : 1280,
+                   h = argc > 3 ? uint32_t(std::atol(argv[3])) : 720;
     const uint32_t tile = argc > 4 ? uint32_t(std::atol(argv[4])) : 16;
     Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(ContextOptions{});
     if (!ctx.ok()) {
@@ -69,10 +74,14 @@ int main(int argc, char** argv) {
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
     const std::vector<uint32_t> local = la::classifyLights(gpuScene.shadingLights()).local;
     const gpu::FrameUniforms& f = gpuScene.shadingFrame();
-    std::printf("%u lights, %ux%u, tile %u (%u tiles), %s\n", lights, w, h, tile, grid.count(), (*ctx)->info.name.c_str());
+    std::printf("%u lights, %ux%u, tile %u (%u tiles), %s\n", lights, w, h, tile, grid.count(),
+                (*ctx)->info.name.c_str());
     la::LightBins bins;
-    timeIt("cpu binLights", 5, [&] { bins = la::binLights(grid, f.view, f.proj, gpuScene.shadingLights(), local, true); });
-    std::printf("  candidates %llu, longest run %u\n", (unsigned long long)bins.slots, bins.maxBound);
+    timeIt("cpu binLights", 5, [&] {
+        bins = la::binLights(grid, f.view, f.proj, gpuScene.shadingLights(), local, true);
+    });
+    std::printf("  candidates %llu, longest run %u\n", (unsigned long long)bins.slots,
+                bins.maxBound);
     timeIt("gpu plan-time (incl. pipelines)", 3, [&] {
         la::GpuBinning b(**ctx, gpuScene, grid, local, "bench");
         b.sizes();

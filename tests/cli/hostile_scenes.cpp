@@ -136,7 +136,8 @@ json texturedTriangle(const json& images) {
         g["textures"].push_back({{"source", i}});
     g["materials"] = json::array();
     for (size_t i = 0; i < images.size(); ++i)
-        g["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
+        g["materials"].push_back(
+            {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
     g["meshes"][0]["primitives"][0]["material"] = 0;
     // Every material used: one primitive per image, all on the same triangle.
     for (size_t i = 1; i < images.size(); ++i) {
@@ -212,42 +213,51 @@ void rangeCases(Writer& w) {
     json g = triangleJson();
     g["bufferViews"][1]["byteLength"] = 4000;
     w.gltf({"view_past_buffer", "scene.gltf", E, "outside its buffer",
-            "a bufferView 4000 bytes long in a 44-byte buffer"}, g);
+            "a bufferView 4000 bytes long in a 44-byte buffer"},
+           g);
     g = triangleJson();
     g["bufferViews"][0]["buffer"] = 7;
     w.gltf({"view_of_missing_buffer", "scene.gltf", E, "buffer 7",
-            "a bufferView of buffer 7 (there is one)"}, g);
+            "a bufferView of buffer 7 (there is one)"},
+           g);
     g = triangleJson();
     g["bufferViews"][1]["byteOffset"] = 4294967292ull; // + byteLength 6 wraps to 2 in 32 bits
     w.gltf({"view_offset_wraps_32bit", "scene.gltf", E, "outside its buffer",
-            "bufferView byteOffset 2^32-4: offset + length wraps to 2 in 32 bits"}, g);
+            "bufferView byteOffset 2^32-4: offset + length wraps to 2 in 32 bits"},
+           g);
     g = triangleJson();
     g["accessors"][0]["count"] = 0; // found by the fuzzer: memcpy from a null pointer (UB)
     w.gltf({"position_count_zero", "scene.gltf", E, "out of range (0 vertices)",
-            "a POSITION accessor of count 0"}, g);
+            "a POSITION accessor of count 0"},
+           g);
     g = triangleJson();
     g["accessors"][0]["byteOffset"] = 40;
     w.gltf({"accessor_past_view", "scene.gltf", E, "lies outside bufferView",
-            "an accessor starting 40 bytes into a 36-byte bufferView"}, g);
+            "an accessor starting 40 bytes into a 36-byte bufferView"},
+           g);
     g = triangleJson();
     g["accessors"][0]["bufferView"] = 9;
     w.gltf({"accessor_of_missing_view", "scene.gltf", E, "bufferView 9 does not exist",
-            "an accessor of bufferView 9 (there are two)"}, g);
+            "an accessor of bufferView 9 (there are two)"},
+           g);
     g = triangleJson();
     g["accessors"][0]["count"] = 4294967299ull; // wraps to 3 in 32 bits: the true count
     w.gltf({"count_wraps_32bit", "scene.gltf", E, "is absurd",
-            "POSITION count 2^32+3, which a 32-bit count reads as 3"}, g);
+            "POSITION count 2^32+3, which a 32-bit count reads as 3"},
+           g);
     g = triangleJson();
     g["accessors"][0]["type"] = "VEC4";
     g["accessors"][0]["count"] = 268435457ull; // * 16 bytes = 2^32 + 16: wraps to 16
     w.gltf({"count_times_size_wraps_32bit", "scene.gltf", E, "is absurd",
-            "count 2^28+1 of 16-byte elements: count * size wraps to 16 in 32 bits"}, g);
+            "count 2^28+1 of 16-byte elements: count * size wraps to 16 in 32 bits"},
+           g);
     g = triangleJson();
     g["accessors"][1]["sparse"] = json::parse(R"({"count": 2147483648,
         "indices": {"bufferView": 1, "componentType": 5123},
         "values": {"bufferView": 1}})");
     w.gltf({"sparse_count_overflows", "scene.gltf", E, "sparse count",
-            "sparse count 2^31 (a negative int) on a 3-element accessor"}, g);
+            "sparse count 2^31 (a negative int) on a 3-element accessor"},
+           g);
 }
 
 void indexCases(Writer& w) {
@@ -255,7 +265,8 @@ void indexCases(Writer& w) {
     const uint16_t past[3] = {0, 1, 3};
     std::memcpy(bin.data() + 36, past, 6);
     w.gltf({"index_past_vertex_count", "scene.gltf", E, "index 3 at position 2 is out of range",
-            "index 3 into 3 vertices"}, triangleJson(), bin);
+            "index 3 into 3 vertices"},
+           triangleJson(), bin);
     json g = triangleJson();
     const uint32_t restart[3] = {0, 1, 0xFFFFFFFFu};
     bin = triangleBin();
@@ -266,33 +277,40 @@ void indexCases(Writer& w) {
     g["accessors"][1]["componentType"] = 5125;
     g["buffers"][0]["byteLength"] = bin.size();
     w.gltf({"index_0xffffffff", "scene.gltf", E, "index 4294967295",
-            "uint32 index 2^32-1 (a restart value or a -1)"}, g, bin);
+            "uint32 index 2^32-1 (a restart value or a -1)"},
+           g, bin);
 }
 
 void uriCases(Writer& w) {
     json g = triangleJson();
     g["buffers"][0]["uri"] = "../../etc/passwd";
     w.gltf({"buffer_uri_etc_passwd", "scene.gltf", E, "leaves the scene's folder",
-            "buffer URI ../../etc/passwd"}, g);
+            "buffer URI ../../etc/passwd"},
+           g);
     // The file it points to exists and is a valid buffer: only the path makes it wrong.
     g["buffers"][0]["uri"] = "../../tri.bin";
-    w.files({"buffer_uri_escapes_to_a_real_file", "a/b/scene.gltf", E,
-             "leaves the scene's folder", "buffer URI ../../tri.bin, a valid buffer outside"},
+    w.files({"buffer_uri_escapes_to_a_real_file", "a/b/scene.gltf", E, "leaves the scene's folder",
+             "buffer URI ../../tri.bin, a valid buffer outside"},
             {{"a/b/scene.gltf", text(g.dump(1))}, {"tri.bin", triangleBin()}});
     g["buffers"][0]["uri"] = "%2e%2e/%2e%2e/etc/passwd";
     w.gltf({"buffer_uri_percent_encoded_escape", "scene.gltf", E, "leaves the scene's folder",
-            "buffer URI %2e%2e/%2e%2e/etc/passwd"}, g);
+            "buffer URI %2e%2e/%2e%2e/etc/passwd"},
+           g);
     g["buffers"][0]["uri"] = "/etc/passwd";
     w.gltf({"buffer_uri_absolute", "scene.gltf", E, "absolute path", "buffer URI /etc/passwd"}, g);
     g["buffers"][0]["uri"] = "file:///etc/passwd";
     w.gltf({"buffer_uri_file_scheme", "scene.gltf", E, "has a scheme",
-            "buffer URI file:///etc/passwd"}, g);
+            "buffer URI file:///etc/passwd"},
+           g);
     g["buffers"][0]["uri"] = "data:application/octet-stream,AAAAAAAAAAAA";
     w.gltf({"buffer_data_uri_not_base64", "scene.gltf", E, "only base64 data URIs",
-            "a data URI without ;base64"}, g);
-    g["buffers"][0]["uri"] = "data:application/octet-stream;base64,!!!!****~~~~" + std::string(44, '@');
+            "a data URI without ;base64"},
+           g);
+    g["buffers"][0]["uri"] =
+        "data:application/octet-stream;base64,!!!!****~~~~" + std::string(44, '@');
     w.gltf({"buffer_data_uri_bad_base64", "scene.gltf", E, "not base64 at offset",
-            "a ;base64 data URI of characters outside the base64 alphabet"}, g);
+            "a ;base64 data URI of characters outside the base64 alphabet"},
+           g);
 }
 
 void textureCases(Writer& w) {
@@ -305,24 +323,31 @@ void textureCases(Writer& w) {
     json g = texturedTriangle(json::parse(R"([{"uri": "huge.png"}])"));
     w.files({"texture_100000x100000_header", "scene.gltf", E, "100000x100000, over the 16384 limit",
              "a 72-byte PNG whose header claims 100,000 x 100,000 (40 GB as RGBA8)"},
-            {{"scene.gltf", text(g.dump(1))}, {"tri.bin", triangleBin()},
+            {{"scene.gltf", text(g.dump(1))},
+             {"tri.bin", triangleBin()},
              {"huge.png", pngClaiming(100000, 100000)}});
     g = texturedTriangle(json::parse(R"([{"uri": "a.png"}, {"uri": "b.png"}])"));
     w.files({"textures_over_pixel_budget", "scene.gltf", E, "add up to",
              "two PNG headers of 16384 x 16384 each: 2^29 pixels together"},
-            {{"scene.gltf", text(g.dump(1))}, {"tri.bin", triangleBin()},
-             {"a.png", pngClaiming(16384, 16384)}, {"b.png", pngClaiming(16384, 16384)}});
+            {{"scene.gltf", text(g.dump(1))},
+             {"tri.bin", triangleBin()},
+             {"a.png", pngClaiming(16384, 16384)},
+             {"b.png", pngClaiming(16384, 16384)}});
     g = texturedTriangle(json::parse(R"([{"uri": "broken.png"}])"));
     w.files({"texture_header_lies", "scene.gltf", W, "cannot decode",
              "a 64 x 64 PNG header in front of bytes that are not its image"},
-            {{"scene.gltf", text(g.dump(1))}, {"tri.bin", triangleBin()},
+            {{"scene.gltf", text(g.dump(1))},
+             {"tri.bin", triangleBin()},
              {"broken.png", pngClaiming(64, 64)}});
     g = texturedTriangle(json::parse(R"([{"uri": "data:image/png;base64,%%%%"}])"));
-    w.gltf({"texture_data_uri_bad_base64", "scene.gltf", E, "image 0: the data URI holds a character",
-            "an image data URI of characters outside the base64 alphabet"}, g);
+    w.gltf({"texture_data_uri_bad_base64", "scene.gltf", E,
+            "image 0: the data URI holds a character",
+            "an image data URI of characters outside the base64 alphabet"},
+           g);
     g = texturedTriangle(json::parse(R"([{"uri": "data:image/webp;base64,AAAA"}])"));
     w.gltf({"texture_data_uri_unknown_type", "scene.gltf", W, "image 0",
-            "an image data URI of a type glTF does not allow (webp)"}, g);
+            "an image data URI of a type glTF does not allow (webp)"},
+           g);
 }
 
 void zeroFillCases(Writer& w) {
@@ -330,19 +355,22 @@ void zeroFillCases(Writer& w) {
     g["accessors"][0].erase("bufferView");
     g["accessors"][0]["count"] = 1 << 24;
     w.gltf({"zero_positions_2e24", "scene.gltf", E, "has no bufferView",
-            "POSITION of 2^24 zero vertices (no bufferView): 200 bytes asking for 192 MiB+"}, g);
+            "POSITION of 2^24 zero vertices (no bufferView): 200 bytes asking for 192 MiB+"},
+           g);
     g = triangleJson();
     g["accessors"][1].erase("bufferView");
     g["accessors"][1]["count"] = (1 << 20) + 3;
     // tinygltf refuses index accessors without a bufferView itself.
     w.gltf({"zero_indices", "scene.gltf", E, "accessor[1] invalid bufferView",
-            "an index accessor of 2^20+3 zeros"}, g);
+            "an index accessor of 2^20+3 zeros"},
+           g);
     g = triangleJson();
     g["accessors"].push_back({{"componentType", 5126}, {"count", 1 << 20}, {"type", "VEC3"}});
     g["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
     w.gltf({"zero_normals_count_mismatch", "scene.gltf", E,
             "NORMAL has 1048576 elements but POSITION has 3",
-            "NORMAL of 2^20 zeros on a 3-vertex primitive"}, g);
+            "NORMAL of 2^20 zeros on a 3-vertex primitive"},
+           g);
     // 2^20 zero vertices are allowed; 32 nodes showing them are 2^25 vertices.
     g = triangleJson();
     g["accessors"][0].erase("bufferView");
@@ -355,7 +383,8 @@ void zeroFillCases(Writer& w) {
         g["scenes"][0]["nodes"].push_back(i);
     }
     w.gltf({"instancing_bomb", "scene.gltf", E, "absurdly large",
-            "one mesh of 2^20 zero vertices on 32 nodes: 2^25 vertices placed"}, g);
+            "one mesh of 2^20 zero vertices on 32 nodes: 2^25 vertices placed"},
+           g);
 }
 
 void fileCases(Writer& w) {
@@ -373,8 +402,9 @@ void fileCases(Writer& w) {
     json g = triangleJson();
     g["extensionsUsed"] = {"EXT_made_up"};
     g["extensionsRequired"] = {"EXT_made_up"};
-    w.gltf({"required_extension_unsupported", "scene.gltf", E,
-            "requires extension EXT_made_up", "extensionsRequired: EXT_made_up"}, g);
+    w.gltf({"required_extension_unsupported", "scene.gltf", E, "requires extension EXT_made_up",
+            "extensionsRequired: EXT_made_up"},
+           g);
     g = triangleJson();
     g["asset"]["version"] = "1.0";
     w.gltf({"gltf_version_1", "scene.gltf", E, "only glTF 2.0", "asset.version 1.0"}, g);
@@ -391,7 +421,8 @@ void repairAndCompressedCases(Writer& w) {
         bin.resize(offset + values.size() * 4);
         std::memcpy(bin.data() + offset, values.data(), values.size() * 4);
         g["buffers"][0]["byteLength"] = bin.size();
-        g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
+        g["bufferViews"].push_back(
+            {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
         g["accessors"].push_back({{"bufferView", g["bufferViews"].size() - 1},
                                   {"componentType", 5126},
                                   {"count", 3},
@@ -403,18 +434,21 @@ void repairAndCompressedCases(Writer& w) {
     Bytes bin = triangleBin();
     withAttribute("NORMAL", "VEC3", {nan, 0, 1, 0, 0, 1, 0, 0, 0}, g, bin);
     w.gltf({"nan_normals", "scene.gltf", W, "repaired NORMAL accessor 2: 2 of 3",
-            "a NaN and a zero-length normal (repaired with the face normal)"}, g, bin);
+            "a NaN and a zero-length normal (repaired with the face normal)"},
+           g, bin);
     g = triangleJson();
     bin = triangleBin();
     withAttribute("TEXCOORD_0", "VEC2", {0, 0, inf, 1, 1, nan}, g, bin);
     withAttribute("TANGENT", "VEC4", {1, 0, 0, 1, nan, 0, 0, 1, 1, 0, 0, inf}, g, bin);
     w.gltf({"nan_uvs_and_tangents", "scene.gltf", W, "repaired TEXCOORD_0 accessor 2: 2 of 3",
-            "infinite and NaN uvs, NaN tangent xyz and infinite w (repaired)"}, g, bin);
+            "infinite and NaN uvs, NaN tangent xyz and infinite w (repaired)"},
+           g, bin);
     bin = triangleBin();
     const float position = nan;
     std::memcpy(bin.data() + 16, &position, 4);
     w.gltf({"nan_position", "scene.gltf", E, "POSITION accessor 0 holds a NaN",
-            "a NaN position (the geometry is unknowable: refused)"}, triangleJson(), bin);
+            "a NaN position (the geometry is unknowable: refused)"},
+           triangleJson(), bin);
 
     // 36 bytes of triangleBin()'s positions read as a Draco bitstream.
     g = triangleJson();
@@ -425,24 +459,34 @@ void repairAndCompressedCases(Writer& w) {
     g["extensionsUsed"] = {"KHR_draco_mesh_compression"};
     g["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     w.gltf({"draco_garbage", "scene.gltf", E, "KHR_draco_mesh_compression",
-            "a Draco primitive whose bitstream is 36 bytes of floats"}, g);
+            "a Draco primitive whose bitstream is 36 bytes of floats"},
+           g);
     bin = triangleBin();
     const char draco[] = "DRACO\x02\x02\x01\x01\x00";
     std::memcpy(bin.data(), draco, 10); // a valid header, then the floats: truncated
     w.gltf({"draco_truncated", "scene.gltf", E, "KHR_draco_mesh_compression",
-            "a Draco header (2.2, edgebreaker) followed by 26 bytes of floats"}, g, bin);
+            "a Draco header (2.2, edgebreaker) followed by 26 bytes of floats"},
+           g, bin);
 
     // The positions' view meshopt-compressed, its bytes the plain floats: not meshopt data.
     g = triangleJson();
-    g["buffers"].push_back({{"byteLength", 36}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
-    g["bufferViews"][0] = {{"buffer", 1}, {"byteLength", 36}, {"byteStride", 12},
-                           {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteLength", 36},
-                                                                         {"byteStride", 12}, {"count", 3},
-                                                                         {"mode", "ATTRIBUTES"}}}}}};
+    g["buffers"].push_back(
+        {{"byteLength", 36}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+    g["bufferViews"][0] = {{"buffer", 1},
+                           {"byteLength", 36},
+                           {"byteStride", 12},
+                           {"extensions",
+                            {{"EXT_meshopt_compression",
+                              {{"buffer", 0},
+                               {"byteLength", 36},
+                               {"byteStride", 12},
+                               {"count", 3},
+                               {"mode", "ATTRIBUTES"}}}}}};
     g["extensionsUsed"] = {"EXT_meshopt_compression"};
     g["extensionsRequired"] = {"EXT_meshopt_compression"};
     w.gltf({"meshopt_garbage", "scene.gltf", E, "EXT_meshopt_compression",
-            "a meshopt ATTRIBUTES view whose bytes are plain floats"}, g);
+            "a meshopt ATTRIBUTES view whose bytes are plain floats"},
+           g);
     // A valid meshopt triangle with a NaN normal: decoded, then repaired (a seed for the fuzzer).
     {
         json v = triangleJson();
@@ -452,24 +496,37 @@ void repairAndCompressedCases(Writer& w) {
         const size_t offset = b.size();
         b.insert(b.end(), encoded.begin(), encoded.end());
         v["buffers"][0]["byteLength"] = b.size();
-        v["buffers"].push_back({{"byteLength", 36}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
-        v["bufferViews"][0] = {{"buffer", 1}, {"byteLength", 36}, {"byteStride", 12},
-                               {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteOffset", offset},
-                                                                             {"byteLength", encoded.size()},
-                                                                             {"byteStride", 12}, {"count", 3},
-                                                                             {"mode", "ATTRIBUTES"}}}}}};
-        while (b.size() % 4) b.push_back(0);
+        v["buffers"].push_back(
+            {{"byteLength", 36},
+             {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+        v["bufferViews"][0] = {{"buffer", 1},
+                               {"byteLength", 36},
+                               {"byteStride", 12},
+                               {"extensions",
+                                {{"EXT_meshopt_compression",
+                                  {{"buffer", 0},
+                                   {"byteOffset", offset},
+                                   {"byteLength", encoded.size()},
+                                   {"byteStride", 12},
+                                   {"count", 3},
+                                   {"mode", "ATTRIBUTES"}}}}}};
+        while (b.size() % 4)
+            b.push_back(0);
         withAttribute("NORMAL", "VEC3", {0, 0, 1, nan, nan, nan, 0, 0, 1}, v, b);
         v["extensionsUsed"] = {"EXT_meshopt_compression"};
         v["extensionsRequired"] = {"EXT_meshopt_compression"};
-        v["buffers"][0]["uri"] = dataUri(b); // self-contained: every case's tri.bin is one file to the fuzzer
-        w.gltf({"meshopt_triangle_nan_normal", "scene.gltf", W, "repaired NORMAL accessor 2: 1 of 3",
-                "a meshopt-compressed triangle (valid) with a NaN normal"}, v, b);
+        v["buffers"][0]["uri"] =
+            dataUri(b); // self-contained: every case's tri.bin is one file to the fuzzer
+        w.gltf({"meshopt_triangle_nan_normal", "scene.gltf", W,
+                "repaired NORMAL accessor 2: 1 of 3",
+                "a meshopt-compressed triangle (valid) with a NaN normal"},
+               v, b);
     }
     g["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["count"] = 1 << 24;
     g["bufferViews"][0]["byteLength"] = 12 << 24;
     w.gltf({"meshopt_count_bomb", "scene.gltf", E, "cannot hold",
-            "a meshopt view of 36 compressed bytes declaring 2^24 vertices (192 MiB)"}, g);
+            "a meshopt view of 36 compressed bytes declaring 2^24 vertices (192 MiB)"},
+           g);
 }
 
 std::vector<Case> writeHostileScenes(const fs::path& root) {

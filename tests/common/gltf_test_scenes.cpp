@@ -40,10 +40,12 @@ struct Writer {
           "accessors": [], "bufferViews": [], "buffers": []})");
     }
     int view(const void* data, size_t size, int buffer = 0) {
-        while (bin.size() % 4) bin.push_back(0);
+        while (bin.size() % 4)
+            bin.push_back(0);
         const size_t offset = bin.size();
         bin.insert(bin.end(), (const uint8_t*)data, (const uint8_t*)data + size);
-        gltf["bufferViews"].push_back({{"buffer", buffer}, {"byteOffset", offset}, {"byteLength", size}});
+        gltf["bufferViews"].push_back(
+            {{"buffer", buffer}, {"byteOffset", offset}, {"byteLength", size}});
         return int(gltf["bufferViews"].size()) - 1;
     }
     int accessor(json a) {
@@ -53,8 +55,10 @@ struct Writer {
     json& primitive() { return gltf["meshes"][0]["primitives"][0]; }
     fs::path write(const fs::path& dir) {
         fs::create_directories(dir);
-        gltf["buffers"].insert(gltf["buffers"].begin(), json{{"uri", "scene.bin"}, {"byteLength", bin.size()}});
-        std::ofstream(dir / "scene.bin", std::ios::binary).write((const char*)bin.data(), std::streamsize(bin.size()));
+        gltf["buffers"].insert(gltf["buffers"].begin(),
+                               json{{"uri", "scene.bin"}, {"byteLength", bin.size()}});
+        std::ofstream(dir / "scene.bin", std::ios::binary)
+            .write((const char*)bin.data(), std::streamsize(bin.size()));
         // An 8 x 8 checker, red and white: where the texture transform shows.
         ImageRGBA checker(8, 8);
         for (uint32_t y = 0; y < 8; ++y)
@@ -65,7 +69,8 @@ struct Writer {
                 p[1] = p[2] = red ? 0.1f : 1.0f;
                 p[3] = 1.0f;
             }
-        if (Status s = writePng((dir / "checker.png").string(), checker); !s) throw std::runtime_error(s.error());
+        if (Status s = writePng((dir / "checker.png").string(), checker); !s)
+            throw std::runtime_error(s.error());
         const fs::path path = dir / "scene.gltf";
         std::ofstream(path) << gltf.dump(1);
         return path;
@@ -90,14 +95,16 @@ void addPlain(Writer& w, const TestMesh& m) {
     pos.update(minMax(m.positions));
     json& prim = w.primitive();
     prim["attributes"]["POSITION"] = w.accessor(pos);
-    prim["attributes"]["NORMAL"] = w.accessor({{"bufferView", w.view(m.normals.data(), m.normals.size() * 12)},
-                                               {"componentType", kFloat},
-                                               {"count", m.normals.size()},
-                                               {"type", "VEC3"}});
-    prim["attributes"]["TEXCOORD_0"] = w.accessor({{"bufferView", w.view(m.uvs.data(), m.uvs.size() * 8)},
-                                                   {"componentType", kFloat},
-                                                   {"count", m.uvs.size()},
-                                                   {"type", "VEC2"}});
+    prim["attributes"]["NORMAL"] =
+        w.accessor({{"bufferView", w.view(m.normals.data(), m.normals.size() * 12)},
+                    {"componentType", kFloat},
+                    {"count", m.normals.size()},
+                    {"type", "VEC3"}});
+    prim["attributes"]["TEXCOORD_0"] =
+        w.accessor({{"bufferView", w.view(m.uvs.data(), m.uvs.size() * 8)},
+                    {"componentType", kFloat},
+                    {"count", m.uvs.size()},
+                    {"type", "VEC2"}});
     prim["indices"] = w.accessor({{"bufferView", w.view(m.indices.data(), m.indices.size() * 4)},
                                   {"componentType", kUInt},
                                   {"count", m.indices.size()},
@@ -111,8 +118,10 @@ TestMesh makeTestMesh() {
     const int rings = 16, segments = 24;
     for (int r = 0; r <= rings; ++r)
         for (int s = 0; s <= segments; ++s) {
-            const float theta = float(M_PI) * float(r) / rings, phi = 2.0f * float(M_PI) * float(s) / segments;
-            glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            const float theta = float(M_PI) * float(r) / rings,
+                        phi = 2.0f * float(M_PI) * float(s) / segments;
+            glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                        std::sin(theta) * std::sin(phi));
             m.positions.push_back(n + glm::vec3(0, 1, 0));
             m.normals.push_back(n);
             m.uvs.push_back(glm::vec2(float(s) / segments, float(r) / rings));
@@ -141,7 +150,8 @@ fs::path writePlainScene(const fs::path& dir) {
 
 fs::path writeRepairScene(const fs::path& dir, RepairCounts& counts) {
     TestMesh m = makeTestMesh();
-    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN(),
+                inf = std::numeric_limits<float>::infinity();
     std::vector<glm::vec4> tangents(m.positions.size());
     for (size_t i = 0; i < m.positions.size(); ++i) {
         const glm::vec3 n = m.normals[i];
@@ -152,17 +162,22 @@ fs::path writeRepairScene(const fs::path& dir, RepairCounts& counts) {
     // Every 7th vertex a NaN normal, every 11th a zero one, every 5th a bad tangent, every 13th
     // a bad uv: as a broken exporter leaves them, scattered.
     for (size_t i = 0; i < m.positions.size(); ++i) {
-        if (i % 7 == 3) m.normals[i] = glm::vec3(nan, 0, 1), ++counts.nanNormals;
-        else if (i % 11 == 4) m.normals[i] = glm::vec3(0.0f), ++counts.zeroNormals;
-        if (i % 5 == 2) tangents[i] = i % 2 ? glm::vec4(inf, 0, 0, 1) : glm::vec4(0, 0, 0, 1), ++counts.badTangents;
+        if (i % 7 == 3)
+            m.normals[i] = glm::vec3(nan, 0, 1), ++counts.nanNormals;
+        else if (i % 11 == 4)
+            m.normals[i] = glm::vec3(0.0f), ++counts.zeroNormals;
+        if (i % 5 == 2)
+            tangents[i] = i % 2 ? glm::vec4(inf, 0, 0, 1) : glm::vec4(0, 0, 0, 1),
+            ++counts.badTangents;
         if (i % 13 == 6) m.uvs[i] = glm::vec2(nan, inf), ++counts.badUvs;
     }
     Writer w;
     addPlain(w, m);
-    w.primitive()["attributes"]["TANGENT"] = w.accessor({{"bufferView", w.view(tangents.data(), tangents.size() * 16)},
-                                                         {"componentType", kFloat},
-                                                         {"count", tangents.size()},
-                                                         {"type", "VEC4"}});
+    w.primitive()["attributes"]["TANGENT"] =
+        w.accessor({{"bufferView", w.view(tangents.data(), tangents.size() * 16)},
+                    {"componentType", kFloat},
+                    {"count", tangents.size()},
+                    {"type", "VEC4"}});
     return w.write(dir);
 }
 
@@ -173,10 +188,12 @@ fs::path writeDracoScene(const fs::path& dir) {
     mesh.set_num_points(uint32_t(n));
     auto add = [&](draco::GeometryAttribute::Type type, int comps, const float* data) {
         draco::GeometryAttribute ga;
-        ga.Init(type, nullptr, uint8_t(comps), draco::DT_FLOAT32, false, int64_t(sizeof(float)) * comps, 0);
+        ga.Init(type, nullptr, uint8_t(comps), draco::DT_FLOAT32, false,
+                int64_t(sizeof(float)) * comps, 0);
         const int id = mesh.AddAttribute(ga, true, uint32_t(n));
         for (size_t i = 0; i < n; ++i)
-            mesh.attribute(id)->SetAttributeValue(draco::AttributeValueIndex(uint32_t(i)), data + i * size_t(comps));
+            mesh.attribute(id)->SetAttributeValue(draco::AttributeValueIndex(uint32_t(i)),
+                                                  data + i * size_t(comps));
         return id;
     };
     const int pos = add(draco::GeometryAttribute::POSITION, 3, &m.positions[0].x);
@@ -190,7 +207,8 @@ fs::path writeDracoScene(const fs::path& dir) {
     encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, 12);
     encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, 14);
     draco::EncoderBuffer encoded;
-    if (!encoder.EncodeMeshToBuffer(mesh, &encoded).ok()) throw std::runtime_error("draco encoding failed");
+    if (!encoder.EncodeMeshToBuffer(mesh, &encoded).ok())
+        throw std::runtime_error("draco encoding failed");
     // The counts a real exporter writes: those of the decoded mesh (the encoder may split
     // or reorder vertices).
     draco::DecoderBuffer check;
@@ -228,15 +246,22 @@ fs::path writeMeshoptScene(const fs::path& dir) {
     Writer w;
     // Buffer 1: the fallback, with no bytes of its own (as gltfpack writes it).
     size_t fallbackLength = 0;
-    auto compressed = [&](const std::vector<uint8_t>& bytes, size_t count, size_t stride, const char* mode,
-                          const char* filter) {
+    auto compressed = [&](const std::vector<uint8_t>& bytes, size_t count, size_t stride,
+                          const char* mode, const char* filter) {
         const int v = w.view(bytes.data(), bytes.size());
         json& view = w.gltf["bufferViews"][size_t(v)];
-        json ext = {{"buffer", 0}, {"byteOffset", view["byteOffset"]}, {"byteLength", bytes.size()},
-                    {"byteStride", stride}, {"count", count}, {"mode", mode}};
+        json ext = {{"buffer", 0},
+                    {"byteOffset", view["byteOffset"]},
+                    {"byteLength", bytes.size()},
+                    {"byteStride", stride},
+                    {"count", count},
+                    {"mode", mode}};
         if (filter) ext["filter"] = filter;
-        while (fallbackLength % 4) ++fallbackLength;
-        view = {{"buffer", 1}, {"byteOffset", fallbackLength}, {"byteLength", count * stride},
+        while (fallbackLength % 4)
+            ++fallbackLength;
+        view = {{"buffer", 1},
+                {"byteOffset", fallbackLength},
+                {"byteLength", count * stride},
                 {"extensions", {{"EXT_meshopt_compression", ext}}}};
         if (std::string(mode) == "ATTRIBUTES") view["byteStride"] = stride;
         fallbackLength += count * stride;
@@ -249,13 +274,16 @@ fs::path writeMeshoptScene(const fs::path& dir) {
     };
     // Octahedral normals in 8 bits (stride 4, w = 0).
     std::vector<float> normals4(n * 4, 0.0f);
-    for (size_t i = 0; i < n; ++i) std::memcpy(&normals4[i * 4], &m.normals[i], 12);
+    for (size_t i = 0; i < n; ++i)
+        std::memcpy(&normals4[i * 4], &m.normals[i], 12);
     std::vector<int8_t> octahedral(n * 4);
     meshopt_encodeFilterOct(octahedral.data(), n, 4, 8, normals4.data());
     std::vector<uint8_t> indices(meshopt_encodeIndexBufferBound(m.indices.size(), n));
-    indices.resize(meshopt_encodeIndexBuffer(indices.data(), indices.size(), m.indices.data(), m.indices.size()));
+    indices.resize(meshopt_encodeIndexBuffer(indices.data(), indices.size(), m.indices.data(),
+                                             m.indices.size()));
 
-    json pos = {{"bufferView", compressed(encodeVertices(m.positions.data(), 12), n, 12, "ATTRIBUTES", nullptr)},
+    json pos = {{"bufferView",
+                 compressed(encodeVertices(m.positions.data(), 12), n, 12, "ATTRIBUTES", nullptr)},
                 {"componentType", kFloat},
                 {"count", n},
                 {"type", "VEC3"}};
@@ -263,22 +291,25 @@ fs::path writeMeshoptScene(const fs::path& dir) {
     json& prim = w.primitive();
     prim["attributes"]["POSITION"] = w.accessor(pos);
     prim["attributes"]["NORMAL"] =
-        w.accessor({{"bufferView", compressed(encodeVertices(octahedral.data(), 4), n, 4, "ATTRIBUTES", "OCTAHEDRAL")},
+        w.accessor({{"bufferView", compressed(encodeVertices(octahedral.data(), 4), n, 4,
+                                              "ATTRIBUTES", "OCTAHEDRAL")},
                     {"componentType", kByte},
                     {"normalized", true},
                     {"count", n},
                     {"type", "VEC3"}});
-    prim["attributes"]["TEXCOORD_0"] =
-        w.accessor({{"bufferView", compressed(encodeVertices(m.uvs.data(), 8), n, 8, "ATTRIBUTES", nullptr)},
-                    {"componentType", kFloat},
-                    {"count", n},
-                    {"type", "VEC2"}});
-    prim["indices"] = w.accessor({{"bufferView", compressed(indices, m.indices.size(), 4, "TRIANGLES", nullptr)},
-                                  {"componentType", kUInt},
-                                  {"count", m.indices.size()},
-                                  {"type", "SCALAR"}});
-    w.gltf["buffers"].push_back({{"byteLength", fallbackLength},
-                                 {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+    prim["attributes"]["TEXCOORD_0"] = w.accessor(
+        {{"bufferView", compressed(encodeVertices(m.uvs.data(), 8), n, 8, "ATTRIBUTES", nullptr)},
+         {"componentType", kFloat},
+         {"count", n},
+         {"type", "VEC2"}});
+    prim["indices"] =
+        w.accessor({{"bufferView", compressed(indices, m.indices.size(), 4, "TRIANGLES", nullptr)},
+                    {"componentType", kUInt},
+                    {"count", m.indices.size()},
+                    {"type", "SCALAR"}});
+    w.gltf["buffers"].push_back(
+        {{"byteLength", fallbackLength},
+         {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
     w.gltf["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_mesh_quantization"};
     w.gltf["extensionsRequired"] = {"EXT_meshopt_compression", "KHR_mesh_quantization"};
     return w.write(dir);
@@ -287,7 +318,8 @@ fs::path writeMeshoptScene(const fs::path& dir) {
 fs::path writeTextureTransformScene(const fs::path& dir) {
     Writer w;
     addPlain(w, makeTestMesh());
-    w.gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+    w.gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
+          ["KHR_texture_transform"] = {
         {"offset", {0.5, 0}}, {"rotation", M_PI / 2}, {"scale", {2, 1}}};
     w.gltf["extensionsUsed"] = {"KHR_texture_transform"};
     return w.write(dir);

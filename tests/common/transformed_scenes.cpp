@@ -23,7 +23,8 @@ LocalMesh quadGrid(uint32_t n, glm::vec3 offset) {
     LocalMesh m;
     for (uint32_t j = 0; j <= n; ++j)
         for (uint32_t i = 0; i <= n; ++i) {
-            m.positions.push_back(glm::vec3(float(i) / float(n), float(j) / float(n), 0.0f) + offset);
+            m.positions.push_back(glm::vec3(float(i) / float(n), float(j) / float(n), 0.0f) +
+                                  offset);
             m.normals.push_back({0, 0, 1});
         }
     for (uint32_t j = 0; j < n; ++j)
@@ -57,7 +58,8 @@ struct Bin {
     std::vector<uint8_t> bytes;
     json views = json::array(), accessors = json::array();
     int add(const void* data, size_t size, json accessor) {
-        while (bytes.size() % 4) bytes.push_back(0);
+        while (bytes.size() % 4)
+            bytes.push_back(0);
         views.push_back({{"buffer", 0}, {"byteOffset", bytes.size()}, {"byteLength", size}});
         bytes.insert(bytes.end(), (const uint8_t*)data, (const uint8_t*)data + size);
         accessor["bufferView"] = views.size() - 1;
@@ -68,54 +70,69 @@ struct Bin {
 
 json meshJson(Bin& bin, const LocalMesh& m, int material) {
     glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const glm::vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const glm::vec3& p : m.positions)
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
     json attributes = {
         {"POSITION", bin.add(m.positions.data(), m.positions.size() * 12,
-                             {{"componentType", 5126}, {"count", m.positions.size()}, {"type", "VEC3"},
-                              {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}})},
-        {"NORMAL", bin.add(m.normals.data(), m.normals.size() * 12,
-                           {{"componentType", 5126}, {"count", m.normals.size()}, {"type", "VEC3"}})}};
-    const int indices = bin.add(m.indices.data(), m.indices.size() * 4,
-                                {{"componentType", 5125}, {"count", m.indices.size()}, {"type", "SCALAR"}});
-    return {{"primitives", {{{"attributes", attributes}, {"indices", indices}, {"material", material}}}}};
+                             {{"componentType", 5126},
+                              {"count", m.positions.size()},
+                              {"type", "VEC3"},
+                              {"min", {lo.x, lo.y, lo.z}},
+                              {"max", {hi.x, hi.y, hi.z}}})},
+        {"NORMAL",
+         bin.add(m.normals.data(), m.normals.size() * 12,
+                 {{"componentType", 5126}, {"count", m.normals.size()}, {"type", "VEC3"}})}};
+    const int indices =
+        bin.add(m.indices.data(), m.indices.size() * 4,
+                {{"componentType", 5125}, {"count", m.indices.size()}, {"type", "SCALAR"}});
+    return {{"primitives",
+             {{{"attributes", attributes}, {"indices", indices}, {"material", material}}}}};
 }
 
 } // namespace
 
-fs::path writeTransformedNodesScene(const fs::path& dir, uint32_t seed, uint32_t nodes, bool blended) {
+fs::path writeTransformedNodesScene(const fs::path& dir, uint32_t seed, uint32_t nodes,
+                                    bool blended) {
     std::mt19937 rng(seed);
     auto uni = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
     Bin bin;
     json meshes = json::array(), nodeList = json::array(), children = json::array();
     for (uint32_t i = 0; i < nodes; ++i) {
-        const glm::vec3 offset(uni(0.5f, 2.5f), uni(-1.5f, 1.0f), uni(-1.0f, 1.0f)); // off the node's origin
+        const glm::vec3 offset(uni(0.5f, 2.5f), uni(-1.5f, 1.0f),
+                               uni(-1.0f, 1.0f)); // off the node's origin
         const int material = blended && i % 3 == 2 ? 1 : 0;
         meshes.push_back(meshJson(bin, i % 2 ? box(offset) : quadGrid(2, offset), material));
         // Every node mirrored (one or three negative axes), the scales unequal.
         glm::vec3 scale(uni(0.4f, 1.6f), uni(0.4f, 1.6f), uni(0.4f, 1.6f));
         scale[i % 3] = -scale[i % 3];
         if (i % 4 == 3) scale = -scale;
-        const glm::quat q = glm::normalize(glm::quat(uni(-1, 1), uni(-1, 1), uni(-1, 1), uni(-1, 1)));
-        nodeList.push_back({{"mesh", i},
-                            {"scale", {scale.x, scale.y, scale.z}},
-                            {"rotation", {q.x, q.y, q.z, q.w}},
-                            {"translation", {uni(-2.5f, 2.5f), uni(-1.5f, 1.5f), uni(-2.5f, 2.5f)}}});
+        const glm::quat q =
+            glm::normalize(glm::quat(uni(-1, 1), uni(-1, 1), uni(-1, 1), uni(-1, 1)));
+        nodeList.push_back(
+            {{"mesh", i},
+             {"scale", {scale.x, scale.y, scale.z}},
+             {"rotation", {q.x, q.y, q.z, q.w}},
+             {"translation", {uni(-2.5f, 2.5f), uni(-1.5f, 1.5f), uni(-2.5f, 2.5f)}}});
         children.push_back(i);
     }
     // The parent mirrors and stretches everything once more (the world matrix is a product).
-    nodeList.push_back({{"children", children}, {"scale", {-1.0, 1.25, 0.8}}, {"translation", {0.5, 0.0, -0.5}}});
+    nodeList.push_back(
+        {{"children", children}, {"scale", {-1.0, 1.25, 0.8}}, {"translation", {0.5, 0.0, -0.5}}});
     json gltf = {{"asset", {{"version", "2.0"}, {"generator", "triptych tests"}}},
                  {"scene", 0},
                  {"scenes", {{{"nodes", {nodes}}}}},
                  {"nodes", nodeList},
                  {"meshes", meshes},
-                 {"materials", {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}},
-                                                            {"metallicFactor", 0.0},
-                                                            {"roughnessFactor", 0.5}}}},
-                                {{"pbrMetallicRoughness", {{"baseColorFactor", {0.3, 0.6, 0.9, 0.5}},
-                                                           {"metallicFactor", 0.0},
-                                                           {"roughnessFactor", 0.3}}},
-                                 {"alphaMode", "BLEND"}}}},
+                 {"materials",
+                  {{{"pbrMetallicRoughness",
+                     {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}},
+                      {"metallicFactor", 0.0},
+                      {"roughnessFactor", 0.5}}}},
+                   {{"pbrMetallicRoughness",
+                     {{"baseColorFactor", {0.3, 0.6, 0.9, 0.5}},
+                      {"metallicFactor", 0.0},
+                      {"roughnessFactor", 0.3}}},
+                    {"alphaMode", "BLEND"}}}},
                  {"accessors", bin.accessors},
                  {"bufferViews", bin.views},
                  {"buffers", {{{"uri", "scene.bin"}, {"byteLength", bin.bytes.size()}}}}};
@@ -137,8 +154,10 @@ std::vector<Light> lightsGrazingSurfaces(const Scene& scene, uint32_t count, uin
                         c = m.positions[m.indices[t + 2]];
         // Near a corner (both other weights small) or on an edge (one weight 0).
         float u = uni(0, 1), v = uni(0, 1);
-        if (rng() % 2) u *= 0.05f, v *= 0.05f;
-        else v = 0;
+        if (rng() % 2)
+            u *= 0.05f, v *= 0.05f;
+        else
+            v = 0;
         if (u + v > 1) u = 1 - u, v = 1 - v;
         const glm::vec3 p = a + u * (b - a) + v * (c - a);
         glm::vec3 dir(uni(-1, 1), uni(-1, 1), uni(-1, 1));

@@ -17,7 +17,8 @@ ImageRGBA grey(std::initializer_list<float> v) {
     ImageRGBA img(uint32_t(v.size()), 1);
     size_t i = 0;
     for (float x : v) {
-        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = x;
+        for (int c = 0; c < 3; ++c)
+            img.rgba[i * 4 + c] = x;
         img.rgba[i * 4 + 3] = 1.0f;
         ++i;
     }
@@ -31,10 +32,13 @@ ErrorBound withAllowance(std::initializer_list<float> a) {
     return b;
 }
 
-double t(float x) { return gpu::tonemap(gpu::vec3(x), kEv).x; }
+double t(float x) {
+    return gpu::tonemap(gpu::vec3(x), kEv).x;
+}
 
 TEST(AllowanceCheck, WithoutAllowanceItIsThePlainTonemappedMax) {
-    const AllowanceCheck r = errorBeyondAllowance(ErrorBound{}, grey({0.5f, 1.3f}), grey({0.5f, 1.0f}), kEv);
+    const AllowanceCheck r =
+        errorBeyondAllowance(ErrorBound{}, grey({0.5f, 1.3f}), grey({0.5f, 1.0f}), kEv);
     EXPECT_DOUBLE_EQ(r.worstBeyond, t(1.3f) - t(1.0f));
     EXPECT_EQ(r.widenedPixels, 0u);
     EXPECT_EQ(r.unboundedPixels, 0u);
@@ -54,8 +58,8 @@ TEST(AllowanceCheck, TheAllowanceExplainsItsOwnSizeOnEitherSide) {
 
 TEST(AllowanceCheck, InfiniteAllowancesAreCountedAndLeftOut) {
     const float inf = std::numeric_limits<float>::infinity();
-    const AllowanceCheck r =
-        errorBeyondAllowance(withAllowance({inf, 0.0f}), grey({100.0f, 1.0f}), grey({1.0f, 1.0f}), kEv);
+    const AllowanceCheck r = errorBeyondAllowance(withAllowance({inf, 0.0f}), grey({100.0f, 1.0f}),
+                                                  grey({1.0f, 1.0f}), kEv);
     EXPECT_EQ(r.unboundedPixels, 1u);
     EXPECT_EQ(r.widenedPixels, 0u);
     EXPECT_EQ(r.worstBeyond, 0.0);

@@ -39,7 +39,9 @@ void expectSame(const Camera& a, const Camera& b) {
     EXPECT_EQ(a.zfar, b.zfar);
 }
 
-json validJson() { return cameraToJson(oddCamera()); }
+json validJson() {
+    return cameraToJson(oddCamera());
+}
 
 // The error for `j`, which must be one line naming `where` and containing `expected`.
 void expectRefused(const json& j, const std::string& expected) {
@@ -66,7 +68,8 @@ TEST(CameraFile, JsonRoundTripIsExact) {
 // numbers are written as short as that allows (1.8, not 1.7999999523162842).
 TEST(CameraFile, RoundTripIsExactForManyCameras) {
     uint64_t state = 12345;
-    auto next = [&state](float lo, float hi) { // splitmix64, as lights.cpp: the same numbers everywhere
+    auto next = [&state](float lo,
+                         float hi) { // splitmix64, as lights.cpp: the same numbers everywhere
         uint64_t z = (state += 0x9E3779B97F4A7C15ull);
         z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
         z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
@@ -116,7 +119,8 @@ TEST(CameraFile, FileRoundTrip) {
 
 TEST(CameraFile, RefusesBadStructure) {
     expectRefused(json::array({1, 2}), "must be a JSON object");
-    for (const char* key : {"schema", "position", "target", "up", "yfov_degrees", "znear", "zfar"}) {
+    for (const char* key :
+         {"schema", "position", "target", "up", "yfov_degrees", "znear", "zfar"}) {
         json j = validJson();
         j.erase(key);
         expectRefused(j, std::string("missing \"") + key + "\"");
@@ -141,8 +145,10 @@ TEST(CameraFile, RefusesBadNumbers) {
         j[key] = std::move(value);
         return j;
     };
-    expectRefused(with("position", json::array({0, 0})), "\"position\" must be an array of 3 finite numbers");
-    expectRefused(with("target", json::array({0, "1", 0})), "\"target\" must be an array of 3 finite");
+    expectRefused(with("position", json::array({0, 0})),
+                  "\"position\" must be an array of 3 finite numbers");
+    expectRefused(with("target", json::array({0, "1", 0})),
+                  "\"target\" must be an array of 3 finite");
     expectRefused(with("up", json::array({0, 1e300, 0})), "\"up\" must be an array of 3 finite");
     expectRefused(with("up", json::array({0, NAN, 0})), "\"up\" must be an array of 3 finite");
     expectRefused(with("position", 3), "\"position\" must be an array");
@@ -198,12 +204,15 @@ TEST(CameraFile, RefusesCamerasWhoseMatricesOverflow) {
     };
     expectRefused(with("position", json::array({3e38, 3e38, 3e38})),
                   "\"position\" is too far from the origin: the view matrix overflows fp32");
-    expectRefused(with("yfov_degrees", 1e-40), "\"yfov_degrees\" 1e-40 is too small: the projection overflows fp32");
-    expectRefused(with("yfov_degrees", 179.99999999),
-                  "\"yfov_degrees\" 179.99999999 is too close to 180: the projection turns over in fp32");
+    expectRefused(with("yfov_degrees", 1e-40),
+                  "\"yfov_degrees\" 1e-40 is too small: the projection overflows fp32");
+    expectRefused(
+        with("yfov_degrees", 179.99999999),
+        "\"yfov_degrees\" 179.99999999 is too close to 180: the projection turns over in fp32");
     json depth = with("znear", 1e20);
     depth["zfar"] = 2e20;
-    expectRefused(depth, "\"znear\" 1e+20 and \"zfar\" 2e+20 overflow the projection's depth terms in fp32");
+    expectRefused(
+        depth, "\"znear\" 1e+20 and \"zfar\" 2e+20 overflow the projection's depth terms in fp32");
     depth["zfar"] = 0; // infinite far plane: znear alone is fine
     EXPECT_TRUE(cameraFromJson(depth, "x").ok());
     // Far, but not near fp32's limit: still a camera.

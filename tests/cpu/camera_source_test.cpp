@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/cli/scene_input.h"
 #include "compare/report_html.h"
+#include "core/cli/scene_input.h"
 #include "core/render/camera_file.h"
 #include "core/scene/gltf_loader.h"
 
@@ -22,7 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path tempPath(const std::string& name) {
-    return fs::temp_directory_path() / ("triptych_camera_source_" + std::to_string(getpid()) + "_" + name);
+    return fs::temp_directory_path() /
+           ("triptych_camera_source_" + std::to_string(getpid()) + "_" + name);
 }
 
 // One triangle (its buffer a data: URI), and `cameras` on nodes after the mesh's node.
@@ -30,10 +31,17 @@ fs::path writeTriangle(const std::string& name, const json& cameras, const json&
     const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     const std::string bytes(reinterpret_cast<const char*>(positions), sizeof positions);
     json g = {{"asset", {{"version", "2.0"}}},
-              {"buffers", {{{"byteLength", 36}, {"uri", "data:application/octet-stream;base64," + cli::base64(bytes)}}}},
+              {"buffers",
+               {{{"byteLength", 36},
+                 {"uri", "data:application/octet-stream;base64," + cli::base64(bytes)}}}},
               {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
-              {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-                              {"min", {0, 0, 0}}, {"max", {1, 1, 0}}}}},
+              {"accessors",
+               {{{"bufferView", 0},
+                 {"componentType", 5126},
+                 {"count", 3},
+                 {"type", "VEC3"},
+                 {"min", {0, 0, 0}},
+                 {"max", {1, 1, 0}}}}},
               {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
               {"nodes", {{{"mesh", 0}}}},
               {"scenes", {{{"nodes", {0}}}}}};
@@ -48,7 +56,8 @@ fs::path writeTriangle(const std::string& name, const json& cameras, const json&
 }
 
 json twoCameras() { // the loader takes perspective cameras only: index 1 is the one
-    return json::parse(R"([{"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}},
+    return json::parse(
+        R"([{"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}},
                             {"type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.01}}])");
 }
 
@@ -81,7 +90,9 @@ TEST(CameraSource, LoadSceneRecordsWhereTheCameraCameFrom) {
     const Camera builtin = cli::loadScene(o, &source).camera;
     EXPECT_EQ(source.kind, "scene");
 
-    o.scene = writeTriangle("gltf", twoCameras(), json::parse(R"([{"translation": [0, 0, 3], "camera": 1}])")).string();
+    o.scene = writeTriangle("gltf", twoCameras(),
+                            json::parse(R"([{"translation": [0, 0, 3], "camera": 1}])"))
+                  .string();
     cli::loadScene(o, &source);
     EXPECT_EQ(source.kind, "gltf");
     EXPECT_EQ(source.gltfCamera, 1);
@@ -107,5 +118,6 @@ TEST(CameraSource, LoadSceneRecordsWhereTheCameraCameFrom) {
     }
     std::ofstream(o.cameraFile) << R"({"schema":"triptych.camera/1"})";
     EXPECT_THROW(cli::loadScene(o, &source), cli::UsageError);
-    for (const std::string& f : {gltf, framed, o.cameraFile}) fs::remove(f);
+    for (const std::string& f : {gltf, framed, o.cameraFile})
+        fs::remove(f);
 }

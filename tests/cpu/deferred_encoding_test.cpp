@@ -42,7 +42,8 @@ TEST(DeferredEncoding, OctahedralRoundTripWithinBoundOverManyDirections) {
 
 TEST(DeferredEncoding, AxisNormalsRoundTripExactly) {
     // Why SNORM: 0 and +-1 are exact, so the normals of floors and walls do not move.
-    for (vec3 n : {vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1)}) {
+    for (vec3 n : {vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0), vec3(0, 0, 1),
+                   vec3(0, 0, -1)}) {
         vec3 r = roundTripSnorm16(n);
         EXPECT_EQ(r.x, n.x);
         EXPECT_EQ(r.y, n.y);

@@ -23,7 +23,8 @@ namespace {
 ImageRGBA uniform(uint32_t w, uint32_t h, float v) {
     ImageRGBA image(w, h);
     for (size_t i = 0; i < image.pixelCount(); ++i)
-        for (int c = 0; c < 4; ++c) image.rgba[i * 4 + size_t(c)] = c == 3 ? 1.0f : v;
+        for (int c = 0; c < 4; ++c)
+            image.rgba[i * 4 + size_t(c)] = c == 3 ? 1.0f : v;
     return image;
 }
 
@@ -98,7 +99,8 @@ TEST(Flip, FiltersIntegrateToOne) {
         double weightSum = 0.0, kernel2d = 0.0;
         for (size_t i = 0; i < f->gaussians.size(); ++i) {
             double sum = 0.0;
-            for (float t : f->gaussians[i].taps) sum += t;
+            for (float t : f->gaussians[i].taps)
+                sum += t;
             EXPECT_NEAR(sum, 1.0, 1e-6);
             weightSum += f->weights[i];
             kernel2d += f->weights[i] * sum * sum; // the 2D kernel: sum_i w_i g_i(x) g_i(y)
@@ -111,11 +113,13 @@ TEST(Flip, FiltersIntegrateToOne) {
     const flip::FeatureFilters feat = flip::makeFeatureFilters(ppd);
     EXPECT_EQ(feat.gaussian.radius, 9); // sigma = 0.5 * 0.082 * 67.02 = 2.75, ceil(3 sigma)
     double g = 0.0;
-    for (float t : feat.gaussian.taps) g += t;
+    for (float t : feat.gaussian.taps)
+        g += t;
     EXPECT_NEAR(g, 1.0, 1e-6);
     for (const flip::Kernel* k : {&feat.firstDerivative, &feat.secondDerivative}) {
         double positive = 0.0, negative = 0.0;
-        for (float t : k->taps) (t > 0 ? positive : negative) += t;
+        for (float t : k->taps)
+            (t > 0 ? positive : negative) += t;
         EXPECT_NEAR(positive, 1.0, 1e-6);
         EXPECT_NEAR(negative, -1.0, 1e-6);
     }
@@ -137,7 +141,8 @@ TEST(Flip, PoolingOnHandComputedMap) {
 TEST(Flip, TonemapperAndExposures) {
     EXPECT_EQ(flipTonemapAces(0.0f), 0.0f);
     EXPECT_EQ(flipTonemapAces(1e6f), 1.0f);
-    for (float x = 0.01f; x < 10.0f; x *= 1.5f) EXPECT_LT(flipTonemapAces(x), flipTonemapAces(1.5f * x));
+    for (float x = 0.01f; x < 10.0f; x *= 1.5f)
+        EXPECT_LT(flipTonemapAces(x), flipTonemapAces(1.5f * x));
     // Constant luminance 1: max = median, so start = stop = log2(x) where x tonemaps to 0.85,
     // and two exposures (the minimum).
     FlipExposures e = flipAutoExposures(uniform(8, 8, 1.0f));
@@ -150,12 +155,14 @@ TEST(Flip, IdenticalImagesGiveExactlyZero) {
     const ImageRGBA image = pattern(64, 48, 1.0f);
     FlipResult ldr = ldrFlip(image, image, flipPixelsPerDegree());
     ASSERT_EQ(ldr.map.r.size(), image.pixelCount());
-    for (float v : ldr.map.r) ASSERT_EQ(v, 0.0f);
+    for (float v : ldr.map.r)
+        ASSERT_EQ(v, 0.0f);
     EXPECT_EQ(ldr.stats.mean, 0.0);
     EXPECT_EQ(ldr.stats.max, 0.0);
     const ImageRGBA hdr = pattern(64, 48, 20.0f);
     FlipResult h = hdrFlip(hdr, hdr, flipPixelsPerDegree());
-    for (float v : h.map.r) ASSERT_EQ(v, 0.0f);
+    for (float v : h.map.r)
+        ASSERT_EQ(v, 0.0f);
     EXPECT_EQ(h.stats.max, 0.0);
 }
 
@@ -229,7 +236,9 @@ namespace {
 
 const std::string kFlipData = TP_SHARED_FLIP;
 
-bool haveFlipData() { return std::filesystem::exists(kFlipData + "/MANIFEST.txt"); }
+bool haveFlipData() {
+    return std::filesystem::exists(kFlipData + "/MANIFEST.txt");
+}
 
 struct Published {
     double mean, median, q1, q3, min, max;
@@ -255,7 +264,8 @@ TEST(FlipCrossCheck, LdrCropPairMatchesReferenceTool) {
     ASSERT_TRUE(ref) << ref.error();
     ASSERT_TRUE(test) << test.error();
     FlipResult r = ldrFlip(*test, *ref, flipPixelsPerDegree());
-    expectPooled(r.stats, {0.067184024, 0.080972515, 0.055151936, 0.124855176, 0.000585206, 0.618490040});
+    expectPooled(r.stats,
+                 {0.067184024, 0.080972515, 0.055151936, 0.124855176, 0.000585206, 0.618490040});
 }
 
 TEST(FlipCrossCheck, HdrCropPairMatchesReferenceTool) {
@@ -269,7 +279,8 @@ TEST(FlipCrossCheck, HdrCropPairMatchesReferenceTool) {
     EXPECT_NEAR(r.exposures.start, -4.1028943f, 1e-5f);
     EXPECT_NEAR(r.exposures.stop, 5.0382185f, 1e-5f);
     EXPECT_EQ(r.exposures.count, 10);
-    expectPooled(r.stats, {0.179226205, 0.272096336, 0.223617271, 0.318868250, 0.000497353, 0.724949777});
+    expectPooled(r.stats,
+                 {0.179226205, 0.272096336, 0.223617271, 0.318868250, 0.000497353, 0.724949777});
 }
 
 TEST(FlipCrossCheck, IdenticalReferenceImageIsZero) {

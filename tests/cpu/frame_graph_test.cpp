@@ -14,7 +14,8 @@ namespace {
 
 std::vector<std::string> liveNames(const GraphDecl& g, const GraphPlan& plan) {
     std::vector<std::string> out;
-    for (const PlannedPass& p : plan.passes) out.push_back(g.passes()[p.pass].name);
+    for (const PlannedPass& p : plan.passes)
+        out.push_back(g.passes()[p.pass].name);
     return out;
 }
 
@@ -34,7 +35,8 @@ TEST(FrameGraphPlan, CullsPassesWhoseOutputsNobodyReads) {
                    debug = g.addResource("debug", true);
     g.addPass("shade", {{hdr, Use::ColorAttachment}});
     g.addPass("stats", {{hdr, Use::Sampled}, {stats, Use::StorageWrite}});
-    g.addPass("debug_view", {{stats, Use::StorageRead}, {debug, Use::StorageWrite}}); // end of a culled chain
+    g.addPass("debug_view",
+              {{stats, Use::StorageRead}, {debug, Use::StorageWrite}}); // end of a culled chain
     g.exportResource("hdr", hdr);
     GraphPlan plan = g.plan();
     EXPECT_EQ(liveNames(g, plan), std::vector<std::string>{"shade"});
@@ -51,15 +53,18 @@ TEST(FrameGraphPlan, KeepsAChainThatAnExportNeedsAndItsDeclarationOrder) {
     g.addPass("prepass", {{depth, Use::DepthAttachment}});
     g.addPass("unused_pass", {{unused, Use::ColorAttachment}});
     g.addPass("culling", {{depth, Use::Sampled}, {lists, Use::StorageWrite}});
-    g.addPass("shading", {{hdr, Use::ColorAttachment}, {depth, Use::DepthTest}, {lists, Use::StorageRead}});
+    g.addPass("shading",
+              {{hdr, Use::ColorAttachment}, {depth, Use::DepthTest}, {lists, Use::StorageRead}});
     g.exportResource("hdr", hdr);
     GraphPlan plan = g.plan();
     EXPECT_EQ(liveNames(g, plan), (std::vector<std::string>{"prepass", "culling", "shading"}));
     EXPECT_EQ(plan.resources[lists.index].firstWriter, "culling");
     EXPECT_EQ(plan.resources[depth.index].imageUsage,
-              VkImageUsageFlags(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT));
-    EXPECT_EQ(plan.resources[hdr.index].imageUsage,
-              VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT));
+              VkImageUsageFlags(VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                VK_IMAGE_USAGE_SAMPLED_BIT));
+    EXPECT_EQ(
+        plan.resources[hdr.index].imageUsage,
+        VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT));
 }
 
 TEST(FrameGraphPlan, AttachmentWriteThenSampledReadGivesTheExpectedBarriers) {
@@ -86,8 +91,10 @@ TEST(FrameGraphPlan, AttachmentWriteThenSampledReadGivesTheExpectedBarriers) {
     EXPECT_EQ(read.oldLayout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     EXPECT_EQ(read.newLayout, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     EXPECT_EQ(read.srcStages, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT);
-    EXPECT_EQ(read.srcAccess, VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    EXPECT_EQ(read.dstStages, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    EXPECT_EQ(read.srcAccess,
+              VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    EXPECT_EQ(read.dstStages,
+              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
     EXPECT_EQ(read.dstAccess, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     EXPECT_EQ(plan.passes[1].barriers[1].newLayout, VK_IMAGE_LAYOUT_GENERAL);
 
@@ -120,7 +127,7 @@ TEST(FrameGraphPlan, ReadAfterReadNeedsNoBarrierButTheNextWriteWaitsForBothReade
     EXPECT_FALSE(barriersOn(1, lists)[0].image);
     EXPECT_EQ(barriersOn(1, lists)[0].srcAccess,
               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    EXPECT_TRUE(barriersOn(2, lists).empty()); // read -> read
+    EXPECT_TRUE(barriersOn(2, lists).empty());  // read -> read
     ASSERT_EQ(barriersOn(3, lists).size(), 1u); // read -> write: an execution dependency only
     EXPECT_EQ(barriersOn(3, lists)[0].srcAccess, VkAccessFlags2(0));
     EXPECT_EQ(barriersOn(3, lists)[0].dstStages, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
@@ -135,8 +142,10 @@ TEST(FrameGraphPlan, DepthTestAfterASampledReadGetsAChainedBarrier) {
                    hdr = g.addResource("hdr", true);
     g.addPass("prepass", {{depth, Use::DepthAttachment}});
     g.addPass("culling", {{depth, Use::Sampled, 0}, {lists, Use::StorageWrite, 1}});
-    g.addPass("shading", {{depth, Use::DepthTest}, {lists, Use::StorageRead, 0}, {hdr, Use::ColorAttachment}});
-    g.addPass("again", {{depth, Use::DepthTest}, {lists, Use::StorageRead, 0}, {hdr, Use::ColorAttachment}});
+    g.addPass("shading",
+              {{depth, Use::DepthTest}, {lists, Use::StorageRead, 0}, {hdr, Use::ColorAttachment}});
+    g.addPass("again",
+              {{depth, Use::DepthTest}, {lists, Use::StorageRead, 0}, {hdr, Use::ColorAttachment}});
     g.exportResource("hdr", hdr);
     g.exportResource("depth", depth);
     GraphPlan plan = g.plan();
@@ -152,8 +161,9 @@ TEST(FrameGraphPlan, DepthTestAfterASampledReadGetsAChainedBarrier) {
     const PlanBarrier chained = onDepth(2)[0];
     EXPECT_EQ(chained.oldLayout, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     EXPECT_EQ(chained.newLayout, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
-    EXPECT_EQ(chained.srcStages, onDepth(1)[0].dstStages); // starts where the sampling barrier ended
-    EXPECT_EQ(chained.srcAccess, VkAccessFlags2(0));       // the writes are already available
+    EXPECT_EQ(chained.srcStages,
+              onDepth(1)[0].dstStages);              // starts where the sampling barrier ended
+    EXPECT_EQ(chained.srcAccess, VkAccessFlags2(0)); // the writes are already available
     EXPECT_TRUE(chained.dstStages & VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT);
     EXPECT_TRUE(chained.dstAccess & VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
     EXPECT_TRUE(onDepth(3).empty()); // the same depth test again: covered
@@ -182,22 +192,36 @@ TEST(FrameGraphPlan, ABufferUsedAsAnImageIsAnError) {
     GraphDecl g;
     ResourceHandle stats = g.addResource("tile_stats", false);
     g.addPass("fill", {{stats, Use::StorageWrite}}); // storage: fine on a buffer
-    EXPECT_EQ(errorOf([&] { g.addPass("view", {{stats, Use::Sampled}}); }),
+    EXPECT_EQ(errorOf([&] {
+                  g.addPass("view", {{stats, Use::Sampled}});
+              }),
               "pass 'view' uses buffer 'tile_stats' as sampled, which needs an image");
-    EXPECT_EQ(errorOf([&] { g.addPass("draw", {{stats, Use::ColorAttachment}}); }),
+    EXPECT_EQ(errorOf([&] {
+                  g.addPass("draw", {{stats, Use::ColorAttachment}});
+              }),
               "pass 'draw' uses buffer 'tile_stats' as colour attachment, which needs an image");
-    EXPECT_EQ(errorOf([&] { g.addPass("bad", {{ResourceHandle{7}, Use::Sampled}}); }),
+    EXPECT_EQ(errorOf([&] {
+                  g.addPass("bad", {{ResourceHandle{7}, Use::Sampled}});
+              }),
               "pass 'bad' uses an unknown resource");
-    EXPECT_EQ(errorOf([&] { g.addPass("fill", {{stats, Use::StorageWrite}}); }), "pass 'fill' declared twice");
+    EXPECT_EQ(errorOf([&] {
+                  g.addPass("fill", {{stats, Use::StorageWrite}});
+              }),
+              "pass 'fill' declared twice");
 }
 
 TEST(FrameGraphPlan, BindingsAreCheckedAndGiveTheDescriptorTypes) {
     GraphDecl g;
     ResourceHandle img = g.addResource("img", true), buf = g.addResource("buf", false);
-    EXPECT_EQ(errorOf([&] { g.addPass("twice", {{img, Use::Sampled, 3}, {buf, Use::StorageRead, 3}}); }),
+    EXPECT_EQ(errorOf([&] {
+                  g.addPass("twice", {{img, Use::Sampled, 3}, {buf, Use::StorageRead, 3}});
+              }),
               "pass 'twice' declares binding 3 twice");
-    EXPECT_EQ(errorOf([&] { g.addPass("attach", {{img, Use::ColorAttachment, 0}}); }),
-              "pass 'attach' binds 'img' at binding 0 as colour attachment, which no descriptor can hold");
+    EXPECT_EQ(errorOf([&] {
+                  g.addPass("attach", {{img, Use::ColorAttachment, 0}});
+              }),
+              "pass 'attach' binds 'img' at binding 0 as colour attachment, which no descriptor "
+              "can hold");
     EXPECT_EQ(descriptorType(Use::Sampled, true), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
     EXPECT_EQ(descriptorType(Use::DepthTest, true), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
     EXPECT_EQ(descriptorType(Use::StorageWrite, true), VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
@@ -245,13 +269,17 @@ TEST(ShaderReflection, AMismatchedPassSetIsAOneLineErrorNamingPassBindingAndShad
                     {TP_DEF_FWD_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                     {TP_DEF_FWD_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                     {TP_DEF_FWD_BINDING_CANDIDATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-    EXPECT_EQ(errorOf([&] { checkPassBindings(&set, {"scene_vert", "deferred_transparent_frag"}); }), "");
+    EXPECT_EQ(errorOf([&] {
+                  checkPassBindings(&set, {"scene_vert", "deferred_transparent_frag"});
+              }),
+              "");
 
     PassSet wrongType = set;
     wrongType.bindings[0].type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    EXPECT_EQ(errorOf([&] { checkPassBindings(&wrongType, {"deferred_transparent_frag"}); }),
-              "pass 'transparent_forward': binding " + std::to_string(TP_DEF_FWD_BINDING_LISTS) +
-                  " (storage image) is declared as storage buffer by shader 'deferred_transparent_frag'");
+    EXPECT_EQ(
+        errorOf([&] { checkPassBindings(&wrongType, {"deferred_transparent_frag"}); }),
+        "pass 'transparent_forward': binding " + std::to_string(TP_DEF_FWD_BINDING_LISTS) +
+            " (storage image) is declared as storage buffer by shader 'deferred_transparent_frag'");
 
     PassSet extra = set;
     extra.bindings.push_back({6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
@@ -261,11 +289,13 @@ TEST(ShaderReflection, AMismatchedPassSetIsAOneLineErrorNamingPassBindingAndShad
 
     PassSet missing = set;
     missing.bindings.clear();
-    EXPECT_NE(errorOf([&] { checkPassBindings(&missing, {"deferred_transparent_frag"}); })
-                  .find("shader 'deferred_transparent_frag' declares binding"),
+    EXPECT_NE(errorOf([&] {
+                  checkPassBindings(&missing, {"deferred_transparent_frag"});
+              }).find("shader 'deferred_transparent_frag' declares binding"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { checkPassBindings(nullptr, {"deferred_transparent_frag"}); })
-                  .find("a pipeline without a pass set"),
+    EXPECT_NE(errorOf([&] {
+                  checkPassBindings(nullptr, {"deferred_transparent_frag"});
+              }).find("a pipeline without a pass set"),
               std::string::npos);
     EXPECT_EQ(errorOf([&] { checkPassBindings(nullptr, {"scene_vert"}); }), "");
 }

@@ -38,7 +38,8 @@ Loaded load(const fs::path& path, GltfLoadOptions options = {}) {
 }
 
 fs::path freshDir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("triptych_gltfc_" + std::to_string(::getpid()) + "_" + name);
+    fs::path dir =
+        fs::temp_directory_path() / ("triptych_gltfc_" + std::to_string(::getpid()) + "_" + name);
     fs::remove_all(dir);
     return dir;
 }
@@ -52,7 +53,8 @@ void expectOneLine(const Loaded& l, const std::string& reason) {
     ASSERT_FALSE(l.scene.ok());
     EXPECT_EQ(l.scene.error().find('\n'), std::string::npos) << l.scene.error();
     EXPECT_NE(l.scene.error().find("scene.gltf: "), std::string::npos) << l.scene.error();
-    EXPECT_NE(l.scene.error().find(reason), std::string::npos) << "expected '" << reason << "' in " << l.scene.error();
+    EXPECT_NE(l.scene.error().find(reason), std::string::npos)
+        << "expected '" << reason << "' in " << l.scene.error();
 }
 
 // Every vertex of `a` is within `tolerance` of a vertex of `b` (brute force: small meshes).
@@ -60,7 +62,8 @@ double farthest(const Scene& a, const Scene& b) {
     double worst = 0;
     for (const glm::vec3& p : a.meshes[0].positions) {
         double best = 1e30;
-        for (const glm::vec3& q : b.meshes[0].positions) best = std::min(best, double(glm::length(p - q)));
+        for (const glm::vec3& q : b.meshes[0].positions)
+            best = std::min(best, double(glm::length(p - q)));
         worst = std::max(worst, best);
     }
     return worst;
@@ -113,7 +116,8 @@ TEST_F(GltfCompressed, MeshoptSceneDecodesExactly) {
     EXPECT_EQ(a.positions, b.positions); // the vertex codec is lossless
     EXPECT_EQ(a.uvs, b.uvs);
     size_t far = 0; // 8-bit octahedral normals: within a few degrees
-    for (size_t i = 0; i < a.normals.size(); ++i) far += glm::dot(a.normals[i], b.normals[i]) < 0.995f;
+    for (size_t i = 0; i < a.normals.size(); ++i)
+        far += glm::dot(a.normals[i], b.normals[i]) < 0.995f;
     EXPECT_EQ(far, 0u);
     // The index codec keeps the triangles and their winding, possibly rotated.
     ASSERT_EQ(a.indices.size(), b.indices.size());
@@ -134,14 +138,18 @@ TEST_F(GltfCompressed, MeshoptSceneDecodesExactly) {
 // The .gltf as a .glb: buffer 0 becomes the BIN chunk (the meshopt fallback buffer keeps no uri).
 fs::path toGlb(const fs::path& gltfPath) {
     json j = json::parse(std::ifstream(gltfPath));
-    std::vector<char> bin = readBytes(gltfPath.parent_path() / j["buffers"][0]["uri"].get<std::string>());
+    std::vector<char> bin =
+        readBytes(gltfPath.parent_path() / j["buffers"][0]["uri"].get<std::string>());
     j["buffers"][0].erase("uri");
     std::string text = j.dump();
-    while (text.size() % 4) text.push_back(' ');
-    while (bin.size() % 4) bin.push_back(0);
+    while (text.size() % 4)
+        text.push_back(' ');
+    while (bin.size() % 4)
+        bin.push_back(0);
     std::vector<char> glb;
     auto u32 = [&](uint32_t v) {
-        for (int i = 0; i < 4; ++i) glb.push_back(char(v >> (8 * i)));
+        for (int i = 0; i < 4; ++i)
+            glb.push_back(char(v >> (8 * i)));
     };
     u32(0x46546C67u);
     u32(2);
@@ -158,7 +166,8 @@ fs::path toGlb(const fs::path& gltfPath) {
 }
 
 TEST_F(GltfCompressed, CompressedGlbFilesLoadAsTheirGltf) {
-    for (const fs::path& gltf : {test::writeMeshoptScene(dir_ / "meshopt"), test::writeDracoScene(dir_ / "draco")}) {
+    for (const fs::path& gltf :
+         {test::writeMeshoptScene(dir_ / "meshopt"), test::writeDracoScene(dir_ / "draco")}) {
         SCOPED_TRACE(gltf.string());
         Loaded a = load(gltf), b = load(toGlb(gltf));
         ASSERT_TRUE(a.scene.ok()) << a.scene.error();
@@ -177,7 +186,8 @@ TEST_F(GltfCompressed, RepairSceneIsRepairedAndListed) {
     const Scene& s = *l.scene;
     expectUnitFiniteNormals(s);
     std::map<std::string, size_t> repaired;
-    for (const SceneRepair& r : s.repairs) repaired[r.attribute] = r.count;
+    for (const SceneRepair& r : s.repairs)
+        repaired[r.attribute] = r.count;
     EXPECT_EQ(repaired["NORMAL"], counts.nanNormals + counts.zeroNormals);
     EXPECT_EQ(repaired["TANGENT"], counts.badTangents);
     EXPECT_EQ(repaired["TEXCOORD_0"], counts.badUvs);
@@ -186,12 +196,14 @@ TEST_F(GltfCompressed, RepairSceneIsRepairedAndListed) {
     // Repaired sphere normals point away from the centre, as the true ones do.
     const Mesh& m = s.meshes[0];
     for (size_t i = 0; i + 4 < m.positions.size(); ++i)
-        ASSERT_GT(glm::dot(m.normals[i], glm::normalize(m.positions[i] - glm::vec3(0, 1, 0))), 0.9f) << i;
+        ASSERT_GT(glm::dot(m.normals[i], glm::normalize(m.positions[i] - glm::vec3(0, 1, 0))), 0.9f)
+            << i;
     GltfLoadOptions strict;
     strict.strict = true;
     Loaded refused = load(path, strict);
     ASSERT_FALSE(refused.scene.ok());
-    EXPECT_NE(refused.scene.error().find("NORMAL accessor"), std::string::npos) << refused.scene.error();
+    EXPECT_NE(refused.scene.error().find("NORMAL accessor"), std::string::npos)
+        << refused.scene.error();
 }
 
 TEST_F(GltfCompressed, TextureTransformIsBakedIntoTheUvs) {
@@ -211,7 +223,8 @@ TEST_F(GltfCompressed, TextureTransformIsBakedIntoTheUvs) {
 TEST_F(GltfCompressed, TextureTransformThatIsNotAnObjectIsIgnored) {
     fs::path path = test::writeTextureTransformScene(dir_ / "notobject");
     json j = json::parse(std::ifstream(path));
-    j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = 7;
+    j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
+     ["KHR_texture_transform"] = 7;
     std::ofstream(path) << j.dump();
     Loaded l = load(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
@@ -223,12 +236,14 @@ TEST_F(GltfCompressed, TextureTransformsThatDifferWarn) {
     json j = json::parse(std::ifstream(path));
     j["materials"][0]["normalTexture"] = {{"index", 0}};
     j["materials"][0]["emissiveTexture"] = {
-        {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"offset", {0, 0}}, {"texCoord", 1}}}}}};
+        {"index", 0},
+        {"extensions", {{"KHR_texture_transform", {{"offset", {0, 0}}, {"texCoord", 1}}}}}};
     std::ofstream(path) << j.dump();
     Loaded l = load(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     ASSERT_EQ(l.warnings.size(), 1u);
-    EXPECT_NE(l.warnings[0].find("differs between baseColorTexture and normalTexture"), std::string::npos)
+    EXPECT_NE(l.warnings[0].find("differs between baseColorTexture and normalTexture"),
+              std::string::npos)
         << l.warnings[0];
 }
 
@@ -256,7 +271,8 @@ TEST_F(GltfCompressed, HostileDracoData) {
     for (size_t seed = 1; seed <= 40; ++seed) {
         SCOPED_TRACE(seed);
         Loaded l = withView(length, [&](std::vector<char>& b) {
-            for (size_t k = 0; k < 4; ++k) b[(seed * 7919 + k * 104729) % length] ^= char(0x5a + seed + k);
+            for (size_t k = 0; k < 4; ++k)
+                b[(seed * 7919 + k * 104729) % length] ^= char(0x5a + seed + k);
         });
         if (!l.scene.ok()) {
             EXPECT_EQ(l.scene.error().find('\n'), std::string::npos);
@@ -281,14 +297,18 @@ TEST_F(GltfCompressed, HostileMeshoptData) {
         std::ofstream(path) << k.dump();
         return load(path);
     };
-    const size_t length = j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteLength"];
+    const size_t length =
+        j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteLength"];
     for (size_t cut : {size_t(0), size_t(1), length / 2, length - 1}) {
         SCOPED_TRACE(cut);
-        expectOneLine(with([&](json& e, json&) { e["byteLength"] = cut; }), "EXT_meshopt_compression");
+        expectOneLine(with([&](json& e, json&) { e["byteLength"] = cut; }),
+                      "EXT_meshopt_compression");
     }
     expectOneLine(with([](json& e, json&) { e["mode"] = "SPARKLES"; }), "unknown mode");
     // A fallback flag that is not true: the buffer keeps no uri, which a .gltf cannot have.
-    expectOneLine(with([](json&, json& k) { k["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"] = "yes"; }),
+    expectOneLine(with([](json&, json& k) {
+                      k["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"] = "yes";
+                  }),
                   "buffer 1 has no uri");
     expectOneLine(with([](json& e, json&) { e["filter"] = "QUATERNION"; }), "filter QUATERNION");
     expectOneLine(with([](json& e, json&) { e["byteStride"] = 6; }), "byteLength");
@@ -303,8 +323,10 @@ TEST_F(GltfCompressed, HostileMeshoptData) {
     // Garbage in the middle of the stream.
     const fs::path bin = path.parent_path() / "scene.bin";
     std::vector<char> bytes = readBytes(bin);
-    const size_t offset = j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"];
-    for (size_t k = 0; k < length; k += 3) bytes[offset + k] = char(0xff);
+    const size_t offset =
+        j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"];
+    for (size_t k = 0; k < length; k += 3)
+        bytes[offset + k] = char(0xff);
     std::ofstream(bin, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     Loaded l = load(path);
     if (!l.scene.ok()) {
@@ -324,10 +346,12 @@ TEST(GltfSharedCompressed, DuckDraco) {
     Loaded l = load(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_EQ(l.scene->triangleCount(), 4212u);
-    EXPECT_EQ(l.scene->extensions, std::vector<std::string>{"KHR_draco_mesh_compression (libdraco)"});
+    EXPECT_EQ(l.scene->extensions,
+              std::vector<std::string>{"KHR_draco_mesh_compression (libdraco)"});
     EXPECT_EQ(l.scene->textures.size(), 1u);
     expectUnitFiniteNormals(*l.scene);
-    for (const std::string& w : l.warnings) ADD_FAILURE() << w;
+    for (const std::string& w : l.warnings)
+        ADD_FAILURE() << w;
 }
 
 TEST(GltfSharedCompressed, TextureTransformTest) {
@@ -336,9 +360,11 @@ TEST(GltfSharedCompressed, TextureTransformTest) {
     Loaded l = load(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_EQ(l.scene->triangleCount(), 24u);
-    EXPECT_NE(std::find(l.scene->extensions.begin(), l.scene->extensions.end(), "KHR_texture_transform"),
-              l.scene->extensions.end());
-    for (const std::string& w : l.warnings) EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;
+    EXPECT_NE(
+        std::find(l.scene->extensions.begin(), l.scene->extensions.end(), "KHR_texture_transform"),
+        l.scene->extensions.end());
+    for (const std::string& w : l.warnings)
+        EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;
 }
 
 } // namespace

@@ -27,7 +27,7 @@ TEST(HostileCli, SeedIsAWholeNumberThatFits64Bits) {
     EXPECT_EQ(seed, UINT64_MAX);
     EXPECT_TRUE(seedAccepted("7", seed));
     EXPECT_EQ(seed, 7u);
-    for (const char* bad : {"-1", "18446744073709551616", "99999999999999999999", "1e3", "0x10",
-                            " 5", "", "abc"})
+    for (const char* bad :
+         {"-1", "18446744073709551616", "99999999999999999999", "1e3", "0x10", " 5", "", "abc"})
         EXPECT_FALSE(seedAccepted(bad, seed)) << "'" << bad << "'";
 }

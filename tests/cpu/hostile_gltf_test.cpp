@@ -137,10 +137,10 @@ TEST_F(HostileGltf, EveryCaseFailsCleanlyOrWarns) {
         Outcome o = loadInChild(scene);
         std::printf("[ hostile  ] %-36s %s\n", c.name.c_str(),
                     !o.exited ? ("died with signal " + std::to_string(o.signal)).c_str()
-                    : o.ok    ? ("loaded; " + (o.warnings.empty() ? std::string("no warning")
-                                                                  : o.warnings.front()))
-                                    .c_str()
-                              : o.error.c_str());
+                    : o.ok    ? ("loaded; " +
+                              (o.warnings.empty() ? std::string("no warning") : o.warnings.front()))
+                                 .c_str()
+                           : o.error.c_str());
         ASSERT_TRUE(o.exited) << "the load crashed or was killed (signal " << o.signal << ")";
         EXPECT_LT(o.peakRssKiB, kPeakRssLimitKiB);
         EXPECT_EQ(listing(root_), before) << "the loader wrote or removed files";
@@ -205,8 +205,8 @@ std::vector<uint8_t> readBytes(const fs::path& path) {
 }
 
 void writeBytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 fs::path regression(const char* name) {
@@ -225,23 +225,26 @@ void expectImageRefused(const fs::path& root, const char* input, const std::stri
     EXPECT_LT(o.peakRssKiB, kPeakRssLimitKiB);
     bool said = false;
     for (const std::string& w : o.warnings)
-        said |= w == scene.string() + ": image 0: refused before decoding: " + why + "; using a placeholder";
-    EXPECT_TRUE(said) << "no warning says '" << why << "'; the first: "
-                      << (o.warnings.empty() ? "(none)" : o.warnings.front());
+        said |= w == scene.string() + ": image 0: refused before decoding: " + why +
+                         "; using a placeholder";
+    EXPECT_TRUE(said) << "no warning says '" << why
+                      << "'; the first: " << (o.warnings.empty() ? "(none)" : o.warnings.front());
 }
 
 // stb grew its buffer to an IDAT chunk's declared 1.7 GB before reading it (the fuzzer's
 // malloc limit stopped a 2 GiB realloc; in a 32-bit address space it is an out-of-memory).
 TEST_F(HostileGltf, FuzzFindingIdatLongerThanTheImage) {
-    expectImageRefused(root_, "png_idat_length_past_end_2gib.glb",
-                       "its chunk 'IDAT' of 1696728432 bytes runs past the end of the image (9674 bytes)");
+    expectImageRefused(
+        root_, "png_idat_length_past_end_2gib.glb",
+        "its chunk 'IDAT' of 1696728432 bytes runs past the end of the image (9674 bytes)");
 }
 
 // An empty first IDAT made stb memcpy into its null buffer (UBSan; the fuzz replay in ctest
 // catches that part); the damaged chunk after it is what refuses this one.
 TEST_F(HostileGltf, FuzzFindingEmptyIdatThenDamagedChunk) {
-    expectImageRefused(root_, "png_empty_idat_then_chunk_past_end.glb",
-                       "its chunk 0xf9c74736 of 164894549 bytes runs past the end of the image (9674 bytes)");
+    expectImageRefused(
+        root_, "png_empty_idat_then_chunk_past_end.glb",
+        "its chunk 0xf9c74736 of 164894549 bytes runs past the end of the image (9674 bytes)");
 }
 
 // The fuzzer flagged "a normal, tangent or uv that is not finite": its check summed the
@@ -251,7 +254,8 @@ TEST(HostileGltfBytes, FuzzFindingHugeFiniteUvs) {
     const std::vector<uint8_t> bytes = readBytes(regression("huge_finite_uvs_sum_overflows.glb"));
     ASSERT_EQ(bytes.size(), 26220u);
     GltfLoadOptions options; // as fuzz_gltf loaded it: by the length, neither option
-    Result<Scene> scene = gltf::loadGltfBytes(bytes, "uvs.glb", fs::temp_directory_path(), false, options);
+    Result<Scene> scene =
+        gltf::loadGltfBytes(bytes, "uvs.glb", fs::temp_directory_path(), false, options);
     ASSERT_TRUE(scene.ok()) << scene.error();
     float largest = 0.0f;
     for (const Mesh& m : scene->meshes)
@@ -275,7 +279,8 @@ using Bytes = std::vector<uint8_t>;
 Bytes pngAround(uint32_t width, uint32_t height, const Bytes& stream, bool emptyFirst) {
     Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     auto be32 = [&](uint32_t x) {
-        for (int s = 24; s >= 0; s -= 8) png.push_back(uint8_t(x >> s));
+        for (int s = 24; s >= 0; s -= 8)
+            png.push_back(uint8_t(x >> s));
     };
     auto chunk = [&](const char* type, const Bytes& data) {
         be32(uint32_t(data.size()));
@@ -286,7 +291,8 @@ Bytes pngAround(uint32_t width, uint32_t height, const Bytes& stream, bool empty
     };
     Bytes ihdr;
     for (uint32_t x : {width, height})
-        for (int s = 24; s >= 0; s -= 8) ihdr.push_back(uint8_t(x >> s));
+        for (int s = 24; s >= 0; s -= 8)
+            ihdr.push_back(uint8_t(x >> s));
     ihdr.insert(ihdr.end(), {8, 6, 0, 0, 0});
     chunk("IHDR", ihdr);
     if (emptyFirst) chunk("IDAT", {});
@@ -338,14 +344,17 @@ fs::path texturedTriangle(const fs::path& dir, const Bytes& png) {
 // 16x16 pixels need 1,040 bytes of scanlines; a stream of 320 MiB of zeros is 320 KB of
 // deflate. stb took it whole (it only checks there is enough) and held 320 MiB and more.
 TEST_F(HostileGltf, ZlibBombRefusedBeforeDecoding) {
-    const fs::path scene = texturedTriangle(root_ / "bomb", pngAround(16, 16, deflatedZeros(size_t(320) << 20), false));
+    const fs::path scene = texturedTriangle(
+        root_ / "bomb", pngAround(16, 16, deflatedZeros(size_t(320) << 20), false));
     Outcome o = loadInChild(scene);
     ASSERT_TRUE(o.exited) << "signal " << o.signal;
     ASSERT_TRUE(o.ok) << o.error;
     EXPECT_LT(o.peakRssKiB, kPeakRssLimitKiB);
     ASSERT_EQ(o.warnings.size(), 1u);
-    EXPECT_EQ(o.warnings[0], scene.string() + ": image 0 'img.png': refused before decoding: its image "
-                             "data inflates to more than 2080 bytes, twice what its size needs; using a placeholder");
+    EXPECT_EQ(o.warnings[0], scene.string() +
+                                 ": image 0 'img.png': refused before decoding: its image "
+                                 "data inflates to more than 2080 bytes, twice what its size "
+                                 "needs; using a placeholder");
 }
 
 // A valid PNG whose first IDAT is empty (the case behind the null memcpy): decoded from a
@@ -360,12 +369,14 @@ TEST_F(HostileGltf, EmptyFirstIdatDecodes) {
         std::vector<std::string> warnings;
         GltfLoadOptions options;
         options.warnings = &warnings;
-        const fs::path scene = texturedTriangle(root_ / (empty ? "empty" : "plain"), pngAround(2, 2, stream, empty));
+        const fs::path scene =
+            texturedTriangle(root_ / (empty ? "empty" : "plain"), pngAround(2, 2, stream, empty));
         Result<Scene> s = loadGltf(scene.string(), options);
         ASSERT_TRUE(s.ok()) << s.error();
         EXPECT_TRUE(warnings.empty()) << warnings.front();
         ASSERT_EQ(s->textures.size(), 1u);
-        EXPECT_EQ(s->textures[0].rgba8, (Bytes{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255}));
+        EXPECT_EQ(s->textures[0].rgba8,
+                  (Bytes{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255}));
     }
 }
 

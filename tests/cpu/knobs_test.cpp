@@ -11,7 +11,9 @@
 namespace tp {
 namespace {
 
-Knob tileLike() { return Knob::integerOf("tile", {"8", "16", "32"}, "16", "tile edge"); }
+Knob tileLike() {
+    return Knob::integerOf("tile", {"8", "16", "32"}, "16", "tile edge");
+}
 
 TEST(Knobs, ChecksChoiceListAndRange) {
     const Knob choice = Knob::choice("accum", {"fp16", "fp32"}, "precision");
@@ -48,9 +50,11 @@ TEST(Knobs, ResolveFillsDefaultsAndRefusesBadValues) {
 
 TEST(Registry, EveryPipelineRegistersItselfInOrder) {
     std::vector<std::string> names;
-    for (const RendererEntry& e : registeredRenderers()) names.push_back(e.name);
+    for (const RendererEntry& e : registeredRenderers())
+        names.push_back(e.name);
     // The reference first, then each pipeline in the order it declared.
-    EXPECT_EQ(names, (std::vector<std::string>{"reference", "forwardplus", "deferred", "multipass_forward"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"reference", "forwardplus", "deferred",
+                                               "multipass_forward"}));
 }
 
 TEST(Registry, EveryDeclaredKnobIsComplete) {
@@ -61,7 +65,8 @@ TEST(Registry, EveryDeclaredKnobIsComplete) {
             EXPECT_TRUE(seen.insert(k.name).second) << "declared twice";
             EXPECT_FALSE(k.help.empty());
             EXPECT_TRUE(k.check(k.defaultValue).ok()) << "the default is not an allowed value";
-            EXPECT_EQ(k.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-"), std::string::npos);
+            EXPECT_EQ(k.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-"),
+                      std::string::npos);
         }
     }
 }
@@ -69,14 +74,16 @@ TEST(Registry, EveryDeclaredKnobIsComplete) {
 TEST(Registry, SharedKnobsAreOneDeclaration) {
     bool tileShared = false;
     for (const KnobReaders& k : allKnobs())
-        if (k.knob.name == "tile") tileShared = k.readers == std::vector<std::string>{"forwardplus", "deferred"};
+        if (k.knob.name == "tile")
+            tileShared = k.readers == std::vector<std::string>{"forwardplus", "deferred"};
     EXPECT_TRUE(tileShared);
 
     // A renderer that declares "tile" with other values is refused before it is added.
     Knob other = tileLike();
     other.values = {"8", "64"};
     const size_t before = registeredRenderers().size();
-    EXPECT_THROW(registerRenderer({"knobs_test_conflict", "test", nullptr, 50, {other}, {}, {}}), std::logic_error);
+    EXPECT_THROW(registerRenderer({"knobs_test_conflict", "test", nullptr, 50, {other}, {}, {}}),
+                 std::logic_error);
     EXPECT_EQ(registeredRenderers().size(), before);
     EXPECT_FALSE(findRenderer("knobs_test_conflict").ok());
 }

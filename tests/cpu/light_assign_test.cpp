@@ -7,11 +7,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/lightassign/compact_layout.h"
-#include "core/passes/debug_views.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/lightassign/tile_candidates.h"
 #include "core/lightassign/tile_grid.h"
+#include "core/passes/debug_views.h"
 
 using namespace tp;
 
@@ -27,7 +27,8 @@ gpu::LightGpu pointLight(glm::vec3 position, float range) {
 
 // Tiles that some point of the light's sphere projects into (a lattice of points inside
 // it, in front of the near plane): a lower bound on the tiles the light truly reaches.
-std::vector<uint32_t> sampledTiles(const la::TileGrid& g, const glm::mat4& proj, const gpu::LightGpu& l) {
+std::vector<uint32_t> sampledTiles(const la::TileGrid& g, const glm::mat4& proj,
+                                   const gpu::LightGpu& l) {
     std::vector<uint32_t> hit(g.count(), 0);
     const int n = 8;
     for (int i = -n; i <= n; ++i)
@@ -39,8 +40,10 @@ std::vector<uint32_t> sampledTiles(const la::TileGrid& g, const glm::mat4& proj,
                 if (p.z > -0.1f) continue; // behind the near plane
                 glm::vec4 c = proj * glm::vec4(p, 1.0f);
                 glm::vec2 ndc = glm::vec2(c) / c.w;
-                float px = (ndc.x + 1.0f) * 0.5f * float(g.width), py = (1.0f - ndc.y) * 0.5f * float(g.height);
-                if (px < 0.0f || py < 0.0f || px >= float(g.width) || py >= float(g.height)) continue;
+                float px = (ndc.x + 1.0f) * 0.5f * float(g.width),
+                      py = (1.0f - ndc.y) * 0.5f * float(g.height);
+                if (px < 0.0f || py < 0.0f || px >= float(g.width) || py >= float(g.height))
+                    continue;
                 hit[g.tileOf(uint32_t(px), uint32_t(py))] = 1;
             }
     return hit;
@@ -100,18 +103,22 @@ TEST(LightAssign, ConservativeBoundIsNeverBelowTheLightsThatReachATile) {
     glm::mat4 view(1.0f);
     glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
     std::mt19937 rng(7);
-    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f), r(0.2f, 4.0f);
+    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f),
+        r(0.2f, 4.0f);
     std::vector<gpu::LightGpu> lights;
-    for (int i = 0; i < 300; ++i) lights.push_back(pointLight({x(rng), y(rng), z(rng)}, r(rng)));
+    for (int i = 0; i < 300; ++i)
+        lights.push_back(pointLight({x(rng), y(rng), z(rng)}, r(rng)));
     lights.push_back(pointLight({0.0f, 0.0f, 0.0f}, 1.0f)); // the eye inside: every tile
     std::vector<uint32_t> local(lights.size());
-    for (uint32_t i = 0; i < local.size(); ++i) local[i] = i;
+    for (uint32_t i = 0; i < local.size(); ++i)
+        local[i] = i;
     std::vector<uint32_t> bound = la::conservativeTileBound(g, view, proj, lights, local);
     ASSERT_EQ(bound.size(), g.count());
     std::vector<uint32_t> truth(g.count(), 0);
     for (const gpu::LightGpu& l : lights) {
         std::vector<uint32_t> hit = sampledTiles(g, proj, l);
-        for (uint32_t t = 0; t < g.count(); ++t) truth[t] += hit[t];
+        for (uint32_t t = 0; t < g.count(); ++t)
+            truth[t] += hit[t];
     }
     uint64_t boundSum = 0, truthSum = 0;
     for (uint32_t t = 0; t < g.count(); ++t) {
@@ -129,7 +136,8 @@ TEST(LightAssign, ConservativeBoundSkipsLightsBehindTheEye) {
     glm::mat4 proj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
     std::vector<gpu::LightGpu> lights = {pointLight({0.0f, 0.0f, 5.0f}, 1.0f)};
     std::vector<uint32_t> bound = la::conservativeTileBound(g, glm::mat4(1.0f), proj, lights, {0});
-    for (uint32_t b : bound) EXPECT_EQ(b, 0u);
+    for (uint32_t b : bound)
+        EXPECT_EQ(b, 0u);
 }
 
 // Binned culling's candidates: each tile's run holds exactly the lights whose rectangle
@@ -138,13 +146,17 @@ TEST(LightAssign, TileCandidatesAreEachTilesCoveringLightsAscending) {
     la::TileGrid g = la::makeTileGrid(200, 120, 16); // 13 x 8 tiles
     glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
     std::mt19937 rng(3);
-    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f), r(0.2f, 4.0f);
+    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f),
+        r(0.2f, 4.0f);
     std::vector<gpu::LightGpu> lights;
-    for (int i = 0; i < 200; ++i) lights.push_back(pointLight({x(rng), y(rng), z(rng)}, r(rng)));
+    for (int i = 0; i < 200; ++i)
+        lights.push_back(pointLight({x(rng), y(rng), z(rng)}, r(rng)));
     // Local lights are a subset (as when directional lights are interleaved), not 0..n-1.
     std::vector<uint32_t> local;
-    for (uint32_t i = 0; i < lights.size(); i += 2) local.push_back(i);
-    std::vector<la::TileRect> rects = la::conservativeTileRects(g, glm::mat4(1.0f), proj, lights, local);
+    for (uint32_t i = 0; i < lights.size(); i += 2)
+        local.push_back(i);
+    std::vector<la::TileRect> rects =
+        la::conservativeTileRects(g, glm::mat4(1.0f), proj, lights, local);
     ASSERT_EQ(rects.size(), local.size());
     std::vector<uint32_t> counts = la::countTileRects(g, rects);
     EXPECT_EQ(counts, la::conservativeTileBound(g, glm::mat4(1.0f), proj, lights, local));
@@ -160,7 +172,8 @@ TEST(LightAssign, TileCandidatesAreEachTilesCoveringLightsAscending) {
                 if (int(tx) >= rects[k].x0 && int(tx) <= rects[k].x1 && int(ty) >= rects[k].y0 &&
                     int(ty) <= rects[k].y1)
                     expect.push_back(local[k]);
-            std::vector<uint32_t> got(cand.begin() + layout.offsets[t], cand.begin() + layout.offsets[t + 1]);
+            std::vector<uint32_t> got(cand.begin() + layout.offsets[t],
+                                      cand.begin() + layout.offsets[t + 1]);
             EXPECT_EQ(got, expect) << "tile " << t;
             covered += expect.size();
         }
@@ -205,5 +218,6 @@ TEST(LightAssign, HeatMapOutlinesTilesThatDroppedLights) {
     EXPECT_EQ(img.at(8, 8)[0], 0.0f);
     EXPECT_EQ(img.at(15, 12)[1], 1.0f);
     ImageRGBA plain = passes::lightsPerTileHeatMap(g, counts);
-    for (int c = 0; c < 4; ++c) EXPECT_EQ(img.at(11, 11)[c], plain.at(11, 11)[c]); // inside: unchanged
+    for (int c = 0; c < 4; ++c)
+        EXPECT_EQ(img.at(11, 11)[c], plain.at(11, 11)[c]); // inside: unchanged
 }

@@ -19,7 +19,8 @@ TEST(LightBins, EqualTheirPartsAndBuildCandidatesOnlyWhenAsked) {
     glm::mat4 view = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, -0.25f, -1.0f));
     glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
     std::mt19937 rng(5);
-    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f), r(0.2f, 4.0f);
+    std::uniform_real_distribution<float> x(-12.0f, 12.0f), y(-8.0f, 8.0f), z(-20.0f, 2.0f),
+        r(0.2f, 4.0f);
     std::vector<gpu::LightGpu> lights(150);
     for (gpu::LightGpu& l : lights) {
         l.position = {x(rng), y(rng), z(rng)};
@@ -27,7 +28,8 @@ TEST(LightBins, EqualTheirPartsAndBuildCandidatesOnlyWhenAsked) {
         l.type = TP_LIGHT_POINT;
     }
     std::vector<uint32_t> local;
-    for (uint32_t i = 1; i < lights.size(); i += 3) local.push_back(i);
+    for (uint32_t i = 1; i < lights.size(); i += 3)
+        local.push_back(i);
 
     std::vector<la::TileRect> rects = la::conservativeTileRects(g, view, proj, lights, local);
     std::vector<uint32_t> bound = la::countTileRects(g, rects);
@@ -65,7 +67,8 @@ TEST(LightBins, SlabPlanesAreLaidOutAsTheGpuReadsThem) {
     glm::mat4 proj = glm::perspective(glm::radians(60.0f), 200.0f / 120.0f, 0.1f, 100.0f);
     std::vector<glm::vec4> p = la::binSlabPlanes(g, proj);
     ASSERT_EQ(p.size(), size_t(2 * (13 + 8)));
-    for (const glm::vec4& q : p) EXPECT_NEAR(glm::length(glm::vec3(q)), 1.0f, 1e-6f);
+    for (const glm::vec4& q : p)
+        EXPECT_NEAR(glm::length(glm::vec3(q)), 1.0f, 1e-6f);
     // A point straight ahead (ndc 0, 0: pixel 100, 60) lies in column 6 and row 3 (pixel rows
     // 48-63): inside column 6's two planes and row 3's lower one, outside column 0's right edge.
     const glm::vec3 ahead(0.0f, 0.0f, -5.0f);

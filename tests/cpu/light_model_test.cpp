@@ -76,7 +76,8 @@ TEST(LightModel, LambertEnergyOfWhiteDielectricIsBelowOne) {
         for (int j = 0; j < 4 * n; ++j) {
             float theta = (i + 0.5f) / n * (TP_PI / 2);
             float phi = (j + 0.5f) / (4 * n) * 2 * TP_PI;
-            vec3 l(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+            vec3 l(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                   std::cos(theta));
             sum += brdfCos(s, l).x * std::sin(theta) * (TP_PI / 2 / n) * (2 * TP_PI / (4 * n));
         }
     EXPECT_GT(sum, 0.85);

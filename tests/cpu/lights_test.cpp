@@ -206,13 +206,16 @@ TEST(LightsJson, BadInputGivesOneLineErrors) {
 // Absurd values and unknown names: each bound (lights.h) refused just past it, accepted at it.
 TEST(LightsJson, AbsurdValuesAndUnknownNames) {
     const std::string at = "\"type\":\"point\",\"intensity\":5,\"range\":2,\"position\":";
-    expectError("{\"version\":1,\"lights\":[],\"colour\":1}", "unknown field 'colour' (at top level");
+    expectError("{\"version\":1,\"lights\":[],\"colour\":1}",
+                "unknown field 'colour' (at top level");
     expectError(oneLight(at + "[2e10,0,0]"), "at most 1e10 in magnitude (at lights[0].position)");
     expectError(oneLight(at + "[0,-2e10,0]"), "(at lights[0].position)");
     EXPECT_TRUE(lightsFromJson(oneLight(at + "[1e10,-1e10,0]"), "x").ok());
     const std::string p = "\"type\":\"point\",\"position\":[0,1,0],";
-    expectError(oneLight(p + "\"intensity\":5,\"range\":0"), "must be positive (at lights[0].range)");
-    expectError(oneLight(p + "\"intensity\":5,\"range\":2e10"), "at most 1e10 (at lights[0].range)");
+    expectError(oneLight(p + "\"intensity\":5,\"range\":0"),
+                "must be positive (at lights[0].range)");
+    expectError(oneLight(p + "\"intensity\":5,\"range\":2e10"),
+                "at most 1e10 (at lights[0].range)");
     expectError(oneLight(p + "\"intensity\":2e15,\"range\":1"), "(at lights[0].intensity)");
     expectError(oneLight(p + "\"intensity\":1e14,\"range\":1,\"color\":[0,20,1]"),
                 "brightest color channel must be at most 1e15");

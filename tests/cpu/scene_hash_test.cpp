@@ -26,7 +26,8 @@ void writeFile(const fs::path& path, const std::string& bytes) {
 // A minimal .gltf with one external buffer, one external image, one data: URI image, and an
 // unreferenced file next to them.
 fs::path makeGltfFolder(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("triptych_scene_hash_" + name + "_" + std::to_string(getpid()));
+    fs::path dir = fs::temp_directory_path() /
+                   ("triptych_scene_hash_" + name + "_" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir / "tex");
     writeFile(dir / "scene.gltf", R"({"asset":{"version":"2.0"},
@@ -107,7 +108,8 @@ TEST(SceneHash, FileHashCoversTheFileAndWhatItReferences) {
 TEST(SceneHash, GlbHashesItsJsonReferences) {
     fs::path dir = makeGltfFolder("glb");
     std::string json = R"({"asset":{"version":"2.0"},"images":[{"uri":"tex/albedo.png"}]})";
-    while (json.size() % 4) json += ' ';
+    while (json.size() % 4)
+        json += ' ';
     std::string glb = "glTF";
     auto le32 = [&](uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
     le32(2);
@@ -131,15 +133,17 @@ TEST(SceneHash, CameraHashSeesEveryFieldAndSurvivesACameraFile) {
     EXPECT_EQ(hash.size(), 16u);
     for (int field = 0; field < 12; ++field) {
         Camera d = c;
-        float* values[] = {&d.position.x, &d.position.y, &d.position.z, &d.target.x, &d.target.y, &d.target.z,
-                           &d.up.x,       &d.up.y,       &d.up.z,       &d.yfov,     &d.znear,    &d.zfar};
+        float* values[] = {&d.position.x, &d.position.y, &d.position.z, &d.target.x,
+                           &d.target.y,   &d.target.z,   &d.up.x,       &d.up.y,
+                           &d.up.z,       &d.yfov,       &d.znear,      &d.zfar};
         *values[field] = std::nextafter(*values[field], 1e9f); // one ulp
         EXPECT_NE(cli::hashCamera(d), hash) << "field " << field;
         Scene moved = scene;
         moved.camera = d;
         EXPECT_NE(cli::hashSceneContent(moved), cli::hashSceneContent(scene)) << "field " << field;
     }
-    const std::string path = (fs::temp_directory_path() / ("triptych_camera_hash_" + std::to_string(getpid()))).string();
+    const std::string path =
+        (fs::temp_directory_path() / ("triptych_camera_hash_" + std::to_string(getpid()))).string();
     ASSERT_TRUE(writeCameraFile(path, c).ok());
     Result<Camera> back = readCameraFile(path);
     ASSERT_TRUE(back.ok()) << back.error();

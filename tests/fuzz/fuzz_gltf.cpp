@@ -20,7 +20,8 @@ std::filesystem::path gFolder;
 
 template <class V> std::string text(const V& v) {
     std::string out;
-    for (int k = 0; k < V::length(); ++k) out += (k ? "," : "") + std::to_string(v[k]);
+    for (int k = 0; k < V::length(); ++k)
+        out += (k ? "," : "") + std::to_string(v[k]);
     return out;
 }
 
@@ -44,7 +45,8 @@ void checkScene(const tp::Scene& s) {
         // Component by component: a sum of finite values may overflow (a uv of 3.2e38 plus
         // one of 7.3e37 is not a non-finite uv).
         for (size_t i = 0; i < n; ++i)
-            if (!finite(m.positions[i])) broken("loaded", m.name + ": a position that is not finite");
+            if (!finite(m.positions[i]))
+                broken("loaded", m.name + ": a position that is not finite");
         // Non-finite normals, tangents and uvs are repaired or refused, never passed on.
         for (size_t i = 0; i < n; ++i)
             if (!finite(m.normals[i]) || !finite(m.tangents[i]) || !finite(m.uvs[i]) ||
@@ -76,7 +78,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     tp::GltfLoadOptions options;
     options.warnings = &warnings;
     options.smoothMissingNormals = size % 2 == 1; // both normal generators, from the length
-    options.strict = size % 4 >= 2;              // repairs and refusals, likewise
+    options.strict = size % 4 >= 2;               // repairs and refusals, likewise
     tp::Result<tp::Scene> scene = tp::gltf::loadGltfBytes(
         std::vector<unsigned char>(data, data + size), "fuzz.gltf", gFolder, false, options);
     if (scene.ok())

@@ -26,8 +26,9 @@ std::string gPath;
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     std::error_code ec;
-    const std::filesystem::path dir =
-        std::filesystem::is_directory("/dev/shm", ec) ? "/dev/shm" : std::filesystem::temp_directory_path();
+    const std::filesystem::path dir = std::filesystem::is_directory("/dev/shm", ec)
+                                          ? "/dev/shm"
+                                          : std::filesystem::temp_directory_path();
     gPath = (dir / ("fuzz_script_" + std::to_string(::getpid()) + ".txt")).string();
     return 0;
 }
@@ -42,9 +43,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::filesystem::remove(gPath);
     if (!lines) {
         const std::string& e = lines.error();
-        const bool names = e.rfind(gPath + ":", 0) == 0 || e.rfind("--script " + gPath + ":", 0) == 0;
-        if (!names || e != tp::printableLine(e))
-            broken("error", e);
+        const bool names =
+            e.rfind(gPath + ":", 0) == 0 || e.rfind("--script " + gPath + ":", 0) == 0;
+        if (!names || e != tp::printableLine(e)) broken("error", e);
         return 0;
     }
     int previous = 0;

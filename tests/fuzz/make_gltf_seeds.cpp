@@ -37,7 +37,8 @@ std::string base64(const std::vector<uint8_t>& b) {
 }
 
 void put32(std::vector<uint8_t>& out, uint32_t v) {
-    for (int s = 0; s < 32; s += 8) out.push_back(uint8_t(v >> s));
+    for (int s = 0; s < 32; s += 8)
+        out.push_back(uint8_t(v >> s));
 }
 
 // scene.gltf + scene.bin + checker.png -> one GLB (glTF 2.0 spec, 4.4).
@@ -47,10 +48,13 @@ std::vector<uint8_t> toGlb(const fs::path& gltfPath) {
     std::vector<uint8_t> bin = readAll(dir / g["buffers"][0]["uri"].get<std::string>());
     g["buffers"][0].erase("uri");
     for (json& image : g["images"])
-        image["uri"] = "data:image/png;base64," + base64(readAll(dir / image["uri"].get<std::string>()));
+        image["uri"] =
+            "data:image/png;base64," + base64(readAll(dir / image["uri"].get<std::string>()));
     std::string text = g.dump();
-    while (text.size() % 4) text += ' ';
-    while (bin.size() % 4) bin.push_back(0);
+    while (text.size() % 4)
+        text += ' ';
+    while (bin.size() % 4)
+        bin.push_back(0);
     std::vector<uint8_t> out = {'g', 'l', 'T', 'F'};
     put32(out, 2);
     put32(out, uint32_t(12 + 8 + text.size() + 8 + bin.size()));

@@ -10,8 +10,8 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/rendering.h"
-#include "core/passes/blended_bounds.h"
 #include "core/lightassign/tile_grid.h"
+#include "core/passes/blended_bounds.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {
@@ -24,7 +24,8 @@ constexpr uint32_t kWidth = 96, kHeight = 64;
 std::vector<uint8_t> boundsOf(GpuContext& ctx, SceneGpu& scene, la::BlendedBoundsConfig config) {
     const VkSampleCountFlagBits samples = VkSampleCountFlagBits(config.samples);
     FrameGraph graph(ctx, "test", kWidth, kHeight);
-    config.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "opaque depth"});
+    config.depth =
+        graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "opaque depth"});
     VkPipelineLayout layout = scene.createPipelineLayout();
     GraphicsPipelineDesc d;
     d.samples = samples;
@@ -67,12 +68,14 @@ TEST(BlendedBounds, PositionOnlyInterfaceRecordsTheBoundsOfTheWholeInterface) {
         std::vector<uint8_t> lean = boundsOf(*ctx, yardGpu, config);
         config.fullInterface = true;
         std::vector<uint8_t> full = boundsOf(*ctx, yardGpu, config);
-        const std::string what = std::to_string(c.samples) + "x, " + (c.inputsAtPixel ? "pixel" : "sample") +
-                                 " inputs" + (c.sampleShading ? ", per-sample shading" : "");
+        const std::string what = std::to_string(c.samples) + "x, " +
+                                 (c.inputsAtPixel ? "pixel" : "sample") + " inputs" +
+                                 (c.sampleShading ? ", per-sample shading" : "");
         ASSERT_EQ(lean.size(), size_t(grid.count()) * 8) << what;
         EXPECT_EQ(lean, full) << what;
         uint32_t any = 0;
-        for (const la::TileBlendedBounds& t : la::unpackBlendedBounds(lean, grid.count())) any += t.any ? 1 : 0;
+        for (const la::TileBlendedBounds& t : la::unpackBlendedBounds(lean, grid.count()))
+            any += t.any ? 1 : 0;
         EXPECT_GT(any, 0u) << what; // the comparison saw blended fragments
         EXPECT_LT(any, grid.count()) << what;
     }

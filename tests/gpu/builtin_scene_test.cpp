@@ -12,7 +12,8 @@ namespace {
 
 uint64_t countNonFinite(const ImageRGBA& img) {
     uint64_t n = 0;
-    for (float v : img.rgba) n += !std::isfinite(v);
+    for (float v : img.rgba)
+        n += !std::isfinite(v);
     return n;
 }
 
@@ -34,7 +35,8 @@ void renderAndCheck(Scene scene, uint32_t msaa) {
     RunResult run = runOrFail(*ctx, gpuScene, "reference", settings);
     EXPECT_EQ(countNonFinite(run.hdr), 0u);
     double sum = 0;
-    for (size_t i = 0; i < run.hdr.pixelCount(); ++i) sum += run.hdr.rgba[i * 4 + 1];
+    for (size_t i = 0; i < run.hdr.pixelCount(); ++i)
+        sum += run.hdr.rgba[i * 4 + 1];
     EXPECT_GT(sum, 0.0) << "image is black";
     expectNoValidationMessages(*ctx);
 }

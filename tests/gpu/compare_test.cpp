@@ -16,8 +16,8 @@
 #include "compare/commands.h"
 #include "compare/compare.h"
 #include "compare/report_html.h"
-#include "compare/sweep.h"
 #include "compare/svg_plot.h"
+#include "compare/sweep.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
@@ -57,26 +57,30 @@ int runCli(std::vector<std::string> args) {
     argv.insert(argv.end(), args.begin(), args.end());
     cli::CommandRunner runner = cli::addCompareCommand(app, argv);
     std::vector<char*> raw;
-    for (std::string& a : argv) raw.push_back(a.data());
+    for (std::string& a : argv)
+        raw.push_back(a.data());
     app.parse(int(raw.size()), raw.data());
     return runner();
 }
 
 size_t count(const std::string& text, const std::string& what) {
     size_t n = 0;
-    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
     return n;
 }
 
 void expectMetrics(const json& m, const std::string& where) {
-    for (const MetricInfo& info : metricTable()) EXPECT_TRUE(m.contains(info.name)) << where << " lacks " << info.name;
+    for (const MetricInfo& info : metricTable())
+        EXPECT_TRUE(m.contains(info.name)) << where << " lacks " << info.name;
     EXPECT_EQ(m["compared_pixels"].get<uint64_t>(), 96u * 54u) << where;
     EXPECT_EQ(m["nan_inf"].get<double>(), 0.0) << where;
 }
 
 void expectMemoryTotal(const json& memory, const std::string& where) {
     uint64_t sum = 0;
-    for (const json& e : memory["resources"]) sum += e["bytes"].get<uint64_t>();
+    for (const json& e : memory["resources"])
+        sum += e["bytes"].get<uint64_t>();
     EXPECT_EQ(memory["total_bytes"].get<uint64_t>(), sum) << where;
     EXPECT_GT(sum, 0u) << where;
 }
@@ -96,12 +100,14 @@ void expectPipelineEntry(const json& p, const std::string& name, const std::stri
     expectMemoryTotal(p["run"]["memory"], name);
     EXPECT_DOUBLE_EQ(p["run"]["memory"]["bytes_per_pixel"].get<double>(),
                      p["run"]["memory"]["total_bytes"].get<double>() / (96.0 * 54.0));
-    for (const json& e : p["run"]["memory"]["resources"]) EXPECT_NE(e["name"], "vertices"); // scene is shared
+    for (const json& e : p["run"]["memory"]["resources"])
+        EXPECT_NE(e["name"], "vertices"); // scene is shared
     expectMetrics(p["error_vs_reference"]["hdr"], "hdr");
     expectMetrics(p["error_vs_reference"]["tonemapped"], "tonemapped");
     for (const char* kind : {"ldr", "hdr"}) {
         const json& f = p["error_vs_reference"]["flip"][kind];
-        for (const char* k : {"mean", "weighted_median", "weighted_q1", "weighted_q3", "min", "max"}) {
+        for (const char* k :
+             {"mean", "weighted_median", "weighted_q1", "weighted_q3", "min", "max"}) {
             ASSERT_TRUE(f[k].is_number()) << kind << " " << k;
             EXPECT_GE(f[k].get<double>(), 0.0);
             EXPECT_LE(f[k].get<double>(), 1.0);
@@ -114,7 +120,8 @@ void expectPipelineEntry(const json& p, const std::string& name, const std::stri
 // One pair's entry in report.json: its files, metrics, and an EXR of a - b that agrees with
 // them.
 void expectPairEntry(const json& pair, const std::string& out) {
-    const std::string stem = pair["a"].get<std::string>() + "_vs_" + pair["b"].get<std::string>() + "_diff";
+    const std::string stem =
+        pair["a"].get<std::string>() + "_vs_" + pair["b"].get<std::string>() + "_diff";
     EXPECT_EQ(pair["files"], json({stem + ".exr", stem + ".png"}));
     expectMetrics(pair["hdr"], stem);
     expectMetrics(pair["tonemapped"], stem);
@@ -129,16 +136,17 @@ void expectPairEntry(const json& pair, const std::string& out) {
 
 TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     const std::string out = freshDir("compare_all");
-    int rc = runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "8", "--seed", "3", "--frames", "1",
-                     "--warmup", "0", "--validate", "--out", out});
+    int rc = runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "8", "--seed", "3",
+                     "--frames", "1", "--warmup", "0", "--validate", "--out", out});
     ASSERT_EQ(rc, 0);
     const std::vector<std::string> names = pipelinesButReference();
     ASSERT_FALSE(names.empty());
-    for (const char* f : {"reference.exr", "reference.png", "lights.json", "report.json", "report.html"})
+    for (const char* f :
+         {"reference.exr", "reference.png", "lights.json", "report.json", "report.html"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     for (const std::string& n : names)
-        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr", "_flip.png", "_flip_ldr.exr",
-                                   "_flip_ldr.png"})
+        for (const char* suffix : {".exr", ".png", "_diff.exr", "_diff.png", "_flip.exr",
+                                   "_flip.png", "_flip_ldr.exr", "_flip_ldr.png"})
             EXPECT_TRUE(fs::exists(out + "/" + n + suffix)) << n << suffix;
 
     json r = json::parse(readText(out + "/report.json"));
@@ -178,7 +186,8 @@ TEST(Compare, EveryPipelineWritesEveryFileAndAReport) {
     // The reference; per pipeline its image, difference map and HDR-FLIP map; per pair its map.
     EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 1 + 3 * names.size() + pairs);
     EXPECT_GE(count(html, "<svg"), 2u); // timing bars and the error/time plot
-    for (const std::string& n : names) EXPECT_NE(html.find(n), std::string::npos);
+    for (const std::string& n : names)
+        EXPECT_NE(html.find(n), std::string::npos);
 }
 
 TEST(Compare, FailingPipelineIsRecordedAndTheOthersGoOn) {
@@ -214,7 +223,8 @@ json withoutTimings(json r) {
     r.erase("command");
     r.erase("command_line");
     r["reference"]["run"].erase("timings");
-    for (json& p : r["pipelines"]) p["run"].erase("timings");
+    for (json& p : r["pipelines"])
+        p["run"].erase("timings");
     return r;
 }
 
@@ -223,8 +233,8 @@ json withoutTimings(json r) {
 TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
     std::vector<std::string> dirs = {freshDir("repeat_a"), freshDir("repeat_b")};
     for (const std::string& out : dirs)
-        ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "16", "--seed", "5", "--frames",
-                          "2", "--warmup", "0", "--out", out}),
+        ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "16", "--seed",
+                          "5", "--frames", "2", "--warmup", "0", "--out", out}),
                   0);
     json a = json::parse(readText(dirs[0] + "/report.json"));
     json b = json::parse(readText(dirs[1] + "/report.json"));
@@ -235,9 +245,12 @@ TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
     size_t images = 0;
     for (const fs::directory_entry& e : fs::directory_iterator(dirs[0])) {
         const std::string name = e.path().filename().string();
-        if (e.path().extension() != ".exr" && e.path().extension() != ".png" && name != "lights.json") continue;
+        if (e.path().extension() != ".exr" && e.path().extension() != ".png" &&
+            name != "lights.json")
+            continue;
         ++images;
-        EXPECT_TRUE(readText(e.path().string()) == readText(dirs[1] + "/" + name)) << name << " differs";
+        EXPECT_TRUE(readText(e.path().string()) == readText(dirs[1] + "/" + name))
+            << name << " differs";
     }
     const size_t n = pipelinesButReference().size();
     // lights, reference, pipelines (image, difference, FLIP and HDR-FLIP maps), pairs
@@ -246,8 +259,9 @@ TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
 
 TEST(Compare, BadPipelineNameFailsBeforeWritingAnything) {
     const std::string out = freshDir("compare_bad");
-    EXPECT_THROW(runCli({"builtin:courtyard-small", "--pipelines", "forwardplus,nosuch", "--out", out}),
-                 cli::UsageError);
+    EXPECT_THROW(
+        runCli({"builtin:courtyard-small", "--pipelines", "forwardplus,nosuch", "--out", out}),
+        cli::UsageError);
     EXPECT_FALSE(fs::exists(out));
 }
 
@@ -258,21 +272,26 @@ std::vector<std::map<std::string, std::string>> readCsv(const std::string& path)
     std::getline(csv, line);
     std::vector<std::string> header;
     std::stringstream hs(line);
-    for (std::string f; std::getline(hs, f, ',');) header.push_back(f);
+    for (std::string f; std::getline(hs, f, ',');)
+        header.push_back(f);
     std::vector<std::map<std::string, std::string>> rows;
     while (std::getline(csv, line)) {
         std::vector<std::string> fields;
         std::string field;
         bool quoted = false;
         for (char c : line) { // the device name is quoted: it holds commas
-            if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) fields.push_back(std::exchange(field, ""));
-            else field += c;
+            if (c == '"')
+                quoted = !quoted;
+            else if (c == ',' && !quoted)
+                fields.push_back(std::exchange(field, ""));
+            else
+                field += c;
         }
         fields.push_back(field);
         EXPECT_EQ(fields.size(), header.size()) << line;
         std::map<std::string, std::string> row;
-        for (size_t i = 0; i < std::min(fields.size(), header.size()); ++i) row[header[i]] = fields[i];
+        for (size_t i = 0; i < std::min(fields.size(), header.size()); ++i)
+            row[header[i]] = fields[i];
         rows.push_back(row);
     }
     return rows;
@@ -284,15 +303,17 @@ int runSweepCli(std::vector<std::string> args) {
     argv.insert(argv.end(), args.begin(), args.end());
     cli::CommandRunner runner = cli::addSweepCommand(app, argv);
     std::vector<char*> raw;
-    for (std::string& a : argv) raw.push_back(a.data());
+    for (std::string& a : argv)
+        raw.push_back(a.data());
     app.parse(int(raw.size()), raw.data());
     return runner();
 }
 
 TEST(Compare, SweepWritesOneRowPerRun) {
     const std::string out = freshDir("sweep");
-    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4,8", "--res", "96x54", "--tile", "8,16",
-                           "--deferred-lighting", "tiled,volumes", "--frames", "1", "--warmup", "0", "--out", out}),
+    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4,8", "--res", "96x54", "--tile",
+                           "8,16", "--deferred-lighting", "tiled,volumes", "--frames", "1",
+                           "--warmup", "0", "--out", out}),
               0);
     std::map<std::string, int> runs; // pipeline/lights -> rows
     std::set<std::string> tiles, lighting;
@@ -303,14 +324,16 @@ TEST(Compare, SweepWritesOneRowPerRun) {
         if (row.at("pipeline") == "forwardplus") tiles.insert(row.at("tile"));
         if (row.at("pipeline") == "deferred") lighting.insert(row.at("deferred_lighting"));
         const bool pipeline = row.at("pipeline") != "reference";
-        for (const char* column : {"rmse_hdr", "psnr_hdr", "max_abs_hdr", "rmse_tonemapped", "psnr_tonemapped",
-                                   "max_abs_tonemapped", "flip_hdr_mean", "flip_tonemapped_mean"})
+        for (const char* column :
+             {"rmse_hdr", "psnr_hdr", "max_abs_hdr", "rmse_tonemapped", "psnr_tonemapped",
+              "max_abs_tonemapped", "flip_hdr_mean", "flip_tonemapped_mean"})
             EXPECT_EQ(row.at(column).empty(), !pipeline) << row.at("pipeline") << " " << column;
     }
     for (const RendererEntry& e : registeredRenderers())
-        for (const char* lights : {"4", "8"}) EXPECT_GE(runs[e.name + "/" + lights], 1) << e.name << " " << lights;
-    EXPECT_EQ(runs["reference/4"], 1); // once per light set
-    EXPECT_EQ(runs["deferred/4"], 4);  // 2 tiles x 2 lighting modes
+        for (const char* lights : {"4", "8"})
+            EXPECT_GE(runs[e.name + "/" + lights], 1) << e.name << " " << lights;
+    EXPECT_EQ(runs["reference/4"], 1);         // once per light set
+    EXPECT_EQ(runs["deferred/4"], 4);          // 2 tiles x 2 lighting modes
     EXPECT_EQ(runs["multipass_forward/4"], 1); // reads neither knob
     EXPECT_EQ(tiles, (std::set<std::string>{"8", "16"}));
     EXPECT_EQ(lighting, (std::set<std::string>{"tiled", "volumes"}));
@@ -328,7 +351,8 @@ TEST(Compare, SweepWritesOneRowPerRun) {
         EXPECT_EQ(run["settings"]["deferred_lighting"], rows[i].at("deferred_lighting"));
         ASSERT_GE(run["run"]["timings"].size(), 2u); // the frame and each pass
         EXPECT_EQ(run["run"]["timings"][0]["pass"], "frame");
-        EXPECT_EQ(std::to_string(run["run"]["memory"]["total_bytes"].get<uint64_t>()), rows[i].at("memory_bytes"));
+        EXPECT_EQ(std::to_string(run["run"]["memory"]["total_bytes"].get<uint64_t>()),
+                  rows[i].at("memory_bytes"));
         expectMemoryTotal(run["run"]["memory"], rows[i].at("pipeline"));
         if (run["pipeline"] == "reference") {
             EXPECT_TRUE(run["error_vs_reference"].is_null());
@@ -347,8 +371,17 @@ TEST(Compare, SweepWritesOneRowPerRun) {
 // camera.json) is itself a camera file that gives back the same images.
 TEST(Compare, CameraFileChangesTheViewAndRoundTrips) {
     const std::string pipeline = pipelinesButReference().front();
-    const std::vector<std::string> common = {"builtin:courtyard-small", "--res", "64x36", "--lights", "8",
-                                             "--frames", "1", "--warmup", "0", "--pipelines", pipeline};
+    const std::vector<std::string> common = {"builtin:courtyard-small",
+                                             "--res",
+                                             "64x36",
+                                             "--lights",
+                                             "8",
+                                             "--frames",
+                                             "1",
+                                             "--warmup",
+                                             "0",
+                                             "--pipelines",
+                                             pipeline};
     auto compareInto = [&](const std::string& out, std::vector<std::string> extra) {
         std::vector<std::string> args = common;
         args.insert(args.end(), extra.begin(), extra.end());
@@ -369,7 +402,8 @@ TEST(Compare, CameraFileChangesTheViewAndRoundTrips) {
     Camera view = *defaultCamera; // turned and moved: another view of the same scene
     view.position += glm::vec3(1.5f, 0.5f, -3.0f);
     view.yfov *= 0.8f;
-    const std::string file = fs::path(moved).parent_path().string() + "/triptych_view_" + std::to_string(getpid()) + ".json";
+    const std::string file = fs::path(moved).parent_path().string() + "/triptych_view_" +
+                             std::to_string(getpid()) + ".json";
     ASSERT_TRUE(writeCameraFile(file, view).ok());
     json b = compareInto(moved, {"--camera", file});
     EXPECT_EQ(b["camera"], cameraToJson(view));
@@ -377,9 +411,11 @@ TEST(Compare, CameraFileChangesTheViewAndRoundTrips) {
     EXPECT_EQ(b["camera_source"]["path"], file);
     EXPECT_NE(b["scene"]["camera_hash_fnv1a64"], a["scene"]["camera_hash_fnv1a64"]);
     EXPECT_NE(b["scene"]["content_hash_fnv1a64"], a["scene"]["content_hash_fnv1a64"]);
-    EXPECT_EQ(b["scene"]["lights_hash_fnv1a64"], a["scene"]["lights_hash_fnv1a64"]); // only the view changed
+    EXPECT_EQ(b["scene"]["lights_hash_fnv1a64"],
+              a["scene"]["lights_hash_fnv1a64"]); // only the view changed
     for (const std::string& image : {std::string("reference.exr"), pipeline + ".exr"})
-        EXPECT_FALSE(readText(base + "/" + image) == readText(moved + "/" + image)) << image << ": same image";
+        EXPECT_FALSE(readText(base + "/" + image) == readText(moved + "/" + image))
+            << image << ": same image";
 
     // The report's camera object as the next run's --camera: the same view, bit for bit.
     const std::string fromReport = file + ".from_report.json";
@@ -388,18 +424,21 @@ TEST(Compare, CameraFileChangesTheViewAndRoundTrips) {
     EXPECT_EQ(c["scene"]["camera_hash_fnv1a64"], b["scene"]["camera_hash_fnv1a64"]);
     EXPECT_EQ(c["scene"]["content_hash_fnv1a64"], b["scene"]["content_hash_fnv1a64"]);
     for (const std::string& image : {std::string("reference.exr"), pipeline + ".exr"})
-        EXPECT_TRUE(readText(moved + "/" + image) == readText(again + "/" + image)) << image << " differs";
+        EXPECT_TRUE(readText(moved + "/" + image) == readText(again + "/" + image))
+            << image << " differs";
 
     const std::string sweep = freshDir("camera_sweep");
-    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--res", "64x36", "--lights", "4", "--frames", "1", "--warmup",
-                           "0", "--reference-frames", "0", "--pipelines", pipeline, "--camera", file, "--out", sweep}),
+    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--res", "64x36", "--lights", "4", "--frames",
+                           "1", "--warmup", "0", "--reference-frames", "0", "--pipelines", pipeline,
+                           "--camera", file, "--out", sweep}),
               0);
     json s = json::parse(readText(sweep + "/sweep.json"));
     EXPECT_EQ(s["camera"], cameraToJson(view));
     EXPECT_EQ(s["camera_source"]["kind"], "file");
     EXPECT_EQ(s["scene"]["camera_hash_fnv1a64"], b["scene"]["camera_hash_fnv1a64"]);
     if (!HasFailure())
-        for (const std::string& p : {base, moved, again, sweep, file, fromReport}) fs::remove_all(p);
+        for (const std::string& p : {base, moved, again, sweep, file, fromReport})
+            fs::remove_all(p);
 }
 
 // Under MSAA: the second reference (--reference-msaa center), each pipeline's error against
@@ -407,8 +446,8 @@ TEST(Compare, CameraFileChangesTheViewAndRoundTrips) {
 // --no-center-reference leaves it out.
 TEST(Compare, MsaaReportsErrorAgainstBothReferences) {
     const std::string out = freshDir("compare_msaa");
-    ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--msaa", "4", "--lights", "8", "--frames", "1",
-                      "--warmup", "0", "--validate", "--out", out}),
+    ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--msaa", "4", "--lights", "8",
+                      "--frames", "1", "--warmup", "0", "--validate", "--out", out}),
               0);
     EXPECT_TRUE(fs::exists(out + "/reference_center.exr"));
     json r = json::parse(readText(out + "/report.json"));
@@ -424,23 +463,26 @@ TEST(Compare, MsaaReportsErrorAgainstBothReferences) {
     EXPECT_GE(count(html, "<svg"), 3u); // timing bars and the two error/time plots
 
     const std::string off = freshDir("compare_msaa_off");
-    ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--msaa", "4", "--lights", "8", "--frames", "1",
-                      "--warmup", "0", "--pipelines", "forwardplus", "--no-center-reference", "--out", off}),
+    ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--msaa", "4", "--lights", "8",
+                      "--frames", "1", "--warmup", "0", "--pipelines", "forwardplus",
+                      "--no-center-reference", "--out", off}),
               0);
     EXPECT_FALSE(fs::exists(off + "/reference_center.exr"));
-    EXPECT_FALSE(json::parse(readText(off + "/report.json"))["center_reference"]["rendered"].get<bool>());
+    EXPECT_FALSE(
+        json::parse(readText(off + "/report.json"))["center_reference"]["rendered"].get<bool>());
 
     const std::string sweep = freshDir("sweep_msaa");
-    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4", "--res", "96x54", "--msaa", "4",
-                           "--pipelines", "forwardplus", "--msaa-shading", "pixel,sample", "--frames", "1",
-                           "--warmup", "0", "--out", sweep}),
+    ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4", "--res", "96x54", "--msaa",
+                           "4", "--pipelines", "forwardplus", "--msaa-shading", "pixel,sample",
+                           "--frames", "1", "--warmup", "0", "--out", sweep}),
               0);
     for (const auto& row : readCsv(sweep + "/sweep.csv")) {
         const bool pipeline = row.at("pipeline") != "reference";
         EXPECT_EQ(row.at("rmse_hdr_center").empty(), !pipeline) << row.at("pipeline");
         EXPECT_EQ(row.at("psnr_tonemapped_center").empty(), !pipeline) << row.at("pipeline");
     }
-    // sweep.html: time, memory, RMSE and HDR-FLIP plots, and the error against the centre reference.
+    // sweep.html: time, memory, RMSE and HDR-FLIP plots, and the error against the centre
+    // reference.
     const std::string sweepPage = readText(sweep + "/sweep.html");
     EXPECT_EQ(count(sweepPage, "<svg"), 5u);
     EXPECT_NE(sweepPage.find("RMSE vs centre reference"), std::string::npos);
@@ -465,13 +507,15 @@ TEST(Compare, SweepRecordsAFailedRunAndGoesOn) {
     EXPECT_EQ(cli::runSweep(o), 5);
     const auto rows = readCsv(out + "/sweep.csv");
     ASSERT_EQ(rows.size(), 3u); // forwardplus fixed, forwardplus compact, multipass_forward
-    for (int i : {0, 1}) { // the knob's check refuses 0 whatever the layout
+    for (int i : {0, 1}) {      // the knob's check refuses 0 whatever the layout
         EXPECT_EQ(rows[i].at("pipeline"), "forwardplus");
         EXPECT_EQ(rows[i].at("status"), "failed");
-        EXPECT_NE(rows[i].at("error").find("--tile-capacity '0'"), std::string::npos) << rows[i].at("error");
+        EXPECT_NE(rows[i].at("error").find("--tile-capacity '0'"), std::string::npos)
+            << rows[i].at("error");
     }
     EXPECT_EQ(rows[2].at("status"), "ok");
-    for (const auto& row : rows) EXPECT_TRUE(row.at("rmse_hdr").empty());
+    for (const auto& row : rows)
+        EXPECT_TRUE(row.at("rmse_hdr").empty());
     json j = json::parse(readText(out + "/sweep.json"));
     EXPECT_EQ(j["runs"][0]["status"], "failed");
     EXPECT_EQ(j["runs"][0]["error"], rows[0].at("error"));

@@ -17,9 +17,12 @@
 namespace tp::test {
 namespace {
 
-constexpr uint32_t kCourtyardBlendLayers = 4; // as forwardplus_test.cpp counts them on courtyard-small
+constexpr uint32_t kCourtyardBlendLayers =
+    4; // as forwardplus_test.cpp counts them on courtyard-small
 
-Scene courtyard(uint32_t count) { return courtyardSmallWithLights(count, 11); }
+Scene courtyard(uint32_t count) {
+    return courtyardSmallWithLights(count, 11);
+}
 
 RenderSettings settingsFor(uint32_t msaa, const char* hdr, const char* lighting) {
     RenderSettings s;
@@ -86,9 +89,10 @@ TEST(DeferredHdr, Fp16IsFp32WithinTheStorageBound) {
         Scene scene = courtyard(k.lights);
         SceneGpu gpuScene(*ctx, scene);
         for (uint32_t msaa : {1u, 4u}) {
-            const std::string what = std::string(k.lighting) + " " + std::to_string(k.lights) + " lights " +
-                                     std::to_string(msaa) + "x";
-            RunResult f = runOrFail(*ctx, gpuScene, "deferred", settingsFor(msaa, "fp32", k.lighting));
+            const std::string what = std::string(k.lighting) + " " + std::to_string(k.lights) +
+                                     " lights " + std::to_string(msaa) + "x";
+            RunResult f =
+                runOrFail(*ctx, gpuScene, "deferred", settingsFor(msaa, "fp32", k.lighting));
             RenderSettings hs = settingsFor(msaa, "fp16", k.lighting);
             RunResult h = runOrFail(*ctx, gpuScene, "deferred", hs);
             ASSERT_EQ(h.hdr.pixelCount(), f.hdr.pixelCount());
@@ -96,14 +100,16 @@ TEST(DeferredHdr, Fp16IsFp32WithinTheStorageBound) {
             BoundTerm bound = storageBound(scene, hs, kCourtyardBlendLayers);
             const double rel = bound.relative + (k.lights + 8.0) * kUlp32;
             Agreement a = agreement(h.hdr, f.hdr, rel, bound.absolute);
-            std::printf("[ fp16 hdr ] %s: worst |fp16 - fp32| = %.3g of the bound (%.3g relative), largest %.3g\n",
+            std::printf("[ fp16 hdr ] %s: worst |fp16 - fp32| = %.3g of the bound (%.3g relative), "
+                        "largest %.3g\n",
                         what.c_str(), a.worstRatio, rel, a.largest);
             EXPECT_LE(a.worstRatio, 1.0) << what << ": " << bound.why;
             EXPECT_GT(a.largest, 0.0) << what << ": --hdr fp16 changed nothing";
             for (const char* name : {"hdr", "hdr_msaa"}) {
                 const LedgerEntry* e16 = ledgerEntry(h, name);
                 const LedgerEntry* e32 = ledgerEntry(f, name);
-                ASSERT_EQ(e16 != nullptr, msaa > 1 || std::string(name) == "hdr") << what << " " << name;
+                ASSERT_EQ(e16 != nullptr, msaa > 1 || std::string(name) == "hdr")
+                    << what << " " << name;
                 ASSERT_EQ(e32 != nullptr, e16 != nullptr);
                 if (!e16) continue;
                 EXPECT_EQ(e16->format, VK_FORMAT_R16G16B16A16_SFLOAT) << what << " " << name;
@@ -133,8 +139,9 @@ TEST(DeferredHdr, Fp16MatchesTheReferenceWithinTheFp32BoundPlusStorage) {
             ErrorReport e = computeError(h.hdr, r.hdr);
             BoundTerm bound = storageBound(scene, s, kCourtyardBlendLayers);
             const double limit = 1e-4 + bound.relative + bound.absolute / 1e-3;
-            std::printf("[ fp16 hdr ] courtyard %u lights %ux: mean relative error %.3g (limit %.3g)\n", lights, msaa,
-                        e.meanRelative, limit);
+            std::printf(
+                "[ fp16 hdr ] courtyard %u lights %ux: mean relative error %.3g (limit %.3g)\n",
+                lights, msaa, e.meanRelative, limit);
             EXPECT_EQ(e.nanInfCount, 0u);
             EXPECT_LT(e.meanRelative, limit) << lights << " lights " << msaa << "x";
         }
@@ -158,7 +165,7 @@ TEST(DeferredHdr, TheModelCountsTheStores) {
     };
     EXPECT_EQ(storeCount(settingsFor(1, "fp32", "tiled")), 0.0);
     EXPECT_DOUBLE_EQ(storeCount(settingsFor(1, "fp16", "tiled")), 1.0);
-    EXPECT_DOUBLE_EQ(storeCount(settingsFor(4, "fp16", "tiled")), 2.0); // hdr_msaa, resolve
+    EXPECT_DOUBLE_EQ(storeCount(settingsFor(4, "fp16", "tiled")), 2.0);   // hdr_msaa, resolve
     EXPECT_DOUBLE_EQ(storeCount(settingsFor(1, "fp16", "volumes")), 5.0); // base, 4 light blends
 }
 

@@ -10,12 +10,12 @@
 #include "core/gpu/ledger.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
-#include "core/passes/blended_bounds.h"
 #include "core/image/metrics.h"
+#include "core/passes/blended_bounds.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
-#include "include/light_assign.h"
 #include "gpu_test_util.h"
+#include "include/light_assign.h"
 
 namespace tp::test {
 namespace {
@@ -34,7 +34,9 @@ Scene floorWithLights(uint32_t count) {
     return s;
 }
 
-Scene courtyardWithLights(uint32_t count) { return courtyardSmallWithLights(count, 11); }
+Scene courtyardWithLights(uint32_t count) {
+    return courtyardSmallWithLights(count, 11);
+}
 
 struct Pair {
     RunResult deferred, reference;
@@ -108,8 +110,9 @@ RenderSettings withPosition(RenderSettings s, const char* position) {
 // |d - r| / bound, asserted <= 1 and printed with the worst relative error.
 constexpr double kEvaluationUlps = 8.0;
 
-double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r, uint32_t lights, uint32_t samples,
-                                          const std::string& what, const std::vector<uint8_t>* only = nullptr) {
+double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r, uint32_t lights,
+                                          uint32_t samples, const std::string& what,
+                                          const std::vector<uint8_t>* only = nullptr) {
     const double u = std::ldexp(1.0, -24);
     const double n = double(samples) * (lights + 1);
     double worstRatio = 0.0, worstRelative = 0.0;
@@ -117,20 +120,24 @@ double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r
         if (only && !(*only)[i]) continue;
         for (int c = 0; c < 3; ++c) {
             double x = d.rgba[i * 4 + c], y = r.rgba[i * 4 + c];
-            double bound = (2.0 * (n - 1.0) + 6.0 + kEvaluationUlps) * u * std::max(std::abs(x), std::abs(y)) + 1e-30;
+            double bound =
+                (2.0 * (n - 1.0) + 6.0 + kEvaluationUlps) * u * std::max(std::abs(x), std::abs(y)) +
+                1e-30;
             worstRatio = std::max(worstRatio, std::abs(x - y) / bound);
             worstRelative = std::max(worstRelative, std::abs(x - y) / (std::abs(y) + 1e-4));
         }
     }
-    EXPECT_LE(worstRatio, 1.0) << what << ": deferred against the depth reference, worst |d - r| / bound = "
+    EXPECT_LE(worstRatio, 1.0) << what
+                               << ": deferred against the depth reference, worst |d - r| / bound = "
                                << worstRatio;
-    std::printf("[ vs depth reference ] %s: worst difference = %.3g of the bound (%.3g relative)\n", what.c_str(),
-                worstRatio, worstRelative);
+    std::printf("[ vs depth reference ] %s: worst difference = %.3g of the bound (%.3g relative)\n",
+                what.c_str(), worstRatio, worstRelative);
     return worstRatio;
 }
 
 // (b): asserted below `bound` on a CPU device (lavapipe in CI), printed everywhere.
-void checkReconstructionError(const GpuContext& ctx, double value, double bound, const std::string& what) {
+void checkReconstructionError(const GpuContext& ctx, double value, double bound,
+                              const std::string& what) {
     std::printf("[ reconstruction ] %s: %.3g (lavapipe bound %.3g%s)\n", what.c_str(), value, bound,
                 ctx.isCpuDevice() ? "" : ", not asserted on this device");
     if (ctx.isCpuDevice()) {
@@ -166,7 +173,8 @@ TEST(Deferred, WideMatchesReferenceOnTheFloor) {
         const std::string what = "floor " + std::to_string(lights) + " lights 1x";
         EXPECT_EQ(computeError(p.deferred.hdr, p.interpolated.hdr).nanInfCount, 0u) << what;
         expectWithinTheDepthReferenceBound(p.deferred.hdr, p.fromDepth.hdr, lights, 1, what);
-        checkReconstructionError(*ctx, maxRelativeError(p.fromDepth.hdr, p.interpolated.hdr, 1e-4), 2.5e-4, what);
+        checkReconstructionError(*ctx, maxRelativeError(p.fromDepth.hdr, p.interpolated.hdr, 1e-4),
+                                 2.5e-4, what);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -190,8 +198,9 @@ TEST(Deferred, WideMatchesReferenceOnTheCourtyard) {
         const std::string what = "courtyard " + std::to_string(lights) + " lights 1x";
         EXPECT_EQ(computeError(p.deferred.hdr, p.interpolated.hdr).nanInfCount, 0u) << what;
         expectWithinTheDepthReferenceBound(p.deferred.hdr, p.fromDepth.hdr, lights, 1, what);
-        checkReconstructionError(*ctx, computeError(p.fromDepth.hdr, p.interpolated.hdr).meanRelative, 1e-4,
-                                 what + " (mean)");
+        checkReconstructionError(*ctx,
+                                 computeError(p.fromDepth.hdr, p.interpolated.hdr).meanRelative,
+                                 1e-4, what + " (mean)");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -217,18 +226,20 @@ TEST(Deferred, SampleRateGBufferMatchesTheSupersampledReferenceAt4x) {
             Scene scene = courtyard ? courtyardWithLights(lights) : floorWithLights(lights);
             SceneGpu gpuScene(*ctx, scene);
             Split p = renderSplit(*ctx, gpuScene, s);
-            const std::string what = std::string(courtyard ? "courtyard " : "floor ") + std::to_string(lights) +
-                                     " lights 4x sample-rate";
+            const std::string what = std::string(courtyard ? "courtyard " : "floor ") +
+                                     std::to_string(lights) + " lights 4x sample-rate";
             EXPECT_EQ(computeError(p.deferred.hdr, p.interpolated.hdr).nanInfCount, 0u) << what;
             // (a) per sample, resolved: N = 4 (lights + 1).
             expectWithinTheDepthReferenceBound(p.deferred.hdr, p.fromDepth.hdr, lights, 4, what);
             // (b) as at 1x: the worst pixel on the floor, the mean on the courtyard.
             if (courtyard)
-                checkReconstructionError(*ctx, computeError(p.fromDepth.hdr, p.interpolated.hdr).meanRelative, 1e-4,
-                                         what + " (mean)");
+                checkReconstructionError(
+                    *ctx, computeError(p.fromDepth.hdr, p.interpolated.hdr).meanRelative, 1e-4,
+                    what + " (mean)");
             else
-                checkReconstructionError(*ctx, maxRelativeError(p.fromDepth.hdr, p.interpolated.hdr, 1e-4), 2.5e-4,
-                                         what);
+                checkReconstructionError(
+                    *ctx, maxRelativeError(p.fromDepth.hdr, p.interpolated.hdr, 1e-4), 2.5e-4,
+                    what);
         }
     }
     expectNoValidationMessages(*ctx);
@@ -281,18 +292,22 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
             }
         }
         const size_t edgeCount = size_t(std::count(isEdge.begin(), isEdge.end(), uint8_t(1)));
-        std::printf("[ 4x pixel-rate ] %u lights: %zu edge pixels, %zu others (centre against the supersampled "
+        std::printf("[ 4x pixel-rate ] %u lights: %zu edge pixels, %zu others (centre against the "
+                    "supersampled "
                     "reference: %.3g)\n",
                     lights, edgeCount, pixels - edgeCount, shadingRate);
         EXPECT_GT(edgeCount, 0u) << "the box's silhouette must be found";
         EXPECT_GT(pixels - edgeCount, edgeCount) << "most of the floor is one surface per pixel";
         const std::string what = std::to_string(lights) + " lights 4x pixel-rate, ";
         expectWithinTheDepthReferenceBound(deferred.hdr, samplesDepth.hdr, lights, 4,
-                                           what + "edge pixels against the supersampled reference", &isEdge);
-        expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
-                                           what + "other pixels against the centre-shaded reference", &isOther);
-        checkReconstructionError(*ctx, maxRelativeError(centreDepth.hdr, centre.hdr, 1e-4, &isOther), 2.5e-4,
-                                 what + "other pixels, centre-shaded");
+                                           what + "edge pixels against the supersampled reference",
+                                           &isEdge);
+        expectWithinTheDepthReferenceBound(
+            deferred.hdr, centreDepth.hdr, lights, 4,
+            what + "other pixels against the centre-shaded reference", &isOther);
+        checkReconstructionError(*ctx,
+                                 maxRelativeError(centreDepth.hdr, centre.hdr, 1e-4, &isOther),
+                                 2.5e-4, what + "other pixels, centre-shaded");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -335,13 +350,16 @@ TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
         ImageRGBA a = centreDepth.hdr, b = centre.hdr; // the other pixels only, for the mean
         for (size_t i = 0; i < isOther.size(); ++i) {
             isOther[i] = edges->rgba[i * 4] <= 0.5f;
-            for (int c = 0; c < 4 && !isOther[i]; ++c) a.rgba[i * 4 + c] = b.rgba[i * 4 + c] = 0.0f;
+            for (int c = 0; c < 4 && !isOther[i]; ++c)
+                a.rgba[i * 4 + c] = b.rgba[i * 4 + c] = 0.0f;
         }
-        const std::string what = "courtyard " + std::to_string(lights) + " lights 4x pixel-rate, other pixels";
+        const std::string what =
+            "courtyard " + std::to_string(lights) + " lights 4x pixel-rate, other pixels";
         EXPECT_EQ(computeError(deferred.hdr, centre.hdr).nanInfCount, 0u) << what;
         expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
                                            what + " against the centre-shaded reference", &isOther);
-        checkReconstructionError(*ctx, computeError(a, b).meanRelative, 1e-4, what + ", centre-shaded (mean)");
+        checkReconstructionError(*ctx, computeError(a, b).meanRelative, 1e-4,
+                                 what + ", centre-shaded (mean)");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -382,7 +400,8 @@ TEST(Deferred, VolumesAgreeWithTiled) {
             if (mode == 5u) s.set("msaa-shading", "sample");
             RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "tiled"));
             RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "volumes"));
-            std::string what = "floor " + std::to_string(lights) + " lights " + std::to_string(msaa) + "x " + (mode == 5u ? "sample" : "pixel");
+            std::string what = "floor " + std::to_string(lights) + " lights " +
+                               std::to_string(msaa) + "x " + (mode == 5u ? "sample" : "pixel");
             expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, lights, msaa, what);
         }
     // The courtyard has blended cloth: under MSAA both modes light hdr_msaa per sample and the
@@ -394,7 +413,8 @@ TEST(Deferred, VolumesAgreeWithTiled) {
         s.set("msaa-shading", rate);
         RunResult tiled = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "tiled"));
         RunResult volumes = runOrFail(*ctx, courtyardGpu, "deferred", withLighting(s, "volumes"));
-        expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, 64, 4, std::string("courtyard 64 lights 4x ") + rate);
+        expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, 64, 4,
+                                        std::string("courtyard 64 lights 4x ") + rate);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -420,7 +440,8 @@ TEST(Deferred, BinnedCullingFindsWhatEveryLightFinds) {
         RunResult all = runOrFail(*ctx, gpuScene, "deferred", s);
         s.set("light-cull", "binned");
         RunResult binned = runOrFail(*ctx, gpuScene, "deferred", s);
-        for (const char* c : {"lights_per_tile_mean", "lights_per_tile_max", "transparent_lights_stored"}) {
+        for (const char* c :
+             {"lights_per_tile_mean", "lights_per_tile_max", "transparent_lights_stored"}) {
             EXPECT_EQ(counter(binned, c), counter(all, c)) << c << " " << msaa << "x";
             EXPECT_GT(counter(binned, c), 0.0) << c;
         }
@@ -428,7 +449,8 @@ TEST(Deferred, BinnedCullingFindsWhatEveryLightFinds) {
         EXPECT_LT(counter(binned, "light_candidates"), counter(all, "light_candidates"));
         std::printf("[ deferred ] binned culling %ux: %.0f light-tile tests against %.0f\n", msaa,
                     counter(binned, "light_candidates"), counter(all, "light_candidates"));
-        expectAgreeWithinSummationBound(binned.hdr, all.hdr, 256, msaa, "binned vs all " + std::to_string(msaa) + "x");
+        expectAgreeWithinSummationBound(binned.hdr, all.hdr, 256, msaa,
+                                        "binned vs all " + std::to_string(msaa) + "x");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -455,15 +477,16 @@ TEST(Deferred, ClusteredWithinTheTiledBounds) {
         for (uint32_t slices : {4u, 64u}) {
             s.set("slices", slices);
             RunResult clustered = runOrFail(*ctx, gpuScene, "deferred", s);
-            const std::string what = "floor " + std::to_string(lights) + " lights, " + std::to_string(slices) +
-                                     " slices";
+            const std::string what = "floor " + std::to_string(lights) + " lights, " +
+                                     std::to_string(slices) + " slices";
             EXPECT_EQ(computeError(clustered.hdr, fromDepth.hdr).nanInfCount, 0u) << what;
             expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, lights, 1, what);
         }
     }
     Scene courtyard = courtyardWithLights(256);
     SceneGpu gpuScene(*ctx, courtyard);
-    RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "depth"));
+    RunResult fromDepth =
+        runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "depth"));
     for (uint32_t slices : {4u, 64u}) {
         for (uint32_t msaa : {1u, 4u}) {
             RenderSettings s = small(msaa, "wide");
@@ -473,10 +496,12 @@ TEST(Deferred, ClusteredWithinTheTiledBounds) {
             s.set("slices", slices);
             RunResult clustered = runOrFail(*ctx, gpuScene, "deferred", s);
             expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, 256, msaa,
-                                            "courtyard clustered vs tiled, " + std::to_string(slices) + " slices");
+                                            "courtyard clustered vs tiled, " +
+                                                std::to_string(slices) + " slices");
             if (msaa == 1)
                 expectWithinTheDepthReferenceBound(clustered.hdr, fromDepth.hdr, 256, 1,
-                                                   "courtyard 256 lights, " + std::to_string(slices) + " slices");
+                                                   "courtyard 256 lights, " +
+                                                       std::to_string(slices) + " slices");
         }
     }
     expectNoValidationMessages(*ctx);
@@ -506,11 +531,12 @@ TEST(Deferred, TiledShadesEveryLightBeyondTheSharedListAndTheLoopLimit) {
         s.set("tile", tile);
         RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "tiled"));
         RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(s, "volumes"));
-        std::string what = "floor " + std::to_string(lights) + " lights, tile " + std::to_string(tile) + ", " +
-                           std::to_string(msaa) + "x";
+        std::string what = "floor " + std::to_string(lights) + " lights, tile " +
+                           std::to_string(tile) + ", " + std::to_string(msaa) + "x";
         expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, lights, msaa, what);
         EXPECT_EQ(counter(tiled, "lights_per_tile_max"), double(lights)) << what;
-        EXPECT_EQ(counter(tiled, "tiles_over_shared_capacity"), double((32 / tile) * (32 / tile))) << what;
+        EXPECT_EQ(counter(tiled, "tiles_over_shared_capacity"), double((32 / tile) * (32 / tile)))
+            << what;
     }
     expectNoValidationMessages(*ctx);
 }
@@ -555,15 +581,20 @@ TEST(Deferred, VolumesHandleEveryLightKindACameraInsideAndAFarPlane) {
         SceneGpu gpuScene(*ctx, scene);
         uint32_t n = uint32_t(scene.lights.size());
         for (uint32_t msaa : {1u, 4u}) {
-            RunResult tiled = runOrFail(*ctx, gpuScene, "deferred", withLighting(small(msaa, "wide"), "tiled"));
-            RunResult volumes = runOrFail(*ctx, gpuScene, "deferred", withLighting(small(msaa, "wide"), "volumes"));
-            std::string what = "every kind, zfar " + std::to_string(zfar) + ", " + std::to_string(msaa) + "x";
+            RunResult tiled =
+                runOrFail(*ctx, gpuScene, "deferred", withLighting(small(msaa, "wide"), "tiled"));
+            RunResult volumes =
+                runOrFail(*ctx, gpuScene, "deferred", withLighting(small(msaa, "wide"), "volumes"));
+            std::string what =
+                "every kind, zfar " + std::to_string(zfar) + ", " + std::to_string(msaa) + "x";
             expectAgreeWithinSummationBound(tiled.hdr, volumes.hdr, n, msaa, what);
             if (msaa > 1) continue;
-            RunResult fromDepth = runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "depth"));
+            RunResult fromDepth =
+                runOrFail(*ctx, gpuScene, "reference", withPosition(small(1, "wide"), "depth"));
             RunResult reference = runOrFail(*ctx, gpuScene, "reference", small(1, "wide"));
             expectWithinTheDepthReferenceBound(volumes.hdr, fromDepth.hdr, n, 1, what);
-            checkReconstructionError(*ctx, maxRelativeError(fromDepth.hdr, reference.hdr, 1e-4), 2.5e-4, what);
+            checkReconstructionError(*ctx, maxRelativeError(fromDepth.hdr, reference.hdr, 1e-4),
+                                     2.5e-4, what);
         }
     }
     expectNoValidationMessages(*ctx);
@@ -572,7 +603,8 @@ TEST(Deferred, VolumesHandleEveryLightKindACameraInsideAndAFarPlane) {
 uint64_t gbufferBytes(const RunResult& run, bool msaa) {
     uint64_t bytes = 0;
     for (const LedgerEntry& e : run.memory)
-        if (e.tag.name.rfind("gbuffer_", 0) == 0 || (!msaa && e.tag.name == "depth")) bytes += e.requestedBytes;
+        if (e.tag.name.rfind("gbuffer_", 0) == 0 || (!msaa && e.tag.name == "depth"))
+            bytes += e.requestedBytes;
     return bytes;
 }
 
@@ -592,7 +624,8 @@ TEST(Deferred, LedgerHoldsTheLayoutsBytesAndNoUnneededTargets) {
     for (uint32_t msaa : {1u, 4u})
         for (auto [layout, bytes] : {std::pair{"compact", 14u}, std::pair{"wide", 44u}}) {
             RunResult r = runOrFail(*ctx, floorGpu, "deferred", small(msaa, layout));
-            EXPECT_EQ(gbufferBytes(r, msaa > 1), uint64_t(96) * 64 * msaa * bytes) << layout << " " << msaa;
+            EXPECT_EQ(gbufferBytes(r, msaa > 1), uint64_t(96) * 64 * msaa * bytes)
+                << layout << " " << msaa;
             EXPECT_FALSE(hasEntry(r, "gbuffer_emissive"));
             EXPECT_FALSE(hasEntry(r, "transparent_lists"));
             EXPECT_EQ(hasEntry(r, "gbuffer_depth_msaa"), msaa > 1);
@@ -643,10 +676,12 @@ TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
         const double words = counter(b, "transparent_list_mask_words");
         EXPECT_EQ(entryBytes(b, "transparent_lists"), tiles * 16 + uint64_t(words) * 4) << lighting;
         EXPECT_LE(words, slots / 32 + double(tiles)) << lighting;
-        EXPECT_EQ(counter(b, "transparent_lights_stored"), counter(r, "transparent_lights_stored")) << lighting;
+        EXPECT_EQ(counter(b, "transparent_lights_stored"), counter(r, "transparent_lights_stored"))
+            << lighting;
         EXPECT_EQ(counter(b, "transparent_lights_dropped"), 0.0) << lighting;
         expectAgreeWithinSummationBound(b.hdr, r.hdr, lights, 1,
-                                        std::string("transparent bitmasks vs index lists, ") + lighting);
+                                        std::string("transparent bitmasks vs index lists, ") +
+                                            lighting);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -677,7 +712,8 @@ TEST(Deferred, ClusteredBlendedSurfacesMatchTheReferenceOnTheCourtyard) {
         const uint64_t words = uint64_t(counter(clustered, "transparent_list_mask_words"));
         EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"), 4 * (2 * tiles + 16 * words));
         expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, lights, 1,
-                                        "courtyard clustered vs tiled, " + std::to_string(lights) + " lights");
+                                        "courtyard clustered vs tiled, " + std::to_string(lights) +
+                                            " lights");
         RunResult fromDepth = runOrFail(*ctx, yardGpu, "reference", withPosition(s, "depth"));
         const std::string what = "courtyard clustered " + std::to_string(lights) + " lights";
         EXPECT_EQ(computeError(clustered.hdr, fromDepth.hdr).nanInfCount, 0u) << what;
@@ -696,7 +732,8 @@ TEST(Deferred, BlendedSurfaceOverTheSkyKeepsLightsBeyondTheOpaqueDepth) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     Light light;
-    light.position = {0.0f, -6.5f, -19.0f}; // lights the wall just above the floor's far edge on screen
+    light.position = {0.0f, -6.5f,
+                      -19.0f}; // lights the wall just above the floor's far edge on screen
     light.range = 4.0f;
     light.intensity = 50.0f;
     Scene scene = makeFloorScene({light});
@@ -719,7 +756,8 @@ TEST(Deferred, BlendedSurfaceOverTheSkyKeepsLightsBeyondTheOpaqueDepth) {
         settings.set("light-assign", assign);
         Pair p = renderBoth(*ctx, scene, settings);
         EXPECT_EQ(p.error.nanInfCount, 0u);
-        EXPECT_LT(maxRelativeError(p.deferred.hdr, p.reference.hdr, 1e-4), 2.5e-4) << assign << ": " << describe(p.error);
+        EXPECT_LT(maxRelativeError(p.deferred.hdr, p.reference.hdr, 1e-4), 2.5e-4)
+            << assign << ": " << describe(p.error);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -762,7 +800,8 @@ TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
             RenderSettings s = small(msaa, "compact");
             s.set("light-assign", assign);
             std::vector<uint8_t> statBytes;
-            std::vector<uint8_t> bytes = exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds", &statBytes);
+            std::vector<uint8_t> bytes =
+                exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds", &statBytes);
             std::vector<la::TileBlendedBounds> b = la::unpackBlendedBounds(bytes, tiles);
             ASSERT_EQ(statBytes.size(), size_t(tiles) * 16);
             std::vector<uint32_t> stats(tiles * 4);
@@ -781,7 +820,8 @@ TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
             // Both shade blended fragments at the rate --msaa-shading gives (pixel: at the centre).
             for (const char* rate : {"pixel", "sample"}) {
                 s.set("msaa-shading", rate);
-                const std::vector<uint8_t> ours = exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds");
+                const std::vector<uint8_t> ours =
+                    exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds");
                 EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), ours)
                     << assign << " " << msaa << "x " << rate;
                 if (msaa == 1) break; // the rate changes nothing at 1x
@@ -806,13 +846,16 @@ TEST(Deferred, TransparentIndexListsHoldTheirLightsInAscendingOrder) {
         const char* lighting;
     };
     const uint32_t tiles = (96 / 16) * (64 / 16);
-    for (Case k : {Case{256, 1, "tiled"}, Case{256, 4, "tiled"}, Case{256, 4, "volumes"}, Case{4500, 1, "tiled"}}) {
+    for (Case k : {Case{256, 1, "tiled"}, Case{256, 4, "tiled"}, Case{256, 4, "volumes"},
+                   Case{4500, 1, "tiled"}}) {
         Scene yard = courtyardWithLights(k.lights);
         SceneGpu yardGpu(*ctx, yard);
         RenderSettings s = withLighting(small(k.msaa, "compact"), k.lighting);
         s.set("light-cull", "all");
-        const std::string what = std::to_string(k.lights) + " lights " + std::to_string(k.msaa) + "x " + k.lighting;
-        std::vector<uint8_t> bytes = exportedBuffer(*ctx, yardGpu, "deferred", s, "transparent_lists");
+        const std::string what =
+            std::to_string(k.lights) + " lights " + std::to_string(k.msaa) + "x " + k.lighting;
+        std::vector<uint8_t> bytes =
+            exportedBuffer(*ctx, yardGpu, "deferred", s, "transparent_lists");
         std::vector<uint32_t> words(bytes.size() / 4);
         std::memcpy(words.data(), bytes.data(), words.size() * 4);
         ASSERT_GE(words.size(), size_t(tiles) * TP_LA_HEADER_WORDS) << what;
@@ -823,16 +866,20 @@ TEST(Deferred, TransparentIndexListsHoldTheirLightsInAscendingOrder) {
             const uint32_t count = h[0], start = h[1];
             EXPECT_EQ(h[2], 0u) << what << " tile " << t << ": dropped";
             ASSERT_LE(size_t(start) + count, words.size()) << what << " tile " << t;
-            for (uint32_t i = 0; i < count; ++i) EXPECT_LT(words[start + i], k.lights) << what << " tile " << t;
-            for (uint32_t i = 1; i < count; ++i) unordered += words[start + i - 1] >= words[start + i];
+            for (uint32_t i = 0; i < count; ++i)
+                EXPECT_LT(words[start + i], k.lights) << what << " tile " << t;
+            for (uint32_t i = 1; i < count; ++i)
+                unordered += words[start + i - 1] >= words[start + i];
             longest = std::max(longest, size_t(count));
-            bothChunks = bothChunks || (count > 0 && words[start] < 4096 && words[start + count - 1] >= 4096);
+            bothChunks = bothChunks ||
+                         (count > 0 && words[start] < 4096 && words[start + count - 1] >= 4096);
         }
         EXPECT_EQ(unordered, 0u) << what << ": neighbours out of ascending order";
         EXPECT_GT(longest, 1u) << what << ": no list to order";
-        EXPECT_TRUE(bothChunks || k.lights <= 4096) << what << ": no list with lights of both chunks";
-        std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(), longest,
-                    unordered);
+        EXPECT_TRUE(bothChunks || k.lights <= 4096)
+            << what << ": no list with lights of both chunks";
+        std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(),
+                    longest, unordered);
     }
     expectNoValidationMessages(*ctx);
 }

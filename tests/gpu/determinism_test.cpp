@@ -29,7 +29,8 @@ struct Config {
 
 std::string describe(const Config& c, uint32_t msaa) {
     std::string s = std::string(c.pipeline) + " " + std::to_string(msaa) + "x";
-    for (const auto& [k, v] : c.knobs) s += std::string(" --") + k + " " + v;
+    for (const auto& [k, v] : c.knobs)
+        s += std::string(" --") + k + " " + v;
     return s;
 }
 
@@ -55,7 +56,8 @@ size_t differingPixels(const ImageRGBA& a, const ImageRGBA& b, size_t& first) {
     size_t n = 0;
     first = 0;
     for (size_t i = 0; i < a.pixelCount(); ++i)
-        if (std::memcmp(&a.rgba[i * 4], &b.rgba[i * 4], 4 * sizeof(float)) != 0 && n++ == 0) first = i;
+        if (std::memcmp(&a.rgba[i * 4], &b.rgba[i * 4], 4 * sizeof(float)) != 0 && n++ == 0)
+            first = i;
     return n;
 }
 
@@ -72,7 +74,8 @@ TEST(Determinism, EveryConfigurationRendersTheSameBytesTwice) {
             s.width = 96;
             s.height = 64;
             s.msaa = msaa;
-            for (const auto& [k, v] : c.knobs) s.set(k, v);
+            for (const auto& [k, v] : c.knobs)
+                s.set(k, v);
             const std::string what = describe(c, msaa);
             const auto t0 = std::chrono::steady_clock::now();
             RunResult first = runOrFail(*ctx, gpuScene, c.pipeline, s);
@@ -80,10 +83,14 @@ TEST(Determinism, EveryConfigurationRendersTheSameBytesTwice) {
             ASSERT_EQ(first.hdr.rgba.size(), second.hdr.rgba.size()) << what;
             size_t at = 0;
             const size_t n = differingPixels(first.hdr, second.hdr, at);
-            EXPECT_EQ(n, 0u) << what << ": " << n << " pixels differ between two runs, the first at "
-                             << at % s.width << "," << at / s.width;
-            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            std::printf("[ determinism ] %s: %zu pixels differ (two runs: %.0f ms)\n", what.c_str(), n, ms);
+            EXPECT_EQ(n, 0u) << what << ": " << n
+                             << " pixels differ between two runs, the first at " << at % s.width
+                             << "," << at / s.width;
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count();
+            std::printf("[ determinism ] %s: %zu pixels differ (two runs: %.0f ms)\n", what.c_str(),
+                        n, ms);
         }
     }
     expectNoValidationMessages(*ctx);

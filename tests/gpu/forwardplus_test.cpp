@@ -22,16 +22,16 @@
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/difference.h"
+#include "core/lightassign/knobs.h"
+#include "core/lightassign/light_classes.h"
+#include "core/lightassign/tile_bound.h"
+#include "core/lightassign/tile_grid.h"
+#include "core/passes/blended_bounds.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "forwardplus/forwardplus_debug.h"
-#include "forwardplus/light_culling.h"
-#include "core/passes/blended_bounds.h"
-#include "core/lightassign/light_classes.h"
-#include "core/lightassign/knobs.h"
-#include "core/lightassign/tile_bound.h"
-#include "core/lightassign/tile_grid.h"
 #include "forwardplus/forwardplus_shared.h"
+#include "forwardplus/light_culling.h"
 #include "gpu_test_util.h"
 #include "include/light_model.h"
 
@@ -102,7 +102,8 @@ Comparison compare(const ImageRGBA& got, const ImageRGBA& ref, uint32_t lightCou
                    uint32_t blendLayers) {
     Comparison c;
     const double roundings = (msaa > 1 ? 2.0 : 1.0) + blendLayers;
-    const double relTol = roundings * std::ldexp(1.0, -10) + (lightCount + 8.0) * std::ldexp(1.0, -24) + 1e-5;
+    const double relTol =
+        roundings * std::ldexp(1.0, -10) + (lightCount + 8.0) * std::ldexp(1.0, -24) + 1e-5;
     for (uint32_t y = 0; y < ref.height; ++y)
         for (uint32_t x = 0; x < ref.width; ++x)
             for (int ch = 0; ch < 3; ++ch) {
@@ -131,16 +132,19 @@ void expectMatchesReference(const Scene& scene, RenderSettings settings, uint32_
     RunResult fp = runOrFail(*ctx, gpuScene, "forwardplus", settings);
     ASSERT_EQ(fp.hdr.width, ref.hdr.width);
     ASSERT_EQ(fp.hdr.height, ref.hdr.height);
-    Comparison c = compare(fp.hdr, ref.hdr, uint32_t(scene.lights.size()), settings.msaa, blendLayers);
+    Comparison c =
+        compare(fp.hdr, ref.hdr, uint32_t(scene.lights.size()), settings.msaa, blendLayers);
     EXPECT_EQ(c.nonFinite, 0u);
-    EXPECT_LE(c.worstRatio, 1.0) << "worst pixel " << c.worstX << "," << c.worstY << ": got " << c.worstGot
-                                 << ", reference " << c.worstRef;
+    EXPECT_LE(c.worstRatio, 1.0) << "worst pixel " << c.worstX << "," << c.worstY << ": got "
+                                 << c.worstGot << ", reference " << c.worstRef;
     EXPECT_EQ(statOf(fp, "lights_dropped"), 0.0);
     EXPECT_EQ(fp.depth.r, ref.depth.r) << "prepass depth differs from the reference's depth";
     double sum = 0.0;
-    for (size_t i = 0; i < ref.hdr.pixelCount(); ++i) sum += ref.hdr.rgba[i * 4];
+    for (size_t i = 0; i < ref.hdr.pixelCount(); ++i)
+        sum += ref.hdr.rgba[i * 4];
     EXPECT_GT(sum, 0.0);
-    std::printf("[ forwardplus ] %zu lights, %ux%u, %ux: worst |d|/tol = %.3g, lights/tile mean %.2f max %.0f\n",
+    std::printf("[ forwardplus ] %zu lights, %ux%u, %ux: worst |d|/tol = %.3g, lights/tile mean "
+                "%.2f max %.0f\n",
                 scene.lights.size(), settings.width, settings.height, settings.msaa, c.worstRatio,
                 statOf(fp, "lights_per_tile_mean"), statOf(fp, "lights_per_tile_max"));
     expectNoValidationMessages(*ctx);
@@ -159,12 +163,24 @@ RenderSettings small(uint32_t w, uint32_t h, uint32_t msaa) {
 
 // ---- against the reference ----
 
-TEST(ForwardPlusReference, FloorNoLights) { expectMatchesReference(floorScene(0), small(96, 64, 1)); }
-TEST(ForwardPlusReference, FloorOneLight) { expectMatchesReference(floorScene(1), small(96, 64, 1)); }
-TEST(ForwardPlusReference, Floor256Lights) { expectMatchesReference(floorScene(256), small(96, 64, 1)); }
-TEST(ForwardPlusReference, Floor256LightsMsaa4) { expectMatchesReference(floorScene(256), small(96, 64, 4)); }
-TEST(ForwardPlusReference, Floor4096LightsTiny) { expectMatchesReference(floorScene(4096), small(40, 24, 1)); }
-TEST(ForwardPlusReference, Floor4096LightsTinyMsaa4) { expectMatchesReference(floorScene(4096), small(40, 24, 4)); }
+TEST(ForwardPlusReference, FloorNoLights) {
+    expectMatchesReference(floorScene(0), small(96, 64, 1));
+}
+TEST(ForwardPlusReference, FloorOneLight) {
+    expectMatchesReference(floorScene(1), small(96, 64, 1));
+}
+TEST(ForwardPlusReference, Floor256Lights) {
+    expectMatchesReference(floorScene(256), small(96, 64, 1));
+}
+TEST(ForwardPlusReference, Floor256LightsMsaa4) {
+    expectMatchesReference(floorScene(256), small(96, 64, 4));
+}
+TEST(ForwardPlusReference, Floor4096LightsTiny) {
+    expectMatchesReference(floorScene(4096), small(40, 24, 1));
+}
+TEST(ForwardPlusReference, Floor4096LightsTinyMsaa4) {
+    expectMatchesReference(floorScene(4096), small(40, 24, 4));
+}
 
 TEST(ForwardPlusReference, FloorTileSizes8And32) {
     for (uint32_t tile : {8u, 32u}) {
@@ -175,9 +191,15 @@ TEST(ForwardPlusReference, FloorTileSizes8And32) {
     }
 }
 
-TEST(ForwardPlusReference, CourtyardNoLights) { expectMatchesReference(courtyardScene(0), small(96, 54, 1), 4); }
-TEST(ForwardPlusReference, CourtyardOneLight) { expectMatchesReference(courtyardScene(1), small(96, 54, 1), 4); }
-TEST(ForwardPlusReference, Courtyard256Lights) { expectMatchesReference(courtyardScene(256), small(96, 54, 1), 4); }
+TEST(ForwardPlusReference, CourtyardNoLights) {
+    expectMatchesReference(courtyardScene(0), small(96, 54, 1), 4);
+}
+TEST(ForwardPlusReference, CourtyardOneLight) {
+    expectMatchesReference(courtyardScene(1), small(96, 54, 1), 4);
+}
+TEST(ForwardPlusReference, Courtyard256Lights) {
+    expectMatchesReference(courtyardScene(256), small(96, 54, 1), 4);
+}
 TEST(ForwardPlusReference, Courtyard256LightsMsaa4) {
     expectMatchesReference(courtyardScene(256), small(96, 54, 4), 4);
 }
@@ -202,7 +224,8 @@ TEST(ForwardPlusReference, Courtyard4096LightsTinyMsaa4) {
 // centre, not the centroid), and the resolve averages the same samples: the same bound
 // holds, and the test checks edge pixels against it too (docs/forwardplus.md). Edge pixels
 // are found with deferred's edge mask (samples whose G-buffer differs), a fact about the scene.
-void expectPixelRateMatchesCentreReference(const Scene& scene, RenderSettings settings, uint32_t blendLayers) {
+void expectPixelRateMatchesCentreReference(const Scene& scene, RenderSettings settings,
+                                           uint32_t blendLayers) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     SceneGpu gpuScene(*ctx, scene);
@@ -231,10 +254,12 @@ void expectPixelRateMatchesCentreReference(const Scene& scene, RenderSettings se
     Comparison ed = compare(fpEdge, edge, lights, settings.msaa, blendLayers);
     EXPECT_EQ(in.nonFinite + ed.nonFinite, 0u);
     EXPECT_GT(edgeCount, 0u);
-    EXPECT_LE(in.worstRatio, 1.0) << "interior: worst pixel " << in.worstX << "," << in.worstY << ": got "
-                                  << in.worstGot << ", centre reference " << in.worstRef;
-    EXPECT_LE(ed.worstRatio, 1.0) << "edge: worst pixel " << ed.worstX << "," << ed.worstY << ": got " << ed.worstGot
-                                  << ", centre reference " << ed.worstRef;
+    EXPECT_LE(in.worstRatio, 1.0) << "interior: worst pixel " << in.worstX << "," << in.worstY
+                                  << ": got " << in.worstGot << ", centre reference "
+                                  << in.worstRef;
+    EXPECT_LE(ed.worstRatio, 1.0) << "edge: worst pixel " << ed.worstX << "," << ed.worstY
+                                  << ": got " << ed.worstGot << ", centre reference "
+                                  << ed.worstRef;
     // The counter (a pipeline-statistics query over the frame). Lavapipe counts one invocation
     // per pixel fragment at both rates (it loops over the samples inside one invocation), so
     // only its presence and order are checked here (docs/shading.md).
@@ -242,7 +267,8 @@ void expectPixelRateMatchesCentreReference(const Scene& scene, RenderSettings se
     const double sample = statOf(fpSample, "fragment_shader_invocations");
     EXPECT_GT(pixel, 0.0);
     EXPECT_GE(sample, pixel);
-    std::printf("[ forwardplus ] 4x pixel rate, %u lights: interior worst |d|/tol %.3g, %zu edge pixels worst %.3g; "
+    std::printf("[ forwardplus ] 4x pixel rate, %u lights: interior worst |d|/tol %.3g, %zu edge "
+                "pixels worst %.3g; "
                 "fragment invocations pixel %.0f, sample %.0f\n",
                 lights, in.worstRatio, edgeCount, ed.worstRatio, pixel, sample);
     expectNoValidationMessages(*ctx);
@@ -276,7 +302,7 @@ struct ListRun {
     ImageR32 depth;
     std::vector<gpu::FpTileLists> tiles;
     std::vector<uint32_t> indices;
-    std::vector<uint32_t> masks; // clustered: the per-slice bitmasks
+    std::vector<uint32_t> masks;                // clustered: the per-slice bitmasks
     std::vector<la::TileBlendedBounds> blended; // blended scenes: each tile's blended depth bounds
     la::TileGrid grid;
     RendererStats stats;
@@ -311,7 +337,8 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
     }
     out.grid = la::makeTileGrid(settings.width, settings.height, resolved.integer("tile"));
     if (ResourceHandle b = graph.exported("blended_bounds"); b.valid())
-        out.blended = la::unpackBlendedBounds(readbackBuffer(ctx, graph.buffer(b)), out.grid.count());
+        out.blended =
+            la::unpackBlendedBounds(readbackBuffer(ctx, graph.buffer(b)), out.grid.count());
     renderer->collectStats(graph);
     out.stats = renderer->stats();
     out.debug = renderer->debugImages(graph);
@@ -319,7 +346,8 @@ ListRun runLists(GpuContext& ctx, SceneGpu& scene, const RenderSettings& setting
 }
 
 // The lights of one list, walked with its explicit count.
-std::vector<uint32_t> listOf(const ListRun& r, uint32_t tile, uint32_t list, const std::string& layout) {
+std::vector<uint32_t> listOf(const ListRun& r, uint32_t tile, uint32_t list,
+                             const std::string& layout) {
     const gpu::FpTileLists& t = r.tiles[tile];
     std::vector<uint32_t> out;
     if (layout == "linked") {
@@ -333,7 +361,8 @@ std::vector<uint32_t> listOf(const ListRun& r, uint32_t tile, uint32_t list, con
             node = r.indices[2 * node + 1];
         }
     } else {
-        for (uint32_t i = 0; i < t.list[list].count; ++i) out.push_back(r.indices.at(t.list[list].start + i));
+        for (uint32_t i = 0; i < t.list[list].count; ++i)
+            out.push_back(r.indices.at(t.list[list].start + i));
     }
     return out;
 }
@@ -366,7 +395,8 @@ struct BlendedPoint {
     glm::vec3 p;
 };
 
-std::vector<BlendedPoint> blendedPoints(const Scene& scene, const gpu::FrameUniforms& f, const ImageR32& depth) {
+std::vector<BlendedPoint> blendedPoints(const Scene& scene, const gpu::FrameUniforms& f,
+                                        const ImageR32& depth) {
     std::vector<BlendedPoint> out;
     const uint32_t w = depth.width, h = depth.height;
     const glm::vec3 eye(f.eyeWorld);
@@ -385,22 +415,27 @@ std::vector<BlendedPoint> blendedPoints(const Scene& scene, const gpu::FrameUnif
             for (const glm::vec3& v : {a, b, c}) {
                 glm::vec4 cl = f.viewProj * glm::vec4(v, 1.0f);
                 if (cl.w <= 0.0f) behind = true;
-                glm::vec2 s((cl.x / cl.w * 0.5f + 0.5f) * float(w), (0.5f - cl.y / cl.w * 0.5f) * float(h));
+                glm::vec2 s((cl.x / cl.w * 0.5f + 0.5f) * float(w),
+                            (0.5f - cl.y / cl.w * 0.5f) * float(h));
                 lo = glm::min(lo, s);
                 hi = glm::max(hi, s);
             }
             if (!behind) {
-                x0 = std::max(0.0f, std::floor(lo.x)), x1 = std::min(float(w), std::ceil(hi.x) + 1.0f);
-                y0 = std::max(0.0f, std::floor(lo.y)), y1 = std::min(float(h), std::ceil(hi.y) + 1.0f);
+                x0 = std::max(0.0f, std::floor(lo.x)),
+                x1 = std::min(float(w), std::ceil(hi.x) + 1.0f);
+                y0 = std::max(0.0f, std::floor(lo.y)),
+                y1 = std::min(float(h), std::ceil(hi.y) + 1.0f);
             }
             for (uint32_t y = uint32_t(y0); float(y) < y1; ++y)
                 for (uint32_t x = uint32_t(x0); float(x) < x1; ++x) {
-                    const glm::vec3 o = unproject(f, x, y, 1.0f), dir = unproject(f, x, y, 0.5f) - o;
+                    const glm::vec3 o = unproject(f, x, y, 1.0f),
+                                    dir = unproject(f, x, y, 0.5f) - o;
                     const glm::vec3 pv = glm::cross(dir, e2);
                     const float det = glm::dot(e1, pv);
                     if (std::fabs(det) < 1e-20f) continue;
                     const glm::vec3 tv = o - a, qv = glm::cross(tv, e1);
-                    const float u = glm::dot(tv, pv) / det, v = glm::dot(dir, qv) / det, t = glm::dot(e2, qv) / det;
+                    const float u = glm::dot(tv, pv) / det, v = glm::dot(dir, qv) / det,
+                                t = glm::dot(e2, qv) / det;
                     if (u < 1e-3f || v < 1e-3f || u + v > 1.0f - 1e-3f || t <= 0.0f) continue;
                     const glm::vec3 p = o + t * dir;
                     const glm::vec4 cl = f.viewProj * glm::vec4(p, 1.0f);
@@ -449,7 +484,8 @@ TEST(ForwardPlusCulling, ConservativeOnEveryTileWithFalsePositiveRate) {
             for (uint32_t li : contributing)
                 if (!inList.count(li)) {
                     ++missing;
-                    ADD_FAILURE() << "tile " << tx << "," << ty << ": light " << li << " reaches a pixel but is not listed";
+                    ADD_FAILURE() << "tile " << tx << "," << ty << ": light " << li
+                                  << " reaches a pixel but is not listed";
                 }
             listed += list.size();
             needed += contributing.size();
@@ -465,15 +501,17 @@ TEST(ForwardPlusCulling, ConservativeOnEveryTileWithFalsePositiveRate) {
         std::vector<uint32_t> tlist = listOf(r, tile, 1, "compact");
         std::set<uint32_t> inT(tlist.begin(), tlist.end());
         for (uint32_t li = 0; li < lights.size(); ++li)
-            if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], bp.p) && !inT.count(li) &&
-                ++blendedMissing < 10)
-                ADD_FAILURE() << "blended point at pixel " << bp.x << "," << bp.y << ": light " << li
-                              << " reaches it but is not in the transparent list";
+            if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], bp.p) &&
+                !inT.count(li) && ++blendedMissing < 10)
+                ADD_FAILURE() << "blended point at pixel " << bp.x << "," << bp.y << ": light "
+                              << li << " reaches it but is not in the transparent list";
     }
     EXPECT_EQ(blendedMissing, 0u);
     double fpRate = listed ? double(listed - needed) / double(listed) : 0.0;
-    std::printf("[ forwardplus ] culling: %llu listed, %llu reach a pixel, false-positive rate %.1f%%, %llu sky tiles\n",
-                (unsigned long long)listed, (unsigned long long)needed, 100.0 * fpRate, (unsigned long long)skyTiles);
+    std::printf("[ forwardplus ] culling: %llu listed, %llu reach a pixel, false-positive rate "
+                "%.1f%%, %llu sky tiles\n",
+                (unsigned long long)listed, (unsigned long long)needed, 100.0 * fpRate,
+                (unsigned long long)skyTiles);
     RecordProperty("false_positive_rate", std::to_string(fpRate));
     EXPECT_LT(fpRate, 0.9); // useful: most listed lights do reach the tile
     expectNoValidationMessages(*ctx);
@@ -494,7 +532,8 @@ TEST(ForwardPlusCulling, TransparentListsFollowTheBlendedDepthBounds) {
     const gpu::FrameUniforms& f = gpuScene.frame();
     const auto& lights = gpuScene.lightsGpu();
     la::LightClasses classes = la::classifyLights(lights);
-    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, lights, classes.local);
+    std::vector<uint32_t> bound =
+        la::conservativeTileBound(r.grid, f.view, f.proj, lights, classes.local);
     uint64_t emptyTiles = 0, blendedTiles = 0, listed = 0, reachable = 0;
     for (uint32_t t = 0; t < r.grid.count(); ++t) {
         if (!r.blended[t].any) {
@@ -516,7 +555,8 @@ TEST(ForwardPlusCulling, TransparentListsFollowTheBlendedDepthBounds) {
     for (const auto& [n, v] : r.stats.counters)
         if (n == "transparent_lights_per_tile_mean") mean = v;
     EXPECT_DOUBLE_EQ(mean, double(listed) / double(r.grid.count()));
-    std::printf("[ forwardplus ] transparent lists: %llu tiles without blended fragments (empty lists), %llu with: "
+    std::printf("[ forwardplus ] transparent lists: %llu tiles without blended fragments (empty "
+                "lists), %llu with: "
                 "%.1f lights per list against %.1f that reach the tile at any depth\n",
                 (unsigned long long)emptyTiles, (unsigned long long)blendedTiles,
                 double(listed) / double(blendedTiles), double(reachable) / double(blendedTiles));
@@ -547,14 +587,16 @@ TEST(ForwardPlusCulling, LayoutsHoldTheSameListsAndHeatMapCountsMatch) {
             std::vector<uint32_t> a = listOf(runs[0], tile, list, "compact");
             EXPECT_EQ(a, listOf(runs[1], tile, list, "fixed")) << "tile " << tile;
             EXPECT_EQ(a, listOf(runs[2], tile, list, "linked")) << "tile " << tile;
-            for (uint32_t li : a) EXPECT_LT(li, scene.lights.size());
+            for (uint32_t li : a)
+                EXPECT_LT(li, scene.lights.size());
         }
     // The heat map shows each tile's list length: rebuild it from the walked lists.
     for (size_t k = 0; k < runs.size(); ++k) {
         const ListRun& r = runs[k];
         std::vector<gpu::FpTileLists> walked = r.tiles;
         for (uint32_t tile = 0; tile < g.count(); ++tile)
-            walked[tile].list[0].count = uint32_t(listOf(r, tile, 0, k == 2 ? "linked" : "compact").size());
+            walked[tile].list[0].count =
+                uint32_t(listOf(r, tile, 0, k == 2 ? "linked" : "compact").size());
         ImageRGBA expect = fp::lightsPerTileHeatMap(g, walked, 0);
         ASSERT_FALSE(r.debug.empty());
         EXPECT_EQ(r.debug[0].name, "lights_per_tile");
@@ -572,7 +614,8 @@ TEST(ForwardPlusCulling, CompactBoundIsAnUpperBound) {
     ListRun r = runLists(*ctx, gpuScene, settings);
     const gpu::FrameUniforms& f = gpuScene.frame();
     la::LightClasses classes = la::classifyLights(gpuScene.lightsGpu());
-    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
+    std::vector<uint32_t> bound =
+        la::conservativeTileBound(r.grid, f.view, f.proj, gpuScene.lightsGpu(), classes.local);
     for (uint32_t tile = 0; tile < r.grid.count(); ++tile) {
         EXPECT_LE(r.tiles[tile].list[0].count, bound[tile]);
         EXPECT_EQ(r.tiles[tile].list[0].dropped, 0u);
@@ -596,7 +639,8 @@ void expectBinnedEqualsBruteForce(const Scene& scene, RenderSettings settings) {
     for (uint32_t tile = 0; tile < all.grid.count(); ++tile)
         for (uint32_t list = 0; list < 2; ++list) {
             std::vector<uint32_t> a = listOf(all, tile, list, "compact");
-            EXPECT_EQ(a, listOf(binned, tile, list, "compact")) << "tile " << tile << " list " << list;
+            EXPECT_EQ(a, listOf(binned, tile, list, "compact"))
+                << "tile " << tile << " list " << list;
             EXPECT_EQ(all.tiles[tile].list[list].found, binned.tiles[tile].list[list].found);
             listed += a.size();
         }
@@ -609,8 +653,10 @@ void expectBinnedEqualsBruteForce(const Scene& scene, RenderSettings settings) {
     };
     EXPECT_EQ(counter(binned, "lights_dropped"), 0.0);
     EXPECT_LT(counter(binned, "lights_tested"), counter(all, "lights_tested"));
-    std::printf("[ forwardplus ] binned culling: %.0f tests against %.0f for every light, %llu listed\n",
-                counter(binned, "lights_tested"), counter(all, "lights_tested"), (unsigned long long)listed);
+    std::printf(
+        "[ forwardplus ] binned culling: %.0f tests against %.0f for every light, %llu listed\n",
+        counter(binned, "lights_tested"), counter(all, "lights_tested"),
+        (unsigned long long)listed);
     RunResult ra = runOrFail(*ctx, gpuScene, "forwardplus", settings);
     settings.set("light-cull", "all");
     RunResult rb = runOrFail(*ctx, gpuScene, "forwardplus", settings);
@@ -651,7 +697,8 @@ TEST(ForwardPlusCulling, SpherePassGivesTheInlineLists) {
             uint64_t listed = 0;
             for (uint32_t t = 0; t < pass.grid.count(); ++t)
                 for (uint32_t list = 0; list < 2; ++list) {
-                    std::vector<uint32_t> a = listOf(inlined, t, list, "compact"), b = listOf(pass, t, list, "compact");
+                    std::vector<uint32_t> a = listOf(inlined, t, list, "compact"),
+                                          b = listOf(pass, t, list, "compact");
                     EXPECT_EQ(a, b) << assign << " tile " << t << " list " << list;
                     listed += b.size();
                 }
@@ -719,8 +766,9 @@ RenderSettings clustered(RenderSettings s, uint32_t slices = 16) {
 // start, which the pool's atomic allocation orders), every list, and every slice word the
 // shading reads (words [0, ceil(count / 32)) of each of the tile's rows; the rest is never
 // written). `bound`: the tiles' slot counts (conservativeTileBound), for the mask rows.
-void expectSameCulling(const ListRun& a, const ListRun& b, const std::string& layout, uint32_t slices,
-                       const std::vector<uint32_t>& bound, const std::string& what) {
+void expectSameCulling(const ListRun& a, const ListRun& b, const std::string& layout,
+                       uint32_t slices, const std::vector<uint32_t>& bound,
+                       const std::string& what) {
     ASSERT_EQ(a.tiles.size(), b.tiles.size()) << what;
     uint32_t maskBase = 0;
     uint64_t listed = 0, words = 0;
@@ -752,9 +800,10 @@ void expectSameCulling(const ListRun& a, const ListRun& b, const std::string& la
 // --cull-by subgroup (one subgroup per tile, a candidate per lane, survivors placed by a
 // ballot) gives --cull-by invocation's results byte for byte: every layout, tiled (two lists)
 // and clustered, with spot lights and without, under MSAA, and over several dispatches
-// (clustered, 64 slices: 9; linked, prepended), with drops (fixed, 4 slots), on an odd viewport. lavapipe's subgroups have 8 lanes, so a tile
-// takes many steps and its survivors cross words of the slice rows mid-step. The two read the
-// depth differently (gathered 2 x 2 blocks, texel by texel): the same bounds.
+// (clustered, 64 slices: 9; linked, prepended), with drops (fixed, 4 slots), on an odd viewport.
+// lavapipe's subgroups have 8 lanes, so a tile takes many steps and its survivors cross words of
+// the slice rows mid-step. The two read the depth differently (gathered 2 x 2 blocks, texel by
+// texel): the same bounds.
 TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -804,8 +853,8 @@ TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
     for (size_t i = 0; i < cases.size(); ++i) {
         const Case& c = cases[i];
         const std::string what = "case " + std::to_string(i) + " (" + c.layout + ", " +
-                                 (c.slices ? std::to_string(c.slices) + " slices" : "tiled") + ", msaa " +
-                                 std::to_string(c.settings.msaa) + ")";
+                                 (c.slices ? std::to_string(c.slices) + " slices" : "tiled") +
+                                 ", msaa " + std::to_string(c.settings.msaa) + ")";
         SceneGpu gpuScene(*ctx, c.scene);
         RenderSettings s = c.settings;
         s.set("cull-by", "invocation");
@@ -814,9 +863,12 @@ TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
         ListRun subgroup = runLists(*ctx, gpuScene, s);
         EXPECT_EQ(counter(subgroup.stats, "culling_by_subgroup"), 1.0) << what;
         EXPECT_EQ(counter(invocation.stats, "culling_by_subgroup"), 0.0) << what;
-        EXPECT_EQ(counter(subgroup.stats, "culling_dispatches"), counter(invocation.stats, "culling_dispatches"))
+        EXPECT_EQ(counter(subgroup.stats, "culling_dispatches"),
+                  counter(invocation.stats, "culling_dispatches"))
             << what;
-        EXPECT_EQ(counter(subgroup.stats, "lights_dropped"), counter(invocation.stats, "lights_dropped")) << what;
+        EXPECT_EQ(counter(subgroup.stats, "lights_dropped"),
+                  counter(invocation.stats, "lights_dropped"))
+            << what;
         if (i == cases.size() - 2) {
             EXPECT_GT(counter(subgroup.stats, "lights_dropped"), 0.0) << what;
         }
@@ -825,8 +877,8 @@ TEST(ForwardPlusCulling, SubgroupCullingGivesTheInvocationBytes) {
         }
         const gpu::FrameUniforms& f = gpuScene.frame();
         const auto& lights = gpuScene.lightsGpu();
-        std::vector<uint32_t> bound = la::conservativeTileBound(invocation.grid, f.view, f.proj, lights,
-                                                                la::classifyLights(lights).local);
+        std::vector<uint32_t> bound = la::conservativeTileBound(
+            invocation.grid, f.view, f.proj, lights, la::classifyLights(lights).local);
         expectSameCulling(invocation, subgroup, c.layout, c.slices, bound, what);
     }
     expectNoValidationMessages(*ctx);
@@ -872,7 +924,8 @@ TEST(ForwardPlusClustered, SubgroupLoopGivesTheLaneLoopsImage) {
         EXPECT_EQ(statOf(subgroup, "light_loop_subgroup"), 1.0);
         EXPECT_FALSE(hasLeftOut(subgroup, "the subgroup light loop"));
         EXPECT_EQ(lane.hdr.rgba, subgroup.hdr.rgba) << msaa << "x, " << rate;
-        EXPECT_GT(statOf(lane, "lights_per_cluster_mean"), 1.0); // clusters with several lights to walk
+        EXPECT_GT(statOf(lane, "lights_per_cluster_mean"),
+                  1.0); // clusters with several lights to walk
     }
     expectNoValidationMessages(*ctx);
 }
@@ -908,27 +961,32 @@ TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
     const gpu::FrameUniforms& f = gpuScene.frame();
     const auto& lights = gpuScene.lightsGpu();
     la::LightClasses classes = la::classifyLights(lights);
-    std::vector<uint32_t> bound = la::conservativeTileBound(r.grid, f.view, f.proj, lights, classes.local);
+    std::vector<uint32_t> bound =
+        la::conservativeTileBound(r.grid, f.view, f.proj, lights, classes.local);
     std::vector<uint32_t> maskBase(bound.size() + 1, 0);
-    for (size_t t = 0; t < bound.size(); ++t) maskBase[t + 1] = maskBase[t] + 16 * ((bound[t] + 31) / 32);
+    for (size_t t = 0; t < bound.size(); ++t)
+        maskBase[t + 1] = maskBase[t] + 16 * ((bound[t] + 31) / 32);
     ASSERT_EQ(size_t(maskBase.back()), r.masks.size());
     // The courtyard has blended surfaces: 16 / TP_LA_FRONT_SLICE_SHARE front slices, from
     // each tile's frontNear (its nearest blended fragment).
     const CpuSlicing sliceOf{16, 16 / TP_LA_FRONT_SLICE_SHARE};
     uint64_t missing = 0, pixels = 0, inCluster = 0, inList = 0, inTiled = 0;
     uint64_t frontPoints = 0, inFrontCluster = 0, inFrontList = 0;
-    auto check = [&](uint32_t x, uint32_t y, const glm::vec3& p, uint32_t tile, const std::vector<uint32_t>& list) {
+    auto check = [&](uint32_t x, uint32_t y, const glm::vec3& p, uint32_t tile,
+                     const std::vector<uint32_t>& list) {
         const gpu::FpTileLists& t = r.tiles[tile];
         uint32_t slice = sliceOf(-(f.view * glm::vec4(p, 1.0f)).z, t);
         uint32_t stride = (maskBase[tile + 1] - maskBase[tile]) / 16;
         std::set<uint32_t> cluster;
         for (uint32_t i = 0; i < list.size(); ++i)
-            if (r.masks[maskBase[tile] + slice * stride + i / 32] & (1u << (i % 32))) cluster.insert(list[i]);
+            if (r.masks[maskBase[tile] + slice * stride + i / 32] & (1u << (i % 32)))
+                cluster.insert(list[i]);
         for (uint32_t li = 0; li < lights.size(); ++li)
-            if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], p) && !cluster.count(li)) {
+            if (lights[li].type != TP_LIGHT_DIRECTIONAL && reaches(lights[li], p) &&
+                !cluster.count(li)) {
                 if (++missing < 10)
-                    ADD_FAILURE() << "pixel " << x << "," << y << " slice " << slice
-                                  << ": light " << li << " reaches it but is not in its cluster";
+                    ADD_FAILURE() << "pixel " << x << "," << y << " slice " << slice << ": light "
+                                  << li << " reaches it but is not in its cluster";
             }
         return std::make_pair(slice, cluster.size());
     };
@@ -959,10 +1017,13 @@ TEST(ForwardPlusClustered, ConservativeOnEveryPixel) {
     EXPECT_GT(frontPoints, 0u);
     EXPECT_LT(inCluster, inList);           // the slices do cut the span list
     EXPECT_LT(inFrontCluster, inFrontList); // and so do the front slices
-    std::printf("[ forwardplus ] clustered: %.2f lights per pixel's cluster against %.2f in its tile's span list "
-                "and %.2f in the tiled opaque list; in front of the opaque surfaces %.2f against %.2f\n",
-                double(inCluster) / double(pixels), double(inList) / double(pixels), double(inTiled) / double(pixels),
-                double(inFrontCluster) / double(frontPoints), double(inFrontList) / double(frontPoints));
+    std::printf(
+        "[ forwardplus ] clustered: %.2f lights per pixel's cluster against %.2f in its tile's "
+        "span list "
+        "and %.2f in the tiled opaque list; in front of the opaque surfaces %.2f against %.2f\n",
+        double(inCluster) / double(pixels), double(inList) / double(pixels),
+        double(inTiled) / double(pixels), double(inFrontCluster) / double(frontPoints),
+        double(inFrontList) / double(frontPoints));
     expectNoValidationMessages(*ctx);
 }
 
@@ -980,7 +1041,9 @@ TEST(ForwardPlusClustered, RefusesLayoutsOtherThanCompact) {
     o.timedFrames = 1;
     Result<RunResult> r = runRenderer(*ctx, gpuScene, **entry, analyzeScene(scene, 1), s, o);
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.error().find("--light-assign clustered needs --light-lists compact"), std::string::npos) << r.error();
+    EXPECT_NE(r.error().find("--light-assign clustered needs --light-lists compact"),
+              std::string::npos)
+        << r.error();
 }
 
 // ---- layouts: same image when nothing overflows; drops counted and visible ----
@@ -1046,7 +1109,8 @@ TEST(ForwardPlusLayouts, FixedWithTinyCapacityCountsDropsAndShowsThem) {
         for (uint32_t tx = 0; tx < fixed.grid.tilesX; ++tx) {
             const float* p = heat.at(tx * 16, ty * 16); // the tile's top-left corner
             bool green = p[0] == 0.0f && p[1] == 1.0f && p[2] == 0.0f;
-            EXPECT_EQ(green, fixed.tiles[ty * fixed.grid.tilesX + tx].list[0].dropped > 0) << tx << "," << ty;
+            EXPECT_EQ(green, fixed.tiles[ty * fixed.grid.tilesX + tx].list[0].dropped > 0)
+                << tx << "," << ty;
             outlined += green;
         }
     EXPECT_EQ(outlined, overflowTiles);
@@ -1064,7 +1128,8 @@ TEST(ForwardPlusPlan, LeavesOutWhatTheSceneDoesNotNeed) {
     EXPECT_TRUE(hasLeftOut(r, "transparent light list"));
     EXPECT_TRUE(hasLeftOut(r, "MSAA targets"));
     EXPECT_EQ(statOf(r, "light_lists"), 1.0);
-    for (const std::string& p : r.passes) EXPECT_NE(p, "forward_transparent");
+    for (const std::string& p : r.passes)
+        EXPECT_NE(p, "forward_transparent");
     for (const LedgerEntry& e : r.memory) {
         EXPECT_NE(e.tag.name, "hdr_msaa");
         EXPECT_NE(e.tag.name, "depth_msaa");

@@ -28,14 +28,16 @@ TEST(FrameRunner, RefusesASampleCountTheDeviceLacksWithTheCliLine) {
     options.warmupFrames = 0;
     options.timedFrames = 1;
     for (uint32_t samples : {lacking, 3u}) {
-        const std::string expected = "--msaa " + std::to_string(samples) + ": not supported by " + ctx->info.name;
+        const std::string expected =
+            "--msaa " + std::to_string(samples) + ": not supported by " + ctx->info.name;
         EXPECT_EQ(checkSampleCount(*ctx, samples).error(), expected);
         for (const RendererEntry& entry : registeredRenderers()) {
             RenderSettings s;
             s.width = 32;
             s.height = 16;
             s.msaa = samples;
-            Result<RunResult> run = runRenderer(*ctx, gpuScene, entry, analyzeScene(scene, samples), s, options);
+            Result<RunResult> run =
+                runRenderer(*ctx, gpuScene, entry, analyzeScene(scene, samples), s, options);
             ASSERT_FALSE(run.ok()) << entry.name << " ran at " << samples << "x";
             EXPECT_EQ(run.error(), expected) << entry.name;
         }
@@ -69,7 +71,8 @@ TEST(FrameRunner, CreateRendererRefusesASampleCountTheDeviceLacks) {
             createRenderer(entry, {*ctx, gpuScene, analyzeScene(scene, lacking), s});
             ADD_FAILURE() << entry.name << " was created at " << lacking << "x";
         } catch (const RendererError& e) {
-            EXPECT_EQ(std::string(e.what()), "--msaa " + std::to_string(lacking) + ": not supported by " + ctx->info.name)
+            EXPECT_EQ(std::string(e.what()),
+                      "--msaa " + std::to_string(lacking) + ": not supported by " + ctx->info.name)
                 << entry.name;
         }
     }
@@ -86,17 +89,20 @@ TEST(FrameRunner, FrameGraphRefusesAnImageTheDeviceCannotCreate) {
     const uint32_t lacking = lackingSampleCount(*ctx);
     ASSERT_NE(lacking, 0u);
     FrameGraph graph(*ctx, "test", 32, 16);
-    ResourceHandle hdr = graph.createImage(
-        "hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VkSampleCountFlagBits(lacking), "multisampled target"});
+    ResourceHandle hdr =
+        graph.createImage("hdr_msaa", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0,
+                                       VkSampleCountFlagBits(lacking), "multisampled target"});
     graph.addPass("draw", {{hdr, Use::ColorAttachment}}, [](PassContext&) {});
     graph.exportResource("hdr", hdr);
     try {
         graph.compile();
         ADD_FAILURE() << "compiled an image of " << lacking << " samples";
     } catch (const GraphError& e) {
-        EXPECT_EQ(std::string(e.what()), "image 'hdr_msaa': " + std::to_string(lacking) +
-                                             " samples of RGBA32_SFLOAT with transfer-src+colour attachment use: not "
-                                             "supported by " + ctx->info.name);
+        EXPECT_EQ(std::string(e.what()),
+                  "image 'hdr_msaa': " + std::to_string(lacking) +
+                      " samples of RGBA32_SFLOAT with transfer-src+colour attachment use: not "
+                      "supported by " +
+                      ctx->info.name);
     }
     expectNoValidationMessages(*ctx);
 }

@@ -36,8 +36,9 @@ struct ReferenceRun {
 
 // One pipeline's image against the reference: no NaN or Inf, and within its derived bound
 // beyond each pixel's allowance.
-void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene, const RendererEntry& entry,
-                       const RenderSettings& settings, const ReferenceRun& ref, const std::string& label) {
+void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene,
+                       const RendererEntry& entry, const RenderSettings& settings,
+                       const ReferenceRun& ref, const std::string& label) {
     SCOPED_TRACE(label);
     stress::StressCase c;
     c.name = "gltf";
@@ -53,22 +54,25 @@ void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene, 
     // Its model bounds that per pixel from the reference's depth and the device's sub-pixel
     // bits, as `triptych stress` checks it; the scalar bound then holds what is left beyond
     // each pixel's allowance. Models without a per-pixel allowance get none: checked == raw.
-    const ErrorModelInput in{c, scene, resolved, &ref.run.depth, ctx.properties.limits.subPixelPrecisionBits};
+    const ErrorModelInput in{c, scene, resolved, &ref.run.depth,
+                             ctx.properties.limits.subPixelPrecisionBits};
     const ErrorBound bound = expectedBound(entry.errorModel, in);
     ASSERT_TRUE(bound.bounded) << bound.why;
     const double raw = computeError(tonemapToDisplay(run.hdr, ref.ev), ref.display).maxAbs;
     const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.run.hdr, ref.ev);
     // raw: max |T(p) - T(r)|; checked: what is left beyond each pixel's allowance (== raw
     // where the model gives none).
-    std::printf("[ bound    ] %-40s tonemapped max |p - r| raw %.3g, checked %.3g <= %.3g; %s\n", label.c_str(), raw,
-                checked.worstBeyond, bound.tonemapped(ref.ev),
-                bound.perPixel.name.empty()
-                    ? "no per-pixel allowance"
-                    : (std::to_string(checked.widenedPixels) + " pixels widened by " + bound.perPixel.name).c_str());
+    std::printf("[ bound    ] %-40s tonemapped max |p - r| raw %.3g, checked %.3g <= %.3g; %s\n",
+                label.c_str(), raw, checked.worstBeyond, bound.tonemapped(ref.ev),
+                bound.perPixel.name.empty() ? "no per-pixel allowance"
+                                            : (std::to_string(checked.widenedPixels) +
+                                               " pixels widened by " + bound.perPixel.name)
+                                                  .c_str());
     // A +Inf allowance (a light within the position error of a shaded point) checks nothing
     // there: none may hide in these scenes.
     EXPECT_EQ(checked.unboundedPixels, 0u) << "pixels the per-pixel allowance leaves unchecked";
-    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ref.ev)) << "tonemapped max |p - r| beyond the per-pixel allowance";
+    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ref.ev))
+        << "tonemapped max |p - r| beyond the per-pixel allowance";
 }
 
 // Light assignment's conservative tests beside the defaults: clusters, GPU binning, no binning.
@@ -108,17 +112,20 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0) {
     ref.ev = autoExposureEv(ref.run.hdr);
     ref.display = tonemapToDisplay(ref.run.hdr, ref.ev);
     double lit = 0;
-    for (size_t i = 0; i < ref.run.hdr.pixelCount(); ++i) lit += ref.run.hdr.rgba[i * 4 + 1];
+    for (size_t i = 0; i < ref.run.hdr.pixelCount(); ++i)
+        lit += ref.run.hdr.rgba[i * 4 + 1];
     EXPECT_GT(lit, 0.0) << "the reference is black";
 
-    const std::string name = path.filename().string() == "scene.gltf" ? path.parent_path().filename().string()
-                                                                       : path.filename().string();
+    const std::string name = path.filename().string() == "scene.gltf"
+                                 ? path.parent_path().filename().string()
+                                 : path.filename().string();
     for (const RendererEntry& entry : registeredRenderers()) {
         if (entry.name == "reference") continue;
         expectWithinBound(*ctx, gpuScene, scene, entry, settings, ref, name + " " + entry.name);
         for (const auto& [knob, value] : kAssignmentVariants) {
             auto reads = [&, &knob = knob](const Knob& k) { return k.name == knob; };
-            if (grazing == 0 || std::none_of(entry.knobs.begin(), entry.knobs.end(), reads)) continue;
+            if (grazing == 0 || std::none_of(entry.knobs.begin(), entry.knobs.end(), reads))
+                continue;
             RenderSettings variant = settings;
             variant.set(knob, value);
             expectWithinBound(*ctx, gpuScene, scene, entry, variant, ref,
@@ -138,9 +145,13 @@ class GltfScenesRender : public ::testing::Test {
     fs::path dir_;
 };
 
-TEST_F(GltfScenesRender, Draco) { renderEveryPipeline(writeDracoScene(dir_ / "draco")); }
+TEST_F(GltfScenesRender, Draco) {
+    renderEveryPipeline(writeDracoScene(dir_ / "draco"));
+}
 
-TEST_F(GltfScenesRender, Meshopt) { renderEveryPipeline(writeMeshoptScene(dir_ / "meshopt")); }
+TEST_F(GltfScenesRender, Meshopt) {
+    renderEveryPipeline(writeMeshoptScene(dir_ / "meshopt"));
+}
 
 TEST_F(GltfScenesRender, Repaired) {
     RepairCounts counts;

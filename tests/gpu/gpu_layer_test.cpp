@@ -4,13 +4,13 @@
 
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
-#include "core/gpu/shader_reflection.h"
 #include "core/gpu/profiler.h"
 #include "core/gpu/readback.h"
+#include "core/gpu/shader_reflection.h"
 #include "core/gpu/vk_check.h"
 #include "core/image/image_io.h"
-#include "gpu_test_util.h"
 #include "deferred/deferred_shared.h"
+#include "gpu_test_util.h"
 #include "include/shared.h"
 
 namespace tp::test {
@@ -34,7 +34,8 @@ void clearPass(FrameGraph& g, const std::string& name, ResourceHandle target, fl
     g.addPass(name, {{target, Use::TransferDst}}, [target, value](PassContext& pc) {
         VkClearColorValue c{{value, value, value, 1.0f}};
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        vkCmdClearColorImage(pc.cmd, pc.image(target).image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &range);
+        vkCmdClearColorImage(pc.cmd, pc.image(target).image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                             &c, 1, &range);
     });
 }
 
@@ -43,7 +44,8 @@ TEST(GpuLayer, FrameGraphCullsUnusedPassesAndLedgersTransients) {
     ASSERT_TRUE(ctx);
     {
         FrameGraph g(*ctx, "graph_test", 16, 8);
-        ResourceHandle a = g.createImage("a", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT, "kept"});
+        ResourceHandle a = g.createImage(
+            "a", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT, "kept"});
         ResourceHandle unused = g.createImage("unused", {VK_FORMAT_R16G16B16A16_SFLOAT, 0, 0,
                                                          VK_SAMPLE_COUNT_1_BIT, "nobody reads it"});
         clearPass(g, "write_a", a, 0.5f);
@@ -94,11 +96,13 @@ TEST(GpuLayer, FrameGraphMakesPassSetsFromUsesAndPipelinesCheckThemAgainstShader
     {
         FrameGraph g(*ctx, "set_test", 16, 8);
         ResourceHandle lists = g.createBuffer("lists", 256, "read through set 1");
-        ResourceHandle hdr = g.createImage("hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT, "out"});
+        ResourceHandle hdr = g.createImage(
+            "hdr", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT, "out"});
         g.addPass("fill", {{lists, Use::TransferDst}}, [](PassContext&) {});
-        g.addPass("transparent_forward",
-                  {{lists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS}, {hdr, Use::ColorAttachment}},
-                  [](PassContext&) {});
+        g.addPass(
+            "transparent_forward",
+            {{lists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS}, {hdr, Use::ColorAttachment}},
+            [](PassContext&) {});
         g.exportResource("hdr", hdr);
         g.compile();
         EXPECT_THROW(g.addPass("late", {{hdr, Use::Sampled}}, [](PassContext&) {}), GraphError);
@@ -112,8 +116,10 @@ TEST(GpuLayer, FrameGraphMakesPassSetsFromUsesAndPipelinesCheckThemAgainstShader
             createComputePipeline(*ctx, "deferred_tiled_lists_m0_comp", {}, VK_NULL_HANDLE, &set);
             ADD_FAILURE() << "no BindingMismatch";
         } catch (const BindingMismatch& e) {
-            EXPECT_NE(std::string(e.what()).find("pass 'transparent_forward'"), std::string::npos) << e.what();
-            EXPECT_NE(std::string(e.what()).find("deferred_tiled_lists_m0_comp"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("pass 'transparent_forward'"), std::string::npos)
+                << e.what();
+            EXPECT_NE(std::string(e.what()).find("deferred_tiled_lists_m0_comp"), std::string::npos)
+                << e.what();
         }
         destroyPassSet(*ctx, set);
     }

@@ -1,7 +1,7 @@
 #include "gpu_test_util.h"
+#include "core/gpu/vk_check.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
-#include "core/gpu/vk_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +37,8 @@ void addQuad(Mesh& m, glm::vec3 origin, glm::vec3 u, glm::vec3 v) {
         m.uvs.push_back(uvs[i]);
         m.colors.push_back(glm::vec4(1.0f));
     }
-    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+        m.indices.push_back(base + i);
 }
 
 Scene makeFloorScene(const std::vector<Light>& lights) {
@@ -60,11 +61,11 @@ Scene makeFloorScene(const std::vector<Light>& lights) {
     box.name = "box";
     box.material = 1;
     const float h = 1.0f;
-    addQuad(box, {-1, 0, 1}, {2, 0, 0}, {0, h, 0});   // front (+z)
-    addQuad(box, {1, 0, -1}, {-2, 0, 0}, {0, h, 0});  // back (-z)
-    addQuad(box, {1, 0, 1}, {0, 0, -2}, {0, h, 0});   // right (+x)
-    addQuad(box, {-1, 0, -1}, {0, 0, 2}, {0, h, 0});  // left (-x)
-    addQuad(box, {-1, h, 1}, {2, 0, 0}, {0, 0, -2});  // top
+    addQuad(box, {-1, 0, 1}, {2, 0, 0}, {0, h, 0});  // front (+z)
+    addQuad(box, {1, 0, -1}, {-2, 0, 0}, {0, h, 0}); // back (-z)
+    addQuad(box, {1, 0, 1}, {0, 0, -2}, {0, h, 0});  // right (+x)
+    addQuad(box, {-1, 0, -1}, {0, 0, 2}, {0, h, 0}); // left (-x)
+    addQuad(box, {-1, h, 1}, {2, 0, 0}, {0, 0, -2}); // top
     s.meshes = {floor, box};
     s.lights = lights;
     s.camera.position = {0, 6, 8};
@@ -98,9 +99,9 @@ const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name) {
 // Two images whose pixels sum the same fp32 terms in different orders (e.g. deferred
 // tiled against volumes: the same code on the same G-buffer, culled-list order in a
 // register against one blend per light; or deferred's shared list, filled in atomic order,
-// on two runs of a GPU), with an RGBA32F target. Every term is >= 0, so two summation orders of N terms differ by at
-// most 2 (N - 1) u * sum, u = 2^-24 (Higham, recursive summation), with N = samples *
-// (lights + 1) per pixel. Checked per channel against that bound (+1e-30 for zeros).
+// on two runs of a GPU), with an RGBA32F target. Every term is >= 0, so two summation orders of N
+// terms differ by at most 2 (N - 1) u * sum, u = 2^-24 (Higham, recursive summation), with N =
+// samples * (lights + 1) per pixel. Checked per channel against that bound (+1e-30 for zeros).
 void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights,
                                      uint32_t samples, const std::string& what) {
     const double u = std::ldexp(1.0, -24);
@@ -113,7 +114,8 @@ void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uin
             worstRatio = std::max(worstRatio, std::abs(x - y) / bound);
         }
     EXPECT_LE(worstRatio, 1.0) << what << ": worst |a - b| / bound = " << worstRatio;
-    std::printf("[ summation order ] %s: worst difference = %.3g of the bound\n", what.c_str(), worstRatio);
+    std::printf("[ summation order ] %s: worst difference = %.3g of the bound\n", what.c_str(),
+                worstRatio);
 }
 
 void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames) {
@@ -122,7 +124,8 @@ void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames) {
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
     graph.record(cmd, nullptr);
     VK_CHECK(vkEndCommandBuffer(cmd));
-    for (uint32_t i = 0; i < frames; ++i) ctx.submitAndWait(cmd);
+    for (uint32_t i = 0; i < frames; ++i)
+        ctx.submitAndWait(cmd);
     ctx.freeCommandBuffer(cmd);
 }
 

@@ -34,8 +34,8 @@ const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name);
 
 // The summation bound: a and b agree per channel within 2 (N - 1) u max(|a|, |b|),
 // N = samples * (lights + 1), u = 2^-24 (gpu_test_util.cpp says why).
-void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights, uint32_t samples,
-                                     const std::string& what);
+void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights,
+                                     uint32_t samples, const std::string& what);
 
 // Records the compiled graph once and submits it `frames` times, waiting for each.
 void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames = 1);

@@ -41,18 +41,24 @@ struct Printed {
     std::string text;
 };
 
-bool idiffAvailable() { return std::system("command -v idiff >/dev/null 2>&1") == 0; }
+bool idiffAvailable() {
+    return std::system("command -v idiff >/dev/null 2>&1") == 0;
+}
 
 Printed runIdiff(const std::string& a, const std::string& b) {
     Printed p;
     std::FILE* pipe = popen(("idiff -fail 0 -warn 0 '" + a + "' '" + b + "' 2>&1").c_str(), "r");
     if (!pipe) return p;
     char buffer[512];
-    while (std::fgets(buffer, sizeof buffer, pipe)) p.text += buffer;
-    pclose(pipe); // non-zero when the images differ; thresholds of 0 make it print the numbers for any difference
+    while (std::fgets(buffer, sizeof buffer, pipe))
+        p.text += buffer;
+    pclose(pipe); // non-zero when the images differ; thresholds of 0 make it print the numbers for
+                  // any difference
     auto after = [&](const std::string& key) {
         size_t at = p.text.find(key);
-        return at == std::string::npos ? double(NAN) : std::strtod(p.text.c_str() + p.text.find('=', at) + 1, nullptr);
+        return at == std::string::npos
+                   ? double(NAN)
+                   : std::strtod(p.text.c_str() + p.text.find('=', at) + 1, nullptr);
     };
     p.rms = after("RMS error");
     p.psnr = after("Peak SNR");
@@ -63,13 +69,16 @@ Printed runIdiff(const std::string& a, const std::string& b) {
 }
 
 // Half a unit of the sixth significant digit of a value printed with 6 digits.
-double halfUnit(double printed) { return 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(printed))) - 5); }
+double halfUnit(double printed) {
+    return 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(printed))) - 5);
+}
 
 // The k for which value * 2^k has a leading decimal digit of 5..9.
 int digitShift(double value) {
     int k = 0;
     while (true) {
-        double m = std::ldexp(value, k) / std::pow(10.0, std::floor(std::log10(std::ldexp(value, k))));
+        double m =
+            std::ldexp(value, k) / std::pow(10.0, std::floor(std::log10(std::ldexp(value, k))));
         if (m >= 5.0) return k;
         ++k;
     }
@@ -81,7 +90,8 @@ ImageRGBA scaledRgb(const ImageRGBA& image, int k) {
         for (int c = 0; c < 3; ++c) {
             float& v = out.rgba[i * 4 + c];
             v = std::ldexp(v, k);
-            EXPECT_EQ(std::ldexp(v, -k), image.rgba[i * 4 + c]) << "scaling by 2^" << k << " is not exact";
+            EXPECT_EQ(std::ldexp(v, -k), image.rgba[i * 4 + c])
+                << "scaling by 2^" << k << " is not exact";
         }
     return out;
 }
@@ -90,7 +100,8 @@ float largestRgb(const ImageRGBA& a, const ImageRGBA& b) {
     float m = 0.0f;
     for (const ImageRGBA* image : {&a, &b})
         for (size_t i = 0; i < image->pixelCount(); ++i)
-            for (int c = 0; c < 3; ++c) m = std::max(m, image->rgba[i * 4 + c]);
+            for (int c = 0; c < 3; ++c)
+                m = std::max(m, image->rgba[i * 4 + c]);
     return m;
 }
 
@@ -122,13 +133,15 @@ void crossCheck(const std::string& aPath, const std::string& bPath, const std::s
         // Our metric with idiff's PSNR peak for these files.
         MetricsOptions options;
         options.psnrPeak = std::max(1.0f, std::ldexp(largest, k));
-        const double psnr = computeError(scaledRgb(*a, k), scaledRgb(*b, k), options).psnr - 10.0 * std::log10(0.75);
+        const double psnr = computeError(scaledRgb(*a, k), scaledRgb(*b, k), options).psnr -
+                            10.0 * std::log10(0.75);
         const double want[] = {std::ldexp(rms, k), std::ldexp(ours.maxAbs, k), psnr};
         const double got[] = {p.rms, p.max, p.psnr};
         const char* names[] = {"RMS", "max", "PSNR"};
         for (int m = 0; m < 3; ++m) {
             ASSERT_TRUE(std::isfinite(got[m])) << names[m];
-            EXPECT_NEAR(got[m], want[m], halfUnit(got[m]) + std::abs(want[m]) * 0x1p-23) << names[m];
+            EXPECT_NEAR(got[m], want[m], halfUnit(got[m]) + std::abs(want[m]) * 0x1p-23)
+                << names[m];
         }
         if (k == digitShift(rms)) {
             EXPECT_LE(halfUnit(p.rms) / std::ldexp(rms, k), 1e-6) << "RMS resolved to 1e-6";
@@ -148,7 +161,8 @@ uint32_t nextRandom(uint32_t& state) {
 
 // A reference with values in [0, range) and a test that differs by up to `noise` (relative
 // when `relative`), alpha 1 in both.
-std::pair<ImageRGBA, ImageRGBA> constructedPair(float range, float noise, bool relative, uint32_t seed) {
+std::pair<ImageRGBA, ImageRGBA> constructedPair(float range, float noise, bool relative,
+                                                uint32_t seed) {
     ImageRGBA ref(40, 24), test(40, 24);
     for (size_t i = 0; i < ref.pixelCount(); ++i)
         for (int c = 0; c < 4; ++c) {
@@ -170,7 +184,8 @@ std::string freshDir(const std::string& name) {
 } // namespace
 
 TEST(IdiffCrossCheck, ConstructedPairs) {
-    if (!idiffAvailable()) GTEST_SKIP() << "idiff (Debian openimageio-tools) not on PATH: metrics not cross-checked";
+    if (!idiffAvailable())
+        GTEST_SKIP() << "idiff (Debian openimageio-tools) not on PATH: metrics not cross-checked";
     const std::string dir = freshDir("idiff_constructed");
     struct Case {
         const char* name;
@@ -192,7 +207,8 @@ TEST(IdiffCrossCheck, ConstructedPairs) {
 
 // The files `triptych compare` writes: every pipeline against the reference and against each other.
 TEST(IdiffCrossCheck, CompareRenders) {
-    if (!idiffAvailable()) GTEST_SKIP() << "idiff (Debian openimageio-tools) not on PATH: metrics not cross-checked";
+    if (!idiffAvailable())
+        GTEST_SKIP() << "idiff (Debian openimageio-tools) not on PATH: metrics not cross-checked";
     const std::string dir = freshDir("idiff_renders");
     cli::CompareOptions o;
     o.scene.scene = "builtin:courtyard-small";

@@ -13,20 +13,20 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
-#include "core/passes/light_binning.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
-#include "core/scene/procedural.h"
+#include "core/passes/light_binning.h"
 #include "core/scene/lights.h"
-#include "include/light_binning.h"
+#include "core/scene/procedural.h"
 #include "gpu_test_util.h"
+#include "include/light_binning.h"
 
 namespace tp::test {
 namespace {
 
-std::vector<Light> pointsAndSpots(const Aabb& bounds, uint32_t count, uint64_t seed, float rMin = 0.0f,
-                                  float rMax = 0.0f) {
+std::vector<Light> pointsAndSpots(const Aabb& bounds, uint32_t count, uint64_t seed,
+                                  float rMin = 0.0f, float rMax = 0.0f) {
     LightGenOptions o;
     o.count = count;
     o.seed = seed;
@@ -76,9 +76,11 @@ Scene wholeScreen(uint32_t lights) {
 TEST(GpuLightBinning, BisectedRectanglesEqualEverySlabTested) {
     const la::TileGrid g = la::makeTileGrid(1920, 1080, 16); // 120 x 68 tiles
     const glm::mat4 proj = glm::perspective(glm::radians(70.0f), 1920.0f / 1080.0f, 0.05f, 200.0f);
-    const glm::mat4 view = glm::lookAt(glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(0.0f, 1.5f, -4.0f), glm::vec3(0, 1, 0));
+    const glm::mat4 view =
+        glm::lookAt(glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(0.0f, 1.5f, -4.0f), glm::vec3(0, 1, 0));
     std::mt19937 rng(29);
-    std::uniform_real_distribution<float> x(-30.0f, 30.0f), y(-15.0f, 20.0f), z(-40.0f, 15.0f), r(0.05f, 6.0f);
+    std::uniform_real_distribution<float> x(-30.0f, 30.0f), y(-15.0f, 20.0f), z(-40.0f, 15.0f),
+        r(0.05f, 6.0f);
     std::vector<gpu::LightGpu> lights(20000);
     for (gpu::LightGpu& l : lights) {
         l.position = {x(rng), y(rng), z(rng)};
@@ -86,14 +88,17 @@ TEST(GpuLightBinning, BisectedRectanglesEqualEverySlabTested) {
         l.type = TP_LIGHT_POINT;
     }
     std::vector<uint32_t> local(lights.size());
-    for (uint32_t i = 0; i < local.size(); ++i) local[i] = i;
+    for (uint32_t i = 0; i < local.size(); ++i)
+        local[i] = i;
     const std::vector<la::TileRect> rects = la::conservativeTileRects(g, view, proj, lights, local);
     const std::vector<glm::vec4> slabs = la::binSlabPlanes(g, proj);
-    auto scan = [&](uint32_t loFirst, uint32_t hiFirst, uint32_t count, glm::vec3 c, float rad, int& a, int& b) {
+    auto scan = [&](uint32_t loFirst, uint32_t hiFirst, uint32_t count, glm::vec3 c, float rad,
+                    int& a, int& b) {
         a = int(count);
         b = -1;
         for (uint32_t i = 0; i < count; ++i)
-            if (!gpu::binOutside(slabs[loFirst + i], c, rad) && !gpu::binOutside(slabs[hiFirst + i], c, rad)) {
+            if (!gpu::binOutside(slabs[loFirst + i], c, rad) &&
+                !gpu::binOutside(slabs[hiFirst + i], c, rad)) {
                 a = std::min(a, int(i));
                 b = int(i);
             }
@@ -105,13 +110,15 @@ TEST(GpuLightBinning, BisectedRectanglesEqualEverySlabTested) {
         la::TileRect want;
         if (!gpu::binBehindEye(c, rad)) {
             scan(0, g.tilesX, g.tilesX, c, rad, want.x0, want.x1);
-            if (want.x0 <= want.x1) scan(2 * g.tilesX, 2 * g.tilesX + g.tilesY, g.tilesY, c, rad, want.y0, want.y1);
+            if (want.x0 <= want.x1)
+                scan(2 * g.tilesX, 2 * g.tilesX + g.tilesY, g.tilesY, c, rad, want.y0, want.y1);
         }
         inFront += gpu::binInFront(c, rad) ? 1u : 0u;
         covering += want.empty() ? 0u : 1u;
         const la::TileRect& got = rects[k];
         if (want.empty() != got.empty() ||
-            (!want.empty() && (want.x0 != got.x0 || want.x1 != got.x1 || want.y0 != got.y0 || want.y1 != got.y1)))
+            (!want.empty() &&
+             (want.x0 != got.x0 || want.x1 != got.x1 || want.y0 != got.y0 || want.y1 != got.y1)))
             ++differing;
     }
     EXPECT_EQ(differing, 0u) << "of " << lights.size();
@@ -121,30 +128,34 @@ TEST(GpuLightBinning, BisectedRectanglesEqualEverySlabTested) {
 }
 
 struct Binned {
-    la::LightBins cpu;        // la::binLights, with candidates
-    la::LightBins sizes;      // the GPU's plan-time run
+    la::LightBins cpu;                   // la::binLights, with candidates
+    la::LightBins sizes;                 // the GPU's plan-time run
     std::vector<uint32_t> offsets, runs; // the GPU's frame: its offsets, the target's runs
     uint32_t bigLights = 0;              // filled by a workgroup each
-    uint32_t cpuBigLights = 0;           // rectangles of more than TP_BIN_BIG_RECT tiles, on the CPU
+    uint32_t cpuBigLights = 0; // rectangles of more than TP_BIN_BIG_RECT tiles, on the CPU
 };
 
 // One frame of the light_binning pass alone, writing its runs `base` words into a buffer.
-Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t frames = 2) {
+Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile,
+           uint32_t frames = 2) {
     Binned out;
     scene.setView(w, h, 1);
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
     const std::vector<uint32_t> local = la::classifyLights(scene.shadingLights()).local;
     const gpu::FrameUniforms& f = scene.shadingFrame();
     out.cpu = la::binLights(grid, f.view, f.proj, scene.shadingLights(), local, true);
-    for (const la::TileRect& r : la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local))
-        if (!r.empty() && uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1) > TP_BIN_BIG_RECT) ++out.cpuBigLights;
+    for (const la::TileRect& r :
+         la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local))
+        if (!r.empty() && uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1) > TP_BIN_BIG_RECT)
+            ++out.cpuBigLights;
     la::GpuBinning gpuBin(ctx, scene, grid, local, "test");
     out.sizes = gpuBin.sizes();
     out.bigLights = gpuBin.bigLights();
     const uint32_t base = 7; // the runs need not start at word 0
-    Buffer target = createBuffer(ctx, (base + out.sizes.slots + 1) * 4,
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                 MemoryKind::Device, {"test", "", "runs", "the runs"});
+    Buffer target =
+        createBuffer(ctx, (base + out.sizes.slots + 1) * 4,
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                     MemoryKind::Device, {"test", "", "runs", "the runs"});
     FrameGraph graph(ctx, "test", w, h);
     gpuBin.plan(graph);
     graph.compile();
@@ -155,13 +166,15 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
         std::memcpy(w.data(), bytes.data() + first * 4, n * 4);
         return w;
     };
-    out.offsets = words(readbackBuffer(ctx, graph.buffer(graph.exported("light_bin_offsets"))), 0, grid.count() + 1);
+    out.offsets = words(readbackBuffer(ctx, graph.buffer(graph.exported("light_bin_offsets"))), 0,
+                        grid.count() + 1);
     out.runs = words(readbackBuffer(ctx, target), base, out.sizes.slots);
     return out;
 }
 
 // Returns the number of lights the fill gave a workgroup each.
-uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t minLongest = 1) {
+uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile,
+                        uint32_t minLongest = 1) {
     auto ctx = makeValidatedContext();
     EXPECT_TRUE(ctx);
     if (!ctx) return 0;
@@ -187,17 +200,27 @@ uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t til
     return b.bigLights;
 }
 
-TEST(GpuLightBinning, CourtyardPointsAndSpotsTile8) { expectSameRuns(courtyard(512), 128, 72, 8); }
-TEST(GpuLightBinning, CourtyardPointsAndSpotsTile16) { expectSameRuns(courtyard(512), 128, 72, 16); }
-TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) { expectSameRuns(courtyard(512), 160, 90, 32); }
-TEST(GpuLightBinning, Floor2048Lights) { expectSameRuns(floorWith(2048), 160, 96, 16); }
+TEST(GpuLightBinning, CourtyardPointsAndSpotsTile8) {
+    expectSameRuns(courtyard(512), 128, 72, 8);
+}
+TEST(GpuLightBinning, CourtyardPointsAndSpotsTile16) {
+    expectSameRuns(courtyard(512), 128, 72, 16);
+}
+TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) {
+    expectSameRuns(courtyard(512), 160, 90, 32);
+}
+TEST(GpuLightBinning, Floor2048Lights) {
+    expectSameRuns(floorWith(2048), 160, 96, 16);
+}
 // Rows and columns longer than the scans' workgroup (64): each invocation scans a share of
 // several tiles (12 x 150 tiles, then 150 x 12).
 TEST(GpuLightBinning, TallAndWideGridsScanInShares) {
     expectSameRuns(floorWith(2048), 96, 1200, 8);
     expectSameRuns(floorWith(2048), 1200, 96, 8);
 }
-TEST(GpuLightBinning, LightsAroundAndBehindTheEye) { expectSameRuns(aroundTheEye(1024), 96, 64, 8); }
+TEST(GpuLightBinning, LightsAroundAndBehindTheEye) {
+    expectSameRuns(aroundTheEye(1024), 96, 64, 8);
+}
 // 1,000 lights in every tile: runs past the rank sort, bitonic in shared memory.
 TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
     expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1);
@@ -209,7 +232,8 @@ TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
 // Runs of 9,000 (sorted as 16,384): two merges past the block, each with steps at distances
 // of a block or more (a dispatch each) and steps within the blocks (shared memory).
 TEST(GpuLightBinning, WholeScreenRunsOfFourBlocks) {
-    expectSameRuns(wholeScreen(2 * TP_BIN_SHARED_SORT + 808), 24, 16, 8, 2 * TP_BIN_SHARED_SORT + 1);
+    expectSameRuns(wholeScreen(2 * TP_BIN_SHARED_SORT + 808), 24, 16, 8,
+                   2 * TP_BIN_SHARED_SORT + 1);
 }
 
 // Lights near the eye cover many tiles: the fill gives those a workgroup each, the rest an
@@ -278,8 +302,12 @@ RenderSettings settings(uint32_t w, uint32_t h, uint32_t msaa, uint32_t tile) {
     return s;
 }
 
-TEST(GpuLightBinning, ImagesEqualCpuBinningCourtyard) { expectSameImages(courtyard(512), settings(96, 54, 1, 16)); }
-TEST(GpuLightBinning, ImagesEqualCpuBinningMsaa4Tile8) { expectSameImages(courtyard(256), settings(96, 54, 4, 8)); }
+TEST(GpuLightBinning, ImagesEqualCpuBinningCourtyard) {
+    expectSameImages(courtyard(512), settings(96, 54, 1, 16));
+}
+TEST(GpuLightBinning, ImagesEqualCpuBinningMsaa4Tile8) {
+    expectSameImages(courtyard(256), settings(96, 54, 4, 8));
+}
 TEST(GpuLightBinning, ImagesEqualCpuBinningFloorTile32Clustered) {
     RenderSettings s = settings(128, 80, 1, 32);
     s.set("light-assign", "clustered");

@@ -33,13 +33,15 @@ glm::dvec3 closestOnTriangle(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, glm::dvec
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
     const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
     const double denom = 1.0 / (va + vb + vc);
     return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
 Scene loadTransformedScene(uint32_t seed) {
-    const fs::path dir = fs::temp_directory_path() / ("triptych_transformed_" + std::to_string(seed));
+    const fs::path dir =
+        fs::temp_directory_path() / ("triptych_transformed_" + std::to_string(seed));
     Result<Scene> scene = loadGltf(writeTransformedNodesScene(dir, seed).string());
     EXPECT_TRUE(scene.ok()) << scene.error();
     return scene.ok() ? std::move(*scene) : Scene{};
@@ -78,25 +80,30 @@ TEST(LightPlan, EveryLitSurfacePointIsInItsLightsPassUnderNodeTransforms) {
             for (const mp::LightBatch& b : plan.batches)
                 if (b.light == i) batch = &b;
             const std::set<const DrawItem*> selected =
-                batch ? std::set<const DrawItem*>(batch->draws.begin(), batch->draws.end()) : std::set<const DrawItem*>{};
+                batch ? std::set<const DrawItem*>(batch->draws.begin(), batch->draws.end())
+                      : std::set<const DrawItem*>{};
             for (size_t m = 0; m < scene.meshes.size(); ++m) {
                 const Mesh& mesh = scene.meshes[m];
                 for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-                    const glm::dvec3 p = closestOnTriangle(glm::dvec3(l.position), glm::dvec3(mesh.positions[mesh.indices[t]]),
-                                                           glm::dvec3(mesh.positions[mesh.indices[t + 1]]),
-                                                           glm::dvec3(mesh.positions[mesh.indices[t + 2]]));
+                    const glm::dvec3 p = closestOnTriangle(
+                        glm::dvec3(l.position), glm::dvec3(mesh.positions[mesh.indices[t]]),
+                        glm::dvec3(mesh.positions[mesh.indices[t + 1]]),
+                        glm::dvec3(mesh.positions[mesh.indices[t + 2]]));
                     if (glm::length(p - glm::dvec3(l.position)) >= double(l.range)) continue;
                     const glm::dvec4 clip = viewProj * glm::dvec4(p, 1.0);
                     if (clip.w <= znear) continue;
-                    const double px = (clip.x / clip.w * 0.5 + 0.5) * w, py = (0.5 - clip.y / clip.w * 0.5) * h;
+                    const double px = (clip.x / clip.w * 0.5 + 0.5) * w,
+                                 py = (0.5 - clip.y / clip.w * 0.5) * h;
                     if (px < 0 || py < 0 || px >= w || py >= h) continue;
                     ++reached;
-                    const std::string where = "seed " + std::to_string(seed) + " light " + std::to_string(i) +
-                                              " mesh " + std::to_string(m) + " at pixel (" + std::to_string(px) +
-                                              ", " + std::to_string(py) + ")";
-                    ASSERT_TRUE(selected.count(draws[m])) << where << ": the light's pass does not draw the mesh";
-                    EXPECT_TRUE(px >= batch->scissor.x0 && px <= batch->scissor.x1 && py >= batch->scissor.y0 &&
-                                py <= batch->scissor.y1)
+                    const std::string where = "seed " + std::to_string(seed) + " light " +
+                                              std::to_string(i) + " mesh " + std::to_string(m) +
+                                              " at pixel (" + std::to_string(px) + ", " +
+                                              std::to_string(py) + ")";
+                    ASSERT_TRUE(selected.count(draws[m]))
+                        << where << ": the light's pass does not draw the mesh";
+                    EXPECT_TRUE(px >= batch->scissor.x0 && px <= batch->scissor.x1 &&
+                                py >= batch->scissor.y0 && py <= batch->scissor.y1)
                         << where << ": outside the scissor";
                 }
             }
@@ -122,7 +129,8 @@ TEST(LightPlan, MultipassMatchesTheReferenceUnderNodeTransforms) {
         RunResult ref = runOrFail(*ctx, gpuScene, "reference", s);
         RunResult mp = runOrFail(*ctx, gpuScene, "multipass_forward", s);
         expectAgreeWithinSummationBound(mp.hdr, ref.hdr, uint32_t(scene.lights.size()), 1,
-                                        "multipass vs reference, transformed nodes seed " + std::to_string(seed));
+                                        "multipass vs reference, transformed nodes seed " +
+                                            std::to_string(seed));
     }
     expectNoValidationMessages(*ctx);
 }

@@ -13,12 +13,12 @@
 #include <cmath>
 
 #include "core/image/metrics.h"
+#include "core/render/camera.h"
 #include "core/scene/lights.h"
 #include "core/scene/mesh_builder.h"
 #include "core/scene/procedural.h"
 #include "gpu_test_util.h"
 #include "multipass_forward/light_plan.h"
-#include "core/render/camera.h"
 
 namespace tp::test {
 namespace {
@@ -47,7 +47,8 @@ BoundCheck checkBound(const ImageRGBA& mp, const ImageRGBA& ref, double n, doubl
     size_t count = 0;
     const double tiny = eps == kEps16 ? 6.0e-8 : 1.0e-12;
     for (size_t p = 0; p < ref.pixelCount(); ++p) {
-        const double roundings = n + kExtraRoundings + (layers ? kBlendedLayerRoundings * (*layers)[p] : 0.0);
+        const double roundings =
+            n + kExtraRoundings + (layers ? kBlendedLayerRoundings * (*layers)[p] : 0.0);
         for (int ch = 0; ch < 3; ++ch) {
             double r = ref.rgba[p * 4 + ch], t = mp.rgba[p * 4 + ch], d = std::abs(t - r);
             double bound = roundings * eps * std::abs(r) + (n + 1) * tiny + 1e-30;
@@ -76,7 +77,8 @@ std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms
             for (int k = 0; k < 3; ++k) {
                 glm::vec4 clip = f.viewProj * glm::vec4(m.positions[m.indices[t + k]], 1.0f);
                 if (clip.w <= f.projParams.x) inFront = false;
-                glm::vec2 px((clip.x / clip.w * 0.5f + 0.5f) * float(w), (0.5f - clip.y / clip.w * 0.5f) * float(h));
+                glm::vec2 px((clip.x / clip.w * 0.5f + 0.5f) * float(w),
+                             (0.5f - clip.y / clip.w * 0.5f) * float(h));
                 pmin = glm::min(pmin, px);
                 pmax = glm::max(pmax, px);
             }
@@ -85,7 +87,8 @@ std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms
                 hi = glm::min(hi, glm::ceil(pmax) + 1.0f);
             }
             for (int y = int(lo.y); y < int(hi.y); ++y)
-                for (int x = int(lo.x); x < int(hi.x); ++x) ++layers[size_t(y) * w + size_t(x)];
+                for (int x = int(lo.x); x < int(hi.x); ++x)
+                    ++layers[size_t(y) * w + size_t(x)];
         }
     }
     return layers;
@@ -98,7 +101,8 @@ double statOf(const RunResult& run, const std::string& name) {
     return -1;
 }
 
-Light point(glm::vec3 pos, float range, float intensity, glm::vec3 color = glm::vec3(1.0f, 0.9f, 0.8f)) {
+Light point(glm::vec3 pos, float range, float intensity,
+            glm::vec3 color = glm::vec3(1.0f, 0.9f, 0.8f)) {
     Light l;
     l.position = pos;
     l.range = range;
@@ -120,8 +124,10 @@ std::vector<Light> generated(const Scene& scene, uint32_t count) {
 void expectConsistentStats(const RunResult& mp, bool additive = false) {
     const double light = statOf(mp, "light_passes_draws"), blended = statOf(mp, "blended_draws");
     const double blendedLight = statOf(mp, "blended_light_draws");
-    EXPECT_EQ(statOf(mp, "draws"), statOf(mp, "depth_prepass_draws") + statOf(mp, "base_pass_draws") + light + blended);
-    EXPECT_NEAR(statOf(mp, "meshes_per_light_mean") * statOf(mp, "local_lights"), light + blendedLight, 1e-6);
+    EXPECT_EQ(statOf(mp, "draws"),
+              statOf(mp, "depth_prepass_draws") + statOf(mp, "base_pass_draws") + light + blended);
+    EXPECT_NEAR(statOf(mp, "meshes_per_light_mean") * statOf(mp, "local_lights"),
+                light + blendedLight, 1e-6);
     EXPECT_GE(blended, (additive ? 1.0 : 2.0) * blendedLight);
     EXPECT_LE(statOf(mp, "meshes_per_light_max"), light + blendedLight);
     EXPECT_LE(statOf(mp, "lights_skipped"), statOf(mp, "local_lights"));
@@ -158,28 +164,33 @@ void compareCases(const Scene& base, const std::vector<Case>& cases, uint32_t w,
         ASSERT_EQ(mp.hdr.rgba.size(), ref.hdr.rgba.size());
         std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
         BoundCheck b = checkBound(mp.hdr, ref.hdr, c.lights, kEps32, &layers);
-        EXPECT_LE(b.worstRatio, 1.0) << c.lights << " lights, " << c.msaa << "x: max abs " << b.maxAbs;
+        EXPECT_LE(b.worstRatio, 1.0)
+            << c.lights << " lights, " << c.msaa << "x: max abs " << b.maxAbs;
         EXPECT_EQ(computeError(mp.hdr, ref.hdr).nanInfCount, 0u);
         if (c.lights > 0) {
             EXPECT_GT(statOf(mp, "light_passes_draws"), 0.0);
         }
         expectConsistentStats(mp);
-        std::printf("[   info   ] %s rate, %u lights %ux: worst/bound %.3g, max abs %.3g, rmse %.3g; without the "
-                    "blended layers' share: worst/bound %.3g\n", rate, c.lights, c.msaa, b.worstRatio, b.maxAbs,
-                    b.rmse, checkBound(mp.hdr, ref.hdr, c.lights, kEps32).worstRatio);
+        std::printf("[   info   ] %s rate, %u lights %ux: worst/bound %.3g, max abs %.3g, rmse "
+                    "%.3g; without the "
+                    "blended layers' share: worst/bound %.3g\n",
+                    rate, c.lights, c.msaa, b.worstRatio, b.maxAbs, b.rmse,
+                    checkBound(mp.hdr, ref.hdr, c.lights, kEps32).worstRatio);
     }
     expectNoValidationMessages(*ctx);
 }
 
 TEST(MultipassForward, MatchesReferenceOnFloorFp32) {
     Scene scene = makeFloorScene({});
-    compareCases(scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96, 64);
+    compareCases(scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96,
+                 64);
 }
 
 TEST(MultipassForward, MatchesReferenceOnCourtyardFp32) {
     Result<Scene> scene = makeBuiltinScene("courtyard-small");
     ASSERT_TRUE(scene.ok());
-    compareCases(*scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96, 64);
+    compareCases(*scene, {{0, 1}, {1, 1}, {64, 1}, {256, 1}, {0, 4}, {1, 4}, {64, 4}, {256, 4}}, 96,
+                 64);
 }
 
 TEST(MultipassForward, PixelRateMatchesCentreReferenceOnFloor) {
@@ -215,10 +226,12 @@ TEST(MultipassForward, Fp16ErrorWithinBoundAndLargerThanFp32) {
         RunResult fp16 = runOrFail(*ctx, gpu, "multipass_forward", s);
         EXPECT_EQ(statOf(fp16, "accumulation_bits"), 16.0);
         std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
-        BoundCheck b16 = checkBound(fp16.hdr, ref, n, kEps16, &layers), b32 = checkBound(fp32, ref, n, kEps32, &layers);
+        BoundCheck b16 = checkBound(fp16.hdr, ref, n, kEps16, &layers),
+                   b32 = checkBound(fp32, ref, n, kEps32, &layers);
         EXPECT_LE(b16.worstRatio, 1.0) << n << " lights, max abs " << b16.maxAbs;
         EXPECT_GT(b16.rmse, 10.0 * b32.rmse) << n << " lights";
-        std::printf("[   info   ] %u lights: fp16 rmse %.3g max abs %.3g (worst/bound %.3g); fp32 rmse %.3g\n",
+        std::printf("[   info   ] %u lights: fp16 rmse %.3g max abs %.3g (worst/bound %.3g); fp32 "
+                    "rmse %.3g\n",
                     n, b16.rmse, b16.maxAbs, b16.worstRatio, b32.rmse);
     }
     expectNoValidationMessages(*ctx);
@@ -246,8 +259,8 @@ Mesh quad(glm::vec3 origin, glm::vec3 u, glm::vec3 v, uint32_t material) {
 TEST(MultipassForward, LightsTouchingNoMeshIssueNoDraw) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    Scene scene = makeFloorScene({point({0, 40, 0}, 3.0f, 50.0f),     // above everything
-                                  point({0, 6, 14}, 2.0f, 50.0f)});   // behind the camera
+    Scene scene = makeFloorScene({point({0, 40, 0}, 3.0f, 50.0f),   // above everything
+                                  point({0, 6, 14}, 2.0f, 50.0f)}); // behind the camera
     SceneGpu gpu(*ctx, scene);
     gpu.setLights(scene.lights);
     RenderSettings s;
@@ -297,12 +310,13 @@ PaneRuns runAgainstReference(GpuContext& ctx, SceneGpu& gpu, uint32_t msaa) {
 
 // The multipass image within the reference's bound, the blended layers' roundings counted;
 // printed as `what`.
-void expectWithinBlendedBound(const PaneRuns& r, const Scene& scene, const SceneGpu& gpu, double lights,
-                              uint32_t msaa, const char* what) {
+void expectWithinBlendedBound(const PaneRuns& r, const Scene& scene, const SceneGpu& gpu,
+                              double lights, uint32_t msaa, const char* what) {
     std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
     BoundCheck b = checkBound(r.mp.hdr, r.ref.hdr, lights, kEps32, &layers);
     EXPECT_LE(b.worstRatio, 1.0) << msaa << "x: max abs " << b.maxAbs;
-    std::printf("[   info   ] %s %ux: worst/bound %.3g, max abs %.3g\n", what, msaa, b.worstRatio, b.maxAbs);
+    std::printf("[   info   ] %s %ux: worst/bound %.3g, max abs %.3g\n", what, msaa, b.worstRatio,
+                b.maxAbs);
 }
 
 // Overlapping blended panes (separate draws) over the floor, lit by several lights: each
@@ -310,14 +324,17 @@ void expectWithinBlendedBound(const PaneRuns& r, const Scene& scene, const Scene
 TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    std::vector<Light> lights = {point({-1, 2, 2}, 5.0f, 6.0f), point({1.5f, 1, 3}, 4.0f, 4.0f, {0.3f, 0.6f, 1.0f}),
+    std::vector<Light> lights = {point({-1, 2, 2}, 5.0f, 6.0f),
+                                 point({1.5f, 1, 3}, 4.0f, 4.0f, {0.3f, 0.6f, 1.0f}),
                                  point({0, 3, -1}, 6.0f, 8.0f, {1.0f, 0.5f, 0.2f})};
     Scene scene = makeFloorScene(lights);
-    const glm::vec4 tints[3] = {{1, 0.2f, 0.2f, 0.5f}, {0.2f, 1, 0.3f, 0.35f}, {0.3f, 0.4f, 1, 0.7f}};
+    const glm::vec4 tints[3] = {
+        {1, 0.2f, 0.2f, 0.5f}, {0.2f, 1, 0.3f, 0.35f}, {0.3f, 0.4f, 1, 0.7f}};
     for (int i = 0; i < 3; ++i) {
         scene.materials.push_back(paneMaterial(tints[i]));
         float z = 2.0f - 1.2f * float(i), x = -2.0f + 0.8f * float(i);
-        scene.meshes.push_back(quad({x, 0.2f, z}, {2.5f, 0, 0}, {0, 2.0f, 0}, uint32_t(scene.materials.size() - 1)));
+        scene.meshes.push_back(
+            quad({x, 0.2f, z}, {2.5f, 0, 0}, {0, 2.0f, 0}, uint32_t(scene.materials.size() - 1)));
     }
     scene.computeBounds();
     SceneGpu gpu(*ctx, scene);
@@ -339,18 +356,23 @@ TEST(MultipassForward, BlendedPanesCompositeLikeTheReference) {
 TEST(MultipassForward, BlendedMeshOverlappingItselfCompositesLikeTheReference) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    std::vector<Light> lights = {point({-1, 2, 0}, 5.0f, 8.0f), point({1.5f, 1, 2.5f}, 4.0f, 5.0f, {0.3f, 0.6f, 1.0f})};
+    std::vector<Light> lights = {point({-1, 2, 0}, 5.0f, 8.0f),
+                                 point({1.5f, 1, 2.5f}, 4.0f, 5.0f, {0.3f, 0.6f, 1.0f})};
     Scene scene = makeFloorScene(lights);
     for (int i = 0; i < 2; ++i) {
-        scene.materials.push_back(paneMaterial(i == 0 ? glm::vec4(1, 0.3f, 0.2f, 0.5f) : glm::vec4(0.2f, 0.5f, 1, 0.7f)));
+        scene.materials.push_back(
+            paneMaterial(i == 0 ? glm::vec4(1, 0.3f, 0.2f, 0.5f) : glm::vec4(0.2f, 0.5f, 1, 0.7f)));
         const uint32_t mat = uint32_t(scene.materials.size() - 1);
         const float x = i == 0 ? -2.5f : 0.5f;
         Mesh far = quad({x, 0.2f, -1.5f}, {2.0f, 0, 0}, {0, 2.0f, 0}, mat);
-        Mesh near = quad({x + 0.8f, 0.1f, 1.5f}, {2.0f, 0, 0}, {0, 3.4f, 0}, mat); // hides all of `far`
+        Mesh near =
+            quad({x + 0.8f, 0.1f, 1.5f}, {2.0f, 0, 0}, {0, 3.4f, 0}, mat); // hides all of `far`
         Mesh& first = i == 0 ? far : near; // mesh 0: far pane first; mesh 1: near pane first
         const Mesh& second = i == 0 ? near : far;
-        for (uint32_t idx : second.indices) first.indices.push_back(idx + uint32_t(first.positions.size()));
-        first.positions.insert(first.positions.end(), second.positions.begin(), second.positions.end());
+        for (uint32_t idx : second.indices)
+            first.indices.push_back(idx + uint32_t(first.positions.size()));
+        first.positions.insert(first.positions.end(), second.positions.begin(),
+                               second.positions.end());
         first.normals.insert(first.normals.end(), second.normals.begin(), second.normals.end());
         first.tangents.insert(first.tangents.end(), second.tangents.begin(), second.tangents.end());
         first.uvs.insert(first.uvs.end(), second.uvs.begin(), second.uvs.end());
@@ -365,7 +387,8 @@ TEST(MultipassForward, BlendedMeshOverlappingItselfCompositesLikeTheReference) {
         EXPECT_EQ(statOf(r.mp, "blended_draws"), 2.0 + 2.0 * 4.0);
         EXPECT_EQ(statOf(r.mp, "blended_light_draws"), 4.0);
         expectConsistentStats(r.mp);
-        expectWithinBlendedBound(r, scene, gpu, double(lights.size()), msaa, "self-overlapping mesh");
+        expectWithinBlendedBound(r, scene, gpu, double(lights.size()), msaa,
+                                 "self-overlapping mesh");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -380,7 +403,8 @@ Mesh glassVitrine(uint32_t material) {
     procgen::addBox(b, {-1.6f, 0.05f, -1.2f}, {1.6f, 2.2f, 1.2f}, 1.0f);
     auto sphere = [](float u, float v) {
         const float th = 3.14159265f * v, ph = 6.2831853f * u;
-        return glm::vec3(0.9f * std::sin(th) * std::cos(ph), 1.1f + 0.9f * std::cos(th), 0.9f * std::sin(th) * std::sin(ph));
+        return glm::vec3(0.9f * std::sin(th) * std::cos(ph), 1.1f + 0.9f * std::cos(th),
+                         0.9f * std::sin(th) * std::sin(ph));
     };
     auto tube = [](float u, float v) {
         const float ph = 6.2831853f * u;
@@ -397,7 +421,8 @@ Mesh glassVitrine(uint32_t material) {
 TEST(MultipassForward, GlassOverlappingItselfMatchesTheReference) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    Scene scene = makeFloorScene({point({0.3f, 1.2f, 2.0f}, 3.0f, 6.0f), point({-1.0f, 2.6f, 0.0f}, 3.5f, 8.0f)});
+    Scene scene = makeFloorScene(
+        {point({0.3f, 1.2f, 2.0f}, 3.0f, 6.0f), point({-1.0f, 2.6f, 0.0f}, 3.5f, 8.0f)});
     scene.materials.push_back(paneMaterial(glm::vec4(0.6f, 0.8f, 0.9f, 0.4f)));
     scene.meshes.push_back(glassVitrine(uint32_t(scene.materials.size() - 1)));
     scene.computeBounds();
@@ -406,15 +431,17 @@ TEST(MultipassForward, GlassOverlappingItselfMatchesTheReference) {
     SceneGpu gpu(*ctx, scene);
     gpu.setLights(scene.lights);
     const std::vector<uint32_t> layers = blendedLayers(scene, gpu.frame());
-    EXPECT_GE(*std::max_element(layers.begin(), layers.end()), 6u) << "the glass should overlap itself";
+    EXPECT_GE(*std::max_element(layers.begin(), layers.end()), 6u)
+        << "the glass should overlap itself";
     struct Run {
         uint32_t msaa;
-        const char* rate; // under MSAA: sample against the supersampled reference, pixel against the centre one
+        const char* rate; // under MSAA: sample against the supersampled reference, pixel against
+                          // the centre one
         const char* lights;
     };
     for (Run r : {Run{1, "sample", "under"}, Run{4, "sample", "under"}, Run{4, "pixel", "under"},
-                  Run{1, "sample", "one-pass"}, Run{4, "sample", "one-pass"}, Run{4, "pixel", "one-pass"},
-                  Run{1, "sample", "additive"}}) {
+                  Run{1, "sample", "one-pass"}, Run{4, "sample", "one-pass"},
+                  Run{4, "pixel", "one-pass"}, Run{1, "sample", "additive"}}) {
         RenderSettings s;
         s.width = 96;
         s.height = 64;
@@ -432,8 +459,9 @@ TEST(MultipassForward, GlassOverlappingItselfMatchesTheReference) {
         else
             EXPECT_GT(statOf(mp, "blended_light_draws"), 0.0);
         BoundCheck b = checkBound(mp.hdr, ref.hdr, double(scene.lights.size()), kEps32, &layers);
-        std::printf("[   info   ] glass vitrine %ux %s, %s lights: worst/bound %.3g, max abs %.3g, rmse %.3g\n", r.msaa,
-                    r.rate, r.lights, b.worstRatio, b.maxAbs, b.rmse);
+        std::printf("[   info   ] glass vitrine %ux %s, %s lights: worst/bound %.3g, max abs %.3g, "
+                    "rmse %.3g\n",
+                    r.msaa, r.rate, r.lights, b.worstRatio, b.maxAbs, b.rmse);
         if (additive) // the textbook pass is not exact here: the test sees self-overlap
             EXPECT_GT(b.worstRatio, 1000.0) << "max abs " << b.maxAbs;
         else
@@ -457,7 +485,10 @@ TEST(MultipassForward, SphereScissorContainsTheSphere) {
     f.viewport = glm::uvec4(w, h, 0, 1);
     f.projParams = glm::vec4(cam.znear, 0, 0, 0);
     uint32_t seed = 12345, full = 0, empty = 0, checked = 0;
-    auto rnd = [&] { seed = seed * 1664525u + 1013904223u; return float(seed >> 8) / float(1 << 24); };
+    auto rnd = [&] {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1 << 24);
+    };
     for (int i = 0; i < 2000; ++i) {
         glm::vec3 c(rnd() * 24 - 12, rnd() * 16 - 6, rnd() * 24 - 16);
         float r = 0.05f + rnd() * 4.0f;
@@ -485,7 +516,8 @@ TEST(MultipassForward, SphereScissorContainsTheSphere) {
         if (rect.empty()) {
             EXPECT_GT(lo.x, hi.x) << "empty rectangle for a visible sphere";
             ++empty;
-        } else if (lo.x < hi.x && rect.x0 > 0 && rect.x1 < int(w) && rect.y0 > 0 && rect.y1 < int(h)) {
+        } else if (lo.x < hi.x && rect.x0 > 0 && rect.x1 < int(w) && rect.y0 > 0 &&
+                   rect.y1 < int(h)) {
             // Tight: sampled silhouette and rectangle agree within the rounding and sampling.
             EXPECT_LE(rect.x1 - rect.x0, hi.x - lo.x + 4 + 0.1f * (hi.x - lo.x));
         }

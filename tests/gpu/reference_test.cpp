@@ -42,7 +42,8 @@ glm::vec3 unproject(const gpu::FrameUniforms& f, uint32_t x, uint32_t y, float d
 TEST(Reference, MatchesCpuShadingOfTheFloor) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    std::vector<Light> lights = {pointLight({2, 1.5f, 2}, 6.0f, 8.0f), pointLight({-3, 2, -1}, 5.0f, 5.0f)};
+    std::vector<Light> lights = {pointLight({2, 1.5f, 2}, 6.0f, 8.0f),
+                                 pointLight({-3, 2, -1}, 5.0f, 5.0f)};
     Scene scene = makeFloorScene(lights);
     SceneGpu gpuScene(*ctx, scene);
     RenderSettings settings;
@@ -57,7 +58,8 @@ TEST(Reference, MatchesCpuShadingOfTheFloor) {
             float d = run.depth.r[y * run.depth.width + x];
             if (d <= 0.0f) continue;
             glm::vec3 p = unproject(f, x, y, d);
-            if (std::abs(p.y) > 1e-3f || std::abs(p.x) < 1.2f || std::abs(p.z) < 1.2f) continue; // floor only
+            if (std::abs(p.y) > 1e-3f || std::abs(p.x) < 1.2f || std::abs(p.z) < 1.2f)
+                continue; // floor only
             gpu::SurfaceSample s;
             s.position = p;
             s.normal = glm::vec3(0, 1, 0);
@@ -66,10 +68,12 @@ TEST(Reference, MatchesCpuShadingOfTheFloor) {
             s.metallic = 0.0f;
             s.roughness = 1.0f;
             glm::vec3 expect = scene.ambient * s.baseColor;
-            for (const Light& l : lights) expect += gpu::evalLight(toGpu(l), s, true);
+            for (const Light& l : lights)
+                expect += gpu::evalLight(toGpu(l), s, true);
             const float* got = run.hdr.at(x, y);
             for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(got[c], expect[c], 2e-3f * expect[c] + 1e-5f) << "pixel " << x << "," << y;
+                EXPECT_NEAR(got[c], expect[c], 2e-3f * expect[c] + 1e-5f)
+                    << "pixel " << x << "," << y;
             ++checked;
         }
     }
@@ -90,7 +94,8 @@ TEST(Reference, TwoRendersAreBitIdenticalAndFinite) {
     RunResult b = runOrFail(*ctx, gpuScene, "reference", settings);
     ASSERT_EQ(a.hdr.rgba.size(), b.hdr.rgba.size());
     EXPECT_EQ(std::memcmp(a.hdr.rgba.data(), b.hdr.rgba.data(), a.hdr.rgba.size() * 4), 0);
-    for (float v : a.hdr.rgba) ASSERT_TRUE(std::isfinite(v));
+    for (float v : a.hdr.rgba)
+        ASSERT_TRUE(std::isfinite(v));
     expectNoValidationMessages(*ctx);
 }
 
@@ -104,7 +109,8 @@ TEST(Reference, NoLightsLeavesAmbientOnly) {
     settings.height = 32;
     RunResult run = runOrFail(*ctx, gpuScene, "reference", settings);
     float maxValue = 0.0f;
-    for (size_t i = 0; i < run.hdr.pixelCount(); ++i) maxValue = std::max(maxValue, run.hdr.rgba[i * 4]);
+    for (size_t i = 0; i < run.hdr.pixelCount(); ++i)
+        maxValue = std::max(maxValue, run.hdr.rgba[i * 4]);
     EXPECT_LE(maxValue, 0.8f * 0.01f + 1e-6f); // ambient * white base colour
     EXPECT_GT(maxValue, 0.0f);
     expectNoValidationMessages(*ctx);
@@ -150,8 +156,9 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
             bool over = false;
             for (int c = 0; c < 3; ++c) {
                 const double g = got.at(x, y)[c], r = ref.at(x, y)[c];
-                const double ratio = std::isfinite(g) ? std::abs(g - r) / (b.relative() * std::abs(r) + b.absolute())
-                                                      : INFINITY;
+                const double ratio =
+                    std::isfinite(g) ? std::abs(g - r) / (b.relative() * std::abs(r) + b.absolute())
+                                     : INFINITY;
                 over = over || ratio > 1.0;
                 if (ratio > w.ratio) w = {ratio, g, r, x, y, w.pixelsOver};
             }
@@ -172,7 +179,8 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
 // for the whole pixel, and both pipelines were off by whole samples along every hole.
 TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
     namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("triptych_refcov_" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("triptych_refcov_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     const fs::path path = writeMaskedScene(dir / "masked");
     Result<Scene> loaded = loadGltf(path.string(), {});
@@ -195,7 +203,8 @@ TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
     settings.set("reference-msaa", "center");
     const RunResult centre = runOrFail(*ctx, gpuScene, "reference", settings);
     double lit = 0;
-    for (size_t i = 0; i < centre.hdr.pixelCount(); ++i) lit += centre.hdr.rgba[i * 4 + 1];
+    for (size_t i = 0; i < centre.hdr.pixelCount(); ++i)
+        lit += centre.hdr.rgba[i * 4 + 1];
     EXPECT_GT(lit, 0.0) << "the centre reference is black";
 
     stress::StressCase c;
@@ -211,11 +220,13 @@ TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
         const ErrorBound bound = expectedBound((*entry)->errorModel, {c, scene, model});
         ASSERT_TRUE(bound.bounded) << bound.why;
         const WorstRatio w = worstRatio(run.hdr, centre.hdr, bound);
-        std::printf("[ centre   ] %-17s 4x pixel rate on alpha-tested surfaces: worst |d|/bound %.3g at %u,%u; "
+        std::printf("[ centre   ] %-17s 4x pixel rate on alpha-tested surfaces: worst |d|/bound "
+                    "%.3g at %u,%u; "
                     "%u pixels over the bound\n",
                     pipeline, w.ratio, w.x, w.y, w.pixelsOver);
-        EXPECT_LE(w.ratio, 1.0) << "pixel " << w.x << "," << w.y << ": got " << w.got << ", centre reference "
-                                << w.ref << "; " << w.pixelsOver << " pixels over the bound";
+        EXPECT_LE(w.ratio, 1.0) << "pixel " << w.x << "," << w.y << ": got " << w.got
+                                << ", centre reference " << w.ref << "; " << w.pixelsOver
+                                << " pixels over the bound";
     }
     expectNoValidationMessages(*ctx);
 }

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <stb_image.h> // Debian's libstb exports stbi_load
@@ -27,7 +27,8 @@ struct Rgb {
 };
 
 bool near(const unsigned char* px, Rgb c, int tolerance) {
-    return std::abs(px[0] - c.r) <= tolerance && std::abs(px[1] - c.g) <= tolerance && std::abs(px[2] - c.b) <= tolerance;
+    return std::abs(px[0] - c.r) <= tolerance && std::abs(px[1] - c.g) <= tolerance &&
+           std::abs(px[2] - c.b) <= tolerance;
 }
 
 std::string readText(const fs::path& path) {
@@ -88,7 +89,8 @@ document.getElementById('checks').textContent=out.join('\n');
 
 std::string chromium() {
     for (const char* name : {"chromium", "chromium-browser"})
-        if (std::system(("command -v " + std::string(name) + " >/dev/null 2>&1").c_str()) == 0) return name;
+        if (std::system(("command -v " + std::string(name) + " >/dev/null 2>&1").c_str()) == 0)
+            return name;
     return "";
 }
 
@@ -96,8 +98,10 @@ std::string chromium() {
 
 TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
     const std::string browser = chromium();
-    if (browser.empty()) GTEST_SKIP() << "chromium not on PATH: report.html not checked in a browser";
-    const fs::path dir = fs::temp_directory_path() / ("triptych_browser_" + std::to_string(getpid()));
+    if (browser.empty())
+        GTEST_SKIP() << "chromium not on PATH: report.html not checked in a browser";
+    const fs::path dir =
+        fs::temp_directory_path() / ("triptych_browser_" + std::to_string(getpid()));
     fs::remove_all(dir);
     cli::CompareOptions o;
     o.scene.scene = "builtin:courtyard-small";
@@ -112,11 +116,12 @@ TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
     const std::string shot = (dir / "shot.png").string();
     // No network, a throw-away profile; root in a container needs --no-sandbox.
     // Root in a container needs --no-sandbox; a small /dev/shm, --disable-dev-shm-usage.
-    const std::string browserCommand = "timeout 120 " + browser +
-                                       " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage"
-                                       " --hide-scrollbars --no-first-run --user-data-dir='" +
-                                       (dir / "profile").string() + "' --window-size=" + std::to_string(width) + "," +
-                                       std::to_string(height);
+    const std::string browserCommand =
+        "timeout 120 " + browser +
+        " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage"
+        " --hide-scrollbars --no-first-run --user-data-dir='" +
+        (dir / "profile").string() + "' --window-size=" + std::to_string(width) + "," +
+        std::to_string(height);
     const std::string command = browserCommand + " --screenshot='" + shot + "' 'file://" + o.out +
                                 "/report.html' >'" + (dir / "chromium.log").string() + "' 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
@@ -129,14 +134,16 @@ TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
     size_t notBackground = 0, paleYellow = 0;
     std::set<int> colours;
     // The chart palette (compare/svg_plot.cpp): the reference, then the first three pipelines.
-    const Rgb palette[] = {{0x1f, 0x77, 0xb4}, {0xd6, 0x27, 0x28}, {0x2c, 0xa0, 0x2c}, {0x94, 0x67, 0xbd}};
+    const Rgb palette[] = {
+        {0x1f, 0x77, 0xb4}, {0xd6, 0x27, 0x28}, {0x2c, 0xa0, 0x2c}, {0x94, 0x67, 0xbd}};
     size_t paletteHits[4] = {0, 0, 0, 0};
     for (size_t i = 0; i < size_t(w) * size_t(h); ++i) {
         const unsigned char* px = pixels + i * 3;
         notBackground += !(px[0] > 240 && px[1] > 240 && px[2] > 240);
         paleYellow += near(px, {0xfc, 0xff, 0xa4}, 16); // the top of the heat-map legend
         colours.insert((px[0] >> 3) << 10 | (px[1] >> 3) << 5 | (px[2] >> 3));
-        for (int c = 0; c < 4; ++c) paletteHits[c] += near(px, palette[c], 6);
+        for (int c = 0; c < 4; ++c)
+            paletteHits[c] += near(px, palette[c], 6);
     }
     stbi_image_free(pixels);
     SCOPED_TRACE("screenshot " + shot);
@@ -144,7 +151,8 @@ TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
     EXPECT_GT(double(notBackground) / (double(w) * h), 0.2);
     EXPECT_GT(colours.size(), 500u) << "rendered images bring hundreds of distinct colours";
     EXPECT_GT(paleYellow, 200u) << "heat-map legends";
-    for (int c = 0; c < 4; ++c) EXPECT_GT(paletteHits[c], 30u) << "plot/bar colour " << c;
+    for (int c = 0; c < 4; ++c)
+        EXPECT_GT(paletteHits[c], 30u) << "plot/bar colour " << c;
 
     // The same page with the checks appended (the page itself carries no test code).
     std::string page = readText(o.out + "/report.html");
@@ -154,8 +162,9 @@ TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
     const fs::path checked = dir / "out" / "report_checked.html";
     std::ofstream(checked, std::ios::binary) << page;
     const fs::path dom = dir / "dom.html";
-    const std::string dump = browserCommand + " --virtual-time-budget=10000 --dump-dom 'file://" + checked.string() +
-                             "' >'" + dom.string() + "' 2>'" + (dir / "chromium_dom.log").string() + "'";
+    const std::string dump = browserCommand + " --virtual-time-budget=10000 --dump-dom 'file://" +
+                             checked.string() + "' >'" + dom.string() + "' 2>'" +
+                             (dir / "chromium_dom.log").string() + "'";
     ASSERT_EQ(std::system(dump.c_str()), 0) << dump;
     const std::string text = readText(dom);
     const size_t from = text.find("<pre id=\"checks\">"), to = text.find("</pre>", from);

@@ -67,7 +67,8 @@ void expectFactChecks(const stress::StressCase& sc, const json& p, const std::st
     EXPECT_EQ(hasCheck(p, "HDR max"), sc.hdrChecked) << key;
     if (sc.blendedLayers) {
         bool term = false;
-        for (const json& t : p["bound"]["terms"]) term |= t["name"] == "blended layers: fp32 blend arithmetic";
+        for (const json& t : p["bound"]["terms"])
+            term |= t["name"] == "blended layers: fp32 blend arithmetic";
         EXPECT_TRUE(term) << key;
     }
 }
@@ -78,9 +79,10 @@ void expectEveryPipelinePasses(const json& c) {
         std::string failed;
         for (const json& k : p["checks"])
             if (!k["pass"].get<bool>())
-                failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
-        EXPECT_EQ(p["verdict"], "pass") << c["name"].get<std::string>() << "/" << p["name"].get<std::string>() << ": "
-                                        << failed;
+                failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " +
+                          k["limit"].dump() + "; ";
+        EXPECT_EQ(p["verdict"], "pass") << c["name"].get<std::string>() << "/"
+                                        << p["name"].get<std::string>() << ": " << failed;
     }
 }
 
@@ -124,16 +126,22 @@ TEST(Stress, EveryCaseGivesTodaysVerdicts) {
             const bool expectFail = knownFailures().count(key) > 0;
             std::string failed;
             for (const json& k : p["checks"])
-                if (!k["pass"].get<bool>()) failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " + k["limit"].dump() + "; ";
+                if (!k["pass"].get<bool>())
+                    failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " > " +
+                              k["limit"].dump() + "; ";
             if (knownFlaky().count(key))
-                std::printf("stress: %s (known flaky): %s %s\n", key.c_str(), p["verdict"].get<std::string>().c_str(), failed.c_str());
+                std::printf("stress: %s (known flaky): %s %s\n", key.c_str(),
+                            p["verdict"].get<std::string>().c_str(), failed.c_str());
             else
                 EXPECT_EQ(p["verdict"], expectFail ? "fail" : "pass")
-                    << key << (expectFail ? ": a known failure passes now; remove it from knownFailures()" : ": " + failed);
+                    << key
+                    << (expectFail ? ": a known failure passes now; remove it from knownFailures()"
+                                   : ": " + failed);
             casePass &= p["verdict"] == "pass";
             if (p["status"] == "ok") {
                 EXPECT_TRUE(fs::exists(o.out + "/" + name + "/" + pipelines[i] + ".exr")) << key;
-                EXPECT_TRUE(fs::exists(o.out + "/" + name + "/" + pipelines[i] + "_diff.png")) << key;
+                EXPECT_TRUE(fs::exists(o.out + "/" + name + "/" + pipelines[i] + "_diff.png"))
+                    << key;
             }
         }
         EXPECT_EQ(c["verdict"], casePass ? "pass" : "fail") << name;
@@ -151,16 +159,19 @@ TEST(Stress, ClusteredPassesTheLightAssignmentCases) {
     cli::StressOptions o;
     o.out = freshDir("stress_clustered");
     o.device.validate = true;
-    o.cases = "tile-overflow,depth-discontinuity,lights-65536,lights-whole-screen,lights-subpixel,far-from-origin";
+    o.cases = "tile-overflow,depth-discontinuity,lights-65536,lights-whole-screen,lights-subpixel,"
+              "far-from-origin";
     o.pipelines = "forwardplus,deferred";
     o.knobs.set("light-assign", "clustered");
-    o.commandLine = {"triptych", "stress", "--validate", "--light-assign", "clustered", "--out", o.out};
+    o.commandLine = {"triptych",  "stress", "--validate", "--light-assign",
+                     "clustered", "--out",  o.out};
     const int code = cli::runStress(o);
     ASSERT_TRUE(fs::exists(o.out + "/stress.json"));
     const json r = readJson(o.out + "/stress.json");
     EXPECT_TRUE(r["validation_messages"].empty());
     EXPECT_EQ(r["cases"].size(), 6u);
-    for (const json& c : r["cases"]) expectEveryPipelinePasses(c);
+    for (const json& c : r["cases"])
+        expectEveryPipelinePasses(c);
     EXPECT_EQ(code, 0);
     fs::remove_all(o.out);
 }
@@ -177,8 +188,8 @@ TEST(Stress, StiffCasesPassInTheOtherModes) {
     o.device.validate = true;
     o.cases = "dynamic-range,blended-64,lights-range-0,camera-in-light,spot-zero-cone";
     const std::vector<std::pair<std::string, std::string>> knobs = {
-        {"deferred-lighting", "volumes"}, {"gbuffer", "wide"},          {"hdr", "fp16"},
-        {"light-lists", "fixed"},         {"accum", "fp16"},            {"blended-lights", "additive"}};
+        {"deferred-lighting", "volumes"}, {"gbuffer", "wide"}, {"hdr", "fp16"},
+        {"light-lists", "fixed"},         {"accum", "fp16"},   {"blended-lights", "additive"}};
     o.commandLine = {"triptych", "stress", "--validate"};
     for (const auto& [k, v] : knobs) {
         o.knobs.set(k, v);

@@ -78,23 +78,27 @@ bool isDivider(const ImageRGBA& img, uint32_t x, uint32_t y) {
 
 uint32_t dividerRows(const ImageRGBA& img, uint32_t x) {
     uint32_t n = 0;
-    for (uint32_t y = 0; y < kH; ++y) n += isDivider(img, x, y);
+    for (uint32_t y = 0; y < kH; ++y)
+        n += isDivider(img, x, y);
     return n;
 }
 
 TEST(Viewer, SplitLineSitsWhereTheScriptAndTheDragPutIt) {
-    ViewRun r = runScript("split", "split 0.25\nwait\nscreenshot split.png\nstats split.json\n"
-                               "drag 40 45 120 45\nwait\nscreenshot dragged.png\nstats dragged.json\n");
+    ViewRun r =
+        runScript("split", "split 0.25\nwait\nscreenshot split.png\nstats split.json\n"
+                           "drag 40 45 120 45\nwait\nscreenshot dragged.png\nstats dragged.json\n");
     ASSERT_EQ(r.code, 0);
     ImageRGBA shot = r.shot("split.png");
     ASSERT_GE(shot.width, kW + 300); // the scene area and the panel beside it
     EXPECT_EQ(dividerRows(shot, 40), kH) << "the divider at 0.25 of 160 pixels is column 40";
-    for (uint32_t x : {0u, 39u, 41u, 100u}) EXPECT_EQ(dividerRows(shot, x), 0u) << "column " << x;
+    for (uint32_t x : {0u, 39u, 41u, 100u})
+        EXPECT_EQ(dividerRows(shot, x), 0u) << "column " << x;
     // The UI is in the screenshot: the panel right of the scene area is not one flat colour.
     const float* a = shot.at(kW + 40, 8);
     bool varied = false;
     for (uint32_t y = 0; y < 200 && !varied; ++y)
-        for (uint32_t x = kW + 1; x < shot.width; x += 3) varied |= shot.at(x, y)[0] != a[0];
+        for (uint32_t x = kW + 1; x < shot.width; x += 3)
+            varied |= shot.at(x, y)[0] != a[0];
     EXPECT_TRUE(varied);
     EXPECT_EQ(r.stats("split.json")["split_column"], 40);
     ImageRGBA dragged = r.shot("dragged.png");
@@ -104,8 +108,9 @@ TEST(Viewer, SplitLineSitsWhereTheScriptAndTheDragPutIt) {
 }
 
 TEST(Viewer, DifferenceOfAPipelineAgainstItselfIsZero) {
-    ViewRun r = runScript("diff_self", "pipeline b " + pipeline(0) + "\nmode difference\nwait\nscreenshot diff.png\n"
-                                   "stats diff.json\n");
+    ViewRun r = runScript("diff_self", "pipeline b " + pipeline(0) +
+                                           "\nmode difference\nwait\nscreenshot diff.png\n"
+                                           "stats diff.json\n");
     ASSERT_EQ(r.code, 0);
     ImageRGBA shot = r.shot("diff.png");
     nlohmann::json stats = r.stats("diff.json");
@@ -116,7 +121,8 @@ TEST(Viewer, DifferenceOfAPipelineAgainstItselfIsZero) {
     uint32_t other = 0;
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x)
-            for (int c = 0; c < 3; ++c) other += shot.at(x, y)[c] != zero[c];
+            for (int c = 0; c < 3; ++c)
+                other += shot.at(x, y)[c] != zero[c];
     EXPECT_EQ(other, 0u);
     EXPECT_FALSE(isDivider(shot, 0, 0));
 }
@@ -132,15 +138,17 @@ TEST(Viewer, FlipShowsBWhereAWas) {
     if (pipeline(0) == pipeline(1)) GTEST_SKIP() << "one pipeline registered";
     // A fixed exposure (auto exposure follows A's image), and one render of each pipeline:
     // split 0 shows B whole, from the same render the flip shows.
-    ViewRun r = runScript("flip", "exposure 0\nsplit 1\nwait\nscreenshot a.png\nkey f\nwait\n"
-                                  "screenshot flipped.png\nflip off\nsplit 0\nwait\nscreenshot b.png\n");
+    ViewRun r =
+        runScript("flip", "exposure 0\nsplit 1\nwait\nscreenshot a.png\nkey f\nwait\n"
+                          "screenshot flipped.png\nflip off\nsplit 0\nwait\nscreenshot b.png\n");
     ASSERT_EQ(r.code, 0);
     ImageRGBA a = r.shot("a.png"), flipped = r.shot("flipped.png"), b = r.shot("b.png");
     auto sceneDiffers = [](const ImageRGBA& x, const ImageRGBA& y) {
         uint32_t n = 0;
         for (uint32_t row = 0; row < kH; ++row)
             for (uint32_t col = 0; col < kW; ++col)
-                for (int c = 0; c < 3; ++c) n += x.at(col, row)[c] != y.at(col, row)[c];
+                for (int c = 0; c < 3; ++c)
+                    n += x.at(col, row)[c] != y.at(col, row)[c];
         return n;
     };
     EXPECT_EQ(sceneDiffers(flipped, b), 0u) << "flip shows B over the whole split-at-1 view";
@@ -148,8 +156,9 @@ TEST(Viewer, FlipShowsBWhereAWas) {
 }
 
 TEST(Viewer, InspectorReadsThePixelUnderTheCursor) {
-    ViewRun r = runScript("hover", "pipeline b " + pipeline(0) + "\nwait\nhover 100 50\nstats hover.json\n"
-                               "screenshot hover.png\n");
+    ViewRun r = runScript("hover", "pipeline b " + pipeline(0) +
+                                       "\nwait\nhover 100 50\nstats hover.json\n"
+                                       "screenshot hover.png\n");
     ASSERT_EQ(r.code, 0);
     nlohmann::json s = r.stats("hover.json");
     ASSERT_TRUE(s.contains("inspection"));
@@ -157,16 +166,20 @@ TEST(Viewer, InspectorReadsThePixelUnderTheCursor) {
     EXPECT_EQ(s["inspection"]["y"], 50);
     EXPECT_EQ(s["inspection"]["a"], s["inspection"]["b"]); // one pipeline on both sides
     double sum = 0;
-    for (double v : s["inspection"]["a"]) sum += v;
+    for (double v : s["inspection"]["a"])
+        sum += v;
     EXPECT_GT(sum, 0.0) << "a lit courtyard pixel";
 }
 
 TEST(Viewer, InspectorListsTheLightsReachingTheSurface) {
     // Directional lights reach every surface and no sky: the list is all of them or empty.
-    ViewRun r = runScript("pixel_lights", "pipeline b " + pipeline(0) + "\nlights types directional\nlights count 3\n"
-                                          "wait\nhover 80 85\nstats floor.json\nhover 80 0\nstats sky.json\n");
+    ViewRun r = runScript("pixel_lights",
+                          "pipeline b " + pipeline(0) +
+                              "\nlights types directional\nlights count 3\n"
+                              "wait\nhover 80 85\nstats floor.json\nhover 80 0\nstats sky.json\n");
     ASSERT_EQ(r.code, 0);
-    nlohmann::json floor = r.stats("floor.json")["inspection"], sky = r.stats("sky.json")["inspection"];
+    nlohmann::json floor = r.stats("floor.json")["inspection"],
+                   sky = r.stats("sky.json")["inspection"];
     EXPECT_TRUE(floor["surface"].get<bool>());
     EXPECT_EQ(floor["lights"], nlohmann::json::array({0, 1, 2}));
     EXPECT_FALSE(sky["surface"].get<bool>());
@@ -174,10 +187,13 @@ TEST(Viewer, InspectorListsTheLightsReachingTheSurface) {
 }
 
 TEST(Viewer, ReferenceInTheBackgroundIsMarkedStaleWhenTheViewMoves) {
-    ViewRun r = runScript("reference", "wait\nstats fresh.json\ncamera orbit 20 0\nframes 1\nstats moved.json\n"
-                                   "wait\nstats again.json\n", /*reference=*/true);
+    ViewRun r = runScript("reference",
+                          "wait\nstats fresh.json\ncamera orbit 20 0\nframes 1\nstats moved.json\n"
+                          "wait\nstats again.json\n",
+                          /*reference=*/true);
     ASSERT_EQ(r.code, 0);
-    nlohmann::json fresh = r.stats("fresh.json"), moved = r.stats("moved.json"), again = r.stats("again.json");
+    nlohmann::json fresh = r.stats("fresh.json"), moved = r.stats("moved.json"),
+                   again = r.stats("again.json");
     EXPECT_FALSE(fresh["reference_stale"].get<bool>());
     ASSERT_TRUE(fresh.contains("a_vs_reference"));
     EXPECT_GT(fresh["a_vs_reference"]["psnr"].get<double>(), 20.0);
@@ -188,34 +204,42 @@ TEST(Viewer, ReferenceInTheBackgroundIsMarkedStaleWhenTheViewMoves) {
 }
 
 TEST(Viewer, ASceneThatFailsToLoadKeepsTheViewerOpenWithTheError) {
-    ViewRun r = runScript("bad_scene", "scene /nonexistent/scene.gltf\nwait\nexpect-error nonexistent\n"
-                                   "screenshot error.png\nscene builtin:courtyard-small\nwait\nstats ok.json\n");
+    ViewRun r = runScript(
+        "bad_scene", "scene /nonexistent/scene.gltf\nwait\nexpect-error nonexistent\n"
+                     "screenshot error.png\nscene builtin:courtyard-small\nwait\nstats ok.json\n");
     ASSERT_EQ(r.code, 0);
     EXPECT_EQ(r.stats("ok.json")["error"], "");
 }
 
 TEST(Viewer, OverlayShowsADebugImageOfA) {
-    ViewRun r = runScript("overlay", "mode overlay\nwait\nstats overlay.json\nscreenshot overlay.png\n");
+    ViewRun r =
+        runScript("overlay", "mode overlay\nwait\nstats overlay.json\nscreenshot overlay.png\n");
     ASSERT_EQ(r.code, 0);
     nlohmann::json s = r.stats("overlay.json");
     EXPECT_FALSE(s["pipeline_a"]["debug_images"].empty());
 }
 
 TEST(Viewer, ABookmarkBringsTheCameraBack) {
-    ViewRun r = runScript("bookmark", "pipeline b " + pipeline(0) + "\ncamera orbit 30 10\ncamera save b.json\n"
-                                      "wait\nstats saved.json\ncamera reset\nwait\nstats reset.json\n"
-                                      "camera load b.json\nwait\nstats loaded.json\n");
+    ViewRun r =
+        runScript("bookmark", "pipeline b " + pipeline(0) +
+                                  "\ncamera orbit 30 10\ncamera save b.json\n"
+                                  "wait\nstats saved.json\ncamera reset\nwait\nstats reset.json\n"
+                                  "camera load b.json\nwait\nstats loaded.json\n");
     ASSERT_EQ(r.code, 0);
-    nlohmann::json saved = r.stats("saved.json"), reset = r.stats("reset.json"), loaded = r.stats("loaded.json");
+    nlohmann::json saved = r.stats("saved.json"), reset = r.stats("reset.json"),
+                   loaded = r.stats("loaded.json");
     EXPECT_NE(saved["camera"], reset["camera"]);
     for (const char* k : {"position", "target"})
         for (int i = 0; i < 3; ++i)
-            EXPECT_NEAR(saved["camera"][k][i].get<double>(), loaded["camera"][k][i].get<double>(), 1e-5) << k;
+            EXPECT_NEAR(saved["camera"][k][i].get<double>(), loaded["camera"][k][i].get<double>(),
+                        1e-5)
+                << k;
 }
 
 TEST(Viewer, ExportWritesRenderAndCompareOfTheCurrentView) {
-    ViewRun r = runScript("export", "pipeline b " + pipeline(0) + "\ncamera orbit 15 0\nwait\nstats view.json\n"
-                                    "export exported\n");
+    ViewRun r = runScript("export", "pipeline b " + pipeline(0) +
+                                        "\ncamera orbit 15 0\nwait\nstats view.json\n"
+                                        "export exported\n");
     ASSERT_EQ(r.code, 0);
     const std::string dir = r.out + "/exported";
     EXPECT_TRUE(std::filesystem::exists(dir + "/render/" + pipeline(0) + ".png"));
@@ -226,7 +250,8 @@ TEST(Viewer, ExportWritesRenderAndCompareOfTheCurrentView) {
     std::ifstream in(dir + "/render/camera.json");
     nlohmann::json used = nlohmann::json::parse(in);
     for (int i = 0; i < 3; ++i)
-        EXPECT_NEAR(used["position"][i].get<double>(), view["camera"]["position"][i].get<double>(), 1e-5);
+        EXPECT_NEAR(used["position"][i].get<double>(), view["camera"]["position"][i].get<double>(),
+                    1e-5);
 }
 
 TEST(Viewer, AnMsaaCountTheDeviceLacksIsRefusedWithTheReason) {
@@ -244,11 +269,13 @@ TEST(Viewer, AnMsaaCountTheDeviceLacksIsRefusedWithTheReason) {
 }
 
 TEST(Viewer, ABadScriptLineIsOneErrorAndNoRun) {
-    const std::string path = (std::filesystem::temp_directory_path() / "triptych_view_bad.txt").string();
+    const std::string path =
+        (std::filesystem::temp_directory_path() / "triptych_view_bad.txt").string();
     std::ofstream(path) << "split 0.5\nteleport 1 2\n";
     Result<std::vector<ScriptLine>> lines = readScript(path);
     ASSERT_FALSE(lines);
-    EXPECT_NE(lines.error().find(":2: unknown command 'teleport'"), std::string::npos) << lines.error();
+    EXPECT_NE(lines.error().find(":2: unknown command 'teleport'"), std::string::npos)
+        << lines.error();
 }
 
 } // namespace
