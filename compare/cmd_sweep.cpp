@@ -224,6 +224,23 @@ void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows,
     if (!s) throw UsageError(s.error());
 }
 
+// The reference run of one view and light count and what every row is measured against with
+// it: exposure, peak, FLIP's share, the centre reference. Filled in place (flip points into run).
+void setReference(Reference& ref, const RunResult& run, const SweepOptions& o, GpuContext& ctx,
+                  SceneGpu& scene, const SceneFeatures& features, const RenderSettings& s,
+                  const RunOptions& ro) {
+    ref.run = run;
+    ref.ev = autoExposureEv(ref.run->hdr);
+    ref.peak = brightestFiniteChannel(ref.run->hdr);
+    ref.flip = prepareFlipReference(ref.run->hdr, ref.ev, o.flipDistance);
+    // Already at --reference-msaa center: that run is the centre reference.
+    const auto mode = s.knobs.find("reference-msaa");
+    ref.center =
+        mode != s.knobs.end() && mode->second == "center" && s.msaa > 1 && o.centerReference
+            ? ref.run
+            : centerReference(o, ctx, scene, features, s, ro);
+}
+
 } // namespace
 
 int runSweep(const SweepOptions& o) {
@@ -280,18 +297,8 @@ int runSweep(const SweepOptions& o) {
                     }
                     auto start = Clock::now();
                     Result<RunResult> result = runOne(*ctx, gpuScene, name, features, s, ro);
-                    if (isRef && result) {
-                        ref.run = result.value();
-                        ref.ev = autoExposureEv(ref.run->hdr);
-                        ref.peak = brightestFiniteChannel(ref.run->hdr);
-                        ref.flip = prepareFlipReference(ref.run->hdr, ref.ev, o.flipDistance);
-                        // Already at --reference-msaa center: that run is the centre reference.
-                        const auto mode = s.knobs.find("reference-msaa");
-                        ref.center = mode != s.knobs.end() && mode->second == "center" &&
-                                             s.msaa > 1 && o.centerReference
-                                         ? ref.run
-                                         : centerReference(o, *ctx, gpuScene, features, s, ro);
-                    }
+                    if (isRef && result)
+                        setReference(ref, result.value(), o, *ctx, gpuScene, features, s, ro);
                     rows.push_back(measureRun(name, lights, s, result, ref, *ctx));
                     rows.back().seconds =
                         std::chrono::duration<double>(Clock::now() - start).count();

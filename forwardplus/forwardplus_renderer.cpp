@@ -114,10 +114,8 @@ class ForwardPlusRenderer final : public Renderer {
                 graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
                                    "per tile and depth slice: a bitmask over the tile's list");
 
-        // Masked materials' alpha test once per pixel under MSAA (the shading pass's EQUAL test
-        // then gives each sample the pixel's coverage): passes::MaskedRate::Pixel.
         prepass_.emplace(ctx_, scene_,
-                         passes::DepthPrepassParams{settings_.msaa, passes::MaskedRate::Pixel,
+                         passes::DepthPrepassParams{settings_.msaa,
                                                     scene_.drawList(DrawFilter::Opaque),
                                                     scene_.drawList(DrawFilter::Mask)});
         prepass_->plan(graph, {depthSrc, msaa ? depth_ : ResourceHandle{}});
@@ -230,6 +228,13 @@ class ForwardPlusRenderer final : public Renderer {
             in.poolNodes = lists_.poolNodes;
             fp::addListCounters(s.counters, in);
         }
+        addLeftOut(s);
+        return s;
+    }
+
+  private:
+    // What this configuration leaves out, and why (the report's "left out" list).
+    void addLeftOut(RendererStats& s) const {
         if (!blendPass_)
             s.leftOut.push_back(
                 {"transparent light list, blended depth bounds, forward_transparent pass and their "
@@ -272,10 +277,8 @@ class ForwardPlusRenderer final : public Renderer {
             {"fp32 colour storage",
              "hdr and hdr_msaa are RGBA16F (storage-precision choice: half the bytes of "
              "RGBA32F; each rounding below one ulp, <= 2^-10 relative; values saturate at 65504)"});
-        return s;
     }
 
-  private:
     // The conservative tile rectangle of every local light (CPU, once per configuration: the
     // lights and the camera are fixed for a run), counted per tile: the compact layout's
     // bound; with binned culling also each tile's candidates, in ascending light order.

@@ -34,12 +34,9 @@ class MultipassForwardRenderer final : public Renderer {
         createTargets(graph);
         // The last pass that shades resolves the per-sample target into hdr.
         const bool hasLights = !plan_.batches.empty(), hasBlended = !plan_.blended.empty();
-        // Masked materials' alpha test per sample under MSAA, as the reference: the coverage
-        // matches.
         prepass_ = std::make_unique<passes::DepthPrepass>(
             ctx_, scene_,
-            passes::DepthPrepassParams{mp_.sampling.samples, passes::MaskedRate::Sample,
-                                       plan_.opaque, plan_.masked});
+            passes::DepthPrepassParams{mp_.sampling.samples, plan_.opaque, plan_.masked});
         prepass_->plan(graph,
                        {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;

@@ -65,6 +65,63 @@ VkShaderModule createShaderModule(GpuContext& ctx, const std::string& name) {
     throw std::logic_error("no embedded shader named " + name);
 }
 
+namespace {
+
+// The fixed-function state every scene pipeline shares, filled from its description: triangle
+// lists, back faces culled unless a draw says double-sided (dynamic cull mode), dynamic
+// viewport and scissor, dynamic rendering. Its create infos point into itself: not copyable.
+struct FixedState {
+    explicit FixedState(const GraphicsPipelineDesc& d);
+    FixedState(const FixedState&) = delete;
+    FixedState& operator=(const FixedState&) = delete;
+    VkPipelineVertexInputStateCreateInfo vertexInput{
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkPipelineRasterizationStateCreateInfo raster{
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    VkPipelineMultisampleStateCreateInfo ms{
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    VkPipelineDepthStencilStateCreateInfo depth{
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    std::vector<VkPipelineColorBlendAttachmentState> blends;
+    VkPipelineColorBlendStateCreateInfo blend{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    VkDynamicState dynamics[3] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                  VK_DYNAMIC_STATE_CULL_MODE};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+};
+
+FixedState::FixedState(const GraphicsPipelineDesc& d)
+    : blends(d.colorFormats.size(),
+             d.blend == BlendMode::Custom ? d.customBlend : blendState(d.blend)) {
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_BACK_BIT;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+    ms.rasterizationSamples = d.samples;
+    ms.sampleShadingEnable = d.sampleShading ? VK_TRUE : VK_FALSE;
+    ms.minSampleShading = 1.0f;
+    depth.depthTestEnable = d.depthTest;
+    depth.depthWriteEnable = d.depthWrite;
+    depth.depthCompareOp = d.depthCompare;
+    blend.attachmentCount = uint32_t(blends.size());
+    blend.pAttachments = blends.data();
+    dynamic.dynamicStateCount = 3;
+    dynamic.pDynamicStates = dynamics;
+    rendering.colorAttachmentCount = uint32_t(d.colorFormats.size());
+    rendering.pColorAttachmentFormats = d.colorFormats.data();
+    rendering.depthAttachmentFormat = d.depthFormat;
+}
+
+} // namespace
+
 VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d) {
     std::vector<std::string> shaders = {d.vertexShader};
     if (!d.fragmentShader.empty()) shaders.push_back(d.fragmentShader);
@@ -85,58 +142,19 @@ VkPipeline createGraphicsPipeline(GpuContext& ctx, const GraphicsPipelineDesc& d
     addStage(VK_SHADER_STAGE_VERTEX_BIT, d.vertexShader);
     if (!d.fragmentShader.empty()) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, d.fragmentShader);
 
-    VkPipelineVertexInputStateCreateInfo vertexInput{
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo assembly{
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_BACK_BIT;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo ms{
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    ms.rasterizationSamples = d.samples;
-    ms.sampleShadingEnable = d.sampleShading ? VK_TRUE : VK_FALSE;
-    ms.minSampleShading = 1.0f;
-    VkPipelineDepthStencilStateCreateInfo depth{
-        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = d.depthTest;
-    depth.depthWriteEnable = d.depthWrite;
-    depth.depthCompareOp = d.depthCompare;
-    std::vector<VkPipelineColorBlendAttachmentState> blends(
-        d.colorFormats.size(), d.blend == BlendMode::Custom ? d.customBlend : blendState(d.blend));
-    VkPipelineColorBlendStateCreateInfo blend{
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = uint32_t(blends.size());
-    blend.pAttachments = blends.data();
-    VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                 VK_DYNAMIC_STATE_CULL_MODE};
-    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 3;
-    dynamic.pDynamicStates = dynamics;
-    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = uint32_t(d.colorFormats.size());
-    rendering.pColorAttachmentFormats = d.colorFormats.data();
-    rendering.depthAttachmentFormat = d.depthFormat;
-
-    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+    FixedState f(d);
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                      &f.rendering};
     info.stageCount = uint32_t(stages.size());
     info.pStages = stages.data();
-    info.pVertexInputState = &vertexInput;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &ms;
-    info.pDepthStencilState = &depth;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
+    info.pVertexInputState = &f.vertexInput;
+    info.pInputAssemblyState = &f.assembly;
+    info.pViewportState = &f.viewport;
+    info.pRasterizationState = &f.raster;
+    info.pMultisampleState = &f.ms;
+    info.pDepthStencilState = &f.depth;
+    info.pColorBlendState = &f.blend;
+    info.pDynamicState = &f.dynamic;
     info.layout = d.layout;
     VkPipeline pipeline;
     VkResult r =

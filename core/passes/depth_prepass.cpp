@@ -34,7 +34,7 @@ void DepthPrepass::prepare() {
     }
     if (!params_.masked.empty()) {
         d.fragmentShader = "prepass_mask_frag";
-        d.sampleShading = params_.samples > 1 && params_.maskedRate == MaskedRate::Sample;
+        d.sampleShading = params_.samples > 1; // per sample, as the reference
         d.specConstants = scene_.specConstants(AlphaMode::Mask);
         masked_ = createGraphicsPipeline(ctx_, d);
     }

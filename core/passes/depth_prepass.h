@@ -4,12 +4,10 @@
 // (prepass_mask.frag), blended draws left out. After it every shading pass tests EQUAL, so
 // each sample is shaded once per light however deep the scene is.
 //
-// The rate of the masked alpha test under MSAA is a parameter, not a guess from the shader:
-//   Pixel   one invocation per pixel with inputs at the centre: the pixel's samples share one
-//           alpha and so one coverage (Forward+).
-//   Sample  the test per sample, as the reference: the same interpolants per sample, the
-//           same coverage (multipass forward).
-// Both render the same depth for opaque draws; they part only at masked edges under MSAA.
+// The masked alpha test runs per sample under MSAA, as the reference's: the same interpolants
+// per sample, so the same coverage. The rate is stated in the pipeline (sample shading), not
+// only implied by prepass_mask.frag's `sample` inputs (which force it on their own: the two
+// copies this replaces, Forward+'s without the flag and multipass's with it, drew the same).
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -24,11 +22,8 @@ struct DrawItem;
 
 namespace tp::passes {
 
-enum class MaskedRate { Pixel, Sample };
-
 struct DepthPrepassParams {
     uint32_t samples = 1;
-    MaskedRate maskedRate = MaskedRate::Sample;
     std::vector<const DrawItem*> opaque, masked; // the draws it records, in this order
 };
 
