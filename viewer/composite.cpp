@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/cli/difference_scale.h"
 #include "core/image/difference.h"
 #include "core/image/tonemap.h"
 

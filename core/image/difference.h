@@ -17,4 +17,10 @@ ImageRGBA heatMap(const ImageRGBA& signedDiff, float scaleMax, uint32_t legendHe
 // legend strip (0 to 1) under it; display-space RGBA for writePng.
 ImageRGBA flipErrorMap(const ImageR32& flipValues, uint32_t legendHeight = 24);
 
+// The scale of a signed difference's heat map, shared by the reports (compare, stress) and
+// the viewer's difference view, so the same two images read the same in both: the 99th
+// percentile of the per-pixel max-channel |value| (non-finite pixels ignored); 0 for an empty
+// image.
+float differencePercentile99(const ImageRGBA& signedDiff);
+
 } // namespace tp
