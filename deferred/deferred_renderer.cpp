@@ -23,16 +23,12 @@ namespace {
 class DeferredRenderer final : public Renderer {
   public:
     explicit DeferredRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features),
           def_(def::readSettings(info.settings)), gbuffer_(info.ctx, info.scene),
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
                     def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin)),
           volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene),
-          blendBounds_(info.ctx, info.scene) {
-        // Values were checked against the schema (deferred/register.cpp) before this runs.
-        useVolumes_ = def_.lighting == def::Lighting::Volumes;
-        slices_ = def_.assign.slicesOrZero();
-    }
+          blendBounds_(info.ctx, info.scene) {}
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, def_.gbuffer, def_.sampling.samples);
@@ -55,21 +51,21 @@ class DeferredRenderer final : public Renderer {
         // device without them in one line rather than meet a validation error.
         if (blended_ && t_.msaa() && !ctx_.caps.storageImageMultisample)
             throw RendererError("deferred: blended surfaces under --msaa " +
-                                std::to_string(settings_.msaa) +
+                                std::to_string(def_.sampling.samples) +
                                 " need multisample storage images, which " + ctx_.info.name +
                                 " lacks (shaderStorageImageMultisample); use --msaa 1");
         if (blended_ && t_.msaa())
             t_.hdrMsaa = graph.createImage(
-                "hdr_msaa", {t_.hdrFormat, 0, 0, VkSampleCountFlagBits(settings_.msaa),
+                "hdr_msaa", {t_.hdrFormat, 0, 0, VkSampleCountFlagBits(def_.sampling.samples),
                              "per-sample radiance (blended under MSAA)"});
         // Volumes lighting of an opaque-only scene runs no tile pass at all.
-        const bool tilePass = !useVolumes_ || blended_;
+        const bool tilePass = !useVolumes() || blended_;
         if (tilePass)
             t_.tileStats =
                 graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
                                    "per tile: lights, transparent lights, edge pixels, overflow");
         if (blended_) planBlendedLists(graph);
-        if (settings_.debug && !useVolumes_)
+        if (def_.debug && !useVolumes())
             t_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
@@ -83,14 +79,14 @@ class DeferredRenderer final : public Renderer {
                                        {t_.grid, t_.gbufferDepth, t_.layout.samples,
                                         t_.msaa() && !t_.blendedPerPixel(), t_.blendedPerPixel()});
         if (tilePass)
-            lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes_,
+            lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes(),
                            transparentMasks_, bounds);
-        if (useVolumes_) volumes_.plan(graph, t_);
+        if (useVolumes()) volumes_.plan(graph, t_);
         if (blended_)
             transparent_.plan(graph,
                               {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr, t_.hdrMsaa,
                                t_.gbufferDepth, t_.transparentLists, bounds, t_.hdrFormat},
-                              slices_, transparentMasks_);
+                              slices(), transparentMasks_);
         exportOutputs(graph, tilePass, bounds);
     }
 
@@ -118,10 +114,10 @@ class DeferredRenderer final : public Renderer {
         transparentSlots_ = lists.slots;
         // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
         // defClusterRowsBase); volumes lighting keeps the plain lists.
-        if (slices_ > 0 && !useVolumes_) {
+        if (slices() > 0 && !useVolumes()) {
             const uint64_t words =
                 2ull * tiles +
-                uint64_t(slices_) * (lists.masks ? lists.slots : lists.slots / 32 + tiles);
+                uint64_t(slices()) * (lists.masks ? lists.slots : lists.slots / 32 + tiles);
             if (words * 4 > ctx_.caps.maxStorageBufferRange)
                 throw RendererError("deferred: the transparent slice rows need " +
                                     std::to_string(words * 4) +
@@ -145,7 +141,7 @@ class DeferredRenderer final : public Renderer {
             graph.exportResource("transparent_lists", t_.transparentLists); // tests: their order
         if (t_.edgeMask.valid())
             graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
-        if (settings_.debug) {
+        if (def_.debug) {
             if (t_.debug.valid()) graph.exportResource("debug_edge_rm", t_.debug);
             if (!t_.msaa())
                 graph.exportResource("gbuffer_base", t_.gbuffer[0]); // readback: 1x only
@@ -156,7 +152,7 @@ class DeferredRenderer final : public Renderer {
         gbuffer_.prepare();
         if (blended_) blendBounds_.prepare(graph);
         if (t_.tileStats.valid()) lighting_.prepare(graph);
-        if (useVolumes_) volumes_.prepare(graph);
+        if (useVolumes()) volumes_.prepare(graph);
         if (blended_)
             transparent_.prepare(graph, lighting_.candidatesBuffer(),
                                  transparentMasksOverCandidates_);
@@ -208,11 +204,12 @@ class DeferredRenderer final : public Renderer {
     GpuContext& ctx_;
     SceneGpu& scene_;
     SceneFeatures features_;
-    RenderSettings settings_;
-    def::Settings def_;
+    def::Settings def_; // the settings, typed once (def_settings.h)
+    bool useVolumes() const { return def_.lighting == def::Lighting::Volumes; }
+    // --light-assign clustered: depth slices; 0 when tiled.
+    uint32_t slices() const { return def_.assign.slicesOrZero(); }
     DeferredTargets t_;
     bool blended_ = false;
-    bool useVolumes_ = false;
     uint64_t volumeEdges_ = 0; // edge pixels found by the volumes base pass (MSAA)
     GBufferPass gbuffer_;
     TiledLighting lighting_;
@@ -222,8 +219,7 @@ class DeferredRenderer final : public Renderer {
     std::vector<uint32_t> tileStats_; // uvec4 per tile
     uint64_t transparentSlots_ = 0;
     bool transparentMasksOverCandidates_ =
-        false;            // binned: the lists are bitmasks over the candidates
-    uint32_t slices_ = 0; // --light-assign clustered: depth slices; 0 when tiled
+        false; // binned: the lists are bitmasks over the candidates
     ResourceHandle
         transparentMasks_; // clustered blended scenes: slice rows over the transparent lists
 };
@@ -265,7 +261,7 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     if (!t_.msaa())
         out.push_back(
             {"gbuffer_base_color", readbackColor(ctx_, graph.image(t_.gbuffer[0])), true});
-    if (useVolumes_) { // no tile pass shaded: the edge mask is the base pass's (MSAA only)
+    if (useVolumes()) { // no tile pass shaded: the edge mask is the base pass's (MSAA only)
         if (t_.edgeMask.valid())
             out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
         return out;
@@ -305,8 +301,8 @@ RendererStats DeferredRenderer::stats() const {
         edges += tileStats_[i + 2];
         overflow += tileStats_[i + 3];
     }
-    double pixels = double(settings_.width) * settings_.height;
-    if (useVolumes_) {
+    double pixels = double(def_.width) * def_.height;
+    if (useVolumes()) {
         edges = double(volumeEdges_);
         s.counters.push_back({"light_volume_draws", double(scene_.lightCount())});
         s.leftOut.push_back(
@@ -336,10 +332,10 @@ RendererStats DeferredRenderer::stats() const {
     const bool clustered = def_.assign.clustered();
     if (!clustered)
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
-    else if (useVolumes_)
-        s.leftOut.push_back(
-            {"depth slices and their bitmasks", "volumes lighting draws each light's volume; "
-                                                "--light-assign applies to tiled lighting"});
+    else if (useVolumes())
+        s.leftOut.push_back({"depth slices and their bitmasks",
+                             "volumes lighting draws each light's volume; "
+                             "--light-assign applies to tiled lighting"});
     else if (!blended_)
         s.leftOut.push_back({"slice rows over the transparent lists", "no blended material"});
     if (blended_) {

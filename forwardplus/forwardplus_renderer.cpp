@@ -41,13 +41,9 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 class ForwardPlusRenderer final : public Renderer {
   public:
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features),
           fp_(fp::readSettings(info.settings)) {
-        layout_ = uint32_t(fp_.lists);
-        binned_ = fp_.assign.binned();
-        gpuBinning_ = binned_ && la::binsOnGpu(ctx_, fp_.assign.bin);
-        clustered_ = fp_.assign.clustered();
-        slices_ = fp_.assign.slices;
+        gpuBinning_ = binned() && la::binsOnGpu(ctx_, fp_.assign.bin);
         // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
         // transform in every tile it is tested in); on a GPU the transform is cheap and the
         // buffer (16 MB at 1,000,000 lights) would take Forward+ past 100 MB there.
@@ -55,7 +51,7 @@ class ForwardPlusRenderer final : public Renderer {
                       (fp_.spheres == fp::Spheres::Auto && ctx_.isCpuDevice());
         // --light-loop subgroup where the device has the operations; otherwise the lane loop
         // (the same image), with a note in the report.
-        if (clustered_ && fp_.loop == la::Loop::Subgroup) {
+        if (clustered() && fp_.loop == la::Loop::Subgroup) {
             subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
             subgroupLoop_ = subgroupMissing_.empty();
         }
@@ -69,26 +65,26 @@ class ForwardPlusRenderer final : public Renderer {
         subgroupCull_ =
             cullBy == fp::CullBy::Subgroup ||
             (cullBy == fp::CullBy::Auto && !ctx_.isCpuDevice() && noSubgroupCull.empty());
-        if (clustered_ && layout_ != TP_FP_LAYOUT_COMPACT)
+        if (clustered() && layout() != TP_FP_LAYOUT_COMPACT)
             throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
                                 fp::listsText(fp_.lists) + "')");
-        grid_ = la::makeTileGrid(settings_.width, settings_.height, fp_.assign.tile);
+        grid_ = la::makeTileGrid(fp_.width, fp_.height, fp_.assign.tile);
         // Two lists only when something is blended (and drawn); clustered has one list per
         // tile whose span covers the blended surfaces too.
         blendPass_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
-        twoLists_ = blendPass_ && !clustered_;
+        twoLists_ = blendPass_ && !clustered();
         numLists_ = twoLists_ ? 2 : 1;
         classes_ = la::classifyLights(scene_.lightsGpu());
-        if (layout_ != TP_FP_LAYOUT_FIXED || binned_) boundLists();
-        lists_ = fp::sizeLists(ctx_, {layout_, fp::listsText(fp_.lists), grid_.count(),
+        if (layout() != TP_FP_LAYOUT_FIXED || binned()) boundLists();
+        lists_ = fp::sizeLists(ctx_, {layout(), fp::listsText(fp_.lists), grid_.count(),
                                       fp_.tileCapacity, boundSlots_, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
         if (blendPass_) blendBounds_.emplace(ctx_, scene_);
     }
 
     void plan(FrameGraph& graph) override {
-        const bool msaa = settings_.msaa > 1;
-        const auto samples = VkSampleCountFlagBits(settings_.msaa);
+        const bool msaa = samples() > 1;
+        const auto sampleBits = VkSampleCountFlagBits(samples());
         hdr_ = graph.createImage("hdr", {kHdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                          "linear radiance, resolved (RGBA16F)"});
         depth_ =
@@ -96,9 +92,9 @@ class ForwardPlusRenderer final : public Renderer {
                                         msaa ? "depth (resolved: sample 0)" : "prepass depth"});
         if (msaa) {
             hdrMsaa_ = graph.createImage(
-                "hdr_msaa", {kHdrFormat, 0, 0, samples, "per-sample radiance (RGBA16F)"});
+                "hdr_msaa", {kHdrFormat, 0, 0, sampleBits, "per-sample radiance (RGBA16F)"});
             depthMsaa_ = graph.createImage(
-                "depth_msaa", {kDepthFormat, 0, 0, samples, "per-sample prepass depth"});
+                "depth_msaa", {kDepthFormat, 0, 0, sampleBits, "per-sample prepass depth"});
         }
         const ResourceHandle depthSrc = msaa ? depthMsaa_ : depth_;
 
@@ -106,21 +102,20 @@ class ForwardPlusRenderer final : public Renderer {
             graph.createBuffer("tile_lists", VkDeviceSize(grid_.count()) * sizeof(gpu::FpTileLists),
                                "per tile: list counts, starts, drops, depth bounds");
         indices_ = graph.createBuffer("light_indices", lists_.bytes, lists_.purpose);
-        if (layout_ == TP_FP_LAYOUT_LINKED)
+        if (layout() == TP_FP_LAYOUT_LINKED)
             counter_ =
                 graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
-        if (clustered_)
+        if (clustered())
             masks_ =
                 graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
                                    "per tile and depth slice: a bitmask over the tile's list");
 
         prepass_.emplace(ctx_, scene_,
-                         passes::DepthPrepassParams{settings_.msaa,
-                                                    scene_.drawList(DrawFilter::Opaque),
+                         passes::DepthPrepassParams{samples(), scene_.drawList(DrawFilter::Opaque),
                                                     scene_.drawList(DrawFilter::Mask)});
         prepass_->plan(graph, {depthSrc, msaa ? depth_ : ResourceHandle{}});
 
-        if (layout_ == TP_FP_LAYOUT_LINKED)
+        if (layout() == TP_FP_LAYOUT_LINKED)
             graph.addPass(
                 "node_counter_reset", {{counter_, Use::TransferDst}}, [this](PassContext& pc) {
                     vkCmdFillBuffer(pc.cmd, pc.buffer(counter_).buffer, 0, VK_WHOLE_SIZE, 0);
@@ -131,15 +126,16 @@ class ForwardPlusRenderer final : public Renderer {
         // them.
         ResourceHandle blendBounds;
         if (blendPass_)
-            blendBounds = blendBounds_->plan(graph, {grid_, depthSrc, settings_.msaa,
-                                                     fp_.sampling.perSample(),
-                                                     fp_.sampling.perPixelUnderMsaa()});
+            blendBounds =
+                blendBounds_->plan(graph, {grid_, depthSrc, samples(), fp_.sampling.perSample(),
+                                           fp_.sampling.perPixelUnderMsaa()});
         const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
 
         shading_.emplace(ctx_, scene_,
-                         fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout_, slices_,
-                                           twoLists_, clustered_, blendPass_, subgroupLoop_});
+                         fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),
+                                           fp_.assign.slices, twoLists_, clustered(), blendPass_,
+                                           subgroupLoop_});
         shading_->plan(graph,
                        {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat});
         graph.exportResource("hdr", hdr_);
@@ -147,8 +143,8 @@ class ForwardPlusRenderer final : public Renderer {
         // Read back after the frame for the statistics, debug images and tests.
         graph.exportResource("fp_tile_lists", tiles_);
         graph.exportResource("fp_light_indices", indices_);
-        if (layout_ == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
-        if (clustered_) graph.exportResource("fp_cluster_masks", masks_);
+        if (layout() == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
+        if (clustered()) graph.exportResource("fp_cluster_masks", masks_);
         if (blendPass_) graph.exportResource("blended_bounds", blendBounds);
     }
 
@@ -164,14 +160,14 @@ class ForwardPlusRenderer final : public Renderer {
         std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(tiles_));
         tileLists_.resize(grid_.count());
         std::memcpy(tileLists_.data(), bytes.data(), tileLists_.size() * sizeof(gpu::FpTileLists));
-        if (layout_ == TP_FP_LAYOUT_LINKED) {
+        if (layout() == TP_FP_LAYOUT_LINKED) {
             std::vector<uint8_t> c = readbackBuffer(ctx_, graph.buffer(counter_));
             std::memcpy(&nodesUsed_, c.data(), sizeof(uint32_t));
         }
         if (blendBounds_)
             blended_ = la::unpackBlendedBounds(
                 readbackBuffer(ctx_, graph.buffer(blendBounds_->buffer())), grid_.count());
-        if (clustered_) {
+        if (clustered()) {
             std::vector<uint8_t> m = readbackBuffer(ctx_, graph.buffer(masks_));
             maskBits_.resize(m.size() / 4);
             std::memcpy(maskBits_.data(), m.data(), maskBits_.size() * 4);
@@ -205,25 +201,25 @@ class ForwardPlusRenderer final : public Renderer {
             double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
         add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);    // --light-spheres, resolved
         add("culling_by_subgroup", subgroupCull_ ? 1.0 : 0.0); // --cull-by, resolved
-        if (binned_)
+        if (binned())
             add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
-        if (binned_) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
-        if (clustered_) {
-            add("slices", double(slices_));
+        if (binned()) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
+        if (clustered()) {
+            add("slices", double(fp_.assign.slices));
             add("cluster_mask_words", double(maskLayout_.words));
             add("light_loop_subgroup",
                 subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
         if (collected_) {
             static const std::vector<uint32_t> none;
-            fp::ListCounterInput in{tileLists_, blended_, binned_ ? tileBound_ : none,
+            fp::ListCounterInput in{tileLists_, blended_, binned() ? tileBound_ : none,
                                     maskLayout_.offsets, maskBits_};
             in.localLights = classes_.local.size();
-            in.slices = slices_;
+            in.slices = fp_.assign.slices;
             in.twoLists = twoLists_;
-            in.clustered = clustered_;
+            in.clustered = clustered();
             in.blendPass = blendPass_;
-            in.linked = layout_ == TP_FP_LAYOUT_LINKED;
+            in.linked = layout() == TP_FP_LAYOUT_LINKED;
             in.nodesUsed = nodesUsed_;
             in.poolNodes = lists_.poolNodes;
             fp::addListCounters(s.counters, in);
@@ -240,16 +236,16 @@ class ForwardPlusRenderer final : public Renderer {
                 {"transparent light list, blended depth bounds, forward_transparent pass and their "
                  "memory",
                  "the scene has no blended materials"});
-        else if (clustered_)
+        else if (clustered())
             s.leftOut.push_back(
                 {"the second (transparent) light list per tile",
                  "clustered: one list spans the tile's opaque range widened to its blended "
                  "fragments' depths, and blended surfaces look up their own depth slice"});
-        if (binned_ && !gpuBinning_)
+        if (binned() && !gpuBinning_)
             s.leftOut.push_back({"light_binning pass (GPU binning)",
                                  "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
                                      " resolved to cpu: candidates built once per configuration"});
-        if (!clustered_)
+        if (!clustered())
             s.leftOut.push_back(
                 {"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
         if (!spherePass_)
@@ -261,7 +257,7 @@ class ForwardPlusRenderer final : public Renderer {
                 {"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
                  "the same image",
                  subgroupMissing_});
-        if (settings_.msaa == 1)
+        if (samples() == 1)
             s.leftOut.push_back(
                 {"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
         if (!scene_.hasDraws(DrawFilter::Mask))
@@ -270,7 +266,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (!features_.spotLights)
             s.leftOut.push_back(
                 {"spot-light shading code (TP_SPEC_HAS_SPOT = 0)", "the scene has no spot lights"});
-        if (layout_ != TP_FP_LAYOUT_LINKED)
+        if (layout() != TP_FP_LAYOUT_LINKED)
             s.leftOut.push_back(
                 {"node counter and its reset pass", "only the 'linked' layout allocates nodes"});
         s.leftOut.push_back(
@@ -292,7 +288,7 @@ class ForwardPlusRenderer final : public Renderer {
         la::LightBins bins = gpuBinning_
                                  ? binning_->sizes()
                                  : la::binLights(grid_, f.view, f.proj, scene_.shadingLights(),
-                                                 classes_.local, binned_);
+                                                 classes_.local, binned());
         tileBound_ = std::move(bins.bound);
         tileOffsets_ = std::move(bins.offsets);
         boundSlots_ = bins.slots;
@@ -304,14 +300,14 @@ class ForwardPlusRenderer final : public Renderer {
                 " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
                 "fewer lights");
         candidates_ = std::move(bins.candidates);
-        if (clustered_) maskLayout_ = fp::sizeMasks(ctx_, tileBound_, slices_);
+        if (clustered()) maskLayout_ = fp::sizeMasks(ctx_, tileBound_, fp_.assign.slices);
     }
 
     void createParams() {
         fp::ParamsInput in{grid_,
                            &classes_,
-                           layout_,
-                           binned_,
+                           layout(),
+                           binned(),
                            gpuBinning_,
                            &tileOffsets_,
                            &candidates_,
@@ -330,12 +326,12 @@ class ForwardPlusRenderer final : public Renderer {
     fp::CullConfig cullConfig() const {
         fp::CullConfig c;
         c.grid = grid_;
-        c.layout = layout_;
-        c.samples = settings_.msaa;
-        c.slices = slices_;
-        c.mostTested = binned_ ? maxBound_ : uint32_t(classes_.local.size());
-        c.binned = binned_;
-        c.clustered = clustered_;
+        c.layout = layout();
+        c.samples = samples();
+        c.slices = fp_.assign.slices;
+        c.mostTested = binned() ? maxBound_ : uint32_t(classes_.local.size());
+        c.binned = binned();
+        c.clustered = clustered();
         c.twoLists = twoLists_;
         c.blendedSpan = blendPass_;
         c.spheres = spherePass_;
@@ -353,15 +349,17 @@ class ForwardPlusRenderer final : public Renderer {
     GpuContext& ctx_;
     SceneGpu& scene_;
     SceneFeatures features_;
-    RenderSettings settings_;
-    fp::Settings fp_;
-    uint32_t layout_ = TP_FP_LAYOUT_COMPACT;
+    fp::Settings fp_; // the settings, typed once (fp_settings.h); what follows is derived
+    // The settings' values as the passes take them.
+    uint32_t layout() const { return uint32_t(fp_.lists); } // TP_FP_LAYOUT_*
+    bool binned() const { return fp_.assign.binned(); }
+    bool clustered() const { return fp_.assign.clustered(); }
+    uint32_t samples() const { return fp_.sampling.samples; }
     la::TileGrid grid_;
     bool twoLists_ = false;
     uint32_t numLists_ = 1;
     la::LightClasses classes_;
-    bool binned_ = true, clustered_ = false, blendPass_ = false;
-    uint32_t slices_ = 16;
+    bool blendPass_ = false;
     bool spherePass_ = false;     // --light-spheres resolved: the light_spheres pass runs
     bool subgroupCull_ = false;   // --cull-by resolved: one subgroup culls a tile
     bool subgroupLoop_ = false;   // clustered, --light-loop subgroup, and the device runs it

@@ -16,8 +16,7 @@ using namespace mp;
 class MultipassForwardRenderer final : public Renderer {
   public:
     explicit MultipassForwardRenderer(const RendererCreateInfo& info)
-        : ctx_(info.ctx), scene_(info.scene), settings_(info.settings),
-          mp_(readSettings(info.settings)),
+        : ctx_(info.ctx), scene_(info.scene), mp_(readSettings(info.settings)),
           accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                 : VK_FORMAT_R32G32B32A32_SFLOAT),
           plan_(planLights(info.scene, mp_.blendedLights != BlendedLights::OnePass)) {}
@@ -73,8 +72,8 @@ class MultipassForwardRenderer final : public Renderer {
         t_.hdr = graph.createImage("hdr", {accumFormat_, 0, 0, VK_SAMPLE_COUNT_1_BIT, accum});
         t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                "prepass depth (resolved: sample 0)"});
-        if (settings_.msaa > 1) {
-            const auto samples = VkSampleCountFlagBits(settings_.msaa);
+        if (mp_.sampling.samples > 1) {
+            const auto samples = VkSampleCountFlagBits(mp_.sampling.samples);
             t_.hdrMsaa = graph.createImage(
                 "hdr_msaa", {accumFormat_, 0, 0, samples, "per-sample accumulation"});
             t_.depthMsaa = graph.createImage(
@@ -84,7 +83,6 @@ class MultipassForwardRenderer final : public Renderer {
 
     GpuContext& ctx_;
     SceneGpu& scene_;
-    RenderSettings settings_;
     Settings mp_;
     VkFormat accumFormat_;
     LightPlan plan_;
@@ -124,7 +122,7 @@ RendererStats MultipassForwardRenderer::stats() const {
         s.leftOut.push_back({"blended pass", scene_.hasDraws(DrawFilter::Blend)
                                                  ? "no blended draw on screen"
                                                  : "no blended materials"});
-    if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+    if (mp_.sampling.samples == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
     if (!plan_.blended.empty() && mp_.blendedLights == BlendedLights::Additive)
         s.leftOut.push_back({"blended_indices_reversed and transmittance resets",
                              "--blended-lights additive (the textbook pass: not exact where a "
