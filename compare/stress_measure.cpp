@@ -205,8 +205,8 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     RenderSettings settings =
         r.settings; // as the run saw it: its knobs' defaults filled in (it ran, so they are valid)
     resolveKnobs(entry.knobs, settings);
-    p.bound = expectedBound(entry.errorModel,
-                            {*r.c, scene, settings, &reference.run->depth, r.subPixelBits});
+    p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings, &reference.run->depth,
+                                               r.subPixelBits, &reference.run->hdr});
     if (p.bound.bounded) addBlendedTerm(p.bound, *r.c, p);
     const ImageRGBA checked = maskOverflow(p, ref);
     p.rawMaxTonemapped = computeError(tonemapToDisplay(checked, r.exposureEv), refDisplay).maxAbs;

@@ -19,16 +19,6 @@ const ChoiceKnob<Lighting>& lightingKnob() {
     return k;
 }
 
-const ChoiceKnob<Hdr>& hdrKnob() {
-    static const ChoiceKnob<Hdr> k{
-        "hdr",
-        {{Hdr::Fp32, "fp32"}, {Hdr::Fp16, "fp16"}},
-        "Deferred hdr (and hdr_msaa) target: fp32 (RGBA32F, the light sum exact to "
-        "readback) or fp16 (RGBA16F as Forward+'s: half the bytes, one fp16 rounding per "
-        "store)"};
-    return k;
-}
-
 } // namespace
 
 KnobSchema knobs() {

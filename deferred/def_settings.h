@@ -2,6 +2,7 @@
 // Deferred's knobs and the typed settings its passes read, turned from RenderSettings once in
 // the factory (register.cpp builds the schema from the same declarations).
 #include "core/lightassign/knobs.h"
+#include "core/render/hdr_knob.h"
 #include "core/render/knobs.h"
 #include "core/render/msaa_knob.h"
 
@@ -9,7 +10,7 @@ namespace tp::def {
 
 enum class GBuffer { Compact, Wide };   // --gbuffer
 enum class Lighting { Tiled, Volumes }; // --deferred-lighting
-enum class Hdr { Fp32, Fp16 };          // --hdr
+using Hdr = HdrStorage;                 // --hdr (core/render/hdr_knob.h)
 
 struct Settings {
     uint32_t width = 0, height = 0;

@@ -7,10 +7,8 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
-#include "core/passes/blended_bounds.h"
-#include "core/passes/blended_forward.h"
-#include "core/passes/blended_lists.h"
 #include "core/passes/debug_views.h"
+#include "core/passes/hybrid_blended.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/def_settings.h"
@@ -27,8 +25,7 @@ class DeferredRenderer final : public Renderer {
           def_(def::readSettings(info.settings)), gbuffer_(info.ctx, info.scene),
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
                     def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin)),
-          volumes_(info.ctx, info.scene), transparent_(info.ctx, info.scene),
-          blendBounds_(info.ctx, info.scene) {}
+          volumes_(info.ctx, info.scene), blended_(info.ctx, info.scene) {}
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, def_.gbuffer, def_.sampling.samples);
@@ -46,25 +43,25 @@ class DeferredRenderer final : public Renderer {
         t_.depth = graph.createImage("depth",
                                      {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                       t_.msaa() ? "depth (resolved: sample 0)" : "G-buffer depth"});
-        blended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
+        hasBlended_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
         // The tiled pass writes per-sample radiance as a multisample storage image: refuse a
         // device without them in one line rather than meet a validation error.
-        if (blended_ && t_.msaa() && !ctx_.caps.storageImageMultisample)
+        if (hasBlended_ && t_.msaa() && !ctx_.caps.storageImageMultisample)
             throw RendererError("deferred: blended surfaces under --msaa " +
                                 std::to_string(def_.sampling.samples) +
                                 " need multisample storage images, which " + ctx_.info.name +
                                 " lacks (shaderStorageImageMultisample); use --msaa 1");
-        if (blended_ && t_.msaa())
+        if (hasBlended_ && t_.msaa())
             t_.hdrMsaa = graph.createImage(
                 "hdr_msaa", {t_.hdrFormat, 0, 0, VkSampleCountFlagBits(def_.sampling.samples),
                              "per-sample radiance (blended under MSAA)"});
         // Volumes lighting of an opaque-only scene runs no tile pass at all.
-        const bool tilePass = !useVolumes() || blended_;
+        const bool tilePass = !useVolumes() || hasBlended_;
         if (tilePass)
             t_.tileStats =
                 graph.createBuffer("tile_stats", uint64_t(tiles) * 16,
                                    "per tile: lights, transparent lights, edge pixels, overflow");
-        if (blended_) planBlendedLists(graph);
+        if (hasBlended_) planBlendedLists(graph);
         if (def_.debug && !useVolumes())
             t_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
@@ -74,70 +71,38 @@ class DeferredRenderer final : public Renderer {
         // (per pixel or per sample under MSAA), before the transparent lists are culled against
         // them.
         ResourceHandle bounds;
-        if (blended_)
-            bounds = blendBounds_.plan(graph,
-                                       {t_.grid, t_.gbufferDepth, t_.layout.samples,
-                                        t_.msaa() && !t_.blendedPerPixel(), t_.blendedPerPixel()});
+        if (hasBlended_)
+            bounds = blended_.planBounds(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples,
+                                                 t_.msaa() && !t_.blendedPerPixel(),
+                                                 t_.blendedPerPixel()});
         if (tilePass)
             lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes(),
-                           transparentMasks_, bounds);
+                           blended_.sliceRows(), bounds);
         if (useVolumes()) volumes_.plan(graph, t_);
-        if (blended_)
-            transparent_.plan(graph,
-                              {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr, t_.hdrMsaa,
-                               t_.gbufferDepth, t_.transparentLists, bounds, t_.hdrFormat},
-                              slices(), transparentMasks_);
+        if (hasBlended_)
+            blended_.planForward(graph,
+                                 {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr,
+                                  t_.hdrMsaa, t_.gbufferDepth, t_.transparentLists, bounds,
+                                  t_.hdrFormat},
+                                 slices());
         exportOutputs(graph, tilePass, bounds);
     }
 
     // Blended scenes: the transparent light lists tiled lighting writes and the blended pass
-    // reads (and, clustered, their slice rows).
+    // reads (and, clustered, their slice rows; volumes lighting keeps the plain lists).
     void planBlendedLists(FrameGraph& graph) {
-        const uint32_t tiles = t_.grid.count();
-        // Compact: each tile's run is sized by a conservative bound, so nothing can drop
-        // (a drop would be counted in the tile's header, never silent).
-        // Binned: bitmasks over each tile's candidates instead of light indices.
-        // Binned: the lights are binned once (tiled lighting's candidates) and the lists
-        // sized from the same bound.
-        const std::vector<uint32_t>* bound =
-            binned() ? &lighting_.bound(t_.grid, graph.owner()) : nullptr;
-        TransparentListPlan lists = planTransparentLists(
-            t_.grid, scene_, ctx_.caps.maxStorageBufferRange, ctx_.info.name, binned(), bound);
-        t_.transparentLists =
-            graph.createBuffer("transparent_lists", lists.bytes(),
-                               lists.masks ? "per tile: list header, then a bitmask over its "
-                                             "binned candidates"
-                                           : "per tile: list header, then packed transparent "
-                                             "light indices");
-        transparentMasksOverCandidates_ = lists.masks;
-        t_.listOffsets = std::move(lists.offsets);
-        transparentSlots_ = lists.slots;
-        // Clustered: slice rows over the lists for the blended pass (deferred_shared.h:
-        // defClusterRowsBase); volumes lighting keeps the plain lists.
-        if (slices() > 0 && !useVolumes()) {
-            const uint64_t words =
-                2ull * tiles +
-                uint64_t(slices()) * (lists.masks ? lists.slots : lists.slots / 32 + tiles);
-            if (words * 4 > ctx_.caps.maxStorageBufferRange)
-                throw RendererError("deferred: the transparent slice rows need " +
-                                    std::to_string(words * 4) +
-                                    " bytes, more than maxStorageBufferRange of " + ctx_.info.name +
-                                    "; use fewer --slices, a larger --tile or fewer lights");
-            transparentMasks_ =
-                graph.createBuffer("transparent_cluster_masks", words * 4,
-                                   lists.masks ? "per tile: slicing, then per slice a bitmask "
-                                                 "row over its binned candidates"
-                                               : "per tile: slicing, then per slice a bitmask "
-                                                 "row over its transparent list");
-        }
+        TiledLightingTargets lt = lightingTargets();
+        blended_.planLists(graph, lighting_, lt, binned(), slices(), !useVolumes());
+        t_.transparentLists = lt.transparentLists;
+        t_.listOffsets = std::move(lt.listOffsets);
     }
 
     void exportOutputs(FrameGraph& graph, bool tilePass, ResourceHandle bounds) {
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
         if (tilePass) graph.exportResource("tile_stats", t_.tileStats);
-        if (blended_) graph.exportResource("blended_bounds", bounds);
-        if (blended_)
+        if (hasBlended_) graph.exportResource("blended_bounds", bounds);
+        if (hasBlended_)
             graph.exportResource("transparent_lists", t_.transparentLists); // tests: their order
         if (t_.edgeMask.valid())
             graph.exportResource("volume_edge_mask", t_.edgeMask); // edge share
@@ -150,12 +115,9 @@ class DeferredRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         gbuffer_.prepare();
-        if (blended_) blendBounds_.prepare(graph);
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes()) volumes_.prepare(graph);
-        if (blended_)
-            transparent_.prepare(graph, lighting_.candidatesBuffer(),
-                                 transparentMasksOverCandidates_);
+        if (hasBlended_) blended_.prepare(graph, lighting_);
     }
 
     void collectStats(FrameGraph& graph) override {
@@ -209,50 +171,14 @@ class DeferredRenderer final : public Renderer {
     // --light-assign clustered: depth slices; 0 when tiled.
     uint32_t slices() const { return def_.assign.slicesOrZero(); }
     DeferredTargets t_;
-    bool blended_ = false;
+    bool hasBlended_ = false;
     uint64_t volumeEdges_ = 0; // edge pixels found by the volumes base pass (MSAA)
     GBufferPass gbuffer_;
     TiledLighting lighting_;
     VolumeLighting volumes_;
-    BlendedForwardPass transparent_;
-    la::BlendedBounds blendBounds_;   // blended scenes: where each tile's blended fragments are
+    HybridBlended blended_;           // blended scenes: lists, depth bounds, the forward pass
     std::vector<uint32_t> tileStats_; // uvec4 per tile
-    uint64_t transparentSlots_ = 0;
-    bool transparentMasksOverCandidates_ =
-        false; // binned: the lists are bitmasks over the candidates
-    ResourceHandle
-        transparentMasks_; // clustered blended scenes: slice rows over the transparent lists
 };
-
-// Transparent lights per tile, kept and dropped: the tile statistics hold what each tile's
-// test found (the count before its list was cut), the compact layout each tile's run, so
-// these equal the list headers' count and dropped without reading the lists back.
-struct TransparentCounts {
-    std::vector<uint32_t> kept, dropped;
-};
-
-// masks: the runs are bitmasks over every candidate, so every light found is kept.
-TransparentCounts transparentCounts(const std::vector<uint32_t>& stats,
-                                    const std::vector<uint32_t>& offsets, bool masks) {
-    TransparentCounts c;
-    const size_t tiles = std::min(stats.size() / 4, offsets.empty() ? 0 : offsets.size() - 1);
-    c.kept.resize(tiles);
-    c.dropped.resize(tiles);
-    for (size_t t = 0; t < tiles; ++t) {
-        uint32_t found = stats[t * 4 + 1], run = offsets[t + 1] - offsets[t];
-        c.kept[t] = masks ? found : std::min(found, run);
-        c.dropped[t] = found - c.kept[t];
-    }
-    return c;
-}
-
-// Column `c` of the per-tile statistics (uvec4 per tile).
-std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c) {
-    std::vector<uint32_t> out(stats.size() / 4);
-    for (size_t t = 0; t < out.size(); ++t)
-        out[t] = stats[t * 4 + c];
-    return out;
-}
 
 std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     std::vector<DebugImage> out;
@@ -268,12 +194,9 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     }
     out.push_back({"lights_per_tile",
                    passes::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
-    if (blended_) {
-        TransparentCounts c =
-            transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
+    if (hasBlended_)
         out.push_back({"lights_per_tile_transparent",
-                       passes::lightsPerTileHeatMap(t_.grid, c.kept, c.dropped), true});
-    }
+                       blended_.heatMap(t_.grid, tileStats_, t_.listOffsets), true});
     ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
     ImageRGBA edge(w, h), rm(w, h);
     for (size_t i = 0; i < dbg.pixelCount(); ++i) {
@@ -326,7 +249,7 @@ RendererStats DeferredRenderer::stats() const {
              "device reports non-standard sample locations: edge samples use the standard ones"});
     if (!t_.layout.emissive)
         s.leftOut.push_back({"emissive G-buffer target", "no emissive material"});
-    if (!blended_)
+    if (!hasBlended_)
         s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds",
                              "no blended material"});
     const bool clustered = def_.assign.clustered();
@@ -336,30 +259,9 @@ RendererStats DeferredRenderer::stats() const {
         s.leftOut.push_back({"depth slices and their bitmasks",
                              "volumes lighting draws each light's volume; "
                              "--light-assign applies to tiled lighting"});
-    else if (!blended_)
+    else if (!hasBlended_)
         s.leftOut.push_back({"slice rows over the transparent lists", "no blended material"});
-    if (blended_) {
-        TransparentCounts c =
-            transparentCounts(tileStats_, t_.listOffsets, transparentMasksOverCandidates_);
-        double kept = 0, dropped = 0;
-        for (size_t t = 0; t < c.kept.size(); ++t) {
-            kept += c.kept[t];
-            dropped += c.dropped[t];
-        }
-        double most = 0;
-        for (uint32_t k : c.kept)
-            most = std::max(most, double(k));
-        s.counters.push_back({"transparent_lights_per_tile_mean",
-                              c.kept.empty() ? 0.0 : kept / double(c.kept.size())});
-        s.counters.push_back({"transparent_lights_per_tile_max", most});
-        // Index slots, or (binned) bitmask words over the candidates.
-        s.counters.push_back({transparentMasksOverCandidates_ ? "transparent_list_mask_words"
-                                                              : "transparent_list_slots",
-                              double(transparentSlots_)});
-        s.counters.push_back({"transparent_lights_stored", kept});
-        s.counters.push_back(
-            {"transparent_lights_dropped", dropped}); // 0: the bound is conservative
-    }
+    if (hasBlended_) blended_.addStats(s, tileStats_, t_.listOffsets);
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
     if (samples > 1)
         s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});

@@ -7,7 +7,7 @@
 #include "core/render/msaa_knob.h"
 #include "deferred/def_settings.h"
 #include "deferred/deferred_shared.h"
-#include "deferred/position_allowance.h"
+#include "core/render/position_allowance.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 

@@ -176,6 +176,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
                              p13.minSubgroupSize <= sub.subgroupSize &&
                              sub.subgroupSize <= p13.maxSubgroupSize;
     c.standardSampleLocations = p.limits.standardSampleLocations;
+    c.geometryShader = f.geometryShader;
     return c;
 }
 
@@ -224,6 +225,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     features.features.shaderStorageImageMultisample = caps.storageImageMultisample;
     features.features.fragmentStoresAndAtomics = caps.fragmentStoresAndAtomics;
     features.features.independentBlend = VK_TRUE;
+    features.features.geometryShader = caps.geometryShader;
 
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;

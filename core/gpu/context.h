@@ -54,6 +54,9 @@ struct DeviceCaps {
     // what a workgroup-is-one-subgroup shader needs (createComputePipeline's fullSubgroups).
     bool computeFullSubgroups = false;
     bool standardSampleLocations = false; // MSAA samples sit at the spec's standard locations
+    // The visibility buffer's raster pass writes gl_PrimitiveID from a fragment shader (SPIR-V
+    // needs the Geometry capability for it).
+    bool geometryShader = false;
 };
 
 class GpuContext {

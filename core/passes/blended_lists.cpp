@@ -18,7 +18,8 @@ uint64_t TransparentListPlan::bytes() const {
 
 TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene,
                                          uint64_t limit, const std::string& deviceName, bool masks,
-                                         const std::vector<uint32_t>* localBound) {
+                                         const std::vector<uint32_t>* localBound,
+                                         const std::string& owner) {
     // The uploaded (camera-relative) view and lights: what the tiled pass tests.
     const gpu::FrameUniforms& f = scene.shadingFrame();
     const std::vector<gpu::LightGpu>& lights = scene.shadingLights();
@@ -34,7 +35,7 @@ TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGp
     TransparentListPlan plan{std::move(compact.offsets), compact.slots, masks};
     if (plan.bytes() > limit || plan.slots > 0xffffffffull)
         throw RendererError(
-            "deferred: the transparent light lists need " + std::to_string(plan.bytes()) +
+            owner + ": the transparent light lists need " + std::to_string(plan.bytes()) +
             " bytes, more than maxStorageBufferRange (" + std::to_string(limit) + ") of " +
             deviceName + "; use a larger --tile, a lower --res or fewer lights");
     return plan;

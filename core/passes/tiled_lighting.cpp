@@ -84,6 +84,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
     }
     uploadCandidates(graph);
     externals.push_back({TP_DEF_BINDING_CANDIDATES, candidates_.buffer});
+    if (!listsOnly_)
+        externals.insert(externals.end(), source_.buffers.begin(), source_.buffers.end());
     set_ = graph.createPassSet(passName(), sampler_, externals);
 
     layout_ = scene_.createPipelineLayout(set_.layout);
@@ -132,7 +134,7 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
             (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
         if (bytes > ctx_.caps.maxStorageBufferRange)
             throw RendererError(
-                "deferred: the binned light candidates need " + std::to_string(bytes) +
+                graph.owner() + ": the binned light candidates need " + std::to_string(bytes) +
                 " bytes, more than maxStorageBufferRange (" +
                 std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
                 "; use a larger --tile, a lower --res, fewer lights or --light-cull all");

@@ -3,8 +3,9 @@
 // culling into shared memory, shading of the tile's pixels; per sample on MSAA edges only).
 // Also writes per-tile statistics and, for blended scenes, the transparent light lists the
 // hybrid blended pass (blended_forward.h) reads. The surface attributes come from a
-// SurfaceSource: deferred's G-buffer today; a visibility buffer adds its own source (its
-// reader and shader family) and reuses the culling, batching, lists and statistics.
+// SurfaceSource: deferred's G-buffer (shaders/deferred/gbuffer_read.glsl) or the visibility
+// buffer's ids (shaders/visbuffer/vis_read.glsl), each with its own reader and shader family,
+// sharing the culling, batching, lists and statistics.
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct SurfaceSource {
     bool emissive = false;    // an emissive attribute is among them
     bool everySample = false; // the material per sample (--msaa-shading sample): lit per sample
     std::vector<SpecConstant> constants; // the source's own (the G-buffer's layout)
+    // Static buffers the reader binds in the pass's set (a visibility buffer's index buffer
+    // and draw table): uploaded before any frame, so no barrier is tracked for them.
+    std::vector<ExternalBuffer> buffers;
 };
 
 // What the pass writes. Invalid handles are left out: hdrMsaa (per-sample radiance, blended

@@ -89,6 +89,7 @@ struct ErrorModelInput {
     // What the device and the reference run add for models that need them (may be absent).
     const ImageR32* referenceDepth = nullptr; // the reference's published D32 reverse-Z depth
     uint32_t subPixelBits = 8;                // VkPhysicalDeviceLimits::subPixelPrecisionBits
+    const ImageRGBA* referenceHdr = nullptr;  // the reference's image (radiance per pixel)
 };
 
 // Adds the pipeline's own terms to `bound` (or marks it unbounded with the reason).

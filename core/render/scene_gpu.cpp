@@ -102,7 +102,8 @@ void SceneGpu::uploadGeometry() {
                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      {"scene", "", "vertices", "interleaved vertices (pulled)"});
     indices_ = createBufferWithData(ctx_, indices.data(), indices.size() * sizeof(uint32_t),
-                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                     {"scene", "", "indices", "triangle indices"});
 }
 

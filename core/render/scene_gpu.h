@@ -55,6 +55,9 @@ class SceneGpu {
     std::vector<const DrawItem*> drawList(DrawFilter filter) const;
     // Binds the scene's index buffer; DrawItem's firstIndex/vertexOffset refer to it.
     void bindIndexBuffer(VkCommandBuffer cmd) const;
+    // The same index buffer as a storage buffer, for passes that fetch a triangle's vertices
+    // themselves (the visibility buffer's resolve: vertices from set 0, indices from this).
+    VkBuffer indexBuffer() const { return indices_.buffer; }
 
     const Scene& scene() const { return scene_; }
     // What the GPU gets: camera-relative (shared.h, FrameUniforms; docs/shading.md). CPU code

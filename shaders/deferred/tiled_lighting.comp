@@ -27,7 +27,13 @@
 #ifdef TP_LISTS_ONLY
 #define TP_GBUFFER_DEPTH_ONLY
 #endif
+// The surface source's reader (core/passes/tiled_lighting.h: SurfaceSource): readSurfaceAt,
+// ambientEmissive, fetchDepth, meanDepth, isEdge, sampleOffset, debugRoughMetal.
+#ifdef TP_VISBUFFER
+#include "visbuffer/vis_read.glsl"
+#else
 #include "deferred/gbuffer_read.glsl"
+#endif
 #define TP_LA_DEPTH_FETCH(p, s) fetchDepth(p, s)
 #include "include/light_assign.glsl"
 
@@ -138,7 +144,7 @@ bool firstBatch() { return draw.TP_DEF_LIGHT_FIRST == 0u; }
 // One G-buffer sample, lit by the tile's lights of this batch (the host keeps a batch
 // within the shared capacity: sCount never exceeds it).
 vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
-    SurfaceSample ss = readSurface(p, s, reconstructPosition(p, offset, depth));
+    SurfaceSample ss = readSurfaceAt(p, s, offset, depth);
     vec3 sum = firstBatch() ? ambientEmissive(p, s) : vec3(0.0);
     uint n = min(sCount, TP_DEF_TILE_LIGHT_CAPACITY);
     if (kSlices > 0u) {
@@ -195,6 +201,9 @@ void writeHdr(ivec2 p, uint s, vec3 c) {
 #endif
 }
 
+#ifdef TP_VISBUFFER
+#include "visbuffer/vis_shade_pixel.glsl"
+#else
 // Shades pixel p (all samples, once or per sample) and writes hdr; returns whether it was an edge.
 bool shadePixel(ivec2 p) {
     bool edge = kSamples > 1u && isEdge(p);
@@ -223,6 +232,7 @@ bool shadePixel(ivec2 p) {
 #endif
     return true;
 }
+#endif
 #endif
 
 void cull(uvec2 tile, bool hasGeometry) {
@@ -381,7 +391,7 @@ void main() {
         bool edge = shadePixel(p);
         if (edge) atomicAdd(sEdges, 1u);
 #ifdef TP_DEBUG
-        vec2 rm = FETCH(gRoughMetal, p, 0u).rg;
+        vec2 rm = debugRoughMetal(p);
         if (firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
     }

@@ -11,9 +11,21 @@ struct MaterialSample {
     float alpha;
 };
 
+// A fragment stage samples with the hardware's derivatives and takes the geometric normal from
+// dFdx/dFdy. A compute stage has neither: it defines these four before including this file
+// (the visibility buffer's resolve, visbuffer/vis_read.glsl: textureGrad with analytic
+// gradients, and a material index that differs between invocations).
+#ifndef TP_MATERIAL_TEXTURE
+#define TP_MATERIAL_TEXTURE(index, uv) texture(textures[index], uv)
+#endif
+#ifndef TP_MATERIAL_POSITION_DX
+#define TP_MATERIAL_POSITION_DX(p) dFdx(p)
+#define TP_MATERIAL_POSITION_DY(p) dFdy(p)
+#endif
+
 vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
     if (index < 0 || index >= kTextureCount) return fallback;
-    return texture(textures[index], uv);
+    return TP_MATERIAL_TEXTURE(index, uv);
 }
 
 // position/normal/uv/tangent/color: interpolated vertex outputs; frontFacing: gl_FrontFacing.
@@ -25,7 +37,7 @@ MaterialSample evalMaterial(MaterialGpu m, vec3 position, vec3 normal, vec2 uv, 
     r.alpha = base.a;
 
     // Degenerate normals (zero length, NaN) fall back to the geometric normal.
-    vec3 geomN = normalize(cross(dFdx(position), dFdy(position)));
+    vec3 geomN = normalize(cross(TP_MATERIAL_POSITION_DX(position), TP_MATERIAL_POSITION_DY(position)));
     vec3 n = normal;
     float nl = length(n);
     n = (nl > 1e-8) ? n / nl : geomN;

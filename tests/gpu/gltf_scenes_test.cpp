@@ -54,8 +54,9 @@ void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene,
     // Its model bounds that per pixel from the reference's depth and the device's sub-pixel
     // bits, as `triptych stress` checks it; the scalar bound then holds what is left beyond
     // each pixel's allowance. Models without a per-pixel allowance get none: checked == raw.
-    const ErrorModelInput in{c, scene, resolved, &ref.run.depth,
-                             ctx.properties.limits.subPixelPrecisionBits};
+    const ErrorModelInput in{
+        c,           scene, resolved, &ref.run.depth, ctx.properties.limits.subPixelPrecisionBits,
+        &ref.run.hdr};
     const ErrorBound bound = expectedBound(entry.errorModel, in);
     ASSERT_TRUE(bound.bounded) << bound.why;
     const double raw = computeError(tonemapToDisplay(run.hdr, ref.ev), ref.display).maxAbs;
@@ -79,9 +80,16 @@ void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene,
 const std::vector<std::pair<std::string, std::string>> kAssignmentVariants = {
     {"light-assign", "clustered"}, {"light-bin", "gpu"}, {"light-cull", "all"}};
 
+// Which pipelines, at which sample count and rate (default: every pipeline at 1x).
+struct Renders {
+    std::vector<std::string> only; // empty: every registered pipeline
+    uint32_t msaa = 1;
+    std::string shading = "pixel";
+};
+
 // `grazing`: that many more lights that barely touch a surface near a triangle's corner or edge
 // (transformed_scenes.h), and each pipeline also under every light-assignment variant it reads.
-void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0) {
+void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0, const Renders& renders = {}) {
     SCOPED_TRACE(path.string());
     std::vector<std::string> warnings;
     GltfLoadOptions options;
@@ -103,6 +111,8 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0) {
     RenderSettings settings;
     settings.width = 96;
     settings.height = 64;
+    settings.msaa = renders.msaa;
+    settings.set("msaa-shading", renders.shading);
     // The textured surfaces' base colour is not in the compact G-buffer's model (which
     // bounds 8-bit storage by the material factors): the wide one stores it in fp32.
     settings.set("gbuffer", "wide");
@@ -121,6 +131,9 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0) {
                                  : path.filename().string();
     for (const RendererEntry& entry : registeredRenderers()) {
         if (entry.name == "reference") continue;
+        if (!renders.only.empty() &&
+            std::find(renders.only.begin(), renders.only.end(), entry.name) == renders.only.end())
+            continue;
         expectWithinBound(*ctx, gpuScene, scene, entry, settings, ref, name + " " + entry.name);
         for (const auto& [knob, value] : kAssignmentVariants) {
             auto reads = [&, &knob = knob](const Knob& k) { return k.name == knob; };
@@ -169,6 +182,27 @@ TEST_F(GltfScenesRender, TextureTransform) {
 // this check's bounds have no term for blended layers (`triptych stress` adds one).
 TEST_F(GltfScenesRender, TransformedNodes) {
     renderEveryPipeline(writeTransformedNodesScene(dir_ / "transformed", 3), 48);
+}
+
+// The visibility buffer on the shared scenes that exercise what its resolve rebuilds by itself:
+// alpha modes (masked ids, blended layers), textures with mipmaps (the analytic level of
+// detail), vertex colours, mirrored tangents (facing and the tangent frame), at 1x and with
+// every 4x sample shaded, each within its derived bound of the reference.
+TEST(GltfSharedScenesRender, VisbufferOnTheSharedScenes) {
+    const fs::path root = TP_SHARED_SCENES;
+    if (!fs::exists(root)) GTEST_SKIP() << root << " not found; skipping";
+    for (const char* rel : {"AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf",
+                            "DamagedHelmet/glTF-Binary/DamagedHelmet.glb",
+                            "NormalTangentMirrorTest/glTF/NormalTangentMirrorTest.gltf",
+                            "VertexColorTest/glTF/VertexColorTest.gltf",
+                            "TextureTransformTest/glTF/TextureTransformTest.gltf"}) {
+        if (!fs::exists(root / rel)) {
+            std::printf("[ skipped  ] %s not found\n", rel);
+            continue;
+        }
+        renderEveryPipeline(root / rel, 0, {{"visbuffer"}, 1, "pixel"});
+        renderEveryPipeline(root / rel, 0, {{"visbuffer"}, 4, "sample"});
+    }
 }
 
 TEST(GltfSharedScenesRender, DuckDraco) {

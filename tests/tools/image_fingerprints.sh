@@ -27,6 +27,7 @@ for msaa in "--msaa 1" "--msaa 4 --msaa-shading pixel" "--msaa 4 --msaa-shading 
             configs+=("--pipeline forwardplus $base --tile 8 --light-spheres inline --cull-by invocation")
             [[ $assign == clustered ]] && configs+=("--pipeline forwardplus $base --light-loop subgroup --slices 8")
             configs+=("--pipeline deferred $base" "--pipeline deferred $base --gbuffer wide --hdr fp16 --tile 32")
+            configs+=("--pipeline visbuffer $base" "--pipeline visbuffer $base --hdr fp16 --tile 32")
         done
     done
     configs+=("--pipeline deferred $msaa --deferred-lighting volumes")

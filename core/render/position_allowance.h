@@ -1,5 +1,7 @@
 #pragma once
-// Deferred's position-from-depth error next to lights, per pixel (docs/stress.md,
+// The position error next to lights, per pixel, of a pipeline that shades a point up to a
+// snapped vertex grid away from the reference's (deferred: from depth; the visibility buffer:
+// the exact hit against unsnapped vertices) (docs/stress.md,
 // "Position from depth next to a light").
 //
 // Deferred shades the point on the ray through the pixel centre at the depth the rasterizer
@@ -14,6 +16,8 @@
 // BRDF over the scene's materials.
 #include <cstdint>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "core/image/image.h"
 #include "core/scene/scene.h"
@@ -40,5 +44,19 @@ std::vector<BrdfLimits> brdfLimits(const Scene& scene);
 // the shaded point (nothing is bounded there).
 ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
                                     uint32_t subPixelBits);
+
+// Camera-relative position of every pixel centre from a reverse-Z depth (NaN: sky).
+std::vector<glm::dvec3> pixelPositions(const Camera& cam, const ImageR32& depth);
+
+// Per pixel, bounds on the light the surface there reflects toward the eye, from the same
+// BRDF limits: `value` >= the sum over lights of intensity * window / d^2 * brdfCos with a
+// base colour of 1 (so, brdfCos being affine and non-decreasing in the base colour and affine
+// in metallic, also a bound on the change per unit of either), `lipschitz` >= the same sum
+// with brdfCos's Lipschitz constant per radian of light or view direction. 0 where there is
+// no geometry.
+struct ReflectedLightBounds {
+    ImageR32 value, lipschitz;
+};
+ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& depth);
 
 } // namespace tp

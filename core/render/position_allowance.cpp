@@ -1,4 +1,4 @@
-#include "deferred/position_allowance.h"
+#include "core/render/position_allowance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -166,10 +166,7 @@ std::vector<BrdfLimits> brdfLimits(const Scene& scene) {
     return all;
 }
 
-namespace {
-
-// Camera-relative position of every pixel centre from a reverse-Z depth (NaN: sky).
-std::vector<glm::dvec3> positionsOf(const Camera& cam, const ImageR32& depth) {
+std::vector<glm::dvec3> pixelPositions(const Camera& cam, const ImageR32& depth) {
     const glm::dmat4 invViewProj = inverseShadingViewProjection(cam, depth.width, depth.height);
     std::vector<glm::dvec3> out(depth.r.size(),
                                 glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
@@ -182,6 +179,8 @@ std::vector<glm::dvec3> positionsOf(const Camera& cam, const ImageR32& depth) {
         }
     return out;
 }
+
+namespace {
 
 // The view-angle buckets [first, last] a pixel's surface may be in: from the normal of its
 // neighbours' positions (the closer neighbour on each axis); every bucket where that is not
@@ -234,7 +233,7 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
     const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
     const double epsPixels = snappedPositionPixels(subPixelBits);
     const std::vector<BrdfLimits> limits = brdfLimits(scene);
-    const std::vector<glm::dvec3> pos = positionsOf(cam, depth);
+    const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
 
     struct Local {
         const Light* light;
@@ -268,6 +267,42 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
                     l.strength * eps * lightGradientBound(*l.light, d, eps, eyeDistance, b);
             }
             out.r[i] = float(allowance);
+        }
+    return out;
+}
+
+ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& depth) {
+    ReflectedLightBounds out{{depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)},
+                             {depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)}};
+    const Camera& cam = scene.camera;
+    const std::vector<BrdfLimits> limits = brdfLimits(scene);
+    const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
+    const glm::dmat4 view = viewRotation(cam);
+    const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
+    for (uint32_t y = 0; y < depth.height; ++y)
+        for (uint32_t x = 0; x < depth.width; ++x) {
+            const size_t i = size_t(y) * depth.width + x;
+            const glm::dvec3 p = pos[i];
+            if (std::isnan(p.x)) continue; // sky
+            const BrdfLimits b = limitsIn(limits, viewBuckets(pos, depth, x, y));
+            // A sample of the pixel lies within one pixel width of its centre's point.
+            const double footprint = pixelPerDepth * -(view * glm::dvec4(p, 1.0)).z;
+            double light = 0; // sum of intensity * window / max(d, dmin)^2 (window <= 1)
+            for (const Light& l : scene.lights) {
+                const double strength =
+                    double(l.intensity) * std::max({l.color.r, l.color.g, l.color.b});
+                if (l.type == LightType::Directional) {
+                    light += strength;
+                    continue;
+                }
+                const double d =
+                    glm::length(p - (glm::dvec3(l.position) - glm::dvec3(cam.position)));
+                if (d >= double(l.range) + footprint) continue;
+                const double m = std::max(d - footprint, double(TP_MIN_LIGHT_DISTANCE));
+                light += strength / (m * m);
+            }
+            out.value.r[i] = float(light * b.maxValue);
+            out.lipschitz.r[i] = float(light * b.lipschitz);
         }
     return out;
 }

@@ -1,0 +1,62 @@
+#pragma once
+// The blended half of a pipeline that lights its opaque surfaces in tiled compute (deferred,
+// the visibility buffer): the hybrid forward path. Tiled lighting writes per-tile
+// transparent light lists (blended_lists.h) culled against the blended depth bounds
+// (blended_bounds.h), and the blended forward pass (blended_forward.h) draws the blended
+// materials back to front from them. This class plans the lists (and, clustered, their slice
+// rows), the bounds pass and the forward pass in the order the frame needs them, and turns
+// the tile statistics into the pipeline's counters and heat map, so each composing pipeline
+// holds none of it.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/image/image.h"
+#include "core/passes/blended_bounds.h"
+#include "core/passes/blended_forward.h"
+#include "core/passes/tiled_lighting.h"
+
+namespace tp {
+
+struct RendererStats;
+
+class HybridBlended {
+  public:
+    HybridBlended(GpuContext& ctx, SceneGpu& scene)
+        : ctx_(ctx), scene_(scene), bounds_(ctx, scene), forward_(ctx, scene) {}
+
+    // First (before tiled lighting plans): the transparent lists into t.transparentLists and
+    // t.listOffsets. binned: bitmasks over the tiled pass's candidates (their bound comes from
+    // `lighting`). slices > 0 with sliceRows: the clustered slice rows over the lists too.
+    void planLists(FrameGraph& graph, TiledLighting& lighting, TiledLightingTargets& t, bool binned,
+                   uint32_t slices, bool sliceRows);
+    // Then, after the pass that writes the opaque depth: the blended depth bounds.
+    ResourceHandle planBounds(FrameGraph& graph, const la::BlendedBoundsConfig& config);
+    // Last, after tiled lighting: the forward pass over the lists (t.bounds: planBounds's).
+    void planForward(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices);
+    void prepare(FrameGraph& graph, const TiledLighting& lighting);
+
+    // Clustered: the slice rows tiled lighting writes (invalid otherwise).
+    ResourceHandle sliceRows() const { return sliceRows_; }
+
+    // From the tile statistics (uvec4 per tile: opaque, transparent lights found, ...) and the
+    // lists' offsets: the transparent counters, and the transparent lights-per-tile heat map.
+    void addStats(RendererStats& s, const std::vector<uint32_t>& tileStats,
+                  const std::vector<uint32_t>& listOffsets) const;
+    ImageRGBA heatMap(const la::TileGrid& grid, const std::vector<uint32_t>& tileStats,
+                      const std::vector<uint32_t>& listOffsets) const;
+
+  private:
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    la::BlendedBounds bounds_;
+    BlendedForwardPass forward_;
+    ResourceHandle sliceRows_;
+    uint64_t slots_ = 0;
+    bool masks_ = false; // binned: the lists are bitmasks over the candidates
+};
+
+// Column `c` of per-tile statistics stored as uvec4 per tile.
+std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c);
+
+} // namespace tp

@@ -1,0 +1,173 @@
+// The visibility buffer's surface reader for the tiled lighting pass (included by
+// deferred/tiled_lighting.comp under TP_VISBUFFER, in place of gbuffer_read.glsl, with the same
+// entry points). A sample's id names a draw and a triangle (vis_shared.h); the reader fetches
+// the triangle's three vertices (the scene's index and vertex buffers), intersects the ray
+// through the shaded location with the triangle's plane, and from the hit's barycentrics and
+// their analytic screen-space derivatives interpolates the vertex attributes and evaluates the
+// material (include/material.glsl: the same code every fragment stage runs), sampling its
+// textures with textureGrad. docs/visbuffer.md derives it and bounds it against the
+// hardware's derivatives.
+#ifndef TP_VIS_READ_GLSL
+#define TP_VIS_READ_GLSL
+#include "visbuffer/vis_shared.h"
+#include "include/tile_culling.glsl" // viewZFromDepth
+#include "include/unproject.glsl"
+
+layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
+layout(constant_id = TP_DEF_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
+layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
+#include "include/sample_locations.glsl"
+
+#ifdef TP_MSAA
+#define VTEX sampler2DMS
+#define FETCH(t, p, s) texelFetch(t, p, int(s))
+#else
+#define VTEX sampler2D
+#define FETCH(t, p, s) texelFetch(t, p, 0)
+#endif
+layout(set = TP_SET_PASS, binding = TP_VIS_BINDING_IDS) uniform VTEX gIds;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEPTH) uniform VTEX gDepth;
+layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_INDICES) readonly buffer VisIndices {
+    uint visIndices[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_DRAWS) readonly buffer VisDraws {
+    VisDraw visDraws[];
+};
+
+// The gradients of the shaded location, set by readSurfaceAt before it evaluates the material:
+// textures are sampled with textureGrad (a compute stage has no implicit derivatives) and the
+// geometric normal comes from the position's derivatives, as dFdx/dFdy give them in a
+// fragment stage.
+vec2 gVisUvDx, gVisUvDy;
+vec3 gVisPosDx, gVisPosDy;
+
+// The texture index differs between the invocations of a group (their materials do), and an
+// index into a sampler array must be dynamically uniform unless the device has
+// shaderSampledImageArrayNonUniformIndexing (lavapipe does not). So the array is walked with a
+// uniform loop counter and each invocation samples where the counter meets its index: one
+// fetch per invocation, kTextureCount compares (docs/visbuffer.md says what that costs).
+vec4 visTexture(int index, vec2 uv) {
+    vec4 r = vec4(0.0);
+    for (int i = 0; i < kTextureCount; ++i)
+        if (i == index) r = textureGrad(textures[i], uv, gVisUvDx, gVisUvDy);
+    return r;
+}
+#define TP_MATERIAL_TEXTURE(index, uv) visTexture(index, uv)
+#define TP_MATERIAL_POSITION_DX(p) gVisPosDx
+#define TP_MATERIAL_POSITION_DY(p) gVisPosDy
+#include "include/material.glsl"
+
+float fetchDepth(ivec2 p, uint s) { return FETCH(gDepth, p, s).r; }
+uint fetchId(ivec2 p, uint s) { return uint(FETCH(gIds, p, s).r); }
+
+// Mean of the samples' depths (the tile depth bounds read depth only through fetchDepth).
+float meanDepth(ivec2 p) {
+    float d = 0.0;
+    for (uint s = 0u; s < kSamples; ++s) d += fetchDepth(p, s);
+    return d / float(kSamples);
+}
+
+// A pixel is an edge when its samples do not all hold one triangle (or not all hold one):
+// the ids say it exactly, no depth or attribute heuristic. With --msaa-shading sample every
+// pixel holding geometry is shaded per sample, as the supersampled reference is.
+bool isEdge(ivec2 p) {
+    uint id0 = fetchId(p, 0u);
+    for (uint s = 1u; s < kSamples; ++s) {
+        uint id = fetchId(p, s);
+        if (id != id0 || (kEverySample && id != 0u)) return true;
+    }
+    return kEverySample && id0 != 0u;
+}
+
+// One vertex of triangle `triangle` of draw `d`, camera-relative as scene.vert makes it (the
+// same `precise` subtraction, so the position is the one the rasterizer was given).
+Vertex visVertex(VisDraw d, uint triangle, uint k) {
+    return vertices[uint(int(visIndices[d.firstIndex + 3u * triangle + k]) + d.vertexOffset)];
+}
+vec3 relativePosition(Vertex v) {
+    precise vec3 relative = v.positionU.xyz - frame.eyeWorld.xyz;
+    return relative;
+}
+
+// Barycentrics of the ray through framebuffer location `fc` with the triangle's plane, and
+// their derivatives per pixel in x and y (rows 1 and 2), with the hit and its derivatives.
+struct VisHit {
+    vec3 b, bdx, bdy;         // barycentrics and d/dx, d/dy per pixel
+    vec3 position, pdx, pdy;  // camera-relative hit and d/dx, d/dy
+};
+
+// The ray leaves the eye (the origin, camera-relative) through the location unprojected at
+// reverse-Z depth 1 (the near plane); at a fixed depth the unprojection is affine in the
+// framebuffer location, so one pixel's step is a difference of two unprojections. The hit
+// X = t * dir with t = (n . p0) / (n . dir) moves per pixel by t * (ddir - dir (n . ddir) / (n . dir));
+// barycentrics are linear in X on the plane (b1 = ((X - p0) x e2) . n / |n|^2, b2 =
+// (e1 x (X - p0)) . n / |n|^2), so their derivatives are the same maps of X's.
+VisHit intersect(vec3 p0, vec3 p1, vec3 p2, vec2 fc, float depth) {
+    vec3 dir = unprojectPosition(fc, 1.0);
+    vec3 ddx = unprojectPosition(fc + vec2(1.0, 0.0), 1.0) - dir;
+    vec3 ddy = unprojectPosition(fc + vec2(0.0, 1.0), 1.0) - dir;
+    vec3 e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
+    float nd = dot(n, dir), nn = dot(n, n);
+    VisHit h;
+    float t = dot(n, p0) / nd;
+    // An edge-on triangle (n . dir = 0) can hold a sample only at the rasterizer's rounding:
+    // take the depth buffer's point there instead of an infinite one.
+    bool finiteHit = nd != 0.0 && !isinf(t) && !isnan(t) && nn > 0.0;
+    h.position = finiteHit ? t * dir : unprojectPosition(fc, depth);
+    h.pdx = finiteHit ? t * (ddx - dir * (dot(n, ddx) / nd)) : vec3(0.0);
+    h.pdy = finiteHit ? t * (ddy - dir * (dot(n, ddy) / nd)) : vec3(0.0);
+    float inv = nn > 0.0 ? 1.0 / nn : 0.0;
+    vec3 r = h.position - p0;
+    vec2 b12 = vec2(dot(cross(r, e2), n), dot(cross(e1, r), n)) * inv;
+    vec2 b12dx = vec2(dot(cross(h.pdx, e2), n), dot(cross(e1, h.pdx), n)) * inv;
+    vec2 b12dy = vec2(dot(cross(h.pdy, e2), n), dot(cross(e1, h.pdy), n)) * inv;
+    h.b = vec3(1.0 - b12.x - b12.y, b12);
+    h.bdx = vec3(-b12dx.x - b12dx.y, b12dx);
+    h.bdy = vec3(-b12dy.x - b12dy.y, b12dy);
+    return h;
+}
+
+#define TP_VIS_LERP(a0, a1, a2, w) ((a0) * (w).x + (a1) * (w).y + (a2) * (w).z)
+
+// Ambient + emissive of the surface readSurfaceAt evaluated last (ambientEmissive's answer).
+vec3 gVisAmbient = vec3(0.0);
+
+// The surface sample s of pixel p holds (its id's triangle), at framebuffer location p +
+// offset: the triangle's attributes interpolated there and its material evaluated. `depth`
+// is used only for an edge-on triangle.
+SurfaceSample readSurfaceAt(ivec2 p, uint s, vec2 offset, float depth) {
+    uint id = fetchId(p, s);
+    VisDraw d = visDraws[(id >> kTriangleBits) - 1u];
+    uint triangle = id & ((1u << kTriangleBits) - 1u);
+    Vertex v0 = visVertex(d, triangle, 0u), v1 = visVertex(d, triangle, 1u),
+           v2 = visVertex(d, triangle, 2u);
+    vec3 p0 = relativePosition(v0), p1 = relativePosition(v1), p2 = relativePosition(v2);
+    VisHit h = intersect(p0, p1, p2, vec2(p) + offset, depth);
+    vec2 uv0 = vec2(v0.positionU.w, v0.normalV.w), uv1 = vec2(v1.positionU.w, v1.normalV.w),
+         uv2 = vec2(v2.positionU.w, v2.normalV.w);
+    gVisUvDx = TP_VIS_LERP(uv0, uv1, uv2, h.bdx);
+    gVisUvDy = TP_VIS_LERP(uv0, uv1, uv2, h.bdy);
+    gVisPosDx = h.pdx;
+    gVisPosDy = h.pdy;
+    // Front-facing as the rasterizer decides it (counter-clockwise in the flipped-viewport
+    // framebuffer: the triangle winds counter-clockwise as the viewer, at the origin, sees it).
+    bool front = dot(cross(p1 - p0, p2 - p0), p0) < 0.0;
+    MaterialSample ms = evalMaterial(
+        materials[d.material], h.position, TP_VIS_LERP(v0.normalV.xyz, v1.normalV.xyz, v2.normalV.xyz, h.b),
+        TP_VIS_LERP(uv0, uv1, uv2, h.b), TP_VIS_LERP(v0.tangent, v1.tangent, v2.tangent, h.b),
+        TP_VIS_LERP(v0.color, v1.color, v2.color, h.b), front);
+    gVisAmbient = ambientAndEmissive(ms);
+    return ms.surface;
+}
+
+// material.glsl's ambientAndEmissive of the surface readSurfaceAt read last (the tiled pass
+// asks for it right after, for the same sample).
+vec3 ambientEmissive(ivec2 p, uint s) { return gVisAmbient; }
+
+// Roughness and metallic of sample 0 at the pixel centre (--debug's channel image).
+vec2 debugRoughMetal(ivec2 p) {
+    if (fetchId(p, 0u) == 0u) return vec2(0.0);
+    SurfaceSample ss = readSurfaceAt(p, 0u, vec2(0.5), fetchDepth(p, 0u));
+    return vec2(ss.roughness, ss.metallic);
+}
+#endif

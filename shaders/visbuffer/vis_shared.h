@@ -1,0 +1,44 @@
+// The visibility buffer's GPU interface (C++ and GLSL): the id it stores per sample, its
+// per-draw table and its set-1 bindings beside the tiled lighting pass's
+// (include/tiled_lighting.h), whose bindings it shares.
+#ifndef TP_VIS_SHARED_H
+#define TP_VIS_SHARED_H
+#include "include/glsl_cpp.h"
+
+#ifdef TP_GLSL
+#define TP_STRUCT(name) struct name
+#else
+namespace tp::gpu {
+#define TP_STRUCT(name) struct name
+#endif
+
+// Packed id per sample: (draw + 1) << triangleBits | triangle, 0 = no geometry. `draw` indexes
+// the VisDraw table, `triangle` is gl_PrimitiveID within that draw. The split is chosen per
+// scene (visbuffer/draw_table.h): the fewest triangle bits that hold its largest draw, the
+// rest for the draws. Stored as the fp32 value of that integer in an R32_SFLOAT target, exact
+// below 2^24 (TP_VIS_ID_BITS): integer colour targets under MSAA are optional
+// (framebufferIntegerColorSampleCounts is 1x only on lavapipe), float ones are not, and an
+// integer-valued float is a normal number no conversion, flush or NaN rule can touch. A scene
+// that needs more bits is refused.
+TP_STRUCT(VisDraw) {
+    uint firstIndex;   // in the scene's index buffer
+    int vertexOffset;  // added to each index
+    uint material;     // MaterialGpu index
+    uint pad0;
+};
+
+#define TP_VIS_ID_BITS 24
+
+// ---- set 1 of the visibility resolve (the tiled lighting pass with the vis reader) ----
+#define TP_VIS_BINDING_IDS 0      // sampler (sampler2D / sampler2DMS): packed ids as fp32
+#define TP_VIS_BINDING_INDICES 14 // buffer uint[]: the scene's index buffer
+#define TP_VIS_BINDING_DRAWS 15   // buffer VisDraw[]: the draws the ids name
+
+// ---- specialization constants (ids after deferred's 11..18, which the tiled pass sets) ----
+#define TP_VIS_SPEC_TRIANGLE_BITS 19 // low bits of an id that hold the triangle
+
+#ifndef TP_GLSL
+static_assert(sizeof(VisDraw) == 16);
+} // namespace tp::gpu
+#endif
+#endif

@@ -1,0 +1,176 @@
+// The visibility buffer (docs/visbuffer.md) against the reference on the built-in courtyard,
+// within the bound its error model derives (visbuffer/error_model.cpp), with validation on:
+// 1x tiled and clustered, 4x with every sample shaded against the supersampled reference, 4x
+// at the pixel rate against the centre reference (a pixel shaded once per triangle at its
+// centre is what that reference computes per sample); edges exactly where the ids differ;
+// the ledger's 8 bytes per sample.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "core/image/metrics.h"
+#include "core/image/tonemap.h"
+#include "core/render/error_model.h"
+#include "core/render/renderer.h"
+#include "core/scene/lights.h"
+#include "gpu_test_util.h"
+#include "visbuffer/lod_allowance.h"
+
+namespace tp::test {
+namespace {
+
+RenderSettings small(uint32_t msaa, const std::string& shading = "pixel") {
+    RenderSettings s;
+    s.width = 96;
+    s.height = 64;
+    s.msaa = msaa;
+    s.set("msaa-shading", shading);
+    return s;
+}
+
+// `run` within the visbuffer's bound of `ref`, the bound derived for `modelSettings` (the
+// settings whose method the reference repeats).
+void expectWithinBound(GpuContext& ctx, const Scene& scene, const RunResult& run,
+                       const RunResult& ref, const RenderSettings& modelSettings,
+                       const std::string& what) {
+    SCOPED_TRACE(what);
+    const RendererEntry& entry = **findRenderer("visbuffer");
+    RenderSettings resolved = modelSettings;
+    ASSERT_TRUE(resolveKnobs(entry.knobs, resolved).ok());
+    stress::StressCase c;
+    c.name = "visbuffer-test";
+    c.freeNormals = true;
+    const ErrorModelInput in{
+        c, scene, resolved, &ref.depth, ctx.properties.limits.subPixelPrecisionBits, &ref.hdr};
+    const ErrorBound bound = expectedBound(entry.errorModel, in);
+    ASSERT_TRUE(bound.bounded) << bound.why;
+    EXPECT_EQ(computeError(run.hdr, ref.hdr).nanInfCount, 0u);
+    const float ev = autoExposureEv(ref.hdr);
+    const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.hdr, ev);
+    // How wide the allowance is: its median over the pixels, relative to the reference there
+    // (printed, so a model that grew to cover everything shows).
+    std::vector<double> relative;
+    const std::vector<float>& allowance = bound.perPixel.radiance.r;
+    for (size_t i = 0; i < allowance.size() && i < ref.hdr.pixelCount(); ++i) {
+        const double r =
+            std::max({ref.hdr.rgba[i * 4], ref.hdr.rgba[i * 4 + 1], ref.hdr.rgba[i * 4 + 2]});
+        if (allowance[i] > 0.0f && r > 0.0) relative.push_back(allowance[i] / r);
+    }
+    std::sort(relative.begin(), relative.end());
+    std::printf("[ visbuffer ] %-30s beyond allowance %.3g <= %.3g (%llu pixels widened, median "
+                "allowance %.3g of the reference)\n",
+                what.c_str(), checked.worstBeyond, bound.tonemapped(ev),
+                (unsigned long long)checked.widenedPixels,
+                relative.empty() ? 0.0 : relative[relative.size() / 2]);
+    EXPECT_EQ(checked.unboundedPixels, 0u);
+    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev));
+}
+
+TEST(Visbuffer, MatchesTheReferenceOnTheCourtyardWithinItsBound) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (uint32_t lights : {0u, 1u, 256u}) {
+        Scene scene = courtyardSmallWithLights(lights, 3);
+        SceneGpu gpuScene(*ctx, scene);
+        const std::string n = std::to_string(lights) + " lights";
+        RunResult ref = runOrFail(*ctx, gpuScene, "reference", small(1));
+        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(1)), ref,
+                          small(1), n + " 1x tiled");
+        RenderSettings clustered = small(1);
+        clustered.set("light-assign", "clustered");
+        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", clustered), ref,
+                          clustered, n + " 1x clustered");
+        RunResult ref4 = runOrFail(*ctx, gpuScene, "reference", small(4, "sample"));
+        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(4, "sample")),
+                          ref4, small(4, "sample"), n + " 4x sample rate");
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// Untextured, the texture allowance is zero and the bound is the position allowance's and the
+// scalar terms' alone: the floor scene (a box on a floor) at 1x and 4x.
+TEST(Visbuffer, MatchesTheReferenceOnAnUntexturedFloorWithinItsBound) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (uint32_t count : {1u, 64u}) {
+        LightGenOptions g;
+        g.count = count;
+        g.seed = 9;
+        Scene probe = makeFloorScene({});
+        Scene scene = makeFloorScene(generateLights(probe.bounds, g));
+        SceneGpu gpuScene(*ctx, scene);
+        const std::string n = std::to_string(count) + " lights floor";
+        RunResult ref = runOrFail(*ctx, gpuScene, "reference", small(1));
+        ASSERT_EQ(vis::textureLodAllowance(scene, ref.depth).r,
+                  std::vector<float>(ref.depth.r.size(), 0.0f));
+        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(1)), ref,
+                          small(1), n + " 1x");
+        RunResult ref4 = runOrFail(*ctx, gpuScene, "reference", small(4, "sample"));
+        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(4, "sample")),
+                          ref4, small(4, "sample"), n + " 4x sample rate");
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// At the pixel rate a pixel is shaded once per distinct triangle at its centre, every sample
+// of that triangle taking the value: the centre reference's per-sample computation. So the
+// bound is the sample rate's (no centre-shading term), against that reference.
+TEST(Visbuffer, PixelRateShadesEachTriangleOnceAtTheCentre) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    for (uint32_t lights : {1u, 256u}) {
+        Scene scene = courtyardSmallWithLights(lights, 4);
+        SceneGpu gpuScene(*ctx, scene);
+        RenderSettings s = small(4, "pixel");
+        s.debug = true;
+        RunResult vis = runOrFail(*ctx, gpuScene, "visbuffer", s);
+        RenderSettings centre = small(4, "pixel");
+        centre.set("reference-msaa", "center");
+        RunResult ref = runOrFail(*ctx, gpuScene, "reference", centre);
+        expectWithinBound(*ctx, scene, vis, ref, small(4, "sample"),
+                          std::to_string(lights) + " lights 4x pixel rate");
+        // Edges: where the ids differ, counted by the pass and shown by --debug alike.
+        const ImageRGBA* edges = debugImageOf(vis, "edge_mask");
+        ASSERT_NE(edges, nullptr);
+        size_t count = 0;
+        for (size_t i = 0; i < edges->pixelCount(); ++i)
+            count += edges->rgba[i * 4] > 0.5f ? 1 : 0;
+        double share = -1;
+        for (const auto& [name, value] : vis.stats.counters)
+            if (name == "edge_pixel_share") share = value;
+        EXPECT_GT(count, 0u) << "silhouettes hold several triangles per pixel";
+        EXPECT_LT(count, edges->pixelCount() / 2) << "most pixels hold one triangle";
+        EXPECT_DOUBLE_EQ(share, double(count) / double(edges->pixelCount()));
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+uint64_t entryBytes(const RunResult& run, const std::string& name) {
+    for (const LedgerEntry& e : run.memory)
+        if (e.tag.name == name) return e.requestedBytes;
+    return 0;
+}
+
+// The visibility data is 4 bytes of id and 4 of depth per sample, and nothing G-buffer-like.
+TEST(Visbuffer, LedgerHoldsEightBytesPerSample) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(4, 5);
+    SceneGpu gpuScene(*ctx, scene);
+    for (uint32_t msaa : {1u, 4u}) {
+        RunResult r = runOrFail(*ctx, gpuScene, "visbuffer", small(msaa));
+        const uint64_t samples = uint64_t(96) * 64 * msaa;
+        EXPECT_EQ(entryBytes(r, "visibility_ids"), samples * 4) << msaa;
+        EXPECT_EQ(msaa > 1 ? entryBytes(r, "visibility_depth_msaa") : entryBytes(r, "depth"),
+                  samples * 4)
+            << msaa;
+        for (const LedgerEntry& e : r.memory)
+            EXPECT_EQ(e.tag.name.find("gbuffer"), std::string::npos) << e.tag.name;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+} // namespace
+} // namespace tp::test

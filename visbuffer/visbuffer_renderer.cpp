@@ -1,0 +1,213 @@
+#include "visbuffer/visbuffer_renderer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/gpu/context.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/readback.h"
+#include "core/gpu/resources.h"
+#include "core/passes/debug_views.h"
+#include "core/passes/hybrid_blended.h"
+#include "core/passes/tiled_lighting.h"
+#include "core/render/scene_gpu.h"
+#include "visbuffer/draw_table.h"
+#include "visbuffer/vis_settings.h"
+#include "visbuffer/visibility_pass.h"
+
+namespace tp {
+namespace {
+
+class VisbufferRenderer final : public Renderer {
+  public:
+    explicit VisbufferRenderer(const RendererCreateInfo& info)
+        : ctx_(info.ctx), scene_(info.scene), features_(info.features),
+          vis_(vis::readSettings(info.settings)), table_(vis::makeDrawTable(info.scene)),
+          visibility_(info.ctx, info.scene, table_),
+          lighting_(info.ctx, info.scene, vis_.debug, vis_.assign.binned(),
+                    vis_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, vis_.assign.bin)),
+          blended_(info.ctx, info.scene) {}
+
+    void plan(FrameGraph& graph) override {
+        checkDevice();
+        const uint32_t samples = vis_.sampling.samples;
+        lt_.grid = la::makeTileGrid(graph.width(), graph.height(), vis_.assign.tile);
+        lt_.hdrFormat = vis_.hdr == HdrStorage::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
+                                                     : VK_FORMAT_R32G32B32A32_SFLOAT;
+        lt_.hdr = graph.createImage(
+            "hdr", {lt_.hdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT, "linear radiance (resolved)"});
+        depth_ = graph.createImage(
+            "depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                      samples > 1 ? "depth (resolved: sample 0)" : "visibility depth"});
+        hasBlended_ = hasBlendedDraws();
+        if (hasBlended_ && samples > 1)
+            lt_.hdrMsaa =
+                graph.createImage("hdr_msaa", {lt_.hdrFormat, 0, 0, VkSampleCountFlagBits(samples),
+                                               "per-sample radiance (blended under MSAA)"});
+        lt_.tileStats =
+            graph.createBuffer("tile_stats", uint64_t(lt_.grid.count()) * 16,
+                               "per tile: lights, transparent lights, edge pixels, overflow");
+        if (hasBlended_)
+            blended_.planLists(graph, lighting_, lt_, vis_.assign.binned(), slices(), true);
+        if (vis_.debug)
+            lt_.debug = graph.createImage(
+                "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                  "debug: edge mask, roughness, metallic"});
+        ids_ = visibility_.plan(graph, samples, depth_);
+        // Static per scene and configuration, like the light candidates: made now, so the
+        // surface source can name it.
+        drawBuffer_ = createBufferWithData(
+            ctx_, table_.rows.data(), table_.rows.size() * sizeof(gpu::VisDraw),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            {graph.owner(), "", "visibility_draws",
+             "per draw an id names: first index, vertex offset, material"});
+        ResourceHandle bounds;
+        if (hasBlended_)
+            bounds = blended_.planBounds(graph,
+                                         {lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
+                                          vis_.sampling.perPixelUnderMsaa()});
+        lighting_.plan(graph, surfaceSource(), lt_, false, blended_.sliceRows(), bounds);
+        if (hasBlended_)
+            blended_.planForward(graph,
+                                 {lt_.grid, samples, vis_.sampling.perPixelUnderMsaa(), lt_.hdr,
+                                  lt_.hdrMsaa, ids_.depth, lt_.transparentLists, bounds,
+                                  lt_.hdrFormat},
+                                 slices());
+        graph.exportResource("hdr", lt_.hdr);
+        graph.exportResource("depth", depth_);
+        graph.exportResource("tile_stats", lt_.tileStats);
+        if (hasBlended_) graph.exportResource("blended_bounds", bounds);
+        if (vis_.debug) graph.exportResource("debug_edge_rm", lt_.debug);
+        if (vis_.debug && samples == 1) graph.exportResource("visibility_ids", ids_.ids);
+    }
+
+    void prepare(FrameGraph& graph) override {
+        visibility_.prepare();
+        lighting_.prepare(graph);
+        if (hasBlended_) blended_.prepare(graph, lighting_);
+    }
+
+    void collectStats(FrameGraph& graph) override {
+        std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(lt_.tileStats));
+        tileStats_.assign(raw.size() / 4, 0);
+        std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
+    }
+
+    std::vector<DebugImage> debugImages(FrameGraph& graph) override;
+    RendererStats stats() const override;
+
+  private:
+    uint32_t slices() const { return vis_.assign.slicesOrZero(); }
+    bool hasBlendedDraws() const { return features_.blended && scene_.hasDraws(DrawFilter::Blend); }
+    void checkDevice() const;
+
+    // The ids (and depth) as tiled lighting's surface source, with the index buffer and the
+    // draw table the reader fetches triangles through.
+    SurfaceSource surfaceSource() const {
+        SurfaceSource s;
+        s.shaderFamily = "vis_tiled";
+        s.attributes = {{ids_.ids, Use::Sampled, TP_VIS_BINDING_IDS}};
+        s.depth = ids_.depth;
+        s.samples = vis_.sampling.samples;
+        s.everySample = vis_.sampling.perSample();
+        s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits}};
+        s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
+                     {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
+        return s;
+    }
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    SceneFeatures features_;
+    vis::Settings vis_; // the settings, typed once (vis_settings.h)
+    vis::DrawTable table_;
+    vis::VisibilityPass visibility_;
+    TiledLighting lighting_;
+    HybridBlended blended_; // blended scenes: lists, depth bounds, the forward pass
+    TiledLightingTargets lt_;
+    vis::VisibilityTargets ids_;
+    ResourceHandle depth_;
+    Buffer drawBuffer_;
+    bool hasBlended_ = false;
+    std::vector<uint32_t> tileStats_; // uvec4 per tile
+};
+
+// One line for a device that cannot run this pipeline, before any image is made.
+void VisbufferRenderer::checkDevice() const {
+    const uint32_t samples = vis_.sampling.samples;
+    auto refuse = [&](const std::string& why) {
+        throw RendererError("visbuffer: " + ctx_.info.name + " " + why);
+    };
+    if (!ctx_.caps.geometryShader)
+        refuse("lacks geometryShader, which a fragment shader's gl_PrimitiveID needs");
+    // The tiled pass writes per-sample radiance as a multisample storage image.
+    if (hasBlendedDraws() && samples > 1 && !ctx_.caps.storageImageMultisample)
+        refuse("lacks shaderStorageImageMultisample, which blended surfaces under --msaa " +
+               std::to_string(samples) + " need; use --msaa 1");
+}
+
+std::vector<DebugImage> VisbufferRenderer::debugImages(FrameGraph& graph) {
+    std::vector<DebugImage> out;
+    out.push_back({"lights_per_tile",
+                   passes::lightsPerTileHeatMap(lt_.grid, tileStatColumn(tileStats_, 0)), true});
+    if (hasBlended_)
+        out.push_back({"lights_per_tile_transparent",
+                       blended_.heatMap(lt_.grid, tileStats_, lt_.listOffsets), true});
+    ImageRGBA dbg = readbackColor(ctx_, graph.image(lt_.debug));
+    ImageRGBA edge(dbg.width, dbg.height), rm(dbg.width, dbg.height);
+    for (size_t i = 0; i < dbg.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c)
+            edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
+        rm.rgba[i * 4] = dbg.rgba[i * 4 + 1];
+        rm.rgba[i * 4 + 1] = dbg.rgba[i * 4 + 2];
+        edge.rgba[i * 4 + 3] = rm.rgba[i * 4 + 3] = 1.0f;
+    }
+    out.push_back({"edge_mask", std::move(edge), true});
+    out.push_back({"roughness_metallic", std::move(rm), true});
+    return out;
+}
+
+RendererStats VisbufferRenderer::stats() const {
+    RendererStats s;
+    const uint32_t samples = vis_.sampling.samples;
+    s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // R32_UINT id, beside depth
+    s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
+    s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
+    double lights = 0, maxLights = 0, edges = 0, overflow = 0;
+    const double tiles = double(tileStats_.size() / 4);
+    for (size_t i = 0; i + 3 < tileStats_.size(); i += 4) {
+        lights += tileStats_[i];
+        maxLights = std::max(maxLights, double(tileStats_[i]));
+        edges += tileStats_[i + 2];
+        overflow += tileStats_[i + 3];
+    }
+    const double pixels = double(vis_.width) * vis_.height;
+    s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
+    s.counters.push_back({"lights_per_tile_max", maxLights});
+    s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded in batches
+    s.counters.push_back({"light_candidates", double(lighting_.candidates())});
+    if (vis_.assign.binned())
+        s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
+    s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
+    if (samples > 1 && !ctx_.caps.standardSampleLocations)
+        s.leftOut.push_back(
+            {"exact MSAA sample positions",
+             "device reports non-standard sample locations: samples use the standard ones"});
+    if (!hasBlended_)
+        s.leftOut.push_back({"transparent forward pass, light lists and blended depth bounds",
+                             "no blended material"});
+    else
+        blended_.addStats(s, tileStats_, lt_.listOffsets);
+    if (!vis_.assign.clustered())
+        s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
+    if (samples == 1) s.leftOut.push_back({"per-sample ids and edge pixels", "MSAA is 1x"});
+    return s;
+}
+
+} // namespace
+
+std::unique_ptr<Renderer> createVisbufferRenderer(const RendererCreateInfo& info) {
+    return std::make_unique<VisbufferRenderer>(info);
+}
+
+} // namespace tp

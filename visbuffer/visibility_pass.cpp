@@ -1,0 +1,83 @@
+#include "visbuffer/visibility_pass.h"
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/renderer.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp::vis {
+
+VisibilityPass::~VisibilityPass() {
+    if (opaque_) vkDestroyPipeline(ctx_.device, opaque_, nullptr);
+    if (masked_) vkDestroyPipeline(ctx_.device, masked_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+}
+
+VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
+                                       ResourceHandle resolvedDepth) {
+    samples_ = samples;
+    resolved_ = resolvedDepth;
+    const auto count = VkSampleCountFlagBits(samples);
+    t_.ids = graph.createImage("visibility_ids",
+                               {VK_FORMAT_R32_SFLOAT, 0, 0, count,
+                                "packed (draw, triangle) id per sample as an exact fp32 "
+                                "integer (0: no geometry)"});
+    std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment}};
+    if (samples > 1) {
+        t_.depth = graph.createImage("visibility_depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, count,
+                                                               "per-sample depth (reverse-Z)"});
+        uses.push_back({t_.depth, Use::DepthAttachment});
+        uses.push_back({resolvedDepth, Use::DepthResolve});
+    } else {
+        t_.depth = resolvedDepth;
+        uses.push_back({resolvedDepth, Use::DepthAttachment});
+    }
+    graph.addPass("visibility", uses, [this](PassContext& pc) { record(pc); });
+    return t_;
+}
+
+void VisibilityPass::prepare() {
+    layout_ = scene_.createPipelineLayout();
+    GraphicsPipelineDesc d;
+    d.colorFormats = {VK_FORMAT_R32_SFLOAT};
+    d.samples = VkSampleCountFlagBits(samples_);
+    d.layout = layout_;
+    if (!table_.opaque.empty()) {
+        // Opaque: no material, so scene.vert's position-only variant (the same gl_Position).
+        d.vertexShader = "scene_position_vert";
+        d.fragmentShader = "vis_visibility_frag";
+        d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+        d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
+        opaque_ = createGraphicsPipeline(ctx_, d);
+    }
+    if (!table_.masked.empty()) {
+        // Masked: the alpha test per sample (`sample` inputs), as prepass_mask.frag.
+        d.vertexShader = "scene_vert";
+        d.fragmentShader = "vis_visibility_masked_frag";
+        d.sampleShading = samples_ > 1;
+        d.specConstants = scene_.specConstants(AlphaMode::Mask);
+        d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
+        masked_ = createGraphicsPipeline(ctx_, d);
+    }
+}
+
+void VisibilityPass::record(PassContext& pc) {
+    ColorTarget ids{t_.ids, {}, true, {}};
+    ids.clearValue.uint32[0] = 0; // no geometry
+    DepthTarget depth{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}};
+    beginRendering(pc, {ids}, depth);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    scene_.bindIndexBuffer(pc.cmd);
+    auto drawAll = [&](VkPipeline pipeline, const std::vector<TableDraw>& draws) {
+        if (!pipeline) return;
+        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        for (const TableDraw& t : draws)
+            recordDraw(pc.cmd, layout_, *t.item, t.row);
+    };
+    drawAll(opaque_, table_.opaque);
+    drawAll(masked_, table_.masked);
+    endRendering(pc);
+}
+
+} // namespace tp::vis

@@ -1,0 +1,44 @@
+#pragma once
+// The visibility pass (pass "visibility"): opaque and alpha-masked draws write depth and the
+// packed (draw, triangle) id of the visible surface per sample (visbuffer/vis_shared.h), and
+// nothing else: 4 bytes of id per sample beside depth. Masked draws alpha-test per sample
+// under MSAA, as the depth prepass does. Under MSAA the depth is resolved (sample 0) into the
+// exported "depth"; blended draws are left to the hybrid forward pass.
+#include "core/gpu/frame_graph.h"
+#include "visbuffer/draw_table.h"
+
+namespace tp {
+
+class GpuContext;
+class SceneGpu;
+
+namespace vis {
+
+struct VisibilityTargets {
+    ResourceHandle ids;   // R32_SFLOAT per sample (the id's exact integer value)
+    ResourceHandle depth; // D32 per sample (the resolved depth itself at 1x)
+};
+
+class VisibilityPass {
+  public:
+    VisibilityPass(GpuContext& ctx, SceneGpu& scene, const DrawTable& table)
+        : ctx_(ctx), scene_(scene), table_(table) {}
+    ~VisibilityPass();
+    // resolvedDepth: the single-sample "depth" output (written directly at 1x).
+    VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth);
+    void prepare();
+
+  private:
+    void record(PassContext& pc);
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    const DrawTable& table_;
+    uint32_t samples_ = 1;
+    VisibilityTargets t_;
+    ResourceHandle resolved_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
+};
+
+} // namespace vis
+} // namespace tp
