@@ -68,10 +68,11 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     if (in.referenceDepth) {
         ImageR32 allowance =
             positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits);
-        ImageR32 lod = vis::textureLodAllowance(in.scene, *in.referenceDepth, in.referenceHdr);
-        if (in.settings.msaa > 1) lod = dilated(lod);
+        const ImageR32 lod =
+            vis::textureLodAllowance(in.scene, *in.referenceDepth, in.referenceHdr);
         for (size_t i = 0; i < allowance.r.size(); ++i)
             allowance.r[i] += lod.r[i];
+        if (in.settings.msaa > 1) allowance = dilated(allowance);
         b.perPixel = {"exact hit next to lights, analytic texture level of detail",
                       "the shaded point is the exact hit at the sample location, the reference's "
                       "the point of the triangle snapped to 2^-" +

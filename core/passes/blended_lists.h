@@ -31,7 +31,7 @@ struct TransparentListPlan {
 // or the GPU); null: computed here.
 TransparentListPlan planTransparentLists(const la::TileGrid& grid, const SceneGpu& scene,
                                          uint64_t limit, const std::string& deviceName, bool masks,
-                                         const std::vector<uint32_t>* localBound = nullptr,
-                                         const std::string& owner = "deferred");
+                                         const std::vector<uint32_t>* localBound,
+                                         const std::string& owner);
 
 } // namespace tp

@@ -28,3 +28,5 @@ else
   done
 fi
 python3 "$(dirname "$0")/visbuffer_table.py" "$out"
+# The reports and logs alone, for machines that hand back only a few files.
+[ -n "${KEEP:-}" ] && { mkdir -p "$KEEP"; for d in "$out"/*/; do n=$(basename "$d"); for f in report.json sweep.csv; do [ -f "$d/$f" ] && cp "$d/$f" "$KEEP/$n.$f"; done; done; cp "$out"/*.log "$KEEP"/; } || true

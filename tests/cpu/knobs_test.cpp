@@ -54,7 +54,7 @@ TEST(Registry, EveryPipelineRegistersItselfInOrder) {
         names.push_back(e.name);
     // The reference first, then each pipeline in the order it declared.
     EXPECT_EQ(names, (std::vector<std::string>{"reference", "forwardplus", "deferred",
-                                               "multipass_forward"}));
+                                               "visbuffer", "multipass_forward"}));
 }
 
 TEST(Registry, EveryDeclaredKnobIsComplete) {
@@ -75,7 +75,8 @@ TEST(Registry, SharedKnobsAreOneDeclaration) {
     bool tileShared = false;
     for (const KnobReaders& k : allKnobs())
         if (k.knob.name == "tile")
-            tileShared = k.readers == std::vector<std::string>{"forwardplus", "deferred"};
+            tileShared =
+                k.readers == std::vector<std::string>{"forwardplus", "deferred", "visbuffer"};
     EXPECT_TRUE(tileShared);
 
     // A renderer that declares "tile" with other values is refused before it is added.
