@@ -182,7 +182,6 @@ class DeferredRenderer final : public Renderer {
 
 std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     std::vector<DebugImage> out;
-    uint32_t w = graph.width(), h = graph.height();
     // RGBA8_SRGB reads back as the raw encoded bytes / 255: already display sRGB.
     if (!t_.msaa())
         out.push_back(
@@ -197,17 +196,9 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
     if (hasBlended_)
         out.push_back({"lights_per_tile_transparent",
                        blended_.heatMap(t_.grid, tileStats_, t_.listOffsets), true});
-    ImageRGBA dbg = readbackColor(ctx_, graph.image(t_.debug));
-    ImageRGBA edge(w, h), rm(w, h);
-    for (size_t i = 0; i < dbg.pixelCount(); ++i) {
-        for (int c = 0; c < 3; ++c)
-            edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
-        rm.rgba[i * 4] = dbg.rgba[i * 4 + 1];
-        rm.rgba[i * 4 + 1] = dbg.rgba[i * 4 + 2];
-        edge.rgba[i * 4 + 3] = rm.rgba[i * 4 + 3] = 1.0f;
-    }
-    out.push_back({"edge_mask", std::move(edge), true});
-    out.push_back({"gbuffer_roughness_metallic", std::move(rm), true});
+    EdgeAndRoughMetal split = splitDebugImage(readbackColor(ctx_, graph.image(t_.debug)));
+    out.push_back({"edge_mask", std::move(split.edge), true});
+    out.push_back({"gbuffer_roughness_metallic", std::move(split.roughMetal), true});
     return out;
 }
 
@@ -216,14 +207,8 @@ RendererStats DeferredRenderer::stats() const {
     const uint32_t samples = t_.layout.samples;
     s.counters.push_back({"gbuffer_bytes_per_sample", double(t_.layout.bytesPerSample())});
     s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});
-    double lights = 0, maxLights = 0, edges = 0, overflow = 0,
-           tiles = double(tileStats_.size() / 4);
-    for (size_t i = 0; i + 3 < tileStats_.size(); i += 4) {
-        lights += tileStats_[i];
-        maxLights = std::max(maxLights, double(tileStats_[i]));
-        edges += tileStats_[i + 2];
-        overflow += tileStats_[i + 3];
-    }
+    const TileStatTotals totals = sumTileStats(tileStats_);
+    double edges = totals.edges;
     double pixels = double(def_.width) * def_.height;
     if (useVolumes()) {
         edges = double(volumeEdges_);
@@ -231,10 +216,10 @@ RendererStats DeferredRenderer::stats() const {
         s.leftOut.push_back(
             {"lights per tile (statistics, heat map)", "volumes lighting has no opaque tiles"});
     } else {
-        s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
-        s.counters.push_back({"lights_per_tile_max", maxLights});
-        s.counters.push_back(
-            {"tiles_over_shared_capacity", overflow}); // shaded with every light, none dropped
+        s.counters.push_back({"lights_per_tile_mean", totals.meanLights()});
+        s.counters.push_back({"lights_per_tile_max", totals.maxLights});
+        s.counters.push_back({"tiles_over_shared_capacity",
+                              totals.overflow}); // shaded with every light, none dropped
     }
     if (t_.tileStats.valid()) {
         // Light-vs-tile tests of the tiled pass's culling (binned: the candidates).

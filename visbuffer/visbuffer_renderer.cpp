@@ -153,42 +153,27 @@ std::vector<DebugImage> VisbufferRenderer::debugImages(FrameGraph& graph) {
     if (hasBlended_)
         out.push_back({"lights_per_tile_transparent",
                        blended_.heatMap(lt_.grid, tileStats_, lt_.listOffsets), true});
-    ImageRGBA dbg = readbackColor(ctx_, graph.image(lt_.debug));
-    ImageRGBA edge(dbg.width, dbg.height), rm(dbg.width, dbg.height);
-    for (size_t i = 0; i < dbg.pixelCount(); ++i) {
-        for (int c = 0; c < 3; ++c)
-            edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
-        rm.rgba[i * 4] = dbg.rgba[i * 4 + 1];
-        rm.rgba[i * 4 + 1] = dbg.rgba[i * 4 + 2];
-        edge.rgba[i * 4 + 3] = rm.rgba[i * 4 + 3] = 1.0f;
-    }
-    out.push_back({"edge_mask", std::move(edge), true});
-    out.push_back({"roughness_metallic", std::move(rm), true});
+    EdgeAndRoughMetal split = splitDebugImage(readbackColor(ctx_, graph.image(lt_.debug)));
+    out.push_back({"edge_mask", std::move(split.edge), true});
+    out.push_back({"roughness_metallic", std::move(split.roughMetal), true});
     return out;
 }
 
 RendererStats VisbufferRenderer::stats() const {
     RendererStats s;
     const uint32_t samples = vis_.sampling.samples;
-    s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // R32_UINT id, beside depth
+    s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // fp32 id, beside depth
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
-    double lights = 0, maxLights = 0, edges = 0, overflow = 0;
-    const double tiles = double(tileStats_.size() / 4);
-    for (size_t i = 0; i + 3 < tileStats_.size(); i += 4) {
-        lights += tileStats_[i];
-        maxLights = std::max(maxLights, double(tileStats_[i]));
-        edges += tileStats_[i + 2];
-        overflow += tileStats_[i + 3];
-    }
+    const TileStatTotals t = sumTileStats(tileStats_);
     const double pixels = double(vis_.width) * vis_.height;
-    s.counters.push_back({"lights_per_tile_mean", tiles > 0 ? lights / tiles : 0.0});
-    s.counters.push_back({"lights_per_tile_max", maxLights});
-    s.counters.push_back({"tiles_over_shared_capacity", overflow}); // shaded in batches
+    s.counters.push_back({"lights_per_tile_mean", t.meanLights()});
+    s.counters.push_back({"lights_per_tile_max", t.maxLights});
+    s.counters.push_back({"tiles_over_shared_capacity", t.overflow}); // shaded in batches
     s.counters.push_back({"light_candidates", double(lighting_.candidates())});
     if (vis_.assign.binned())
         s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
-    s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
+    s.counters.push_back({"edge_pixel_share", pixels > 0 ? t.edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)
         s.leftOut.push_back(
             {"exact MSAA sample positions",

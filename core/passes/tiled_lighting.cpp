@@ -159,6 +159,30 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
     if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_DEF_CAND_RUNS]);
 }
 
+TileStatTotals sumTileStats(const std::vector<uint32_t>& stats) {
+    TileStatTotals t;
+    t.tiles = double(stats.size() / 4);
+    for (size_t i = 0; i + 3 < stats.size(); i += 4) {
+        t.lights += stats[i];
+        t.maxLights = std::max(t.maxLights, double(stats[i]));
+        t.edges += stats[i + 2];
+        t.overflow += stats[i + 3];
+    }
+    return t;
+}
+
+EdgeAndRoughMetal splitDebugImage(const ImageRGBA& dbg) {
+    EdgeAndRoughMetal out{ImageRGBA(dbg.width, dbg.height), ImageRGBA(dbg.width, dbg.height)};
+    for (size_t i = 0; i < dbg.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c)
+            out.edge.rgba[i * 4 + c] = dbg.rgba[i * 4];
+        out.roughMetal.rgba[i * 4] = dbg.rgba[i * 4 + 1];
+        out.roughMetal.rgba[i * 4 + 1] = dbg.rgba[i * 4 + 2];
+        out.edge.rgba[i * 4 + 3] = out.roughMetal.rgba[i * 4 + 3] = 1.0f;
+    }
+    return out;
+}
+
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {
     const uint32_t pixels = (tileSize / 8) * (tileSize / 8);
     return std::max(1u, std::min(TP_DEF_TILE_LIGHT_CAPACITY, 32768u / (pixels * samples)));

@@ -14,6 +14,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
+#include "core/image/image.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/light_binning.h"
 #include "include/tiled_lighting.h"
@@ -28,6 +29,21 @@ namespace tp {
 // limit: the other loops - depth bounds, culling, transparent lists - stay far below the
 // rest) and never more than the shared list (TP_DEF_TILE_LIGHT_CAPACITY).
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples);
+
+// The per-tile statistics the pass writes (uvec4 per tile: opaque lights, transparent lights,
+// edge pixels, overflow), summed over the tiles.
+struct TileStatTotals {
+    double tiles = 0, lights = 0, maxLights = 0, edges = 0, overflow = 0;
+    double meanLights() const { return tiles > 0 ? lights / tiles : 0.0; }
+};
+TileStatTotals sumTileStats(const std::vector<uint32_t>& stats);
+
+// --debug's image (debug_edge_rm: edge mask, roughness, metallic) as two display images: the
+// edge mask in grey, roughness and metallic in red and green.
+struct EdgeAndRoughMetal {
+    ImageRGBA edge, roughMetal;
+};
+EdgeAndRoughMetal splitDebugImage(const ImageRGBA& debug);
 
 class GpuContext;
 class SceneGpu;
