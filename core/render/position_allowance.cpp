@@ -223,6 +223,31 @@ BrdfLimits limitsIn(const std::vector<BrdfLimits>& limits, std::pair<int, int> b
     return out;
 }
 
+// The scene's lights as both bounds read them, once per image rather than per pixel: the
+// directional lights' summed strength (intensity times the largest colour channel), and each
+// local light camera-relative with its strength.
+struct LocalLight {
+    const Light* light;
+    glm::dvec3 position; // camera-relative
+    double strength;
+};
+struct SplitLights {
+    double directional = 0;
+    std::vector<LocalLight> locals;
+};
+SplitLights splitLights(const Scene& scene) {
+    SplitLights out;
+    for (const Light& l : scene.lights) {
+        const double strength = double(l.intensity) * std::max({l.color.r, l.color.g, l.color.b});
+        if (l.type == LightType::Directional)
+            out.directional += strength;
+        else
+            out.locals.push_back(
+                {&l, glm::dvec3(l.position) - glm::dvec3(scene.camera.position), strength});
+    }
+    return out;
+}
+
 } // namespace
 
 ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
@@ -235,20 +260,9 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
     const std::vector<BrdfLimits> limits = brdfLimits(scene);
     const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
 
-    struct Local {
-        const Light* light;
-        glm::dvec3 position; // camera-relative
-        double strength;     // intensity times the largest colour channel
-    };
-    std::vector<Local> locals;
-    double directional = 0;
-    for (const Light& l : scene.lights) {
-        const double strength = double(l.intensity) * std::max({l.color.r, l.color.g, l.color.b});
-        if (l.type == LightType::Directional)
-            directional += strength;
-        else
-            locals.push_back({&l, glm::dvec3(l.position) - glm::dvec3(cam.position), strength});
-    }
+    const SplitLights lights = splitLights(scene);
+    const double directional = lights.directional;
+    const std::vector<LocalLight>& locals = lights.locals;
     for (uint32_t y = 0; y < depth.height; ++y)
         for (uint32_t x = 0; x < depth.width; ++x) {
             const size_t i = size_t(y) * depth.width + x;
@@ -260,7 +274,7 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
             const double eyeDistance = glm::length(p);
             // Directional lights: only the view direction moves (by eps / eyeDistance).
             double allowance = directional * b.lipschitz * eps / eyeDistance;
-            for (const Local& l : locals) {
+            for (const LocalLight& l : locals) {
                 const double d = glm::length(p - l.position);
                 if (d >= double(l.light->range) + 1.01 * eps) continue;
                 allowance +=
@@ -279,6 +293,7 @@ ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& de
     const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
     const glm::dmat4 view = viewRotation(cam);
     const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
+    const SplitLights lights = splitLights(scene);
     for (uint32_t y = 0; y < depth.height; ++y)
         for (uint32_t x = 0; x < depth.width; ++x) {
             const size_t i = size_t(y) * depth.width + x;
@@ -287,19 +302,13 @@ ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& de
             const BrdfLimits b = limitsIn(limits, viewBuckets(pos, depth, x, y));
             // A sample of the pixel lies within one pixel width of its centre's point.
             const double footprint = pixelPerDepth * -(view * glm::dvec4(p, 1.0)).z;
-            double light = 0; // sum of intensity * window / max(d, dmin)^2 (window <= 1)
-            for (const Light& l : scene.lights) {
-                const double strength =
-                    double(l.intensity) * std::max({l.color.r, l.color.g, l.color.b});
-                if (l.type == LightType::Directional) {
-                    light += strength;
-                    continue;
-                }
-                const double d =
-                    glm::length(p - (glm::dvec3(l.position) - glm::dvec3(cam.position)));
-                if (d >= double(l.range) + footprint) continue;
+            // Sum of intensity * window / max(d, dmin)^2 (window <= 1).
+            double light = lights.directional;
+            for (const LocalLight& l : lights.locals) {
+                const double d = glm::length(p - l.position);
+                if (d >= double(l.light->range) + footprint) continue;
                 const double m = std::max(d - footprint, double(TP_MIN_LIGHT_DISTANCE));
-                light += strength / (m * m);
+                light += l.strength / (m * m);
             }
             out.value.r[i] = float(light * b.maxValue);
             out.lipschitz.r[i] = float(light * b.lipschitz);

@@ -68,6 +68,12 @@ void expectWithinBound(GpuContext& ctx, const Scene& scene, const RunResult& run
     EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev));
 }
 
+// Runs the visbuffer with `s` and checks it against `ref` with the model of the same settings.
+void expectRunWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene,
+                          const RunResult& ref, const RenderSettings& s, const std::string& what) {
+    expectWithinBound(ctx, scene, runOrFail(ctx, gpuScene, "visbuffer", s), ref, s, what);
+}
+
 TEST(Visbuffer, MatchesTheReferenceOnTheCourtyardWithinItsBound) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -76,15 +82,13 @@ TEST(Visbuffer, MatchesTheReferenceOnTheCourtyardWithinItsBound) {
         SceneGpu gpuScene(*ctx, scene);
         const std::string n = std::to_string(lights) + " lights";
         RunResult ref = runOrFail(*ctx, gpuScene, "reference", small(1));
-        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(1)), ref,
-                          small(1), n + " 1x tiled");
+        expectRunWithinBound(*ctx, gpuScene, scene, ref, small(1), n + " 1x tiled");
         RenderSettings clustered = small(1);
         clustered.set("light-assign", "clustered");
-        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", clustered), ref,
-                          clustered, n + " 1x clustered");
+        expectRunWithinBound(*ctx, gpuScene, scene, ref, clustered, n + " 1x clustered");
         RunResult ref4 = runOrFail(*ctx, gpuScene, "reference", small(4, "sample"));
-        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(4, "sample")),
-                          ref4, small(4, "sample"), n + " 4x sample rate");
+        expectRunWithinBound(*ctx, gpuScene, scene, ref4, small(4, "sample"),
+                             n + " 4x sample rate");
     }
     expectNoValidationMessages(*ctx);
 }
@@ -105,11 +109,10 @@ TEST(Visbuffer, MatchesTheReferenceOnAnUntexturedFloorWithinItsBound) {
         RunResult ref = runOrFail(*ctx, gpuScene, "reference", small(1));
         ASSERT_EQ(vis::textureLodAllowance(scene, ref.depth).r,
                   std::vector<float>(ref.depth.r.size(), 0.0f));
-        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(1)), ref,
-                          small(1), n + " 1x");
+        expectRunWithinBound(*ctx, gpuScene, scene, ref, small(1), n + " 1x");
         RunResult ref4 = runOrFail(*ctx, gpuScene, "reference", small(4, "sample"));
-        expectWithinBound(*ctx, scene, runOrFail(*ctx, gpuScene, "visbuffer", small(4, "sample")),
-                          ref4, small(4, "sample"), n + " 4x sample rate");
+        expectRunWithinBound(*ctx, gpuScene, scene, ref4, small(4, "sample"),
+                             n + " 4x sample rate");
     }
     expectNoValidationMessages(*ctx);
 }
