@@ -215,6 +215,17 @@ void printSummary(const CompareRecord& r) {
                 double(shared) / (1024.0 * 1024.0));
 }
 
+// Anything a pipeline counted as dropped (lights_dropped, transparent_lights_dropped,
+// blended_fragments_dropped, ...) is said on stderr, not only in the counters.
+void warnDropped(const PipelineOutcome& p) {
+    const std::string suffix = "_dropped";
+    for (const auto& [name, value] : p.run->stats.counters)
+        if (value > 0 && name.size() > suffix.size() &&
+            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+            std::fprintf(stderr, "triptych: warning: %s: %s = %.0f (see its counters)\n",
+                         p.name.c_str(), name.c_str(), value);
+}
+
 void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene,
                      const std::vector<std::string>& names) {
     for (size_t i = 0; i < names.size(); ++i) {
@@ -223,10 +234,7 @@ void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene,
         PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, label);
         if (p.run) {
             writeImages(r.options->out, p, r.exposureEv);
-            if (const double dropped = counterValue(*p.run, "lights_dropped"); dropped > 0)
-                std::fprintf(stderr,
-                             "triptych: warning: %s dropped %.0f lights (see its counters)\n",
-                             p.name.c_str(), dropped);
+            warnDropped(p);
         }
         r.pipelines.push_back(std::move(p));
     }

@@ -22,13 +22,15 @@ bool hasBlended(const Scene& scene) {
 void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
     const vis::Settings s = vis::readSettings(in.settings);
     if (s.hdr != HdrStorage::Fp16) return;
-    uint32_t batch = tiledLightBatch(s.assign.tile, s.sampling.samples);
+    // The smaller batch of a CPU device (more batches, more roundings): a bound for both.
+    const bool blended = hasBlended(in.scene);
+    uint32_t batch = tiledLightBatch(s.assign.tile, s.evaluationsPerPixel(blended));
     if (s.assign.clustered())
         batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
     const uint32_t lights = uint32_t(in.scene.lights.size());
     int stores = int(std::max(1u, (lights + batch - 1) / batch));
     std::string what = "one per lighting batch of " + std::to_string(batch) + " lights";
-    if (s.sampling.msaa() && hasBlended(in.scene)) {
+    if (s.sampling.msaa() && blended && s.blended == vis::Blended::Forward) {
         stores += 1;
         what += ", resolve";
     }

@@ -2,12 +2,39 @@
 
 namespace tp::vis {
 
+const ChoiceKnob<Blended>& blendedKnob() {
+    static const ChoiceKnob<Blended> k{
+        "vis-blended",
+        {{Blended::Compute, "compute"}, {Blended::Forward, "forward"}},
+        "Where visbuffer shades blended surfaces: compute (a raster pass lists each pixel's "
+        "blended fragment ids, the resolve composites them in the reference's order) or forward "
+        "(the hybrid forward pass deferred uses: per-tile light lists, per-sample radiance under "
+        "MSAA)"};
+    return k;
+}
+
+const IntegerKnob& blendedCapacityKnob() {
+    static const IntegerKnob k{Knob::integer(
+        "vis-blended-capacity", 0, 6400, 0,
+        "visbuffer --vis-blended compute: blended fragments the lists hold (8 bytes each): 0 "
+        "sizes them by a bound on the fragments the blended triangles can make on screen (none "
+        "dropped); N holds N% of the pixel count, and fragments beyond are dropped and counted "
+        "(blended_fragments_dropped, a warning), never silently")};
+    return k;
+}
+
+uint32_t Settings::evaluationsPerPixel(bool blendedBudget) const {
+    const uint32_t samples = sampling.samples;
+    if (!blendedBudget || blended != Blended::Compute) return samples;
+    return samples + kBlendedPerPixelBudget * (sampling.perSample() ? samples : 1);
+}
+
 KnobSchema knobs() {
     return {la::tileSizeKnob().knob(), la::lightCullKnob().knob(),
             la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),
             msaaShadingKnob().knob(), // pixel: once per pixel and triangle; sample: every sample
-            hdrKnob().knob()};
+            hdrKnob().knob(), blendedKnob().knob(), blendedCapacityKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -18,6 +45,8 @@ Settings readSettings(const RenderSettings& s) {
     v.debug = s.debug;
     v.assign = la::readAssignSettings(s);
     v.hdr = hdrKnob().in(s);
+    v.blended = blendedKnob().in(s);
+    v.blendedCapacityPercent = blendedCapacityKnob().in(s);
     return v;
 }
 

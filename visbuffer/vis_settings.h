@@ -1,8 +1,9 @@
 #pragma once
 // The visibility buffer's knobs and the typed settings its passes read, turned from
 // RenderSettings once in the factory (register.cpp builds the schema from the same
-// declarations). Every knob is a library knob: the light assignment's, the MSAA shading rate
-// and the tiled lighting's radiance precision.
+// declarations). The library's knobs (the light assignment's, the MSAA shading rate, the tiled
+// lighting's radiance precision) and its own two: where blended surfaces are shaded and the
+// size of the blended fragment lists.
 #include "core/lightassign/knobs.h"
 #include "core/render/hdr_knob.h"
 #include "core/render/knobs.h"
@@ -10,12 +11,31 @@
 
 namespace tp::vis {
 
+// --vis-blended: compute (per-pixel fragment lists composited in the resolve) or forward (the
+// library's hybrid forward pass, as deferred's).
+enum class Blended { Compute, Forward };
+const ChoiceKnob<Blended>& blendedKnob();
+// --vis-blended-capacity: the fragment pool in percent of the pixel count, 0: the derived
+// bound (fragment_bound.h).
+const IntegerKnob& blendedCapacityKnob();
+
+// Blended fragments per pixel the compute resolve's lighting batches are sized for on a CPU
+// device (core/passes/tiled_lighting.h: tiledLightBatch; lavapipe's loop limit): a pixel with
+// more still composites all of them, and the most any pixel had is reported.
+constexpr uint32_t kBlendedPerPixelBudget = 4;
+
 struct Settings {
     uint32_t width = 0, height = 0;
     Sampling sampling;
     bool debug = false;
     la::AssignSettings assign;
     HdrStorage hdr = HdrStorage::Fp32;
+    Blended blended = Blended::Compute;
+    uint32_t blendedCapacityPercent = 0; // 0: the derived bound
+    // Light evaluations per pixel and light of a batch the resolve may make: its samples, and
+    // with `blendedBudget` (blended fragments composited in compute, on a CPU device) the
+    // budgeted blended fragments (each sample's at the sample rate). Sizes the batches.
+    uint32_t evaluationsPerPixel(bool blendedBudget) const;
 };
 
 KnobSchema knobs();

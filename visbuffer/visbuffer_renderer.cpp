@@ -11,19 +11,28 @@
 #include "core/passes/hybrid_blended.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/render/scene_gpu.h"
+#include "visbuffer/blended_ids_pass.h"
 #include "visbuffer/draw_table.h"
+#include "visbuffer/fragment_bound.h"
 #include "visbuffer/vis_settings.h"
 #include "visbuffer/visibility_pass.h"
 
 namespace tp {
 namespace {
 
+bool hasBlendedDraws(const SceneFeatures& features, const SceneGpu& scene) {
+    return features.blended && scene.hasDraws(DrawFilter::Blend);
+}
+
 class VisbufferRenderer final : public Renderer {
   public:
     explicit VisbufferRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          vis_(vis::readSettings(info.settings)), table_(vis::makeDrawTable(info.scene)),
-          visibility_(info.ctx, info.scene, table_),
+          vis_(vis::readSettings(info.settings)),
+          hasBlended_(hasBlendedDraws(info.features, info.scene)),
+          blendInCompute_(hasBlended_ && vis_.blended == vis::Blended::Compute),
+          table_(vis::makeDrawTable(info.scene, blendInCompute_)),
+          visibility_(info.ctx, info.scene, table_), blendedIds_(info.ctx, info.scene, table_),
           lighting_(info.ctx, info.scene, vis_.debug, vis_.assign.binned(),
                     vis_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, vis_.assign.bin)),
           blended_(info.ctx, info.scene) {}
@@ -39,8 +48,9 @@ class VisbufferRenderer final : public Renderer {
         depth_ = graph.createImage(
             "depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                       samples > 1 ? "depth (resolved: sample 0)" : "visibility depth"});
-        hasBlended_ = hasBlendedDraws();
-        if (hasBlended_ && samples > 1)
+        // The hybrid forward pass blends into per-sample radiance under MSAA; the compute
+        // composite blends each sample before the resolve averages them.
+        if (hasBlended_ && !blendInCompute_ && samples > 1)
             lt_.hdrMsaa =
                 graph.createImage("hdr_msaa", {lt_.hdrFormat, 0, 0, VkSampleCountFlagBits(samples),
                                                "per-sample radiance (blended under MSAA)"});
@@ -48,12 +58,20 @@ class VisbufferRenderer final : public Renderer {
             graph.createBuffer("tile_stats", uint64_t(lt_.grid.count()) * 16,
                                "per tile: lights, transparent lights, edge pixels, overflow");
         if (hasBlended_)
-            blended_.planLists(graph, lighting_, lt_, vis_.assign.binned(), slices(), true);
+            blended_.planLists(graph, lighting_, lt_, vis_.assign.binned(), slices(),
+                               !blendInCompute_); // slice rows: the forward pass's only
         if (vis_.debug)
             lt_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
         ids_ = visibility_.plan(graph, samples, depth_);
+        if (blendInCompute_)
+            lists_ = blendedIds_.plan(
+                graph, samples, ids_.depth, vis_.blendedCapacityPercent,
+                vis_.blendedCapacityPercent == 0 ? vis::blendedFragmentBound(scene_, table_.blended,
+                                                                           graph.width(),
+                                                                           graph.height(), samples)
+                                                 : 0);
         // Static per scene and configuration, like the light candidates: made now, so the
         // surface source can name it.
         drawBuffer_ = createBufferWithData(
@@ -67,7 +85,7 @@ class VisbufferRenderer final : public Renderer {
                                          {lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
                                           vis_.sampling.perPixelUnderMsaa()});
         lighting_.plan(graph, surfaceSource(), lt_, false, blended_.sliceRows(), bounds);
-        if (hasBlended_)
+        if (hasBlended_ && !blendInCompute_)
             blended_.planForward(graph,
                                  {lt_.grid, samples, vis_.sampling.perPixelUnderMsaa(), lt_.hdr,
                                   lt_.hdrMsaa, ids_.depth, lt_.transparentLists, bounds,
@@ -77,6 +95,7 @@ class VisbufferRenderer final : public Renderer {
         graph.exportResource("depth", depth_);
         graph.exportResource("tile_stats", lt_.tileStats);
         if (hasBlended_) graph.exportResource("blended_bounds", bounds);
+        if (blendInCompute_) graph.exportResource("blended_list_counters", lists_.counters);
         if (vis_.debug) graph.exportResource("debug_edge_rm", lt_.debug);
         if (vis_.debug && samples == 1) graph.exportResource("visibility_ids", ids_.ids);
     }
@@ -85,12 +104,17 @@ class VisbufferRenderer final : public Renderer {
         visibility_.prepare();
         lighting_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
+        if (blendInCompute_) blendedIds_.prepare(graph);
     }
 
     void collectStats(FrameGraph& graph) override {
         std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(lt_.tileStats));
         tileStats_.assign(raw.size() / 4, 0);
         std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
+        if (blendInCompute_) {
+            raw = readbackBuffer(ctx_, graph.buffer(lists_.counters));
+            std::memcpy(blendCounters_, raw.data(), sizeof(blendCounters_));
+        }
     }
 
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;
@@ -98,14 +122,14 @@ class VisbufferRenderer final : public Renderer {
 
   private:
     uint32_t slices() const { return vis_.assign.slicesOrZero(); }
-    bool hasBlendedDraws() const { return features_.blended && scene_.hasDraws(DrawFilter::Blend); }
     void checkDevice() const;
+    void addBlendedListStats(RendererStats& s) const;
 
     // The ids (and depth) as tiled lighting's surface source, with the index buffer and the
     // draw table the reader fetches triangles through.
     SurfaceSource surfaceSource() const {
         SurfaceSource s;
-        s.shaderFamily = "vis_tiled";
+        s.shaderFamily = blendInCompute_ ? "vis_tiled_blend" : "vis_tiled";
         s.attributes = {{ids_.ids, Use::Sampled, TP_VIS_BINDING_IDS}};
         s.depth = ids_.depth;
         s.samples = vis_.sampling.samples;
@@ -113,6 +137,16 @@ class VisbufferRenderer final : public Renderer {
         s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
+        if (blendInCompute_) {
+            s.attributes.push_back({lists_.heads, Use::StorageRead, TP_VIS_BINDING_BLEND_HEADS});
+            s.attributes.push_back({lists_.nodes, Use::StorageRead, TP_VIS_BINDING_BLEND_NODES});
+            // The resolve records the longest list it composited.
+            s.attributes.push_back(
+                {lists_.counters, Use::StorageWrite, TP_VIS_BINDING_BLEND_COUNTERS});
+        }
+        // The blended fragments' budget guards lavapipe's loop limit (tiled_lighting.h), a CPU
+        // device's: a GPU keeps the batches its opaque surfaces get.
+        s.evaluationsPerPixel = vis_.evaluationsPerPixel(blendInCompute_ && ctx_.isCpuDevice());
         return s;
     }
 
@@ -120,15 +154,19 @@ class VisbufferRenderer final : public Renderer {
     SceneGpu& scene_;
     SceneFeatures features_;
     vis::Settings vis_; // the settings, typed once (vis_settings.h)
+    bool hasBlended_ = false;
+    bool blendInCompute_ = false; // --vis-blended compute in a scene with blended draws
     vis::DrawTable table_;
     vis::VisibilityPass visibility_;
+    vis::BlendedIdsPass blendedIds_; // --vis-blended compute
+    vis::BlendedListTargets lists_;
+    uint32_t blendCounters_[TP_VIS_BLEND_COUNTER_WORDS] = {};
     TiledLighting lighting_;
     HybridBlended blended_; // blended scenes: lists, depth bounds, the forward pass
     TiledLightingTargets lt_;
     vis::VisibilityTargets ids_;
     ResourceHandle depth_;
     Buffer drawBuffer_;
-    bool hasBlended_ = false;
     std::vector<uint32_t> tileStats_; // uvec4 per tile
 };
 
@@ -140,8 +178,11 @@ void VisbufferRenderer::checkDevice() const {
     };
     if (!ctx_.caps.geometryShader)
         refuse("lacks geometryShader, which a fragment shader's gl_PrimitiveID needs");
+    if (blendInCompute_ && !ctx_.caps.fragmentStoresAndAtomics)
+        refuse("lacks fragmentStoresAndAtomics, which the blended fragment lists need; use "
+               "--vis-blended forward");
     // The tiled pass writes per-sample radiance as a multisample storage image.
-    if (hasBlendedDraws() && samples > 1 && !ctx_.caps.storageImageMultisample)
+    if (hasBlended_ && !blendInCompute_ && samples > 1 && !ctx_.caps.storageImageMultisample)
         refuse("lacks shaderStorageImageMultisample, which blended surfaces under --msaa " +
                std::to_string(samples) + " need; use --msaa 1");
 }
@@ -159,6 +200,21 @@ std::vector<DebugImage> VisbufferRenderer::debugImages(FrameGraph& graph) {
     return out;
 }
 
+// The blended fragment lists' counters (--vis-blended compute): what the pool met, held and
+// dropped, and the longest list one pixel composited against the budget its batches assume.
+void VisbufferRenderer::addBlendedListStats(RendererStats& s) const {
+    const double met = blendCounters_[TP_VIS_BLEND_APPENDED];
+    const double pixels = double(vis_.width) * vis_.height;
+    s.counters.push_back({"blended_fragments", met});
+    s.counters.push_back({"blended_fragments_per_pixel", pixels > 0 ? met / pixels : 0.0});
+    s.counters.push_back({"blended_list_capacity", double(lists_.capacity)});
+    s.counters.push_back({"blended_fragments_dropped", double(blendCounters_[TP_VIS_BLEND_DROPPED])});
+    s.counters.push_back(
+        {"blended_fragments_per_pixel_max", double(blendCounters_[TP_VIS_BLEND_MAX_DEPTH])});
+    s.leftOut.push_back({"transparent forward pass and per-sample radiance",
+                         "--vis-blended compute: blended fragments composited in the resolve"});
+}
+
 RendererStats VisbufferRenderer::stats() const {
     RendererStats s;
     const uint32_t samples = vis_.sampling.samples;
@@ -170,6 +226,7 @@ RendererStats VisbufferRenderer::stats() const {
     s.counters.push_back({"lights_per_tile_mean", t.meanLights()});
     s.counters.push_back({"lights_per_tile_max", t.maxLights});
     s.counters.push_back({"tiles_over_shared_capacity", t.overflow}); // shaded in batches
+    s.counters.push_back({"lighting_batches", double(lighting_.batches())});
     s.counters.push_back({"light_candidates", double(lighting_.candidates())});
     if (vis_.assign.binned())
         s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
@@ -183,6 +240,7 @@ RendererStats VisbufferRenderer::stats() const {
                              "no blended material"});
     else
         blended_.addStats(s, tileStats_, lt_.listOffsets);
+    if (blendInCompute_) addBlendedListStats(s);
     if (!vis_.assign.clustered())
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
     if (samples == 1) s.leftOut.push_back({"per-sample ids and edge pixels", "MSAA is 1x"});

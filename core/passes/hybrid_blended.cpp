@@ -51,11 +51,12 @@ ResourceHandle HybridBlended::planBounds(FrameGraph& graph, const la::BlendedBou
 void HybridBlended::planForward(FrameGraph& graph, const BlendedForwardTargets& t,
                                 uint32_t slices) {
     forward_.plan(graph, t, slices, sliceRows_);
+    forwardPlanned_ = true;
 }
 
 void HybridBlended::prepare(FrameGraph& graph, const TiledLighting& lighting) {
     bounds_.prepare(graph);
-    forward_.prepare(graph, lighting.candidatesBuffer(), masks_);
+    if (forwardPlanned_) forward_.prepare(graph, lighting.candidatesBuffer(), masks_);
 }
 
 namespace {

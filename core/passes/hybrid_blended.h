@@ -33,6 +33,8 @@ class HybridBlended {
     // Then, after the pass that writes the opaque depth: the blended depth bounds.
     ResourceHandle planBounds(FrameGraph& graph, const la::BlendedBoundsConfig& config);
     // Last, after tiled lighting: the forward pass over the lists (t.bounds: planBounds's).
+    // Optional: a pipeline that composites blended surfaces itself (the visibility buffer's
+    // --vis-blended compute) uses only the lists and the bounds.
     void planForward(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices);
     void prepare(FrameGraph& graph, const TiledLighting& lighting);
 
@@ -54,6 +56,7 @@ class HybridBlended {
     ResourceHandle sliceRows_;
     uint64_t slots_ = 0;
     bool masks_ = false; // binned: the lists are bitmasks over the candidates
+    bool forwardPlanned_ = false;
 };
 
 // Column `c` of per-tile statistics stored as uvec4 per tile.

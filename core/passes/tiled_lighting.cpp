@@ -205,11 +205,14 @@ void TiledLighting::record(PassContext& pc) {
     const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();
     // Lists only: no shading loop, one dispatch whatever the light count.
     uint32_t batch =
-        listsOnly_ ? std::max(lights, 1u) : tiledLightBatch(t_.grid.tileSize, source_.samples);
+        listsOnly_ ? std::max(lights, 1u)
+                   : tiledLightBatch(t_.grid.tileSize,
+                                     std::max(source_.samples, source_.evaluationsPerPixel));
     // Clustered: the slice bitmasks of a batch fit the shared array (include/tiled_lighting.h).
     if (slices_ > 0 && !listsOnly_)
         batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / slices_);
-    for (uint32_t first = 0; first == 0 || first < lights; first += batch) {
+    batches_ = 0;
+    for (uint32_t first = 0; first == 0 || first < lights; first += batch, ++batches_) {
         if (first > 0) {
             // The next batch adds to hdr and the tile statistics that this one wrote.
             memoryBarrier(

@@ -63,6 +63,9 @@ struct SurfaceSource {
     // Static buffers the reader binds in the pass's set (a visibility buffer's index buffer
     // and draw table): uploaded before any frame, so no barrier is tracked for them.
     std::vector<ExternalBuffer> buffers;
+    // Light evaluations per pixel and batch light the reader may make, when more than
+    // `samples` (the visibility buffer's blended fragments): the batches are sized for it.
+    uint32_t evaluationsPerPixel = 0;
 };
 
 // What the pass writes. Invalid handles are left out: hdrMsaa (per-sample radiance, blended
@@ -103,6 +106,8 @@ class TiledLighting {
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
     bool gpuBinning() const { return gpuBinning_; }
+    // Dispatches the last recorded frame made (one per batch of lights).
+    uint32_t batches() const { return batches_; }
     // The light_candidates buffer (after prepare): binned, the blended pass walks the
     // transparent bitmasks over it (with GPU binning, light_binning's closing barrier makes
     // its runs visible to every later stage).
@@ -118,6 +123,7 @@ class TiledLighting {
     SceneGpu& scene_;
     bool debug_;
     bool binned_ = true;
+    uint32_t batches_ = 0;
     uint32_t slices_ = 0;
     bool gpuBinning_ = false;
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass

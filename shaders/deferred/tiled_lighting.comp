@@ -20,6 +20,8 @@
 //   TP_DEBUG: write the edge mask and decoded G-buffer channels.  TP_HDR16: hdr is RGBA16F.
 //   TP_LISTS_ONLY: only the transparent lists and tile statistics (volumes lighting
 //   shades the opaque surfaces; the hybrid forward pass still needs the lists).
+//   TP_VIS_BLEND (with TP_VISBUFFER and TP_TRANSPARENT): blended fragments composited here
+//   from per-pixel lists (visbuffer/vis_blend.glsl), lit from the transparent lists.
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
@@ -372,19 +374,26 @@ void main() {
     }
 #endif
 #ifndef TP_LISTS_ONLY
-#ifdef TP_TRANSPARENT
+#ifdef TP_VIS_BLEND
+    memoryBarrierBuffer(); // the transparent list, which the blended fragments are lit from
+#elif defined(TP_TRANSPARENT)
     if (kSlices > 0u) memoryBarrierBuffer(); // the transparent list, for writeTransparentSlices
 #endif
     barrier();
     if (kSlices > 0u) {
         markSlices();
-#ifdef TP_TRANSPARENT
+#if defined(TP_TRANSPARENT) && !defined(TP_VIS_BLEND) // no blended pass to read slice rows
         if (firstBatch()) writeTransparentSlices(tile.y * gl_NumWorkGroups.x + tile.x);
 #endif
         barrier();
     }
-    // A later batch with no light in this tile adds nothing (sCount is uniform here).
+    // A later batch with no light in this tile adds nothing (sCount is uniform here), unless
+    // blended fragments composited here may have lights in it.
+#ifdef TP_VIS_BLEND
+    uint shadedPixels = firstBatch() || sCount > 0u || transparentRun(tile).blended.any ? pixelsPerInvocation : 0u;
+#else
     uint shadedPixels = firstBatch() || sCount > 0u ? pixelsPerInvocation : 0u;
+#endif
     for (uint k = 0u; k < shadedPixels; ++k) {
         ivec2 p = pixelOf(tile, k);
         if (!insideViewport(p)) continue;

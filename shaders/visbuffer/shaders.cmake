@@ -30,3 +30,21 @@ foreach(m 0 1 2)
     endforeach()
   endforeach()
 endforeach()
+# --vis-blended compute: the blended fragment lists (the raster pass) and the resolve that
+# composites them (family vis_tiled_blend: never per-sample hdr, always transparent lists).
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_frag)
+foreach(m 0 1)
+  foreach(d 0 1)
+    set(defs TP_VISBUFFER=1 TP_EMISSIVE=0 TP_TRANSPARENT=1 TP_VIS_BLEND=1)
+    if(m)
+      list(APPEND defs TP_MSAA=1)
+    endif()
+    if(d)
+      list(APPEND defs TP_DEBUG=1)
+    endif()
+    triptych_add_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp
+      vis_tiled_blend_m${m}_e0_t1_d${d}_comp DEFINES ${defs})
+    triptych_add_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp
+      vis_tiled_blend_m${m}_e0_t1_d${d}_h16_comp DEFINES ${defs} TP_HDR16=1)
+  endforeach()
+endforeach()

@@ -132,30 +132,48 @@ VisHit intersect(vec3 p0, vec3 p1, vec3 p2, vec2 fc, float depth) {
 // Ambient + emissive of the surface readSurfaceAt evaluated last (ambientEmissive's answer).
 vec3 gVisAmbient = vec3(0.0);
 
-// The surface sample s of pixel p holds (its id's triangle), at framebuffer location p +
-// offset: the triangle's attributes interpolated there and its material evaluated. `depth`
-// is used only for an edge-on triangle.
-SurfaceSample readSurfaceAt(ivec2 p, uint s, vec2 offset, float depth) {
-    uint id = fetchId(p, s);
-    VisDraw d = visDraws[(id >> kTriangleBits) - 1u];
+// A triangle an id names: its draw, its vertices and their camera-relative positions.
+struct VisTriangle {
+    VisDraw draw;
+    Vertex v0, v1, v2;
+    vec3 p0, p1, p2;
+};
+VisTriangle visTriangle(uint id) {
+    VisTriangle t;
+    t.draw = visDraws[(id >> kTriangleBits) - 1u];
     uint triangle = id & ((1u << kTriangleBits) - 1u);
-    Vertex v0 = visVertex(d, triangle, 0u), v1 = visVertex(d, triangle, 1u),
-           v2 = visVertex(d, triangle, 2u);
-    vec3 p0 = relativePosition(v0), p1 = relativePosition(v1), p2 = relativePosition(v2);
-    VisHit h = intersect(p0, p1, p2, vec2(p) + offset, depth);
-    vec2 uv0 = vec2(v0.positionU.w, v0.normalV.w), uv1 = vec2(v1.positionU.w, v1.normalV.w),
-         uv2 = vec2(v2.positionU.w, v2.normalV.w);
+    t.v0 = visVertex(t.draw, triangle, 0u);
+    t.v1 = visVertex(t.draw, triangle, 1u);
+    t.v2 = visVertex(t.draw, triangle, 2u);
+    t.p0 = relativePosition(t.v0);
+    t.p1 = relativePosition(t.v1);
+    t.p2 = relativePosition(t.v2);
+    return t;
+}
+
+// Triangle t's material at framebuffer location fc: its attributes interpolated at the hit
+// there. `depth` is used only for an edge-on triangle.
+MaterialSample readTriangle(VisTriangle t, vec2 fc, float depth) {
+    VisHit h = intersect(t.p0, t.p1, t.p2, fc, depth);
+    vec2 uv0 = vec2(t.v0.positionU.w, t.v0.normalV.w), uv1 = vec2(t.v1.positionU.w, t.v1.normalV.w),
+         uv2 = vec2(t.v2.positionU.w, t.v2.normalV.w);
     gVisUvDx = TP_VIS_LERP(uv0, uv1, uv2, h.bdx);
     gVisUvDy = TP_VIS_LERP(uv0, uv1, uv2, h.bdy);
     gVisPosDx = h.pdx;
     gVisPosDy = h.pdy;
     // Front-facing as the rasterizer decides it (counter-clockwise in the flipped-viewport
     // framebuffer: the triangle winds counter-clockwise as the viewer, at the origin, sees it).
-    bool front = dot(cross(p1 - p0, p2 - p0), p0) < 0.0;
-    MaterialSample ms = evalMaterial(
-        materials[d.material], h.position, TP_VIS_LERP(v0.normalV.xyz, v1.normalV.xyz, v2.normalV.xyz, h.b),
-        TP_VIS_LERP(uv0, uv1, uv2, h.b), TP_VIS_LERP(v0.tangent, v1.tangent, v2.tangent, h.b),
-        TP_VIS_LERP(v0.color, v1.color, v2.color, h.b), front);
+    bool front = dot(cross(t.p1 - t.p0, t.p2 - t.p0), t.p0) < 0.0;
+    return evalMaterial(materials[t.draw.material], h.position,
+                        TP_VIS_LERP(t.v0.normalV.xyz, t.v1.normalV.xyz, t.v2.normalV.xyz, h.b),
+                        TP_VIS_LERP(uv0, uv1, uv2, h.b), TP_VIS_LERP(t.v0.tangent, t.v1.tangent, t.v2.tangent, h.b),
+                        TP_VIS_LERP(t.v0.color, t.v1.color, t.v2.color, h.b), front);
+}
+
+// The surface sample s of pixel p holds (its id's triangle), at framebuffer location p +
+// offset.
+SurfaceSample readSurfaceAt(ivec2 p, uint s, vec2 offset, float depth) {
+    MaterialSample ms = readTriangle(visTriangle(fetchId(p, s)), vec2(p) + offset, depth);
     gVisAmbient = ambientAndEmissive(ms);
     return ms.surface;
 }

@@ -4,10 +4,38 @@
 // pixel, once per distinct triangle at the centre (what a forward pass's fragment does for
 // each primitive covering the pixel, and the centre reference for each sample), reused by
 // every sample of that triangle; at --msaa-shading sample, every sample at its own location.
+// TP_VIS_BLEND (--vis-blended compute): the pixel's blended fragments are composited over its
+// samples before they are averaged (vis_blend.glsl).
 // Returns whether the pixel was an edge.
+#ifdef TP_VIS_BLEND
+#include "visbuffer/vis_blend.glsl"
+#endif
+
+// Samples [0, kSamples) of pixel p, each lit once per distinct triangle (pixel rate) or at
+// its own location (sample rate), into c.
+void shadeSamples(ivec2 p, inout vec3 c[8]) {
+    uint ids[8];
+    for (uint s = 0u; s < kSamples; ++s) {
+        uint id = fetchId(p, s);
+        ids[s] = id;
+        bool reused = false;
+        for (uint t = 0u; !kEverySample && t < s && !reused; ++t) {
+            reused = ids[t] == id;
+            if (reused) c[s] = c[t];
+        }
+        if (!reused)
+            c[s] = id != 0u ? shade(p, s, kEverySample ? sampleOffset(s) : vec2(0.5), fetchDepth(p, s)) : vec3(0.0);
+    }
+}
+
 bool shadePixel(ivec2 p) {
     bool edge = kSamples > 1u && isEdge(p);
-    if (!edge) {
+#ifdef TP_VIS_BLEND
+    const uint head = blendHead(p);
+#else
+    const uint head = 0u;
+#endif
+    if (!edge && head == 0u) {
         uint id = fetchId(p, 0u);
         vec3 c = id != 0u ? shade(p, 0u, vec2(0.5), fetchDepth(p, 0u)) : vec3(0.0);
 #ifdef TP_HDR_MSAA
@@ -17,28 +45,26 @@ bool shadePixel(ivec2 p) {
 #endif
         return false;
     }
-    uint ids[8];
-    vec3 shaded[8];
+    vec3 c[8];
+    if (edge) {
+        shadeSamples(p, c);
+    } else { // one triangle (a blended list on it): shaded once, as above
+        uint id = fetchId(p, 0u);
+        c[0] = id != 0u ? shade(p, 0u, vec2(0.5), fetchDepth(p, 0u)) : vec3(0.0);
+        for (uint s = 1u; s < kSamples; ++s) c[s] = c[0];
+    }
+#ifdef TP_VIS_BLEND
+    if (head != 0u) compositeBlended(p, head, c);
+#endif
     vec3 sum = vec3(0.0);
     for (uint s = 0u; s < kSamples; ++s) {
-        uint id = fetchId(p, s);
-        ids[s] = id;
-        vec3 c = vec3(0.0);
-        bool reused = false;
-        for (uint t = 0u; !kEverySample && t < s && !reused; ++t) {
-            reused = ids[t] == id;
-            if (reused) c = shaded[t];
-        }
-        if (id != 0u && !reused)
-            c = shade(p, s, kEverySample ? sampleOffset(s) : vec2(0.5), fetchDepth(p, s));
-        shaded[s] = c;
 #ifdef TP_HDR_MSAA
-        writeHdr(p, s, c);
+        writeHdr(p, s, c[s]);
 #endif
-        sum += c;
+        sum += c[s];
     }
 #ifndef TP_HDR_MSAA
     writeHdr(p, 0u, sum / float(kSamples));
 #endif
-    return true;
+    return edge;
 }

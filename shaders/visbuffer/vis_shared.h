@@ -33,6 +33,23 @@ TP_STRUCT(VisDraw) {
 #define TP_VIS_BINDING_IDS 0      // sampler (sampler2D / sampler2DMS): packed ids as fp32
 #define TP_VIS_BINDING_INDICES 14 // buffer uint[]: the scene's index buffer
 #define TP_VIS_BINDING_DRAWS 15   // buffer VisDraw[]: the draws the ids name
+#define TP_VIS_BINDING_BLEND_HEADS 16 // buffer uint[pixels]: each pixel's first blended node + 1 (0: none)
+#define TP_VIS_BINDING_BLEND_NODES 17 // buffer uvec2[capacity]: the blended fragments' nodes
+#define TP_VIS_BINDING_BLEND_COUNTERS 18 // buffer uint[TP_VIS_BLEND_COUNTER_WORDS]
+
+// ---- blended fragment lists (--vis-blended compute) ----
+// The blended_ids pass appends one node per blended fragment (a primitive covering a pixel
+// in front of the opaque depth) to its pixel's list: word 0 the fragment's id (the same
+// packing as the visibility ids; blended draws have rows after the opaque and masked ones)
+// with its coverage mask in the top 8 bits, word 1 the next node + 1 (0: end). The counters:
+// fragments met, fragments dropped (the pool was full: counted, never silent), the pool's
+// capacity in nodes, and the most fragments one pixel composited (written by the resolve).
+#define TP_VIS_BLEND_COUNTER_WORDS 4
+#define TP_VIS_BLEND_APPENDED 0
+#define TP_VIS_BLEND_DROPPED 1
+#define TP_VIS_BLEND_CAPACITY 2
+#define TP_VIS_BLEND_MAX_DEPTH 3
+#define TP_VIS_BLEND_COVERAGE_SHIFT 24 // = TP_VIS_ID_BITS: ids below, up to 8 samples above
 
 // ---- specialization constants (ids after deferred's 11..18, which the tiled pass sets) ----
 #define TP_VIS_SPEC_TRIANGLE_BITS 19 // low bits of an id that hold the triangle

@@ -3,7 +3,9 @@
 // 1x tiled and clustered, 4x with every sample shaded against the supersampled reference, 4x
 // at the pixel rate against the centre reference (a pixel shaded once per triangle at its
 // centre is what that reference computes per sample); edges exactly where the ids differ;
-// the ledger's 8 bytes per sample.
+// the ledger's 8 bytes per sample. Blended surfaces both ways (--vis-blended compute, the
+// default, and forward), over several lighting batches, and a pool too small for them
+// counted, not silent.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
 #include "core/render/error_model.h"
+#include "core/render/frame_runner.h"
 #include "core/render/renderer.h"
 #include "core/scene/lights.h"
 #include "gpu_test_util.h"
@@ -147,6 +150,80 @@ TEST(Visbuffer, PixelRateShadesEachTriangleOnceAtTheCentre) {
         EXPECT_LT(count, edges->pixelCount() / 2) << "most pixels hold one triangle";
         EXPECT_DOUBLE_EQ(share, double(count) / double(edges->pixelCount()));
     }
+    expectNoValidationMessages(*ctx);
+}
+
+// Blended surfaces composited in compute and drawn by the hybrid forward pass: each within the
+// bound at 1x, 4x sample rate (supersampled reference) and 4x pixel rate (centre reference),
+// and the compute lists held every fragment the raster pass met.
+TEST(Visbuffer, BlendedSurfacesBothWaysWithinTheBound) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(256, 6);
+    SceneGpu gpuScene(*ctx, scene);
+    RunResult ref = runOrFail(*ctx, gpuScene, "reference", small(1));
+    RunResult ref4 = runOrFail(*ctx, gpuScene, "reference", small(4, "sample"));
+    RenderSettings centre = small(4, "pixel");
+    centre.set("reference-msaa", "center");
+    RunResult refCentre = runOrFail(*ctx, gpuScene, "reference", centre);
+    for (const char* mode : {"compute", "forward"}) {
+        const std::string m = std::string(" --vis-blended ") + mode;
+        auto with = [&](RenderSettings s) {
+            s.set("vis-blended", mode);
+            return s;
+        };
+        RunResult one = runOrFail(*ctx, gpuScene, "visbuffer", with(small(1)));
+        expectWithinBound(*ctx, scene, one, ref, with(small(1)), "1x" + m);
+        expectRunWithinBound(*ctx, gpuScene, scene, ref4, with(small(4, "sample")),
+                             "4x sample rate" + m);
+        expectWithinBound(*ctx, scene,
+                          runOrFail(*ctx, gpuScene, "visbuffer", with(small(4, "pixel"))),
+                          refCentre, with(small(4, "sample")), "4x pixel rate" + m);
+        if (std::string(mode) == "compute") {
+            const double met = counterValue(one, "blended_fragments", -1);
+            EXPECT_GT(met, 0.0) << "the courtyard's glass is on screen";
+            EXPECT_EQ(counterValue(one, "blended_fragments_dropped", -1), 0.0);
+            EXPECT_GE(counterValue(one, "blended_list_capacity"), met);
+        } else {
+            EXPECT_EQ(counterValue(one, "blended_fragments", -1), -1.0) << "no lists";
+        }
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// More lights than one lighting batch holds (--light-cull all: every light a candidate; a
+// batch is 1,638 lights at tile 16 on a CPU device, 4,096 on a GPU): each batch composites its
+// own lights' part, and the sum is the composite of the sums, within the bound.
+TEST(Visbuffer, BlendedLightsAddUpOverLightingBatches) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(5000, 8);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = small(1);
+    s.set("light-cull", "all");
+    RunResult ref = runOrFail(*ctx, gpuScene, "reference", small(1));
+    RunResult vis = runOrFail(*ctx, gpuScene, "visbuffer", s);
+    expectWithinBound(*ctx, scene, vis, ref, s, "5,000 lights in batches");
+    EXPECT_GT(counterValue(vis, "blended_fragments"), 0.0);
+    EXPECT_GE(counterValue(vis, "lighting_batches"), 2.0);
+    expectNoValidationMessages(*ctx);
+}
+
+// A pool smaller than the fragments (1 % of the pixels): each fragment past it is counted,
+// exactly the ones the pool could not take.
+TEST(Visbuffer, AFullFragmentPoolIsCountedNeverSilent) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(4, 6);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = small(1);
+    s.set("vis-blended-capacity", "1");
+    RunResult vis = runOrFail(*ctx, gpuScene, "visbuffer", s);
+    const double met = counterValue(vis, "blended_fragments");
+    const double capacity = counterValue(vis, "blended_list_capacity");
+    EXPECT_EQ(capacity, double(96 * 64 / 100));
+    ASSERT_GT(met, capacity) << "the glass makes more fragments than 1 % of the pixels";
+    EXPECT_EQ(counterValue(vis, "blended_fragments_dropped"), met - capacity);
     expectNoValidationMessages(*ctx);
 }
 

@@ -1,0 +1,100 @@
+#include "visbuffer/blended_ids_pass.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/render/renderer.h"
+#include "core/render/scene_gpu.h"
+#include "visbuffer/vis_shared.h"
+
+namespace tp::vis {
+
+BlendedIdsPass::~BlendedIdsPass() {
+    if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, ResourceHandle depth,
+                                        uint32_t capacityPercent, uint64_t bound) {
+    samples_ = samples;
+    depth_ = depth;
+    const uint64_t pixels = uint64_t(graph.width()) * graph.height();
+    const uint64_t most = ctx_.caps.maxStorageBufferRange / 8;
+    uint64_t capacity = capacityPercent == 0 ? std::min(bound, most)
+                                             : pixels * capacityPercent / 100;
+    capacity = std::max<uint64_t>(capacity, 1);
+    if (capacity > most)
+        throw RendererError("visbuffer: --vis-blended-capacity " + std::to_string(capacityPercent) +
+                            " needs a " + std::to_string(capacity * 8) +
+                            "-byte fragment pool, more than maxStorageBufferRange (" +
+                            std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " +
+                            ctx_.info.name + "; use a lower capacity or --res");
+    t_.capacity = uint32_t(capacity);
+    const std::string sized =
+        capacityPercent == 0
+            ? "the bound of the blended triangles' screen areas" +
+                  std::string(bound > most ? ", clamped to one storage buffer" : "")
+            : "--vis-blended-capacity " + std::to_string(capacityPercent) + "% of the pixels";
+    t_.heads = graph.createBuffer("blended_list_heads", pixels * 4,
+                                  "per pixel: its first blended fragment node + 1 (0: none)");
+    t_.nodes = graph.createBuffer(
+        "blended_list_nodes", capacity * 8,
+        "blended fragments: id and coverage, next node (" + sized + ")");
+    t_.counters =
+        graph.createBuffer("blended_list_counters", TP_VIS_BLEND_COUNTER_WORDS * 4,
+                           "fragments met, dropped, pool capacity, most per pixel");
+    graph.addPass("blended_ids_clear", {{t_.heads, Use::TransferDst}, {t_.counters, Use::TransferDst}},
+                  [this, pixels](PassContext& pc) {
+                      vkCmdFillBuffer(pc.cmd, pc.buffer(t_.heads).buffer, 0, pixels * 4, 0u);
+                      VkBuffer c = pc.buffer(t_.counters).buffer;
+                      // Each word once (two fills of one word would be a write-after-write).
+                      for (uint32_t w = 0; w < TP_VIS_BLEND_COUNTER_WORDS; ++w)
+                          vkCmdFillBuffer(pc.cmd, c, w * 4, 4,
+                                          w == TP_VIS_BLEND_CAPACITY ? t_.capacity : 0u);
+                  });
+    // The nodes need no clear: a node is read only through a head or a node written before it.
+    graph.addPass("blended_ids",
+                  {{depth, Use::DepthTest},
+                   {t_.heads, Use::StorageWrite, TP_VIS_BINDING_BLEND_HEADS},
+                   {t_.nodes, Use::StorageWrite, TP_VIS_BINDING_BLEND_NODES},
+                   {t_.counters, Use::StorageWrite, TP_VIS_BINDING_BLEND_COUNTERS}},
+                  [this](PassContext& pc) { record(pc); });
+    return t_;
+}
+
+void BlendedIdsPass::prepare(FrameGraph& graph) {
+    set_ = graph.createPassSet("blended_ids");
+    layout_ = scene_.createPipelineLayout(set_.layout);
+    GraphicsPipelineDesc d;
+    // No material here: scene.vert's position-only variant (the same gl_Position).
+    d.vertexShader = "scene_position_vert";
+    d.fragmentShader = "vis_blended_ids_frag";
+    d.specConstants = scene_.specConstants(AlphaMode::Blend);
+    d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
+    d.specConstants.push_back({TP_SPEC_SAMPLES, samples_});
+    d.samples = VkSampleCountFlagBits(samples_);
+    d.depthWrite = false;
+    d.depthCompare = VK_COMPARE_OP_GREATER; // in front of the opaque depth, as the reference's blend
+    d.layout = layout_;
+    d.passSet = &set_;
+    pipeline_ = createGraphicsPipeline(ctx_, d);
+}
+
+void BlendedIdsPass::record(PassContext& pc) {
+    DepthTarget depth{depth_, {}, false, true};
+    beginRendering(pc, {}, depth);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
+                            &set_.set, 0, nullptr);
+    scene_.bindIndexBuffer(pc.cmd);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    for (const TableDraw& t : table_.blended)
+        recordDraw(pc.cmd, layout_, *t.item, t.row); // the row in the push constant's pad0
+    endRendering(pc);
+}
+
+} // namespace tp::vis
