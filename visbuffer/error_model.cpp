@@ -69,7 +69,8 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     // (lod_allowance.h); the two allowances add per pixel.
     if (in.referenceDepth) {
         ImageR32 allowance =
-            positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits);
+            positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits,
+                                       in.settings.msaa);
         const ImageR32 lod =
             vis::textureLodAllowance(in.scene, *in.referenceDepth, in.referenceHdr);
         for (size_t i = 0; i < allowance.r.size(); ++i)

@@ -38,7 +38,10 @@ AllowanceCheck errorBeyondAllowance(const ErrorBound& bound, const ImageRGBA& pi
             }
             const double explained =
                 d > 0 ? double(hi[c]) - double(tr[c]) : double(tr[c]) - double(lo[c]);
-            out.worstBeyond = std::max(out.worstBeyond, std::abs(d) - explained);
+            if (std::abs(d) - explained > out.worstBeyond) {
+                out.worstBeyond = std::abs(d) - explained;
+                out.worstPixel = i;
+            }
         }
     }
     return out;

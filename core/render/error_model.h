@@ -60,6 +60,7 @@ struct AllowanceCheck {
     double worstBeyond = 0;
     uint64_t widenedPixels = 0;   // allowance > 0: the limit there was widened
     uint64_t unboundedPixels = 0; // allowance +Inf: nothing is checked there
+    size_t worstPixel = 0;        // where worstBeyond is (row-major), for a failure's message
 };
 
 // `pipeline` and `reference` are HDR images of the same size, tonemapped at `ev` here. With

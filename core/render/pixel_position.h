@@ -18,5 +18,12 @@ glm::dmat4 inverseShadingViewProjection(const Camera& camera, uint32_t width, ui
 // `depth`, with `inverse` from inverseShadingViewProjection.
 glm::dvec3 pixelCentrePosition(const glm::dmat4& inverse, uint32_t width, uint32_t height,
                                uint32_t x, uint32_t y, double depth);
+// The same at framebuffer location (fx, fy) in pixels (pixel (x, y)'s centre is x + 0.5, y + 0.5).
+glm::dvec3 framebufferPosition(const glm::dmat4& inverse, uint32_t width, uint32_t height,
+                               double fx, double fy, double depth);
+
+// Sample s of `samples` (2, 4 or 8; else the centre) at Vulkan's standard sample locations,
+// from the pixel's corner: the table shaders/include/sample_locations.glsl holds.
+glm::dvec2 standardSampleOffset(uint32_t samples, uint32_t s);
 
 } // namespace tp

@@ -182,12 +182,11 @@ std::vector<glm::dvec3> pixelPositions(const Camera& cam, const ImageR32& depth)
 
 namespace {
 
-// The view-angle buckets [first, last] a pixel's surface may be in: from the normal of its
-// neighbours' positions (the closer neighbour on each axis); every bucket where that is not
-// clear (sky next to it, or the two neighbours of an axis disagree: a depth edge).
-std::pair<int, int> viewBuckets(const std::vector<glm::dvec3>& pos, const ImageR32& depth,
-                                uint32_t x, uint32_t y) {
-    const std::pair<int, int> all{0, kViewBuckets - 1};
+// The surface of pixel (x, y) as its neighbours' positions span it: the step to the closer
+// neighbour on each axis. False where that is not clear (sky next to it, or the two
+// neighbours of an axis disagree: a depth edge).
+bool neighbourAxes(const std::vector<glm::dvec3>& pos, const ImageR32& depth, uint32_t x,
+                   uint32_t y, glm::dvec3& dx, glm::dvec3& dy) {
     auto at = [&](int xx, int yy) -> const glm::dvec3* {
         if (xx < 0 || yy < 0 || xx >= int(depth.width) || yy >= int(depth.height)) return nullptr;
         const glm::dvec3& q = pos[size_t(yy) * depth.width + size_t(xx)];
@@ -203,8 +202,17 @@ std::pair<int, int> viewBuckets(const std::vector<glm::dvec3>& pos, const ImageR
         d = la < lb ? da : db;
         return true;
     };
+    return axis(1, 0, dx) && axis(0, 1, dy);
+}
+
+// The view-angle buckets [first, last] a pixel's surface may be in: from the normal of its
+// neighbours' positions (neighbourAxes); every bucket where that is not clear.
+std::pair<int, int> viewBuckets(const std::vector<glm::dvec3>& pos, const ImageR32& depth,
+                                uint32_t x, uint32_t y) {
+    const std::pair<int, int> all{0, kViewBuckets - 1};
     glm::dvec3 dx, dy;
-    if (!axis(1, 0, dx) || !axis(0, 1, dy)) return all;
+    if (!neighbourAxes(pos, depth, x, y, dx, dy)) return all;
+    const glm::dvec3 p = pos[size_t(y) * depth.width + x];
     const glm::dvec3 n = glm::cross(dx, dy);
     if (!(glm::length(n) > 0.0)) return all;
     const double cosV = std::abs(glm::dot(glm::normalize(n), glm::normalize(p)));
@@ -251,34 +259,49 @@ SplitLights splitLights(const Scene& scene) {
 } // namespace
 
 ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
-                                    uint32_t subPixelBits) {
+                                    uint32_t subPixelBits, uint32_t samples) {
     ImageR32 out{depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)};
     const Camera& cam = scene.camera;
     const glm::dmat4 view = viewRotation(cam);
+    const glm::dmat4 inverse = inverseShadingViewProjection(cam, depth.width, depth.height);
     const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
     const double epsPixels = snappedPositionPixels(subPixelBits);
     const std::vector<BrdfLimits> limits = brdfLimits(scene);
     const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
-
     const SplitLights lights = splitLights(scene);
-    const double directional = lights.directional;
-    const std::vector<LocalLight>& locals = lights.locals;
+    // The allowance of a shaded point p (camera-relative) on a surface with BRDF limits b.
+    auto allowanceAt = [&](const glm::dvec3& p, const BrdfLimits& b) {
+        const double viewDepth = -(view * glm::dvec4(p, 1.0)).z;
+        const double eps = epsPixels * pixelPerDepth * viewDepth;
+        const double eyeDistance = glm::length(p);
+        // Directional lights: only the view direction moves (by eps / eyeDistance).
+        double allowance = lights.directional * b.lipschitz * eps / eyeDistance;
+        for (const LocalLight& l : lights.locals) {
+            const double d = glm::length(p - l.position);
+            if (d >= double(l.light->range) + 1.01 * eps) continue;
+            allowance += l.strength * eps * lightGradientBound(*l.light, d, eps, eyeDistance, b);
+        }
+        return allowance;
+    };
     for (uint32_t y = 0; y < depth.height; ++y)
         for (uint32_t x = 0; x < depth.width; ++x) {
             const size_t i = size_t(y) * depth.width + x;
             const glm::dvec3 p = pos[i];
             if (std::isnan(p.x)) continue; // sky
             const BrdfLimits b = limitsIn(limits, viewBuckets(pos, depth, x, y));
-            const double viewDepth = -(view * glm::dvec4(p, 1.0)).z;
-            const double eps = epsPixels * pixelPerDepth * viewDepth;
-            const double eyeDistance = glm::length(p);
-            // Directional lights: only the view direction moves (by eps / eyeDistance).
-            double allowance = directional * b.lipschitz * eps / eyeDistance;
-            for (const LocalLight& l : locals) {
-                const double d = glm::length(p - l.position);
-                if (d >= double(l.light->range) + 1.01 * eps) continue;
-                allowance +=
-                    l.strength * eps * lightGradientBound(*l.light, d, eps, eyeDistance, b);
+            double allowance = allowanceAt(p, b);
+            // Under MSAA each sample is shaded at its own point: where the sample's ray meets
+            // the plane the neighbours span (a light may reach a sample and no pixel centre).
+            glm::dvec3 ax, ay;
+            if (samples > 1 && neighbourAxes(pos, depth, x, y, ax, ay)) {
+                const glm::dvec3 n = glm::cross(ax, ay);
+                for (uint32_t s = 0; s < samples; ++s) {
+                    const glm::dvec2 o = standardSampleOffset(samples, s);
+                    const glm::dvec3 dir =
+                        framebufferPosition(inverse, depth.width, depth.height, x + o.x, y + o.y, 1.0);
+                    const double t = glm::dot(n, p) / glm::dot(n, dir);
+                    if (std::isfinite(t) && t > 0) allowance = std::max(allowance, allowanceAt(t * dir, b));
+                }
             }
             out.r[i] = float(allowance);
         }

@@ -42,8 +42,10 @@ std::vector<BrdfLimits> brdfLimits(const Scene& scene);
 // with the scene's camera: 0 where the pixel has no geometry; directional lights add their
 // (small) view-direction term everywhere; +Inf where a local light may lie within 1.01 eps of
 // the shaded point (nothing is bounded there).
+// samples > 1: also at each standard sample location of the pixel, on the plane its
+// neighbours span (the largest), for a pipeline that shades each sample at its own point.
 ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
-                                    uint32_t subPixelBits);
+                                    uint32_t subPixelBits, uint32_t samples = 1);
 
 // Camera-relative position of every pixel centre from a reverse-Z depth (NaN: sky).
 std::vector<glm::dvec3> pixelPositions(const Camera& cam, const ImageR32& depth);

@@ -68,7 +68,14 @@ void expectWithinBound(GpuContext& ctx, const Scene& scene, const RunResult& run
                 (unsigned long long)checked.widenedPixels,
                 relative.empty() ? 0.0 : relative[relative.size() / 2]);
     EXPECT_EQ(checked.unboundedPixels, 0u);
-    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev));
+    const size_t w = checked.worstPixel;
+    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev))
+        << "at pixel (" << w % ref.hdr.width << ", " << w / ref.hdr.width << "): visbuffer "
+        << run.hdr.rgba[w * 4] << " " << run.hdr.rgba[w * 4 + 1] << " " << run.hdr.rgba[w * 4 + 2]
+        << ", reference " << ref.hdr.rgba[w * 4] << " " << ref.hdr.rgba[w * 4 + 1] << " "
+        << ref.hdr.rgba[w * 4 + 2] << ", allowance "
+        << (bound.perPixel.radiance.r.size() > w ? bound.perPixel.radiance.r[w] : 0.0f)
+        << ", depth " << ref.depth.r[w];
 }
 
 // Runs the visbuffer with `s` and checks it against `ref` with the model of the same settings.
