@@ -11,6 +11,7 @@
 
 #include "compare/commands.h"
 #include "compare/compare.h"
+#include "compare/reference_cache.h"
 #include "compare/report_html.h"
 #include "compare/report_json.h"
 #include "core/image/difference.h"
@@ -77,15 +78,26 @@ PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& n
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
+    const RunOptions ro = progressRunOptions(name, r.options->warmup, r.options->frames);
     Result<RunResult> result =
-        tryRunRenderer(ctx, scene, *entry, r.features, r.settings,
-                       progressRunOptions(name, r.options->warmup, r.options->frames));
+        name == kReferenceRenderer
+            ? runReferenceCached(ctx, scene, r.features, r.settings, ro,
+                                 referenceCacheDir(r.options->referenceCache,
+                                                   r.options->noReferenceCache),
+                                 p.cache)
+            : tryRunRenderer(ctx, scene, *entry, r.features, r.settings, ro);
+    if (!p.cache.note.empty())
+        std::fprintf(stderr, "triptych: warning: reference cache: %s\n", p.cache.note.c_str());
     if (result)
         p.run = std::move(*result);
     else
         p.error = result.error();
     std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    if (p.run)
+    if (p.run && p.cache.reused)
+        std::fprintf(stderr, "triptych: %s %s reused from the cache (%s, rendered %s) in %.1f s\n",
+                     label.c_str(), name.c_str(), p.cache.entry.c_str(),
+                     p.cache.renderedAt.c_str(), took.count());
+    else if (p.run)
         std::fprintf(stderr, "triptych: %s %s done in %.1f s\n", label.c_str(), name.c_str(),
                      took.count());
     else
@@ -373,6 +385,7 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
                   "reference render) and "
                   "the error against it");
     addFlipDistanceOption(*cmd, o->flipDistance);
+    addReferenceCacheOptions(*cmd, o->referenceCache, o->noReferenceCache);
     addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "compare/reference_cache.h"
 #include "compare/commands.h"
 #include "compare/report_json.h"
 #include "compare/run_json.h"
@@ -154,9 +155,27 @@ struct Progress {
     }
 };
 
+// The reference's frames (timed, no warm-up, with progress) or a pipeline's.
+RunOptions sweepRunOptions(const SweepOptions& o, bool reference) {
+    if (reference) return progressRunOptions(kReferenceRenderer, 0, o.referenceFrames);
+    RunOptions ro;
+    ro.warmupFrames = uint32_t(o.warmup);
+    ro.timedFrames = uint32_t(o.frames);
+    return ro;
+}
+
+// A run; the reference's through the reference cache (`cache` says how it went).
 Result<RunResult> runOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
                          const SceneFeatures& features, const RenderSettings& s,
-                         const RunOptions& ro) {
+                         const RunOptions& ro, const SweepOptions& o, ReferenceCacheUse& cache) {
+    if (name == kReferenceRenderer) {
+        Result<RunResult> r = runReferenceCached(
+            ctx, scene, features, s, ro, referenceCacheDir(o.referenceCache, o.noReferenceCache),
+            cache);
+        if (!cache.note.empty())
+            std::fprintf(stderr, "triptych: warning: reference cache: %s\n", cache.note.c_str());
+        return r;
+    }
     return tryRunRenderer(ctx, scene, **findRenderer(name), features, s, ro);
 }
 
@@ -167,7 +186,8 @@ std::optional<RunResult> centerReference(const SweepOptions& o, GpuContext& ctx,
                                          const RunOptions& ro) {
     if (s.msaa == 1 || !o.centerReference) return std::nullopt;
     s.set("reference-msaa", "center");
-    Result<RunResult> r = runOne(ctx, scene, kReferenceRenderer, features, s, ro);
+    ReferenceCacheUse cache;
+    Result<RunResult> r = runOne(ctx, scene, kReferenceRenderer, features, s, ro, o, cache);
     if (!r) return std::nullopt;
     return std::move(*r);
 }
@@ -288,21 +308,18 @@ int runSweep(const SweepOptions& o) {
             for (const std::string& name : names)
                 for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
                     const bool isRef = name == kReferenceRenderer;
-                    RunOptions ro =
-                        isRef ? progressRunOptions(kReferenceRenderer, 0, o.referenceFrames)
-                              : RunOptions{};
-                    if (!isRef) {
-                        ro.warmupFrames = uint32_t(o.warmup);
-                        ro.timedFrames = uint32_t(o.frames);
-                    }
+                    const RunOptions ro = sweepRunOptions(o, isRef);
                     auto start = Clock::now();
-                    Result<RunResult> result = runOne(*ctx, gpuScene, name, features, s, ro);
+                    ReferenceCacheUse cache;
+                    Result<RunResult> result =
+                        runOne(*ctx, gpuScene, name, features, s, ro, o, cache);
                     if (isRef && result)
                         setReference(ref, result.value(), o, *ctx, gpuScene, features, s, ro);
                     rows.push_back(measureRun(name, lights, s, result, ref, *ctx));
                     rows.back().seconds =
                         std::chrono::duration<double>(Clock::now() - start).count();
                     rows.back().lightsHash = lightsHash;
+                    if (isRef) rows.back().referenceCache = referenceCacheJson(cache);
                     progress.report(rows.back(), view.text);
                 }
         }

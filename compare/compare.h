@@ -25,6 +25,10 @@ struct CompareOptions {
     // Under MSAA: also render the reference with --reference-msaa center and measure every
     // pipeline against it (one more reference render; --no-center-reference turns it off).
     bool centerReference = true;
+    // The reference cache's folder (compare/reference_cache.h): --reference-cache DIR, the
+    // user's cache folder by default; --no-reference-cache turns it off.
+    std::string referenceCache;
+    bool noReferenceCache = false;
     std::vector<std::string> commandLine; // recorded in report.json
 };
 

@@ -23,6 +23,7 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
         return j;
     }
     j["run"] = runJson(*p.run, ctx);
+    if (isReference) j["cache"] = referenceCacheJson(p.cache);
     // Pipelines that cannot drop a light do not count drops: 0 for them.
     j["lights_dropped"] = counterValue(*p.run, "lights_dropped");
     if (!isReference) {
@@ -46,6 +47,7 @@ nlohmann::json centerReferenceJson(const CompareRecord& r) {
     if (!c.run) return {{"rendered", false}, {"why", "failed: " + c.error}};
     nlohmann::json j = {{"rendered", true}, {"knob", "reference-msaa center"}, {"files", c.files}};
     j["run"] = runJson(*c.run, *r.ctx);
+    j["cache"] = referenceCacheJson(c.cache);
     j["error_vs_reference"] = {{"hdr", metricsJson(c.hdr)}, {"tonemapped", metricsJson(c.display)}};
     j["meaning"] = "error against the supersampled reference = total; against the centre reference "
                    "= the method "

@@ -9,6 +9,7 @@
 
 #include "compare/compare.h"
 #include "compare/flip_measure.h"
+#include "compare/reference_cache.h"
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"
 #include "core/image/difference.h"
@@ -29,6 +30,7 @@ struct PipelineOutcome {
     std::vector<std::string> files; // written into --out, relative names
     // Under MSAA, against the reference shaded at the pixel centre (--reference-msaa center).
     std::optional<ErrorReport> hdrVsCenter, displayVsCenter;
+    ReferenceCacheUse cache; // the reference runs: whether the cache gave or took the run
 };
 
 struct PairOutcome {

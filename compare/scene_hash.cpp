@@ -16,37 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Fnv1a64 {
-  public:
-    void bytes(const void* data, size_t n) {
-        const auto* p = static_cast<const uint8_t*>(data);
-        for (size_t i = 0; i < n; ++i) {
-            h_ ^= p[i];
-            h_ *= 1099511628211ull;
-        }
-    }
-    // Length first, so ("ab","c") and ("a","bc") differ.
-    void text(const std::string& s) {
-        u64(s.size());
-        bytes(s.data(), s.size());
-    }
-    void u64(uint64_t v) { bytes(&v, sizeof v); }
-    void f32(float v) { bytes(&v, sizeof v); }
-    // Arrays of floats / integers / glm vectors (tightly packed, no padding).
-    template <class T> void array(const std::vector<T>& v) {
-        u64(v.size());
-        bytes(v.data(), v.size() * sizeof(T));
-    }
-    std::string hex() const {
-        char out[17];
-        std::snprintf(out, sizeof out, "%016llx", (unsigned long long)h_);
-        return out;
-    }
-
-  private:
-    uint64_t h_ = 1469598103934665603ull; // offset basis
-};
-
 std::string readAll(const fs::path& path, bool& ok) {
     std::ifstream in(path, std::ios::binary);
     ok = bool(in);

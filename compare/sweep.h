@@ -27,6 +27,8 @@ struct SweepOptions {
     // Under MSAA, the reference also with --reference-msaa center (as many frames), and the
     // error against it beside the error against the supersampled one.
     bool centerReference = true;
+    std::string referenceCache; // --reference-cache (compare/reference_cache.h)
+    bool noReferenceCache = false;
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
 

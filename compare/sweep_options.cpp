@@ -1,6 +1,7 @@
 // The options of `triptych sweep`: lists where the sweep varies a setting, single values
 // where it does not. Each help text says what the option does, which pipelines read it
 // and its default; the knob options come from the registered renderers' schemas.
+#include "compare/reference_cache.h"
 #include "compare/sweep.h"
 
 #include "compare/flip_measure.h"
@@ -40,6 +41,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
     addFlipDistanceOption(cmd, o.flipDistance);
+    addReferenceCacheOptions(cmd, o.referenceCache, o.noReferenceCache);
     cmd.add_flag("--no-center-reference{false}", o.centerReference,
                  "Under MSAA, skip the second reference (--reference-msaa center, one more "
                  "reference render per light "

@@ -83,6 +83,7 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
                             {"settings", settingsJson(r.s)},
                             {"status", r.status},
                             {"wall_seconds", r.seconds}};
+        if (!r.referenceCache.is_null()) j["reference_cache"] = r.referenceCache;
         if (r.status != "ok")
             j["error"] = r.error;
         else {

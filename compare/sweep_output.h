@@ -29,6 +29,7 @@ struct SweepRow {
     float exposureEv = 0, hdrPsnrPeak = 1;
     nlohmann::json run; // runJson(): every pass, the ledger, counters, left-out
     std::string lightsHash;
+    nlohmann::json referenceCache; // reference rows: where the run came from (reference_cache.h)
 };
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device);

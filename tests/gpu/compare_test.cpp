@@ -229,12 +229,14 @@ json withoutTimings(json r) {
 }
 
 // The same command on the same device: identical images (byte for byte) and an identical
-// report but for the timings; the report names the scene by hashes of its data.
+// report but for the timings; the report names the scene by hashes of its data. Both render
+// their reference (--no-reference-cache): the second would otherwise read the first's.
 TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
     std::vector<std::string> dirs = {freshDir("repeat_a"), freshDir("repeat_b")};
     for (const std::string& out : dirs)
         ASSERT_EQ(runCli({"builtin:courtyard-small", "--res", "96x54", "--lights", "16", "--seed",
-                          "5", "--frames", "2", "--warmup", "0", "--out", out}),
+                          "5", "--frames", "2", "--warmup", "0", "--no-reference-cache", "--out",
+                          out}),
                   0);
     json a = json::parse(readText(dirs[0] + "/report.json"));
     json b = json::parse(readText(dirs[1] + "/report.json"));
