@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
         std::vector<tp::cli::CommandRunner> commands = {
             tp::cli::addCompareCommand(app, std::vector<std::string>(argv, argv + argc)),
             tp::cli::addSweepCommand(app, std::vector<std::string>(argv, argv + argc)),
+            tp::cli::addMergeCommand(app),
             tp::cli::addStressCommand(app, std::vector<std::string>(argv, argv + argc)),
             tp::cli::addRenderCommand(app),
             tp::cli::addInfoCommand(app),

@@ -134,6 +134,12 @@ struct Progress {
     double referenceSeconds = 0, pipelineSeconds = 0;
     Clock::time_point start = Clock::now();
 
+    // Under --shard: about 1/N of the runs and references are this process's.
+    void shard(const Shard& s) {
+        total = (total + s.count - 1 - s.index) / s.count;
+        references = std::min(total, (references + s.count - 1) / s.count);
+    }
+
     void report(const SweepRow& row, const std::string& resText) {
         ++done;
         bool isRef = row.pipeline == kReferenceRenderer;
@@ -232,6 +238,22 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const Came
     return j;
 }
 
+} // namespace
+
+std::string sweepId(nlohmann::json header) {
+    const std::string device = header["device"].value("name", "");
+    for (const char* k : {"command", "command_line", "device", "validation_messages",
+                          "sweep_id_fnv1a64", "merged_from"})
+        header.erase(k);
+    header["shard"].erase("index");
+    Fnv1a64 h;
+    h.text(device);
+    h.text(header.dump());
+    return h.hex();
+}
+
+namespace {
+
 void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows,
                   const std::vector<std::string>& names, const nlohmann::json& header,
                   const std::string& device) {
@@ -261,6 +283,50 @@ void setReference(Reference& ref, const RunResult& run, const SweepOptions& o, G
             : centerReference(o, ctx, scene, features, s, ro);
 }
 
+// One (light count, view) of the sweep: the reference, then every pipeline's knob
+// combinations, each run numbered in the whole sweep's order. Under --shard a run is made when
+// the shard owns its number, and the reference whenever the shard owns any run of the group
+// (its rows are measured against it; from the cache when another shard stored it first).
+struct GroupRunner {
+    const SweepOptions& o;
+    GpuContext& ctx;
+    const std::vector<std::string>& names;
+    Shard shard;
+    Progress& progress;
+    std::vector<SweepRow>& rows;
+    size_t index = 0; // the next run's number
+
+    void run(SceneGpu& gpuScene, int lights, const std::string& lightsHash, const View& view) {
+        std::vector<std::pair<std::string, RenderSettings>> runs;
+        for (const std::string& name : names)
+            for (const RenderSettings& s : knobCombos(name, o, view.settings))
+                runs.push_back({name, s});
+        bool any = false;
+        for (size_t k = 0; k < runs.size(); ++k)
+            any = any || shard.owns(index + k);
+        const SceneFeatures features = analyzeScene(gpuScene.scene(), view.settings.msaa);
+        Reference ref;
+        for (size_t k = 0; k < runs.size(); ++k, ++index) {
+            const auto& [name, s] = runs[k];
+            const bool isRef = name == kReferenceRenderer, owned = shard.owns(index);
+            if (!any || (!owned && !isRef)) continue;
+            const RunOptions ro = sweepRunOptions(o, isRef);
+            auto start = Clock::now();
+            ReferenceCacheUse cache;
+            Result<RunResult> result = runOne(ctx, gpuScene, name, features, s, ro, o, cache);
+            if (isRef && result) setReference(ref, result.value(), o, ctx, gpuScene, features, s, ro);
+            if (!owned) continue; // another shard's row: its figures are that shard's
+            rows.push_back(measureRun(name, lights, s, result, ref, ctx));
+            SweepRow& row = rows.back();
+            row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            row.lightsHash = lightsHash;
+            row.runIndex = index;
+            if (isRef) row.referenceCache = referenceCacheJson(cache);
+            progress.report(row, view.text);
+        }
+    }
+};
+
 } // namespace
 
 int runSweep(const SweepOptions& o) {
@@ -288,42 +354,27 @@ int runSweep(const SweepOptions& o) {
             progress.total += knobCombos(n, o, view.settings).size();
     progress.total *= lightCounts.size();
     progress.references = o.referenceFrames > 0 ? lightCounts.size() * views.size() : 0;
+    const Shard shard = parseShard(o.shard);
+    progress.shard(shard);
     ensureDirectory(o.out);
     for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"})
         std::remove((o.out + "/" + f).c_str());
 
     std::vector<SweepRow> rows;
     nlohmann::json header;
+    GroupRunner group{o, *ctx, names, shard, progress, rows};
     for (int lights : lightCounts) {
         SceneOptions so = o.scene;
         so.lightCount = lights;
         CameraSource camera;
         Scene scene = loadScene(so, &camera);
         if (header.is_null()) header = sweepHeader(o, scene, camera, *ctx);
-        const std::string lightsHash = hashLights(scene.lights);
         SceneGpu gpuScene(*ctx, scene);
-        for (const View& view : views) {
-            SceneFeatures features = analyzeScene(scene, view.settings.msaa);
-            Reference ref;
-            for (const std::string& name : names)
-                for (const RenderSettings& s : knobCombos(name, o, view.settings)) {
-                    const bool isRef = name == kReferenceRenderer;
-                    const RunOptions ro = sweepRunOptions(o, isRef);
-                    auto start = Clock::now();
-                    ReferenceCacheUse cache;
-                    Result<RunResult> result =
-                        runOne(*ctx, gpuScene, name, features, s, ro, o, cache);
-                    if (isRef && result)
-                        setReference(ref, result.value(), o, *ctx, gpuScene, features, s, ro);
-                    rows.push_back(measureRun(name, lights, s, result, ref, *ctx));
-                    rows.back().seconds =
-                        std::chrono::duration<double>(Clock::now() - start).count();
-                    rows.back().lightsHash = lightsHash;
-                    if (isRef) rows.back().referenceCache = referenceCacheJson(cache);
-                    progress.report(rows.back(), view.text);
-                }
-        }
+        for (const View& view : views)
+            group.run(gpuScene, lights, hashLights(scene.lights), view);
     }
+    header["shard"] = {{"index", shard.index}, {"count", shard.count}, {"runs", group.index}};
+    header["sweep_id_fnv1a64"] = sweepId(header);
     const std::vector<std::string> validation = ctx->validationMessages();
     header["validation_messages"] = validation;
     writeOutputs(o, rows, names, header, ctx->info.name);

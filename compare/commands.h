@@ -16,5 +16,7 @@ CommandRunner addInfoCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLine);
 CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLine);
+// triptych merge: the shards of one `sweep --shard K/N` into the whole sweep's files.
+CommandRunner addMergeCommand(CLI::App& app);
 
 } // namespace tp::cli

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "compare/cli_common.h"
 
 namespace tp::cli {
@@ -29,8 +31,27 @@ struct SweepOptions {
     bool centerReference = true;
     std::string referenceCache; // --reference-cache (compare/reference_cache.h)
     bool noReferenceCache = false;
+    // --shard K/N: only the runs whose index in the unsharded order is K modulo N (0 <= K < N);
+    // `triptych merge` puts the shards back together (docs/scale-out.md).
+    std::string shard;
     std::vector<std::string> commandLine; // recorded in sweep.json
 };
+
+// A sweep's shard: runs i with i % count == index.
+struct Shard {
+    uint32_t index = 0, count = 1;
+    bool owns(size_t run) const { return run % count == index; }
+};
+// "K/N" (empty: the whole sweep, 0/1); UsageError naming --shard otherwise.
+Shard parseShard(const std::string& text);
+// What makes shards one sweep (sweep.json's sweep_id_fnv1a64): the device's name and the
+// header but for what differs between shards (command line, --out, --device, the shard's
+// index, validation messages).
+std::string sweepId(nlohmann::json header);
+
+// triptych merge (compare/cmd_merge.cpp): the shards' output folders into `out`. Exit code 0,
+// or 5 when a run failed; UsageError (one line) for shards that are not one whole sweep.
+int runMerge(const std::vector<std::string>& dirs, const std::string& out);
 
 // The sweep's options and their help texts.
 void addSweepOptions(CLI::App& cmd, SweepOptions& o);

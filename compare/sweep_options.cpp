@@ -8,6 +8,24 @@
 
 namespace tp::cli {
 
+Shard parseShard(const std::string& text) {
+    if (text.empty()) return {};
+    const size_t slash = text.find('/');
+    auto bad = [&](const std::string& why) {
+        return UsageError("--shard " + text + ": " + why + " (K/N with 0 <= K < N, e.g. 0/4)");
+    };
+    if (slash == std::string::npos) throw bad("no '/'");
+    auto number = [&](const std::string& s) {
+        if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos)
+            throw bad("'" + s + "' is not a whole number");
+        return uint32_t(std::stoul(s));
+    };
+    Shard shard{number(text.substr(0, slash)), number(text.substr(slash + 1))};
+    if (shard.count == 0) throw bad("N must be at least 1");
+    if (shard.index >= shard.count) throw bad("K must be below N");
+    return shard;
+}
+
 void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
     cmd.add_option(
         "scene", o.scene.scene,
@@ -42,6 +60,11 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
         ->capture_default_str();
     addFlipDistanceOption(cmd, o.flipDistance);
     addReferenceCacheOptions(cmd, o.referenceCache, o.noReferenceCache);
+    cmd.add_option("--shard", o.shard,
+                   "K/N: run only the runs whose index in the whole sweep's order is K modulo N "
+                   "(0 <= K < N), for one of N processes, GPUs or cluster jobs; 'triptych merge' "
+                   "combines the N outputs into the sweep.csv, sweep.json and sweep.html of the "
+                   "whole sweep (docs/scale-out.md)");
     cmd.add_flag("--no-center-reference{false}", o.centerReference,
                  "Under MSAA, skip the second reference (--reference-msaa center, one more "
                  "reference render per light "

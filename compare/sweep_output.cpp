@@ -82,7 +82,8 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
                             {"lights_hash_fnv1a64", r.lightsHash},
                             {"settings", settingsJson(r.s)},
                             {"status", r.status},
-                            {"wall_seconds", r.seconds}};
+                            {"wall_seconds", r.seconds},
+                            {"run_index", r.runIndex}};
         if (!r.referenceCache.is_null()) j["reference_cache"] = r.referenceCache;
         if (r.status != "ok")
             j["error"] = r.error;

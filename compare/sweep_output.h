@@ -30,6 +30,7 @@ struct SweepRow {
     nlohmann::json run; // runJson(): every pass, the ledger, counters, left-out
     std::string lightsHash;
     nlohmann::json referenceCache; // reference rows: where the run came from (reference_cache.h)
+    size_t runIndex = 0;           // in the unsharded sweep's order (sweep.json: run_index)
 };
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device);

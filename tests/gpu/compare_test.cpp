@@ -311,6 +311,51 @@ int runSweepCli(std::vector<std::string> args) {
     return runner();
 }
 
+// --shard K/N and merge: three shards of a sweep (each a third of the runs, the reference
+// where its rows land or read from the cache), merged in any order, give the unsharded
+// sweep's rows in its order, every column but the frame timings equal, and its sweep id;
+// shards of another sweep, a missing one and a repeated one are refused with one line.
+TEST(Compare, ShardedAndMergedSweepEqualsTheWholeSweep) {
+    const std::string base = freshDir("shards");
+    const std::vector<std::string> args = {
+        "builtin:courtyard-small", "--res", "64x36", "--lights", "4,8", "--msaa", "1,4",
+        "--tile", "8,16", "--pipelines", "forwardplus,deferred", "--frames", "1", "--warmup",
+        "0", "--reference-cache", base + "/cache"};
+    auto sweep = [&](const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> a = args;
+        a.insert(a.end(), extra.begin(), extra.end());
+        a.insert(a.end(), {"--out", base + "/" + out});
+        return runSweepCli(a);
+    };
+    ASSERT_EQ(sweep("whole", {}), 0);
+    for (int k : {2, 0, 1})
+        ASSERT_EQ(sweep("s" + std::to_string(k), {"--shard", std::to_string(k) + "/3"}), 0);
+    ASSERT_EQ(cli::runMerge({base + "/s1", base + "/s2", base + "/s0"}, base + "/merged"), 0);
+    auto withoutTimings = [](std::vector<std::map<std::string, std::string>> rows) {
+        for (auto& r : rows)
+            for (const char* c : {"frame_median_ms", "frame_min_ms", "frame_max_ms"})
+                r.erase(c);
+        return rows;
+    };
+    const auto whole = readCsv(base + "/whole/sweep.csv");
+    EXPECT_EQ(whole.size(), 20u);
+    EXPECT_EQ(withoutTimings(readCsv(base + "/merged/sweep.csv")), withoutTimings(whole));
+    const json a = json::parse(readText(base + "/whole/sweep.json"));
+    const json b = json::parse(readText(base + "/merged/sweep.json"));
+    EXPECT_EQ(a["sweep_id_fnv1a64"], b["sweep_id_fnv1a64"]);
+    ASSERT_EQ(a["runs"].size(), b["runs"].size());
+    for (size_t i = 0; i < a["runs"].size(); ++i)
+        EXPECT_EQ(a["runs"][i]["settings"], b["runs"][i]["settings"]) << i;
+    // Refusals, before anything is written.
+    ASSERT_EQ(sweep("other", {"--seed", "9", "--shard", "1/3"}), 0); // other lights
+    for (const std::vector<std::string>& dirs :
+         {std::vector<std::string>{base + "/s0", base + "/other", base + "/s2"},
+          std::vector<std::string>{base + "/s0", base + "/s1"},
+          std::vector<std::string>{base + "/s0", base + "/s0", base + "/s1", base + "/s2"}})
+        EXPECT_THROW(cli::runMerge(dirs, base + "/refused"), cli::UsageError);
+    EXPECT_FALSE(fs::exists(base + "/refused/sweep.csv"));
+}
+
 TEST(Compare, SweepWritesOneRowPerRun) {
     const std::string out = freshDir("sweep");
     ASSERT_EQ(runSweepCli({"builtin:courtyard-small", "--lights", "4,8", "--res", "96x54", "--tile",

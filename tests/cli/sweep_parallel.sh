@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The scale-out recipe of docs/scale-out.md with GNU parallel: a sweep of 12 runs as 2 shards,
+# one process each, sharing one reference cache, then `triptych merge`: the merged sweep.csv
+# equals the unsharded one in every column but the frame timings. Skips (exit 77) where GNU
+# parallel is not installed.
+# Usage: sweep_parallel.sh TRIPTYCH
+set -u
+bin=$(realpath "$1")
+command -v parallel >/dev/null || { echo "skipped: GNU parallel is not installed (apt-get install parallel)"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+args=(builtin:courtyard-small --res 48x27 --lights 4,8 --msaa 1,4 --tile 8,16
+      --pipelines forwardplus --frames 1 --warmup 0 --reference-cache "$work/cache")
+
+"$bin" sweep "${args[@]}" --out "$work/whole" >/dev/null 2>&1 || { echo "FAIL: the unsharded sweep"; exit 1; }
+# The recipe itself: one shard per job slot.
+parallel --halt now,fail=1 -j 2 "$bin" sweep "${args[@]}" --shard {}/2 --out "$work/shard{}" \
+    ::: 0 1 >/dev/null 2>&1 || { echo "FAIL: a shard under GNU parallel"; exit 1; }
+"$bin" merge "$work/shard0" "$work/shard1" --out "$work/merged" >/dev/null ||
+    { echo "FAIL: merge"; exit 1; }
+
+# Every column but frame_*_ms, by the header's names.
+strip() {
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = $i !~ /^frame_(median|min|max)_ms$/ }
+             { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ","; print line }' "$1"
+}
+rows=$(($(wc -l <"$work/whole/sweep.csv") - 1))
+if [ "$(strip "$work/whole/sweep.csv")" != "$(strip "$work/merged/sweep.csv")" ]; then
+    echo "FAIL: the merged sweep.csv differs from the unsharded one"
+    diff <(strip "$work/whole/sweep.csv") <(strip "$work/merged/sweep.csv") | head -5
+    exit 1
+fi
+echo "ok: $rows runs in 2 shards under GNU parallel, merged: the unsharded sweep.csv"
