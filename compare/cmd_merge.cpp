@@ -15,6 +15,7 @@
 #include "compare/report_json.h"
 #include "compare/sweep.h"
 #include "compare/sweep_output.h"
+#include "core/render/renderer.h"
 #include "core/util/files.h"
 
 namespace tp::cli {
@@ -114,6 +115,12 @@ SweepRow plotRow(const nlohmann::json& j) {
     r.s.width = s["width"];
     r.s.height = s["height"];
     r.s.msaa = s["msaa"];
+    // The knobs by name, as text (settingsJson wrote integer knobs as numbers).
+    for (const KnobReaders& k : allKnobs())
+        if (s.contains(k.knob.key()))
+            r.s.knobs[k.knob.name] = s[k.knob.key()].is_string()
+                                         ? s[k.knob.key()].get<std::string>()
+                                         : s[k.knob.key()].dump();
     if (r.status == "ok") {
         for (const auto& t : j["run"]["timings"])
             if (t["pass"] == "frame") r.frame.medianMs = t["median_ms"];
@@ -174,19 +181,16 @@ int runMerge(const std::vector<std::string>& dirs, const std::string& out) {
     nlohmann::json all = nlohmann::json::array();
     std::string csv = shards.front().csvHeader + "\n";
     std::vector<SweepRow> plotRows;
-    std::vector<std::string> names;
     for (const Row& r : rows) {
         all.push_back(r.json);
         csv += r.csv + "\n";
         plotRows.push_back(plotRow(r.json));
-        if (std::find(names.begin(), names.end(), plotRows.back().pipeline) == names.end())
-            names.push_back(plotRows.back().pipeline);
     }
     header["runs"] = all;
     ensureDirectory(out);
     const std::string device = header["device"].value("name", "");
     Status s = writeTextFile(out + "/sweep.html",
-                             sweepHtml(plotRows, names, device, header["command"]));
+                             sweepHtml(plotRows, device, header["command"]));
     if (s) s = writeTextFile(out + "/sweep.json", header.dump(1) + "\n");
     if (s) s = writeTextFile(out + "/sweep.csv", csv); // last: marks the sweep complete
     if (!s) throw UsageError(s.error());

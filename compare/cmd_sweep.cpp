@@ -255,10 +255,9 @@ std::string sweepId(nlohmann::json header) {
 namespace {
 
 void writeOutputs(const SweepOptions& o, const std::vector<SweepRow>& rows,
-                  const std::vector<std::string>& names, const nlohmann::json& header,
-                  const std::string& device) {
+                  const nlohmann::json& header, const std::string& device) {
     Status s = writeTextFile(o.out + "/sweep.html",
-                             sweepHtml(rows, names, device, shellJoin(o.commandLine)));
+                             sweepHtml(rows, device, shellJoin(o.commandLine)));
     if (s) s = writeTextFile(o.out + "/sweep.json", sweepJson(header, rows).dump(1) + "\n");
     if (s)
         s = writeTextFile(o.out + "/sweep.csv",
@@ -377,7 +376,7 @@ int runSweep(const SweepOptions& o) {
     header["sweep_id_fnv1a64"] = sweepId(header);
     const std::vector<std::string> validation = ctx->validationMessages();
     header["validation_messages"] = validation;
-    writeOutputs(o, rows, names, header, ctx->info.name);
+    writeOutputs(o, rows, header, ctx->info.name);
     size_t failed = size_t(std::count_if(rows.begin(), rows.end(),
                                          [](const SweepRow& r) { return r.status != "ok"; }));
     std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and "

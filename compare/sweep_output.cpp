@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 
 #include "compare/run_json.h"
 #include "compare/svg_plot.h"
+#include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
 
 namespace tp::cli {
@@ -108,27 +110,85 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
     return header;
 }
 
-std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::string>& names,
-                      const std::string& device, const std::string& command) {
-    auto series = [&](const std::string& p) {
-        return int(std::find(names.begin(), names.end(), p) - names.begin());
-    };
-    std::vector<PlotPoint> time, memory, error, flipError, centerError;
-    std::set<std::string> firstOfKind;
+namespace {
+
+// The axes a sweep varied among its runs that ran: MSAA, resolution, and per pipeline each
+// knob with more than one value there.
+struct VariedAxes {
+    bool msaa = false, res = false;
+    std::map<std::string, std::set<std::string>> knobs; // pipeline -> varied knob names
+};
+
+VariedAxes variedAxes(const std::vector<SweepRow>& rows) {
+    VariedAxes v;
+    std::set<uint32_t> msaa;
+    std::set<std::string> res;
+    std::map<std::string, std::map<std::string, std::set<std::string>>> values;
     for (const SweepRow& r : rows) {
         if (r.status != "ok") continue;
-        int si = series(r.pipeline);
-        // Time against lights: the first resolution, MSAA and knob values only, one line per
-        // pipeline.
-        if (r.s.width == rows.front().s.width && r.s.msaa == rows.front().s.msaa &&
-            firstOfKind.insert(r.pipeline + "/" + std::to_string(r.lights)).second)
-            time.push_back({"", double(r.lights), r.frame.medianMs, si});
-        memory.push_back({"", double(r.s.msaa), double(r.bytes), si});
+        msaa.insert(r.s.msaa);
+        res.insert(std::to_string(r.s.width) + "x" + std::to_string(r.s.height));
+        for (const auto& [name, value] : r.s.knobs)
+            values[r.pipeline][name].insert(value);
+    }
+    v.msaa = msaa.size() > 1;
+    v.res = res.size() > 1;
+    for (const auto& [pipeline, knobs] : values)
+        for (const auto& [name, set] : knobs)
+            if (set.size() > 1) v.knobs[pipeline].insert(name);
+    return v;
+}
+
+// A run's series in the plots: its pipeline and its value of every varied axis, so every run
+// is drawn and runs that differ only in what the sweep held fixed share a line.
+std::string seriesLabel(const SweepRow& r, const VariedAxes& v) {
+    std::string label = r.pipeline;
+    if (v.msaa) label += " " + std::to_string(r.s.msaa) + "x";
+    if (v.res) label += " " + std::to_string(r.s.width) + "x" + std::to_string(r.s.height);
+    if (const auto it = v.knobs.find(r.pipeline); it != v.knobs.end())
+        for (const std::string& name : it->second)
+            if (const auto k = r.s.knobs.find(name); k != r.s.knobs.end())
+                label += " " + name + "=" + k->second;
+    return label;
+}
+
+// A plot, or the reason it has nothing to draw.
+std::string plotOrWhy(const std::vector<PlotPoint>& points, const std::string& why,
+                      const std::string& svg) {
+    return points.empty() ? "<p><i>" + escapeXml(why) + "</i></p>" : svg;
+}
+
+} // namespace
+
+std::string sweepHtml(const std::vector<SweepRow>& rows, const std::string& device,
+                      const std::string& command) {
+    const VariedAxes varied = variedAxes(rows);
+    std::vector<std::string> labels;
+    auto series = [&](const SweepRow& r) {
+        const std::string l = seriesLabel(r, varied);
+        auto it = std::find(labels.begin(), labels.end(), l);
+        if (it != labels.end()) return int(it - labels.begin());
+        labels.push_back(l);
+        return int(labels.size() - 1);
+    };
+    std::vector<PlotPoint> time, memory, error, flipError, centerError;
+    bool anyReference = false;
+    for (const SweepRow& r : rows) {
+        anyReference = anyReference || r.pipeline == kReferenceRenderer;
+        if (r.status != "ok") continue;
+        const int si = series(r);
+        time.push_back({"", double(r.lights), r.frame.medianMs, si});
+        memory.push_back({"", double(r.s.msaa), double(r.bytes) / 1e6, si});
         if (r.measured) error.push_back({"", r.frame.medianMs, r.hdr.rmse, si});
         if (r.measured && r.flip.measured)
             flipError.push_back({"", r.frame.medianMs, r.flip.hdr.mean, si});
         if (r.measuredCenter) centerError.push_back({"", r.frame.medianMs, r.hdrCenter.rmse, si});
     }
+    const std::string noError = anyReference
+                                    ? "No error figures: the reference failed in every view (see "
+                                      "the failed runs above)."
+                                    : "No error figures: this sweep ran without a reference "
+                                      "(--reference-frames 0).";
     // Pareto front: no other run is both faster and closer to the reference.
     for (std::vector<PlotPoint>* points : {&error, &flipError, &centerError})
         for (PlotPoint& p : *points) {
@@ -154,16 +214,22 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::
            "memory ledger, "
            "every metric).</p>" +
            (failed.empty() ? "" : "<h2>Failed runs</h2><ul>" + failed + "</ul>") +
-           "<h2>Frame time against light count</h2>" +
-           scatterLogLogSvg(time, "lights", "frame median ms", 720, 440, names) +
+           "<h2>Frame time against light count</h2><p>Every run that ran: one line per pipeline "
+           "and value of each axis the sweep varied.</p>" +
+           plotOrWhy(time, "No run succeeded.",
+                     scatterLogLogSvg(time, "lights", "frame median ms", 720, 440, labels)) +
            "<h2>Memory against MSAA</h2>" +
-           scatterLogLogSvg(memory, "MSAA samples", "pipeline bytes", 720, 440, names, false) +
+           plotOrWhy(memory, "No run succeeded.",
+                     scatterLogLogSvg(memory, "MSAA samples", "pipeline memory (MB)", 720, 440,
+                                      labels, false)) +
            "<h2>Error against run time (circled: Pareto front)</h2>" +
-           scatterLogLogSvg(error, "frame median ms", "RMSE vs reference (HDR)", 720, 440, names,
-                            false) +
+           plotOrWhy(error, noError,
+                     scatterLogLogSvg(error, "frame median ms", "RMSE vs reference (HDR)", 720,
+                                      440, labels, false)) +
            "<h2>Perceived error against run time: HDR-FLIP (circled: Pareto front)</h2>" +
-           scatterLogLogSvg(flipError, "frame median ms", "mean HDR-FLIP vs reference", 720, 440,
-                            names, false) +
+           plotOrWhy(flipError, noError,
+                     scatterLogLogSvg(flipError, "frame median ms", "mean HDR-FLIP vs reference",
+                                      720, 440, labels, false)) +
            // Under MSAA: the error with the shading rate left out (docs/report.md, two errors under
            // MSAA).
            (centerError.empty()
@@ -172,7 +238,7 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::
                   "(circled: Pareto "
                   "front)</h2>" +
                       scatterLogLogSvg(centerError, "frame median ms",
-                                       "RMSE vs centre reference (HDR)", 720, 440, names, false)) +
+                                       "RMSE vs centre reference (HDR)", 720, 440, labels, false)) +
            "</body></html>\n";
 }
 

@@ -34,8 +34,10 @@ struct SweepRow {
 };
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device);
-std::string sweepHtml(const std::vector<SweepRow>& rows, const std::vector<std::string>& names,
-                      const std::string& device, const std::string& command);
+// The plots: every run that ran, one series per pipeline and value of each axis the sweep
+// varied (MSAA, resolution, that pipeline's knobs); an empty plot says why it is empty.
+std::string sweepHtml(const std::vector<SweepRow>& rows, const std::string& device,
+                      const std::string& command);
 // `header` carries the run-independent fields (schema, command, scene, device, axes);
 // the runs are added under "runs".
 nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& rows);

@@ -411,6 +411,12 @@ TEST(Compare, SweepWritesOneRowPerRun) {
     const std::string html = readText(out + "/sweep.html");
     EXPECT_EQ(count(html, "http"), 0u);
     EXPECT_EQ(count(html, "<svg"), 4u); // time, memory, error (RMSE and HDR-FLIP) plots
+    // Every run is a point of the time and memory plots (r="6": a point; the legend's are 5).
+    const size_t first = html.find("<svg"), second = html.find("<svg", first + 1),
+                 third = html.find("<svg", second + 1);
+    EXPECT_EQ(count(html.substr(first, second - first), "r=\"6\""), rows.size());
+    EXPECT_EQ(count(html.substr(second, third - second), "r=\"6\""), rows.size());
+    EXPECT_NE(html.find("pipeline memory (MB)"), std::string::npos);
 }
 
 // --camera FILE: the view changes (another image, another camera and content hash), report.json
@@ -566,7 +572,11 @@ TEST(Compare, SweepRecordsAFailedRunAndGoesOn) {
     json j = json::parse(readText(out + "/sweep.json"));
     EXPECT_EQ(j["runs"][0]["status"], "failed");
     EXPECT_EQ(j["runs"][0]["error"], rows[0].at("error"));
-    EXPECT_NE(readText(out + "/sweep.html").find("Failed runs"), std::string::npos);
+    const std::string page = readText(out + "/sweep.html");
+    EXPECT_NE(page.find("Failed runs"), std::string::npos);
+    // The error plots say why they are empty instead of drawing empty axes.
+    EXPECT_EQ(count(page, "ran without a reference (--reference-frames 0)"), 2u);
+    EXPECT_EQ(count(page, "<svg"), 2u); // time and memory
 
     o.knobs["deferred-lighting"] = "tiled,sideways"; // bad input: refused before anything runs
     o.out = freshDir("sweep_bad");
