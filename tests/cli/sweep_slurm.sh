@@ -76,6 +76,10 @@ for _ in $(seq 30); do
     sleep 1
 done
 sinfo -h -o %t 2>/dev/null | grep -q idle || skip "the node did not become idle in 30 s"
+# A job that does nothing must run before the recipe is judged: where this Slurm cannot launch
+# a task (a container without what slurmd needs), that is a skip with the reason, not a failure.
+(cd "$work" && timeout 60 sbatch --wait --quiet -o "$work/probe.log" --wrap true) ||
+    skip "this Slurm cannot run a job here ($(tail -n 1 "$work/log/slurmd.log" 2>/dev/null))"
 
 args=(builtin:courtyard-small --res 48x27 --lights 4,8 --msaa 1,4 --tile 8,16
       --pipelines forwardplus --frames 1 --warmup 0)
