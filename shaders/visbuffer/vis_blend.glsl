@@ -85,25 +85,30 @@ uint lowerBound(uint start, uint count, uint light) {
 // bitmask's bits in the range (binned), or the index run's lights in it (every light a
 // candidate, in ascending order: found by binary search).
 vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
-    const TransparentRun t = transparentRun(gl_WorkGroupID.xy);
+    // The tile's run in the compact layout (transparentRun's start and capacity, without the
+    // culling frustum it also builds).
+    const uint offset = tOffsets[tileIndex];
+    const uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
+    const uint capacity = tOffsets[tileIndex + 1u] - offset;
     const uint first = draw.TP_DEF_LIGHT_FIRST, end = draw.TP_DEF_LIGHT_END;
     vec3 sum = vec3(0.0);
     if (kBinned) {
-        for (uint w = first / 32u; w < min((end + 31u) / 32u, t.capacity); ++w) {
-            uint bits = tLists[t.start + w];
+        const DefCandidates c = defCandidates(tileIndex); // read once, as transparent.frag does
+        for (uint w = first / 32u; w < min((end + 31u) / 32u, capacity); ++w) {
+            uint bits = tLists[start + w];
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
                 uint lsb = uint(findLSB(bits));
                 bits &= bits - 1u;
                 uint i = w * 32u + lsb;
-                if (i >= first && i < end) sum += evalLight(lights[candidateLight(tileIndex, i)], ss, kHasSpot);
+                if (i >= first && i < end) sum += evalLight(lights[defCandidateLight(c, i)], ss, kHasSpot);
             }
         }
         return sum;
     }
     // The first batch has the count in shared memory (the header is written when it ends).
-    const uint count = firstBatch() ? min(sTransparentCount, t.capacity) : tLists[laHeaderWord(tileIndex, TP_LA_COUNT)];
-    for (uint i = lowerBound(t.start, count, first); i < count; ++i) {
-        uint light = tLists[t.start + i];
+    const uint count = firstBatch() ? min(sTransparentCount, capacity) : tLists[laHeaderWord(tileIndex, TP_LA_COUNT)];
+    for (uint i = lowerBound(start, count, first); i < count; ++i) {
+        uint light = tLists[start + i];
         if (light >= end) break;
         sum += evalLight(lights[light], ss, kHasSpot);
     }
