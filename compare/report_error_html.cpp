@@ -110,11 +110,13 @@ bool hasCenterReference(const json& r) {
 // `key`: error_vs_reference or error_vs_center_reference.
 std::string errorScatter(const json& r, const std::string& key, const std::string& yLabel) {
     std::vector<PlotPoint> points;
-    points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
+    points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0, -1, false,
+                      pipelineColour(r["reference"]["name"].get<std::string>())});
     for (const json& p : r["pipelines"])
         if (ok(p) && p.contains(key))
             points.push_back({p["name"].get<std::string>(), frameMedian(p),
-                              p[key]["hdr"]["rmse"].get<double>()});
+                              p[key]["hdr"]["rmse"].get<double>(), -1, false,
+                              pipelineColour(p["name"].get<std::string>())});
     return scatterLogLogSvg(
         points, "frame time, median ms on " + r["device"]["name"].get<std::string>(), yLabel);
 }
@@ -154,11 +156,13 @@ std::string twoReferences(const json& r) {
 // Mean HDR-FLIP against frame time: what a viewer would see, beside the RMSE plots.
 std::string flipScatter(const json& r) {
     std::vector<PlotPoint> points;
-    points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0});
+    points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0, -1, false,
+                      pipelineColour(r["reference"]["name"].get<std::string>())});
     for (const json& p : r["pipelines"])
         if (ok(p) && flipValue(p, "hdr", "mean").is_number())
             points.push_back({p["name"].get<std::string>(), frameMedian(p),
-                              flipValue(p, "hdr", "mean").get<double>()});
+                              flipValue(p, "hdr", "mean").get<double>(), -1, false,
+                              pipelineColour(p["name"].get<std::string>())});
     if (points.size() < 2) return "";
     return scatterLogLogSvg(points,
                             "frame time, median ms on " + r["device"]["name"].get<std::string>(),

@@ -161,7 +161,7 @@ std::string timingSection(const json& r) {
     std::vector<BarGroup> groups;
     auto add = [&](const json& p) {
         if (!ok(p)) return;
-        BarGroup g{p["name"].get<std::string>(), {}};
+        BarGroup g{p["name"].get<std::string>(), {}, pipelineColour(p["name"].get<std::string>())};
         for (const json& t : p["run"]["timings"])
             g.bars.push_back({t["pass"].get<std::string>(), t["median_ms"].get<double>()});
         groups.push_back(std::move(g));

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/render/renderer.h"
+
 namespace tp::cli {
 namespace {
 
@@ -75,6 +77,13 @@ std::string tickLabel(double v) {
 
 } // namespace
 
+int pipelineColour(const std::string& name) {
+    const std::vector<RendererEntry>& all = registeredRenderers();
+    for (size_t i = 0; i < all.size(); ++i)
+        if (all[i].name == name) return int(i);
+    return -1;
+}
+
 std::string escapeXml(const std::string& s) {
     std::string out;
     out.reserve(s.size());
@@ -129,7 +138,8 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
                       "\" font-family=\"sans-serif\">\n";
     double y = top;
     for (size_t gi = 0; gi < groups.size(); ++gi) {
-        const char* colour = kPalette[gi % std::size(kPalette)];
+        const char* colour = kPalette[size_t(groups[gi].colour >= 0 ? groups[gi].colour : int(gi)) %
+                                      std::size(kPalette)];
         svg += text(4, y + 13, groups[gi].title, "start", 13, " font-weight=\"bold\"");
         y += rowH;
         for (const auto& [label, value] : groups[gi].bars) {
@@ -147,7 +157,23 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
 
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
                              const std::string& yLabel, int width, int height,
-                             const std::vector<std::string>& seriesNames, bool joinSeries) {
+                             const std::vector<std::string>& seriesNames, bool joinSeries,
+                             const std::vector<int>& seriesColours) {
+    auto colourOf = [&](size_t si) {
+        return kPalette[size_t(si < seriesColours.size() && seriesColours[si] >= 0
+                                   ? seriesColours[si]
+                                   : int(si)) %
+                        std::size(kPalette)];
+    };
+    // A series sharing its colour with earlier ones gets a dashed line (the n-th such: dash n).
+    auto dashOf = [&](size_t si) -> std::string {
+        int before = 0;
+        for (size_t k = 0; k < si && si < seriesColours.size(); ++k)
+            before += seriesColours[k] == seriesColours[si];
+        static const char* kDashes[] = {"", "6 3", "2 2", "8 3 2 3", "1 3"};
+        const char* d = kDashes[size_t(before) % std::size(kDashes)];
+        return *d ? std::string(" stroke-dasharray=\"") + d + "\"" : "";
+    };
     const double left = 80, right = 30, top = 20, bottom = 60;
     double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
     bool anyZero = false;
@@ -199,15 +225,17 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
         for (const auto& [x, y] : xy)
             path += (path.empty() ? "M" : " L") + num(x) + "," + num(y);
         if (joinSeries && xy.size() > 1)
-            svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"" +
-                   kPalette[si % std::size(kPalette)] + "\" stroke-width=\"1.5\"/>\n";
+            svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"" + colourOf(si) +
+                   "\" stroke-width=\"1.5\"" + dashOf(si) + "/>\n";
         double ly = top + 14 + 16 * double(si);
         svg += "<circle cx=\"" + num(left + 12) + "\" cy=\"" + num(ly - 4) + "\" r=\"5\" fill=\"" +
-               kPalette[si % std::size(kPalette)] + "\"/>\n" + text(left + 22, ly, seriesNames[si]);
+               colourOf(si) + "\"/>\n" + text(left + 22, ly, seriesNames[si]);
     }
     for (size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& p = points[i];
-        const char* colour = kPalette[(p.series >= 0 ? size_t(p.series) : i) % std::size(kPalette)];
+        const char* colour = p.series >= 0 ? colourOf(size_t(p.series))
+                             : kPalette[(p.colour >= 0 ? size_t(p.colour) : i) %
+                                        std::size(kPalette)];
         double x = px(p.x), y = py(p.y);
         if (p.ring)
             svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) +

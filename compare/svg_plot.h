@@ -9,7 +9,12 @@ namespace tp::cli {
 struct BarGroup {
     std::string title;                                // e.g. the pipeline
     std::vector<std::pair<std::string, double>> bars; // label, value
+    int colour = -1;                                  // palette index; -1: the group's index
 };
+
+// The palette index of a pipeline (or the reference): its place in the registry's order, so
+// it has one colour on every page (report, sweep); -1 for a name nothing registered.
+int pipelineColour(const std::string& name);
 
 // One bar per value on a shared linear scale (0 .. largest value), grouped under titles;
 // each bar is labelled on the left and its value (with `unit`) on the right.
@@ -19,16 +24,19 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
 struct PlotPoint {
     std::string label;   // drawn beside the point; may be empty
     double x = 0, y = 0; // y <= 0 is drawn on the bottom edge, marked "0" (log axis)
-    int series = -1;     // colour index; -1: one colour per point
+    int series = -1;     // series (and, without seriesColours, colour) index; -1: per point
     bool ring = false;   // circled (e.g. on the Pareto front)
+    int colour = -1;     // without series: this point's palette index; -1: its index
 };
 
 // Scatter plot with log x and log y axes, ticks at 1, 2, 5 x 10^k. With seriesNames, points
 // of one series share a colour, are joined in x order (joinSeries), and a legend names the series.
+// seriesColours: the palette index of each series (series of one pipeline may share one: their
+// lines are then told apart by dashes); empty: the series' own index.
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
                              const std::string& yLabel, int width = 720, int height = 440,
                              const std::vector<std::string>& seriesNames = {},
-                             bool joinSeries = true);
+                             bool joinSeries = true, const std::vector<int>& seriesColours = {});
 
 // Escapes &, <, >, " and ' for HTML/SVG text and attributes.
 std::string escapeXml(const std::string& text);

@@ -164,11 +164,13 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::string& devi
                       const std::string& command) {
     const VariedAxes varied = variedAxes(rows);
     std::vector<std::string> labels;
+    std::vector<int> colours; // per series: its pipeline's, as on every page
     auto series = [&](const SweepRow& r) {
         const std::string l = seriesLabel(r, varied);
         auto it = std::find(labels.begin(), labels.end(), l);
         if (it != labels.end()) return int(it - labels.begin());
         labels.push_back(l);
+        colours.push_back(pipelineColour(r.pipeline));
         return int(labels.size() - 1);
     };
     std::vector<PlotPoint> time, memory, error, flipError, centerError;
@@ -217,19 +219,20 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::string& devi
            "<h2>Frame time against light count</h2><p>Every run that ran: one line per pipeline "
            "and value of each axis the sweep varied.</p>" +
            plotOrWhy(time, "No run succeeded.",
-                     scatterLogLogSvg(time, "lights", "frame median ms", 720, 440, labels)) +
+                     scatterLogLogSvg(time, "lights", "frame median ms", 720, 440, labels,
+                                      true, colours)) +
            "<h2>Memory against MSAA</h2>" +
            plotOrWhy(memory, "No run succeeded.",
                      scatterLogLogSvg(memory, "MSAA samples", "pipeline memory (MB)", 720, 440,
-                                      labels, false)) +
+                                      labels, false, colours)) +
            "<h2>Error against run time (circled: Pareto front)</h2>" +
            plotOrWhy(error, noError,
                      scatterLogLogSvg(error, "frame median ms", "RMSE vs reference (HDR)", 720,
-                                      440, labels, false)) +
+                                      440, labels, false, colours)) +
            "<h2>Perceived error against run time: HDR-FLIP (circled: Pareto front)</h2>" +
            plotOrWhy(flipError, noError,
                      scatterLogLogSvg(flipError, "frame median ms", "mean HDR-FLIP vs reference",
-                                      720, 440, labels, false)) +
+                                      720, 440, labels, false, colours)) +
            // Under MSAA: the error with the shading rate left out (docs/report.md, two errors under
            // MSAA).
            (centerError.empty()
@@ -238,7 +241,8 @@ std::string sweepHtml(const std::vector<SweepRow>& rows, const std::string& devi
                   "(circled: Pareto "
                   "front)</h2>" +
                       scatterLogLogSvg(centerError, "frame median ms",
-                                       "RMSE vs centre reference (HDR)", 720, 440, labels, false)) +
+                                       "RMSE vs centre reference (HDR)", 720, 440, labels, false,
+                                       colours)) +
            "</body></html>\n";
 }
 
