@@ -22,6 +22,7 @@
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
+#include "core/util/parallel.h"
 
 namespace tp::cli {
 namespace {
@@ -151,18 +152,20 @@ void writeFlipMap(const std::string& out, const std::string& stem, const ImageR3
     files.push_back(stem + ".png");
 }
 
+// Each pipeline's maps are its own files: written side by side (EXR and PNG encoding is most
+// of a compare's time after the renders).
 void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
     const std::string& out = r.options->out;
-    for (size_t i = 0; i < r.pipelines.size(); ++i) {
+    forEachInParallel(r.pipelines.size(), [&](size_t i) {
         PipelineOutcome& p = r.pipelines[i];
-        if (!p.run) continue;
+        if (!p.run) return;
         writeDifference(out, p.name + "_diff", diffs[i], r.diffScale, p.files);
-        if (!p.flip.measured) continue;
+        if (!p.flip.measured) return;
         writeFlipMap(out, p.name + "_flip", p.flip.hdrMap, p.files);
         writeFlipMap(out, p.name + "_flip_ldr", p.flip.ldrMap, p.files);
         p.flip.hdrMap = {};
         p.flip.ldrMap = {};
-    }
+    });
 }
 
 // Pipelines against each other: metrics of a against b, and the signed difference a - b as
@@ -171,19 +174,22 @@ void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
 void measurePairs(CompareRecord& r) {
     MetricsOptions hdrOptions;
     hdrOptions.psnrPeak = r.hdrPsnrPeak;
+    std::vector<std::pair<size_t, size_t>> ran; // pairs of pipelines that both ran, in order
     for (size_t i = 0; i < r.pipelines.size(); ++i)
-        for (size_t k = i + 1; k < r.pipelines.size(); ++k) {
-            const PipelineOutcome &a = r.pipelines[i], &b = r.pipelines[k];
-            if (!a.run || !b.run) continue;
-            PairOutcome pair{a.name, b.name, computeError(a.run->hdr, b.run->hdr, hdrOptions),
-                             computeError(tonemapToDisplay(a.run->hdr, r.exposureEv),
-                                          tonemapToDisplay(b.run->hdr, r.exposureEv))};
-            ImageRGBA diff = signedDifference(a.run->hdr, b.run->hdr);
-            pair.diffP99 = differencePercentile99(diff);
-            writeDifference(r.options->out, pairDiffStem(a.name, b.name), diff, r.diffScale,
-                            pair.files);
-            r.pairs.push_back(std::move(pair));
-        }
+        for (size_t k = i + 1; k < r.pipelines.size(); ++k)
+            if (r.pipelines[i].run && r.pipelines[k].run) ran.push_back({i, k});
+    r.pairs.resize(ran.size());
+    forEachInParallel(ran.size(), [&](size_t n) { // each pair its own slot and files
+        const PipelineOutcome &a = r.pipelines[ran[n].first], &b = r.pipelines[ran[n].second];
+        PairOutcome pair{a.name, b.name, computeError(a.run->hdr, b.run->hdr, hdrOptions),
+                         computeError(tonemapToDisplay(a.run->hdr, r.exposureEv),
+                                      tonemapToDisplay(b.run->hdr, r.exposureEv))};
+        ImageRGBA diff = signedDifference(a.run->hdr, b.run->hdr);
+        pair.diffP99 = differencePercentile99(diff);
+        writeDifference(r.options->out, pairDiffStem(a.name, b.name), diff, r.diffScale,
+                        pair.files);
+        r.pairs[n] = std::move(pair);
+    });
 }
 
 double frameMedian(const RunResult& run) {
