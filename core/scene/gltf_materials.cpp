@@ -2,12 +2,11 @@
 // only those a material uses), one tp::Texture per (image, sRGB) pair, placeholders for
 // images that cannot be had.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
-#include <thread>
 
 #include "core/scene/gltf_internal.h"
+#include "core/util/parallel.h"
 
 namespace tp::gltf {
 namespace {
@@ -96,26 +95,13 @@ Decoded decode(const tinygltf::Image& image, int index) {
     return d;
 }
 
-// Runs decode() over `needed` on a few threads (stb and tinygltf's LoadImageData keep no
-// shared state between calls); falls back to one thread if threads cannot be had.
+// Runs decode() over `needed` on the cores (stb and tinygltf's LoadImageData keep no shared
+// state between calls); forEachInParallel falls back to fewer threads if they cannot be had.
 void decodeAll(const tinygltf::Model& model, const std::vector<int>& needed,
                std::vector<Decoded>& decoded) {
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-        for (size_t k; (k = next.fetch_add(1)) < needed.size();)
-            decoded[size_t(needed[k])] = decode(model.images[size_t(needed[k])], needed[k]);
-    };
-    std::vector<std::thread> threads;
-    size_t count =
-        std::min<size_t>(needed.size(), std::max(1u, std::thread::hardware_concurrency()));
-    try {
-        for (size_t i = 1; i < count; ++i)
-            threads.emplace_back(work);
-    } catch (const std::system_error&) {
-    }
-    work();
-    for (std::thread& t : threads)
-        t.join();
+    forEachInParallel(needed.size(), [&](size_t k) {
+        decoded[size_t(needed[k])] = decode(model.images[size_t(needed[k])], needed[k]);
+    });
 }
 
 std::string imageLabel(const tinygltf::Model& model, int index) {

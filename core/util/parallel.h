@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <exception>
 #include <future>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -28,8 +29,12 @@ template <class F> void forEachInParallel(size_t n, F&& f) {
         }
     };
     std::vector<std::future<void>> running;
-    for (size_t w = 1; w < workers; ++w)
-        running.push_back(std::async(std::launch::async, work));
+    try {
+        for (size_t w = 1; w < workers; ++w)
+            running.push_back(std::async(std::launch::async, work));
+    } catch (const std::system_error&) {
+        // No more threads to be had: the ones running and this one do the rest.
+    }
     work();
     for (std::future<void>& r : running)
         r.get();
