@@ -155,25 +155,32 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
     return svg + "</svg>\n";
 }
 
+namespace {
+
+// Series si's colour: its entry of `colours` when given, else its own index.
+const char* seriesColour(size_t si, const std::vector<int>& colours) {
+    const int c = si < colours.size() && colours[si] >= 0 ? colours[si] : int(si);
+    return kPalette[size_t(c) % std::size(kPalette)];
+}
+
+// A series sharing its colour with earlier ones gets a dashed line (the n-th such: dash n).
+std::string seriesDash(size_t si, const std::vector<int>& colours) {
+    int before = 0;
+    for (size_t k = 0; k < si && si < colours.size(); ++k)
+        before += colours[k] == colours[si];
+    static const char* kDashes[] = {"", "6 3", "2 2", "8 3 2 3", "1 3"};
+    const char* d = kDashes[size_t(before) % std::size(kDashes)];
+    return *d ? std::string(" stroke-dasharray=\"") + d + "\"" : "";
+}
+
+} // namespace
+
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
                              const std::string& yLabel, int width, int height,
                              const std::vector<std::string>& seriesNames, bool joinSeries,
                              const std::vector<int>& seriesColours) {
-    auto colourOf = [&](size_t si) {
-        return kPalette[size_t(si < seriesColours.size() && seriesColours[si] >= 0
-                                   ? seriesColours[si]
-                                   : int(si)) %
-                        std::size(kPalette)];
-    };
-    // A series sharing its colour with earlier ones gets a dashed line (the n-th such: dash n).
-    auto dashOf = [&](size_t si) -> std::string {
-        int before = 0;
-        for (size_t k = 0; k < si && si < seriesColours.size(); ++k)
-            before += seriesColours[k] == seriesColours[si];
-        static const char* kDashes[] = {"", "6 3", "2 2", "8 3 2 3", "1 3"};
-        const char* d = kDashes[size_t(before) % std::size(kDashes)];
-        return *d ? std::string(" stroke-dasharray=\"") + d + "\"" : "";
-    };
+    auto colourOf = [&](size_t si) { return seriesColour(si, seriesColours); };
+    auto dashOf = [&](size_t si) { return seriesDash(si, seriesColours); };
     const double left = 80, right = 30, top = 20, bottom = 60;
     double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
     bool anyZero = false;

@@ -158,34 +158,51 @@ std::string plotOrWhy(const std::vector<PlotPoint>& points, const std::string& w
     return points.empty() ? "<p><i>" + escapeXml(why) + "</i></p>" : svg;
 }
 
+// The sweep page's points: every run that ran in its series, the series' labels and colours,
+// and whether the sweep had a reference at all.
+struct SweepPlots {
+    std::vector<std::string> labels;
+    std::vector<int> colours; // per series: its pipeline's, as on every page
+    std::vector<PlotPoint> time, memory, error, flipError, centerError;
+    bool anyReference = false;
+};
+
+SweepPlots collectPlots(const std::vector<SweepRow>& rows) {
+    const VariedAxes varied = variedAxes(rows);
+    SweepPlots p;
+    auto series = [&](const SweepRow& r) {
+        const std::string l = seriesLabel(r, varied);
+        auto it = std::find(p.labels.begin(), p.labels.end(), l);
+        if (it != p.labels.end()) return int(it - p.labels.begin());
+        p.labels.push_back(l);
+        p.colours.push_back(pipelineColour(r.pipeline));
+        return int(p.labels.size() - 1);
+    };
+    for (const SweepRow& r : rows) {
+        p.anyReference = p.anyReference || r.pipeline == kReferenceRenderer;
+        if (r.status != "ok") continue;
+        const int si = series(r);
+        p.time.push_back({"", double(r.lights), r.frame.medianMs, si});
+        p.memory.push_back({"", double(r.s.msaa), double(r.bytes) / 1e6, si});
+        if (r.measured) p.error.push_back({"", r.frame.medianMs, r.hdr.rmse, si});
+        if (r.measured && r.flip.measured)
+            p.flipError.push_back({"", r.frame.medianMs, r.flip.hdr.mean, si});
+        if (r.measuredCenter)
+            p.centerError.push_back({"", r.frame.medianMs, r.hdrCenter.rmse, si});
+    }
+    return p;
+}
+
 } // namespace
 
 std::string sweepHtml(const std::vector<SweepRow>& rows, const std::string& device,
                       const std::string& command) {
-    const VariedAxes varied = variedAxes(rows);
-    std::vector<std::string> labels;
-    std::vector<int> colours; // per series: its pipeline's, as on every page
-    auto series = [&](const SweepRow& r) {
-        const std::string l = seriesLabel(r, varied);
-        auto it = std::find(labels.begin(), labels.end(), l);
-        if (it != labels.end()) return int(it - labels.begin());
-        labels.push_back(l);
-        colours.push_back(pipelineColour(r.pipeline));
-        return int(labels.size() - 1);
-    };
-    std::vector<PlotPoint> time, memory, error, flipError, centerError;
-    bool anyReference = false;
-    for (const SweepRow& r : rows) {
-        anyReference = anyReference || r.pipeline == kReferenceRenderer;
-        if (r.status != "ok") continue;
-        const int si = series(r);
-        time.push_back({"", double(r.lights), r.frame.medianMs, si});
-        memory.push_back({"", double(r.s.msaa), double(r.bytes) / 1e6, si});
-        if (r.measured) error.push_back({"", r.frame.medianMs, r.hdr.rmse, si});
-        if (r.measured && r.flip.measured)
-            flipError.push_back({"", r.frame.medianMs, r.flip.hdr.mean, si});
-        if (r.measuredCenter) centerError.push_back({"", r.frame.medianMs, r.hdrCenter.rmse, si});
-    }
+    SweepPlots plots = collectPlots(rows);
+    const std::vector<std::string>& labels = plots.labels;
+    const std::vector<int>& colours = plots.colours;
+    std::vector<PlotPoint>&time = plots.time, &memory = plots.memory, &error = plots.error,
+                         &flipError = plots.flipError, &centerError = plots.centerError;
+    const bool anyReference = plots.anyReference;
     const std::string noError = anyReference
                                     ? "No error figures: the reference failed in every view (see "
                                       "the failed runs above)."
