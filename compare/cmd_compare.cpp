@@ -87,8 +87,6 @@ PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& n
                                                    r.options->noReferenceCache),
                                  p.cache)
             : tryRunRenderer(ctx, scene, *entry, r.features, r.settings, ro);
-    if (!p.cache.note.empty())
-        std::fprintf(stderr, "triptych: warning: reference cache: %s\n", p.cache.note.c_str());
     if (result)
         p.run = std::move(*result);
     else

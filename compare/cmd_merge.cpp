@@ -5,7 +5,6 @@
 // shard whose files disagree are refused with one line before anything is written
 // (docs/scale-out.md).
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -29,11 +28,9 @@ struct ShardFiles {
 };
 
 std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw UsageError("merge: cannot read " + path + " (a shard that did not finish?)");
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
+    Result<std::string> bytes = readWholeFile(path);
+    if (!bytes) throw UsageError("merge: " + bytes.error() + " (a shard that did not finish?)");
+    return std::move(*bytes);
 }
 
 // sweep.csv's lines. A quoted field holds no newline (the writer quotes only commas and

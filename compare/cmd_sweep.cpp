@@ -174,14 +174,9 @@ RunOptions sweepRunOptions(const SweepOptions& o, bool reference) {
 Result<RunResult> runOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
                          const SceneFeatures& features, const RenderSettings& s,
                          const RunOptions& ro, const SweepOptions& o, ReferenceCacheUse& cache) {
-    if (name == kReferenceRenderer) {
-        Result<RunResult> r = runReferenceCached(
-            ctx, scene, features, s, ro, referenceCacheDir(o.referenceCache, o.noReferenceCache),
-            cache);
-        if (!cache.note.empty())
-            std::fprintf(stderr, "triptych: warning: reference cache: %s\n", cache.note.c_str());
-        return r;
-    }
+    if (name == kReferenceRenderer)
+        return runReferenceCached(ctx, scene, features, s, ro,
+                                  referenceCacheDir(o.referenceCache, o.noReferenceCache), cache);
     return tryRunRenderer(ctx, scene, **findRenderer(name), features, s, ro);
 }
 

@@ -1,6 +1,7 @@
 #include "compare/reference_cache.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
@@ -257,11 +258,14 @@ Result<RunResult> runReferenceCached(GpuContext& ctx, SceneGpu& scene,
         return std::move(*cached);
     }
     Result<RunResult> run = tryRunRenderer(ctx, scene, entry, features, settings, options);
-    if (!run) return run;
-    if (Status s = storeReference(cacheDir, key, *run); s)
-        use.stored = true;
-    else
-        use.note += (use.note.empty() ? "" : "; ") + s.error();
+    if (run) {
+        if (Status s = storeReference(cacheDir, key, *run); s)
+            use.stored = true;
+        else
+            use.note += (use.note.empty() ? "" : "; ") + s.error();
+    }
+    if (!use.note.empty())
+        std::fprintf(stderr, "triptych: warning: reference cache: %s\n", use.note.c_str());
     return run;
 }
 

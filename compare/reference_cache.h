@@ -67,7 +67,8 @@ Status storeReference(const std::string& dir, const ReferenceKey& key, const Run
 nlohmann::json referenceCacheJson(const ReferenceCacheUse& c);
 
 // The reference renderer's run for these settings: from the cache when `cacheDir` holds a
-// valid entry, else rendered (tryRunRenderer) and stored. Debug runs bypass the cache (their
+// valid entry, else rendered (tryRunRenderer) and stored; a note (an entry not trusted or not
+// written) is also said on stderr. Debug runs bypass the cache (their
 // debug images are not stored).
 Result<RunResult> runReferenceCached(GpuContext& ctx, SceneGpu& scene,
                                      const SceneFeatures& features, const RenderSettings& settings,

@@ -10,6 +10,7 @@
 #include "compare/report_html_parts.h"
 #include "compare/report_viewer_js.h"
 #include "compare/svg_plot.h"
+#include "core/util/files.h"
 
 namespace tp::cli {
 
@@ -62,14 +63,6 @@ const char* kStyle = R"(
 table.pairs td{width:300px;vertical-align:top}table.pairs img{width:300px}
 )";
 
-Result<std::string> readBinary(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{path + ": cannot read for report.html"};
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 std::string header(const json& r) {
     const json& s = r["settings"];
     std::string h =
@@ -100,7 +93,7 @@ std::string header(const json& r) {
 // `attributes`: more of the <img> tag, e.g. the hooks of the flip script (report_viewer_js.h).
 Result<std::string> figure(const std::string& outDir, const std::string& file,
                            const std::string& caption, const std::string& attributes = "") {
-    Result<std::string> bytes = readBinary(outDir + "/" + file);
+    Result<std::string> bytes = readWholeFile(outDir + "/" + file);
     if (!bytes) return Error{bytes.error()};
     return "<figure><img alt=\"" + escapeXml(file) + "\"" + attributes +
            " src=\"data:image/png;base64," + base64(*bytes) + "\"><figcaption>" + caption +

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <vector>
 
 #include "core/scene/scene.h"
@@ -56,21 +55,11 @@ double triangleCentreBound(glm::vec2 a, glm::vec2 b, glm::vec2 c, uint32_t width
 
 uint64_t blendedFragmentBound(const SceneGpu& scene, const std::vector<TableDraw>& blended,
                               uint32_t width, uint32_t height, uint32_t samples) {
-    // A draw's mesh: the meshes in upload order, each starting where the last one's indices
-    // ended (core/render/scene_gpu.cpp: uploadGeometry).
-    std::map<uint32_t, const Mesh*> byFirstIndex;
-    uint32_t first = 0;
-    for (const Mesh& m : scene.scene().meshes) {
-        if (!m.indices.empty()) byFirstIndex[first] = &m;
-        first += uint32_t(m.indices.size());
-    }
     const glm::mat4& viewProj = scene.shadingFrame().viewProj;
     const double screen = double(width) * height;
     double total = 0.0;
     for (const TableDraw& d : blended) {
-        const auto it = byFirstIndex.find(d.item->firstIndex);
-        if (it == byFirstIndex.end()) continue;
-        const Mesh& m = *it->second;
+        const Mesh& m = scene.scene().meshes[d.item->mesh];
         for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
             glm::vec2 p[3];
             bool behind = false;

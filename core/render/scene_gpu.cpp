@@ -78,6 +78,7 @@ void SceneGpu::uploadGeometry() {
     for (const Mesh& mesh : scene_.meshes) {
         const Material& mat = scene_.materials.at(mesh.material);
         DrawItem d;
+        d.mesh = uint32_t(&mesh - scene_.meshes.data());
         d.firstIndex = uint32_t(indices.size());
         d.indexCount = uint32_t(mesh.indices.size());
         d.vertexOffset = int32_t(vertices.size());

@@ -20,6 +20,7 @@ struct DrawItem {
     uint32_t indexCount = 0;
     int32_t vertexOffset = 0;
     uint32_t material = 0;
+    uint32_t mesh = 0; // Scene::meshes index (the CPU copy of its geometry)
     AlphaMode alphaMode = AlphaMode::Opaque;
     bool doubleSided = false;
     Aabb bounds; // world space (SceneGpu::toShading for camera-relative)

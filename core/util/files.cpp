@@ -3,8 +3,18 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace tp {
+
+Result<std::string> readWholeFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error{path + ": cannot be read"};
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) return Error{path + ": read failed"};
+    return ss.str();
+}
 
 Status writeTextFile(const std::string& path, const std::string& text) {
     const std::string partial = path + ".partial";

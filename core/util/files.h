@@ -8,5 +8,7 @@
 namespace tp {
 
 Status writeTextFile(const std::string& path, const std::string& text);
+// A whole file's bytes; the error names the path.
+Result<std::string> readWholeFile(const std::string& path);
 
 } // namespace tp

@@ -17,11 +17,8 @@ done
 wait
 t2=$(date +%s.%N)
 "$bin" merge "$out/shard0" "$out/shard1" --out "$out/merged" | tail -1
-strip() {
-    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = $i !~ /^frame_(median|min|max)_ms$/ }
-             { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ","; print line }' "$1"
-}
+. "$(dirname "$0")/../cli/sweep_csv.sh"
 same=no
-[ "$(strip "$out/whole/sweep.csv")" = "$(strip "$out/merged/sweep.csv")" ] && same=yes
+[ "$(strip_timings "$out/whole/sweep.csv")" = "$(strip_timings "$out/merged/sweep.csv")" ] && same=yes
 echo "runs $(($(wc -l <"$out/whole/sweep.csv") - 1)); 1 GPU $(awk "BEGIN{print $t1 - $t0}") s; 2 GPUs $(awk "BEGIN{print $t2 - $t1}") s; merged equals unsharded: $same"
 grep -h "device\|runs (" "$out"/*.log | sort | uniq -c | head -5

@@ -19,15 +19,11 @@ parallel --halt now,fail=1 -j 2 "$bin" sweep "${args[@]}" --shard {}/2 --out "$w
 "$bin" merge "$work/shard0" "$work/shard1" --out "$work/merged" >/dev/null ||
     { echo "FAIL: merge"; exit 1; }
 
-# Every column but frame_*_ms, by the header's names.
-strip() {
-    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = $i !~ /^frame_(median|min|max)_ms$/ }
-             { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ","; print line }' "$1"
-}
+. "$(dirname "$0")/sweep_csv.sh"
 rows=$(($(wc -l <"$work/whole/sweep.csv") - 1))
-if [ "$(strip "$work/whole/sweep.csv")" != "$(strip "$work/merged/sweep.csv")" ]; then
+if [ "$(strip_timings "$work/whole/sweep.csv")" != "$(strip_timings "$work/merged/sweep.csv")" ]; then
     echo "FAIL: the merged sweep.csv differs from the unsharded one"
-    diff <(strip "$work/whole/sweep.csv") <(strip "$work/merged/sweep.csv") | head -5
+    diff <(strip_timings "$work/whole/sweep.csv") <(strip_timings "$work/merged/sweep.csv") | head -5
     exit 1
 fi
 echo "ok: $rows runs in 2 shards under GNU parallel, merged: the unsharded sweep.csv"

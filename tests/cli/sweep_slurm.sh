@@ -91,11 +91,8 @@ mkdir -p "$out"
     { echo "FAIL: the job array"; cat "$work"/*.log 2>/dev/null | tail -5; exit 1; }
 "$bin" merge "$out"/shard-* --out "$out/merged" >/dev/null || { echo "FAIL: merge"; exit 1; }
 
-strip() {
-    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = $i !~ /^frame_(median|min|max)_ms$/ }
-             { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ","; print line }' "$1"
-}
-if [ "$(strip "$work/whole/sweep.csv")" != "$(strip "$out/merged/sweep.csv")" ]; then
+. "$(dirname "$0")/sweep_csv.sh"
+if [ "$(strip_timings "$work/whole/sweep.csv")" != "$(strip_timings "$out/merged/sweep.csv")" ]; then
     echo "FAIL: the merged sweep.csv differs from the unsharded one"
     exit 1
 fi

@@ -49,7 +49,9 @@ TEST(VisbufferFragmentBound, NeverBelowTheCentresATriangleContains) {
         const double bound = vis::triangleCentreBound(a, b, c, kW, kH);
         const uint32_t count = centresInside(a, b, c);
         ASSERT_GE(bound, double(count)) << i;
-        if (count >= 400) EXPECT_LE(bound, 1.25 * count + 40) << i; // the perimeter term
+        if (count >= 400) {
+            EXPECT_LE(bound, 1.25 * count + 40) << i; // the perimeter term
+        }
     }
 }
 
