@@ -256,6 +256,21 @@ SplitLights splitLights(const Scene& scene) {
     return out;
 }
 
+// Every pixel with geometry (pos: pixelPositions of depth): its coordinates, index,
+// camera-relative point and the BRDF limits of its surface's view angle. Both per-pixel bounds
+// walk the image this way.
+template <class F>
+void forEachSurfacePixel(const Scene& scene, const ImageR32& depth,
+                         const std::vector<glm::dvec3>& pos, F&& f) {
+    const std::vector<BrdfLimits> limits = brdfLimits(scene);
+    for (uint32_t y = 0; y < depth.height; ++y)
+        for (uint32_t x = 0; x < depth.width; ++x) {
+            const size_t i = size_t(y) * depth.width + x;
+            if (std::isnan(pos[i].x)) continue; // sky
+            f(x, y, i, pos[i], limitsIn(limits, viewBuckets(pos, depth, x, y)));
+        }
+}
+
 } // namespace
 
 ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
@@ -266,7 +281,6 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
     const glm::dmat4 inverse = inverseShadingViewProjection(cam, depth.width, depth.height);
     const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
     const double epsPixels = snappedPositionPixels(subPixelBits);
-    const std::vector<BrdfLimits> limits = brdfLimits(scene);
     const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
     const SplitLights lights = splitLights(scene);
     // The allowance of a shaded point p (camera-relative) on a surface with BRDF limits b.
@@ -283,12 +297,8 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
         }
         return allowance;
     };
-    for (uint32_t y = 0; y < depth.height; ++y)
-        for (uint32_t x = 0; x < depth.width; ++x) {
-            const size_t i = size_t(y) * depth.width + x;
-            const glm::dvec3 p = pos[i];
-            if (std::isnan(p.x)) continue; // sky
-            const BrdfLimits b = limitsIn(limits, viewBuckets(pos, depth, x, y));
+    forEachSurfacePixel(scene, depth, pos, [&](uint32_t x, uint32_t y, size_t i,
+                                               const glm::dvec3& p, const BrdfLimits& b) {
             double allowance = allowanceAt(p, b);
             // Under MSAA each sample is shaded at its own point: where the sample's ray meets
             // the plane the neighbours span (a light may reach a sample and no pixel centre).
@@ -304,7 +314,7 @@ ImageR32 positionFromDepthAllowance(const Scene& scene, const ImageR32& depth,
                 }
             }
             out.r[i] = float(allowance);
-        }
+        });
     return out;
 }
 
@@ -312,17 +322,12 @@ ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& de
     ReflectedLightBounds out{{depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)},
                              {depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)}};
     const Camera& cam = scene.camera;
-    const std::vector<BrdfLimits> limits = brdfLimits(scene);
     const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
     const glm::dmat4 view = viewRotation(cam);
     const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
     const SplitLights lights = splitLights(scene);
-    for (uint32_t y = 0; y < depth.height; ++y)
-        for (uint32_t x = 0; x < depth.width; ++x) {
-            const size_t i = size_t(y) * depth.width + x;
-            const glm::dvec3 p = pos[i];
-            if (std::isnan(p.x)) continue; // sky
-            const BrdfLimits b = limitsIn(limits, viewBuckets(pos, depth, x, y));
+    forEachSurfacePixel(scene, depth, pos, [&](uint32_t, uint32_t, size_t i, const glm::dvec3& p,
+                                               const BrdfLimits& b) {
             // A sample of the pixel lies within one pixel width of its centre's point.
             const double footprint = pixelPerDepth * -(view * glm::dvec4(p, 1.0)).z;
             // Sum of intensity * window / max(d, dmin)^2 (window <= 1).
@@ -335,7 +340,7 @@ ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& de
             }
             out.value.r[i] = float(light * b.maxValue);
             out.lipschitz.r[i] = float(light * b.lipschitz);
-        }
+        });
     return out;
 }
 
