@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <CLI/CLI.hpp>
 
 #include "compare/commands.h"
 #include "compare/compare.h"

@@ -3,6 +3,7 @@
 // what it left out). --print-camera: the scene's camera as a camera file.
 #include <cstdio>
 #include <memory>
+#include <CLI/CLI.hpp>
 
 #include "compare/cli_common.h"
 #include "compare/commands.h"

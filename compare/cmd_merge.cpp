@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <CLI/CLI.hpp>
 
 #include "compare/commands.h"
 #include "compare/report_json.h"

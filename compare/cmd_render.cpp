@@ -3,6 +3,7 @@
 // (camera.json, a --camera file).
 #include <cstdio>
 #include <memory>
+#include <CLI/CLI.hpp>
 
 #include "compare/cli_common.h"
 #include "compare/commands.h"

@@ -1,5 +1,6 @@
 // triptych stress: the command line of the stiff and extreme case suite (docs/stress.md).
 #include <cstdio>
+#include <CLI/CLI.hpp>
 
 #include "compare/commands.h"
 #include "compare/stress_run.h"

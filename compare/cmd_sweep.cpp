@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <CLI/CLI.hpp>
 
 #include "compare/reference_cache.h"
 #include "compare/commands.h"
@@ -21,6 +22,7 @@
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/render/view_settings.h"
+#include "core/util/clock.h"
 #include "core/util/files.h"
 
 namespace tp::cli {
@@ -151,7 +153,7 @@ struct Progress {
         const double left =
             double(references - referencesDone) * (referencesDone ? perRef : perRun) +
             double(pipelinesTotal - pipelinesDone) * perRun;
-        const double spent = std::chrono::duration<double>(Clock::now() - start).count();
+        const double spent = secondsSince(start);
         const int filled = int(30 * done / std::max<size_t>(1, total));
         std::fprintf(
             stderr, "[%s%s] %zu/%zu %s %d lights %s %ux: %s (%.1f s), %.0f s spent, ~%.0f s left\n",
@@ -312,7 +314,7 @@ struct GroupRunner {
             if (!owned) continue; // another shard's row: its figures are that shard's
             rows.push_back(measureRun(name, lights, s, result, ref, ctx));
             SweepRow& row = rows.back();
-            row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            row.seconds = secondsSince(start);
             row.lightsHash = lightsHash;
             row.runIndex = index;
             if (isRef) row.referenceCache = referenceCacheJson(cache);

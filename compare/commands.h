@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "core/cli/cli_fwd.h"
 
 #include "core/cli/command.h"
 

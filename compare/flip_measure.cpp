@@ -2,6 +2,7 @@
 #include "compare/flip_measure.h"
 
 #include <cmath>
+#include <CLI/CLI.hpp>
 
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"

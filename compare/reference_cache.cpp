@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+#include <CLI/CLI.hpp>
 
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"

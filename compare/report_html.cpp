@@ -37,6 +37,15 @@ bool ok(const json& outcome) {
     return outcome["status"] == "ok";
 }
 
+Result<std::string> figure(const std::string& outDir, const std::string& file,
+                           const std::string& caption, const std::string& attributes) {
+    Result<std::string> bytes = readWholeFile(outDir + "/" + file);
+    if (!bytes) return Error{bytes.error()};
+    return "<figure><img alt=\"" + escapeXml(file) + "\"" + attributes +
+           " src=\"data:image/png;base64," + base64(*bytes) + "\"><figcaption>" + caption +
+           "</figcaption></figure>\n";
+}
+
 } // namespace html
 
 using namespace html;
@@ -88,16 +97,6 @@ std::string header(const json& r) {
     for (const json& m : r["validation_messages"])
         h += "<div class=\"failed\">validation: " + esc(m) + "</div>\n";
     return h;
-}
-
-// `attributes`: more of the <img> tag, e.g. the hooks of the flip script (report_viewer_js.h).
-Result<std::string> figure(const std::string& outDir, const std::string& file,
-                           const std::string& caption, const std::string& attributes = "") {
-    Result<std::string> bytes = readWholeFile(outDir + "/" + file);
-    if (!bytes) return Error{bytes.error()};
-    return "<figure><img alt=\"" + escapeXml(file) + "\"" + attributes +
-           " src=\"data:image/png;base64," + base64(*bytes) + "\"><figcaption>" + caption +
-           "</figcaption></figure>\n";
 }
 
 Result<std::string> imagesSection(const json& r, const std::string& outDir) {

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/util/result.h"
+
 namespace tp::cli::html {
 
 std::string esc(const nlohmann::json& j);        // XML-escaped text of a value
@@ -13,6 +15,11 @@ double frameMedian(const nlohmann::json& outcome);
 bool ok(const nlohmann::json& outcome);
 // A pooled FLIP value of a pipeline, null when FLIP was not measured.
 nlohmann::json flipValue(const nlohmann::json& p, const char* kind, const char* key);
+
+// <figure> of the PNG outDir/file inlined as a data URI, with its caption; `attributes`: more
+// of the <img> tag, e.g. the hooks of the flip script (report_viewer_js.h).
+Result<std::string> figure(const std::string& outDir, const std::string& file,
+                           const std::string& caption, const std::string& attributes = "");
 
 std::string summaryTable(const nlohmann::json& r);
 bool hasCenterReference(const nlohmann::json& r);

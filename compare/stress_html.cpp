@@ -5,36 +5,35 @@
 #include <sstream>
 
 #include "compare/report_html.h"
+#include "compare/report_html_parts.h"
 #include "compare/stress_report.h"
 #include "compare/svg_plot.h"
+#include "core/render/pipeline_colour.h"
 
 namespace tp::cli {
 namespace {
 
 using nlohmann::json;
+using html::esc;
+using html::figure;
 
 // After reportPageStyle(): verdict cells and a three-column image grid.
-const char* kStyle = R"(
+const char* kStressStyle = R"(
 td.pass{background:#e3f6e3}td.fail{background:#fde2e2;font-weight:bold}
 .grid{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:10px;max-width:1000px}
 summary{font-weight:normal}
+.sw{display:inline-block;width:10px;height:10px;margin-right:5px;border-radius:2px}
 )";
 
-std::string esc(const json& j) {
-    return escapeXml(j.is_string() ? j.get<std::string>() : j.dump());
-}
-std::string num(const json& j) {
-    return j.is_number() ? formatNumber(j.get<double>()) : "&ndash;";
+// A pipeline's name behind a swatch of its colour on every page (core/render/pipeline_colour.h).
+std::string pipelineName(const json& name) {
+    const std::string n = name.get<std::string>();
+    return std::string("<span class=\"sw\" style=\"background:") + paletteHex(pipelineColour(n)) +
+           "\"></span>" + escapeXml(n);
 }
 
-Result<std::string> figure(const std::string& outDir, const std::string& file,
-                           const std::string& caption) {
-    std::ifstream in(outDir + "/" + file, std::ios::binary);
-    if (!in) return Error{outDir + "/" + file + ": cannot read for stress.html"};
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return "<figure><img alt=\"" + escapeXml(file) + "\" src=\"data:image/png;base64," +
-           base64(ss.str()) + "\"><figcaption>" + caption + "</figcaption></figure>\n";
+std::string num(const json& j) {
+    return j.is_number() ? formatNumber(j.get<double>()) : "&ndash;";
 }
 
 const json* checkNamed(const json& p, const std::string& name) {
@@ -59,7 +58,7 @@ std::string matrix(const json& r) {
         "&minus; reference| / its derived bound.</p>\n<table><tr><th class=\"l\">case</th>";
     if (r["cases"].empty()) return h + "</tr></table>\n";
     for (const json& p : r["cases"][0]["pipelines"])
-        h += "<th>" + esc(p["name"]) + "</th>";
+        h += "<th>" + pipelineName(p["name"]) + "</th>";
     h += "</tr>\n";
     for (const json& c : r["cases"]) {
         h += "<tr><td class=\"l\"><a href=\"#" + esc(c["name"]) + "\">" + esc(c["name"]) +
@@ -88,7 +87,7 @@ std::string caseTable(const json& c) {
         "class=\"l\">beyond 65,504</th><th>depth px &ne; ref</th><th class=\"l\">failed "
         "checks</th></tr>\n";
     for (const json& p : c["pipelines"]) {
-        t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>" + verdictCell(p);
+        t += "<tr><td class=\"l\">" + pipelineName(p["name"]) + "</td>" + verdictCell(p);
         if (p["status"] != "ok") {
             t += "<td colspan=\"9\" class=\"l\">did not run: " + esc(p.value("error", json(""))) +
                  "</td></tr>\n";
@@ -175,7 +174,7 @@ Result<std::string> stressHtml(const json& r, const std::string& outDir) {
     std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta "
                     "charset=\"utf-8\"><title>triptych stress</title>\n<style>";
     h += reportPageStyle();
-    h += kStyle;
+    h += kStressStyle;
     const json& sum = r["summary"];
     h += "</style></head><body>\n<h1>triptych stress: " + esc(sum["passed"]) + " of " +
          esc(sum["cases"]) + " cases pass</h1>\n<p class=\"meta\">Device: <b>" +

@@ -19,6 +19,7 @@
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/scene_gpu.h"
+#include "core/util/clock.h"
 #include "core/util/files.h"
 
 namespace tp::cli {
@@ -153,7 +154,7 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c,
     r.pass = refUsable;
     for (const StressOutcome& p : r.pipelines)
         r.pass &= p.pass;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.seconds = secondsSince(start);
     return r;
 }
 

@@ -6,13 +6,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/render/pipeline_colour.h"
 #include "core/render/renderer.h"
 
 namespace tp::cli {
 namespace {
-
-const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
-                          "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
 std::string num(double v) {
     char buf[32];
@@ -77,13 +75,6 @@ std::string tickLabel(double v) {
 
 } // namespace
 
-int pipelineColour(const std::string& name) {
-    const std::vector<RendererEntry>& all = registeredRenderers();
-    for (size_t i = 0; i < all.size(); ++i)
-        if (all[i].name == name) return int(i);
-    return -1;
-}
-
 std::string escapeXml(const std::string& s) {
     std::string out;
     out.reserve(s.size());
@@ -138,8 +129,7 @@ std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& 
                       "\" font-family=\"sans-serif\">\n";
     double y = top;
     for (size_t gi = 0; gi < groups.size(); ++gi) {
-        const char* colour = kPalette[size_t(groups[gi].colour >= 0 ? groups[gi].colour : int(gi)) %
-                                      std::size(kPalette)];
+        const char* colour = paletteHex(groups[gi].colour >= 0 ? groups[gi].colour : int(gi));
         svg += text(4, y + 13, groups[gi].title, "start", 13, " font-weight=\"bold\"");
         y += rowH;
         for (const auto& [label, value] : groups[gi].bars) {
@@ -160,7 +150,7 @@ namespace {
 // Series si's colour: its entry of `colours` when given, else its own index.
 const char* seriesColour(size_t si, const std::vector<int>& colours) {
     const int c = si < colours.size() && colours[si] >= 0 ? colours[si] : int(si);
-    return kPalette[size_t(c) % std::size(kPalette)];
+    return paletteHex(c);
 }
 
 // A series sharing its colour with earlier ones gets a dashed line (the n-th such: dash n).
@@ -241,8 +231,7 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
     for (size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& p = points[i];
         const char* colour = p.series >= 0 ? colourOf(size_t(p.series))
-                             : kPalette[(p.colour >= 0 ? size_t(p.colour) : i) %
-                                        std::size(kPalette)];
+                             : paletteHex(p.colour >= 0 ? p.colour : int(i));
         double x = px(p.x), y = py(p.y);
         if (p.ring)
             svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) +

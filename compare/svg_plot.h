@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/render/pipeline_colour.h" // pipelineColour: a series' palette index
+
 namespace tp::cli {
 
 struct BarGroup {
@@ -11,10 +13,6 @@ struct BarGroup {
     std::vector<std::pair<std::string, double>> bars; // label, value
     int colour = -1;                                  // palette index; -1: the group's index
 };
-
-// The palette index of a pipeline (or the reference): its place in the registry's order, so
-// it has one colour on every page (report, sweep); -1 for a name nothing registered.
-int pipelineColour(const std::string& name);
 
 // One bar per value on a shared linear scale (0 .. largest value), grouped under titles;
 // each bar is labelled on the left and its value (with `unit`) on the right.

@@ -2,6 +2,8 @@
 // where it does not. Each help text says what the option does, which pipelines read it
 // and its default; the knob options come from the registered renderers' schemas.
 #include "compare/reference_cache.h"
+
+#include <CLI/CLI.hpp>
 #include "compare/sweep.h"
 
 #include "compare/flip_measure.h"

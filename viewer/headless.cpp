@@ -9,6 +9,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
+#include "core/util/clock.h"
 #include "viewer/ui_renderer.h"
 #include "viewer/view_loop.h"
 
@@ -38,10 +39,6 @@ struct Target {
         image.reset();
     }
 };
-
-double msSince(std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-}
 
 } // namespace
 

@@ -5,14 +5,10 @@
 #include "core/cli/scene_input.h"
 #include "core/render/scene_gpu.h"
 #include "core/scene/lights.h"
+#include "core/util/clock.h"
 
 namespace tp::view {
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
 
 } // namespace
 

@@ -12,6 +12,7 @@
 #include "core/image/image_io.h"
 #include "core/render/renderer.h"
 #include "core/render/view_settings.h"
+#include "core/util/clock.h"
 #include "core/util/files.h"
 #include "viewer/keys.h"
 #include "viewer/viewer_app.h"
@@ -115,8 +116,7 @@ void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {
 
 // False when the current wait is over (the next line may run).
 bool ScriptRunner::stillWaiting(ViewerApp& app, ScriptMouse& mouse) {
-    double waited =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+    double waited = secondsSince(waitStart_);
     if (waited > waitLimit_)
         fail(*current_,
              "still waiting after " + std::to_string(int(waitLimit_)) + " s (--wait-limit)");
@@ -269,8 +269,7 @@ void ScriptRunner::applyCamera(ViewerApp& app, const ScriptLine& line) {
     if (!app.sceneLoaded()) { // a move needs the scene's camera: run this line again next frame
         if (!app.lastError().empty() && app.settled())
             fail(line, "no scene to move in: " + app.lastError());
-        double waited =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+        double waited = secondsSince(waitStart_);
         if (waited > waitLimit_)
             fail(line, "the scene did not load in " + std::to_string(int(waitLimit_)) + " s");
         --next_;

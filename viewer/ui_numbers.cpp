@@ -8,6 +8,7 @@
 #include <imgui_stdlib.h>
 
 #include "core/reference/reference_renderer.h"
+#include "viewer/ui_colour.h"
 #include "viewer/ui_panels.h"
 #include "viewer/viewer_app.h"
 
@@ -26,6 +27,7 @@ Spread spreadOf(const std::deque<double>& values) {
 }
 
 void timingGraph(const std::string& pipeline, const TimingHistory& h, const std::string& device) {
+    pipelineSwatch(pipeline);
     ImGui::Text("%s: GPU ms over the last %zu renders on %s", pipeline.c_str(),
                 h.passes.count("frame") ? h.passes.at("frame").size() : size_t(0), device.c_str());
     if (ImGui::BeginTable(("timing" + pipeline).c_str(), 4,
@@ -47,8 +49,10 @@ void timingGraph(const std::string& pipeline, const TimingHistory& h, const std:
     }
     if (h.passes.count("frame")) {
         std::vector<float> values(h.passes.at("frame").begin(), h.passes.at("frame").end());
+        ImGui::PushStyleColor(ImGuiCol_PlotLines, pipelineImColour(pipeline));
         ImGui::PlotLines(("frame ms##" + pipeline).c_str(), values.data(), int(values.size()), 0,
                          nullptr, 0.0f, FLT_MAX, ImVec2(0, 48));
+        ImGui::PopStyleColor();
     }
 }
 

@@ -11,6 +11,7 @@
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
 #include "core/render/view_settings.h"
+#include "viewer/ui_colour.h"
 #include "viewer/viewer_app.h"
 
 namespace tp::view {
@@ -18,8 +19,10 @@ namespace {
 
 bool pipelineCombo(const char* label, std::string& value) {
     bool changed = false;
+    pipelineSwatch(value);
     if (ImGui::BeginCombo(label, value.c_str())) {
         for (const RendererEntry& e : registeredRenderers()) {
+            pipelineSwatch(e.name);
             if (ImGui::Selectable(e.name.c_str(), e.name == value)) {
                 value = e.name;
                 changed = true;

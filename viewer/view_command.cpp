@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <imgui.h>
+#include <CLI/CLI.hpp>
 
 #include "viewer/view_command.h"
 

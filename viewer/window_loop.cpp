@@ -12,6 +12,7 @@
 #include <imgui.h>
 
 #include "core/gpu/context.h"
+#include "core/util/clock.h"
 #include "viewer/keys.h"
 #include "viewer/swapchain.h"
 #include "viewer/ui_renderer.h"
@@ -70,9 +71,7 @@ std::string frameLoop(GLFWwindow* window, GpuContext& ctx, UiRenderer& ui, Swapc
             glfwGetFramebufferSize(window, &fw, &fh);
             swapchain.draw(ui, ImGui::GetDrawData(), uint32_t(fw), uint32_t(fh));
             // The frame's work, present included (FIFO: paced by the display where it has one).
-            double frameMs =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count();
+            double frameMs = msSince(start);
             if (runner) runner->afterFrame(app, nullptr, frameMs);
             // On a CPU device the renders run on the same cores: leave them the CPU while they
             // work.

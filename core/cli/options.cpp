@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <CLI/CLI.hpp>
 
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "core/cli/cli_fwd.h"
 
 #include "core/gpu/context.h"
 #include "core/render/renderer.h"

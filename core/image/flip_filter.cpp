@@ -7,10 +7,10 @@
 #include <numbers>
 #include <thread>
 
+#include "core/util/math.h"
+
 namespace tp::flip {
 namespace {
-
-constexpr float kPi = std::numbers::pi_v<float>;
 
 struct Gaussian {
     float a, b; // amplitude and scale (degrees^2) of a sqrt(pi/b) exp(-pi^2 x^2 / b)

@@ -12,11 +12,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/util/math.h"
+
 namespace tp {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr size_t kMaxLights = 1000000;
 // A lights file is at most this long: a million lights written by lightsToJson are ~150 MB.
 constexpr uintmax_t kMaxLightsFileBytes = uintmax_t(512) << 20;

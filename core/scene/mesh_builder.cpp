@@ -4,11 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "core/util/math.h"
+
 namespace tp::procgen {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // Any unit vector perpendicular to n.
 glm::vec3 perpendicular(const glm::vec3& n) {

@@ -9,12 +9,12 @@
 #include "core/scene/mesh_builder.h"
 #include "core/scene/procedural_parts.h"
 #include "core/scene/procedural_textures.h"
+#include "core/util/math.h"
 
 namespace tp::procgen {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr float kEmbed = 0.05f; // overlap into walls, so that no faces meet back to back in a plane
 using glm::vec2;
 using glm::vec3;

@@ -5,11 +5,11 @@
 #include <functional>
 #include <string>
 
+#include "core/util/math.h"
+
 namespace tp::procgen {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // A texel's colour (sRGB or linear as the texture says) and alpha, in [0, 1].
 using TexelFn = std::function<glm::vec4(int x, int y)>;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "core/render/camera_file.h"
+#include "temp_path.h"
 
 using namespace tp;
 using nlohmann::json;
@@ -14,10 +15,6 @@ using nlohmann::json;
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path tempPath(const std::string& name) {
-    return fs::temp_directory_path() / ("triptych_camera_" + name + "_" + std::to_string(getpid()));
-}
 
 Camera oddCamera() {
     Camera c;
@@ -109,7 +106,7 @@ TEST(CameraFile, FieldsAreNamedAsDocumented) {
 }
 
 TEST(CameraFile, FileRoundTrip) {
-    const std::string path = tempPath("roundtrip.json");
+    const std::string path = testTempPath("camera_roundtrip.json");
     ASSERT_TRUE(writeCameraFile(path, oddCamera()).ok());
     Result<Camera> back = readCameraFile(path);
     ASSERT_TRUE(back.ok()) << back.error();
@@ -227,9 +224,9 @@ TEST(CameraFile, RefusesBadFiles) {
         EXPECT_NE(c.error().find(expected), std::string::npos) << c.error();
         EXPECT_EQ(c.error().find('\n'), std::string::npos) << c.error();
     };
-    refused(tempPath("absent.json").string(), "camera file not found");
+    refused(testTempPath("camera_absent.json").string(), "camera file not found");
     refused(fs::temp_directory_path().string(), "not a regular file");
-    const fs::path bad = tempPath("bad.json");
+    const fs::path bad = testTempPath("camera_bad.json");
     std::ofstream(bad) << "{\"schema\": \"triptych.camera/1\", ";
     refused(bad.string(), "not valid JSON");
     std::ofstream(bad, std::ios::trunc) << "";
@@ -239,5 +236,6 @@ TEST(CameraFile, RefusesBadFiles) {
     std::ofstream(bad, std::ios::trunc) << "{\"schema\":\"triptych.camera/1\"}";
     refused(bad.string(), "missing \"position\"");
     fs::remove(bad);
-    EXPECT_FALSE(writeCameraFile(tempPath("no/such/dir/cam.json").string(), oddCamera()).ok());
+    EXPECT_FALSE(
+        writeCameraFile(testTempPath("camera_no/such/dir/cam.json").string(), oddCamera()).ok());
 }

@@ -13,6 +13,7 @@
 #include "core/cli/scene_input.h"
 #include "core/render/camera_file.h"
 #include "core/scene/gltf_loader.h"
+#include "temp_path.h"
 
 using namespace tp;
 using nlohmann::json;
@@ -20,11 +21,6 @@ using nlohmann::json;
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path tempPath(const std::string& name) {
-    return fs::temp_directory_path() /
-           ("triptych_camera_source_" + std::to_string(getpid()) + "_" + name);
-}
 
 // One triangle (its buffer a data: URI), and `cameras` on nodes after the mesh's node.
 fs::path writeTriangle(const std::string& name, const json& cameras, const json& cameraNodes) {
@@ -50,7 +46,7 @@ fs::path writeTriangle(const std::string& name, const json& cameras, const json&
         g["nodes"].push_back(node);
         g["scenes"][0]["nodes"].push_back(g["nodes"].size() - 1);
     }
-    const fs::path path = tempPath(name + ".gltf");
+    const fs::path path = testTempPath("camera_source_" + name + ".gltf");
     std::ofstream(path) << g.dump();
     return path;
 }
@@ -107,7 +103,7 @@ TEST(CameraSource, LoadSceneRecordsWhereTheCameraCameFrom) {
     Camera view = builtin;
     view.position = {2.0f, 3.0f, 4.0f};
     view.zfar = 500.0f;
-    o.cameraFile = tempPath("view.json").string();
+    o.cameraFile = testTempPath("camera_source_view.json").string();
     ASSERT_TRUE(writeCameraFile(o.cameraFile, view).ok());
     for (const std::string& scene : {std::string("builtin:courtyard-small"), gltf}) {
         o.scene = scene;

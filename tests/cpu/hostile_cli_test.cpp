@@ -1,6 +1,7 @@
 // The CLI's shared option checks (core/cli/options.h) on hostile values, without a device; the
 // commands end to end are in tests/cli/hostile_input.sh.
 #include <gtest/gtest.h>
+#include <CLI/CLI.hpp>
 
 #include "core/cli/options.h"
 

@@ -1,4 +1,4 @@
-// One colour per pipeline on every page (compare/svg_plot.h: pipelineColour): each registered
+// One colour per pipeline on every page (core/render/pipeline_colour.h): each registered
 // renderer has its own palette index, the report's bar groups and the sweep's series draw a
 // pipeline with the same colour, and series of one pipeline are told apart by dashes.
 #include <gtest/gtest.h>
@@ -24,13 +24,13 @@ std::set<std::string> fills(const std::string& svg) {
 TEST(PipelineColour, EachRendererHasItsOwnAndEveryPageUsesIt) {
     std::set<int> seen;
     for (const RendererEntry& e : registeredRenderers()) {
-        const int c = cli::pipelineColour(e.name);
+        const int c = pipelineColour(e.name);
         EXPECT_GE(c, 0) << e.name;
         EXPECT_TRUE(seen.insert(c).second) << e.name << " shares a colour";
     }
-    EXPECT_EQ(cli::pipelineColour("no such pipeline"), -1);
+    EXPECT_EQ(pipelineColour("no such pipeline"), -1);
     const std::string name = registeredRenderers().back().name;
-    const int c = cli::pipelineColour(name);
+    const int c = pipelineColour(name);
     const std::string bars = cli::barChartSvg({{name, {{"frame", 2.0}}, c}}, "ms");
     const std::string plot = cli::scatterLogLogSvg(
         {{"", 1, 1, 0}, {"", 2, 2, 0}, {"", 1, 3, 1}, {"", 2, 4, 1}}, "x", "y", 720, 440,

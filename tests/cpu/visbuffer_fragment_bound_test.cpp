@@ -13,7 +13,7 @@
 namespace tp {
 namespace {
 
-constexpr uint32_t kW = 64, kH = 48;
+constexpr uint32_t kBoundWidth = 64, kBoundHeight = 48;
 
 double edge(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
     return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
@@ -21,8 +21,8 @@ double edge(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
 
 uint32_t centresInside(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
     uint32_t n = 0;
-    for (uint32_t y = 0; y < kH; ++y)
-        for (uint32_t x = 0; x < kW; ++x) {
+    for (uint32_t y = 0; y < kBoundHeight; ++y)
+        for (uint32_t x = 0; x < kBoundWidth; ++x) {
             const glm::dvec2 p(x + 0.5, y + 0.5);
             const double e0 = edge(a, b, p), e1 = edge(b, c, p), e2 = edge(c, a, p);
             const double eps = 1e-9;
@@ -46,7 +46,7 @@ TEST(VisbufferFragmentBound, NeverBelowTheCentresATriangleContains) {
             b = glm::vec2(pos(rng), pos(rng));
             c = glm::vec2(pos(rng), pos(rng));
         }
-        const double bound = vis::triangleCentreBound(a, b, c, kW, kH);
+        const double bound = vis::triangleCentreBound(a, b, c, kBoundWidth, kBoundHeight);
         const uint32_t count = centresInside(a, b, c);
         ASSERT_GE(bound, double(count)) << i;
         if (count >= 400) {
@@ -56,12 +56,12 @@ TEST(VisbufferFragmentBound, NeverBelowTheCentresATriangleContains) {
 }
 
 TEST(VisbufferFragmentBound, CountsTheScreenOnceForAFullScreenPair) {
-    const glm::vec2 a(0, 0), b(kW, 0), c(kW, kH), d(0, kH);
-    const double both = vis::triangleCentreBound(a, b, c, kW, kH) +
-                        vis::triangleCentreBound(a, c, d, kW, kH);
-    EXPECT_GE(both, double(kW) * kH);
-    EXPECT_LE(both, double(kW) * kH * 1.1 + 2 * (kW + kH)); // the shared diagonal twice
-    EXPECT_EQ(vis::triangleCentreBound({-10, -10}, {-5, -10}, {-5, -1}, kW, kH), 0.0);
+    const glm::vec2 a(0, 0), b(kBoundWidth, 0), c(kBoundWidth, kBoundHeight), d(0, kBoundHeight);
+    const double both = vis::triangleCentreBound(a, b, c, kBoundWidth, kBoundHeight) +
+                        vis::triangleCentreBound(a, c, d, kBoundWidth, kBoundHeight);
+    EXPECT_GE(both, double(kBoundWidth) * kBoundHeight);
+    EXPECT_LE(both, double(kBoundWidth) * kBoundHeight * 1.1 + 2 * (kBoundWidth + kBoundHeight)); // the shared diagonal twice
+    EXPECT_EQ(vis::triangleCentreBound({-10, -10}, {-5, -10}, {-5, -1}, kBoundWidth, kBoundHeight), 0.0);
 }
 
 } // namespace

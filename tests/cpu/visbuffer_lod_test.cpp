@@ -15,7 +15,7 @@
 namespace tp {
 namespace {
 
-constexpr uint32_t kW = 96, kH = 64;
+constexpr uint32_t kLodWidth = 96, kLodHeight = 64;
 
 Scene texturedFloor(bool textured) {
     Scene s;
@@ -54,13 +54,13 @@ struct Floor {
     glm::dvec3 eye;
     explicit Floor(const Camera& cam)
         : proj(glm::dmat4(
-              reverseZPerspective(cam.yfov, float(kW) / float(kH), cam.znear, cam.zfar))),
+              reverseZPerspective(cam.yfov, float(kLodWidth) / float(kLodHeight), cam.znear, cam.zfar))),
           view(viewRotation(cam)), eye(cam.position) {
         invViewProj = glm::inverse(proj * view);
     }
     glm::dvec3 hit(double fx, double fy) const {
         const glm::dvec4 h =
-            invViewProj * glm::dvec4(fx / kW * 2.0 - 1.0, 1.0 - fy / kH * 2.0, 0.5, 1.0);
+            invViewProj * glm::dvec4(fx / kLodWidth * 2.0 - 1.0, 1.0 - fy / kLodHeight * 2.0, 0.5, 1.0);
         const glm::dvec3 dir = glm::normalize(glm::dvec3(h) / h.w);
         if (dir.y >= 0.0) return glm::dvec3(std::numeric_limits<double>::quiet_NaN());
         return dir * (-eye.y / dir.y);
@@ -70,13 +70,13 @@ struct Floor {
         return {p.x, p.z};
     }
     ImageR32 depth() const {
-        ImageR32 d{kW, kH, std::vector<float>(size_t(kW) * kH, 0.0f)};
-        for (uint32_t y = 0; y < kH; ++y)
-            for (uint32_t x = 0; x < kW; ++x) {
+        ImageR32 d{kLodWidth, kLodHeight, std::vector<float>(size_t(kLodWidth) * kLodHeight, 0.0f)};
+        for (uint32_t y = 0; y < kLodHeight; ++y)
+            for (uint32_t x = 0; x < kLodWidth; ++x) {
                 const glm::dvec3 p = hit(x + 0.5, y + 0.5);
                 if (std::isnan(p.x)) continue;
                 const glm::dvec4 clip = proj * view * glm::dvec4(p, 1.0);
-                d.r[size_t(y) * kW + x] = float(clip.z / clip.w);
+                d.r[size_t(y) * kLodWidth + x] = float(clip.z / clip.w);
             }
         return d;
     }
@@ -103,12 +103,12 @@ TEST(VisbufferLod, AnalyticLevelWithinTheBoundOfEveryQuadDerivative) {
     const ImageR32 bound = vis::levelChangeBounds(scene, depth, 8);
     int checked = 0;
     double worstRatio = 0;
-    for (uint32_t y = 1; y + 2 < kH; ++y)
-        for (uint32_t x = 1; x + 2 < kW; ++x) {
+    for (uint32_t y = 1; y + 2 < kLodHeight; ++y)
+        for (uint32_t x = 1; x + 2 < kLodWidth; ++x) {
             bool allFloor = true; // the pixel's quad and the neighbours the bound reads
             for (int j = -1; j <= 2; ++j)
                 for (int i = -1; i <= 2; ++i)
-                    allFloor &= depth.r[size_t(int(y) + j) * kW + size_t(int(x) + i)] > 0.0f;
+                    allFloor &= depth.r[size_t(int(y) + j) * kLodWidth + size_t(int(x) + i)] > 0.0f;
             if (!allFloor) continue;
             const double cx = x + 0.5, cy = y + 0.5, h = 1e-4;
             const glm::dvec2 adx = (floor.uv(cx + h, cy) - floor.uv(cx - h, cy)) / (2 * h);
@@ -119,7 +119,7 @@ TEST(VisbufferLod, AnalyticLevelWithinTheBoundOfEveryQuadDerivative) {
             const glm::dvec2 fineDy = floor.uv(cx, y0 + 1) - floor.uv(cx, y0);
             const glm::dvec2 coarseDx = floor.uv(x0 + 1, y0) - floor.uv(x0, y0);
             const glm::dvec2 coarseDy = floor.uv(x0, y0 + 1) - floor.uv(x0, y0);
-            const double b = bound.r[size_t(y) * kW + x];
+            const double b = bound.r[size_t(y) * kLodWidth + x];
             for (double hw : {level(fineDx, fineDy), level(coarseDx, coarseDy)}) {
                 EXPECT_LE(std::abs(hw - analytic), b) << "pixel " << x << "," << y;
                 worstRatio = std::max(worstRatio, std::abs(hw - analytic) / b);

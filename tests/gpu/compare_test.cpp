@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include "compare/commands.h"
 #include "compare/compare.h"
@@ -23,18 +24,13 @@
 #include "core/image/tonemap.h"
 #include "core/render/camera_file.h"
 #include "core/render/renderer.h"
+#include "temp_path.h"
 
 namespace tp::test {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-std::string freshDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("triptych_" + name + "_" + std::to_string(getpid()));
-    fs::remove_all(p);
-    return p.string();
-}
 
 std::string readText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

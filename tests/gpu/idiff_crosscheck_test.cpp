@@ -29,6 +29,7 @@
 #include "compare/compare.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
+#include "temp_path.h"
 
 namespace tp::test {
 namespace {
@@ -174,11 +175,10 @@ std::pair<ImageRGBA, ImageRGBA> constructedPair(float range, float noise, bool r
     return {test, ref};
 }
 
-std::string freshDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("triptych_" + name + "_" + std::to_string(getpid()));
-    fs::remove_all(p);
+std::string freshCreatedDir(const std::string& name) {
+    std::string p = freshDir(name);
     fs::create_directories(p);
-    return p.string();
+    return p;
 }
 
 } // namespace
@@ -186,7 +186,7 @@ std::string freshDir(const std::string& name) {
 TEST(IdiffCrossCheck, ConstructedPairs) {
     if (!idiffAvailable())
         GTEST_SKIP() << "idiff (Debian openimageio-tools) not on PATH: metrics not cross-checked";
-    const std::string dir = freshDir("idiff_constructed");
+    const std::string dir = freshCreatedDir("idiff_constructed");
     struct Case {
         const char* name;
         float range, noise;
@@ -209,7 +209,7 @@ TEST(IdiffCrossCheck, ConstructedPairs) {
 TEST(IdiffCrossCheck, CompareRenders) {
     if (!idiffAvailable())
         GTEST_SKIP() << "idiff (Debian openimageio-tools) not on PATH: metrics not cross-checked";
-    const std::string dir = freshDir("idiff_renders");
+    const std::string dir = freshCreatedDir("idiff_renders");
     cli::CompareOptions o;
     o.scene.scene = "builtin:courtyard-small";
     o.scene.lightCount = 16;

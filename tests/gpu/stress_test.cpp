@@ -14,8 +14,11 @@
 #include <unistd.h>
 
 #include "compare/stress_run.h"
+#include "core/render/pipeline_colour.h"
 #include "core/render/renderer.h"
 #include "core/scene/stress_scenes.h"
+#include "core/util/files.h"
+#include "temp_path.h"
 
 namespace tp::test {
 namespace {
@@ -39,12 +42,6 @@ const std::map<std::string, std::string>& knownFlaky() {
     // batches: docs/deferred.md, "Tiled lighting").
     static const std::map<std::string, std::string> flaky = {};
     return flaky;
-}
-
-std::string freshDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("triptych_" + name + "_" + std::to_string(getpid()));
-    fs::remove_all(p);
-    return p.string();
 }
 
 json readJson(const std::string& path) {
@@ -105,6 +102,14 @@ TEST(Stress, EveryCaseGivesTodaysVerdicts) {
     std::vector<std::string> pipelines;
     for (const RendererEntry& e : registeredRenderers())
         if (e.name != "reference") pipelines.push_back(e.name);
+    // Each pipeline is named in the colour it has on every page (core/render/pipeline_colour.h).
+    Result<std::string> html = readWholeFile(o.out + "/stress.html");
+    ASSERT_TRUE(html.ok());
+    for (const std::string& name : pipelines)
+        EXPECT_NE(html->find(std::string("background:") + paletteHex(pipelineColour(name)) +
+                             "\"></span>" + name),
+                  std::string::npos)
+            << name;
     bool anyFail = false;
     for (const json& c : r["cases"]) {
         const std::string name = c["name"];
