@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
             tp::cli::addStressCommand(app, std::vector<std::string>(argv, argv + argc)),
             tp::cli::addRenderCommand(app),
             tp::cli::addInfoCommand(app),
+            tp::cli::addCalibrateCommand(app, std::vector<std::string>(argv, argv + argc)),
             tp::cli::addViewCommand(app, std::vector<std::string>(argv, argv + argc))};
         app.parse(argc, argv);
         for (auto& command : commands) {

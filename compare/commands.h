@@ -18,5 +18,7 @@ CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLin
 CommandRunner addStressCommand(CLI::App& app, std::vector<std::string> commandLine);
 // triptych merge: the shards of one `sweep --shard K/N` into the whole sweep's files.
 CommandRunner addMergeCommand(CLI::App& app);
+// triptych calibrate: the device's measured ceilings (docs/efficiency.md).
+CommandRunner addCalibrateCommand(CLI::App& app, std::vector<std::string> commandLine);
 
 } // namespace tp::cli

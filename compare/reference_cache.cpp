@@ -2,8 +2,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -11,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
 
+#include "compare/build_identity.h"
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"
 #include "core/image/image_io.h"
@@ -22,21 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr const char* kSchema = "triptych.reference-cache/1";
-
-// The running binary's bytes, hashed once: the build a cached image was made by.
-const std::string& buildHash() {
-    static const std::string hash = [] {
-        Fnv1a64 h;
-        std::ifstream in("/proc/self/exe", std::ios::binary);
-        std::vector<char> chunk(1 << 20);
-        while (in) {
-            in.read(chunk.data(), std::streamsize(chunk.size()));
-            h.bytes(chunk.data(), size_t(in.gcount()));
-        }
-        return h.hex();
-    }();
-    return hash;
-}
 
 // An image's size and pixels (RGBA or depth), as meta.json records them.
 template <class T> std::string pixelHash(uint32_t width, uint32_t height, const std::vector<T>& v) {
@@ -65,13 +49,6 @@ ImageR32 depthFromRgba(const ImageRGBA& image) {
     ImageR32 out{image.width, image.height, std::vector<float>(image.pixelCount())};
     for (size_t i = 0; i < out.r.size(); ++i)
         out.r[i] = image.rgba[i * 4];
-    return out;
-}
-
-std::string utcNow() {
-    const std::time_t t = std::time(nullptr);
-    char out[32];
-    std::strftime(out, sizeof out, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
     return out;
 }
 
@@ -131,13 +108,7 @@ RunResult runFromJson(const nlohmann::json& j) {
 
 } // namespace
 
-std::string defaultReferenceCacheDir() {
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        return std::string(xdg) + "/triptych/references";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::string(home) + "/.cache/triptych/references";
-    return "";
-}
+std::string defaultReferenceCacheDir() { return userCacheDir("references"); }
 
 std::string referenceCacheDir(const std::string& option, bool off) {
     return off ? "" : option.empty() ? defaultReferenceCacheDir() : option;

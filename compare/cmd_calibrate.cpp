@@ -1,0 +1,170 @@
+// triptych calibrate: this device's measured ceilings (core/calibrate/calibration.h) written
+// to a JSON file keyed by the device, its driver and the triptych build, and reused from it
+// by the next run with the same key (docs/efficiency.md). A file of another key, or one that
+// does not parse, is measured again and replaced, never trusted.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+#include <CLI/CLI.hpp>
+
+#include "compare/build_identity.h"
+#include "compare/cli_common.h"
+#include "compare/commands.h"
+#include "compare/scene_hash.h"
+#include "core/calibrate/calibration.h"
+#include "core/gpu/context.h"
+#include "core/util/files.h"
+
+namespace tp::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+constexpr const char* kSchema = "triptych.calibration/1";
+
+struct CalibrateOptions {
+    DeviceOptions device;
+    std::string out; // empty: the user's cache folder, named by the key
+    bool quick = false, force = false;
+    int repeats = 7;
+};
+
+// What a calibration is valid for: this device, driver and build, and the mode.
+json calibrationKey(const GpuContext& ctx, bool quick) {
+    return {{"device", ctx.info.name}, {"driver", ctx.info.driver}, {"type", ctx.info.type},
+            {"build_fnv1a64", buildHash()}, {"quick", quick}};
+}
+
+std::string keyHash(const json& key) {
+    Fnv1a64 h;
+    h.text(key.dump());
+    return h.hex();
+}
+
+json ceilingsToJson(const std::vector<Ceiling>& ceilings) {
+    json out = json::array();
+    for (const Ceiling& c : ceilings)
+        out.push_back({{"name", c.name}, {"unit", c.unit}, {"what", c.what}, {"median", c.median},
+                       {"min", c.min}, {"max", c.max}, {"median_ms", c.medianMs}, {"work", c.work},
+                       {"repeats", c.repeats}});
+    return out;
+}
+
+void printTable(const json& file) {
+    std::printf("%-14s %12s %12s %12s  %-9s  %s\n", "ceiling", "median", "min", "max", "unit", "what");
+    for (const json& c : file["ceilings"])
+        std::printf("%-14s %12.2f %12.2f %12.2f  %-9s  %s\n", c["name"].get<std::string>().c_str(),
+                    c["median"].get<double>(), c["min"].get<double>(), c["max"].get<double>(),
+                    c["unit"].get<std::string>().c_str(), c["what"].get<std::string>().c_str());
+    std::printf("on %s (%s), measured %s\n", file["key"]["device"].get<std::string>().c_str(),
+                file["key"]["driver"].get<std::string>().c_str(),
+                file["measured_at"].get<std::string>().c_str());
+}
+
+// The file at `path` when it is a calibration of `key` (every ceiling present); else nothing,
+// with `why` saying what was wrong ("" when there is no file).
+std::optional<json> reusable(const std::string& path, const json& key, std::string& why) {
+    if (!fs::exists(path)) return std::nullopt;
+    Result<std::string> text = readWholeFile(path);
+    json file = text ? json::parse(*text, nullptr, false) : json();
+    if (!text || file.is_discarded() || !file.is_object()) {
+        why = "not a readable calibration";
+        return std::nullopt;
+    }
+    if (file.value("schema", "") != kSchema || file.value("key", json()) != key) {
+        why = "made for another device, driver, build or mode";
+        return std::nullopt;
+    }
+    std::vector<std::string> names;
+    for (const json& c : file.value("ceilings", json::array()))
+        names.push_back(c.value("name", ""));
+    if (names != ceilingNames()) {
+        why = "its ceilings are not this build's";
+        return std::nullopt;
+    }
+    return file;
+}
+
+// Written beside its final name, then renamed: a reader never sees half a file.
+void writeAtomically(const std::string& path, const json& file) {
+    const fs::path target(path);
+    if (target.has_parent_path()) ensureDirectory(target.parent_path().string());
+    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+    std::ofstream(tmp) << file.dump(2) << "\n";
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) throw UsageError("calibrate: cannot write " + path + ": " + ec.message());
+}
+
+int runCalibrate(const CalibrateOptions& o, const std::vector<std::string>& commandLine) {
+    if (o.repeats < 1 || o.repeats > 1000) throw UsageError("calibrate: --repeats must be 1..1000");
+    std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    const json key = calibrationKey(*ctx, o.quick);
+    std::string path = o.out;
+    if (path.empty()) {
+        const std::string dir = userCacheDir("calibration");
+        if (dir.empty()) throw UsageError("calibrate: no cache folder (neither XDG_CACHE_HOME nor HOME): give --out FILE");
+        path = dir + "/" + keyHash(key) + ".json";
+    }
+    std::string why;
+    if (!o.force) {
+        if (std::optional<json> file = reusable(path, key, why)) {
+            std::fprintf(stderr, "triptych: calibration of %s reused from %s (measured %s; --force measures again)\n",
+                         ctx->info.name.c_str(), path.c_str(), (*file)["measured_at"].get<std::string>().c_str());
+            printTable(*file);
+            return 0;
+        }
+        if (!why.empty()) std::fprintf(stderr, "triptych: %s is %s: measuring again\n", path.c_str(), why.c_str());
+    }
+    std::fprintf(stderr, "triptych: calibrating %s (%s), %d repeats after a warm-up%s\n", ctx->info.name.c_str(),
+                 ctx->info.driver.c_str(), o.repeats, o.quick ? ", quick (small working sets)" : "");
+    CalibrationOptions co;
+    co.quick = o.quick;
+    co.repeats = uint32_t(o.repeats);
+    co.progress = [](const std::string& line) { std::fprintf(stderr, "triptych: %s\n", line.c_str()); };
+    const std::vector<Ceiling> ceilings = measureCeilings(*ctx, co);
+    const json file = {{"schema", kSchema}, {"key", key}, {"measured_at", utcNow()},
+                       {"repeats", o.repeats}, {"command", commandLine}, {"ceilings", ceilingsToJson(ceilings)}};
+    writeAtomically(path, file);
+    printTable(file);
+    std::fprintf(stderr, "triptych: wrote %s\n", path.c_str());
+    std::vector<std::string> messages = ctx->validationMessages();
+    if (!messages.empty()) {
+        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
+                     messages.front().c_str());
+        return 3;
+    }
+    return 0;
+}
+
+} // namespace
+
+CommandRunner addCalibrateCommand(CLI::App& app, std::vector<std::string> commandLine) {
+    auto o = std::make_shared<CalibrateOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "calibrate",
+        "Measure this device's ceilings (DRAM read/write/copy and cache bandwidth, FP32 FMA rate, "
+        "shared and global atomics) with compute microbenchmarks, and keep them in a JSON file "
+        "keyed by device, driver and triptych build; a later run with the same key reuses the "
+        "file (docs/efficiency.md). Exit 0 ok, 2 bad input, 3 validation messages");
+    addDeviceOptions(*cmd, o->device);
+    cmd->add_option("--out", o->out,
+                    "The calibration file (default: $XDG_CACHE_HOME/triptych/calibration/KEY.json, "
+                    "else ~/.cache/...). Reused when it holds this key, else measured and replaced");
+    cmd->add_flag("--quick", o->quick,
+                  "Small working sets and short loops (seconds on lavapipe): for tests; the DRAM "
+                  "figures then fit in a large cache and are not DRAM's");
+    cmd->add_option("--repeats", o->repeats, "Timed dispatches per ceiling, after one warm-up (median, min, max)")
+        ->capture_default_str();
+    cmd->add_flag("--force", o->force, "Measure again even when the file holds this key");
+    return [o, cmd, commandLine]() {
+        if (!cmd->parsed()) return -1;
+        return runCalibrate(*o, commandLine);
+    };
+}
+
+} // namespace tp::cli

@@ -1,0 +1,186 @@
+#include "core/calibrate/calibration.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "calibrate/calibrate_shared.h"
+#include "core/gpu/context.h"
+#include "core/gpu/descriptors.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/profiler.h"
+#include "core/gpu/resources.h"
+#include "core/gpu/vk_check.h"
+
+namespace tp {
+namespace {
+
+using gpu::CalPush;
+
+// One microbenchmark: its shader kind, its dispatch, and how much work one dispatch does.
+struct Bench {
+    const char* name;
+    uint32_t kind; // TP_CAL_*
+    const char* unit;
+    const char* what;
+    uint32_t invocations = 0; // a multiple of TP_CAL_GROUP_SIZE
+    CalPush push{};
+    double work = 0; // in the unit's base (bytes, FLOPs, atomics)
+};
+
+constexpr double kVec4Bytes = 16.0;
+
+// The benchmarks at one size: `bufferBytes` for the streaming ones (far larger than a last-
+// level cache unless quick), a 1 MiB window for the cache-resident read.
+std::vector<Bench> benches(uint64_t bufferBytes, bool quick) {
+    const uint32_t elements = uint32_t(bufferBytes / 16), streamSteps = quick ? 4u : 16u;
+    const uint32_t streamInvocations = elements / streamSteps;
+    const uint32_t aluInvocations = quick ? 16384u : 262144u;
+    const uint32_t cacheWindow = std::min<uint32_t>(65536u, elements); // vec4: 1 MiB
+    std::vector<Bench> b = {
+        {"dram_read", TP_CAL_READ, "GB/s", "sum of a buffer read once, vec4 per invocation and step"},
+        {"dram_write", TP_CAL_WRITE, "GB/s", "a buffer written once"},
+        {"dram_copy", TP_CAL_COPY, "GB/s", "a buffer copied to another (bytes read + written)"},
+        {"cache_read", TP_CAL_CACHE_READ, "GB/s", "the same 1 MiB read over and over"},
+        {"fp32_fma", TP_CAL_FMA, "GFLOP/s", "8 independent vec4 FMA chains (2 FLOPs per FMA)"},
+        {"shared_atomic", TP_CAL_SHARED_ATOMIC, "Gatomic/s", "atomicAdd to shared memory, 256 words per workgroup"},
+        {"global_atomic", TP_CAL_GLOBAL_ATOMIC, "Gatomic/s", "atomicAdd to 4 MiB of device memory, spread"},
+    };
+    for (Bench& x : b) {
+        switch (x.kind) {
+        case TP_CAL_READ:
+        case TP_CAL_WRITE:
+        case TP_CAL_COPY:
+            x.invocations = streamInvocations;
+            x.push = {streamInvocations, streamSteps, 0u, 0u};
+            x.work = double(x.invocations) * streamSteps * kVec4Bytes * (x.kind == TP_CAL_COPY ? 2 : 1);
+            break;
+        case TP_CAL_CACHE_READ:
+            x.invocations = aluInvocations;
+            x.push = {aluInvocations, quick ? 16u : 64u, cacheWindow - 1u, 0u};
+            x.work = double(x.invocations) * x.push.iterations * kVec4Bytes;
+            break;
+        case TP_CAL_FMA:
+            x.invocations = aluInvocations;
+            x.push = {aluInvocations, quick ? 64u : 1024u, 0u, 0u};
+            x.work = double(x.invocations) * x.push.iterations * 8 * 4 * 2;
+            break;
+        case TP_CAL_SHARED_ATOMIC:
+            x.invocations = aluInvocations;
+            x.push = {aluInvocations, quick ? 32u : 256u, 0u, 0u};
+            x.work = double(x.invocations) * x.push.iterations;
+            break;
+        case TP_CAL_GLOBAL_ATOMIC:
+            x.invocations = aluInvocations;
+            x.push = {aluInvocations, quick ? 16u : 64u, (1u << 20) - 1u, 0u};
+            x.work = double(x.invocations) * x.push.iterations;
+            break;
+        }
+    }
+    return b;
+}
+
+// The buffers, descriptor set and pipeline layout every benchmark shares.
+struct Rig {
+    GpuContext& ctx;
+    Buffer src, dst;
+    PassSet set;
+    VkDescriptorSetLayout emptySet = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+
+    Rig(GpuContext& c, uint64_t bytes) : ctx(c) {
+        const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        src = createBuffer(ctx, bytes, usage, MemoryKind::Device,
+                           {"calibrate", "calibrate", "source", "what the reads read (zeros)"});
+        dst = createBuffer(ctx, bytes, usage, MemoryKind::Device,
+                           {"calibrate", "calibrate", "destination", "what the writes and atomics write"});
+        const std::vector<SetBinding> bindings = {{TP_CAL_BINDING_SRC, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                                  {TP_CAL_BINDING_DST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+        set = createPassSet(ctx, bindings);
+        set.pass = "calibrate";
+        set.bindings = bindings; // what reflection checks each kind's shader against
+        writeBufferDescriptor(ctx, set.set, TP_CAL_BINDING_SRC, src.buffer);
+        writeBufferDescriptor(ctx, set.set, TP_CAL_BINDING_DST, dst.buffer);
+        VkDescriptorSetLayoutCreateInfo empty{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &empty, nullptr, &emptySet));
+        const VkDescriptorSetLayout sets[] = {emptySet, set.layout}; // set 1: TP_SET_PASS
+        VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CalPush)};
+        VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+        info.setLayoutCount = 2;
+        info.pSetLayouts = sets;
+        info.pushConstantRangeCount = 1;
+        info.pPushConstantRanges = &range;
+        VK_CHECK(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout));
+        // Zeros in both: what the reads sum, so no result is ever written back.
+        ctx.submitAndWait([&](VkCommandBuffer cmd) {
+            vkCmdFillBuffer(cmd, src.buffer, 0, VK_WHOLE_SIZE, 0u);
+            vkCmdFillBuffer(cmd, dst.buffer, 0, VK_WHOLE_SIZE, 0u);
+        });
+    }
+    ~Rig() {
+        vkDestroyPipelineLayout(ctx.device, layout, nullptr);
+        vkDestroyDescriptorSetLayout(ctx.device, emptySet, nullptr);
+        destroyPassSet(ctx, set);
+    }
+};
+
+// Times `b` over 1 + repeats dispatches (the first discarded), each in its own submission.
+Ceiling run(Rig& rig, const Bench& b, uint32_t repeats) {
+    GpuContext& ctx = rig.ctx;
+    VkPipeline pipeline = createComputePipeline(ctx, "calibrate_" + std::to_string(b.kind) + "_comp",
+                                                {}, rig.layout, &rig.set);
+    GpuProfiler profiler(ctx, 2);
+    for (uint32_t r = 0; r <= repeats; ++r) {
+        ctx.submitAndWait([&](VkCommandBuffer cmd) {
+            // The previous dispatch (or the fill) wrote these buffers: finish before this one.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          VK_ACCESS_2_MEMORY_WRITE_BIT | VK_ACCESS_2_MEMORY_READ_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            profiler.beginFrame(cmd);
+            uint32_t scope = profiler.beginScope(cmd, b.name);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rig.layout, 1, 1, &rig.set.set,
+                                    0, nullptr);
+            vkCmdPushConstants(cmd, rig.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CalPush), &b.push);
+            vkCmdDispatch(cmd, b.invocations / TP_CAL_GROUP_SIZE, 1, 1);
+            profiler.endScope(cmd, scope);
+            profiler.endFrame(cmd);
+        });
+        profiler.collect();
+        if (r == 0) profiler.discardSamples();
+    }
+    vkDestroyPipeline(ctx.device, pipeline, nullptr);
+    const TimingStats t = profiler.stats().back();
+    // Every unit is a billion of the work's base unit per second.
+    auto rate = [&](double ms) { return ms > 0 ? b.work / (ms * 1e-3) / 1e9 : 0.0; };
+    return {b.name, b.unit, b.what, rate(t.medianMs), rate(t.maxMs), rate(t.minMs), t.medianMs, b.work,
+            t.frames};
+}
+
+} // namespace
+
+std::vector<std::string> ceilingNames() {
+    std::vector<std::string> out;
+    for (const Bench& b : benches(1 << 20, true))
+        out.push_back(b.name);
+    return out;
+}
+
+std::vector<Ceiling> measureCeilings(GpuContext& ctx, const CalibrationOptions& options) {
+    if (options.repeats == 0) throw std::invalid_argument("calibrate: --repeats must be at least 1");
+    // Far beyond any last-level cache (the H100's L2 is 50 MB), within one binding's range.
+    uint64_t bytes = options.quick ? (16ull << 20) : (256ull << 20);
+    bytes = std::min<uint64_t>(bytes, ctx.caps.maxStorageBufferRange & ~uint64_t(0xfffff));
+    Rig rig(ctx, bytes);
+    std::vector<Ceiling> out;
+    const std::vector<Bench> all = benches(bytes, options.quick);
+    for (size_t i = 0; i < all.size(); ++i) {
+        if (options.progress)
+            options.progress("[" + std::to_string(i + 1) + "/" + std::to_string(all.size()) + "] " +
+                             all[i].name + " ...");
+        out.push_back(run(rig, all[i], options.repeats));
+    }
+    return out;
+}
+
+} // namespace tp

@@ -1,0 +1,62 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// One microbenchmark of `triptych calibrate` (TP_CAL_KIND, calibrate_shared.h): a loop whose
+// work the C++ counts exactly (bytes moved, FMAs, atomics), so that work / time is a rate of
+// the device. Reads are grid-strided (neighbouring invocations read neighbouring vec4: whole
+// cache lines), and every result can reach memory, so no compiler removes the loop.
+#include "calibrate/calibrate_shared.h"
+
+layout(local_size_x = TP_CAL_GROUP_SIZE) in;
+
+layout(std430, set = 1, binding = TP_CAL_BINDING_SRC) readonly buffer Src { vec4 src[]; };
+#if TP_CAL_KIND == TP_CAL_SHARED_ATOMIC || TP_CAL_KIND == TP_CAL_GLOBAL_ATOMIC
+layout(std430, set = 1, binding = TP_CAL_BINDING_DST) buffer Dst { uint words[]; };
+#else
+layout(std430, set = 1, binding = TP_CAL_BINDING_DST) buffer Dst { vec4 dst[]; };
+#endif
+layout(push_constant) uniform Push { CalPush cal; };
+
+shared uint sWords[TP_CAL_GROUP_SIZE];
+
+void main() {
+    const uint gid = gl_GlobalInvocationID.x;
+#if TP_CAL_KIND == TP_CAL_READ || TP_CAL_KIND == TP_CAL_CACHE_READ
+    vec4 acc = vec4(0.0);
+    for (uint k = 0u; k < cal.iterations; ++k) {
+#if TP_CAL_KIND == TP_CAL_READ
+        acc += src[gid + k * cal.stride];
+#else
+        acc += src[(gid + k * cal.stride) & cal.mask];
+#endif
+    }
+    // Never true for the data calibrate uploads (zeros); the compiler cannot know that.
+    if (acc.x == 1.0e-30) dst[gid] = acc;
+#elif TP_CAL_KIND == TP_CAL_WRITE
+    for (uint k = 0u; k < cal.iterations; ++k)
+        dst[gid + k * cal.stride] = vec4(float(k), float(gid), 0.0, 1.0);
+#elif TP_CAL_KIND == TP_CAL_COPY
+    for (uint k = 0u; k < cal.iterations; ++k)
+        dst[gid + k * cal.stride] = src[gid + k * cal.stride];
+#elif TP_CAL_KIND == TP_CAL_FMA
+    // Eight chains so that an FMA's latency is hidden behind the other seven's.
+    vec4 a[8];
+    const vec4 m = vec4(0.999999), c = vec4(1.0e-7) * float(gid & 7u);
+    for (uint i = 0u; i < 8u; ++i) a[i] = vec4(float(gid + i));
+    for (uint k = 0u; k < cal.iterations; ++k)
+        for (uint i = 0u; i < 8u; ++i) a[i] = fma(a[i], m, c);
+    vec4 sum = vec4(0.0);
+    for (uint i = 0u; i < 8u; ++i) sum += a[i];
+    if (sum.x == 1.0e-30) dst[gid] = sum;
+#elif TP_CAL_KIND == TP_CAL_SHARED_ATOMIC
+    const uint lid = gl_LocalInvocationID.x;
+    sWords[lid] = 0u;
+    barrier();
+    for (uint k = 0u; k < cal.iterations; ++k)
+        atomicAdd(sWords[(lid + k) & uint(TP_CAL_GROUP_SIZE - 1)], 1u);
+    barrier();
+    if (sWords[lid] == 0xffffffffu) words[gid] = sWords[lid];
+#elif TP_CAL_KIND == TP_CAL_GLOBAL_ATOMIC
+    for (uint k = 0u; k < cal.iterations; ++k)
+        atomicAdd(words[(gid + k * cal.stride) & cal.mask], 1u);
+#endif
+}
