@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "calibrate/calibrate_shared.h"
+#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/pipelines.h"
@@ -22,12 +23,17 @@ struct Bench {
     uint32_t kind; // TP_CAL_*
     const char* unit;
     const char* what;
-    uint32_t invocations = 0; // a multiple of TP_CAL_GROUP_SIZE
+    uint32_t invocations = 0; // compute: a multiple of TP_CAL_GROUP_SIZE; fragment: pixels
     CalPush push{};
     double work = 0; // in the unit's base (bytes, FLOPs, atomics)
 };
 
 constexpr double kVec4Bytes = 16.0;
+constexpr VkFormat kTargetFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkShaderStageFlags kPushStages = VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// The fragment ceiling's square render target: one fragment per pixel.
+uint32_t targetSize(bool quick) { return quick ? 128u : 1024u; }
 
 // The benchmarks at one size: `bufferBytes` for the streaming ones (far larger than a last-
 // level cache unless quick), a 1 MiB window for the cache-resident read.
@@ -44,6 +50,7 @@ std::vector<Bench> benches(uint64_t bufferBytes, bool quick) {
         {"fp32_fma", TP_CAL_FMA, "GFLOP/s", "8 independent vec4 FMA chains (2 FLOPs per FMA)"},
         {"shared_atomic", TP_CAL_SHARED_ATOMIC, "Gatomic/s", "atomicAdd to shared memory, 256 words per workgroup"},
         {"global_atomic", TP_CAL_GLOBAL_ATOMIC, "Gatomic/s", "atomicAdd to 4 MiB of device memory, spread"},
+        {"fragment_fma", TP_CAL_FRAGMENT_FMA, "GFLOP/s", "fp32_fma's loop per pixel of a full-screen triangle"},
     };
     for (Bench& x : b) {
         switch (x.kind) {
@@ -74,6 +81,11 @@ std::vector<Bench> benches(uint64_t bufferBytes, bool quick) {
             x.push = {aluInvocations, quick ? 16u : 64u, (1u << 20) - 1u, 0u};
             x.work = double(x.invocations) * x.push.iterations;
             break;
+        case TP_CAL_FRAGMENT_FMA:
+            x.invocations = targetSize(quick) * targetSize(quick);
+            x.push = {0u, quick ? 16u : 256u, 0u, 0u};
+            x.work = double(x.invocations) * x.push.iterations * 8 * 4 * 2;
+            break;
         }
     }
     return b;
@@ -87,7 +99,9 @@ struct Rig {
     VkDescriptorSetLayout emptySet = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
 
-    Rig(GpuContext& c, uint64_t bytes) : ctx(c) {
+    Image target; // the fragment ceiling's colour attachment
+
+    Rig(GpuContext& c, uint64_t bytes, uint32_t targetSize) : ctx(c) {
         const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
         src = createBuffer(ctx, bytes, usage, MemoryKind::Device,
                            {"calibrate", "calibrate", "source", "what the reads read (zeros)"});
@@ -103,13 +117,16 @@ struct Rig {
         VkDescriptorSetLayoutCreateInfo empty{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
         VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &empty, nullptr, &emptySet));
         const VkDescriptorSetLayout sets[] = {emptySet, set.layout}; // set 1: TP_SET_PASS
-        VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CalPush)};
+        VkPushConstantRange range{kPushStages, 0, sizeof(CalPush)};
         VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         info.setLayoutCount = 2;
         info.pSetLayouts = sets;
         info.pushConstantRangeCount = 1;
         info.pPushConstantRanges = &range;
         VK_CHECK(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout));
+        target = createImage(ctx, {kTargetFormat, targetSize, targetSize, 1, VK_SAMPLE_COUNT_1_BIT,
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT},
+                             {"calibrate", "calibrate", "target", "the fragment ceiling's colour attachment"});
         // Zeros in both: what the reads sum, so no result is ever written back.
         ctx.submitAndWait([&](VkCommandBuffer cmd) {
             vkCmdFillBuffer(cmd, src.buffer, 0, VK_WHOLE_SIZE, 0u);
@@ -123,26 +140,69 @@ struct Rig {
     }
 };
 
-// Times `b` over 1 + repeats dispatches (the first discarded), each in its own submission.
+VkPipeline createPipeline(Rig& rig, const Bench& b) {
+    if (b.kind != TP_CAL_FRAGMENT_FMA)
+        return createComputePipeline(rig.ctx, "calibrate_" + std::to_string(b.kind) + "_comp", {},
+                                     rig.layout, &rig.set);
+    GraphicsPipelineDesc d;
+    d.vertexShader = "deferred_fullscreen_vert";
+    d.fragmentShader = "calibrate_fma_frag";
+    d.colorFormats = {kTargetFormat};
+    d.depthFormat = VK_FORMAT_UNDEFINED;
+    d.depthTest = d.depthWrite = false;
+    d.layout = rig.layout; // the buffers' set is in it, unused: the draw reads nothing
+    return createGraphicsPipeline(rig.ctx, d);
+}
+
+// One full-screen triangle into the target, whose previous contents do not matter.
+void recordFragment(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pipeline) {
+    const uint32_t size = rig.target.desc.width;
+    imageBarrier(cmd, rig.target.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = rig.target.view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    info.renderArea = {{0, 0}, {size, size}};
+    info.layerCount = 1;
+    info.colorAttachmentCount = 1;
+    info.pColorAttachments = &color;
+    vkCmdBeginRendering(cmd, &info);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    setViewportAndScissor(cmd, size, size);
+    vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
+    vkCmdPushConstants(cmd, rig.layout, kPushStages, 0, sizeof(CalPush), &b.push);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
+void recordCompute(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pipeline) {
+    // The previous dispatch (or the fill) wrote these buffers: finish before this one.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                  VK_ACCESS_2_MEMORY_WRITE_BIT | VK_ACCESS_2_MEMORY_READ_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rig.layout, 1, 1, &rig.set.set, 0,
+                            nullptr);
+    vkCmdPushConstants(cmd, rig.layout, kPushStages, 0, sizeof(CalPush), &b.push);
+    vkCmdDispatch(cmd, b.invocations / TP_CAL_GROUP_SIZE, 1, 1);
+}
+
+// Times `b` over 1 + repeats submissions of one dispatch or draw (the first discarded).
 Ceiling run(Rig& rig, const Bench& b, uint32_t repeats) {
     GpuContext& ctx = rig.ctx;
-    VkPipeline pipeline = createComputePipeline(ctx, "calibrate_" + std::to_string(b.kind) + "_comp",
-                                                {}, rig.layout, &rig.set);
+    VkPipeline pipeline = createPipeline(rig, b);
     GpuProfiler profiler(ctx, 2);
     for (uint32_t r = 0; r <= repeats; ++r) {
         ctx.submitAndWait([&](VkCommandBuffer cmd) {
-            // The previous dispatch (or the fill) wrote these buffers: finish before this one.
-            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                          VK_ACCESS_2_MEMORY_WRITE_BIT | VK_ACCESS_2_MEMORY_READ_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
             profiler.beginFrame(cmd);
             uint32_t scope = profiler.beginScope(cmd, b.name);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rig.layout, 1, 1, &rig.set.set,
-                                    0, nullptr);
-            vkCmdPushConstants(cmd, rig.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CalPush), &b.push);
-            vkCmdDispatch(cmd, b.invocations / TP_CAL_GROUP_SIZE, 1, 1);
+            if (b.kind == TP_CAL_FRAGMENT_FMA) recordFragment(cmd, rig, b, pipeline);
+            else recordCompute(cmd, rig, b, pipeline);
             profiler.endScope(cmd, scope);
             profiler.endFrame(cmd);
         });
@@ -171,7 +231,7 @@ std::vector<Ceiling> measureCeilings(GpuContext& ctx, const CalibrationOptions& 
     // Far beyond any last-level cache (the H100's L2 is 50 MB), within one binding's range.
     uint64_t bytes = options.quick ? (16ull << 20) : (256ull << 20);
     bytes = std::min<uint64_t>(bytes, ctx.caps.maxStorageBufferRange & ~uint64_t(0xfffff));
-    Rig rig(ctx, bytes);
+    Rig rig(ctx, bytes, targetSize(options.quick));
     std::vector<Ceiling> out;
     const std::vector<Bench> all = benches(bytes, options.quick);
     for (size_t i = 0; i < all.size(); ++i) {

@@ -5,6 +5,7 @@
 // the device. Reads are grid-strided (neighbouring invocations read neighbouring vec4: whole
 // cache lines), and every result can reach memory, so no compiler removes the loop.
 #include "calibrate/calibrate_shared.h"
+#include "calibrate/calibrate_fma.glsl"
 
 layout(local_size_x = TP_CAL_GROUP_SIZE) in;
 
@@ -38,14 +39,7 @@ void main() {
     for (uint k = 0u; k < cal.iterations; ++k)
         dst[gid + k * cal.stride] = src[gid + k * cal.stride];
 #elif TP_CAL_KIND == TP_CAL_FMA
-    // Eight chains so that an FMA's latency is hidden behind the other seven's.
-    vec4 a[8];
-    const vec4 m = vec4(0.999999), c = vec4(1.0e-7) * float(gid & 7u);
-    for (uint i = 0u; i < 8u; ++i) a[i] = vec4(float(gid + i));
-    for (uint k = 0u; k < cal.iterations; ++k)
-        for (uint i = 0u; i < 8u; ++i) a[i] = fma(a[i], m, c);
-    vec4 sum = vec4(0.0);
-    for (uint i = 0u; i < 8u; ++i) sum += a[i];
+    const vec4 sum = fmaChains(float(gid), cal.iterations);
     if (sum.x == 1.0e-30) dst[gid] = sum;
 #elif TP_CAL_KIND == TP_CAL_SHARED_ATOMIC
     const uint lid = gl_LocalInvocationID.x;

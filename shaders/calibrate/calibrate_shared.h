@@ -14,9 +14,10 @@
 #define TP_CAL_WRITE 1         // ... writes them to dst
 #define TP_CAL_COPY 2          // ... copies them from src to dst
 #define TP_CAL_CACHE_READ 3    // ... reads from the first mask + 1 vec4 of src only
-#define TP_CAL_FMA 4           // 8 independent vec4 FMA chains, `iterations` steps
+#define TP_CAL_FMA 4           // 8 independent vec4 FMA chains, `iterations` steps (calibrate_fma.glsl)
 #define TP_CAL_SHARED_ATOMIC 5 // `iterations` atomicAdd to shared memory, spread over 256 words
 #define TP_CAL_GLOBAL_ATOMIC 6 // `iterations` atomicAdd to dst words (mask + 1 of them)
+#define TP_CAL_FRAGMENT_FMA 7  // TP_CAL_FMA's loop per pixel of a full-screen triangle (calibrate_fma.frag)
 
 #ifndef TP_GLSL
 namespace tp::gpu {

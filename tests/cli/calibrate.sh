@@ -18,7 +18,7 @@ file_problem() {
     python3 - "$file" <<'PY'
 import json, sys
 f = json.load(open(sys.argv[1]))
-names = ["dram_read", "dram_write", "dram_copy", "cache_read", "fp32_fma", "shared_atomic", "global_atomic"]
+names = ["dram_read", "dram_write", "dram_copy", "cache_read", "fp32_fma", "shared_atomic", "global_atomic", "fragment_fma"]
 if f.get("schema") != "triptych.calibration/1": print("schema", f.get("schema")); sys.exit()
 if [c["name"] for c in f["ceilings"]] != names: print("ceilings", [c["name"] for c in f["ceilings"]]); sys.exit()
 for c in f["ceilings"]:
