@@ -132,13 +132,7 @@ int runCalibrate(const CalibrateOptions& o, const std::vector<std::string>& comm
     writeAtomically(path, file);
     printTable(file);
     std::fprintf(stderr, "triptych: wrote %s\n", path.c_str());
-    std::vector<std::string> messages = ctx->validationMessages();
-    if (!messages.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
-                     messages.front().c_str());
-        return 3;
-    }
-    return 0;
+    return validationExit(ctx->validationMessages());
 }
 
 } // namespace
@@ -147,7 +141,7 @@ CommandRunner addCalibrateCommand(CLI::App& app, std::vector<std::string> comman
     auto o = std::make_shared<CalibrateOptions>();
     CLI::App* cmd = app.add_subcommand(
         "calibrate",
-        "Measure this device's ceilings (DRAM read/write/copy and cache bandwidth, FP32 FMA rate, "
+        "Measure this device's ceilings (DRAM read/write/copy and cache bandwidth, FP32 FMA rate in compute and in a fragment shader, "
         "shared and global atomics) with compute microbenchmarks, and keep them in a JSON file "
         "keyed by device, driver and triptych build; a later run with the same key reuses the "
         "file (docs/efficiency.md). Exit 0 ok, 2 bad input, 3 validation messages");

@@ -348,11 +348,7 @@ int runCompare(const CompareOptions& o) {
     std::fprintf(stderr, "triptych: wrote %s/report.html, report.json and the images\n",
                  o.out.c_str());
 
-    if (!r.validationMessages.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n",
-                     r.validationMessages.size(), r.validationMessages.front().c_str());
-        return 3;
-    }
+    if (int code = validationExit(r.validationMessages)) return code;
     return report["status"] == "ok" ? 0 : 5;
 }
 

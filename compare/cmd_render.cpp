@@ -91,13 +91,7 @@ int run(RenderOptions& o) {
                      ctx->info.name.c_str());
     std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n",
                  o.out.c_str(), o.pipeline.c_str());
-    std::vector<std::string> messages = ctx->validationMessages();
-    if (!messages.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
-                     messages.front().c_str());
-        return 3;
-    }
-    return 0;
+    return validationExit(ctx->validationMessages());
 }
 
 } // namespace

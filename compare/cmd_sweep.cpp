@@ -379,11 +379,7 @@ int runSweep(const SweepOptions& o) {
     std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and "
                 "sweep.html\n",
                 rows.size(), failed, ctx->info.name.c_str(), o.out.c_str());
-    if (!validation.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(),
-                     validation.front().c_str());
-        return 3;
-    }
+    if (int code = validationExit(validation)) return code;
     return failed == 0 ? 0 : 5;
 }
 

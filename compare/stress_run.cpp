@@ -203,11 +203,7 @@ int runStress(const StressOptions& o) {
     std::fprintf(stderr,
                  "triptych: %zu of %zu cases passed; wrote %s/stress.html and stress.json\n",
                  results.size() - failed, results.size(), o.out.c_str());
-    if (!validation.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", validation.size(),
-                     validation.front().c_str());
-        return 3;
-    }
+    if (int code = validationExit(validation)) return code;
     return failed ? 6 : 0;
 }
 

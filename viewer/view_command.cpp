@@ -42,12 +42,7 @@ int finish(ViewerApp& app, const GpuContext& ui, const std::string& scriptError)
         std::fprintf(stderr, "triptych: %s\n", scriptError.c_str());
         return 2;
     }
-    if (!messages.empty()) {
-        std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
-                     messages.front().c_str());
-        return 3;
-    }
-    return 0;
+    return cli::validationExit(messages);
 }
 
 } // namespace tp::view

@@ -2,6 +2,7 @@
 #include "core/cli/options.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <CLI/CLI.hpp>
@@ -175,6 +176,13 @@ std::vector<std::string> selectPipelines(const std::string& list) {
     }
     if (names.empty()) throw UsageError("--pipelines '" + list + "': no pipeline named");
     return names;
+}
+
+int validationExit(const std::vector<std::string>& messages) {
+    if (messages.empty()) return 0;
+    std::fprintf(stderr, "triptych: %zu validation messages; first: %s\n", messages.size(),
+                 messages.front().c_str());
+    return 3;
 }
 
 } // namespace tp::cli

@@ -72,6 +72,10 @@ std::unique_ptr<GpuContext> createContext(const DeviceOptions& o);
 // `base` carries the pipeline knobs; the result adds resolution and MSAA.
 RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderSettings base = {});
 
+// Every command's exit code 3: after one line on stderr with the number of validation
+// messages and the first one; 0 when there were none.
+int validationExit(const std::vector<std::string>& messages);
+
 // Creates DIR (and parents); error if it cannot.
 void ensureDirectory(const std::string& dir);
 
