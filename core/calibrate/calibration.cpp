@@ -1,6 +1,8 @@
 #include "core/calibrate/calibration.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <stdexcept>
 
 #include "calibrate/calibrate_shared.h"
@@ -43,10 +45,10 @@ std::vector<Bench> benches(uint64_t bufferBytes, bool quick) {
     const uint32_t aluInvocations = quick ? 16384u : 262144u;
     const uint32_t cacheWindow = std::min<uint32_t>(65536u, elements); // vec4: 1 MiB
     std::vector<Bench> b = {
-        {"dram_read", TP_CAL_READ, "GB/s", "sum of a buffer read once, vec4 per invocation and step"},
-        {"dram_write", TP_CAL_WRITE, "GB/s", "a buffer written once"},
-        {"dram_copy", TP_CAL_COPY, "GB/s", "a buffer copied to another (bytes read + written)"},
-        {"cache_read", TP_CAL_CACHE_READ, "GB/s", "the same 1 MiB read over and over"},
+        {"dram_read", TP_CAL_READ, "GB/s", "a buffer far larger than any cache, read in order (passing over it again if longer)"},
+        {"dram_write", TP_CAL_WRITE, "GB/s", "the same buffer written in order"},
+        {"dram_copy", TP_CAL_COPY, "GB/s", "the buffer copied to another (bytes read + written)"},
+        {"cache_read", TP_CAL_CACHE_READ, "GB/s", "the same 1 MiB read over and over, a new cache line each step"},
         {"fp32_fma", TP_CAL_FMA, "GFLOP/s", "8 independent vec4 FMA chains (2 FLOPs per FMA)"},
         {"shared_atomic", TP_CAL_SHARED_ATOMIC, "Gatomic/s", "atomicAdd to shared memory, 256 words per workgroup"},
         {"global_atomic", TP_CAL_GLOBAL_ATOMIC, "Gatomic/s", "atomicAdd to 4 MiB of device memory, spread"},
@@ -58,12 +60,15 @@ std::vector<Bench> benches(uint64_t bufferBytes, bool quick) {
         case TP_CAL_WRITE:
         case TP_CAL_COPY:
             x.invocations = streamInvocations;
-            x.push = {streamInvocations, streamSteps, 0u, 0u};
+            x.push = {streamInvocations, streamSteps, elements - 1u, 0u};
             x.work = double(x.invocations) * streamSteps * kVec4Bytes * (x.kind == TP_CAL_COPY ? 2 : 1);
             break;
         case TP_CAL_CACHE_READ:
             x.invocations = aluInvocations;
-            x.push = {aluInvocations, quick ? 16u : 64u, cacheWindow - 1u, 0u};
+            // Each step 16 KiB further on in the window (wrapping): a new cache line every
+            // step, never the same address twice in a row (a compiler could keep that in a
+            // register), neighbouring invocations on neighbouring vec4.
+            x.push = {1024u, quick ? 16u : 64u, cacheWindow - 1u, 0u};
             x.work = double(x.invocations) * x.push.iterations * kVec4Bytes;
             break;
         case TP_CAL_FMA:
@@ -192,29 +197,60 @@ void recordCompute(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pip
     vkCmdDispatch(cmd, b.invocations / TP_CAL_GROUP_SIZE, 1, 1);
 }
 
-// Times `b` over 1 + repeats submissions of one dispatch or draw (the first discarded).
-Ceiling run(Rig& rig, const Bench& b, uint32_t repeats) {
+// Times `b` once and returns the GPU time in ms (its profiler keeps the sample).
+double submitOnce(Rig& rig, const Bench& b, VkPipeline pipeline, GpuProfiler& profiler) {
+    rig.ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        profiler.beginFrame(cmd);
+        uint32_t scope = profiler.beginScope(cmd, b.name);
+        if (b.kind == TP_CAL_FRAGMENT_FMA) recordFragment(cmd, rig, b, pipeline);
+        else recordCompute(cmd, rig, b, pipeline);
+        profiler.endScope(cmd, scope);
+        profiler.endFrame(cmd);
+    });
+    profiler.collect();
+    return profiler.stats().back().maxMs;
+}
+
+// A dispatch this short is mostly its launch: the warm-up's time decides how many times
+// longer the timed ones loop (at most 64 times, within lavapipe's 65,535 loop iterations).
+constexpr double kMinDispatchMs = 2.0;
+
+// Times `b` over 1 + repeats submissions of one dispatch or draw: the first (the warm-up)
+// sizes the others to take at least kMinDispatchMs, and is discarded.
+Ceiling run(Rig& rig, Bench b, uint32_t repeats) {
     GpuContext& ctx = rig.ctx;
     VkPipeline pipeline = createPipeline(rig, b);
     GpuProfiler profiler(ctx, 2);
-    for (uint32_t r = 0; r <= repeats; ++r) {
-        ctx.submitAndWait([&](VkCommandBuffer cmd) {
-            profiler.beginFrame(cmd);
-            uint32_t scope = profiler.beginScope(cmd, b.name);
-            if (b.kind == TP_CAL_FRAGMENT_FMA) recordFragment(cmd, rig, b, pipeline);
-            else recordCompute(cmd, rig, b, pipeline);
-            profiler.endScope(cmd, scope);
-            profiler.endFrame(cmd);
-        });
-        profiler.collect();
-        if (r == 0) profiler.discardSamples();
-    }
+    const double warmupMs = submitOnce(rig, b, pipeline, profiler);
+    profiler.discardSamples();
+    // Not the streams: a longer loop would pass over what the same invocation just read, from
+    // a cache. Their buffer is sized instead (streamBytes).
+    const bool stream = b.kind == TP_CAL_READ || b.kind == TP_CAL_WRITE || b.kind == TP_CAL_COPY;
+    const uint32_t scale =
+        stream ? 1u : uint32_t(std::clamp(std::ceil(kMinDispatchMs / std::max(warmupMs, 1e-6)), 1.0, 64.0));
+    b.push.iterations *= scale;
+    b.work *= scale;
+    for (uint32_t r = 0; r < repeats; ++r)
+        submitOnce(rig, b, pipeline, profiler);
     vkDestroyPipeline(ctx.device, pipeline, nullptr);
     const TimingStats t = profiler.stats().back();
     // Every unit is a billion of the work's base unit per second.
     auto rate = [&](double ms) { return ms > 0 ? b.work / (ms * 1e-3) / 1e9 : 0.0; };
     return {b.name, b.unit, b.what, rate(t.medianMs), rate(t.maxMs), rate(t.minMs), t.medianMs, b.work,
             t.frames};
+}
+
+// The streams' buffer size: far larger than any last-level cache (the H100's L2 is 50 MB),
+// and on a GPU large enough that one pass takes long beside a dispatch's launch (1 GiB: 0.37 ms
+// on an H100); within one binding's range and an eighth of the largest device-local heap (two
+// buffers); a power of two (the index mask is its length in vec4 minus one).
+uint64_t streamBytes(const GpuContext& ctx, bool quick) {
+    uint64_t heap = 0;
+    for (uint32_t i = 0; i < ctx.memoryProperties.memoryHeapCount; ++i)
+        if (ctx.memoryProperties.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            heap = std::max<uint64_t>(heap, ctx.memoryProperties.memoryHeaps[i].size);
+    const uint64_t wanted = quick ? (16ull << 20) : ctx.isCpuDevice() ? (256ull << 20) : (1ull << 30);
+    return std::bit_floor(std::min({wanted, uint64_t(ctx.caps.maxStorageBufferRange), std::max<uint64_t>(heap / 8, 16ull << 20)}));
 }
 
 } // namespace
@@ -229,8 +265,7 @@ std::vector<std::string> ceilingNames() {
 std::vector<Ceiling> measureCeilings(GpuContext& ctx, const CalibrationOptions& options) {
     if (options.repeats == 0) throw std::invalid_argument("calibrate: --repeats must be at least 1");
     // Far beyond any last-level cache (the H100's L2 is 50 MB), within one binding's range.
-    uint64_t bytes = options.quick ? (16ull << 20) : (256ull << 20);
-    bytes = std::min<uint64_t>(bytes, ctx.caps.maxStorageBufferRange & ~uint64_t(0xfffff));
+    const uint64_t bytes = streamBytes(ctx, options.quick);
     Rig rig(ctx, bytes, targetSize(options.quick));
     std::vector<Ceiling> out;
     const std::vector<Bench> all = benches(bytes, options.quick);

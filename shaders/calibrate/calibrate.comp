@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // One microbenchmark of `triptych calibrate` (TP_CAL_KIND, calibrate_shared.h): a loop whose
 // work the C++ counts exactly (bytes moved, FMAs, atomics), so that work / time is a rate of
-// the device. Reads are grid-strided (neighbouring invocations read neighbouring vec4: whole
-// cache lines), and every result can reach memory, so no compiler removes the loop.
+// the device. Step k of invocation gid touches vec4 (gid + k * stride) & mask: neighbouring
+// invocations touch neighbouring vec4 (whole cache lines), and a long loop wraps around the
+// buffer, passing over it again. Every result can reach memory, so no compiler removes a loop.
 #include "calibrate/calibrate_shared.h"
 #include "calibrate/calibrate_fma.glsl"
 
@@ -23,21 +24,18 @@ void main() {
     const uint gid = gl_GlobalInvocationID.x;
 #if TP_CAL_KIND == TP_CAL_READ || TP_CAL_KIND == TP_CAL_CACHE_READ
     vec4 acc = vec4(0.0);
-    for (uint k = 0u; k < cal.iterations; ++k) {
-#if TP_CAL_KIND == TP_CAL_READ
-        acc += src[gid + k * cal.stride];
-#else
+    for (uint k = 0u; k < cal.iterations; ++k)
         acc += src[(gid + k * cal.stride) & cal.mask];
-#endif
-    }
     // Never true for the data calibrate uploads (zeros); the compiler cannot know that.
     if (acc.x == 1.0e-30) dst[gid] = acc;
 #elif TP_CAL_KIND == TP_CAL_WRITE
     for (uint k = 0u; k < cal.iterations; ++k)
-        dst[gid + k * cal.stride] = vec4(float(k), float(gid), 0.0, 1.0);
+        dst[(gid + k * cal.stride) & cal.mask] = vec4(float(k), float(gid), 0.0, 1.0);
 #elif TP_CAL_KIND == TP_CAL_COPY
-    for (uint k = 0u; k < cal.iterations; ++k)
-        dst[gid + k * cal.stride] = src[gid + k * cal.stride];
+    for (uint k = 0u; k < cal.iterations; ++k) {
+        const uint i = (gid + k * cal.stride) & cal.mask;
+        dst[i] = src[i];
+    }
 #elif TP_CAL_KIND == TP_CAL_FMA
     const vec4 sum = fmaChains(float(gid), cal.iterations);
     if (sum.x == 1.0e-30) dst[gid] = sum;

@@ -13,7 +13,7 @@
 #define TP_CAL_READ 0          // each invocation sums `iterations` vec4 of src, grid-strided
 #define TP_CAL_WRITE 1         // ... writes them to dst
 #define TP_CAL_COPY 2          // ... copies them from src to dst
-#define TP_CAL_CACHE_READ 3    // ... reads from the first mask + 1 vec4 of src only
+#define TP_CAL_CACHE_READ 3    // ... reads them from the first mask + 1 vec4 of src only
 #define TP_CAL_FMA 4           // 8 independent vec4 FMA chains, `iterations` steps (calibrate_fma.glsl)
 #define TP_CAL_SHARED_ATOMIC 5 // `iterations` atomicAdd to shared memory, spread over 256 words
 #define TP_CAL_GLOBAL_ATOMIC 6 // `iterations` atomicAdd to dst words (mask + 1 of them)
@@ -24,9 +24,9 @@ namespace tp::gpu {
 #endif
 
 struct CalPush {
-    uint stride;     // invocations in the dispatch: the grid stride, in vec4
+    uint stride;     // vec4 between an invocation's steps: the grid (streams), 1024 (cache read)
     uint iterations; // steps per invocation
-    uint mask;       // cache read / global atomics: index mask (a power of two minus 1)
+    uint mask;       // index mask: the buffer's or window's length in vec4 (words) minus 1
     uint pad;
 };
 
