@@ -65,23 +65,43 @@ void printTable(const json& file) {
                 file["measured_at"].get<std::string>().c_str());
 }
 
-// The file at `path` when it is a calibration of `key` (every ceiling present); else nothing,
-// with `why` saying what was wrong ("" when there is no file).
-std::optional<json> reusable(const std::string& path, const json& key, std::string& why) {
+bool isCalibration(const json& file) { return file.is_object() && file.value("schema", "") == kSchema; }
+
+// Every field printTable reads, of the types it reads them as.
+bool isComplete(const json& file) {
+    if (!file.value("measured_at", json()).is_string() || !file.value("ceilings", json()).is_array())
+        return false;
+    for (const json& c : file["ceilings"])
+        for (const char* k : {"median", "min", "max"})
+            if (!c.is_object() || !c.value(k, json()).is_number() || !c.value("unit", json()).is_string() ||
+                !c.value("what", json()).is_string() || !c.value("name", json()).is_string())
+                return false;
+    return file["key"].value("device", json()).is_string() && file["key"].value("driver", json()).is_string();
+}
+
+// The file at `path`: nothing when absent; else parsed (a value that is not a calibration when
+// it does not parse).
+std::optional<json> readCalibration(const std::string& path) {
     if (!fs::exists(path)) return std::nullopt;
     Result<std::string> text = readWholeFile(path);
     json file = text ? json::parse(*text, nullptr, false) : json();
-    if (!text || file.is_discarded() || !file.is_object()) {
-        why = "not a readable calibration";
+    return file.is_discarded() ? json() : file;
+}
+
+// `file` when it is a complete calibration of `key` with this build's ceilings; else nothing,
+// with `why` saying what was wrong.
+std::optional<json> reusable(const json& file, const json& key, std::string& why) {
+    if (!isCalibration(file) || !isComplete(file)) {
+        why = "not a complete calibration";
         return std::nullopt;
     }
-    if (file.value("schema", "") != kSchema || file.value("key", json()) != key) {
+    if (file["key"] != key) {
         why = "made for another device, driver, build or mode";
         return std::nullopt;
     }
     std::vector<std::string> names;
-    for (const json& c : file.value("ceilings", json::array()))
-        names.push_back(c.value("name", ""));
+    for (const json& c : file["ceilings"])
+        names.push_back(c["name"]);
     if (names != ceilingNames()) {
         why = "its ceilings are not this build's";
         return std::nullopt;
@@ -110,15 +130,22 @@ int runCalibrate(const CalibrateOptions& o, const std::vector<std::string>& comm
         if (dir.empty()) throw UsageError("calibrate: no cache folder (neither XDG_CACHE_HOME nor HOME): give --out FILE");
         path = dir + "/" + keyHash(key) + ".json";
     }
+    const std::optional<json> existing = readCalibration(path);
+    // A file the user named that is something else (a report, a typo) is never overwritten;
+    // in our own cache folder a damaged file is measured again.
+    if (existing && !o.out.empty() && !isCalibration(*existing))
+        throw UsageError("calibrate: " + path +
+                         " exists and is not a triptych calibration: not overwriting it (remove it, or "
+                         "give another --out)");
     std::string why;
-    if (!o.force) {
-        if (std::optional<json> file = reusable(path, key, why)) {
+    if (existing && !o.force) {
+        if (std::optional<json> file = reusable(*existing, key, why)) {
             std::fprintf(stderr, "triptych: calibration of %s reused from %s (measured %s; --force measures again)\n",
                          ctx->info.name.c_str(), path.c_str(), (*file)["measured_at"].get<std::string>().c_str());
             printTable(*file);
             return 0;
         }
-        if (!why.empty()) std::fprintf(stderr, "triptych: %s is %s: measuring again\n", path.c_str(), why.c_str());
+        std::fprintf(stderr, "triptych: %s is %s: measuring again\n", path.c_str(), why.c_str());
     }
     std::fprintf(stderr, "triptych: calibrating %s (%s), %d repeats after a warm-up%s\n", ctx->info.name.c_str(),
                  ctx->info.driver.c_str(), o.repeats, o.quick ? ", quick (small working sets)" : "");

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # triptych calibrate end to end on the default device, quick (docs/efficiency.md): every
 # ceiling measured with its spread (min <= median <= max, all positive) and written as JSON;
-# the second run reuses the file; a file of another key or one that does not parse is
-# measured again and replaced; bad options are one-line refusals. Nothing asserts a speed.
+# the second run reuses the file; a file of another key or an incomplete one is measured again
+# and replaced, as is a torn one in the cache folder; a file of another kind named by --out is
+# never overwritten; bad options are one-line refusals. Nothing asserts a speed.
 # Usage: calibrate.sh TRIPTYCH
 set -u
 bin=$1
@@ -50,13 +51,38 @@ problem=""
 [ -z "$problem" ] && grep -q '"another device"' "$file" && problem="the file was not replaced"
 report "a file of another device is measured again and replaced" "$problem"
 
-echo '{"schema": "triptych.calibration/1", "key": ' > "$file"
+# A calibration without its figures (hand-edited): measured again and replaced.
+python3 -c "import json,sys; f=json.load(open(sys.argv[1])); [c.pop('median') for c in f['ceilings']]; json.dump(f, open(sys.argv[1], 'w'))" "$file"
 calibrate
 problem=""
 [ "$code" -ne 0 ] && problem="exit code $code"
-[ -z "$problem" ] && ! grep -q "not a readable calibration: measuring again" "$work/stderr" && problem="a torn file was not measured again"
+[ -z "$problem" ] && ! grep -q "not a complete calibration: measuring again" "$work/stderr" && problem="an incomplete file was not measured again"
 [ -z "$problem" ] && problem=$(file_problem)
-report "a torn file is measured again" "$problem"
+report "an incomplete calibration is measured again" "$problem"
+
+# A file named with --out that is something else is never overwritten.
+echo '{"schema": "triptych.report/2"}' > "$work/other.json"
+run_triptych calibrate --quick --repeats 2 --out "$work/other.json"
+problem=$(error_problem "" "not overwriting it" 2)
+[ -z "$problem" ] && [ "$(cat "$work/other.json")" != '{"schema": "triptych.report/2"}' ] && problem="the file was overwritten"
+report "another kind of file named by --out is not overwritten" "$problem"
+
+# In the cache folder (no --out), a torn file is measured again.
+export XDG_CACHE_HOME=$work/xdg
+run_triptych calibrate --quick --repeats 2
+cached=$(ls "$XDG_CACHE_HOME"/triptych/calibration/*.json 2>/dev/null | head -n 1)
+problem=""
+[ "$code" -ne 0 ] && problem="exit code $code"
+[ -z "$problem" ] && [ -z "$cached" ] && problem="nothing written to the cache folder"
+if [ -z "$problem" ]; then
+    echo '{"schema": "triptych.calibration/1", "key": ' > "$cached"
+    run_triptych calibrate --quick --repeats 2
+    [ "$code" -ne 0 ] && problem="exit code $code"
+    [ -z "$problem" ] && ! grep -q "measuring again" "$work/stderr" && problem="a torn cache file was not measured again"
+    [ -z "$problem" ] && ! python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$cached" && problem="the cache file was not replaced"
+fi
+report "a torn file in the cache folder is measured again" "$problem"
+unset XDG_CACHE_HOME
 
 run_triptych calibrate --quick --repeats 0 --out "$work/zero.json"
 report "--repeats 0 is refused" "$(error_problem "" "--repeats" 2)"
