@@ -21,8 +21,8 @@ int pipelineColour(const std::string& name) {
 }
 
 const char* paletteHex(int index) {
-    const size_t n = std::size(kPalette);
-    return kPalette[(size_t(index) % n + n) % n];
+    // -1 (a name nothing registered) wraps to the last entry, as the pages always drew it.
+    return kPalette[size_t(index) % std::size(kPalette)];
 }
 
 std::array<uint8_t, 3> paletteRgb(int index) {
