@@ -14,6 +14,12 @@ file=$work/cal.json
 
 calibrate() { run_triptych calibrate --quick --repeats 2 --validate --out "$file" "$@"; }
 
+# ok_saying TEXT: what is wrong with the last run unless it exited 0 saying TEXT on stderr.
+ok_saying() {
+    if [ "$code" -ne 0 ]; then echo "exit code $code"
+    elif ! grep -q "$1" "$work/stderr"; then echo "stderr does not say '$1'"; fi
+}
+
 # What is wrong with $file as a calibration of every ceiling ("" if nothing).
 file_problem() {
     python3 - "$file" <<'PY'
@@ -38,25 +44,18 @@ problem=""
 report "a quick calibration writes every ceiling with its spread" "$problem"
 
 calibrate
-problem=""
-[ "$code" -ne 0 ] && problem="exit code $code"
-[ -z "$problem" ] && ! grep -q "reused from" "$work/stderr" && problem="the file was not reused"
-report "a second run reuses the file" "$problem"
+report "a second run reuses the file" "$(ok_saying "reused from")"
 
 sed -i 's/"device": "[^"]*"/"device": "another device"/' "$file"
 calibrate
-problem=""
-[ "$code" -ne 0 ] && problem="exit code $code"
-[ -z "$problem" ] && ! grep -q "another device, driver, build or mode: measuring again" "$work/stderr" && problem="a file of another device was trusted"
+problem=$(ok_saying "another device, driver, build or mode: measuring again")
 [ -z "$problem" ] && grep -q '"another device"' "$file" && problem="the file was not replaced"
 report "a file of another device is measured again and replaced" "$problem"
 
 # A calibration without its figures (hand-edited): measured again and replaced.
 python3 -c "import json,sys; f=json.load(open(sys.argv[1])); [c.pop('median') for c in f['ceilings']]; json.dump(f, open(sys.argv[1], 'w'))" "$file"
 calibrate
-problem=""
-[ "$code" -ne 0 ] && problem="exit code $code"
-[ -z "$problem" ] && ! grep -q "not a complete calibration: measuring again" "$work/stderr" && problem="an incomplete file was not measured again"
+problem=$(ok_saying "not a complete calibration: measuring again")
 [ -z "$problem" ] && problem=$(file_problem)
 report "an incomplete calibration is measured again" "$problem"
 
@@ -77,8 +76,7 @@ problem=""
 if [ -z "$problem" ]; then
     echo '{"schema": "triptych.calibration/1", "key": ' > "$cached"
     run_triptych calibrate --quick --repeats 2
-    [ "$code" -ne 0 ] && problem="exit code $code"
-    [ -z "$problem" ] && ! grep -q "measuring again" "$work/stderr" && problem="a torn cache file was not measured again"
+    problem=$(ok_saying "not a complete calibration: measuring again")
     [ -z "$problem" ] && ! python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$cached" && problem="the cache file was not replaced"
 fi
 report "a torn file in the cache folder is measured again" "$problem"
