@@ -4,9 +4,7 @@
 // does not parse, is measured again and replaced, never trusted.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <CLI/CLI.hpp>
@@ -109,19 +107,16 @@ std::optional<json> reusable(const json& file, const json& key, std::string& why
     return file;
 }
 
-// Written beside its final name, then renamed: a reader never sees half a file.
-void writeAtomically(const std::string& path, const json& file) {
-    const fs::path target(path);
-    if (target.has_parent_path()) ensureDirectory(target.parent_path().string());
-    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    std::ofstream(tmp) << file.dump(2) << "\n";
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) throw UsageError("calibrate: cannot write " + path + ": " + ec.message());
-}
-
 int runCalibrate(const CalibrateOptions& o, const std::vector<std::string>& commandLine) {
     if (o.repeats < 1 || o.repeats > 1000) throw UsageError("calibrate: --repeats must be 1..1000");
+    // A file the user named that is something else (a report, a typo) is never overwritten,
+    // and is refused before any GPU work; in our own cache folder a damaged file is measured
+    // again.
+    if (!o.out.empty())
+        if (std::optional<json> named = readCalibration(o.out); named && !isCalibration(*named))
+            throw UsageError("calibrate: " + o.out +
+                             " exists and is not a triptych calibration: not overwriting it (remove it, "
+                             "or give another --out)");
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     const json key = calibrationKey(*ctx, o.quick);
     std::string path = o.out;
@@ -131,12 +126,6 @@ int runCalibrate(const CalibrateOptions& o, const std::vector<std::string>& comm
         path = dir + "/" + keyHash(key) + ".json";
     }
     const std::optional<json> existing = readCalibration(path);
-    // A file the user named that is something else (a report, a typo) is never overwritten;
-    // in our own cache folder a damaged file is measured again.
-    if (existing && !o.out.empty() && !isCalibration(*existing))
-        throw UsageError("calibrate: " + path +
-                         " exists and is not a triptych calibration: not overwriting it (remove it, or "
-                         "give another --out)");
     std::string why;
     if (existing && !o.force) {
         if (std::optional<json> file = reusable(*existing, key, why)) {
@@ -156,7 +145,9 @@ int runCalibrate(const CalibrateOptions& o, const std::vector<std::string>& comm
     const std::vector<Ceiling> ceilings = measureCeilings(*ctx, co);
     const json file = {{"schema", kSchema}, {"key", key}, {"measured_at", utcNow()},
                        {"repeats", o.repeats}, {"command", commandLine}, {"ceilings", ceilingsToJson(ceilings)}};
-    writeAtomically(path, file);
+    if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) ensureDirectory(parent.string());
+    if (Status written = writeTextFile(path, file.dump(2) + "\n"); !written.ok())
+        throw UsageError("calibrate: " + written.error());
     printTable(file);
     std::fprintf(stderr, "triptych: wrote %s\n", path.c_str());
     return validationExit(ctx->validationMessages());

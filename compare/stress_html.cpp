@@ -1,9 +1,6 @@
 // stress.html from stress.json: a verdict matrix (case x pipeline), then per case what it
 // stresses, what is expected, each pipeline's figures against its bound, and the images
 // beside their difference maps. Everything inline (PNG data URIs), no script: opens offline.
-#include <fstream>
-#include <sstream>
-
 #include "compare/report_html.h"
 #include "compare/report_html_parts.h"
 #include "compare/stress_report.h"
