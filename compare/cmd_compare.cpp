@@ -10,6 +10,7 @@
 #include <sstream>
 #include <CLI/CLI.hpp>
 
+#include "compare/calibration_file.h"
 #include "compare/commands.h"
 #include "compare/compare.h"
 #include "compare/reference_cache.h"
@@ -80,7 +81,8 @@ PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& n
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
-    const RunOptions ro = progressRunOptions(name, r.options->warmup, r.options->frames);
+    RunOptions ro = progressRunOptions(name, r.options->warmup, r.options->frames);
+    if (r.calibration) ro.ceilings = ceilingsOf(*r.calibration);
     Result<RunResult> result =
         name == kReferenceRenderer
             ? runReferenceCached(ctx, scene, r.features, r.settings, ro,
@@ -266,6 +268,7 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
     c.options = r.options;
     c.features = r.features;
     c.settings = r.settings;
+    c.calibration = r.calibration;
     c.settings.set("reference-msaa", "center");
     PipelineOutcome& centre = r.centerReference;
     // A reference already run with --reference-msaa center is the centre reference: not again.
@@ -297,10 +300,14 @@ int runCompare(const CompareOptions& o) {
     std::vector<std::string> names = selectPipelines(o.pipelines);
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
     if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // likewise
+    checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     CompareRecord r;
     r.options = &o;
     r.ctx = ctx.get();
+    r.calibration = loadRunCalibration(*ctx, o.calibration);
+    if (!r.calibration->available)
+        std::fprintf(stderr, "triptych: efficiency left out: %s\n", r.calibration->why.c_str());
     r.settings = makeSettings(o.view, *ctx, o.knobs);
     Scene scene = loadScene(o.scene, &r.cameraSource);
     r.scene = &scene;
@@ -372,6 +379,7 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
                     "maps, lights.json, "
                     "report.json and report.html; this run's files there are replaced")
         ->capture_default_str();
+    cmd->add_option("--calibration", o->calibration, calibrationOptionHelp())->capture_default_str();
     cmd->add_option("--frames", o->frames,
                     "Timed frames per pipeline (median/min/max are over these)")
         ->capture_default_str();

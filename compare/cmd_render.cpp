@@ -5,6 +5,7 @@
 #include <memory>
 #include <CLI/CLI.hpp>
 
+#include "compare/calibration_file.h"
 #include "compare/cli_common.h"
 #include "compare/commands.h"
 #include "compare/run_json.h"
@@ -30,12 +31,13 @@ struct RenderOptions {
     int warmup = 1;
     std::string exposure = "auto";
     std::string exrType = "float";
+    std::string calibration = "auto";
     RenderSettings knobs;
 };
 
 void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource& camera,
                   const RunResult& run, const GpuContext& ctx, const RenderSettings& settings,
-                  const SceneFeatures& features) {
+                  const SceneFeatures& features, const RunCalibration& calibration) {
     const std::string base = o.out + "/" + run.renderer;
     float ev = parseExposure(o.exposure, run.hdr);
     Status s = writeExr(base + ".exr", run.hdr,
@@ -59,6 +61,7 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource
     j["camera"] = cameraToJson(scene.camera);
     j["camera_source"] = cameraSourceJson(camera);
     j["run"] = runJson(run, ctx);
+    j["calibration"] = calibrationUseJson(calibration);
     j["nan_inf_pixels"] = countNonFinitePixels(run.hdr);
     if (s) s = writeTextFile(o.out + "/render.json", j.dump(2) + "\n");
     if (!s) throw UsageError(s.error());
@@ -71,7 +74,9 @@ int run(RenderOptions& o) {
     if (!entry) throw UsageError("--pipeline: " + entry.error());
     if (o.exposure != "auto") parseExposure(o.exposure, ImageRGBA{}); // refuse before rendering
     if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // likewise
+    checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
     RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
     CameraSource camera;
     Scene scene = loadScene(o.scene, &camera);
@@ -82,13 +87,15 @@ int run(RenderOptions& o) {
                  settings.height, settings.msaa, ctx->info.name.c_str());
     SceneGpu gpuScene(*ctx, scene);
     RunOptions runOptions = progressRunOptions(o.pipeline, o.warmup, o.frames);
+    runOptions.ceilings = ceilingsOf(*calibration);
     Result<RunResult> result = runRenderer(*ctx, gpuScene, **entry, features, settings, runOptions);
     if (!result) throw UsageError(result.error());
-    writeOutputs(o, scene, camera, *result, *ctx, settings, features);
+    writeOutputs(o, scene, camera, *result, *ctx, settings, features, *calibration);
     for (const TimingStats& t : result->timings)
-        std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)\n",
+        std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)%s\n",
                      t.name.c_str(), t.medianMs, t.minMs, t.maxMs, t.frames,
-                     ctx->info.name.c_str());
+                     ctx->info.name.c_str(), efficiencyNote(*result, t.name).c_str());
+    if (!calibration->available) std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
     std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n",
                  o.out.c_str(), o.pipeline.c_str());
     return validationExit(ctx->validationMessages());
@@ -121,6 +128,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--exr-type", o->exrType, "EXR pixel type")
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
+    cmd->add_option("--calibration", o->calibration, calibrationOptionHelp())->capture_default_str();
     addKnobOptions(*cmd, o->knobs.knobs);
     cmd->add_flag(
         "--debug", o->knobs.debug,

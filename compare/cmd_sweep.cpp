@@ -10,6 +10,7 @@
 #include <sstream>
 #include <CLI/CLI.hpp>
 
+#include "compare/calibration_file.h"
 #include "compare/reference_cache.h"
 #include "compare/commands.h"
 #include "compare/report_json.h"
@@ -106,6 +107,7 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
     const RunResult& r = result.value();
     row.frame = r.timings.front();
     row.run = runJson(r, ctx);
+    row.efficiency = r.efficiency;
     row.bytes = row.run["memory"]["total_bytes"].get<uint64_t>();
     row.bytesPerPixel = row.run["memory"]["bytes_per_pixel"].get<double>();
     row.dropped = counterValue(r, "lights_dropped");
@@ -164,11 +166,13 @@ struct Progress {
 };
 
 // The reference's frames (timed, no warm-up, with progress) or a pipeline's.
-RunOptions sweepRunOptions(const SweepOptions& o, bool reference) {
-    if (reference) return progressRunOptions(kReferenceRenderer, 0, o.referenceFrames);
-    RunOptions ro;
-    ro.warmupFrames = uint32_t(o.warmup);
-    ro.timedFrames = uint32_t(o.frames);
+RunOptions sweepRunOptions(const SweepOptions& o, bool reference, std::shared_ptr<const CeilingRates> ceilings) {
+    RunOptions ro = reference ? progressRunOptions(kReferenceRenderer, 0, o.referenceFrames) : RunOptions{};
+    if (!reference) {
+        ro.warmupFrames = uint32_t(o.warmup);
+        ro.timedFrames = uint32_t(o.frames);
+    }
+    ro.ceilings = std::move(ceilings);
     return ro;
 }
 
@@ -240,7 +244,7 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const Came
 std::string sweepId(nlohmann::json header) {
     const std::string device = header["device"].value("name", "");
     for (const char* k : {"command", "command_line", "device", "validation_messages",
-                          "sweep_id_fnv1a64", "merged_from"})
+                          "sweep_id_fnv1a64", "merged_from", "calibration"})
         header.erase(k);
     header["shard"].erase("index");
     Fnv1a64 h;
@@ -290,6 +294,7 @@ struct GroupRunner {
     Shard shard;
     Progress& progress;
     std::vector<SweepRow>& rows;
+    std::shared_ptr<const CeilingRates> ceilings; // null: no calibration
     size_t index = 0; // the next run's number
 
     void run(SceneGpu& gpuScene, int lights, const std::string& lightsHash, const View& view) {
@@ -306,7 +311,7 @@ struct GroupRunner {
             const auto& [name, s] = runs[k];
             const bool isRef = name == kReferenceRenderer, owned = shard.owns(index);
             if (!any || (!owned && !isRef)) continue;
-            const RunOptions ro = sweepRunOptions(o, isRef);
+            const RunOptions ro = sweepRunOptions(o, isRef, ceilings);
             auto start = Clock::now();
             ReferenceCacheUse cache;
             Result<RunResult> result = runOne(ctx, gpuScene, name, features, s, ro, o, cache);
@@ -338,7 +343,10 @@ int runSweep(const SweepOptions& o) {
     std::vector<int> lightCounts;
     for (const std::string& s : splitList(o.lights, "--lights"))
         lightCounts.push_back(toInt(s, "--lights"));
+    checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
+    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
+    if (!calibration->available) std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
     RenderSettings base;
     std::vector<View> views; // validated up front: bad input fails before any run
     for (const std::string& r : splitList(o.res, "--res"))
@@ -358,7 +366,7 @@ int runSweep(const SweepOptions& o) {
 
     std::vector<SweepRow> rows;
     nlohmann::json header;
-    GroupRunner group{o, *ctx, names, shard, progress, rows};
+    GroupRunner group{o, *ctx, names, shard, progress, rows, ceilingsOf(*calibration)};
     for (int lights : lightCounts) {
         SceneOptions so = o.scene;
         so.lightCount = lights;
@@ -371,6 +379,7 @@ int runSweep(const SweepOptions& o) {
     }
     header["shard"] = {{"index", shard.index}, {"count", shard.count}, {"runs", group.index}};
     header["sweep_id_fnv1a64"] = sweepId(header);
+    header["calibration"] = calibrationUseJson(*calibration); // per machine: outside the id
     const std::vector<std::string> validation = ctx->validationMessages();
     header["validation_messages"] = validation;
     writeOutputs(o, rows, header, ctx->info.name);

@@ -29,6 +29,7 @@ struct CompareOptions {
     // user's cache folder by default; --no-reference-cache turns it off.
     std::string referenceCache;
     bool noReferenceCache = false;
+    std::string calibration = "auto"; // --calibration (compare/calibration_file.h)
     std::vector<std::string> commandLine; // recorded in report.json
 };
 

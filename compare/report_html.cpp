@@ -350,7 +350,8 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     Result<std::string> pairs = pairwiseSection(r, outDir);
     if (!pairs) return pairs;
     h +=
-        *images + flipSection(r) + *pairs + timingSection(r) + memorySection(r) + detailsSection(r);
+        *images + flipSection(r) + *pairs + timingSection(r) + efficiencySection(r) + memorySection(r) +
+        detailsSection(r);
     return h + "<p class=\"meta\">Schema " + esc(r["schema"]) +
            "; every number above is in report.json.</p>\n" + reportViewerScript() +
            "</body></html>\n";

@@ -26,5 +26,6 @@ bool hasCenterReference(const nlohmann::json& r);
 std::string twoReferences(const nlohmann::json& r);
 std::string errorPlot(const nlohmann::json& r);
 std::string flipSection(const nlohmann::json& r);
+std::string efficiencySection(const nlohmann::json& r); // report_efficiency_html.cpp
 
 } // namespace tp::cli::html

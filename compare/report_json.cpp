@@ -107,6 +107,7 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["settings"]["light_types"] = o.scene.lightTypes;
     j["settings"]["lights_requested"] = o.scene.lightCount;
     j["device"] = deviceJson(*r.ctx);
+    j["calibration"] = calibrationUseJson(*r.calibration);
     j["difference_scale"] = {
         {"value", r.diffScale},
         {"unit", "linear radiance, max over RGB of |pipeline - reference|"},

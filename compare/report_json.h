@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/calibration_file.h"
 #include "compare/compare.h"
 #include "compare/flip_measure.h"
 #include "compare/reference_cache.h"
@@ -62,6 +63,7 @@ struct CompareRecord {
     std::vector<PipelineOutcome> pipelines;
     std::vector<PairOutcome> pairs;
     std::vector<std::string> validationMessages;
+    std::shared_ptr<const RunCalibration> calibration; // the ceilings passes are placed against
 };
 
 nlohmann::json reportJson(const CompareRecord& r);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "compare/efficiency_json.h"
 #include "core/render/renderer.h"
 
 namespace tp::cli {
@@ -119,6 +120,8 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     j["left_out"] = leftOut;
     j["passes"] = run.passes;
     j["culled_passes"] = run.culledPasses;
+    j["work"] = passWorkJson(run.work);
+    if (run.efficiency) j["efficiency"] = efficiencyJson(*run.efficiency);
     return j;
 }
 

@@ -168,7 +168,7 @@ std::string seriesDash(size_t si, const std::vector<int>& colours) {
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
                              const std::string& yLabel, int width, int height,
                              const std::vector<std::string>& seriesNames, bool joinSeries,
-                             const std::vector<int>& seriesColours) {
+                             const std::vector<int>& seriesColours, const std::vector<PlotLine>& lines) {
     auto colourOf = [&](size_t si) { return seriesColour(si, seriesColours); };
     auto dashOf = [&](size_t si) { return seriesDash(si, seriesColours); };
     const double left = 80, right = 30, top = 20, bottom = 60;
@@ -181,6 +181,10 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
         else
             anyZero = true;
     }
+    for (const PlotLine& l : lines)
+        for (const auto& [x, y] : l.xy)
+            if (x > 0 && y > 0)
+                xlo = std::min(xlo, x), xhi = std::max(xhi, x), ylo = std::min(ylo, y), yhi = std::max(yhi, y);
     if (!(xhi > 0)) xlo = 1, xhi = 10;
     if (!(yhi > 0)) ylo = 1e-4, yhi = 1e-2;
     auto [xa, xb] = logRange(xlo, xhi);
@@ -213,6 +217,15 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
            ") rotate(-90)\" text-anchor=\"middle\" "
            "font-size=\"13\">" +
            escapeXml(yLabel + " (log)") + "</text>\n";
+    for (const PlotLine& l : lines) {
+        std::string path;
+        for (const auto& [x, y] : l.xy)
+            path += (path.empty() ? "M" : " L") + num(px(x)) + "," + num(py(y));
+        svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"#555\" stroke-width=\"2\"" +
+               (l.dashed ? " stroke-dasharray=\"6 3\"" : "") + "/>\n";
+        if (!l.xy.empty())
+            svg += text(px(l.xy.back().first) - 4, py(l.xy.back().second) - 6, l.label, "end", 12);
+    }
     for (size_t si = 0; si < seriesNames.size(); ++si) {
         std::vector<std::pair<double, double>> xy;
         for (const PlotPoint& p : points)

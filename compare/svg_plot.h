@@ -27,6 +27,14 @@ struct PlotPoint {
     int colour = -1;     // without series: this point's palette index; -1: its index
 };
 
+// A line drawn under a scatter plot's points, in data coordinates (e.g. a roofline's roofs),
+// labelled at its right end.
+struct PlotLine {
+    std::vector<std::pair<double, double>> xy;
+    std::string label;
+    bool dashed = false;
+};
+
 // Scatter plot with log x and log y axes, ticks at 1, 2, 5 x 10^k. With seriesNames, points
 // of one series share a colour, are joined in x order (joinSeries), and a legend names the series.
 // seriesColours: the palette index of each series (series of one pipeline may share one: their
@@ -34,7 +42,8 @@ struct PlotPoint {
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
                              const std::string& yLabel, int width = 720, int height = 440,
                              const std::vector<std::string>& seriesNames = {},
-                             bool joinSeries = true, const std::vector<int>& seriesColours = {});
+                             bool joinSeries = true, const std::vector<int>& seriesColours = {},
+                             const std::vector<PlotLine>& lines = {});
 
 // Escapes &, <, >, " and ' for HTML/SVG text and attributes.
 std::string escapeXml(const std::string& text);

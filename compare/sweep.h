@@ -31,6 +31,7 @@ struct SweepOptions {
     bool centerReference = true;
     std::string referenceCache; // --reference-cache (compare/reference_cache.h)
     bool noReferenceCache = false;
+    std::string calibration = "auto"; // --calibration (compare/calibration_file.h)
     // --shard K/N: only the runs whose index in the unsharded order is K modulo N (0 <= K < N);
     // `triptych merge` puts the shards back together (docs/scale-out.md).
     std::string shard;

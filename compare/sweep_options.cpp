@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include "compare/sweep.h"
 
+#include "compare/calibration_file.h"
 #include "compare/flip_measure.h"
 
 namespace tp::cli {
@@ -62,6 +63,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
         ->capture_default_str();
     addFlipDistanceOption(cmd, o.flipDistance);
     addReferenceCacheOptions(cmd, o.referenceCache, o.noReferenceCache);
+    cmd.add_option("--calibration", o.calibration, calibrationOptionHelp())->capture_default_str();
     cmd.add_option("--shard", o.shard,
                    "K/N: run only the runs whose index in the whole sweep's order is K modulo N "
                    "(0 <= K < N), for one of N processes, GPUs or cluster jobs; 'triptych merge' "

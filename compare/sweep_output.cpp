@@ -43,6 +43,18 @@ std::string flipFields(const SweepRow& r) {
     return number(r.flip.hdr.mean) + "," + number(r.flip.ldr.mean);
 }
 
+// The frame's passes at their ceilings, and its slowest pass's binding ceiling; empty without a
+// calibration.
+std::string efficiencyFields(const SweepRow& r) {
+    if (!r.efficiency || r.efficiency->passes.empty()) return ",,,,";
+    const FrameEfficiency& f = *r.efficiency;
+    const PassEfficiency& slowest = *std::max_element(
+        f.passes.begin(), f.passes.end(),
+        [](const PassEfficiency& a, const PassEfficiency& b) { return a.measuredMs < b.measuredMs; });
+    return number(f.boundSumMs) + "," + number(f.percent) + "," + csvField(slowest.pass) + "," +
+           csvField(slowest.bound.ceiling) + "," + number(slowest.percent);
+}
+
 } // namespace
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device) {
@@ -59,7 +71,8 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
          "tonemapped_mean,"
          "rmse_hdr_center,psnr_hdr_center,max_abs_hdr_center,rmse_tonemapped_center,psnr_"
          "tonemapped_center,"
-         "max_abs_tonemapped_center,lights_dropped,device,error\n";
+         "max_abs_tonemapped_center,lights_dropped,ceiling_sum_ms,ceiling_percent,slowest_pass,"
+         "slowest_pass_ceiling,slowest_pass_ceiling_percent,device,error\n";
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," +
              std::to_string(r.s.width) + "," + std::to_string(r.s.height) + "," +
@@ -71,7 +84,7 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
              "," + errorFields(r.measured, r.hdr) + "," + errorFields(r.measured, r.display) + "," +
              flipFields(r) + "," + errorFields(r.measuredCenter, r.hdrCenter) + "," +
              errorFields(r.measuredCenter, r.displayCenter) + "," + number(r.dropped) + "," +
-             csvField(device) + "," + csvField(r.error) + "\n";
+             efficiencyFields(r) + "," + csvField(device) + "," + csvField(r.error) + "\n";
     }
     return t;
 }

@@ -2,6 +2,7 @@
 // What a sweep measured, run by run, and its three files: sweep.csv (one row per run, the
 // headline figures), sweep.json (schema triptych.sweep/2: per run every pass's timings, the
 // memory ledger, counters and every metric) and sweep.html (plots).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct SweepRow {
     ErrorReport hdrCenter, displayCenter; // against --reference-msaa center
     float exposureEv = 0, hdrPsnrPeak = 1;
     nlohmann::json run; // runJson(): every pass, the ledger, counters, left-out
+    std::optional<FrameEfficiency> efficiency; // with a calibration (docs/efficiency.md)
     std::string lightsHash;
     nlohmann::json referenceCache; // reference rows: where the run came from (reference_cache.h)
     size_t runIndex = 0;           // in the unsharded sweep's order (sweep.json: run_index)

@@ -138,6 +138,7 @@ class DeferredRenderer final : public Renderer {
     RendererStats stats() const override;
 
   private:
+    void addLightWork(RendererStats& s) const;
     bool binned() const { return def_.assign.binned(); }
 
     // The G-buffer as tiled lighting's surface source: its colour targets at the bindings
@@ -250,7 +251,22 @@ RendererStats DeferredRenderer::stats() const {
     if (samples == 1) s.leftOut.push_back({"per-sample targets and edge mask", "MSAA is 1x"});
     if (samples > 1)
         s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
+    addLightWork(s);
     return s;
+}
+
+// Tiled: every pixel with geometry evaluates its tile's list (edge samples under MSAA left
+// out); volumes: every fragment of a light's volume evaluates that light.
+void DeferredRenderer::addLightWork(RendererStats& s) const {
+    using Base = PassLightWork::Base;
+    if (useVolumes())
+        s.lightWork.push_back({"volume_lights", Base::Fragments, 1.0, true, "one light per volume fragment"});
+    else
+        s.lightWork.push_back({"tiled_lighting", Base::CoveredPixels, s.counter("lights_per_tile_mean"), false,
+                               "lights_per_tile_mean, per pixel with geometry"});
+    if (hasBlended_)
+        s.lightWork.push_back({"transparent_forward", Base::Fragments, s.counter("transparent_lights_per_tile_mean"),
+                               false, "transparent_lights_per_tile_mean, per fragment"});
 }
 
 } // namespace

@@ -223,12 +223,28 @@ class ForwardPlusRenderer final : public Renderer {
             in.nodesUsed = nodesUsed_;
             in.poolNodes = lists_.poolNodes;
             fp::addListCounters(s.counters, in);
+            addLightWork(s);
         }
         addLeftOut(s);
         return s;
     }
 
   private:
+    // Every shaded fragment evaluates its tile's (cluster's) list and the unculled directional
+    // lights: the lists' mean stands for the fragment's list.
+    void addLightWork(RendererStats& s) const {
+        const double directional = double(classes_.directional.size());
+        const char* opaque = clustered() ? "lights_per_cluster_mean" : "lights_per_tile_mean";
+        s.lightWork.push_back({"forward_opaque", PassLightWork::Base::Fragments,
+                               s.counter(opaque) + directional, false,
+                               std::string(opaque) + " + directional lights, per fragment"});
+        if (!blendPass_) return;
+        const char* blended = clustered() ? "lights_per_front_cluster_mean" : "transparent_lights_per_tile_mean";
+        s.lightWork.push_back({"forward_transparent", PassLightWork::Base::Fragments,
+                               s.counter(blended, s.counter(opaque)) + directional, false,
+                               std::string(blended) + " + directional lights, per fragment"});
+    }
+
     // What this configuration leaves out, and why (the report's "left out" list).
     void addLeftOut(RendererStats& s) const {
         if (!blendPass_)

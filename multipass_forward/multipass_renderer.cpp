@@ -132,6 +132,13 @@ RendererStats MultipassForwardRenderer::stats() const {
                              "--blended-lights one-pass: every light in the blended composite"});
     if (plan_.masked.empty())
         s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
+    // A light pass's fragment evaluates its one light; the blended pass's base draws are
+    // counted as if lit (an upper bound); the base pass evaluates the directional lights.
+    using Base = PassLightWork::Base;
+    s.lightWork.push_back({"light_passes", Base::Fragments, 1.0, true, "one light per fragment"});
+    s.lightWork.push_back({"blended", Base::Fragments, 1.0, false, "one light per fragment (base draws too)"});
+    s.lightWork.push_back({"base_pass", Base::Fragments, double(plan_.baseDirectional.size()), true,
+                           "the directional lights, per fragment"});
     return s;
 }
 

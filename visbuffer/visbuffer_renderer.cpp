@@ -244,6 +244,10 @@ RendererStats VisbufferRenderer::stats() const {
     if (!vis_.assign.clustered())
         s.leftOut.push_back({"depth slices and their bitmasks", "--light-assign tiled"});
     if (samples == 1) s.leftOut.push_back({"per-sample ids and edge pixels", "MSAA is 1x"});
+    // Every pixel with geometry evaluates its tile's list (edge samples under MSAA and the
+    // blended layers composited in the same pass left out).
+    s.lightWork.push_back({"tiled_lighting", PassLightWork::Base::CoveredPixels, s.counter("lights_per_tile_mean"),
+                           false, "lights_per_tile_mean, per pixel with geometry"});
     return s;
 }
 

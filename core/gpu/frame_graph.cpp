@@ -2,6 +2,8 @@
 
 #include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
+#include "core/gpu/ledger.h"
+#include "core/gpu/pass_statistics.h"
 #include "core/gpu/profiler.h"
 #include "core/gpu/vk_check.h"
 
@@ -170,16 +172,19 @@ void FrameGraph::recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const 
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-void FrameGraph::record(VkCommandBuffer cmd, GpuProfiler* profiler) {
+void FrameGraph::record(VkCommandBuffer cmd, GpuProfiler* profiler, PassStatistics* statistics) {
     if (!compiled_) throw GraphError("FrameGraph::record before compile");
     for (const PlannedPass& p : plan_.passes) {
         for (const PlanBarrier& b : p.barriers)
             recordBarrier(cmd, b);
         const std::string& name = decl_.passes()[p.pass].name;
+        // The query brackets the timed scope: its own cost stays out of the pass's time.
+        const uint32_t query = statistics ? statistics->begin(cmd, name) : ~0u;
         uint32_t scope = profiler ? profiler->beginScope(cmd, name) : 0;
         PassContext pc{cmd, *this, p.pass};
         executes_[p.pass](pc);
         if (profiler) profiler->endScope(cmd, scope);
+        if (statistics) statistics->end(cmd, query);
     }
     for (const PlanBarrier& b : plan_.exportBarriers)
         recordBarrier(cmd, b);
@@ -199,6 +204,16 @@ const Buffer& FrameGraph::buffer(ResourceHandle h) const {
         throw GraphError("resource '" + decl_.resources()[h.index].name +
                          "' is not an allocated buffer");
     return r.buffer;
+}
+
+uint64_t FrameGraph::contentBytes(uint32_t resource) const {
+    if (!decl_.resources().at(resource).isImage) return resources_.at(resource).bufferSize;
+    const ImageDesc d = imageDesc(resource);
+    return uint64_t(d.width) * d.height * uint32_t(d.samples) * formatBytesPerTexel(d.format);
+}
+
+VkSampleCountFlagBits FrameGraph::samples(uint32_t resource) const {
+    return decl_.resources().at(resource).isImage ? resources_.at(resource).imageInfo.samples : VK_SAMPLE_COUNT_1_BIT;
 }
 
 bool FrameGraph::isAllocated(ResourceHandle h) const {

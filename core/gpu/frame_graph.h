@@ -25,6 +25,7 @@ namespace tp {
 
 class GpuContext;
 class GpuProfiler;
+class PassStatistics;
 
 struct GraphImageInfo {
     VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -72,12 +73,17 @@ class FrameGraph {
                           const std::vector<ExternalBuffer>& externals = {}) const;
 
     void compile(); // plan (cull, check, barriers), allocate
-    void record(VkCommandBuffer cmd, GpuProfiler* profiler); // barriers, timestamps, passes
+    // Barriers, timestamps and (with `statistics`) a pipeline-statistics query per pass, passes.
+    void record(VkCommandBuffer cmd, GpuProfiler* profiler, PassStatistics* statistics = nullptr);
 
     const Image& image(ResourceHandle h) const;
     const Buffer& buffer(ResourceHandle h) const;
     ResourceHandle exported(const std::string& publicName) const;
     bool isAllocated(ResourceHandle h) const;
+    // What one pass over the resource touches: texels x samples x bytes per texel for an image,
+    // the size for a buffer (docs/efficiency.md: the bytes a pass is counted to move).
+    uint64_t contentBytes(uint32_t resource) const;
+    VkSampleCountFlagBits samples(uint32_t resource) const; // 1 for a buffer
     std::vector<std::string> livePasses() const;
     std::vector<std::string> culledPasses() const;
     uint32_t width() const { return width_; }

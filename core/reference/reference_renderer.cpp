@@ -86,6 +86,8 @@ class ReferenceRenderer final : public Renderer {
                                           ? "device has no shaderFloat64"
                                           : "fp32 chosen (--reference-precision fp32)"});
         if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+        s.lightWork.push_back({"reference_shading", PassLightWork::Base::Fragments, double(scene_.lightCount()),
+                               true, "every light, per fragment (sample)"});
         return s;
     }
 

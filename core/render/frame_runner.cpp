@@ -1,9 +1,11 @@
 #include "core/render/frame_runner.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/pass_statistics.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
 #include "core/render/scene_gpu.h"
@@ -11,55 +13,13 @@
 namespace tp {
 namespace {
 
-// Counts the fragment-shader invocations of a whole frame (every pass) with a pipeline
-// statistics query, where the device has them (lavapipe does): the measure of the MSAA
-// shading rate (--msaa-shading pixel runs about one invocation per covered pixel and
-// primitive, sample about one per covered sample).
-class InvocationCounter {
-  public:
-    explicit InvocationCounter(GpuContext& ctx) : ctx_(ctx) {
-        if (!ctx.caps.pipelineStatisticsQuery) return;
-        VkQueryPoolCreateInfo ci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-        ci.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
-        ci.queryCount = 1;
-        ci.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT;
-        VK_CHECK(vkCreateQueryPool(ctx.device, &ci, nullptr, &pool_));
-    }
-    ~InvocationCounter() {
-        if (pool_) vkDestroyQueryPool(ctx_.device, pool_, nullptr);
-    }
-    InvocationCounter(const InvocationCounter&) = delete;
-    InvocationCounter& operator=(const InvocationCounter&) = delete;
-
-    void begin(VkCommandBuffer cmd) {
-        if (!pool_) return;
-        vkCmdResetQueryPool(cmd, pool_, 0, 1);
-        vkCmdBeginQuery(cmd, pool_, 0, 0);
-    }
-    void end(VkCommandBuffer cmd) {
-        if (pool_) vkCmdEndQuery(cmd, pool_, 0);
-    }
-    // The last submitted frame's count; false without the query.
-    bool read(uint64_t& out) {
-        if (!pool_) return false;
-        return vkGetQueryPoolResults(ctx_.device, pool_, 0, 1, sizeof(out), &out, sizeof(out),
-                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) ==
-               VK_SUCCESS;
-    }
-
-  private:
-    GpuContext& ctx_;
-    VkQueryPool pool_ = VK_NULL_HANDLE;
-};
-
 void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
-                 InvocationCounter& counter) {
+                 PassStatistics& statistics) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
     profiler.beginFrame(cmd);
-    counter.begin(cmd);
-    graph.record(cmd, &profiler);
-    counter.end(cmd);
+    statistics.beginFrame(cmd);
+    graph.record(cmd, &profiler, &statistics);
     profiler.endFrame(cmd);
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
@@ -92,10 +52,39 @@ void submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
     }
 }
 
+// Pixels whose depth is not the far plane (reverse-Z: 0): where geometry was shaded.
+double coveredPixels(const ImageR32& depth) {
+    return double(std::count_if(depth.r.begin(), depth.r.end(), [](float d) { return d > 0.0f; }));
+}
+
+std::vector<PassWork> countWork(const FrameGraph& graph, const std::vector<PassCounts>& counts,
+                                const RunResult& result) {
+    PassWorkInput in;
+    in.decl = &graph.declarations();
+    for (const PlannedPass& p : graph.plan().passes)
+        in.livePasses.push_back(p.pass);
+    in.resourceBytes = [&](uint32_t r) { return graph.contentBytes(r); };
+    in.resourceSamples = [&](uint32_t r) { return uint32_t(graph.samples(r)); };
+    in.counts = counts;
+    in.lightWork = result.stats.lightWork;
+    in.coveredPixels = coveredPixels(result.depth);
+    return countPassWork(in);
+}
+
+// The share of the local lights that are spots: their evaluations meet the spot ceilings.
+double spotShare(const std::vector<Light>& lights) {
+    double local = 0, spots = 0;
+    for (const Light& l : lights) {
+        local += l.type != LightType::Directional;
+        spots += l.type == LightType::Spot;
+    }
+    return local > 0 ? spots / local : 0.0;
+}
+
 // What a report needs from the frames just run.
-RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const RenderSettings& settings,
-                        PlannedRenderer& planned, GpuProfiler& profiler,
-                        InvocationCounter& invocations) {
+RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEntry& entry,
+                        const RenderSettings& settings, PlannedRenderer& planned, GpuProfiler& profiler,
+                        const PassStatistics& statistics, const CeilingRates* ceilings) {
     FrameGraph& graph = *planned.graph;
     RunResult result;
     result.renderer = entry.name;
@@ -109,7 +98,13 @@ RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const Rende
     planned.renderer->collectStats(graph);
     if (settings.debug) result.debugImages = planned.renderer->debugImages(graph);
     result.stats = planned.renderer->stats();
-    if (uint64_t n = 0; invocations.read(n)) {
+    // The measure of the MSAA shading rate: --msaa-shading pixel runs about one invocation per
+    // covered pixel and primitive, sample about one per covered sample.
+    const std::vector<PassCounts> counts = statistics.read();
+    if (statistics.available()) {
+        uint64_t n = 0;
+        for (const PassCounts& c : counts)
+            n += c.counts.fragmentInvocations;
         result.stats.counters.push_back({"fragment_shader_invocations", double(n)});
         result.stats.counters.push_back({"fragment_invocations_per_pixel",
                                          double(n) / double(settings.width * settings.height)});
@@ -117,6 +112,8 @@ RunResult collectResult(GpuContext& ctx, const RendererEntry& entry, const Rende
     result.memory = ctx.ledger.entriesOf(entry.name);
     result.passes = graph.livePasses();
     result.culledPasses = graph.culledPasses();
+    result.work = countWork(graph, counts, result);
+    if (ceilings) result.efficiency = placeFrame(result.work, result.timings, *ceilings, spotShare(scene.scene().lights));
     return result;
 }
 
@@ -155,17 +152,17 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
         return Error{s.error()};
 
     GpuProfiler profiler(ctx, 64);
-    InvocationCounter invocations(ctx);
+    PassStatistics statistics(ctx, 64);
     VkCommandBuffer cmd = ctx.allocateCommandBuffer();
     if (Status s =
-            pipelineStep(entry, [&] { recordFrame(cmd, *planned->graph, profiler, invocations); });
+            pipelineStep(entry, [&] { recordFrame(cmd, *planned->graph, profiler, statistics); });
         !s) {
         ctx.freeCommandBuffer(cmd);
         return Error{s.error()};
     }
     submitFrames(ctx, cmd, profiler, options);
     ctx.freeCommandBuffer(cmd);
-    return collectResult(ctx, entry, settings, *planned, profiler, invocations);
+    return collectResult(ctx, scene, entry, settings, *planned, profiler, statistics, options.ceilings.get());
 }
 
 Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,

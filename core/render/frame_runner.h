@@ -5,9 +5,12 @@
 // needs comes back in RunResult; nothing here knows which renderer ran.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/calibrate/efficiency.h"
+#include "core/calibrate/pass_work.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/ledger.h"
 #include "core/gpu/profiler.h"
@@ -21,6 +24,9 @@ struct RunOptions {
     uint32_t timedFrames = 3;
     // Called after each submitted frame (index from 0 over warm-up + timed), for progress.
     std::function<void(uint32_t frame, uint32_t total, double frameMs)> onFrame;
+    // The device's measured ceilings (docs/efficiency.md): with them, every pass is placed
+    // against them (RunResult::efficiency). Null: not placed.
+    std::shared_ptr<const CeilingRates> ceilings;
 };
 
 struct RunResult {
@@ -36,6 +42,8 @@ struct RunResult {
     std::vector<std::string> passes;       // recorded
     std::vector<std::string> culledPasses; // declared but not recorded (outputs unused)
     std::vector<DebugImage> debugImages;   // only with settings.debug
+    std::vector<PassWork> work;            // per live pass, in recording order (docs/efficiency.md)
+    std::optional<FrameEfficiency> efficiency; // with RunOptions::ceilings
 };
 
 // A renderer built for the scene and planned, its frame graph compiled (resources exist), not

@@ -55,9 +55,27 @@ struct DebugImage {
     bool display = true;
 };
 
+// The light evaluations one pass makes (docs/efficiency.md, "What is counted"): `perItem`
+// lights per item of `base`, its fragment-shader invocations (counted by the device) or the
+// pixels that hold geometry (from the depth image). Counted from the renderer's own counters.
+struct PassLightWork {
+    enum class Base { Fragments, CoveredPixels };
+    std::string pass;
+    Base base = Base::Fragments;
+    double perItem = 0;
+    bool exact = false; // false: an estimate (a mean over tiles or clusters, each weighted alike)
+    std::string how;    // one line: where perItem comes from
+};
+
 struct RendererStats {
     std::vector<std::pair<std::string, double>> counters; // e.g. lights_dropped, draws
     std::vector<LeftOut> leftOut;
+    std::vector<PassLightWork> lightWork;
+    double counter(const std::string& name, double fallback = 0) const {
+        for (const auto& [k, v] : counters)
+            if (k == name) return v;
+        return fallback;
+    }
 };
 
 class Renderer {

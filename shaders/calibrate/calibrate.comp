@@ -1,12 +1,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // One microbenchmark of `triptych calibrate` (TP_CAL_KIND, calibrate_shared.h): a loop whose
-// work the C++ counts exactly (bytes moved, FMAs, atomics), so that work / time is a rate of
-// the device. Step k of invocation gid touches vec4 (gid + k * stride) & mask: neighbouring
-// invocations touch neighbouring vec4 (whole cache lines), and a long loop wraps around the
-// buffer, passing over it again. Every result can reach memory, so no compiler removes a loop.
+// work the C++ counts exactly (bytes moved, FMAs, fetches, light evaluations, atomics), so
+// that work / time is a rate of the device. Step k of invocation gid touches vec4
+// (gid + k * stride) & mask: neighbouring invocations touch neighbouring vec4 (whole cache
+// lines), and a long loop wraps around the buffer, passing over it again. Every result can
+// reach memory, so no compiler removes a loop.
 #include "calibrate/calibrate_shared.h"
 #include "calibrate/calibrate_fma.glsl"
+#include "calibrate/calibrate_light.glsl"
+#include "calibrate/calibrate_texture.glsl"
 
 layout(local_size_x = TP_CAL_GROUP_SIZE) in;
 
@@ -39,6 +42,13 @@ void main() {
 #elif TP_CAL_KIND == TP_CAL_FMA
     const vec4 sum = fmaChains(float(gid), cal.iterations);
     if (sum.x == 1.0e-30) dst[gid] = sum;
+#elif TP_CAL_KIND == TP_CAL_TEXTURE
+    const uvec2 texel = uvec2(gid & uint(TP_CAL_TEXTURE_SIZE - 1), (gid / uint(TP_CAL_TEXTURE_SIZE)) & uint(TP_CAL_TEXTURE_SIZE - 1));
+    const vec4 sum = textureFetches(vec2(texel), cal.iterations);
+    if (sum.x == 1.0e-30) dst[gid] = sum;
+#elif TP_CAL_KIND == TP_CAL_LIGHT_POINT || TP_CAL_KIND == TP_CAL_LIGHT_SPOT
+    const vec3 sum = lightEvaluations(float(gid), cal.iterations, TP_CAL_KIND == TP_CAL_LIGHT_SPOT);
+    if (sum.x == 1.0e-30) dst[gid] = vec4(sum, 1.0);
 #elif TP_CAL_KIND == TP_CAL_SHARED_ATOMIC
     const uint lid = gl_LocalInvocationID.x;
     sWords[lid] = 0u;

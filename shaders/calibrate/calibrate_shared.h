@@ -6,6 +6,9 @@
 
 #define TP_CAL_BINDING_SRC 0 // buffer vec4[]: what the reads read
 #define TP_CAL_BINDING_DST 1 // buffer vec4[] (uint[] for the atomics): what the writes write
+#define TP_CAL_BINDING_TEXTURE 2 // sampler2D, RGBA8 (TP_CAL_TEXTURE_SIZE squared): what the fetches read
+
+#define TP_CAL_TEXTURE_SIZE 1024 // the size of a material texture in the built-in courtyard
 
 #define TP_CAL_GROUP_SIZE 256 // invocations per workgroup, every kind
 
@@ -17,15 +20,28 @@
 #define TP_CAL_FMA 4           // 8 independent vec4 FMA chains, `iterations` steps (calibrate_fma.glsl)
 #define TP_CAL_SHARED_ATOMIC 5 // `iterations` atomicAdd to shared memory, spread over 256 words
 #define TP_CAL_GLOBAL_ATOMIC 6 // `iterations` atomicAdd to dst words (mask + 1 of them)
-#define TP_CAL_FRAGMENT_FMA 7  // TP_CAL_FMA's loop per pixel of a full-screen triangle (calibrate_fma.frag)
+#define TP_CAL_FRAGMENT_FMA 7  // TP_CAL_FMA's loop per pixel of a full-screen triangle (calibrate.frag)
+#define TP_CAL_TEXTURE 8       // `iterations` bilinear fetches of the texture, neighbouring texels
+#define TP_CAL_LIGHT_POINT 9   // `iterations` evalLight of a point light (light_model.h)
+#define TP_CAL_LIGHT_SPOT 10   // ... of a spot light
+// Fragment kinds (calibrate.frag), drawn over TP_CAL_VERTEX's geometry.
+#define TP_CAL_FRAGMENT_TEXTURE 11 // TP_CAL_TEXTURE per pixel, with texture() (derivatives)
+#define TP_CAL_FRAGMENT_LIGHT_POINT 12
+#define TP_CAL_FRAGMENT_LIGHT_SPOT 13
+#define TP_CAL_FRAGMENT_FLAT 14 // one constant colour: what rasterisation and the ROPs cost
+
+// Vertex kinds (calibrate.vert, TP_CAL_VERTEX).
+#define TP_CAL_VERTEX_LAYERS 0 // one full-screen triangle per instance (`iterations` instances)
+#define TP_CAL_VERTEX_GRID 1   // `stride` x `stride` cells of two triangles each, per instance
 
 #ifndef TP_GLSL
 namespace tp::gpu {
 #endif
 
 struct CalPush {
-    uint stride;     // vec4 between an invocation's steps: the grid (streams), 1024 (cache read)
-    uint iterations; // steps per invocation
+    uint stride;     // vec4 between an invocation's steps: the grid (streams), 1024 (cache
+                     // read); cells per row (TP_CAL_VERTEX_GRID)
+    uint iterations; // steps per invocation; instances (layers) of a draw
     uint mask;       // index mask: the buffer's or window's length in vec4 (words) minus 1
     uint pad;
 };

@@ -25,7 +25,10 @@ file_problem() {
     python3 - "$file" <<'PY'
 import json, sys
 f = json.load(open(sys.argv[1]))
-names = ["dram_read", "dram_write", "dram_copy", "cache_read", "fp32_fma", "shared_atomic", "global_atomic", "fragment_fma"]
+names = ["dram_read", "dram_write", "dram_copy", "cache_read", "fp32_fma", "shared_atomic", "global_atomic",
+         "texture_fetch", "light_point", "light_spot", "fragment_fma", "fragment_texture_fetch",
+         "fragment_light_point", "fragment_light_spot", "raster_depth", "rop_colour", "rop_blend",
+         "raster_msaa4", "tri_small", "tri_large", "tri_culled"]
 if f.get("schema") != "triptych.calibration/1": print("schema", f.get("schema")); sys.exit()
 if [c["name"] for c in f["ceilings"]] != names: print("ceilings", [c["name"] for c in f["ceilings"]]); sys.exit()
 for c in f["ceilings"]:
@@ -86,6 +89,35 @@ run_triptych calibrate --quick --repeats 0 --out "$work/zero.json"
 report "--repeats 0 is refused" "$(error_problem "" "--repeats" 2)"
 run_triptych calibrate --quick --device "no such device" --out "$work/nodev.json"
 report "an unknown device is refused" "$(error_problem "" "" 2)"
+
+# render places every pass against a named calibration: render.json says which file, every
+# live pass has its counted work, and every pass with counted work a binding ceiling.
+calibrate
+run_triptych render --pipeline forwardplus --res 64x36 --lights 8 --frames 1 --warmup 0 --validate \
+    --calibration "$file" --out "$work/render"
+problem=$(ok_saying "of light_alu\|of raster\|of triangles\|of memory")
+[ -z "$problem" ] && problem=$(python3 - "$work/render/render.json" "$file" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+if not r["calibration"]["available"] or r["calibration"]["path"] != sys.argv[2]: print("calibration", r["calibration"]); sys.exit()
+run = r["run"]
+if [w["pass"] for w in run["work"]] != run["passes"]: print("work", [w["pass"] for w in run["work"]]); sys.exit()
+e = run["efficiency"]
+if [p["pass"] for p in e["passes"]] != run["passes"]: print("efficiency passes"); sys.exit()
+shade = [p for p in e["passes"] if p["pass"] == "forward_opaque"][0]
+if shade["bound"] is None or shade["bound"]["ms"] <= 0 or "roofline" not in shade: print("forward_opaque", shade); sys.exit()
+work = [w for w in run["work"] if w["pass"] == "forward_opaque"][0]
+if work["light_evaluations"] <= 0 or work["pipeline_statistics"]["fragment_invocations"] <= 0: print("work", work); sys.exit()
+if e["missing_ceilings"]: print("missing", e["missing_ceilings"])
+PY
+)
+report "render places every pass against --calibration FILE" "$problem"
+
+run_triptych render --res 64x36 --calibration "$work/absent.json" --out "$work/r2"
+report "--calibration with a missing file is refused" "$(error_problem "" "--calibration" 2)"
+sed 's/"device": "[^"]*"/"device": "another device"/' "$file" > "$work/other_device.json"
+run_triptych render --res 64x36 --frames 1 --warmup 0 --calibration "$work/other_device.json" --out "$work/r3"
+report "--calibration of another device is refused" "$(error_problem "" "measured on another device" 2)"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

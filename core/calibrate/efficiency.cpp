@@ -1,0 +1,89 @@
+#include "core/calibrate/efficiency.h"
+
+#include <algorithm>
+
+namespace tp {
+namespace {
+
+struct Placer {
+    const CeilingRates& rates;
+    double spotShare;
+    std::vector<std::string>& missing;
+
+    // Base units per second, 0 when the calibration lacks it (recorded once as missing).
+    double rate(const std::string& name) const {
+        auto it = rates.find(name);
+        if (it != rates.end() && it->second > 0) return it->second;
+        if (std::find(missing.begin(), missing.end(), name) == missing.end()) missing.push_back(name);
+        return 0;
+    }
+    double ms(double work, double perSecond) const { return perSecond > 0 ? work / perSecond * 1e3 : 0; }
+
+    LimitTime memory(const PassWork& w) const {
+        return {"memory", "dram_read + dram_write",
+                ms(w.bytesRead, rate("dram_read")) + ms(w.bytesWritten, rate("dram_write"))};
+    }
+    // Light evaluations at the stage's light-model ceilings, point and spot in the scene's mix.
+    LimitTime lightAlu(const PassWork& w) const {
+        const std::string prefix = w.stage == PassStage::Compute ? "light_" : "fragment_light_";
+        const double t = ms(w.lightEvaluations * (1 - spotShare), rate(prefix + "point")) +
+                         (spotShare > 0 ? ms(w.lightEvaluations * spotShare, rate(prefix + "spot")) : 0.0);
+        return {"light_alu", prefix + "point, " + prefix + "spot", t};
+    }
+    LimitTime raster(const PassWork& w) const {
+        const char* c = w.raster == RasterPath::DepthOnly ? "raster_depth"
+                        : w.raster == RasterPath::Msaa    ? "raster_msaa4"
+                                                          : "rop_colour";
+        return {"raster", c, ms(double(w.counts.fragmentInvocations), rate(c))};
+    }
+    // Every primitive submitted at the rate of triangles that are all culled: the least any
+    // triangle costs (those the pass rasterizes cost more; raster and ROPs place them).
+    LimitTime triangles(const PassWork& w) const {
+        return {"triangles", "tri_culled", ms(double(w.counts.inputPrimitives), rate("tri_culled"))};
+    }
+
+    PassEfficiency place(const PassWork& w, double measuredMs) const {
+        PassEfficiency e{w.pass, measuredMs};
+        if (w.bytesRead + w.bytesWritten > 0) e.limits.push_back(memory(w));
+        if (w.lightEvaluations > 0) e.limits.push_back(lightAlu(w));
+        if (w.counted && w.stage == PassStage::Graphics && w.counts.fragmentInvocations > 0)
+            e.limits.push_back(raster(w));
+        if (w.counted && w.counts.inputPrimitives > 0) e.limits.push_back(triangles(w));
+        for (const LimitTime& l : e.limits)
+            if (l.ms > e.bound.ms) e.bound = l;
+        e.percent = measuredMs > 0 ? e.bound.ms / measuredMs * 100 : 0;
+        e.bytes = w.bytesRead + w.bytesWritten;
+        if (w.lightEvaluations > 0) roofline(w, e);
+        return e;
+    }
+    // FLOPs of the FMA loop that runs as long as the evaluations do, on the same stage.
+    void roofline(const PassWork& w, PassEfficiency& e) const {
+        const bool compute = w.stage == PassStage::Compute;
+        e.roof = compute ? "fp32_fma" : "fragment_fma";
+        const auto roof = rates.find(e.roof); // optional: no roofline point without it
+        e.flops = roof == rates.end() ? 0.0 : lightAlu(w).ms * 1e-3 * roof->second;
+    }
+};
+
+double timingOf(const std::vector<TimingStats>& timings, const std::string& name) {
+    for (const TimingStats& t : timings)
+        if (t.name == name) return t.medianMs;
+    return 0;
+}
+
+} // namespace
+
+FrameEfficiency placeFrame(const std::vector<PassWork>& work, const std::vector<TimingStats>& timings,
+                           const CeilingRates& rates, double spotShare) {
+    FrameEfficiency f;
+    Placer placer{rates, std::clamp(spotShare, 0.0, 1.0), f.missingCeilings};
+    f.frameMs = timingOf(timings, "frame");
+    for (const PassWork& w : work) {
+        f.passes.push_back(placer.place(w, timingOf(timings, w.pass)));
+        f.boundSumMs += f.passes.back().bound.ms;
+    }
+    f.percent = f.frameMs > 0 ? f.boundSumMs / f.frameMs * 100 : 0;
+    return f;
+}
+
+} // namespace tp

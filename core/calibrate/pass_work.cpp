@@ -1,0 +1,98 @@
+#include "core/calibrate/pass_work.h"
+
+#include <algorithm>
+
+namespace tp {
+namespace {
+
+bool isAttachment(Use u) {
+    return u == Use::ColorAttachment || u == Use::ColorResolve || u == Use::DepthAttachment ||
+           u == Use::DepthResolve || u == Use::DepthTest;
+}
+
+RasterPath rasterPath(const GraphDecl::Pass& p, const PassWorkInput& in) {
+    bool colour = false, depth = false, msaa = false;
+    for (const PassUse& u : p.uses) {
+        if (!isAttachment(u.use)) continue;
+        colour |= u.use == Use::ColorAttachment;
+        depth |= u.use == Use::DepthAttachment || u.use == Use::DepthTest;
+        msaa |= in.resourceSamples(u.resource.index) > 1;
+    }
+    if (!colour && !depth) return RasterPath::None;
+    if (msaa) return RasterPath::Msaa;
+    return colour ? RasterPath::Colour : RasterPath::DepthOnly;
+}
+
+// A pass that draws (attachments, or primitives counted) is graphics; one that only reads and
+// writes storage or samples is compute; transfers and clears are neither.
+PassStage stageOf(const GraphDecl::Pass& p, const PassWork& w) {
+    if (w.raster != RasterPath::None || (w.counted && w.counts.inputPrimitives > 0)) return PassStage::Graphics;
+    for (const PassUse& u : p.uses)
+        if (u.use != Use::TransferSrc && u.use != Use::TransferDst) return PassStage::Compute;
+    return PassStage::Other;
+}
+
+const PassCounts* countsOf(const PassWorkInput& in, const std::string& pass) {
+    for (const PassCounts& c : in.counts)
+        if (c.pass == pass) return &c;
+    return nullptr;
+}
+
+void addLightWork(PassWork& w, const PassWorkInput& in) {
+    for (const PassLightWork& l : in.lightWork) {
+        if (l.pass != w.pass) continue;
+        const bool byFragments = l.base == PassLightWork::Base::Fragments;
+        if (byFragments && !w.counted) continue; // nothing to multiply without the statistics
+        const double items = byFragments ? double(w.counts.fragmentInvocations) : in.coveredPixels;
+        w.lightEvaluations = items * l.perItem;
+        w.lightExact = l.exact;
+        w.lightHow = l.how;
+    }
+}
+
+} // namespace
+
+UseBytes useBytes(Use use, uint64_t bytes) {
+    const double b = double(bytes);
+    switch (use) {
+    case Use::ColorAttachment:
+    case Use::ColorResolve:
+    case Use::DepthResolve:
+    case Use::StorageWrite:
+    case Use::TransferDst:
+        return {0, b};
+    case Use::DepthAttachment:
+        return {b, b};
+    case Use::DepthTest:
+    case Use::Sampled:
+    case Use::StorageRead:
+    case Use::TransferSrc:
+        return {b, 0};
+    }
+    return {};
+}
+
+std::vector<PassWork> countPassWork(const PassWorkInput& in) {
+    std::vector<PassWork> out;
+    for (uint32_t index : in.livePasses) {
+        const GraphDecl::Pass& p = in.decl->passes().at(index);
+        PassWork w;
+        w.pass = p.name;
+        w.raster = rasterPath(p, in);
+        for (const PassUse& u : p.uses) {
+            const UseBytes b = useBytes(u.use, in.resourceBytes(u.resource.index));
+            w.bytesRead += b.read;
+            w.bytesWritten += b.written;
+        }
+        if (const PassCounts* c = countsOf(in, p.name)) {
+            w.counted = true;
+            w.counts = c->counts;
+        }
+        w.stage = stageOf(p, w);
+        addLightWork(w, in);
+        out.push_back(w);
+    }
+    return out;
+}
+
+} // namespace tp

@@ -1,0 +1,53 @@
+#pragma once
+// Each pass's work, counted (docs/efficiency.md, "What is counted"): the bytes its declared
+// uses move, what the device counted it doing (pipeline statistics) and the light evaluations
+// its renderer counts. No device here: tested on the CPU against hand-computed passes.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/gpu/graph_plan.h"
+#include "core/gpu/pass_statistics.h"
+#include "core/render/renderer.h"
+
+namespace tp {
+
+// Which ALU a pass's shading runs on, and which raster path its fragments take: what decides
+// the ceilings it is placed against.
+enum class PassStage { Compute, Graphics, Other };
+enum class RasterPath { None, DepthOnly, Colour, Msaa };
+
+struct PassWork {
+    std::string pass;
+    PassStage stage = PassStage::Other;
+    RasterPath raster = RasterPath::None;
+    double bytesRead = 0, bytesWritten = 0; // the frame graph's declared uses, each once
+    bool counted = false;                   // pipeline statistics were available
+    PipelineCounts counts;
+    double lightEvaluations = 0;
+    bool lightExact = false;
+    std::string lightHow; // empty: the pass evaluates no light
+};
+
+// What one use moves of a resource of `bytes`: attachments are written (a depth attachment is
+// also read by its test; blending's read of a colour attachment is not counted), storage
+// writes are written, the others read.
+struct UseBytes {
+    double read = 0, written = 0;
+};
+UseBytes useBytes(Use use, uint64_t bytes);
+
+struct PassWorkInput {
+    const GraphDecl* decl = nullptr;
+    std::vector<uint32_t> livePasses;                 // declaration indices, in recording order
+    std::function<uint64_t(uint32_t)> resourceBytes; // FrameGraph::contentBytes
+    std::function<uint32_t(uint32_t)> resourceSamples;
+    std::vector<PassCounts> counts;     // empty without pipeline statistics
+    std::vector<PassLightWork> lightWork;
+    double coveredPixels = 0; // pixels whose depth is not the far plane
+};
+
+std::vector<PassWork> countPassWork(const PassWorkInput& in);
+
+} // namespace tp

@@ -1,0 +1,24 @@
+// The fetch loop of calibrate's texture ceilings: `steps` bilinear fetches of the RGBA8 texture
+// (TP_CAL_TEXTURE_SIZE squared, one mip level, the size of the courtyard's material textures).
+// Neighbouring invocations or pixels fetch neighbouring texels, each step a new place, between
+// texel centres (four texels blended). Compute fetches level 0 explicitly; a fragment shader
+// uses texture() with its derivatives (one texel per pixel: level 0), as a material does.
+#ifndef TP_CALIBRATE_TEXTURE_GLSL
+#define TP_CALIBRATE_TEXTURE_GLSL
+
+layout(set = 1, binding = TP_CAL_BINDING_TEXTURE) uniform sampler2D calTexture;
+
+vec4 textureFetches(vec2 texel, uint steps) {
+    const float inv = 1.0 / float(TP_CAL_TEXTURE_SIZE);
+    vec4 sum = vec4(0.0);
+    for (uint k = 0u; k < steps; ++k) {
+        const vec2 uv = (texel + vec2(float((k * 37u) & 1023u), float((k * 11u) & 1023u)) + 0.25) * inv;
+#ifdef TP_CAL_FRAGMENT
+        sum += texture(calTexture, uv);
+#else
+        sum += textureLod(calTexture, uv, 0.0);
+#endif
+    }
+    return sum;
+}
+#endif
