@@ -8,6 +8,8 @@
 #include "include/shared.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "include/scene_bindings.glsl"
+// One pipeline per material's texture indices (forwardplus/forward_shading.cpp).
+#define TP_MATERIAL_SPEC_TEXTURES 1
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
