@@ -30,10 +30,10 @@ vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
 
 // TP_MATERIAL_SPEC_TEXTURES: the five texture indices are specialization constants, one
 // pipeline per material (Forward+'s shading, forwardplus/forward_shading.cpp). lavapipe runs
-// both sides of every branch and samples an absent texture anyway (a masked-off sample still
-// fetches, from texture 0), and takes a dynamic index through a per-lane loop and a switch
-// over the whole array; compiled in, an absent texture costs nothing and a present one is a
-// static sample (docs/forwardplus.md, "The material floor on lavapipe"). A slot left at
+// both sides of every branch, so sampleTexture()'s guard does not skip the sample of an absent
+// texture, and it takes a dynamic index through a per-lane loop and a switch over the whole
+// array; compiled in, an absent texture costs nothing and a present one is a static sample
+// (docs/forwardplus.md, "The material floor on lavapipe"). A slot left at
 // TP_TEXTURE_FROM_MATERIAL reads the buffer as before; either way the same texel is sampled.
 #ifdef TP_MATERIAL_SPEC_TEXTURES
 layout(constant_id = TP_SPEC_MATERIAL_TEXTURE_FIRST + 0) const int kBaseColorTexture = TP_TEXTURE_FROM_MATERIAL;
