@@ -116,11 +116,14 @@ void main() {
     uint count = tiles[tileIndex].list[list].count;
     uint start = tiles[tileIndex].list[list].start;
     // One loop over the directional lights, then the tile's list, in that order (the same
-    // sums as two loops). lavapipe runs a loop's body once more than its longest lane, with
-    // every lane masked off, so each loop costs one whole light evaluation even when empty:
-    // one loop instead of two saves that at every light count (docs/forwardplus.md).
+    // sums as two loops). lavapipe runs every loop body at least once, with every lane masked
+    // off if need be, and a loop that tests at the top one time more than its longest lane:
+    // one loop instead of two saves a whole light evaluation per fragment at every light
+    // count, and testing at the bottom another where there are lights (docs/forwardplus.md).
+    uint total = directionalCount + count;
     uint node = start;
-    for (uint i = 0u; i < directionalCount + count; ++i) {
+    uint i = 0u;
+    if (total > 0u) do {
         uint lightIndex;
         if (i < directionalCount) {
             lightIndex = data[i];
@@ -131,6 +134,7 @@ void main() {
             lightIndex = indices[start + (i - directionalCount)];
         }
         sum += evalLight(lights[lightIndex], ms.surface, kHasSpot);
-    }
+        ++i;
+    } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
 }
