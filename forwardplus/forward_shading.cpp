@@ -1,5 +1,8 @@
 #include "forwardplus/forward_shading.h"
 
+#include <algorithm>
+#include <array>
+#include <map>
 #include <string>
 
 #include "core/gpu/context.h"
@@ -12,7 +15,7 @@ namespace tp::fp {
 
 ForwardShading::~ForwardShading() {
     for (VkPipeline p : pipelines_)
-        if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
+        vkDestroyPipeline(ctx_.device, p, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     destroyPassSet(ctx_, set_);
 }
@@ -43,33 +46,81 @@ void ForwardShading::plan(FrameGraph& graph, const ShadingTargets& t) {
 void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
     set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, {{TP_FP_BINDING_PARAMS, params}});
     layout_ = scene_.createPipelineLayout(set_.layout);
-    for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
-        if (!scene_.hasDraws(DrawFilter(mode))) continue;
-        GraphicsPipelineDesc d;
-        // --msaa-shading: pixel runs once per pixel at its centre (no `sample` inputs, no
-        // sample shading; the EQUAL depth test against the per-sample prepass gives each
-        // sample its coverage, masked materials included); sample shades every sample.
-        d.fragmentShader = std::string(config_.clustered ? "fp_shading_clustered" : "fp_shading") +
-                           (config_.subgroupLoop ? "_subgroup" : "") +
-                           (config_.sampling.perPixelUnderMsaa() ? "_pixel_frag" : "_frag");
-        d.colorFormats = {t_.hdrFormat};
-        d.samples = VkSampleCountFlagBits(config_.sampling.samples);
-        d.sampleShading = config_.sampling.perSample();
-        d.layout = layout_;
-        d.passSet = &set_;
-        d.depthWrite = false;
-        d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
-        d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
-        d.specConstants = scene_.specConstants(mode);
-        d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.tileSize});
-        d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
-        d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
-        if (config_.clustered) {
-            d.specConstants.push_back({TP_FP_SPEC_SLICES, config_.slices});
-            d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendPass ? 1u : 0u});
-        }
-        pipelines_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
+    for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+        if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
+}
+
+GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
+    GraphicsPipelineDesc d;
+    // --msaa-shading: pixel runs once per pixel at its centre (no `sample` inputs, no
+    // sample shading; the EQUAL depth test against the per-sample prepass gives each
+    // sample its coverage, masked materials included); sample shades every sample.
+    d.fragmentShader = std::string(config_.clustered ? "fp_shading_clustered" : "fp_shading") +
+                       (config_.subgroupLoop ? "_subgroup" : "") +
+                       (config_.sampling.perPixelUnderMsaa() ? "_pixel_frag" : "_frag");
+    d.colorFormats = {t_.hdrFormat};
+    d.samples = VkSampleCountFlagBits(config_.sampling.samples);
+    d.sampleShading = config_.sampling.perSample();
+    d.layout = layout_;
+    d.passSet = &set_;
+    d.depthWrite = false;
+    d.depthCompare = mode == AlphaMode::Blend ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
+    d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
+    d.specConstants = scene_.specConstants(mode);
+    d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.tileSize});
+    d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
+    d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
+    if (config_.clustered) {
+        d.specConstants.push_back({TP_FP_SPEC_SLICES, config_.slices});
+        d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendPass ? 1u : 0u});
     }
+    return d;
+}
+
+namespace {
+
+// A material's texture indices in material.glsl's slot order (TP_SPEC_MATERIAL_TEXTURE_FIRST).
+using TextureSlots = std::array<int32_t, 5>;
+
+TextureSlots textureSlots(const Material& m) {
+    return {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture,
+            m.emissiveTexture};
+}
+
+// Past this many distinct materials in one alpha mode, the rest share one pipeline that reads
+// the indices from the material buffer: pipeline creation stays bounded on large scenes.
+constexpr size_t kMaxMaterialPipelines = 32;
+constexpr TextureSlots kFromMaterial = {TP_TEXTURE_FROM_MATERIAL, TP_TEXTURE_FROM_MATERIAL,
+                                        TP_TEXTURE_FROM_MATERIAL, TP_TEXTURE_FROM_MATERIAL,
+                                        TP_TEXTURE_FROM_MATERIAL};
+
+} // namespace
+
+// One pipeline per distinct set of texture indices among this mode's draws: on lavapipe an
+// absent texture is otherwise still sampled and a present one goes through a dynamic index
+// (material.glsl, TP_MATERIAL_SPEC_TEXTURES; docs/forwardplus.md, "The material floor").
+void ForwardShading::createMaterialPipelines(AlphaMode mode) {
+    const std::vector<Material>& materials = scene_.scene().materials;
+    std::vector<VkPipeline>& byMaterial = byMaterial_[uint32_t(mode)];
+    byMaterial.assign(materials.size(), VK_NULL_HANDLE);
+    std::map<TextureSlots, VkPipeline> variants;
+    auto variant = [&](TextureSlots slots) {
+        if (variants.size() >= kMaxMaterialPipelines && !variants.count(slots))
+            slots = kFromMaterial;
+        if (auto it = variants.find(slots); it != variants.end()) return it->second;
+        GraphicsPipelineDesc d = pipelineDesc(mode);
+        for (uint32_t i = 0; i < slots.size(); ++i)
+            d.specConstants.push_back({TP_SPEC_MATERIAL_TEXTURE_FIRST + i, uint32_t(slots[i])});
+        VkPipeline p = createGraphicsPipeline(ctx_, d);
+        pipelines_.push_back(p);
+        return variants[slots] = p;
+    };
+    for (const DrawItem* item : scene_.drawList(DrawFilter(mode))) {
+        if (item->material >= materials.size()) continue; // drawn with the buffer's indices
+        VkPipeline& p = byMaterial[item->material];
+        if (!p) p = variant(textureSlots(materials[item->material]));
+    }
+    byMaterial.push_back(variant(kFromMaterial)); // last: for a material index out of range
 }
 
 void ForwardShading::record(PassContext& pc, bool transparent) {
@@ -87,8 +138,18 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
     std::vector<AlphaMode> modes = transparent
                                        ? std::vector<AlphaMode>{AlphaMode::Blend}
                                        : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
-    for (AlphaMode mode : modes)
-        scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
+    scene_.bindIndexBuffer(pc.cmd);
+    for (AlphaMode mode : modes) {
+        const std::vector<VkPipeline>& byMaterial = byMaterial_[uint32_t(mode)];
+        VkPipeline bound = VK_NULL_HANDLE;
+        // The draws in recordDraws' order, each with its material's pipeline.
+        for (const DrawItem* item : scene_.drawList(DrawFilter(mode))) {
+            VkPipeline p = byMaterial[std::min<size_t>(item->material, byMaterial.size() - 1)];
+            if (p != bound) vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
+            bound = p;
+            recordDraw(pc.cmd, layout_, *item);
+        }
+    }
     endRendering(pc);
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
 #include "core/render/msaa_knob.h"
 
 namespace tp {
@@ -48,6 +49,8 @@ class ForwardShading {
 
   private:
     std::vector<PassUse> uses(bool transparent) const;
+    GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
+    void createMaterialPipelines(AlphaMode mode);
     void record(PassContext& pc, bool transparent);
     GpuContext& ctx_;
     const SceneGpu& scene_;
@@ -55,7 +58,11 @@ class ForwardShading {
     ShadingTargets t_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline pipelines_[3] = {}; // by AlphaMode
+    // By AlphaMode, then by material: the pipeline with that material's texture indices
+    // compiled in (material.glsl, TP_MATERIAL_SPEC_TEXTURES); materials with the same
+    // indices share one. pipelines_ owns them all.
+    std::vector<VkPipeline> byMaterial_[3];
+    std::vector<VkPipeline> pipelines_;
 };
 
 } // namespace tp::fp

@@ -8,6 +8,8 @@
 #include "include/shared.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "include/scene_bindings.glsl"
+// One pipeline per material's texture indices (forwardplus/forward_shading.cpp).
+#define TP_MATERIAL_SPEC_TEXTURES 1
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
@@ -102,11 +104,10 @@ void main() {
 
     vec3 sum = ambientAndEmissive(ms);
     uint directionalCount = params.lights.x;
-    for (uint i = 0u; i < directionalCount; ++i)
-        sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
-
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
 #ifdef TP_FP_CLUSTERED
+    for (uint i = 0u; i < directionalCount; ++i)
+        sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
     sum += clusterLights(tileIndex, ms.surface);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
@@ -114,16 +115,26 @@ void main() {
     uint list = (kTwoLists && kAlphaMode == TP_ALPHA_BLEND) ? 1u : 0u;
     uint count = tiles[tileIndex].list[list].count;
     uint start = tiles[tileIndex].list[list].start;
-    if (kLayout == TP_FP_LAYOUT_LINKED) {
-        uint node = start;
-        for (uint i = 0u; i < count; ++i) {
-            uint lightIndex = indices[2u * node];
+    // One loop over the directional lights, then the tile's list, in that order (the same
+    // sums as two loops). lavapipe runs every loop body at least once, with every lane masked
+    // off if need be, and a loop that tests at the top one time more than its longest lane:
+    // one loop instead of two saves a whole light evaluation per fragment at every light
+    // count, and testing at the bottom another where there are lights (docs/forwardplus.md).
+    uint total = directionalCount + count;
+    uint node = start;
+    uint i = 0u;
+    if (total > 0u) do {
+        uint lightIndex;
+        if (i < directionalCount) {
+            lightIndex = data[i];
+        } else if (kLayout == TP_FP_LAYOUT_LINKED) {
+            lightIndex = indices[2u * node];
             node = indices[2u * node + 1u];
-            sum += evalLight(lights[lightIndex], ms.surface, kHasSpot);
+        } else {
+            lightIndex = indices[start + (i - directionalCount)];
         }
-    } else {
-        for (uint i = 0u; i < count; ++i)
-            sum += evalLight(lights[indices[start + i]], ms.surface, kHasSpot);
-    }
+        sum += evalLight(lights[lightIndex], ms.surface, kHasSpot);
+        ++i;
+    } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
 }

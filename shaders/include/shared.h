@@ -23,6 +23,11 @@
 // them without knowing which pipeline composed them):
 #define TP_SPEC_TILE_SIZE 3     // tile edge in pixels (8, 16, 32: --tile) of the tiled light assignment
 #define TP_SPEC_SAMPLES 4       // MSAA samples per pixel a pass reads (depth, G-buffer)
+// A material's five texture indices compiled in (material.glsl, TP_MATERIAL_SPEC_TEXTURES):
+// ids FIRST + 0..4 = base colour, metallic-roughness, normal, occlusion, emissive; the
+// default TP_TEXTURE_FROM_MATERIAL reads the index from the material buffer instead.
+#define TP_SPEC_MATERIAL_TEXTURE_FIRST 40
+#define TP_TEXTURE_FROM_MATERIAL -2
 
 // Light types and alpha modes (match tp::LightType / tp::AlphaMode).
 #define TP_LIGHT_POINT 0u
