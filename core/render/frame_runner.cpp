@@ -9,6 +9,7 @@
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
 #include "core/render/scene_gpu.h"
+#include "core/util/clock.h"
 
 namespace tp {
 namespace {
@@ -38,18 +39,31 @@ template <class Step> Status pipelineStep(const RendererEntry& entry, Step&& ste
     return {};
 }
 
-// Warm-up then timed frames of the one recording; the profiler keeps the timed ones.
-void submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
-                  const RunOptions& options) {
-    const uint32_t total = options.warmupFrames + options.timedFrames;
-    for (uint32_t f = 0; f < total; ++f) {
+// A GPU lowers its clock within seconds of going idle (an H100: 1,980 to 345 MHz while compare
+// measures the previous pipeline's error on the CPU) and takes about a second to raise it again:
+// three warm-up frames of a few milliseconds are timed at a fraction of the clock. So on a GPU the
+// warm-up goes on until it has run this long; a CPU device has no such clock.
+constexpr double kGpuWarmupMs = 1000.0;
+constexpr uint32_t kMaxWarmupFrames = 2000;
+
+// Warm-up then timed frames of the one recording; the profiler keeps the timed ones. Returns
+// how many warm-up frames ran.
+uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
+                      const RunOptions& options) {
+    const double minWarmupMs = options.warmupFrames > 0 && !ctx.isCpuDevice() ? kGpuWarmupMs : 0.0;
+    const auto begin = std::chrono::steady_clock::now();
+    uint32_t warmup = options.warmupFrames;
+    for (uint32_t f = 0; f < warmup + options.timedFrames; ++f) {
         auto start = std::chrono::steady_clock::now();
         ctx.submitAndWait(cmd);
         std::chrono::duration<double, std::milli> wall = std::chrono::steady_clock::now() - start;
         profiler.collect();
-        if (f + 1 == options.warmupFrames) profiler.discardSamples();
-        if (options.onFrame) options.onFrame(f, total, wall.count());
+        const bool lastWarmup = f + 1 == warmup;
+        if (lastWarmup && msSince(begin) < minWarmupMs && warmup < kMaxWarmupFrames) ++warmup;
+        else if (lastWarmup) profiler.discardSamples();
+        if (options.onFrame) options.onFrame(f, warmup + options.timedFrames, wall.count());
     }
+    return warmup;
 }
 
 // Pixels whose depth is not the far plane (reverse-Z: 0): where geometry was shaded.
@@ -160,9 +174,11 @@ Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEn
         ctx.freeCommandBuffer(cmd);
         return Error{s.error()};
     }
-    submitFrames(ctx, cmd, profiler, options);
+    const uint32_t warmup = submitFrames(ctx, cmd, profiler, options);
     ctx.freeCommandBuffer(cmd);
-    return collectResult(ctx, scene, entry, settings, *planned, profiler, statistics, options.ceilings.get());
+    RunResult result = collectResult(ctx, scene, entry, settings, *planned, profiler, statistics, options.ceilings.get());
+    result.stats.counters.push_back({"warmup_frames", double(warmup)}); // more than asked: kGpuWarmupMs
+    return result;
 }
 
 Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
