@@ -44,6 +44,9 @@ struct Placer {
 
     PassEfficiency place(const PassWork& w, double measuredMs) const {
         PassEfficiency e{w.pass, measuredMs};
+        // Transfers and clears are not placed: no ceiling measures vkCmdFillBuffer (lavapipe's is
+        // a memset, many times its shader stores).
+        if (w.stage == PassStage::Other) return e;
         if (w.bytesRead + w.bytesWritten > 0) e.limits.push_back(memory(w));
         if (w.lightEvaluations > 0) e.limits.push_back(lightAlu(w));
         if (w.counted && w.stage == PassStage::Graphics && w.counts.fragmentInvocations > 0)

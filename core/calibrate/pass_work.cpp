@@ -32,6 +32,13 @@ PassStage stageOf(const GraphDecl::Pass& p, const PassWork& w) {
     return PassStage::Other;
 }
 
+// An attachment of a counted draw: at most one pixel's samples per fragment.
+double attachmentBytes(const PassUse& u, const PassWork& w, const PassWorkInput& in) {
+    const double full = double(in.resourceBytes(u.resource.index));
+    if (!isAttachment(u.use) || !w.counted || in.framePixels <= 0) return full;
+    return std::min(full, double(w.counts.fragmentInvocations) * full / in.framePixels);
+}
+
 const PassCounts* countsOf(const PassWorkInput& in, const std::string& pass) {
     for (const PassCounts& c : in.counts)
         if (c.pass == pass) return &c;
@@ -52,8 +59,7 @@ void addLightWork(PassWork& w, const PassWorkInput& in) {
 
 } // namespace
 
-UseBytes useBytes(Use use, uint64_t bytes) {
-    const double b = double(bytes);
+UseBytes useBytes(Use use, double b) {
     switch (use) {
     case Use::ColorAttachment:
     case Use::ColorResolve:
@@ -79,14 +85,14 @@ std::vector<PassWork> countPassWork(const PassWorkInput& in) {
         PassWork w;
         w.pass = p.name;
         w.raster = rasterPath(p, in);
-        for (const PassUse& u : p.uses) {
-            const UseBytes b = useBytes(u.use, in.resourceBytes(u.resource.index));
-            w.bytesRead += b.read;
-            w.bytesWritten += b.written;
-        }
         if (const PassCounts* c = countsOf(in, p.name)) {
             w.counted = true;
             w.counts = c->counts;
+        }
+        for (const PassUse& u : p.uses) {
+            const UseBytes b = useBytes(u.use, attachmentBytes(u, w, in));
+            w.bytesRead += b.read;
+            w.bytesWritten += b.written;
         }
         w.stage = stageOf(p, w);
         addLightWork(w, in);

@@ -32,11 +32,13 @@ struct PassWork {
 
 // What one use moves of a resource of `bytes`: attachments are written (a depth attachment is
 // also read by its test; blending's read of a colour attachment is not counted), storage
-// writes are written, the others read.
+// writes are written, the others read. countPassWork bounds a counted draw's attachment bytes
+// by its fragments (each writes at most one pixel's samples): a pass that draws a few blended
+// surfaces does not move the whole target.
 struct UseBytes {
     double read = 0, written = 0;
 };
-UseBytes useBytes(Use use, uint64_t bytes);
+UseBytes useBytes(Use use, double bytes);
 
 struct PassWorkInput {
     const GraphDecl* decl = nullptr;
@@ -46,6 +48,7 @@ struct PassWorkInput {
     std::vector<PassCounts> counts;     // empty without pipeline statistics
     std::vector<PassLightWork> lightWork;
     double coveredPixels = 0; // pixels whose depth is not the far plane
+    double framePixels = 0;   // width x height: an attachment's bytes per pixel, from its size
 };
 
 std::vector<PassWork> countPassWork(const PassWorkInput& in);

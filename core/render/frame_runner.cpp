@@ -82,6 +82,7 @@ std::vector<PassWork> countWork(const FrameGraph& graph, const std::vector<PassC
     in.counts = counts;
     in.lightWork = result.stats.lightWork;
     in.coveredPixels = coveredPixels(result.depth);
+    in.framePixels = double(graph.width()) * graph.height();
     return countPassWork(in);
 }
 

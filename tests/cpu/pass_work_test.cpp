@@ -68,6 +68,17 @@ TEST(PassWork, AGBufferWriteAt4xCountsEverySampleOfEveryTargetAndTheDepthTest) {
     EXPECT_EQ(w.counts.fragmentInvocations, 3'000'000u);
 }
 
+TEST(PassWork, ADrawOfAFewFragmentsMovesOnlyTheirPixelsOfItsAttachments) {
+    Graph g;
+    ResourceHandle hdr = g.image("hdr", 8), depth = g.image("depth", 4);
+    g.decl.addPass("blended", {{hdr, Use::ColorAttachment}, {depth, Use::DepthTest}});
+    PassWorkInput in = g.input({{"blended", {2, 2, 2, 1000}}});
+    in.framePixels = kFrameW * kFrameH;
+    const PassWork w = countPassWork(in)[0];
+    EXPECT_EQ(w.bytesWritten, 1000.0 * 8);
+    EXPECT_EQ(w.bytesRead, 1000.0 * 4);
+}
+
 TEST(PassWork, StorageAndTransferPassesAreComputeOrNeither) {
     Graph g;
     ResourceHandle a = g.image("a", 4), b = g.image("b", 4);
@@ -133,6 +144,16 @@ TEST(Efficiency, ACeilingTheCalibrationLacksIsNamedNotGuessed) {
     const FrameEfficiency f = placeFrame({w}, {{"frame", 1}, {"lighting", 1}}, {{"dram_read", 1e9}}, 0);
     EXPECT_EQ(f.missingCeilings, (std::vector<std::string>{"light_point"}));
     EXPECT_EQ(f.passes[0].bound.ms, 0);
+}
+
+TEST(Efficiency, TransfersAreNotPlaced) {
+    PassWork w;
+    w.pass = "clear";
+    w.stage = PassStage::Other;
+    w.bytesWritten = 1e9;
+    const FrameEfficiency f = placeFrame({w}, {{"frame", 1}, {"clear", 1}}, {{"dram_write", 1e9}}, 0);
+    EXPECT_TRUE(f.passes[0].limits.empty());
+    EXPECT_EQ(f.boundSumMs, 0);
 }
 
 TEST(Calibrate, EveryBenchmarksWorkIsCountedFromItsSize) {
