@@ -265,8 +265,9 @@ void DeferredRenderer::addLightWork(RendererStats& s) const {
         s.lightWork.push_back({"tiled_lighting", Base::CoveredPixels, s.counter("lights_per_tile_mean"), false,
                                "lights_per_tile_mean, per pixel with geometry"});
     if (hasBlended_)
-        s.lightWork.push_back({"transparent_forward", Base::Fragments, s.counter("transparent_lights_per_tile_mean"),
-                               false, "transparent_lights_per_tile_mean, per fragment"});
+        s.lightWork.push_back({"transparent_forward", Base::Fragments,
+                               s.counter("transparent_lights_per_nonempty_tile_mean"), false,
+                               "transparent_lights_per_nonempty_tile_mean, per fragment"});
 }
 
 } // namespace

@@ -239,10 +239,13 @@ class ForwardPlusRenderer final : public Renderer {
                                s.counter(opaque) + directional, false,
                                std::string(opaque) + " + directional lights, per fragment"});
         if (!blendPass_) return;
+        // Blended fragments lie in the tiles with blended fragments: the list's mean over those.
         const char* blended = clustered() ? "lights_per_front_cluster_mean" : "transparent_lights_per_tile_mean";
+        const double share = clustered() ? 1.0 : s.counter("tiles") / std::max(1.0, s.counter("tiles_with_blended_fragments"));
         s.lightWork.push_back({"forward_transparent", PassLightWork::Base::Fragments,
-                               s.counter(blended, s.counter(opaque)) + directional, false,
-                               std::string(blended) + " + directional lights, per fragment"});
+                               s.counter(blended, s.counter(opaque)) * share + directional, false,
+                               std::string(blended) + (clustered() ? "" : " over the tiles with blended fragments") +
+                                   " + directional lights, per fragment"});
     }
 
     // What this configuration leaves out, and why (the report's "left out" list).

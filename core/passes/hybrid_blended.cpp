@@ -94,12 +94,16 @@ ImageRGBA HybridBlended::heatMap(const la::TileGrid& grid, const std::vector<uin
 void HybridBlended::addStats(RendererStats& s, const std::vector<uint32_t>& tileStats,
                              const std::vector<uint32_t>& listOffsets) const {
     TransparentCounts c = transparentCounts(tileStats, listOffsets, masks_);
-    double kept = 0, dropped = 0, most = 0;
+    double kept = 0, dropped = 0, most = 0, listed = 0;
     for (size_t t = 0; t < c.kept.size(); ++t) {
         kept += c.kept[t];
         dropped += c.dropped[t];
         most = std::max(most, double(c.kept[t]));
+        listed += c.kept[t] > 0;
     }
+    // Blended fragments lie in few tiles: the mean over the tiles whose list holds a light is
+    // what a blended fragment evaluates (docs/efficiency.md), not the mean over every tile.
+    s.counters.push_back({"transparent_lights_per_nonempty_tile_mean", listed > 0 ? kept / listed : 0.0});
     s.counters.push_back(
         {"transparent_lights_per_tile_mean", c.kept.empty() ? 0.0 : kept / double(c.kept.size())});
     s.counters.push_back({"transparent_lights_per_tile_max", most});
