@@ -306,8 +306,6 @@ int runCompare(const CompareOptions& o) {
     r.options = &o;
     r.ctx = ctx.get();
     r.calibration = loadRunCalibration(*ctx, o.calibration);
-    if (!r.calibration->available)
-        std::fprintf(stderr, "triptych: efficiency left out: %s\n", r.calibration->why.c_str());
     r.settings = makeSettings(o.view, *ctx, o.knobs);
     Scene scene = loadScene(o.scene, &r.cameraSource);
     r.scene = &scene;
@@ -354,6 +352,8 @@ int runCompare(const CompareOptions& o) {
     printSummary(r);
     std::fprintf(stderr, "triptych: wrote %s/report.html, report.json and the images\n",
                  o.out.c_str());
+    if (!r.calibration->available) // after the run: an error before it stays one line
+        std::fprintf(stderr, "triptych: efficiency left out: %s\n", r.calibration->why.c_str());
 
     if (int code = validationExit(r.validationMessages)) return code;
     return report["status"] == "ok" ? 0 : 5;

@@ -346,7 +346,6 @@ int runSweep(const SweepOptions& o) {
     checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
-    if (!calibration->available) std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
     RenderSettings base;
     std::vector<View> views; // validated up front: bad input fails before any run
     for (const std::string& r : splitList(o.res, "--res"))
@@ -388,6 +387,8 @@ int runSweep(const SweepOptions& o) {
     std::printf("triptych sweep: %zu runs (%zu failed) on %s; wrote %s/sweep.csv, sweep.json and "
                 "sweep.html\n",
                 rows.size(), failed, ctx->info.name.c_str(), o.out.c_str());
+    if (!calibration->available) // after the run: an error before it stays one line
+        std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
     if (int code = validationExit(validation)) return code;
     return failed == 0 ? 0 : 5;
 }
