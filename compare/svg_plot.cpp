@@ -163,6 +163,29 @@ std::string seriesDash(size_t si, const std::vector<int>& colours) {
     return *d ? std::string(" stroke-dasharray=\"") + d + "\"" : "";
 }
 
+// Widens the data range to the lines' points.
+void extendRange(const std::vector<PlotLine>& lines, double& xlo, double& xhi, double& ylo, double& yhi) {
+    for (const PlotLine& l : lines)
+        for (const auto& [x, y] : l.xy)
+            if (x > 0 && y > 0)
+                xlo = std::min(xlo, x), xhi = std::max(xhi, x), ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+}
+
+// The lines as grey paths (dashed where asked), each labelled at its right end.
+template <class Px, class Py> std::string linesSvg(const std::vector<PlotLine>& lines, Px px, Py py) {
+    std::string svg;
+    for (const PlotLine& l : lines) {
+        std::string path;
+        for (const auto& [x, y] : l.xy)
+            path += (path.empty() ? "M" : " L") + num(px(x)) + "," + num(py(y));
+        svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"#555\" stroke-width=\"2\"" +
+               (l.dashed ? " stroke-dasharray=\"6 3\"" : "") + "/>\n";
+        if (!l.xy.empty())
+            svg += text(px(l.xy.back().first) - 4, py(l.xy.back().second) - 6, l.label, "end", 12);
+    }
+    return svg;
+}
+
 } // namespace
 
 std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::string& xLabel,
@@ -181,10 +204,7 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
         else
             anyZero = true;
     }
-    for (const PlotLine& l : lines)
-        for (const auto& [x, y] : l.xy)
-            if (x > 0 && y > 0)
-                xlo = std::min(xlo, x), xhi = std::max(xhi, x), ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+    extendRange(lines, xlo, xhi, ylo, yhi);
     if (!(xhi > 0)) xlo = 1, xhi = 10;
     if (!(yhi > 0)) ylo = 1e-4, yhi = 1e-2;
     auto [xa, xb] = logRange(xlo, xhi);
@@ -217,15 +237,7 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
            ") rotate(-90)\" text-anchor=\"middle\" "
            "font-size=\"13\">" +
            escapeXml(yLabel + " (log)") + "</text>\n";
-    for (const PlotLine& l : lines) {
-        std::string path;
-        for (const auto& [x, y] : l.xy)
-            path += (path.empty() ? "M" : " L") + num(px(x)) + "," + num(py(y));
-        svg += "<path d=\"" + path + "\" fill=\"none\" stroke=\"#555\" stroke-width=\"2\"" +
-               (l.dashed ? " stroke-dasharray=\"6 3\"" : "") + "/>\n";
-        if (!l.xy.empty())
-            svg += text(px(l.xy.back().first) - 4, py(l.xy.back().second) - 6, l.label, "end", 12);
-    }
+    svg += linesSvg(lines, px, py);
     for (size_t si = 0; si < seriesNames.size(); ++si) {
         std::vector<std::pair<double, double>> xy;
         for (const PlotPoint& p : points)
