@@ -6,6 +6,7 @@
 #include "compare/build_identity.h"
 #include "compare/cli_common.h"
 #include "compare/scene_hash.h"
+#include "core/calibrate/calibration_file.h"
 #include "core/gpu/context.h"
 #include "core/util/files.h"
 
@@ -36,21 +37,13 @@ bool isComplete(const json& file) {
     return file["key"].value("device", json()).is_string() && file["key"].value("driver", json()).is_string();
 }
 
-// Medians in the base unit per second: every calibrate unit is a billion of its base unit.
-CeilingRates ratesOf(const json& file) {
-    CeilingRates rates;
-    for (const json& c : file["ceilings"])
-        rates[c["name"].get<std::string>()] = c["median"].get<double>() * 1e9;
-    return rates;
-}
-
 std::shared_ptr<RunCalibration> usable(const json& file, const std::string& path) {
     auto cal = std::make_shared<RunCalibration>();
     cal->available = true;
     cal->path = path;
     cal->key = file["key"];
     cal->measuredAt = file["measured_at"];
-    cal->rates = ratesOf(file);
+    cal->rates = ceilingRatesOf(file).value_or(CeilingRates{}); // complete: checked by the caller
     return cal;
 }
 
@@ -66,9 +59,10 @@ std::shared_ptr<RunCalibration> fromFile(GpuContext& ctx, const std::string& pat
     const std::optional<json> file = readCalibration(path);
     if (!file || !isCalibration(*file) || !isComplete(*file))
         throw UsageError("--calibration: " + path + " is not a complete triptych calibration");
-    if ((*file)["key"]["device"] != ctx.info.name || (*file)["key"]["driver"] != ctx.info.driver)
-        throw UsageError("--calibration: " + path + " was measured on " +
-                         (*file)["key"]["device"].get<std::string>() + ", not on " + ctx.info.name);
+    Result<CeilingFile> ceilings = readCeilingFile(path);
+    if (!ceilings) throw UsageError("--calibration: " + ceilings.error());
+    if (ceilings->device != ctx.info.name || ceilings->driver != ctx.info.driver)
+        throw UsageError("--calibration: " + path + " was measured on " + ceilings->device + ", not on " + ctx.info.name);
     return usable(*file, path);
 }
 

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/calibrate/calibration_file.h"
 #include "core/gpu/context.h"
 #include "core/render/frame_runner.h"
 #include "viewer/view_state.h"
@@ -29,6 +30,7 @@ struct RenderJob {
     bool debug = false; // renderers export their debug images (overlays)
     std::string key;    // renderKey/referenceKey of `state`: tags the outcome
     uint32_t timedFrames = 1;
+    std::shared_ptr<const CeilingFile> calibration; // used when it is this device's
 };
 
 struct PipelineImage {

@@ -37,6 +37,12 @@ nlohmann::json shownJson(const Shown* s) {
             j["debug_images"].push_back(d.name);
         for (const auto& [name, value] : s->run->stats.counters)
             j["counters"][name] = value;
+        if (s->run->efficiency) { // with --calibration: what the numbers panel shows
+            j["efficiency"]["percent_of_ceiling"] = s->run->efficiency->percent;
+            for (const PassEfficiency& p : s->run->efficiency->passes)
+                if (!p.limits.empty())
+                    j["efficiency"]["passes"][p.pass] = {{"ceiling", p.bound.ceiling}, {"percent", p.percent}};
+        }
     }
     return j;
 }

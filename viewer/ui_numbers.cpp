@@ -26,13 +26,31 @@ Spread spreadOf(const std::deque<double>& values) {
     return {v[v.size() / 2], v.front(), v.back()};
 }
 
-void timingGraph(const std::string& pipeline, const TimingHistory& h, const std::string& device) {
+// The last render's binding ceiling of `pass` and how close it came ("frame": the passes at
+// their ceilings against the frame); empty without a calibration.
+std::string ceilingText(const RunResult& run, const std::string& pass) {
+    if (!run.efficiency) return {};
+    char text[96];
+    if (pass == "frame") {
+        std::snprintf(text, sizeof text, "passes at ceilings: %.0f%%", run.efficiency->percent);
+        return text;
+    }
+    for (const PassEfficiency& p : run.efficiency->passes)
+        if (p.pass == pass && !p.limits.empty()) {
+            std::snprintf(text, sizeof text, "%.0f%% of %s", p.percent, p.bound.ceiling.c_str());
+            return text;
+        }
+    return {};
+}
+
+void timingGraph(const std::string& pipeline, const TimingHistory& h, const std::string& device,
+                 const RunResult& run) {
     pipelineSwatch(pipeline);
     ImGui::Text("%s: GPU ms over the last %zu renders on %s", pipeline.c_str(),
                 h.passes.count("frame") ? h.passes.at("frame").size() : size_t(0), device.c_str());
-    if (ImGui::BeginTable(("timing" + pipeline).c_str(), 4,
+    if (ImGui::BeginTable(("timing" + pipeline).c_str(), 5,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
-        for (const char* c : {"pass", "median", "min", "max"})
+        for (const char* c : {"pass", "median", "min", "max", "binding ceiling (last)"})
             ImGui::TableSetupColumn(c);
         ImGui::TableHeadersRow();
         for (const std::string& name : h.order) {
@@ -44,6 +62,8 @@ void timingGraph(const std::string& pipeline, const TimingHistory& h, const std:
                 ImGui::TableNextColumn();
                 ImGui::Text("%.3f", v);
             }
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(ceilingText(run, name).c_str());
         }
         ImGui::EndTable();
     }
@@ -95,10 +115,13 @@ void Panels::numbers(ViewerApp& app) {
         ImGui::TextDisabled(app.referenceStale() ? "A vs reference: no reference of this view yet"
                                                  : "A vs reference: waiting for A of this view");
     }
+    if (const auto& cal = app.options_.calibration; cal && !app.deviceName_.empty() && cal->device != app.deviceName_)
+        ImGui::TextDisabled("--calibration %s is of %s, not %s: passes not placed", cal->path.c_str(),
+                            cal->device.c_str(), app.deviceName_.c_str());
     for (const Shown* s : {a, app.shownB()}) {
         if (!s || !s->run) continue;
         if (app.history_.count(s->pipeline))
-            timingGraph(s->pipeline, app.history_.at(s->pipeline), app.deviceName_);
+            timingGraph(s->pipeline, app.history_.at(s->pipeline), app.deviceName_, *s->run);
         for (const auto& [name, value] : s->run->stats.counters)
             ImGui::Text("  %s: %.6g", name.c_str(), value);
         ledgerTable(("memory of " + s->pipeline).c_str(), s->run->memory);

@@ -10,6 +10,7 @@
 
 #include "viewer/view_command.h"
 
+#include "core/calibrate/calibration_file.h"
 #include "core/cli/options.h"
 #include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
@@ -63,6 +64,7 @@ struct ViewCommandOptions {
     double waitLimit = 600;
     int quitAfter = 0;
     bool noReference = false;
+    std::string calibration; // empty: the passes are not placed
 };
 
 std::string firstPipeline() {
@@ -105,6 +107,11 @@ int runView(ViewCommandOptions& o, const std::string& exe) {
     setup.viewer.context.validate = o.device.validate;
     setup.viewer.timedFrames = uint32_t(o.frames);
     setup.viewer.exe = exe;
+    if (!o.calibration.empty()) {
+        Result<CeilingFile> cal = readCeilingFile(o.calibration);
+        if (!cal) throw UsageError("--calibration: " + cal.error());
+        setup.viewer.calibration = std::make_shared<const CeilingFile>(std::move(*cal));
+    }
     setup.out = o.out;
     setup.waitLimitSeconds = o.waitLimit;
     setup.quitAfterFrames = o.quitAfter;
@@ -135,6 +142,9 @@ CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine
         ->capture_default_str();
     cmd->add_flag("--headless", o->headless,
                   "No window: run --script offscreen (screenshots hold the UI)");
+    cmd->add_option("--calibration", o->calibration,
+                    "A calibration FILE from 'triptych calibrate' of this device: the numbers panel places every "
+                    "pass against its ceilings (docs/efficiency.md)");
     cmd->add_option("--script", o->script, "Actions to run, one per line (docs/viewer.md)");
     cmd->add_option("--out", o->out, "Folder for the script's screenshots, stats and exports")
         ->capture_default_str();

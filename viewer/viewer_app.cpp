@@ -139,7 +139,7 @@ void ViewerApp::submitJobs() {
             pipelines.push_back(p);
     const std::string key = renderKey(state_, debug);
     if (key != submittedKey_ || pipelines != submittedPipelines_) {
-        RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames};
+        RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames, options_.calibration};
         // Debug images of a pipeline only when an overlay is shown: they cost readbacks.
         worker_->submit(std::move(job));
         submittedKey_ = key;

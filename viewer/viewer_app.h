@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/calibrate/calibration_file.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
 #include "viewer/composite.h"
@@ -26,6 +27,9 @@ struct ViewerOptions {
     uint32_t timedFrames = 1;  // frames per render (the timing graph's samples)
     uint32_t panelWidth = 420; // the control panel, right of the scene area
     std::string exe;           // this program, for export (it runs `render` / `compare`)
+    // --calibration FILE: every pass placed against its ceilings in the numbers panel
+    // (docs/efficiency.md); null: not placed.
+    std::shared_ptr<const CeilingFile> calibration;
 };
 
 // A finished render of one pipeline, as the UI keeps it.

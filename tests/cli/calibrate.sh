@@ -113,6 +113,18 @@ PY
 )
 report "render places every pass against --calibration FILE" "$problem"
 
+# The viewer's numbers panel places the passes too (its stats file holds what the panel shows).
+printf 'reference off\npipeline a forwardplus\nwait\nstats s.json\n' > "$work/view.txt"
+run_triptych view builtin:courtyard-small --res 64x36 --headless --script "$work/view.txt" --calibration "$file" --out "$work/view"
+problem=""
+[ "$code" -ne 0 ] && problem="exit code $code"
+[ -z "$problem" ] && problem=$(python3 -c "
+import json, sys
+a = json.load(open(sys.argv[1]))['pipeline_a']
+e = a.get('efficiency', {}).get('passes', {})
+if 'forward_opaque' not in e: print('no forward_opaque ceiling in', a.get('efficiency'))" "$work/view/s.json")
+report "view places every pass against --calibration FILE" "$problem"
+
 run_triptych render --res 64x36 --calibration "$work/absent.json" --out "$work/r2"
 report "--calibration with a missing file is refused" "$(error_problem "" "--calibration" 2)"
 sed 's/"device": "[^"]*"/"device": "another device"/' "$file" > "$work/other_device.json"
