@@ -28,6 +28,19 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     FpParams params;
     uint data[];
 };
+// The lights again, as a uniform buffer, where they fit (forward_shading.cpp: a CPU device and
+// at most TP_FP_UBO_LIGHTS lights). On lavapipe (Mesa 22.3) a storage-buffer load is a loop
+// over the 8 lanes with a branch per lane and per component, a uniform-buffer load a gather
+// without branches; the bytes are the same, so the sums are too.
+layout(constant_id = TP_FP_SPEC_LIGHTS_UBO) const bool kLightsUbo = false;
+layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_LIGHTS_UBO) uniform LightUboBlock {
+    LightGpu uboLights[TP_FP_UBO_LIGHTS];
+};
+
+LightGpu fpLight(uint index) {
+    if (kLightsUbo) return uboLights[index];
+    return lights[index];
+}
 
 #ifdef TP_FP_LIGHT_LOOP_SUBGROUP
 // --light-loop subgroup: a variant of its own, since a module that declares these
@@ -74,7 +87,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
                 int lsb = findLSB(bits);
                 bits &= bits - 1u;
-                LightGpu light = lights[indices[sharedStart + w * 32u + uint(lsb)]];
+                LightGpu light = fpLight(indices[sharedStart + w * 32u + uint(lsb)]);
                 if ((own & (1u << uint(lsb))) != 0u) sum += evalLight(light, surface, kHasSpot);
             }
         }
@@ -86,7 +99,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[indices[t.list[0].start + w * 32u + uint(lsb)]], surface, kHasSpot);
+            sum += evalLight(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)]), surface, kHasSpot);
         }
     }
     return sum;
@@ -107,7 +120,7 @@ void main() {
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
-        sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
+        sum += evalLight(fpLight(data[i]), ms.surface, kHasSpot);
     sum += clusterLights(tileIndex, ms.surface);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
@@ -133,7 +146,7 @@ void main() {
         } else {
             lightIndex = indices[start + (i - directionalCount)];
         }
-        sum += evalLight(lights[lightIndex], ms.surface, kHasSpot);
+        sum += evalLight(fpLight(lightIndex), ms.surface, kHasSpot);
         ++i;
     } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
