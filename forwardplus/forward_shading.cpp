@@ -8,6 +8,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/lightassign/light_classes.h"
 #include "core/render/scene_gpu.h"
 #include "forwardplus/forwardplus_shared.h"
 
@@ -57,11 +58,19 @@ void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
 // before, and a one-light stand-in is bound. The lights are fixed for a run.
 void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
     const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
+    const std::vector<uint32_t> directional = la::classifyLights(lights).directional;
     constexpr VkDeviceSize kUboBytes = TP_FP_UBO_LIGHTS * sizeof(gpu::LightGpu);
-    lightsUbo_ = ctx_.isCpuDevice() && !lights.empty() && lights.size() <= TP_FP_UBO_LIGHTS &&
+    lightsUbo_ = ctx_.isCpuDevice() && !lights.empty() &&
+                 directional.size() + lights.size() <= TP_FP_UBO_LIGHTS &&
                  ctx_.properties.limits.maxUniformBufferRange >= kUboBytes;
+    // The directional lights first, in fp_params' order (ascending), then every light at its
+    // index plus their count: the shader's loop takes the i-th directional light as light i
+    // without loading its index (shading.frag).
     std::vector<gpu::LightGpu> copy(TP_FP_UBO_LIGHTS, gpu::LightGpu{});
-    if (lightsUbo_) std::copy(lights.begin(), lights.end(), copy.begin());
+    if (lightsUbo_) {
+        for (size_t k = 0; k < directional.size(); ++k) copy[k] = lights[directional[k]];
+        std::copy(lights.begin(), lights.end(), copy.begin() + directional.size());
+    }
     const VkDeviceSize bytes = lightsUbo_ ? kUboBytes : sizeof(gpu::LightGpu);
     lightsUboBuffer_ = createBufferWithData(
         ctx_, copy.data(), bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,

@@ -37,8 +37,10 @@ layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_LIGHTS_UBO) uniform Li
     LightGpu uboLights[TP_FP_UBO_LIGHTS];
 };
 
-LightGpu fpLight(uint index) {
-    if (kLightsUbo) return uboLights[index];
+// The scene's light `index`; the uniform copy holds the directional lights first and light k
+// at k + directionalCount (forward_shading.cpp).
+LightGpu fpLight(uint index, uint directionalCount) {
+    if (kLightsUbo) return uboLights[index + directionalCount];
     return lights[index];
 }
 
@@ -61,7 +63,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonl
 // 32-light word at a time: (list length / 32) words plus the cluster's lights, in list
 // (ascending) order. The slice comes from the shading point's own view distance, for
 // opaque and blended surfaces alike.
-vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
+vec3 clusterLights(uint tileIndex, SurfaceSample surface, uint directionalCount) {
     FpTileLists t = tiles[tileIndex];
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
     LaSlicing slicing = laSlicing(t.frontNear, t.sliceNear, t.sliceScale, kSlices, laFrontSlices(kSlices, kBlendedSpan));
@@ -87,7 +89,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
                 int lsb = findLSB(bits);
                 bits &= bits - 1u;
-                LightGpu light = fpLight(indices[sharedStart + w * 32u + uint(lsb)]);
+                LightGpu light = fpLight(indices[sharedStart + w * 32u + uint(lsb)], directionalCount);
                 if ((own & (1u << uint(lsb))) != 0u) sum += evalLight(light, surface, kHasSpot);
             }
         }
@@ -99,7 +101,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)]), surface, kHasSpot);
+            sum += evalLight(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)], directionalCount), surface, kHasSpot);
         }
     }
     return sum;
@@ -120,8 +122,8 @@ void main() {
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
-        sum += evalLight(fpLight(data[i]), ms.surface, kHasSpot);
-    sum += clusterLights(tileIndex, ms.surface);
+        sum += evalLight(kLightsUbo ? uboLights[i] : lights[data[i]], ms.surface, kHasSpot);
+    sum += clusterLights(tileIndex, ms.surface, directionalCount);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
 #endif
@@ -138,15 +140,24 @@ void main() {
     uint i = 0u;
     if (total > 0u) do {
         uint lightIndex;
-        if (i < directionalCount) {
-            lightIndex = data[i];
-        } else if (kLayout == TP_FP_LAYOUT_LINKED) {
-            lightIndex = indices[2u * node];
-            node = indices[2u * node + 1u];
+        if (kLightsUbo && kLayout != TP_FP_LAYOUT_LINKED) {
+            // The i-th directional light is the uniform copy's light i: one index load per
+            // light, not two (lavapipe runs both sides of the branch, a masked load included).
+            uint listed = 0u;
+            if (i >= directionalCount) listed = indices[start + (i - directionalCount)];
+            lightIndex = i < directionalCount ? i : directionalCount + listed;
         } else {
-            lightIndex = indices[start + (i - directionalCount)];
+            if (i < directionalCount) {
+                lightIndex = data[i];
+            } else if (kLayout == TP_FP_LAYOUT_LINKED) {
+                lightIndex = indices[2u * node];
+                node = indices[2u * node + 1u];
+            } else {
+                lightIndex = indices[start + (i - directionalCount)];
+            }
+            if (kLightsUbo) lightIndex += directionalCount;
         }
-        sum += evalLight(fpLight(lightIndex), ms.surface, kHasSpot);
+        sum += evalLight(kLightsUbo ? uboLights[lightIndex] : lights[lightIndex], ms.surface, kHasSpot);
         ++i;
     } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
