@@ -39,8 +39,25 @@ layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_LIGHTS_UBO) uniform Li
 
 // The scene's light `index`; the uniform copy holds the directional lights first and light k
 // at k + directionalCount (forward_shading.cpp).
+// Member by member: the block's std140 struct is another SPIR-V type than LightGpu, and a
+// whole-struct copy between the two is not valid SPIR-V 1.0.
+LightGpu uboLight(uint slot) {
+    LightGpu l;
+    l.position = uboLights[slot].position;
+    l.range = uboLights[slot].range;
+    l.direction = uboLights[slot].direction;
+    l.type = uboLights[slot].type;
+    l.color = uboLights[slot].color;
+    l.pad0 = 0.0;
+    l.spotScale = uboLights[slot].spotScale;
+    l.spotOffset = uboLights[slot].spotOffset;
+    l.pad1 = 0.0;
+    l.pad2 = 0.0;
+    return l;
+}
+
 LightGpu fpLight(uint index, uint directionalCount) {
-    if (kLightsUbo) return uboLights[index + directionalCount];
+    if (kLightsUbo) return uboLight(index + directionalCount);
     return lights[index];
 }
 
@@ -122,7 +139,7 @@ void main() {
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
-        sum += evalLight(kLightsUbo ? uboLights[i] : lights[data[i]], ms.surface, kHasSpot);
+        sum += evalLight(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface, kHasSpot);
     sum += clusterLights(tileIndex, ms.surface, directionalCount);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
@@ -157,7 +174,10 @@ void main() {
             }
             if (kLightsUbo) lightIndex += directionalCount;
         }
-        sum += evalLight(kLightsUbo ? uboLights[lightIndex] : lights[lightIndex], ms.surface, kHasSpot);
+        LightGpu light;
+        if (kLightsUbo) light = uboLight(lightIndex);
+        else light = lights[lightIndex];
+        sum += evalLight(light, ms.surface, kHasSpot);
         ++i;
     } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
