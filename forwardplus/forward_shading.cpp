@@ -8,6 +8,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/lightassign/light_classes.h"
 #include "core/render/scene_gpu.h"
 #include "forwardplus/forwardplus_shared.h"
 
@@ -44,10 +45,59 @@ void ForwardShading::plan(FrameGraph& graph, const ShadingTargets& t) {
 }
 
 void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
-    set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE, {{TP_FP_BINDING_PARAMS, params}});
+    createPassSet(graph, params);
     layout_ = scene_.createPipelineLayout(set_.layout);
     for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
         if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
+}
+
+// The graph's set for the pass's uses (storage buffers only) and fp_params, plus the lights as
+// a uniform buffer, which the graph's sets do not offer. On a CPU device (lavapipe) the shaders
+// read the lights from it when they all fit (docs/forwardplus.md, "The per-light cost on
+// lavapipe"); on a GPU, and past TP_FP_UBO_LIGHTS lights, from the scene's storage buffer as
+// before, and a one-light stand-in is bound. The lights are fixed for a run.
+void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
+    const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
+    const std::vector<uint32_t> directional = la::classifyLights(lights).directional;
+    constexpr VkDeviceSize kUboBytes = TP_FP_UBO_LIGHTS * sizeof(gpu::LightGpu);
+    lightsUbo_ = ctx_.isCpuDevice() && !lights.empty() &&
+                 directional.size() + lights.size() <= TP_FP_UBO_LIGHTS &&
+                 ctx_.properties.limits.maxUniformBufferRange >= kUboBytes;
+    // The directional lights first, in fp_params' order (ascending), then every light at its
+    // index plus their count: the shader's loop takes the i-th directional light as light i
+    // without loading its index (shading.frag).
+    std::vector<gpu::LightGpu> copy(TP_FP_UBO_LIGHTS, gpu::LightGpu{});
+    if (lightsUbo_) {
+        for (size_t k = 0; k < directional.size(); ++k) copy[k] = lights[directional[k]];
+        std::copy(lights.begin(), lights.end(), copy.begin() + directional.size());
+    }
+    const VkDeviceSize bytes = lightsUbo_ ? kUboBytes : sizeof(gpu::LightGpu);
+    lightsUboBuffer_ = createBufferWithData(
+        ctx_, copy.data(), bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+        {"forwardplus", "", "fp_lights_ubo",
+         lightsUbo_ ? "the lights as a uniform buffer (read by the shading passes)"
+                    : "stand-in (the shading passes read the scene's light buffer)"});
+
+    std::vector<std::pair<uint32_t, VkBuffer>> storage = {{TP_FP_BINDING_PARAMS, params}};
+    for (const PassUse& u : uses(false))
+        if (u.binding != kNoBinding) storage.push_back({u.binding, graph.buffer(u.resource).buffer});
+    std::vector<SetBinding> bindings;
+    for (const auto& [binding, buffer] : storage)
+        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    bindings.push_back({TP_FP_BINDING_LIGHTS_UBO, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
+    set_ = tp::createPassSet(ctx_, bindings);
+    set_.pass = "forward_opaque";
+    set_.bindings = bindings;
+    for (const auto& [binding, buffer] : storage)
+        writeBufferDescriptor(ctx_, set_.set, binding, buffer);
+    VkDescriptorBufferInfo ubo{lightsUboBuffer_.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set_.set;
+    w.dstBinding = TP_FP_BINDING_LIGHTS_UBO;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    w.pBufferInfo = &ubo;
+    vkUpdateDescriptorSets(ctx_.device, 1, &w, 0, nullptr);
 }
 
 GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
@@ -70,6 +120,7 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.tileSize});
     d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
+    d.specConstants.push_back({TP_FP_SPEC_LIGHTS_UBO, lightsUbo_ ? 1u : 0u});
     if (config_.clustered) {
         d.specConstants.push_back({TP_FP_SPEC_SLICES, config_.slices});
         d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendPass ? 1u : 0u});

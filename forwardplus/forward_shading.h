@@ -8,6 +8,7 @@
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
 #include "core/render/msaa_knob.h"
 
 namespace tp {
@@ -49,6 +50,7 @@ class ForwardShading {
 
   private:
     std::vector<PassUse> uses(bool transparent) const;
+    void createPassSet(FrameGraph& graph, VkBuffer params);
     GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
     void createMaterialPipelines(AlphaMode mode);
     void record(PassContext& pc, bool transparent);
@@ -57,6 +59,10 @@ class ForwardShading {
     ShadingConfig config_;
     ShadingTargets t_;
     PassSet set_;
+    // The lights as a uniform buffer (TP_FP_BINDING_LIGHTS_UBO); lightsUbo_ says whether the
+    // shaders read it (TP_FP_SPEC_LIGHTS_UBO) or only bind it.
+    Buffer lightsUboBuffer_;
+    bool lightsUbo_ = false;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     // By AlphaMode, then by material: the pipeline with that material's texture indices
     // compiled in (material.glsl, TP_MATERIAL_SPEC_TEXTURES); materials with the same

@@ -18,6 +18,7 @@ namespace tp::gpu {
 #define TP_FP_BINDING_CLUSTER_MASKS 5 // clustered only: buffer uint[]: per tile and slice, a bitmask over the tile list
 #define TP_FP_BINDING_BLEND_BOUNDS 6  // culling only: blended depth bounds (light_assign.h: TP_LA_BLEND_*; a stand-in without blended draws)
 #define TP_FP_BINDING_SPHERES 7 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
+#define TP_FP_BINDING_LIGHTS_UBO 8 // shading only: the scene's lights again, as a uniform buffer (TP_FP_SPEC_LIGHTS_UBO)
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
@@ -27,6 +28,9 @@ namespace tp::gpu {
 #define TP_FP_SPEC_BLENDED_SPAN 18 // clustered: 1 = the scene has blended surfaces: spans widen to them, front slices
 #define TP_FP_SPEC_SPHERES 19 // culling: 1 = read each light's sphere from light_spheres, 0 = compute it per candidate
 #define TP_FP_SPEC_CULL_LANES 20 // light_culling_subgroup: workgroup size = the device's subgroup size (<= 64)
+#define TP_FP_SPEC_LIGHTS_UBO 21 // shading: 1 = read the lights from TP_FP_BINDING_LIGHTS_UBO, 0 = from the scene's storage buffer
+// Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
+#define TP_FP_UBO_LIGHTS 1024
 
 #define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted

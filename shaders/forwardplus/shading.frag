@@ -28,6 +28,38 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     FpParams params;
     uint data[];
 };
+// The lights again, as a uniform buffer, where they fit (forward_shading.cpp: a CPU device and
+// at most TP_FP_UBO_LIGHTS lights). On lavapipe (Mesa 22.3) a storage-buffer load is a loop
+// over the 8 lanes with a branch per lane and per component, a uniform-buffer load a gather
+// without branches; the bytes are the same, so the sums are too.
+layout(constant_id = TP_FP_SPEC_LIGHTS_UBO) const bool kLightsUbo = false;
+layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_LIGHTS_UBO) uniform LightUboBlock {
+    LightGpu uboLights[TP_FP_UBO_LIGHTS];
+};
+
+// The scene's light `index`; the uniform copy holds the directional lights first and light k
+// at k + directionalCount (forward_shading.cpp).
+// Member by member: the block's std140 struct is another SPIR-V type than LightGpu, and a
+// whole-struct copy between the two is not valid SPIR-V 1.0.
+LightGpu uboLight(uint slot) {
+    LightGpu l;
+    l.position = uboLights[slot].position;
+    l.range = uboLights[slot].range;
+    l.direction = uboLights[slot].direction;
+    l.type = uboLights[slot].type;
+    l.color = uboLights[slot].color;
+    l.pad0 = 0.0;
+    l.spotScale = uboLights[slot].spotScale;
+    l.spotOffset = uboLights[slot].spotOffset;
+    l.pad1 = 0.0;
+    l.pad2 = 0.0;
+    return l;
+}
+
+LightGpu fpLight(uint index, uint directionalCount) {
+    if (kLightsUbo) return uboLight(index + directionalCount);
+    return lights[index];
+}
 
 #ifdef TP_FP_LIGHT_LOOP_SUBGROUP
 // --light-loop subgroup: a variant of its own, since a module that declares these
@@ -48,7 +80,7 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CLUSTER_MASKS) readonl
 // 32-light word at a time: (list length / 32) words plus the cluster's lights, in list
 // (ascending) order. The slice comes from the shading point's own view distance, for
 // opaque and blended surfaces alike.
-vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
+vec3 clusterLights(uint tileIndex, SurfaceSample surface, uint directionalCount) {
     FpTileLists t = tiles[tileIndex];
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
     LaSlicing slicing = laSlicing(t.frontNear, t.sliceNear, t.sliceScale, kSlices, laFrontSlices(kSlices, kBlendedSpan));
@@ -74,7 +106,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
                 int lsb = findLSB(bits);
                 bits &= bits - 1u;
-                LightGpu light = lights[indices[sharedStart + w * 32u + uint(lsb)]];
+                LightGpu light = fpLight(indices[sharedStart + w * 32u + uint(lsb)], directionalCount);
                 if ((own & (1u << uint(lsb))) != 0u) sum += evalLight(light, surface, kHasSpot);
             }
         }
@@ -86,7 +118,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface) {
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[indices[t.list[0].start + w * 32u + uint(lsb)]], surface, kHasSpot);
+            sum += evalLight(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)], directionalCount), surface, kHasSpot);
         }
     }
     return sum;
@@ -107,8 +139,8 @@ void main() {
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
-        sum += evalLight(lights[data[i]], ms.surface, kHasSpot);
-    sum += clusterLights(tileIndex, ms.surface);
+        sum += evalLight(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface, kHasSpot);
+    sum += clusterLights(tileIndex, ms.surface, directionalCount);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
 #endif
@@ -125,15 +157,27 @@ void main() {
     uint i = 0u;
     if (total > 0u) do {
         uint lightIndex;
-        if (i < directionalCount) {
-            lightIndex = data[i];
-        } else if (kLayout == TP_FP_LAYOUT_LINKED) {
-            lightIndex = indices[2u * node];
-            node = indices[2u * node + 1u];
+        if (kLightsUbo && kLayout != TP_FP_LAYOUT_LINKED) {
+            // The i-th directional light is the uniform copy's light i: one index load per
+            // light, not two (lavapipe runs both sides of the branch, a masked load included).
+            uint listed = 0u;
+            if (i >= directionalCount) listed = indices[start + (i - directionalCount)];
+            lightIndex = i < directionalCount ? i : directionalCount + listed;
         } else {
-            lightIndex = indices[start + (i - directionalCount)];
+            if (i < directionalCount) {
+                lightIndex = data[i];
+            } else if (kLayout == TP_FP_LAYOUT_LINKED) {
+                lightIndex = indices[2u * node];
+                node = indices[2u * node + 1u];
+            } else {
+                lightIndex = indices[start + (i - directionalCount)];
+            }
+            if (kLightsUbo) lightIndex += directionalCount;
         }
-        sum += evalLight(lights[lightIndex], ms.surface, kHasSpot);
+        LightGpu light;
+        if (kLightsUbo) light = uboLight(lightIndex);
+        else light = lights[lightIndex];
+        sum += evalLight(light, ms.surface, kHasSpot);
         ++i;
     } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
