@@ -34,7 +34,8 @@ bool isComplete(const json& file) {
             if (!c.is_object() || !c.value(k, json()).is_number() || !c.value("unit", json()).is_string() ||
                 !c.value("what", json()).is_string() || !c.value("name", json()).is_string())
                 return false;
-    return file["key"].value("device", json()).is_string() && file["key"].value("driver", json()).is_string();
+    const json key = file.value("key", json());
+    return key.is_object() && key.value("device", json()).is_string() && key.value("driver", json()).is_string();
 }
 
 std::shared_ptr<RunCalibration> usable(const json& file, const std::string& path) {
@@ -81,7 +82,9 @@ std::string cachedCalibrationPath(const json& key) {
     return dir + "/" + h.hex() + ".json";
 }
 
-bool isCalibration(const json& file) { return file.is_object() && file.value("schema", "") == kCalibrationSchema; }
+bool isCalibration(const json& file) {
+    return file.is_object() && file.value("schema", json()) == json(kCalibrationSchema); // any type: no throw
+}
 
 std::optional<json> readCalibration(const std::string& path) {
     if (!fs::exists(path)) return std::nullopt;

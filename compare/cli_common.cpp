@@ -26,10 +26,14 @@ RunOptions progressRunOptions(const std::string& label, int warmup, int frames) 
     RunOptions r;
     r.warmupFrames = uint32_t(warmup);
     r.timedFrames = uint32_t(frames);
-    const uint32_t w = r.warmupFrames;
-    r.onFrame = [label, w](uint32_t f, uint32_t total, double ms) {
+    const uint32_t timed = r.timedFrames, w = r.warmupFrames;
+    // On a GPU the warm-up runs on past the frames asked for (frame_runner.cpp, kGpuWarmupMs):
+    // those extra frames are warm-up too, and only the asked-for ones are printed.
+    r.onFrame = [label, timed, w](uint32_t f, uint32_t total, double ms) {
+        const bool warmup = f + timed < total;
+        if (warmup && f >= w) return;
         std::fprintf(stderr, "  %s frame %u/%u: %.1f ms%s\n", label.c_str(), f + 1, total, ms,
-                     f < w ? " (warm-up)" : "");
+                     warmup ? " (warm-up)" : "");
     };
     return r;
 }

@@ -78,8 +78,9 @@ CommandRunner addCalibrateCommand(CLI::App& app, std::vector<std::string> comman
     auto o = std::make_shared<CalibrateOptions>();
     CLI::App* cmd = app.add_subcommand(
         "calibrate",
-        "Measure this device's ceilings (DRAM read/write/copy and cache bandwidth, FP32 FMA rate in compute and in a fragment shader, "
-        "shared and global atomics) with compute microbenchmarks, and keep them in a JSON file "
+        "Measure this device's ceilings with microbenchmarks (DRAM read/write/copy and cache bandwidth; FP32 FMA, "
+        "texture fetch and our light model's rate in compute and in a fragment shader; depth, colour, blend and "
+        "4x MSAA raster rates; triangle rates; shared and global atomics), and keep them in a JSON file "
         "keyed by device, driver and triptych build; a later run with the same key reuses the "
         "file (docs/efficiency.md). Exit 0 ok, 2 bad input, 3 validation messages");
     addDeviceOptions(*cmd, o->device);

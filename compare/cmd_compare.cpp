@@ -305,7 +305,6 @@ int runCompare(const CompareOptions& o) {
     CompareRecord r;
     r.options = &o;
     r.ctx = ctx.get();
-    r.calibration = loadRunCalibration(*ctx, o.calibration);
     r.settings = makeSettings(o.view, *ctx, o.knobs);
     Scene scene = loadScene(o.scene, &r.cameraSource);
     r.scene = &scene;
@@ -316,6 +315,7 @@ int runCompare(const CompareOptions& o) {
     }
     r.contentHash = hashSceneContent(scene);
     r.lightsHash = hashLights(scene.lights);
+    r.calibration = loadRunCalibration(*ctx, o.calibration); // after the input is checked
     ensureDirectory(o.out);
     removeStaleOutputs(o.out, names);
     std::fprintf(

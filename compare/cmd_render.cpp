@@ -76,10 +76,11 @@ int run(RenderOptions& o) {
     if (!o.scene.cameraFile.empty()) readCameraOption(o.scene.cameraFile); // likewise
     checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
-    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
     RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
     CameraSource camera;
     Scene scene = loadScene(o.scene, &camera);
+    // After the input is checked: `measure` may take 40 s on lavapipe.
+    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
     ensureDirectory(o.out);
     SceneFeatures features = analyzeScene(scene, settings.msaa);
     std::fprintf(stderr, "triptych: %s, %zu triangles, %zu lights, %ux%u, %ux MSAA on %s\n",

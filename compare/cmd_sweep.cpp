@@ -345,7 +345,6 @@ int runSweep(const SweepOptions& o) {
         lightCounts.push_back(toInt(s, "--lights"));
     checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
-    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
     RenderSettings base;
     std::vector<View> views; // validated up front: bad input fails before any run
     for (const std::string& r : splitList(o.res, "--res"))
@@ -358,6 +357,8 @@ int runSweep(const SweepOptions& o) {
     progress.total *= lightCounts.size();
     progress.references = o.referenceFrames > 0 ? lightCounts.size() * views.size() : 0;
     const Shard shard = parseShard(o.shard);
+    // After the input is checked (a scene is checked when loaded): `measure` may take 40 s.
+    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
     progress.shard(shard);
     ensureDirectory(o.out);
     for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"})

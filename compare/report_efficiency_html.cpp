@@ -49,7 +49,8 @@ std::string rooflineSvg(const json& r) {
     if (points.empty()) return "<p>No pass evaluated lights with work counted: no roofline.</p>\n";
     double xlo = INFINITY, xhi = 0;
     for (const PlotPoint& pt : points)
-        xlo = std::min(xlo, pt.x), xhi = std::max(xhi, pt.x);
+        if (pt.x > 0) xlo = std::min(xlo, pt.x), xhi = std::max(xhi, pt.x);
+    if (!(xhi > 0)) xlo = 1e-3, xhi = 1e3; // every point without bytes: a range around them
     return scatterLogLogSvg(points, "light evaluations as FLOPs per byte moved", "achieved GFLOP/s", 760, 460,
                             names, false, colours, roofs(r["calibration"], xlo / 4, xhi * 4));
 }

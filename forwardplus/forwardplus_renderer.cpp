@@ -234,10 +234,15 @@ class ForwardPlusRenderer final : public Renderer {
     // lights: the lists' mean stands for the fragment's list.
     void addLightWork(RendererStats& s) const {
         const double directional = double(classes_.directional.size());
+        // Fragments lie in the tiles with geometry: the list's mean over those (sky tiles' lists
+        // are empty). Clustered: the mean over every cluster, an under-estimate.
         const char* opaque = clustered() ? "lights_per_cluster_mean" : "lights_per_tile_mean";
+        const double tiles = s.counter("tiles"), withGeometry = tiles - s.counter("tiles_without_geometry");
+        const double opaqueShare = clustered() ? 1.0 : tiles / std::max(1.0, withGeometry);
         s.lightWork.push_back({"forward_opaque", PassLightWork::Base::Fragments,
-                               s.counter(opaque) + directional, false,
-                               std::string(opaque) + " + directional lights, per fragment"});
+                               s.counter(opaque) * opaqueShare + directional, false,
+                               std::string(opaque) + (clustered() ? "" : " over the tiles with geometry") +
+                                   " + directional lights, per fragment"});
         if (!blendPass_) return;
         // Blended fragments lie in the tiles with blended fragments: the list's mean over those.
         const char* blended = clustered() ? "lights_per_front_cluster_mean" : "transparent_lights_per_tile_mean";

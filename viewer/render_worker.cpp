@@ -152,7 +152,8 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     RunOptions runOptions;
     runOptions.warmupFrames = 0;
     runOptions.timedFrames = job.timedFrames;
-    if (job.calibration && job.calibration->device == ctx_->info.name) // shares the file's lifetime
+    if (job.calibration && job.calibration->device == ctx_->info.name &&
+        job.calibration->driver == ctx_->info.driver) // shares the file's lifetime
         runOptions.ceilings = std::shared_ptr<const CeilingRates>(job.calibration, &job.calibration->rates);
     for (const std::string& name : job.pipelines) {
         PipelineImage image;

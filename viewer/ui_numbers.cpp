@@ -118,6 +118,9 @@ void Panels::numbers(ViewerApp& app) {
     if (const auto& cal = app.options_.calibration; cal && !app.deviceName_.empty() && cal->device != app.deviceName_)
         ImGui::TextDisabled("--calibration %s is of %s, not %s: passes not placed", cal->path.c_str(),
                             cal->device.c_str(), app.deviceName_.c_str());
+    else if (cal && a && a->run && !a->run->efficiency)
+        ImGui::TextDisabled("--calibration %s: of another driver (%s): passes not placed", cal->path.c_str(),
+                            cal->driver.c_str());
     for (const Shown* s : {a, app.shownB()}) {
         if (!s || !s->run) continue;
         if (app.history_.count(s->pipeline))

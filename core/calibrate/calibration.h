@@ -1,8 +1,9 @@
 #pragma once
 // The device's measured ceilings (`triptych calibrate`, docs/efficiency.md): microbenchmarks
-// in compute whose work is counted exactly, each timed with GPU timestamps over repeats after
-// one warm-up. A ceiling is a rate (GB/s, GFLOP/s, G atomics/s): its median over the repeats
-// and the slowest and fastest repeat.
+// (compute dispatches and draws, core/calibrate/benches.h) whose work is counted exactly, each
+// timed with GPU timestamps over repeats after one warm-up. A ceiling is a rate in billions of
+// its unit per second (GB/s, GFLOP/s, Gfetch/s, Geval/s, Gpixel/s, Gtri/s, Gatomic/s): its
+// median over the repeats and the slowest and fastest repeat.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -14,11 +15,11 @@ class GpuContext;
 
 struct Ceiling {
     std::string name; // e.g. "dram_read"
-    std::string unit; // "GB/s", "GFLOP/s", "Gatomic/s"
+    std::string unit; // "GB/s", "GFLOP/s", "Geval/s", "Gpixel/s", ...
     std::string what; // one line: what was measured and how
     double median = 0, min = 0, max = 0; // the rate, in `unit`
     double medianMs = 0;                 // one dispatch's GPU time (median)
-    double work = 0;                     // bytes, FLOPs or atomics of one dispatch
+    double work = 0;                     // of one dispatch or draw, in the unit's base
     uint32_t repeats = 0;
 };
 

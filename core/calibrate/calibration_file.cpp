@@ -21,7 +21,7 @@ Result<CeilingFile> readCeilingFile(const std::string& path) {
     Result<std::string> text = readWholeFile(path);
     if (!text) return Error{text.error()};
     const nlohmann::json f = nlohmann::json::parse(*text, nullptr, false);
-    if (!f.is_object() || f.value("schema", "") != "triptych.calibration/1" || !f.value("ceilings", nlohmann::json()).is_array() ||
+    if (!f.is_object() || f.value("schema", nlohmann::json()) != nlohmann::json("triptych.calibration/1") || !f.value("ceilings", nlohmann::json()).is_array() ||
         !f.value("key", nlohmann::json()).is_object() || !f["key"].value("device", nlohmann::json()).is_string() ||
         !f["key"].value("driver", nlohmann::json()).is_string() || !f.value("measured_at", nlohmann::json()).is_string())
         return bad;

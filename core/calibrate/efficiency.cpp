@@ -34,7 +34,7 @@ struct Placer {
         const char* c = w.raster == RasterPath::DepthOnly ? "raster_depth"
                         : w.raster == RasterPath::Msaa    ? "raster_msaa4"
                                                           : "rop_colour";
-        return {"raster", c, ms(double(w.counts.fragmentInvocations), rate(c))};
+        return {"raster", c, ms(w.rasterPixels, rate(c))};
     }
     // Every primitive submitted at the rate of triangles that are all culled: the least any
     // triangle costs (those the pass rasterizes cost more; raster and ROPs place them).
@@ -49,8 +49,7 @@ struct Placer {
         if (w.stage == PassStage::Other) return e;
         if (w.bytesRead + w.bytesWritten > 0) e.limits.push_back(memory(w));
         if (w.lightEvaluations > 0) e.limits.push_back(lightAlu(w));
-        if (w.counted && w.stage == PassStage::Graphics && w.counts.fragmentInvocations > 0)
-            e.limits.push_back(raster(w));
+        if (w.counted && w.stage == PassStage::Graphics && w.rasterPixels > 0) e.limits.push_back(raster(w));
         if (w.counted && w.counts.inputPrimitives > 0) e.limits.push_back(triangles(w));
         for (const LimitTime& l : e.limits)
             if (l.ms > e.bound.ms) e.bound = l;

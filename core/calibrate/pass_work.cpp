@@ -35,7 +35,11 @@ PassStage stageOf(const GraphDecl::Pass& p, const PassWork& w) {
 // An attachment of a counted draw: at most one pixel's samples per fragment.
 double attachmentBytes(const PassUse& u, const PassWork& w, const PassWorkInput& in) {
     const double full = double(in.resourceBytes(u.resource.index));
-    if (!isAttachment(u.use) || !w.counted || in.framePixels <= 0) return full;
+    // A resolve writes the whole area; a draw without a fragment shader (a depth prepass) has no
+    // fragments to bound it by.
+    const bool resolve = u.use == Use::ColorResolve || u.use == Use::DepthResolve;
+    if (!isAttachment(u.use) || resolve || !w.counted || in.framePixels <= 0 || w.counts.fragmentInvocations == 0)
+        return full;
     return std::min(full, double(w.counts.fragmentInvocations) * full / in.framePixels);
 }
 
@@ -95,6 +99,10 @@ std::vector<PassWork> countPassWork(const PassWorkInput& in) {
             w.bytesWritten += b.written;
         }
         w.stage = stageOf(p, w);
+        // Pixels through the raster path: the fragments, or for a draw without a fragment shader
+        // (a depth prepass) the pixels with geometry.
+        w.rasterPixels = w.counts.fragmentInvocations > 0 ? double(w.counts.fragmentInvocations)
+                         : w.counted && w.counts.clippingPrimitives > 0 ? in.coveredPixels : 0.0;
         addLightWork(w, in);
         out.push_back(w);
     }

@@ -1,5 +1,5 @@
 #pragma once
-// Each pass's work, counted (docs/efficiency.md, "What is counted"): the bytes its declared
+// Each pass's work, counted (docs/efficiency.md, "Placing a pass: what is counted"): the bytes its declared
 // uses move, what the device counted it doing (pipeline statistics) and the light evaluations
 // its renderer counts. No device here: tested on the CPU against hand-computed passes.
 #include <cstdint>
@@ -25,6 +25,7 @@ struct PassWork {
     double bytesRead = 0, bytesWritten = 0; // the frame graph's declared uses, each once
     bool counted = false;                   // pipeline statistics were available
     PipelineCounts counts;
+    double rasterPixels = 0; // placed against the raster ceilings
     double lightEvaluations = 0;
     bool lightExact = false;
     std::string lightHow; // empty: the pass evaluates no light

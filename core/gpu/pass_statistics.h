@@ -2,7 +2,7 @@
 // Pipeline statistics per pass (VK_QUERY_TYPE_PIPELINE_STATISTICS, where the device has the
 // feature; lavapipe and NVIDIA do): the work a pass gave the device, counted by the device.
 // The frame graph brackets every pass it records with one query, beside its timestamps
-// (docs/efficiency.md, "What is counted"). Counts are of the last frame submitted: the same
+// (docs/efficiency.md, "Placing a pass: what is counted"). Counts are of the last frame submitted: the same
 // recording every frame, so every frame's counts are the same.
 #include <cstdint>
 #include <string>

@@ -55,7 +55,7 @@ struct DebugImage {
     bool display = true;
 };
 
-// The light evaluations one pass makes (docs/efficiency.md, "What is counted"): `perItem`
+// The light evaluations one pass makes (docs/efficiency.md, "Placing a pass: what is counted"): `perItem`
 // lights per item of `base`, its fragment-shader invocations (counted by the device) or the
 // pixels that hold geometry (from the depth image). Counted from the renderer's own counters.
 struct PassLightWork {

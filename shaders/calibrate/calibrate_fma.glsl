@@ -1,5 +1,5 @@
 // The FMA loop of calibrate's two FMA ceilings, compute (TP_CAL_FMA) and fragment
-// (calibrate_fma.frag): the same code on both stages, so their rates compare the stages.
+// (calibrate.frag, TP_CAL_FRAGMENT_FMA): the same code on both stages, so their rates compare the stages.
 // Eight independent vec4 chains, so that an FMA's latency hides behind the other seven's:
 // 8 x 4 FMAs = 64 FLOPs per step.
 #ifndef TP_CALIBRATE_FMA_GLSL

@@ -115,7 +115,8 @@ TEST(Efficiency, TheBindingCeilingIsTheLimitTheWorkWouldTakeLongestAt) {
     w.counted = true;
     w.bytesRead = 2e9;  // 1 s at 2 GB/s
     w.bytesWritten = 0;
-    w.counts = {1000, 1000, 1000, 1'000'000'000}; // 0.5 s at 2 Gpixel/s
+    w.counts = {1000, 1000, 1000, 1'000'000'000};
+    w.rasterPixels = 1e9; // 0.5 s at 2 Gpixel/s
     w.lightEvaluations = 1.2e9; // 75 % point at 1 G/s (0.9 s) + 25 % spot at 0.5 G/s (0.6 s)
     const CeilingRates rates = {{"dram_read", 2e9}, {"dram_write", 2e9},         {"fragment_light_point", 1e9},
                                 {"fragment_light_spot", 0.5e9}, {"rop_colour", 2e9}, {"tri_culled", 1e9},
