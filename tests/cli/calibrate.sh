@@ -3,7 +3,10 @@
 # ceiling measured with its spread (min <= median <= max, all positive) and written as JSON;
 # the second run reuses the file; a file of another key or an incomplete one is measured again
 # and replaced, as is a torn one in the cache folder; a file of another kind named by --out is
-# never overwritten; bad options are one-line refusals. Nothing asserts a speed.
+# never overwritten; bad options are one-line refusals. render, compare, sweep and view place
+# every pass against a quick calibration (report.json, report.html's roofline, sweep.csv's
+# columns, the viewer's stats); a missing file or another device's is refused. Nothing asserts
+# a speed.
 # Usage: calibrate.sh TRIPTYCH
 set -u
 bin=$1
@@ -112,6 +115,39 @@ if e["missing_ceilings"]: print("missing", e["missing_ceilings"])
 PY
 )
 report "render places every pass against --calibration FILE" "$problem"
+
+# compare and sweep place them too: report.json per pipeline, report.html's roofline section,
+# sweep.csv's efficiency columns filled.
+run_triptych compare --pipelines forwardplus --res 64x36 --lights 8 --frames 1 --warmup 0 --validate \
+    --no-reference-cache --calibration "$file" --out "$work/compare"
+problem=""
+[ "$code" -ne 0 ] && problem="exit code $code"
+[ -z "$problem" ] && problem=$(python3 - "$work/compare" <<'PY'
+import json, sys
+d = sys.argv[1]
+r = json.load(open(d + "/report.json"))
+if not r["calibration"]["available"] or "fragment_light_point" not in r["calibration"]["ceilings"]: print("calibration", r["calibration"]); sys.exit()
+e = r["pipelines"][0]["run"].get("efficiency")
+if not e or e["passes_at_ceiling_ms"] <= 0: print("efficiency", e); sys.exit()
+html = open(d + "/report.html").read()
+start = html.find("against the device's ceilings")
+section = html[start:html.find("<h2", start)] if start >= 0 else ""
+if "<svg" not in section or "<table" not in section or "forward_opaque" not in section: print("report.html has no roofline or pass table")
+PY
+)
+report "compare places every pass and draws the roofline" "$problem"
+run_triptych sweep --pipelines forwardplus --res 64x36 --lights 8 --frames 1 --warmup 0 --reference-frames 0 \
+    --calibration "$file" --out "$work/sweep"
+problem=""
+[ "$code" -ne 0 ] && problem="exit code $code"
+[ -z "$problem" ] && problem=$(python3 - "$work/sweep/sweep.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+bad = [r for r in rows if not r["ceiling_percent"] or not r["slowest_pass_ceiling"]]
+if not rows or bad: print("empty efficiency columns in", len(bad), "of", len(rows), "rows")
+PY
+)
+report "sweep.csv has every run's efficiency columns" "$problem"
 
 # The viewer's numbers panel places the passes too (its stats file holds what the panel shows).
 printf 'reference off\npipeline a forwardplus\nwait\nstats s.json\n' > "$work/view.txt"
