@@ -51,11 +51,11 @@ void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
         if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
 }
 
-// The graph's set for the pass's uses (storage buffers only) and fp_params, plus the lights as
-// a uniform buffer, which the graph's sets do not offer. On a CPU device (lavapipe) the shaders
-// read the lights from it when they all fit (docs/forwardplus.md, "The per-light cost on
-// lavapipe"); on a GPU, and past TP_FP_UBO_LIGHTS lights, from the scene's storage buffer as
-// before, and a one-light stand-in is bound. The lights are fixed for a run.
+// The graph's set for the pass's uses and fp_params, plus the lights as a uniform buffer. On a
+// CPU device (lavapipe) the shaders read the lights from it when they all fit
+// (docs/forwardplus.md, "The per-light cost on lavapipe"); on a GPU, and past TP_FP_UBO_LIGHTS
+// lights, from the scene's storage buffer as before, and a one-light stand-in is bound. The
+// lights are fixed for a run.
 void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
     const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
     const std::vector<uint32_t> directional = la::classifyLights(lights).directional;
@@ -77,27 +77,9 @@ void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
         {"forwardplus", "", "fp_lights_ubo",
          lightsUbo_ ? "the lights as a uniform buffer (read by the shading passes)"
                     : "stand-in (the shading passes read the scene's light buffer)"});
-
-    std::vector<std::pair<uint32_t, VkBuffer>> storage = {{TP_FP_BINDING_PARAMS, params}};
-    for (const PassUse& u : uses(false))
-        if (u.binding != kNoBinding) storage.push_back({u.binding, graph.buffer(u.resource).buffer});
-    std::vector<SetBinding> bindings;
-    for (const auto& [binding, buffer] : storage)
-        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    bindings.push_back({TP_FP_BINDING_LIGHTS_UBO, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
-    set_ = tp::createPassSet(ctx_, bindings);
-    set_.pass = "forward_opaque";
-    set_.bindings = bindings;
-    for (const auto& [binding, buffer] : storage)
-        writeBufferDescriptor(ctx_, set_.set, binding, buffer);
-    VkDescriptorBufferInfo ubo{lightsUboBuffer_.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set_.set;
-    w.dstBinding = TP_FP_BINDING_LIGHTS_UBO;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    w.pBufferInfo = &ubo;
-    vkUpdateDescriptorSets(ctx_.device, 1, &w, 0, nullptr);
+    set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE,
+                               {{TP_FP_BINDING_PARAMS, params},
+                                {TP_FP_BINDING_LIGHTS_UBO, lightsUboBuffer_.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
 }
 
 GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {

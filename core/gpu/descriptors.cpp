@@ -60,9 +60,9 @@ void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding
 }
 
 void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding,
-                           VkBuffer buffer) {
+                           VkBuffer buffer, VkDescriptorType type) {
     VkDescriptorBufferInfo bi{buffer, 0, VK_WHOLE_SIZE};
-    writeDescriptor(ctx, set, binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nullptr, &bi);
+    writeDescriptor(ctx, set, binding, type, nullptr, &bi);
 }
 
 } // namespace tp

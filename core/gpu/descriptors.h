@@ -30,6 +30,7 @@ void destroyPassSet(GpuContext& ctx, PassSet& set);
 void writeImageDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding,
                           VkDescriptorType type, VkImageView view, VkImageLayout layout,
                           VkSampler sampler);
-void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkBuffer buffer);
+void writeBufferDescriptor(GpuContext& ctx, VkDescriptorSet set, uint32_t binding, VkBuffer buffer,
+                           VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
 
 } // namespace tp

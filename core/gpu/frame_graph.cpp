@@ -118,7 +118,7 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
             {u.binding, descriptorType(u.use, decl_.resources()[u.resource.index].isImage)});
     }
     for (const ExternalBuffer& e : externals)
-        bindings.push_back({e.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+        bindings.push_back({e.binding, e.type});
     // Every check before anything is created (a PassSet owns nothing until it is destroyed).
     for (size_t i = 0; i < bindings.size(); ++i) {
         for (size_t j = 0; j < i; ++j)
@@ -147,7 +147,7 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
         }
     }
     for (const ExternalBuffer& e : externals)
-        writeBufferDescriptor(ctx_, set.set, e.binding, e.buffer);
+        writeBufferDescriptor(ctx_, set.set, e.binding, e.buffer, e.type);
     return set;
 }
 

@@ -47,10 +47,12 @@ struct PassContext {
 };
 
 // A buffer bound in a pass's set that the graph does not track: static data uploaded once,
-// before any frame, so no barrier is needed between frames.
+// before any frame, so no barrier is needed between frames. A storage buffer unless `type`
+// says otherwise (Forward+ binds its lights as a uniform buffer on lavapipe).
 struct ExternalBuffer {
     uint32_t binding;
     VkBuffer buffer;
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 };
 
 class FrameGraph {
