@@ -60,10 +60,10 @@ std::shared_ptr<RunCalibration> fromFile(GpuContext& ctx, const std::string& pat
     const std::optional<json> file = readCalibration(path);
     if (!file || !isCalibration(*file) || !isComplete(*file))
         throw UsageError("--calibration: " + path + " is not a complete triptych calibration");
-    Result<CeilingFile> ceilings = readCeilingFile(path);
-    if (!ceilings) throw UsageError("--calibration: " + ceilings.error());
-    if (ceilings->device != ctx.info.name || ceilings->driver != ctx.info.driver)
-        throw UsageError("--calibration: " + path + " was measured on " + ceilings->device + ", not on " + ctx.info.name);
+    const json& key = (*file)["key"]; // isComplete: device and driver are strings
+    if (key["device"] != ctx.info.name || key["driver"] != ctx.info.driver)
+        throw UsageError("--calibration: " + path + " was measured on " + key["device"].get<std::string>() +
+                         ", not on " + ctx.info.name);
     return usable(*file, path);
 }
 
@@ -171,10 +171,9 @@ std::string efficiencyNote(const RunResult& run, const std::string& pass) {
     if (!run.efficiency) return {};
     if (pass == "frame")
         return ", passes at their ceilings: " + std::to_string(int(run.efficiency->percent + 0.5)) + "%";
-    for (const PassEfficiency& p : run.efficiency->passes)
-        if (p.pass == pass && !p.limits.empty())
-            return ", " + std::to_string(int(p.percent + 0.5)) + "% of " + p.bound.limit + " (" + p.bound.ceiling + ")";
-    return {};
+    const PassEfficiency* p = run.efficiency->placed(pass);
+    return p ? ", " + std::to_string(int(p->percent + 0.5)) + "% of " + p->bound.limit + " (" + p->bound.ceiling + ")"
+             : std::string();
 }
 
 json calibrationUseJson(const RunCalibration& cal) {

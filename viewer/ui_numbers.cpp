@@ -35,12 +35,10 @@ std::string ceilingText(const RunResult& run, const std::string& pass) {
         std::snprintf(text, sizeof text, "passes at ceilings: %.0f%%", run.efficiency->percent);
         return text;
     }
-    for (const PassEfficiency& p : run.efficiency->passes)
-        if (p.pass == pass && !p.limits.empty()) {
-            std::snprintf(text, sizeof text, "%.0f%% of %s", p.percent, p.bound.ceiling.c_str());
-            return text;
-        }
-    return {};
+    const PassEfficiency* p = run.efficiency->placed(pass);
+    if (!p) return {};
+    std::snprintf(text, sizeof text, "%.0f%% of %s", p->percent, p->bound.ceiling.c_str());
+    return text;
 }
 
 void timingGraph(const std::string& pipeline, const TimingHistory& h, const std::string& device,

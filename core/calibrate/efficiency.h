@@ -40,6 +40,12 @@ struct FrameEfficiency {
     double percent = 0;    // boundSumMs / frameMs x 100
     std::vector<PassEfficiency> passes;
     std::vector<std::string> missingCeilings; // needed and absent from the calibration
+    // The pass's placement when its counted work met a ceiling; null otherwise.
+    const PassEfficiency* placed(const std::string& pass) const {
+        for (const PassEfficiency& p : passes)
+            if (p.pass == pass && !p.limits.empty()) return &p;
+        return nullptr;
+    }
 };
 
 // `spotShare`: the share of the scene's local lights that are spots (their evaluations are

@@ -193,9 +193,7 @@ Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const Rendere
 }
 
 double counterValue(const RunResult& run, const std::string& name, double fallback) {
-    for (const auto& [k, v] : run.stats.counters)
-        if (k == name) return v;
-    return fallback;
+    return run.stats.counter(name, fallback);
 }
 
 } // namespace tp
