@@ -17,7 +17,7 @@ std::vector<SpecConstant> directionalSpec(const LightPlan& plan) {
 }
 
 BasePass::BasePass(const PassEnv& env) : env_(env) {
-    if (env.plan.opaque.empty() && env.plan.masked.empty()) return; // only clears
+    if (!env.allDraws && env.plan.opaque.empty() && env.plan.masked.empty()) return; // only clears
     // Masked draws need no discard here: the EQUAL test only passes where the prepass kept
     // the sample, so one pipeline serves both alpha modes.
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Opaque);

@@ -51,7 +51,7 @@ VkPipelineColorBlendAttachmentState alphaOnly() {
 BlendedPass::BlendedPass(const PassEnv& env)
     : env_(env), additive_(env.settings.blendedLights == BlendedLights::Additive),
       onePass_(env.settings.blendedLights == BlendedLights::OnePass) {
-    if (env.plan.blended.empty()) return;
+    if (!env.allDraws && env.plan.blended.empty()) return;
     // Depth GREATER against the opaque depth, no writes: as the reference draws them.
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Blend);
     d.depthWrite = false;
@@ -85,29 +85,35 @@ BlendedPass::~BlendedPass() {
 }
 
 // The triangles of every blended draw that has lights, in reverse order (each triangle's
-// own vertex order kept, so facing is unchanged), in one index buffer of this pipeline.
+// own vertex order kept, so facing is unchanged), in one index buffer of this pipeline. With
+// allDraws every blended draw of the scene, so no view needs a new buffer.
 void BlendedPass::createReversedIndices() {
+    std::vector<const DrawItem*> lit;
+    if (env_.allDraws)
+        lit = env_.scene.drawList(DrawFilter::Blend);
+    else
+        for (const BlendedDraw& bd : env_.plan.blended)
+            if (!bd.lights.empty()) lit.push_back(bd.draw);
     std::vector<uint32_t> reversed;
-    reversedFirst_.assign(env_.plan.blended.size(), 0);
-    for (size_t b = 0; b < env_.plan.blended.size(); ++b) {
-        const BlendedDraw& bd = env_.plan.blended[b];
-        if (bd.lights.empty()) continue;
+    reversedFirst_.clear();
+    for (const DrawItem* draw : lit) {
         // The scene's index buffer is its meshes' indices in order (SceneGpu::uploadGeometry).
         uint32_t first = 0;
         const Mesh* mesh = nullptr;
         for (const Mesh& m : env_.scene.scene().meshes) {
-            if (first == bd.draw->firstIndex && uint32_t(m.indices.size()) == bd.draw->indexCount) {
+            if (first == draw->firstIndex && uint32_t(m.indices.size()) == draw->indexCount) {
                 mesh = &m;
                 break;
             }
             first += uint32_t(m.indices.size());
         }
         if (!mesh) throw RendererError("multipass_forward: a blended draw matches no mesh");
-        reversedFirst_[b] = uint32_t(reversed.size());
+        reversedFirst_[draw] = uint32_t(reversed.size());
         for (size_t t = mesh->indices.size(); t >= 3; t -= 3)
             reversed.insert(reversed.end(), mesh->indices.begin() + ptrdiff_t(t - 3),
                             mesh->indices.begin() + ptrdiff_t(t));
     }
+    reversedIndices_ = {};
     if (reversed.empty()) return;
     reversedIndices_ =
         createBufferWithData(env_.ctx, reversed.data(), reversed.size() * sizeof(uint32_t),
@@ -116,13 +122,22 @@ void BlendedPass::createReversedIndices() {
                               "lit blended meshes' triangles in reverse order (light passes)"});
 }
 
+void BlendedPass::follow() {
+    if (!light_ || additive_ || onePass_) return;
+    for (const BlendedDraw& bd : env_.plan.blended)
+        if (!bd.lights.empty() && !reversedFirst_.count(bd.draw)) {
+            createReversedIndices();
+            return;
+        }
+}
+
 // The exact light passes: each light's triangles of the draw in reverse order, composited
 // under the layers already passed (transmittance in the target's alpha), then T reset to 1.
-void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd, size_t index) {
+void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd) {
     if (bd.lights.empty()) return;
     vkCmdBindIndexBuffer(pc.cmd, reversedIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
     DrawItem reversed = *bd.draw;
-    reversed.firstIndex = reversedFirst_[index];
+    reversed.firstIndex = reversedFirst_.at(bd.draw);
     for (const auto& [light, scissor] : bd.lights) {
         setScissor(pc.cmd, scissor);
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
@@ -160,7 +175,7 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
         if (additive_)
             recordAdditiveLights(pc, bd);
         else
-            recordUnderLights(pc, bd, b);
+            recordUnderLights(pc, bd);
         // A composite, then per light one draw (additive) or a light draw and a reset (under).
         draws_ += 1 + (additive_ ? 1u : 2u) * uint32_t(bd.lights.size());
         lightDraws_ += uint32_t(bd.lights.size());

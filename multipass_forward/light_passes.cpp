@@ -10,7 +10,7 @@
 namespace tp::mp {
 
 LightPasses::LightPasses(const PassEnv& env) : env_(env) {
-    if (env.plan.batches.empty()) return;
+    if (!env.allDraws && env.plan.batches.empty()) return;
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Opaque); // masked too: EQUAL test
     d.fragmentShader = fragmentShader(env, "light");
     d.depthWrite = false;

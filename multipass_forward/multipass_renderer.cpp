@@ -19,7 +19,7 @@ class MultipassForwardRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), mp_(readSettings(info.settings)),
           accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                 : VK_FORMAT_R32G32B32A32_SFLOAT),
-          plan_(planLights(info.scene, mp_.blendedLights != BlendedLights::OnePass)) {}
+          manyViews_(info.settings.manyViews), plan_(planLights(info.scene, lightBlended())) {}
 
     ~MultipassForwardRenderer() override {
         prepass_.reset();
@@ -32,10 +32,14 @@ class MultipassForwardRenderer final : public Renderer {
     void plan(FrameGraph& graph) override {
         createTargets(graph);
         // The last pass that shades resolves the per-sample target into hdr.
-        const bool hasLights = !plan_.batches.empty(), hasBlended = !plan_.blended.empty();
+        // Many views: the passes every view may need, whether or not this one does.
+        hasLights_ = !plan_.batches.empty() || (manyViews_ && plan_.localLights > 0);
+        hasBlended_ = !plan_.blended.empty() || (manyViews_ && scene_.hasDraws(DrawFilter::Blend));
+        const bool hasLights = hasLights_, hasBlended = hasBlended_;
         prepass_ = std::make_unique<passes::DepthPrepass>(
             ctx_, scene_,
-            passes::DepthPrepassParams{mp_.sampling.samples, plan_.opaque, plan_.masked});
+            passes::DepthPrepassParams{mp_.sampling.samples, plan_.opaque, plan_.masked,
+                                       manyViews_});
         prepass_->plan(graph,
                        {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;
@@ -55,16 +59,33 @@ class MultipassForwardRenderer final : public Renderer {
 
     void prepare(FrameGraph&) override {
         layout_ = scene_.createPipelineLayout();
-        PassEnv env{ctx_, scene_, mp_, plan_, layout_, accumFormat_};
+        PassEnv env{ctx_, scene_, mp_, plan_, layout_, accumFormat_, manyViews_};
         prepass_->prepare();
         base_ = std::make_unique<BasePass>(env);
         lights_ = std::make_unique<LightPasses>(env);
         blended_ = std::make_unique<BlendedPass>(env);
     }
 
+    // The light plan again for the new view (CPU: scissors and per-light mesh lists), kept
+    // where the planned passes and pipelines can record it.
+    bool updateView(FrameGraph&) override {
+        LightPlan next = planLights(scene_, lightBlended());
+        const bool fits = next.baseDirectional == plan_.baseDirectional && // spec constants
+                          (next.batches.empty() || hasLights_) &&
+                          (next.blended.empty() || (hasBlended_ && blended_->hasPipelines())) &&
+                          (next.opaque.empty() && next.masked.empty() || base_->hasPipeline()) &&
+                          (next.batches.empty() || lights_->hasPipeline());
+        if (!fits || !prepass_->setDraws(next.opaque, next.masked)) return false;
+        plan_ = std::move(next);
+        blended_->follow();
+        return true;
+    }
+
     RendererStats stats() const override;
 
   private:
+    bool lightBlended() const { return mp_.blendedLights != BlendedLights::OnePass; }
+
     void createTargets(FrameGraph& graph) {
         const bool fp16 = accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT;
         const std::string accum = fp16 ? "accumulated radiance, fp16 (resolved)"
@@ -85,6 +106,8 @@ class MultipassForwardRenderer final : public Renderer {
     SceneGpu& scene_;
     Settings mp_;
     VkFormat accumFormat_;
+    bool manyViews_;
+    bool hasLights_ = false, hasBlended_ = false; // the passes planned
     LightPlan plan_;
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;

@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 // The passes of multipass forward, one file each: base_pass.cpp, light_passes.cpp,
 // blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each
 // creates its pipelines in its constructor (after the graph allocated resources) and records into
@@ -38,6 +39,9 @@ struct PassEnv {
     const LightPlan& plan;
     VkPipelineLayout layout;
     VkFormat accumFormat; // RGBA16F or RGBA32F (the accum knob)
+    // RenderSettings::manyViews: pipelines for every draw the scene has, not only for those on
+    // screen in the planned view, so a new view's plan fits (the renderer's updateView).
+    bool allDraws = false;
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass
@@ -66,6 +70,7 @@ class BasePass {
     ~BasePass();
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
+    bool hasPipeline() const { return pipeline_ != VK_NULL_HANDLE; }
 
   private:
     const PassEnv env_;
@@ -81,6 +86,7 @@ class LightPasses {
     ~LightPasses();
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
+    bool hasPipeline() const { return pipeline_ != VK_NULL_HANDLE; }
 
   private:
     const PassEnv env_;
@@ -98,10 +104,13 @@ class BlendedPass {
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
     uint32_t lightDraws() const { return lightDraws_; } // of draws(); under: each has a reset too
+    bool hasPipelines() const { return base_ != VK_NULL_HANDLE; }
+    // After the plan changed (a new view): the reversed triangles of every draw lit now.
+    void follow();
 
   private:
     void createReversedIndices();
-    void recordUnderLights(PassContext& pc, const BlendedDraw& bd, size_t index);
+    void recordUnderLights(PassContext& pc, const BlendedDraw& bd);
     void recordAdditiveLights(PassContext& pc, const BlendedDraw& bd);
 
     const PassEnv env_;
@@ -109,7 +118,7 @@ class BlendedPass {
     const bool onePass_;  // --blended-lights one-pass: every light in the composite, no light draws
     VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
     Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
-    std::vector<uint32_t> reversedFirst_; // per plan.blended entry: its first index there
+    std::map<const DrawItem*, uint32_t> reversedFirst_; // a lit draw's first index there
     uint32_t draws_ = 0, lightDraws_ = 0;
 };
 

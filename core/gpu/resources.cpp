@@ -224,19 +224,24 @@ Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size
                             VkBufferUsageFlags usage, const LedgerTag& tag) {
     Buffer dst =
         createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Device, tag);
-    if (size == 0) return dst;
+    uploadBufferData(ctx, dst, data, size);
+    return dst;
+}
+
+void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDeviceSize size) {
+    if (size == 0) return;
     Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
                                   {"staging", "", "staging", "upload"});
     std::memcpy(staging.mapped, data, size);
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferCopy copy{0, 0, size};
         vkCmdCopyBuffer(cmd, staging.buffer, dst.buffer, 1, &copy);
-        // Hand-written barrier (the exception to graph-derived ones): the upload happens once,
-        // outside any frame graph; its second scope covers every later submission.
+        // Hand-written barrier (the exception to graph-derived ones): the upload happens
+        // outside any frame graph, between frames; its second scope covers every later
+        // submission.
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
     });
-    return dst;
 }
 
 } // namespace tp

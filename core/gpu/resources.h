@@ -69,6 +69,9 @@ Status checkImageSupported(const GpuContext& ctx, const ImageDesc& desc);
 // kept, so it is not in the ledger).
 Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size,
                             VkBufferUsageFlags usage, const LedgerTag& tag);
+// Overwrites the first `size` bytes of a device-local buffer (made with TRANSFER_DST) through a
+// staging buffer, between frames (waits for the copy): per-view data of a planned renderer.
+void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDeviceSize size);
 
 bool isDepthFormat(VkFormat format);
 

@@ -28,16 +28,25 @@ void DepthPrepass::prepare() {
     GraphicsPipelineDesc d;
     d.samples = VkSampleCountFlagBits(params_.samples);
     d.layout = layout_;
-    if (!params_.opaque.empty()) {
+    const bool every = params_.everyPipeline;
+    if (!params_.opaque.empty() || (every && scene_.hasDraws(DrawFilter::Opaque))) {
         d.specConstants = scene_.specConstants(AlphaMode::Opaque);
         opaque_ = createGraphicsPipeline(ctx_, d); // no fragment stage: depth only
     }
-    if (!params_.masked.empty()) {
+    if (!params_.masked.empty() || (every && scene_.hasDraws(DrawFilter::Mask))) {
         d.fragmentShader = "prepass_mask_frag";
         d.sampleShading = params_.samples > 1; // per sample, as the reference
         d.specConstants = scene_.specConstants(AlphaMode::Mask);
         masked_ = createGraphicsPipeline(ctx_, d);
     }
+}
+
+bool DepthPrepass::setDraws(std::vector<const DrawItem*> opaque,
+                            std::vector<const DrawItem*> masked) {
+    if ((!opaque.empty() && !opaque_) || (!masked.empty() && !masked_)) return false;
+    params_.opaque = std::move(opaque);
+    params_.masked = std::move(masked);
+    return true;
 }
 
 void DepthPrepass::record(PassContext& pc) {

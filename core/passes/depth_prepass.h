@@ -25,6 +25,9 @@ namespace tp::passes {
 struct DepthPrepassParams {
     uint32_t samples = 1;
     std::vector<const DrawItem*> opaque, masked; // the draws it records, in this order
+    // Pipelines for every alpha mode the scene has, not only for the non-empty lists: a
+    // renderer that follows many views (RenderSettings::manyViews) gets new lists per view.
+    bool everyPipeline = false;
 };
 
 // depth: the attachment (per sample under MSAA); resolve: the single-sample depth it resolves
@@ -44,6 +47,9 @@ class DepthPrepass {
     // Pipelines (after the graph is compiled; they depend on no resource).
     void prepare();
     uint32_t draws() const { return draws_; } // recorded in the last frame
+    // A new view's lists (recorded from the next recording on); false, and nothing changed,
+    // when a non-empty list has no pipeline (it was empty at prepare, without everyPipeline).
+    bool setDraws(std::vector<const DrawItem*> opaque, std::vector<const DrawItem*> masked);
     bool hasMaskedPipeline() const { return masked_ != VK_NULL_HANDLE; }
 
   private:

@@ -73,6 +73,10 @@ class ReferenceRenderer final : public Renderer {
         }
     }
 
+    // Every light at every sample: nothing derives from the view but the blended draws' back-
+    // to-front order, which the recording takes from the scene.
+    bool updateView(FrameGraph&) override { return true; }
+
     RendererStats stats() const override {
         RendererStats s;
         s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});

@@ -8,36 +8,13 @@
 #include "core/gpu/pass_statistics.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
+#include "core/render/frame_steps.h"
+#include "core/render/render_session.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/clock.h"
 
 namespace tp {
 namespace {
-
-void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
-                 PassStatistics& statistics) {
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    profiler.beginFrame(cmd);
-    statistics.beginFrame(cmd);
-    graph.record(cmd, &profiler, &statistics);
-    profiler.endFrame(cmd);
-    VK_CHECK(vkEndCommandBuffer(cmd));
-}
-
-// A pipeline's own failure as one line naming it, so the other pipelines still run:
-// RendererError (this configuration cannot be built) or GraphError (its declarations disagree
-// with each other or with its shaders, or it records an attachment it did not declare).
-template <class Step> Status pipelineStep(const RendererEntry& entry, Step&& step) {
-    try {
-        step();
-    } catch (const RendererError& e) {
-        return Error{"pipeline " + entry.name + ": " + e.what()};
-    } catch (const GraphError& e) {
-        return Error{"pipeline " + entry.name + ": " + e.what()};
-    }
-    return {};
-}
 
 // A GPU lowers its clock within seconds of going idle (an H100: 1,980 to 345 MHz while compare
 // measures the previous pipeline's error on the CPU) and takes about a second to raise it again:
@@ -45,26 +22,6 @@ template <class Step> Status pipelineStep(const RendererEntry& entry, Step&& ste
 // warm-up goes on until it has run this long; a CPU device has no such clock.
 constexpr double kGpuWarmupMs = 1000.0;
 constexpr uint32_t kMaxWarmupFrames = 2000;
-
-// Warm-up then timed frames of the one recording; the profiler keeps the timed ones. Returns
-// how many warm-up frames ran.
-uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
-                      const RunOptions& options) {
-    const double minWarmupMs = options.warmupFrames > 0 && !ctx.isCpuDevice() ? kGpuWarmupMs : 0.0;
-    const auto begin = std::chrono::steady_clock::now();
-    uint32_t warmup = options.warmupFrames;
-    for (uint32_t f = 0; f < warmup + options.timedFrames; ++f) {
-        auto start = std::chrono::steady_clock::now();
-        ctx.submitAndWait(cmd);
-        std::chrono::duration<double, std::milli> wall = std::chrono::steady_clock::now() - start;
-        profiler.collect();
-        const bool lastWarmup = f + 1 == warmup;
-        if (lastWarmup && msSince(begin) < minWarmupMs && warmup < kMaxWarmupFrames) ++warmup;
-        else if (lastWarmup) profiler.discardSamples();
-        if (options.onFrame) options.onFrame(f, warmup + options.timedFrames, wall.count());
-    }
-    return warmup;
-}
 
 // Pixels whose depth is not the far plane (reverse-Z: 0): where geometry was shaded.
 double coveredPixels(const ImageR32& depth) {
@@ -96,10 +53,42 @@ double spotShare(const std::vector<Light>& lights) {
     return local > 0 ? spots / local : 0.0;
 }
 
-// What a report needs from the frames just run.
+} // namespace
+
+namespace detail {
+
+void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
+                 PassStatistics& statistics) {
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    profiler.beginFrame(cmd);
+    statistics.beginFrame(cmd);
+    graph.record(cmd, &profiler, &statistics);
+    profiler.endFrame(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+}
+
+uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
+                      const RunOptions& options) {
+    const double minWarmupMs = options.warmupFrames > 0 && !ctx.isCpuDevice() ? kGpuWarmupMs : 0.0;
+    const auto begin = std::chrono::steady_clock::now();
+    uint32_t warmup = options.warmupFrames;
+    for (uint32_t f = 0; f < warmup + options.timedFrames; ++f) {
+        auto start = std::chrono::steady_clock::now();
+        ctx.submitAndWait(cmd);
+        std::chrono::duration<double, std::milli> wall = std::chrono::steady_clock::now() - start;
+        profiler.collect();
+        const bool lastWarmup = f + 1 == warmup;
+        if (lastWarmup && msSince(begin) < minWarmupMs && warmup < kMaxWarmupFrames) ++warmup;
+        else if (lastWarmup) profiler.discardSamples();
+        if (options.onFrame) options.onFrame(f, warmup + options.timedFrames, wall.count());
+    }
+    return warmup;
+}
+
 RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEntry& entry,
                         const RenderSettings& settings, PlannedRenderer& planned, GpuProfiler& profiler,
-                        const PassStatistics& statistics, const CeilingRates* ceilings) {
+                        const PassStatistics& statistics, const RunOptions& options) {
     FrameGraph& graph = *planned.graph;
     RunResult result;
     result.renderer = entry.name;
@@ -108,10 +97,12 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     for (const Knob& k : entry.knobs)
         result.knobs.push_back({k, k.valueIn(settings.knobs)});
     result.timings = profiler.stats();
-    result.hdr = readbackColor(ctx, graph.image(planned.hdr));
-    result.depth = readbackDepth(ctx, graph.image(planned.depth));
+    if (options.readback) {
+        result.hdr = readbackColor(ctx, graph.image(planned.hdr));
+        result.depth = readbackDepth(ctx, graph.image(planned.depth));
+    }
     planned.renderer->collectStats(graph);
-    if (settings.debug) result.debugImages = planned.renderer->debugImages(graph);
+    if (settings.debug && options.readback) result.debugImages = planned.renderer->debugImages(graph);
     result.stats = planned.renderer->stats();
     // The measure of the MSAA shading rate: --msaa-shading pixel runs about one invocation per
     // covered pixel and primitive, sample about one per covered sample.
@@ -127,12 +118,15 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     result.memory = ctx.ledger.entriesOf(entry.name);
     result.passes = graph.livePasses();
     result.culledPasses = graph.culledPasses();
+    if (!options.readback) return result; // the work counts need the depth image
     result.work = countWork(graph, counts, result);
-    if (ceilings) result.efficiency = placeFrame(result.work, result.timings, *ceilings, spotShare(scene.scene().lights));
+    if (options.ceilings)
+        result.efficiency = placeFrame(result.work, result.timings, *options.ceilings,
+                                       spotShare(scene.scene().lights));
     return result;
 }
 
-} // namespace
+} // namespace detail
 
 Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
                                      const SceneFeatures& features,
@@ -144,7 +138,7 @@ Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const Ren
     planned.graph = std::make_unique<FrameGraph>(ctx, entry.name, settings.width, settings.height);
     FrameGraph& graph = *planned.graph;
     bool exports = true;
-    Status built = pipelineStep(entry, [&] {
+    Status built = detail::pipelineStep(entry, [&] {
         planned.renderer = createRenderer(entry, {ctx, scene, features, settings});
         planned.renderer->plan(graph);
         planned.hdr = graph.exported("hdr");
@@ -161,25 +155,10 @@ Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const Ren
 Result<RunResult> runRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
                               const SceneFeatures& features, const RenderSettings& settings,
                               const RunOptions& options) {
-    Result<PlannedRenderer> planned = planRenderer(ctx, scene, entry, features, settings);
-    if (!planned) return Error{planned.error()};
-    if (Status s = pipelineStep(entry, [&] { planned->renderer->prepare(*planned->graph); }); !s)
-        return Error{s.error()};
-
-    GpuProfiler profiler(ctx, 64);
-    PassStatistics statistics(ctx, 64);
-    VkCommandBuffer cmd = ctx.allocateCommandBuffer();
-    if (Status s =
-            pipelineStep(entry, [&] { recordFrame(cmd, *planned->graph, profiler, statistics); });
-        !s) {
-        ctx.freeCommandBuffer(cmd);
-        return Error{s.error()};
-    }
-    const uint32_t warmup = submitFrames(ctx, cmd, profiler, options);
-    ctx.freeCommandBuffer(cmd);
-    RunResult result = collectResult(ctx, scene, entry, settings, *planned, profiler, statistics, options.ceilings.get());
-    result.stats.counters.push_back({"warmup_frames", double(warmup)}); // more than asked: kGpuWarmupMs
-    return result;
+    Result<std::unique_ptr<RendererSession>> session =
+        RendererSession::create(ctx, scene, entry, features, settings);
+    if (!session) return Error{session.error()};
+    return (*session)->render(options);
 }
 
 Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,

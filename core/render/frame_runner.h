@@ -27,6 +27,9 @@ struct RunOptions {
     // The device's measured ceilings (docs/efficiency.md): with them, every pass is placed
     // against them (RunResult::efficiency). Null: not placed.
     std::shared_ptr<const CeilingRates> ceilings;
+    // false: timings and counters only, no images (a camera path's timing pass: nothing on the
+    // CPU between one view's frames and the next's); the work counts and placement need them.
+    bool readback = true;
 };
 
 struct RunResult {

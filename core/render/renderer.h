@@ -13,6 +13,14 @@
 //      timestamps. The same recording is submitted for every frame.
 //   5. After the timed frames, collectStats(graph) may read back counters; stats() reports
 //      them, and leftOut() what the renderer did not build for this scene and why.
+//   6. Plan once, render many views (RendererSession, core/render/render_session.h): between
+//      frames the camera and the lights' positions may change (SceneGpu holds the new ones; the
+//      light count and the scene do not change). updateView(graph) then recomputes whatever the
+//      renderer derived from them into what plan() sized, and the pass callbacks are recorded
+//      again. It returns false when the new view does not fit (a list outgrew the capacity
+//      plan() gave it: counted, never silent) or the renderer cannot update; the session then
+//      plans it again and counts the replan. The default is false: a renderer that bakes the
+//      view is planned again for every view, as before.
 // Nothing downstream asks which renderer ran.
 #include <functional>
 #include <map>
@@ -83,6 +91,7 @@ class Renderer {
     virtual ~Renderer() = default;
     virtual void plan(FrameGraph& graph) = 0;
     virtual void prepare(FrameGraph& graph) = 0;
+    virtual bool updateView(FrameGraph&) { return false; }
     virtual void collectStats(FrameGraph&) {}
     // Read back after the frames when settings.debug is set (see DebugImage).
     virtual std::vector<DebugImage> debugImages(FrameGraph&) { return {}; }

@@ -150,10 +150,17 @@ void SceneGpu::uploadLights() {
     shadingLights_ = lightsGpu_;
     for (gpu::LightGpu& l : shadingLights_)
         l.position = toShading(l.position);
-    lights_ = createBufferWithData(
-        ctx_, shadingLights_.data(), shadingLights_.size() * sizeof(gpu::LightGpu),
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, {"scene", "", "lights", "light array"});
-    writeLightDescriptor();
+    const VkDeviceSize bytes = shadingLights_.size() * sizeof(gpu::LightGpu);
+    ++viewGeneration_;
+    // Same count: overwritten in place, so a planned renderer's descriptors stay valid.
+    if (lights_.buffer && lights_.size == bytes && bytes > 0) {
+        uploadBufferData(ctx_, lights_, shadingLights_.data(), bytes);
+    } else {
+        lights_ = createBufferWithData(ctx_, shadingLights_.data(), bytes,
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                       {"scene", "", "lights", "light array"});
+        writeLightDescriptor();
+    }
     frame_.viewport.z = shadingFrame_.viewport.z = lightCount_;
     std::memcpy(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_));
 }
@@ -190,6 +197,8 @@ void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
         eye_ = glm::dvec3(cam.position);
         uploadLights();
     }
+    if (std::memcmp(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_)) != 0)
+        ++viewGeneration_;
     std::memcpy(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_));
 }
 

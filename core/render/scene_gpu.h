@@ -35,9 +35,13 @@ class SceneGpu {
     SceneGpu(const SceneGpu&) = delete;
     SceneGpu& operator=(const SceneGpu&) = delete;
 
-    // Per configuration (not per frame): camera matrices for this size, light count, MSAA.
+    // The camera matrices (from the scene's camera) for this size and MSAA; the lights, relative
+    // to the eye. Both may change between frames of a planned renderer (RendererSession):
+    // viewGeneration() counts the changes, so a renderer knows when to update its per-view data.
+    // Lights of the same count are overwritten in place (descriptors stay valid).
     void setView(uint32_t width, uint32_t height, uint32_t msaaSamples);
     void setLights(const std::vector<Light>& lights);
+    uint64_t viewGeneration() const { return viewGeneration_; }
 
     // Specialization constants every scene shader takes (texture count, spot path, alpha mode).
     std::vector<SpecConstant> specConstants(AlphaMode mode) const;
@@ -99,6 +103,7 @@ class SceneGpu {
     glm::dvec3 eye_{0.0};
     uint32_t lightCount_ = 0;
     bool hasSpot_ = false;
+    uint64_t viewGeneration_ = 0;
 };
 
 gpu::LightGpu toGpu(const Light& light);

@@ -14,6 +14,11 @@ struct RenderSettings {
     uint32_t height = 180;
     uint32_t msaa = 1;  // samples per pixel: 1, 2, 4, 8 (as the device supports)
     bool debug = false; // renderers export their debug images (heat maps, ...)
+    // Planned to render many views (a camera path, the viewer; core/render/render_session.h):
+    // lists sized from the first view get headroom (each renderer documents how much), and a
+    // view that outgrows it is planned again, counted (view_replans). false: sized exactly for
+    // the one view, as a single render always was.
+    bool manyViews = false;
     // Knob values as text, by knob name ("tile" -> "16"). A renderer is built only after its
     // schema has checked them and filled in its defaults (resolveKnobs), so a knob it declared
     // is always here; values of other renderers' knobs are carried along untouched.

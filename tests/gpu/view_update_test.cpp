@@ -1,0 +1,155 @@
+// Plan once, render many views (core/render/render_session.h): a renderer planned at one view
+// and moved to another renders exactly what a renderer planned at the other view renders
+// (bit-identical colour and depth), for every pipeline and the knobs that change what it
+// derives from the camera and the lights. The session counts how it followed each change:
+// in place (Renderer::updateView) or by planning again; a pipeline in kFollowsInPlace must
+// never need the second way on these views.
+#include <cstring>
+#include <set>
+#include <string>
+
+#include "core/render/render_session.h"
+#include "gpu_test_util.h"
+
+namespace tp::test {
+namespace {
+
+struct Config {
+    std::string pipeline;
+    std::map<std::string, std::string> knobs;
+    uint32_t msaa = 1;
+};
+
+std::string nameOf(const Config& c) {
+    std::string n = c.pipeline;
+    for (const auto& [k, v] : c.knobs)
+        n += " --" + k + " " + v;
+    return n + (c.msaa > 1 ? " --msaa " + std::to_string(c.msaa) : "");
+}
+
+// The pipelines whose updateView follows these views without a replan (each one's own change
+// adds it here, with the test below as its proof).
+const std::set<std::string> kFollowsInPlace = {"reference", "multipass_forward"};
+
+std::vector<Config> configs() {
+    return {
+        {"reference", {}},
+        {"forwardplus", {}},
+        {"forwardplus", {{"light-bin", "cpu"}}},
+        {"forwardplus", {{"light-bin", "gpu"}}},
+        {"forwardplus", {{"light-assign", "clustered"}}},
+        {"forwardplus", {{"light-lists", "linked"}}},
+        {"forwardplus", {}, 4},
+        {"deferred", {}},
+        {"deferred", {{"deferred-lighting", "volumes"}}},
+        {"deferred", {}, 4},
+        {"multipass_forward", {}},
+        {"multipass_forward", {{"blended-lights", "one-pass"}}},
+        {"visbuffer", {}},
+        {"visbuffer", {{"vis-blended", "forward"}}},
+    };
+}
+
+// The courtyard's own camera, a second view from elsewhere looking elsewhere (through the
+// colonnade), and the lights each moved by a seeded offset (same count, same types).
+Camera movedCamera(const Camera& a) {
+    Camera b = a;
+    b.position = a.position + glm::vec3(-2.5f, -0.6f, 1.5f);
+    b.target = a.target + glm::vec3(1.0f, 0.3f, -2.0f);
+    return b;
+}
+
+std::vector<Light> movedLights(std::vector<Light> lights) {
+    for (size_t i = 0; i < lights.size(); ++i)
+        lights[i].position += glm::vec3(0.4f * std::sin(float(i)), 0.1f, 0.4f * std::cos(float(i)));
+    return lights;
+}
+
+RunResult freshRun(GpuContext& ctx, Scene& scene, const RendererEntry& entry,
+                   const RenderSettings& settings) {
+    SceneGpu gpu(ctx, scene);
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    Result<RunResult> r =
+        runRenderer(ctx, gpu, entry, analyzeScene(scene, settings.msaa), settings, once);
+    EXPECT_TRUE(r.ok()) << r.error();
+    return r.ok() ? std::move(*r) : RunResult{};
+}
+
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && !a.empty() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+void expectSameImages(const RunResult& moved, const RunResult& fresh, const std::string& what) {
+    EXPECT_TRUE(sameBits(moved.hdr.rgba, fresh.hdr.rgba)) << what << ": colour differs";
+    EXPECT_TRUE(sameBits(moved.depth.r, fresh.depth.r)) << what << ": depth differs";
+}
+
+void PrintTo(const Config& c, std::ostream* os) {
+    *os << nameOf(c);
+}
+
+class ViewUpdate : public ::testing::TestWithParam<Config> {};
+
+TEST_P(ViewUpdate, AMovedRendererRendersWhatOnePlannedThereRenders) {
+    const Config& c = GetParam();
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(24, 7);
+    const Camera a = scene.camera, b = movedCamera(a);
+    const std::vector<Light> lightsA = scene.lights, lightsB = movedLights(lightsA);
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 64;
+    settings.msaa = c.msaa;
+    settings.knobs = c.knobs;
+    settings.manyViews = true;
+    Result<const RendererEntry*> entry = findRenderer(c.pipeline);
+    ASSERT_TRUE(entry.ok());
+
+    SceneGpu gpu(*ctx, scene);
+    auto session = RendererSession::create(*ctx, gpu, **entry,
+                                           analyzeScene(scene, c.msaa), settings);
+    ASSERT_TRUE(session.ok()) << session.error();
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    const std::vector<Light>* current = &lightsA; // what `gpu` holds
+    auto renderAt = [&](const Camera& cam, const std::vector<Light>& lights) {
+        scene.camera = cam;
+        if (&lights != current) gpu.setLights(lights);
+        current = &lights;
+        Result<RunResult> r = (*session)->render(once);
+        EXPECT_TRUE(r.ok()) << r.error();
+        return r.ok() ? std::move(*r) : RunResult{};
+    };
+    const RunResult atA = renderAt(a, lightsA);
+    const RunResult atB = renderAt(b, lightsA);
+    const RunResult backAtA = renderAt(a, lightsA);
+    const RunResult lightsMoved = renderAt(b, lightsB);
+
+    expectSameImages(backAtA, atA, nameOf(c) + " back at A");
+    scene.camera = b;
+    scene.lights = lightsA;
+    expectSameImages(atB, freshRun(*ctx, scene, **entry, settings), nameOf(c) + " at B");
+    scene.lights = lightsB;
+    expectSameImages(lightsMoved, freshRun(*ctx, scene, **entry, settings),
+                     nameOf(c) + " lights moved");
+    EXPECT_EQ((*session)->updates() + (*session)->replans(), 3u);
+    if (kFollowsInPlace.count(c.pipeline)) EXPECT_EQ((*session)->replans(), 0u) << nameOf(c);
+    EXPECT_GE(lightsMoved.stats.counter("view_update_ms", -1.0), 0.0);
+    expectNoValidationMessages(*ctx);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryPipeline, ViewUpdate, ::testing::ValuesIn(configs()),
+                         [](const ::testing::TestParamInfo<Config>& info) {
+                             std::string n = nameOf(info.param);
+                             for (char& ch : n)
+                                 if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                             return n;
+                         });
+
+} // namespace
+} // namespace tp::test
