@@ -1,5 +1,6 @@
 #include "viewer/render_worker.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/cli/scene_input.h"
@@ -8,9 +9,6 @@
 #include "core/util/clock.h"
 
 namespace tp::view {
-namespace {
-
-} // namespace
 
 RenderWorker::RenderWorker(ContextOptions options, std::string label)
     : options_(std::move(options)), label_(std::move(label)) {
@@ -73,6 +71,7 @@ void RenderWorker::loop() {
         running_ = false;
     }
     // Everything on this device is released here, on its own thread, before its messages are read.
+    sessions_.clear();
     gpuScene_.reset();
     if (ctx_) messages_ = ctx_->validationMessages();
     ctx_.reset();
@@ -83,6 +82,7 @@ void RenderWorker::prepareScene(const RenderJob& job, RenderOutcome& out) {
     const ViewState& s = job.state;
     auto start = std::chrono::steady_clock::now();
     if (sceneKey(s) != sceneKey_) {
+        sessions_.clear(); // they hold the old scene
         gpuScene_.reset();
         scene_.reset();
         sceneKey_.clear();
@@ -114,8 +114,48 @@ void RenderWorker::prepareScene(const RenderJob& job, RenderOutcome& out) {
         lightsKey_ = lightsKey(s);
         if (out.rebuilt.empty()) out.rebuilt = "lights";
     }
-    if (out.rebuilt.empty()) out.rebuilt = "renderer";
-    out.sceneMs = out.rebuilt == "renderer" ? 0.0 : msSince(start);
+    out.sceneMs = out.rebuilt.empty() ? 0.0 : msSince(start);
+}
+
+// One pipeline's image of the job: its kept session follows the view, or a new one is planned
+// (first use, or the plan key changed). A Vulkan failure is shown in the viewer, not a crash.
+PipelineImage RenderWorker::renderPipeline(const std::string& name, const RenderJob& job,
+                                           const RenderSettings& settings,
+                                           const RunOptions& options) {
+    PipelineImage image;
+    image.pipeline = name;
+    const auto start = std::chrono::steady_clock::now();
+    Planned& p = sessions_[name];
+    const std::string key = planKey(job.state, job.debug);
+    try {
+        if (!p.session || p.key != key) {
+            p.session.reset();
+            Result<const RendererEntry*> entry = findRenderer(name);
+            if (!entry) throw RendererError(entry.error());
+            auto session = RendererSession::create(*ctx_, *gpuScene_, **entry,
+                                                   analyzeScene(*scene_, settings.msaa), settings);
+            if (!session) throw RendererError(session.error());
+            p.session = std::move(*session);
+            p.key = key;
+            image.planned = true;
+        }
+        const uint32_t replans = p.session->replans();
+        Result<RunResult> run = p.session->render(options);
+        if (run) {
+            image.run = std::move(*run);
+            image.updateMs = image.run.stats.counter("view_update_ms", 0.0);
+        } else {
+            image.error = run.error();
+        }
+        image.planned |= p.session->replans() != replans;
+    } catch (const std::exception& e) { // RendererError, GpuError
+        image.error = e.what();
+        if (image.error.rfind(name, 0) != 0 && image.error.rfind("pipeline ", 0) != 0)
+            image.error = name + ": " + image.error;
+    }
+    if (!image.error.empty()) sessions_.erase(name);
+    image.buildMs = msSince(start);
+    return image;
 }
 
 RenderOutcome RenderWorker::runJob(const RenderJob& job) {
@@ -148,32 +188,23 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     settings.msaa = job.state.msaa;
     settings.debug = job.debug;
     settings.knobs = job.state.knobs;
-    SceneFeatures features = analyzeScene(*scene_, settings.msaa);
+    settings.manyViews = true; // the next job is likely another view
     RunOptions runOptions;
     runOptions.warmupFrames = 0;
     runOptions.timedFrames = job.timedFrames;
     if (job.calibration && job.calibration->device == ctx_->info.name &&
         job.calibration->driver == ctx_->info.driver) // shares the file's lifetime
         runOptions.ceilings = std::shared_ptr<const CeilingRates>(job.calibration, &job.calibration->rates);
+    for (auto it = sessions_.begin(); it != sessions_.end();) // only this job's pipelines stay
+        it = std::find(job.pipelines.begin(), job.pipelines.end(), it->first) == job.pipelines.end()
+                 ? sessions_.erase(it)
+                 : std::next(it);
+    bool planned = false;
     for (const std::string& name : job.pipelines) {
-        PipelineImage image;
-        image.pipeline = name;
-        auto runStart = std::chrono::steady_clock::now();
-        Result<const RendererEntry*> entry = findRenderer(name);
-        try {
-            Result<RunResult> run =
-                entry ? runRenderer(*ctx_, *gpuScene_, **entry, features, settings, runOptions)
-                      : Result<RunResult>(Error{entry.error()});
-            if (run)
-                image.run = std::move(*run);
-            else
-                image.error = run.error();
-        } catch (const std::exception& e) { // a Vulkan failure: shown in the viewer, not a crash
-            image.error = name + ": " + e.what();
-        }
-        image.buildMs = msSince(runStart);
-        out.images.push_back(std::move(image));
+        out.images.push_back(renderPipeline(name, job, settings, runOptions));
+        planned |= out.images.back().planned;
     }
+    if (out.rebuilt.empty()) out.rebuilt = planned ? "renderer" : "view";
     out.totalMs = msSince(start);
     return out;
 }

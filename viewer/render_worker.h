@@ -5,10 +5,12 @@
 // takes finished outcomes when it draws its next frame.
 //
 // Rebuilds only what a job's state needs (view_state.h): a new scene key reloads and uploads
-// the scene, a new lights key regenerates and uploads only the lights; the renderers are
-// built again for every job, because they bake camera-dependent data at plan time (tile
-// bounds, light scissors, transparent lists).
+// the scene, a new lights key regenerates and uploads only the lights, a new plan key (lights,
+// resolution, MSAA, knobs, overlays) plans the renderers again; a camera move only follows the
+// view: each pipeline's RendererSession (core/render/render_session.h) is kept between jobs
+// and updates its per-view data in place.
 #include <condition_variable>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -19,6 +21,7 @@
 #include "core/calibrate/calibration_file.h"
 #include "core/gpu/context.h"
 #include "core/render/frame_runner.h"
+#include "core/render/render_session.h"
 #include "viewer/view_state.h"
 
 namespace tp::view {
@@ -37,14 +40,17 @@ struct PipelineImage {
     std::string pipeline;
     std::string error; // empty: `run` holds the result
     RunResult run;
-    double buildMs = 0; // wall time of the whole run: build, frames, readback
+    double buildMs = 0;    // wall time of the whole run: plan (if any), frames, readback
+    bool planned = false;  // this job planned the renderer (a new session or a replan)
+    double updateMs = 0;   // CPU: following the new view (updateView + recording), if it moved
 };
 
 struct RenderOutcome {
     uint64_t id = 0;
     std::string key;
     std::string error;   // the scene failed to load or the device failed: shown, viewer stays open
-    std::string rebuilt; // "scene", "lights" or "renderer": the widest rebuild this job needed
+    std::string rebuilt; // "scene", "lights", "renderer" or "view": the widest rebuild this job
+                         // needed ("view": the camera moved, the renderers followed in place)
     double sceneMs = 0;  // scene load + upload, or light regeneration + upload
     double totalMs = 0;  // the whole job
     std::vector<PipelineImage> images;
@@ -75,6 +81,8 @@ class RenderWorker {
     void loop();
     RenderOutcome runJob(const RenderJob& job);
     void prepareScene(const RenderJob& job, RenderOutcome& out);
+    PipelineImage renderPipeline(const std::string& name, const RenderJob& job,
+                                 const RenderSettings& settings, const RunOptions& options);
 
     ContextOptions options_;
     std::string label_;
@@ -94,6 +102,11 @@ class RenderWorker {
     std::vector<Light> sceneLights_; // the scene file's own lights
     Camera sceneCamera_;             // and its own camera (the user's replaces it per job)
     std::string sceneKey_, lightsKey_;
+    struct Planned {
+        std::string key; // planKey of the state it was planned for
+        std::unique_ptr<RendererSession> session;
+    };
+    std::map<std::string, Planned> sessions_; // by pipeline: the current job's pipelines only
 };
 
 } // namespace tp::view

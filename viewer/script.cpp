@@ -359,7 +359,8 @@ void ScriptRunner::applyWaitOrOutput(ViewerApp& app, const ScriptLine& line) {
     } else if (cmd == "bench") {
         benchTotal_ = benchLeft_ = int(integerAt(line, 1, 1, 100000));
         benchFile_ = inOut(w[2]);
-        benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear();
+        benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear(), benchUpdateMs_.clear();
+        benchPlanned_ = 0;
         benchRecordDue_ = false;
         wait_ = Wait::Bench;
     } else if (cmd == "expect-error") {

@@ -85,7 +85,8 @@ class ScriptRunner {
     int benchLeft_ = 0, benchTotal_ = 0;
     bool benchRecordDue_ = false;
     std::string benchFile_;
-    std::vector<double> benchRenderMs_, benchGpuMs_, benchUiMs_;
+    std::vector<double> benchRenderMs_, benchGpuMs_, benchUiMs_, benchUpdateMs_;
+    uint32_t benchPlanned_ = 0; // renders that planned the renderer (not a followed camera move)
 };
 
 } // namespace tp::view

@@ -17,19 +17,14 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-double frameGpuMs(const Shown* s) {
-    if (!s || !s->run) return 0;
-    for (const TimingStats& t : s->run->timings)
-        if (t.name == "frame") return t.medianMs;
-    return 0;
-}
-
 nlohmann::json shownJson(const Shown* s) {
     if (!s) return nullptr;
     nlohmann::json j;
     j["pipeline"] = s->pipeline;
     j["error"] = s->error;
     j["build_ms"] = s->buildMs;
+    j["planned"] = s->planned;
+    j["view_update_ms"] = s->updateMs;
     if (s->run) {
         j["gpu_frame_ms"] = frameGpuMs(s);
         j["debug_images"] = nlohmann::json::array();
@@ -88,6 +83,10 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
     if (benchRecordDue_) {
         benchRenderMs_.push_back(app.lastRenderMs());
         benchGpuMs_.push_back(frameGpuMs(app.shownA()));
+        if (const Shown* a = app.shownA()) {
+            benchUpdateMs_.push_back(a->updateMs);
+            benchPlanned_ += a->planned ? 1 : 0;
+        }
         benchRecordDue_ = false;
     }
     if (benchLeft_ > 0) {
@@ -105,13 +104,18 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
     j["msaa"] = s.msaa;
     j["renders"] = benchRenderMs_.size();
     j["what"] =
-        "each render: a camera step, the renderer built again, its frame on the GPU, readback; "
-        "the UI frames draw the panels and the scene area meanwhile";
+        "each render: a camera step, the kept renderer following the view (or planned again: "
+        "'planned' counts those), its frame on the GPU, readback; the UI frames draw the panels "
+        "and the scene area meanwhile";
+    j["planned"] = benchPlanned_;
+    j["view_update_ms"] = benchUpdateMs_;
+    j["view_update_ms_median"] = median(benchUpdateMs_);
     j["render_ms"] = benchRenderMs_;
     j["render_ms_median"] = median(benchRenderMs_);
     j["renders_per_second"] = median(benchRenderMs_) > 0 ? 1000.0 / median(benchRenderMs_) : 0.0;
     j["gpu_frame_ms"] = benchGpuMs_;
     j["gpu_frame_ms_median"] = median(benchGpuMs_);
+    j["overhead_ms_median"] = median(benchRenderMs_) - median(benchGpuMs_);
     j["ui_frames"] = benchUiMs_.size();
     j["ui_frame_ms_median"] = median(benchUiMs_);
     j["ui_frames_per_second"] = median(benchUiMs_) > 0 ? 1000.0 / median(benchUiMs_) : 0.0;

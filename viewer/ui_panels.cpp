@@ -202,14 +202,21 @@ void Panels::status(ViewerApp& app) {
         ImGui::TextWrapped("%s", app.error_.c_str());
         ImGui::PopStyleColor();
     }
-    ImGui::Text("last rebuild: %s, %.0f ms (scene/lights %.0f ms)", app.lastRebuilt_.c_str(),
-                app.lastRenderMs_, app.lastSceneMs_);
+    // A camera move ("view") replans nothing: the kept renderers follow it (render_worker.h).
+    ImGui::Text("last: %s, %.1f ms, %.1f views/s (scene/lights %.0f ms)",
+                app.lastRebuilt_.c_str(), app.lastRenderMs_,
+                app.lastRenderMs_ > 0 ? 1000.0 / app.lastRenderMs_ : 0.0, app.lastSceneMs_);
     for (const Shown* s : {app.shownA(), app.shownB()})
-        if (s)
-            ImGui::Text("%s: %.0f ms to build and render%s", s->pipeline.c_str(), s->buildMs,
+        if (s) {
+            const double gpu = frameGpuMs(s);
+            ImGui::Text("%s: %.1f ms, %s; GPU frame %.2f ms, viewer overhead %.1f ms "
+                        "(view update %.2f ms)%s",
+                        s->pipeline.c_str(), s->buildMs, s->planned ? "planned" : "followed",
+                        gpu, std::max(0.0, s->buildMs - gpu), s->updateMs,
                         s->pipeline == kReferenceRenderer && app.referenceStale()
                             ? " (STALE: another view)"
                             : "");
+        }
     if (!app.worker_->idle()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "rendering...");
     if (!app.referenceWorker_->idle())
         ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "reference rendering in the background...");

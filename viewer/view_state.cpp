@@ -55,6 +55,15 @@ bool parseViewResolution(const std::string& text, uint32_t& width, uint32_t& hei
     return true;
 }
 
+std::string planKey(const ViewState& s, bool debug) {
+    std::string key = lightsKey(s) + "|" + std::to_string(s.width) + "x" +
+                      std::to_string(s.height) + "x" + std::to_string(s.msaa) +
+                      (debug ? "|debug" : "");
+    for (const auto& [name, value] : s.knobs)
+        key += "|" + name + "=" + value;
+    return key;
+}
+
 std::string renderKey(const ViewState& s, bool debug) {
     std::string key = referenceKey(s) + (debug ? "|debug" : "");
     for (const auto& [name, value] : s.knobs)

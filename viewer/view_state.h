@@ -3,7 +3,8 @@
 // change must rebuild (docs/viewer.md, "What rebuilds what"):
 //   sceneKey   scene file or builtin name        -> reload the scene and upload it again
 //   lightsKey  light count/seed/types/range/...  -> regenerate lights, upload only them
-//   renderKey  + camera, resolution, MSAA, knobs -> build the renderer again and render
+//   planKey    + resolution, MSAA, knobs         -> plan the renderer again and render
+//   renderKey  + camera                          -> the kept renderer follows the view, renders
 //   everything else (split, flip, difference, exposure, overlay) is display only: no render.
 #include <cstdint>
 #include <map>
@@ -36,6 +37,9 @@ std::string sceneKey(const ViewState& s);
 std::string lightsKey(const ViewState& s);
 // What a pipeline's image depends on (pipeline name excluded; debug: overlays requested).
 std::string renderKey(const ViewState& s, bool debug);
+// What a planned renderer depends on: renderKey without the camera (a camera move is followed
+// by the kept renderer, render_worker.h).
+std::string planKey(const ViewState& s, bool debug);
 // What the reference depends on: a reference whose key differs from the current one is stale.
 std::string referenceKey(const ViewState& s);
 std::string cameraText(const Camera& c);

@@ -62,6 +62,13 @@ void ViewerApp::setSplit(float share) {
     sceneInputsChanged_ = true;
 }
 
+double frameGpuMs(const Shown* s) {
+    if (!s || !s->run) return 0;
+    for (const TimingStats& t : s->run->timings)
+        if (t.name == "frame") return t.medianMs;
+    return 0;
+}
+
 const Shown* ViewerApp::shownFor(const std::string& pipeline) const {
     if (pipeline == kReferenceRenderer) return reference_ ? &*reference_ : nullptr;
     auto it = shown_.find(pipeline);
@@ -106,7 +113,8 @@ void ViewerApp::takeOutcomes() {
         }
         for (PipelineImage& image : o->images) {
             Shown s{image.pipeline, o->key,        image.error, nullptr,
-                    image.buildMs,  nextSerial_++, o->lights,   o->camera};
+                    image.buildMs,  nextSerial_++, o->lights,   o->camera,
+                    image.planned,  image.updateMs};
             if (image.error.empty()) {
                 history_[image.pipeline].add(image.run.timings);
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
@@ -121,7 +129,8 @@ void ViewerApp::takeOutcomes() {
         if (!o->error.empty() && error_.empty()) error_ = o->error;
         for (PipelineImage& image : o->images) {
             Shown s{image.pipeline, o->key,        image.error, nullptr,
-                    image.buildMs,  nextSerial_++, o->lights,   o->camera};
+                    image.buildMs,  nextSerial_++, o->lights,   o->camera,
+                    image.planned,  image.updateMs};
             if (image.error.empty())
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
             reference_ = std::move(s);

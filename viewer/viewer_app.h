@@ -42,7 +42,12 @@ struct Shown {
     uint64_t serial = 0; // unique per image: what the composite and metrics were made from
     std::shared_ptr<const std::vector<Light>> lights; // what it was rendered with
     Camera camera;
+    bool planned = false; // the renderer was planned for it (else it followed a camera move)
+    double updateMs = 0;  // CPU: following the camera move (RendererSession), when it moved
 };
+
+// The median GPU time of its frame (0: none).
+double frameGpuMs(const Shown* s);
 
 // Per-pass GPU times of the last frames of one pipeline (the graph and its median/min/max).
 struct TimingHistory {
