@@ -12,6 +12,7 @@
 
 #include "compare/calibration_file.h"
 #include "compare/commands.h"
+#include "compare/path_run.h"
 #include "compare/compare.h"
 #include "compare/reference_cache.h"
 #include "compare/report_html.h"
@@ -292,6 +293,22 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
     }
 }
 
+// The path first (compare/path_run.h); the rest of the run is the full report at its worst
+// view, so the scene's camera and lights are left there and its hashes follow.
+void runComparePath(CompareRecord& r, GpuContext& ctx, Scene& scene, SceneGpu& gpuScene,
+                    const std::vector<std::string>& names, const PathInput& path) {
+    const CompareOptions& o = *r.options;
+    PathRunSetup setup{ctx, scene, gpuScene, r.features, r.settings, names, o.warmup, o.frames,
+                       o.exposure};
+    PathRecord rec = runPath(setup, path);
+    applyPathView(scene, gpuScene, path, rec.worstView);
+    r.contentHash = hashSceneContent(scene);
+    r.lightsHash = hashLights(scene.lights);
+    r.path = pathJson(rec);
+    std::fprintf(stderr, "triptych: path done; the full report follows at its worst view, %u\n",
+                 rec.worstView);
+}
+
 } // namespace
 
 int runCompare(const CompareOptions& o) {
@@ -315,6 +332,7 @@ int runCompare(const CompareOptions& o) {
     }
     r.contentHash = hashSceneContent(scene);
     r.lightsHash = hashLights(scene.lights);
+    const std::optional<PathInput> path = loadPathInput(o.path, scene, o.scene.seed);
     r.calibration = loadRunCalibration(*ctx, o.calibration); // after the input is checked
     ensureDirectory(o.out);
     removeStaleOutputs(o.out, names);
@@ -326,6 +344,7 @@ int runCompare(const CompareOptions& o) {
 
     SceneGpu gpuScene(*ctx, scene);
     r.sharedMemory = ctx->ledger.entriesOf("scene");
+    if (path) runComparePath(r, *ctx, scene, gpuScene, names, *path);
     r.reference = renderOne(*ctx, gpuScene, kReferenceRenderer, r,
                             "[1/" + std::to_string(names.size() + 1) + "]");
     if (!r.reference.run)
@@ -395,6 +414,7 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
                   "the error against it");
     addFlipDistanceOption(*cmd, o->flipDistance);
     addReferenceCacheOptions(*cmd, o->referenceCache, o->noReferenceCache);
+    addPathOptions(*cmd, o->path);
     addKnobOptions(*cmd, o->knobs.knobs);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;

@@ -8,6 +8,7 @@
 #include "compare/calibration_file.h"
 #include "compare/cli_common.h"
 #include "compare/commands.h"
+#include "compare/path_options.h"
 #include "compare/run_json.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
@@ -32,12 +33,14 @@ struct RenderOptions {
     std::string exposure = "auto";
     std::string exrType = "float";
     std::string calibration = "auto";
+    PathOptions path; // --camera-path / --light-motion: the path's timings, then view 0's image
     RenderSettings knobs;
 };
 
 void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource& camera,
                   const RunResult& run, const GpuContext& ctx, const RenderSettings& settings,
-                  const SceneFeatures& features, const RunCalibration& calibration) {
+                  const SceneFeatures& features, const RunCalibration& calibration,
+                  const nlohmann::json& path) {
     const std::string base = o.out + "/" + run.renderer;
     float ev = parseExposure(o.exposure, run.hdr);
     Status s = writeExr(base + ".exr", run.hdr,
@@ -63,8 +66,35 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource
     j["run"] = runJson(run, ctx);
     j["calibration"] = calibrationUseJson(calibration);
     j["nan_inf_pixels"] = countNonFinitePixels(run.hdr);
+    if (!path.is_null()) j["path"] = path;
     if (s) s = writeTextFile(o.out + "/render.json", j.dump(2) + "\n");
     if (!s) throw UsageError(s.error());
+}
+
+// With --camera-path or --light-motion: the timing pass over the path (compare/path_run.h),
+// its percentiles on stderr; the scene is left at view 0 for the image. Null without a path.
+nlohmann::json renderPath(const RenderOptions& o, const std::optional<PathInput>& path,
+                          Scene& scene, SceneGpu& gpuScene, GpuContext& ctx,
+                          const SceneFeatures& features, const RenderSettings& settings) {
+    if (!path) return nullptr;
+    PathRunSetup setup{ctx, scene, gpuScene, features, settings, {o.pipeline}, o.warmup, o.frames,
+                       o.exposure};
+    std::fprintf(stderr, "triptych: path %s: %zu views, lights %s\n", path->source.c_str(),
+                 path->views.size(), path->lightMotion.c_str());
+    PathSeries series = timePath(setup, *path, o.pipeline);
+    if (!series.error.empty()) throw UsageError(series.error);
+    applyPathView(scene, gpuScene, *path, 0);
+    nlohmann::json j = seriesJson(series);
+    j["source"] = path->source;
+    j["views"] = path->views.size();
+    j["light_motion"] = path->lightMotion;
+    const nlohmann::json& f = j["summary"]["frame_ms"];
+    std::fprintf(stderr,
+                 "triptych: path frame ms on %s: median %.3f, p95 %.3f, p99 %.3f, max %.3f; "
+                 "%u views followed in place, %u planned again\n",
+                 ctx.info.name.c_str(), f["median"].get<double>(), f["p95"].get<double>(),
+                 f["p99"].get<double>(), f["max"].get<double>(), series.updates, series.replans);
+    return j;
 }
 
 int run(RenderOptions& o) {
@@ -79,6 +109,7 @@ int run(RenderOptions& o) {
     RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
     CameraSource camera;
     Scene scene = loadScene(o.scene, &camera);
+    const std::optional<PathInput> pathInput = loadPathInput(o.path, scene, o.scene.seed);
     // After the input is checked: `measure` may take 40 s on lavapipe.
     const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
     ensureDirectory(o.out);
@@ -87,11 +118,12 @@ int run(RenderOptions& o) {
                  scene.source.c_str(), scene.triangleCount(), scene.lights.size(), settings.width,
                  settings.height, settings.msaa, ctx->info.name.c_str());
     SceneGpu gpuScene(*ctx, scene);
+    const nlohmann::json path = renderPath(o, pathInput, scene, gpuScene, *ctx, features, settings);
     RunOptions runOptions = progressRunOptions(o.pipeline, o.warmup, o.frames);
     runOptions.ceilings = ceilingsOf(*calibration);
     Result<RunResult> result = runRenderer(*ctx, gpuScene, **entry, features, settings, runOptions);
     if (!result) throw UsageError(result.error());
-    writeOutputs(o, scene, camera, *result, *ctx, settings, features, *calibration);
+    writeOutputs(o, scene, camera, *result, *ctx, settings, features, *calibration, path);
     for (const TimingStats& t : result->timings)
         std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)%s\n",
                      t.name.c_str(), t.medianMs, t.minMs, t.maxMs, t.frames,
@@ -130,6 +162,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
     cmd->add_option("--calibration", o->calibration, calibrationOptionHelp())->capture_default_str();
+    addPathOptions(*cmd, o->path);
     addKnobOptions(*cmd, o->knobs.knobs);
     cmd->add_flag(
         "--debug", o->knobs.debug,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "compare/cli_common.h"
+#include "compare/path_options.h"
 #include "core/render/settings.h"
 
 namespace tp::cli {
@@ -30,6 +31,9 @@ struct CompareOptions {
     std::string referenceCache;
     bool noReferenceCache = false;
     std::string calibration = "auto"; // --calibration (compare/calibration_file.h)
+    // --camera-path / --light-motion (compare/path_run.h): the path first, then the full report
+    // at its worst view.
+    PathOptions path;
     std::vector<std::string> commandLine; // recorded in report.json
 };
 

@@ -343,7 +343,7 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     h += kBaseStyle;
     h += kStyle;
     h += reportViewerStyle();
-    h += "</style></head><body>\n" + header(r) + summaryTable(r) +
+    h += "</style></head><body>\n" + header(r) + pathSection(r) + summaryTable(r) +
          (hasCenterReference(r) ? twoReferences(r) : "") + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
     if (!images) return images;

@@ -27,5 +27,6 @@ std::string twoReferences(const nlohmann::json& r);
 std::string errorPlot(const nlohmann::json& r);
 std::string flipSection(const nlohmann::json& r);
 std::string efficiencySection(const nlohmann::json& r); // report_efficiency_html.cpp
+std::string pathSection(const nlohmann::json& r);       // report_path_html.cpp
 
 } // namespace tp::cli::html

@@ -131,6 +131,7 @@ nlohmann::json reportJson(const CompareRecord& r) {
                          {"difference_p99", p.diffP99},
                          {"files", p.files}});
     j["pairwise"] = pairs;
+    if (!r.path.is_null()) j["path"] = r.path;
     j["validation_messages"] = r.validationMessages;
     j["files"] = {"lights.json", "report.json", "report.html"};
     return j;

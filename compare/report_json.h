@@ -64,6 +64,7 @@ struct CompareRecord {
     std::vector<PairOutcome> pairs;
     std::vector<std::string> validationMessages;
     std::shared_ptr<const RunCalibration> calibration; // the ceilings passes are placed against
+    nlohmann::json path; // with --camera-path or --light-motion: pathJson (compare/path_run.h)
 };
 
 nlohmann::json reportJson(const CompareRecord& r);

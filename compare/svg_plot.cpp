@@ -272,4 +272,82 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
     return svg + "</svg>\n";
 }
 
+namespace {
+
+// The largest finite value of every series (at least a tiny positive number).
+double seriesMax(const std::vector<Series>& series) {
+    double hi = 1e-12;
+    for (const Series& s : series)
+        for (double v : s.y)
+            if (std::isfinite(v)) hi = std::max(hi, v);
+    return hi;
+}
+
+// A "nice" round axis top above `hi`: 1, 2 or 5 x 10^k.
+double niceTop(double hi) {
+    const double p = std::pow(10.0, std::floor(std::log10(hi)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * p >= hi) return m * p;
+    return 10.0 * p;
+}
+
+std::string polyline(const std::vector<std::pair<double, double>>& pts, const char* colour) {
+    if (pts.size() < 2) return "";
+    std::string d = "<polyline fill=\"none\" stroke=\"" + std::string(colour) +
+                    "\" stroke-width=\"1.5\" points=\"";
+    for (const auto& [x, y] : pts)
+        d += num(x) + "," + num(y) + " ";
+    return d + "\"/>\n";
+}
+
+} // namespace
+
+std::string seriesPlotSvg(const std::vector<Series>& series, const std::string& xLabel,
+                          const std::string& yLabel, const std::vector<double>& marks, int width,
+                          int height) {
+    const double left = 64, right = 170, top = 16, bottom = 44;
+    const double w = width - left - right, h = height - top - bottom;
+    size_t n = 1;
+    for (const Series& s : series)
+        n = std::max(n, s.y.size());
+    const double yTop = niceTop(seriesMax(series));
+    auto px = [&](double x) { return left + (n > 1 ? x / double(n - 1) : 0.5) * w; };
+    auto py = [&](double y) { return top + h - std::clamp(y / yTop, 0.0, 1.0) * h; };
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+                      std::to_string(width) + "\" height=\"" + std::to_string(height) +
+                      "\" font-family=\"sans-serif\">\n";
+    for (int t = 0; t <= 4; ++t) { // y grid: 0, 1/4 .. the top
+        const double v = yTop * t / 4.0;
+        svg += line(left, py(v), left + w, py(v), "#ddd");
+        svg += text(left - 6, py(v) + 4, formatNumber(v), "end", 11);
+    }
+    for (double m : marks)
+        svg += "<line x1=\"" + num(px(m)) + "\" y1=\"" + num(top) + "\" x2=\"" + num(px(m)) +
+               "\" y2=\"" + num(top + h) + "\" stroke=\"#999\" stroke-dasharray=\"4 3\"/>\n";
+    for (size_t si = 0; si < series.size(); ++si) {
+        const Series& s = series[si];
+        const char* colour = paletteHex(s.colour >= 0 ? s.colour : int(si));
+        std::vector<std::pair<double, double>> run;
+        for (size_t x = 0; x <= s.y.size(); ++x) {
+            if (x < s.y.size() && std::isfinite(s.y[x])) {
+                run.push_back({px(double(x)), py(s.y[x])});
+                continue;
+            }
+            svg += polyline(run, colour);
+            run.clear();
+        }
+        svg += "<rect x=\"" + num(left + w + 12) + "\" y=\"" + num(top + 16.0 * double(si)) +
+               "\" width=\"10\" height=\"10\" fill=\"" + colour + "\"/>\n";
+        svg += text(left + w + 26, top + 16.0 * double(si) + 9, s.name, "start", 11);
+    }
+    svg += line(left, top + h, left + w, top + h, "#333");
+    svg += line(left, top, left, top + h, "#333");
+    for (size_t x : {size_t(0), (n - 1) / 2, n - 1})
+        svg += text(px(double(x)), top + h + 14, std::to_string(x), "middle", 11);
+    svg += text(left + w / 2, height - 8, xLabel, "middle");
+    svg += text(14, top + h / 2, yLabel, "middle", 12,
+                (" transform=\"rotate(-90 14 " + num(top + h / 2) + ")\"").c_str());
+    return svg + "</svg>\n";
+}
+
 } // namespace tp::cli

@@ -45,6 +45,18 @@ std::string scatterLogLogSvg(const std::vector<PlotPoint>& points, const std::st
                              bool joinSeries = true, const std::vector<int>& seriesColours = {},
                              const std::vector<PlotLine>& lines = {});
 
+// Values along a run of views (x = 0, 1, 2, ...), one polyline per series, linear axes from 0;
+// `marks`: x positions drawn as dashed vertical lines (e.g. where a ranking flips). A series'
+// NaN values are gaps.
+struct Series {
+    std::string name;
+    int colour = -1; // palette index; -1: the series' own index
+    std::vector<double> y;
+};
+std::string seriesPlotSvg(const std::vector<Series>& series, const std::string& xLabel,
+                          const std::string& yLabel, const std::vector<double>& marks = {},
+                          int width = 900, int height = 320);
+
 // Escapes &, <, >, " and ' for HTML/SVG text and attributes.
 std::string escapeXml(const std::string& text);
 // Short human form of a number: 3 significant digits, exponent when very small or large.
