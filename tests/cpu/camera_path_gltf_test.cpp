@@ -78,7 +78,9 @@ fs::path writeAnimatedCamera(const std::string& name, const AnimatedCameraFile& 
                              {{{"sampler", 0},
                                {"target", {{"node", f.onParent ? 0 : 1}, {"path", "translation"}}}},
                               {{"sampler", 1}, {"target", {{"node", 1}, {"path", "rotation"}}}}}}}};
-    const fs::path path = testTempPath("animated_camera_" + name + ".gltf");
+    const fs::path dir = testTempPath("animated_camera"); // the name must end in .gltf
+    fs::create_directories(dir);
+    const fs::path path = dir / (name + ".gltf");
     std::ofstream(path) << g.dump();
     return path;
 }
@@ -159,6 +161,5 @@ TEST(CameraPathGltf, RefusesAFileWithoutAnAnimatedCamera) {
     ASSERT_FALSE(views.ok());
     EXPECT_NE(views.error().find("frames must be from 1 to 100000 (got 0)"), std::string::npos)
         << views.error();
-    fs::remove(path);
-    fs::remove(testTempPath("animated_camera_zero.gltf"));
+    fs::remove_all(testTempPath("animated_camera"));
 }
