@@ -4,7 +4,9 @@
 // sampled at its keyframes gives the keyframe poses.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -232,9 +234,13 @@ TEST(CameraPath, CourtyardRecipeReads) {
     // The source tree, found from a folder the build names (tests/fuzz/regressions).
     const fs::path recipe =
         fs::path(TP_FUZZ_REGRESSIONS) / "../../../docs/recipes/courtyard_path.json";
+    const auto begin = std::chrono::steady_clock::now();
     Result<std::vector<Camera>> views = readCameraPath(recipe.lexically_normal().string());
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     ASSERT_TRUE(views.ok()) << views.error();
     EXPECT_GE(views->size(), 120u);
+    std::printf("[ timing ] courtyard_path.json, %zu views: %.3f ms\n", views->size(), ms);
     const char* dir = std::getenv("TRIPTYCH_WRITE_PATH_VIEWS");
     for (size_t i = 0; dir && i < views->size(); i += 10) {
         const std::string file = std::string(dir) + "/view" + std::to_string(i) + ".json";
