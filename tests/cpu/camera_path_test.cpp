@@ -207,6 +207,15 @@ TEST(CameraPath, StrictParsingErrors) {
     expectPathRefused(j, "p.json: key 2: \"position\" and \"target\" are the same point");
 }
 
+TEST(CameraPath, SamplingRefusesTimesThatDoNotIncrease) {
+    const std::vector<Camera> keys = {pathKey({0, 0, 0}, {0, 0, -1}),
+                                      pathKey({1, 0, 0}, {1, 0, -1})};
+    Result<std::vector<Camera>> views =
+        sampleCameraPath(keys, {1.0, 1.0}, 3, Interpolation::Linear, "x");
+    ASSERT_FALSE(views.ok());
+    EXPECT_EQ(views.error(), "x: key 1: times must be finite and strictly increasing");
+}
+
 // Keys that are each valid but meet half way: position and target cross at view 1.
 TEST(CameraPath, RefusesAnInvalidView) {
     const std::vector<Camera> keys = {pathKey({0, 0, 0}, {2, 0, 0}), pathKey({2, 0, 0}, {0, 0, 0})};
