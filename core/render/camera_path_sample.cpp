@@ -103,6 +103,10 @@ Result<std::vector<Camera>> sampleCameraPath(const std::vector<Camera>& keys,
     if (frames < 1 || frames > kMaxPathFrames)
         return Error{where + ": \"frames\" must be from 1 to " + std::to_string(kMaxPathFrames) +
                      " (got " + std::to_string(frames) + ")"};
+    for (size_t k = 0; k < times.size(); ++k)
+        if (!std::isfinite(times[k]) || (k > 0 && !(times[k] > times[k - 1])))
+            return Error{where + ": key " + std::to_string(k) +
+                         ": times must be finite and strictly increasing"};
     KeyTrack track;
     for (const Camera& key : keys) {
         track.positions.push_back(dvec3(key.position));

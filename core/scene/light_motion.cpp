@@ -45,47 +45,68 @@ double orbitRoom(const Aabb& b, const glm::vec3& p, double c, double s) {
     return std::max(r, 0.0);
 }
 
-glm::dvec3 orbitOffset(const Light& light, size_t i, const LightMotion& m, const Aabb& bounds,
-                       double diagonal, uint32_t frame) {
+using Path = LightMotionPlan::Path;
+
+Path orbitPath(const Light& light, size_t i, const LightMotion& m, const Aabb& bounds,
+               double diagonal) {
+    Path p;
     // A radius of 2 to 6 % of the scene's diagonal: 1.4 to 4 m in the courtyard.
-    double r = diagonal * (0.02 + 0.04 * motionRandom(m.seed, i, 0));
-    const double phase = kMotionTwoPi * motionRandom(m.seed, i, 1);
+    p.radius = diagonal * (0.02 + 0.04 * motionRandom(m.seed, i, 0));
+    p.phase = kMotionTwoPi * motionRandom(m.seed, i, 1);
     const double sense = motionRandom(m.seed, i, 2) < 0.5 ? 1.0 : -1.0;
-    const double c = std::cos(phase), s = std::sin(phase);
+    p.cosPhase = std::cos(p.phase);
+    p.sinPhase = std::sin(p.phase);
     if (insideOnAxis(bounds, light.position, 0) && insideOnAxis(bounds, light.position, 2))
-        r = std::min(r, orbitRoom(bounds, light.position, c, s));
-    if (!(r > 1e-9 * diagonal)) return glm::dvec3(0.0);
-    const double angle = phase + sense * double(m.speed) * double(frame) / r;
-    return r * glm::dvec3(std::cos(angle) - c, 0.0, std::sin(angle) - s);
+        p.radius = std::min(p.radius, orbitRoom(bounds, light.position, p.cosPhase, p.sinPhase));
+    p.moves = p.radius > 1e-9 * diagonal;
+    p.rate = p.moves ? sense * double(m.speed) / p.radius : 0.0;
+    return p;
 }
 
-glm::dvec3 driftOffset(const Light& light, size_t i, const LightMotion& m, const Aabb& bounds,
-                       double diagonal, uint32_t frame) {
+Path driftPath(const Light& light, size_t i, const LightMotion& m, const Aabb& bounds,
+               double diagonal) {
     // Three sines per axis with amplitudes in these proportions; each term's frequency is set
     // from its amplitude so that it adds at most 1/(3 sqrt 3) of `speed` per axis: the light's
     // step in a frame is at most `speed` in length.
     constexpr double kWeights[3] = {0.5, 0.3, 0.2};
     const double kPerTerm = 1.0 / (3.0 * std::sqrt(3.0));
-    const double travelled = double(m.speed) * double(frame);
-    glm::dvec3 offset(0.0);
+    Path p;
     for (int axis = 0; axis < 3; ++axis) {
         if (!insideOnAxis(bounds, light.position, axis)) continue;
-        const double p = light.position[axis];
-        const double room = std::min(p - bounds.min[axis], double(bounds.max[axis]) - p);
+        const double at = light.position[axis];
+        const double room = std::min(at - bounds.min[axis], double(bounds.max[axis]) - at);
         // 5 to 15 % of the bounds along the axis, halved to the room to the nearer side: the
         // sum of sin(w t + f) - sin(f) terms stays within twice the amplitude.
         const double extent = double(bounds.max[axis]) - bounds.min[axis];
         const double amplitude = std::min(
             extent * (0.05 + 0.10 * motionRandom(m.seed, i, 8 + uint64_t(axis))), 0.5 * room);
         if (!(amplitude > 1e-6 * diagonal)) continue;
+        p.moves = true;
         for (int k = 0; k < 3; ++k) {
             const uint64_t stream = 16 + uint64_t(axis) * 8 + uint64_t(k) * 2;
-            const double a = amplitude * kWeights[k];
-            const double w = kPerTerm * (0.5 + 0.5 * motionRandom(m.seed, i, stream)) / a;
-            const double phase = kMotionTwoPi * motionRandom(m.seed, i, stream + 1);
-            offset[axis] += a * (std::sin(w * travelled + phase) - std::sin(phase));
+            Path::Term& t = p.drift[axis][k];
+            t.amplitude = amplitude * kWeights[k];
+            const double w = kPerTerm * (0.5 + 0.5 * motionRandom(m.seed, i, stream)) / t.amplitude;
+            t.rate = w * double(m.speed);
+            t.phase = kMotionTwoPi * motionRandom(m.seed, i, stream + 1);
+            t.sinPhase = std::sin(t.phase);
         }
     }
+    return p;
+}
+
+glm::dvec3 offsetAt(const Path& p, LightMotion::Mode mode, uint32_t frame) {
+    if (mode == LightMotion::Mode::Orbit) {
+        const double angle = p.phase + p.rate * double(frame);
+        return p.radius *
+               glm::dvec3(std::cos(angle) - p.cosPhase, 0.0, std::sin(angle) - p.sinPhase);
+    }
+    glm::dvec3 offset(0.0);
+    for (int axis = 0; axis < 3; ++axis)
+        for (const Path::Term& t : p.drift[axis])
+            if (t.amplitude > 0.0)
+                offset[axis] +=
+                    t.amplitude * (std::sin(t.rate * double(frame) + t.phase) - t.sinPhase);
     return offset;
 }
 
@@ -133,20 +154,35 @@ std::string lightMotionToString(const LightMotion& motion) {
 
 std::vector<Light> moveLights(const std::vector<Light>& start, const LightMotion& motion,
                               const Aabb& sceneBounds, uint32_t frame) {
-    std::vector<Light> lights = start;
-    if (motion.mode == LightMotion::Mode::None || frame == 0) return lights;
+    if (motion.mode == LightMotion::Mode::None || frame == 0) return start;
+    return LightMotionPlan(start, motion, sceneBounds).at(frame);
+}
+
+LightMotionPlan::LightMotionPlan(const std::vector<Light>& start, const LightMotion& motion,
+                                 const Aabb& sceneBounds)
+    : start_(start), motion_(motion), bounds_(sceneBounds) {
+    paths_.resize(start.size());
+    if (motion.mode == LightMotion::Mode::None) return;
     const double diagonal = sceneBounds.empty() ? 1.0 : glm::length(sceneBounds.extent());
+    for (size_t i = 0; i < start.size(); ++i)
+        if (start[i].type != LightType::Directional)
+            paths_[i] = motion.mode == LightMotion::Mode::Orbit
+                            ? orbitPath(start[i], i, motion, sceneBounds, diagonal)
+                            : driftPath(start[i], i, motion, sceneBounds, diagonal);
+}
+
+std::vector<Light> LightMotionPlan::at(uint32_t frame) const {
+    std::vector<Light> lights = start_;
+    if (motion_.mode == LightMotion::Mode::None || frame == 0) return lights;
     for (size_t i = 0; i < lights.size(); ++i) {
+        if (!paths_[i].moves) continue;
         Light& light = lights[i];
-        if (light.type == LightType::Directional) continue;
-        const glm::dvec3 offset = motion.mode == LightMotion::Mode::Orbit
-                                      ? orbitOffset(light, i, motion, sceneBounds, diagonal, frame)
-                                      : driftOffset(light, i, motion, sceneBounds, diagonal, frame);
+        const glm::dvec3 offset = offsetAt(paths_[i], motion_.mode, frame);
         glm::vec3 moved = glm::vec3(glm::dvec3(light.position) + offset);
-        // The motions stay insideOnAxis the bounds in exact arithmetic; rounding must not step out.
+        // The motions stay inside the bounds in exact arithmetic; rounding must not step out.
         for (int axis = 0; axis < 3; ++axis)
-            if (insideOnAxis(sceneBounds, light.position, axis))
-                moved[axis] = std::clamp(moved[axis], sceneBounds.min[axis], sceneBounds.max[axis]);
+            if (insideOnAxis(bounds_, light.position, axis))
+                moved[axis] = std::clamp(moved[axis], bounds_.min[axis], bounds_.max[axis]);
         light.position = moved;
     }
     return lights;

@@ -45,8 +45,35 @@ Result<LightMotion> parseLightMotion(const std::string& text);
 std::string lightMotionToString(const LightMotion& motion);
 
 // The lights of frame `frame` (see the header comment). `sceneBounds` should be the scene's
-// bounds (Scene::bounds), the same for every frame.
+// bounds (Scene::bounds), the same for every frame. Works out every light's motion again: for
+// many frames keep a LightMotionPlan (the same lights, bit for bit).
 std::vector<Light> moveLights(const std::vector<Light>& start, const LightMotion& motion,
                               const Aabb& sceneBounds, uint32_t frame);
+
+// Each light's seeded circle or sines, worked out once, so that a frame costs a few sines per
+// light (docs/camera_paths.md has the cost at 1,024 lights): what a run keeps for a path.
+class LightMotionPlan {
+  public:
+    LightMotionPlan(const std::vector<Light>& start, const LightMotion& motion,
+                    const Aabb& sceneBounds);
+    std::vector<Light> at(uint32_t frame) const;
+
+    // One light's motion: an offset from its start, zero at frame 0.
+    struct Path {
+        bool moves = false;
+        double radius = 0.0, phase = 0.0, cosPhase = 0.0, sinPhase = 0.0; // orbit
+        double rate = 0.0; // orbit: radians per frame
+        struct Term {
+            double amplitude = 0.0, rate = 0.0, phase = 0.0, sinPhase = 0.0; // rate: per frame
+        };
+        Term drift[3][3]; // [axis][term]; an axis that holds still has zero amplitudes
+    };
+
+  private:
+    std::vector<Light> start_;
+    std::vector<Path> paths_;
+    LightMotion motion_;
+    Aabb bounds_;
+};
 
 } // namespace tp

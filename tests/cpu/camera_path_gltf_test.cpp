@@ -8,12 +8,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 
 #include "compare/report_html.h"
 #include "core/render/camera_path.h"
 #include "temp_path.h"
+#include "tests/cli/hostile_scenes.h"
 
 using namespace tp;
 using nlohmann::json;
@@ -27,6 +29,7 @@ struct AnimatedCameraFile {
     bool onParent = false;           // the translation channel targets the parent node
     bool cubic = false;              // the translation sampler is CUBICSPLINE
     bool animated = true;
+    std::function<void(json&)> spoil; // breaks the glTF before it is written
 };
 
 // Keyframes at t = 0, 1, 2: translations (0,0,5), (2,0,5), (2,0,1); rotations about +y by 0,
@@ -78,7 +81,10 @@ fs::path writeAnimatedCamera(const std::string& name, const AnimatedCameraFile& 
                              {{{"sampler", 0},
                                {"target", {{"node", f.onParent ? 0 : 1}, {"path", "translation"}}}},
                               {{"sampler", 1}, {"target", {{"node", 1}, {"path", "rotation"}}}}}}}};
-    const fs::path path = testTempPath("animated_camera_" + name + ".gltf");
+    if (f.spoil) f.spoil(g);
+    const fs::path dir = testTempPath("animated_camera"); // the name must end in .gltf
+    fs::create_directories(dir);
+    const fs::path path = dir / (name + ".gltf");
     std::ofstream(path) << g.dump();
     return path;
 }
@@ -159,6 +165,47 @@ TEST(CameraPathGltf, RefusesAFileWithoutAnAnimatedCamera) {
     ASSERT_FALSE(views.ok());
     EXPECT_NE(views.error().find("frames must be from 1 to 100000 (got 0)"), std::string::npos)
         << views.error();
-    fs::remove(path);
-    fs::remove(testTempPath("animated_camera_zero.gltf"));
+    fs::remove_all(testTempPath("animated_camera"));
+}
+
+// Broken animations, and every hostile scene of the loader's tests (none has an animated
+// camera): one line naming the file, never a crash.
+TEST(CameraPathGltf, HostileFilesFailWithOneLine) {
+    const std::vector<std::pair<std::function<void(json&)>, std::string>> spoils = {
+        {[](json& g) { g["animations"][0]["samplers"][0]["input"] = 9; },
+         "accessor 9 does not exist (the file has 4)"},
+        {[](json& g) { g["animations"][0]["channels"][0]["sampler"] = 5; },
+         "animation 0: sampler 5 does not exist"},
+        {[](json& g) { g["animations"][0]["samplers"][1]["interpolation"] = "SMOOTH"; },
+         "animation 0 sampler 1: unknown interpolation \"SMOOTH\""},
+        {[](json& g) { g["animations"][0]["samplers"][1]["output"] = 1; },
+         "animation output accessor 1 is VEC3, which animation output cannot be"},
+        {[](json& g) { g["accessors"][1]["count"] = 2; },
+         "animation 0 sampler 0: 2 output values for 3 keyframes"},
+        {[](json& g) {
+             g["nodes"][1]["matrix"] =
+                 json::array({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+         },
+         "node 1 has a matrix, which an animation cannot target"},
+        {[](json& g) { g["cameras"][0]["perspective"]["yfov"] = 4.0; }, "view 0: \"yfov_degrees\""},
+    };
+    for (size_t i = 0; i < spoils.size(); ++i) {
+        AnimatedCameraFile f;
+        f.spoil = spoils[i].first;
+        const fs::path path = writeAnimatedCamera("spoilt" + std::to_string(i), f);
+        Result<std::vector<Camera>> views = readCameraPath(path.string(), 5);
+        ASSERT_FALSE(views.ok()) << i;
+        EXPECT_EQ(views.error().rfind(path.string() + ": ", 0), 0u) << views.error();
+        EXPECT_NE(views.error().find(spoils[i].second), std::string::npos) << views.error();
+        EXPECT_EQ(views.error().find('\n'), std::string::npos) << views.error();
+    }
+    const fs::path root = testTempPath("camera_path_hostile");
+    for (const hostile::Case& c : hostile::writeHostileScenes(root)) {
+        const std::string scene = (root / c.name / c.scene).string();
+        Result<std::vector<Camera>> views = readCameraPath(scene, 5);
+        ASSERT_FALSE(views.ok()) << c.name;
+        EXPECT_EQ(views.error().find('\n'), std::string::npos) << views.error();
+    }
+    fs::remove_all(root);
+    fs::remove_all(testTempPath("animated_camera"));
 }

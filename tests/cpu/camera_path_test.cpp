@@ -4,7 +4,9 @@
 // sampled at its keyframes gives the keyframe poses.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -205,6 +207,15 @@ TEST(CameraPath, StrictParsingErrors) {
     expectPathRefused(j, "p.json: key 2: \"position\" and \"target\" are the same point");
 }
 
+TEST(CameraPath, SamplingRefusesTimesThatDoNotIncrease) {
+    const std::vector<Camera> keys = {pathKey({0, 0, 0}, {0, 0, -1}),
+                                      pathKey({1, 0, 0}, {1, 0, -1})};
+    Result<std::vector<Camera>> views =
+        sampleCameraPath(keys, {1.0, 1.0}, 3, Interpolation::Linear, "x");
+    ASSERT_FALSE(views.ok());
+    EXPECT_EQ(views.error(), "x: key 1: times must be finite and strictly increasing");
+}
+
 // Keys that are each valid but meet half way: position and target cross at view 1.
 TEST(CameraPath, RefusesAnInvalidView) {
     const std::vector<Camera> keys = {pathKey({0, 0, 0}, {2, 0, 0}), pathKey({2, 0, 0}, {0, 0, 0})};
@@ -232,9 +243,13 @@ TEST(CameraPath, CourtyardRecipeReads) {
     // The source tree, found from a folder the build names (tests/fuzz/regressions).
     const fs::path recipe =
         fs::path(TP_FUZZ_REGRESSIONS) / "../../../docs/recipes/courtyard_path.json";
+    const auto begin = std::chrono::steady_clock::now();
     Result<std::vector<Camera>> views = readCameraPath(recipe.lexically_normal().string());
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     ASSERT_TRUE(views.ok()) << views.error();
     EXPECT_GE(views->size(), 120u);
+    std::printf("[ timing ] courtyard_path.json, %zu views: %.3f ms\n", views->size(), ms);
     const char* dir = std::getenv("TRIPTYCH_WRITE_PATH_VIEWS");
     for (size_t i = 0; dir && i < views->size(); i += 10) {
         const std::string file = std::string(dir) + "/view" + std::to_string(i) + ".json";

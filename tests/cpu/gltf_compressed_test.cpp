@@ -25,12 +25,12 @@ using namespace tp;
 
 namespace {
 
-struct Loaded {
+struct CompressedLoad {
     Result<Scene> scene;
     std::vector<std::string> warnings;
 };
 
-Loaded load(const fs::path& path, GltfLoadOptions options = {}) {
+CompressedLoad loadCompressed(const fs::path& path, GltfLoadOptions options = {}) {
     std::vector<std::string> warnings;
     options.warnings = &warnings;
     Result<Scene> scene = loadGltf(path.string(), options);
@@ -44,12 +44,12 @@ fs::path freshDir(const std::string& name) {
     return dir;
 }
 
-std::vector<char> readBytes(const fs::path& path) {
+std::vector<char> readCompressedBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-void expectOneLine(const Loaded& l, const std::string& reason) {
+void expectOneLine(const CompressedLoad& l, const std::string& reason) {
     ASSERT_FALSE(l.scene.ok());
     EXPECT_EQ(l.scene.error().find('\n'), std::string::npos) << l.scene.error();
     EXPECT_NE(l.scene.error().find("scene.gltf: "), std::string::npos) << l.scene.error();
@@ -82,16 +82,16 @@ class GltfCompressed : public ::testing::Test {
   protected:
     void SetUp() override {
         dir_ = freshDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-        plain_ = load(test::writePlainScene(dir_ / "plain"));
+        plain_ = loadCompressed(test::writePlainScene(dir_ / "plain"));
         ASSERT_TRUE(plain_.scene.ok()) << plain_.scene.error();
     }
     void TearDown() override { fs::remove_all(dir_); }
     fs::path dir_;
-    Loaded plain_{Error{"not loaded"}, {}};
+    CompressedLoad plain_{Error{"not loaded"}, {}};
 };
 
 TEST_F(GltfCompressed, DracoSceneDecodesToThePlainMesh) {
-    Loaded l = load(test::writeDracoScene(dir_ / "draco"));
+    CompressedLoad l = loadCompressed(test::writeDracoScene(dir_ / "draco"));
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
     const Scene& s = *l.scene;
@@ -105,7 +105,7 @@ TEST_F(GltfCompressed, DracoSceneDecodesToThePlainMesh) {
 }
 
 TEST_F(GltfCompressed, MeshoptSceneDecodesExactly) {
-    Loaded l = load(test::writeMeshoptScene(dir_ / "meshopt"));
+    CompressedLoad l = loadCompressed(test::writeMeshoptScene(dir_ / "meshopt"));
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
     const Scene& s = *l.scene;
@@ -139,7 +139,7 @@ TEST_F(GltfCompressed, MeshoptSceneDecodesExactly) {
 fs::path toGlb(const fs::path& gltfPath) {
     json j = json::parse(std::ifstream(gltfPath));
     std::vector<char> bin =
-        readBytes(gltfPath.parent_path() / j["buffers"][0]["uri"].get<std::string>());
+        readCompressedBytes(gltfPath.parent_path() / j["buffers"][0]["uri"].get<std::string>());
     j["buffers"][0].erase("uri");
     std::string text = j.dump();
     while (text.size() % 4)
@@ -169,7 +169,7 @@ TEST_F(GltfCompressed, CompressedGlbFilesLoadAsTheirGltf) {
     for (const fs::path& gltf :
          {test::writeMeshoptScene(dir_ / "meshopt"), test::writeDracoScene(dir_ / "draco")}) {
         SCOPED_TRACE(gltf.string());
-        Loaded a = load(gltf), b = load(toGlb(gltf));
+        CompressedLoad a = loadCompressed(gltf), b = loadCompressed(toGlb(gltf));
         ASSERT_TRUE(a.scene.ok()) << a.scene.error();
         ASSERT_TRUE(b.scene.ok()) << b.scene.error();
         EXPECT_EQ(a.scene->extensions, b.scene->extensions);
@@ -181,7 +181,7 @@ TEST_F(GltfCompressed, CompressedGlbFilesLoadAsTheirGltf) {
 TEST_F(GltfCompressed, RepairSceneIsRepairedAndListed) {
     test::RepairCounts counts;
     const fs::path path = test::writeRepairScene(dir_ / "repair", counts);
-    Loaded l = load(path);
+    CompressedLoad l = loadCompressed(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     const Scene& s = *l.scene;
     expectUnitFiniteNormals(s);
@@ -200,14 +200,14 @@ TEST_F(GltfCompressed, RepairSceneIsRepairedAndListed) {
             << i;
     GltfLoadOptions strict;
     strict.strict = true;
-    Loaded refused = load(path, strict);
+    CompressedLoad refused = loadCompressed(path, strict);
     ASSERT_FALSE(refused.scene.ok());
     EXPECT_NE(refused.scene.error().find("NORMAL accessor"), std::string::npos)
         << refused.scene.error();
 }
 
 TEST_F(GltfCompressed, TextureTransformIsBakedIntoTheUvs) {
-    Loaded l = load(test::writeTextureTransformScene(dir_ / "transform"));
+    CompressedLoad l = loadCompressed(test::writeTextureTransformScene(dir_ / "transform"));
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
     EXPECT_EQ(l.scene->extensions, std::vector<std::string>{"KHR_texture_transform"});
@@ -226,7 +226,7 @@ TEST_F(GltfCompressed, TextureTransformThatIsNotAnObjectIsIgnored) {
     j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
      ["KHR_texture_transform"] = 7;
     std::ofstream(path) << j.dump();
-    Loaded l = load(path);
+    CompressedLoad l = loadCompressed(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_EQ(l.scene->meshes[0].uvs, plain_.scene->meshes[0].uvs);
 }
@@ -239,7 +239,7 @@ TEST_F(GltfCompressed, TextureTransformsThatDifferWarn) {
         {"index", 0},
         {"extensions", {{"KHR_texture_transform", {{"offset", {0, 0}}, {"texCoord", 1}}}}}};
     std::ofstream(path) << j.dump();
-    Loaded l = load(path);
+    CompressedLoad l = loadCompressed(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     ASSERT_EQ(l.warnings.size(), 1u);
     EXPECT_NE(l.warnings[0].find("differs between baseColorTexture and normalTexture"),
@@ -251,7 +251,7 @@ TEST_F(GltfCompressed, TextureTransformsThatDifferWarn) {
 TEST_F(GltfCompressed, HostileDracoData) {
     const fs::path path = test::writeDracoScene(dir_ / "draco");
     const fs::path bin = path.parent_path() / "scene.bin";
-    const std::vector<char> good = readBytes(bin);
+    const std::vector<char> good = readCompressedBytes(bin);
     json j = json::parse(std::ifstream(path));
     const size_t length = j["bufferViews"][0]["byteLength"];
     auto withView = [&](size_t newLength, auto&& corrupt) {
@@ -261,16 +261,16 @@ TEST_F(GltfCompressed, HostileDracoData) {
         json k = j;
         k["bufferViews"][0]["byteLength"] = newLength;
         std::ofstream(path) << k.dump();
-        return load(path);
+        return loadCompressed(path);
     };
     for (size_t cut : {size_t(0), size_t(1), size_t(8), length / 3, length / 2, length - 1}) {
         SCOPED_TRACE(cut);
-        Loaded l = withView(cut, [](std::vector<char>&) {});
+        CompressedLoad l = withView(cut, [](std::vector<char>&) {});
         expectOneLine(l, "KHR_draco_mesh_compression");
     }
     for (size_t seed = 1; seed <= 40; ++seed) {
         SCOPED_TRACE(seed);
-        Loaded l = withView(length, [&](std::vector<char>& b) {
+        CompressedLoad l = withView(length, [&](std::vector<char>& b) {
             for (size_t k = 0; k < 4; ++k)
                 b[(seed * 7919 + k * 104729) % length] ^= char(0x5a + seed + k);
         });
@@ -285,7 +285,7 @@ TEST_F(GltfCompressed, HostileDracoData) {
     k["accessors"][0]["count"] = 7;
     std::ofstream(bin, std::ios::binary).write(good.data(), std::streamsize(good.size()));
     std::ofstream(path) << k.dump();
-    expectOneLine(load(path), "POSITION accessor declares 7");
+    expectOneLine(loadCompressed(path), "POSITION accessor declares 7");
 }
 
 TEST_F(GltfCompressed, HostileMeshoptData) {
@@ -295,7 +295,7 @@ TEST_F(GltfCompressed, HostileMeshoptData) {
         json k = j;
         change(k["bufferViews"][0]["extensions"]["EXT_meshopt_compression"], k);
         std::ofstream(path) << k.dump();
-        return load(path);
+        return loadCompressed(path);
     };
     const size_t length =
         j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteLength"];
@@ -322,13 +322,13 @@ TEST_F(GltfCompressed, HostileMeshoptData) {
                   "cannot hold");
     // Garbage in the middle of the stream.
     const fs::path bin = path.parent_path() / "scene.bin";
-    std::vector<char> bytes = readBytes(bin);
+    std::vector<char> bytes = readCompressedBytes(bin);
     const size_t offset =
         j["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"];
     for (size_t k = 0; k < length; k += 3)
         bytes[offset + k] = char(0xff);
     std::ofstream(bin, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-    Loaded l = load(path);
+    CompressedLoad l = loadCompressed(path);
     if (!l.scene.ok()) {
         EXPECT_EQ(l.scene.error().find('\n'), std::string::npos);
     }
@@ -343,7 +343,7 @@ fs::path sharedScenes() {
 TEST(GltfSharedCompressed, DuckDraco) {
     const fs::path path = sharedScenes() / "Duck-Draco/glTF-Draco/Duck.gltf";
     if (!fs::exists(path)) GTEST_SKIP() << path << " not found; skipping";
-    Loaded l = load(path);
+    CompressedLoad l = loadCompressed(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_EQ(l.scene->triangleCount(), 4212u);
     EXPECT_EQ(l.scene->extensions,
@@ -357,7 +357,7 @@ TEST(GltfSharedCompressed, DuckDraco) {
 TEST(GltfSharedCompressed, TextureTransformTest) {
     const fs::path path = sharedScenes() / "TextureTransformTest/glTF/TextureTransformTest.gltf";
     if (!fs::exists(path)) GTEST_SKIP() << path << " not found; skipping";
-    Loaded l = load(path);
+    CompressedLoad l = loadCompressed(path);
     ASSERT_TRUE(l.scene.ok()) << l.scene.error();
     EXPECT_EQ(l.scene->triangleCount(), 24u);
     EXPECT_NE(

@@ -3,6 +3,9 @@
 // directional lights hold still, steps stay within the speed, and --light-motion's parsing.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdio>
+
 #include "core/scene/light_motion.h"
 #include "core/scene/lights.h"
 
@@ -71,9 +74,11 @@ TEST(LightMotion, AFrameAloneEqualsTheFrameInSequence) {
     const std::vector<Light> start = motionLights();
     for (LightMotion::Mode mode : kMovingModes) {
         const LightMotion m = motion(mode, 0.2f);
+        // In sequence from a plan, as a run keeps it; alone through moveLights.
+        const LightMotionPlan plan(start, m, motionBounds());
         std::vector<std::vector<Light>> sequence;
         for (uint32_t f = 0; f < 60; ++f)
-            sequence.push_back(moveLights(start, m, motionBounds(), f));
+            sequence.push_back(plan.at(f));
         for (uint32_t f : {59u, 1u, 37u}) {
             const std::vector<Light> alone = moveLights(start, m, motionBounds(), f);
             for (size_t i = 0; i < start.size(); ++i)
@@ -170,4 +175,27 @@ TEST(LightMotion, ParsesModeAndSpeed) {
         expectMotionRefused(std::string("orbit:") + speed,
                             std::string("--light-motion: speed \"") + speed +
                                 "\" must be a number > 0 and at most 1e6 (scene units per frame)");
+}
+
+// What the motion costs per frame at the benchmark's 1,024 lights (docs/camera_paths.md): a
+// run keeps a LightMotionPlan and asks it for each view's lights on the CPU. Printed, not asserted
+// (machines differ).
+TEST(LightMotion, CostAt1024Lights) {
+    LightGenOptions o;
+    o.count = 1024;
+    o.seed = 3;
+    const std::vector<Light> start = generateLights(motionBounds(), o);
+    for (LightMotion::Mode mode : kMovingModes) {
+        const auto begin = std::chrono::steady_clock::now();
+        const LightMotionPlan plan(start, motion(mode, 0.05f), motionBounds());
+        size_t checksum = 0;
+        for (uint32_t f = 1; f <= 120; ++f)
+            checksum += plan.at(f).size();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+                .count();
+        EXPECT_EQ(checksum, 120u * 1024u);
+        std::printf("[ timing ] %s, 1024 lights: %.3f ms a frame\n",
+                    mode == LightMotion::Mode::Orbit ? "orbit" : "drift", ms / 120.0);
+    }
 }
