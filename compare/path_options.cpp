@@ -1,5 +1,7 @@
 #include "compare/path_options.h"
 
+#include <memory>
+
 #include <CLI/CLI.hpp>
 
 #include "compare/svg_plot.h"
@@ -49,9 +51,8 @@ std::optional<PathInput> loadPathInput(const PathOptions& o, const Scene& scene,
     }
     if (motion->mode != LightMotion::Mode::None) {
         motion->seed = seed;
-        in.lightsAt = [start = scene.lights, m = *motion, bounds = scene.bounds](uint32_t v) {
-            return moveLights(start, m, bounds, v);
-        };
+        auto plan = std::make_shared<const LightMotionPlan>(scene.lights, *motion, scene.bounds);
+        in.lightsAt = [plan](uint32_t v) { return plan->at(v); };
     }
     return in;
 }
