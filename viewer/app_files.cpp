@@ -7,6 +7,7 @@
 
 #include "core/reference/reference_renderer.h"
 #include "core/render/camera_file.h"
+#include "core/render/camera_path.h"
 #include "viewer/viewer_app.h"
 
 namespace tp::view {
@@ -36,6 +37,21 @@ void ViewerApp::loadBookmark(const std::string& path) {
     }
     setCamera(*c);
     error_.clear();
+}
+
+void ViewerApp::addPathKey() {
+    pathKeys_.push_back(userCamera());
+    error_.clear();
+}
+
+void ViewerApp::savePath(const std::string& path, uint32_t frames) {
+    if (pathKeys_.empty()) {
+        error_ = "no path keys yet: add the current camera as a key first";
+        return;
+    }
+    const uint32_t n = frames ? frames : uint32_t(30 * (pathKeys_.size() - 1) + 1);
+    Status s = writeCameraPath(path, pathKeys_, n, Interpolation::CatmullRom);
+    error_ = s ? "" : s.error();
 }
 
 void ViewerApp::startExport(const std::string& dir) {

@@ -36,7 +36,8 @@ const std::map<std::string, CommandSpec>& commands() {
         {"exposure", {1, 1, "exposure auto|EV"}},
         {"camera",
          {1, 3,
-          "camera move F R U | orbit YAW PITCH | turn YAW PITCH | reset | load FILE | save FILE"}},
+          "camera move F R U | orbit YAW PITCH | turn YAW PITCH | reset | load FILE | save FILE | "
+          "key | path FILE"}},
         {"split", {1, 1, "split SHARE (0 to 1)"}},
         {"flip", {0, 1, "flip [on|off]"}},
         {"mode", {1, 2, "mode split|difference|overlay [DEBUG_IMAGE]"}},
@@ -289,6 +290,10 @@ void ScriptRunner::applyCamera(ViewerApp& app, const ScriptLine& line) {
         app.loadBookmark(inOut(w[2]));
     else if (w[1] == "save" && w.size() == 3)
         app.saveBookmark(inOut(w[2]));
+    else if (w[1] == "key" && w.size() == 2)
+        app.addPathKey();
+    else if (w[1] == "path" && w.size() == 3)
+        app.savePath(inOut(w[2]));
     else
         fail(line, std::string("expected '") + commands().at("camera").usage + "'");
     if (!app.lastError().empty()) fail(line, app.lastError());

@@ -193,6 +193,12 @@ void Panels::camera(ViewerApp& app) {
     if (ImGui::Button("save bookmark")) app.saveBookmark(app.bookmarkPath_);
     ImGui::SameLine();
     if (ImGui::Button("load bookmark")) app.loadBookmark(app.bookmarkPath_);
+    // A path by flying: a key per stop, saved for --camera-path (docs/camera_paths.md).
+    if (ImGui::Button("add path key")) app.addPathKey();
+    ImGui::SameLine();
+    ImGui::Text("%zu keys", app.pathKeys());
+    ImGui::InputText("path", &app.pathFile_);
+    if (ImGui::Button("save path")) app.savePath(app.pathFile_);
 }
 
 void Panels::status(ViewerApp& app) {

@@ -106,6 +106,12 @@ class ViewerApp {
     // takes the first). Errors go to the status line.
     void saveBookmark(const std::string& path);
     void loadBookmark(const std::string& path);
+    // A camera path recorded by flying (docs/camera_paths.md): the current camera as the next
+    // key; the keys as a triptych.camera_path/1 file (catmull-rom) of `frames` views, 0: 30 per
+    // segment. `--camera-path` of render, compare and sweep reads it.
+    void addPathKey();
+    void savePath(const std::string& path, uint32_t frames = 0);
+    size_t pathKeys() const { return pathKeys_.size(); }
     // `render` of A and `compare` of A and B into DIR/render and DIR/compare (exporter.h).
     void startExport(const std::string& dir);
     std::string exportStatus() const { return exporter_.status(); }
@@ -167,6 +173,8 @@ class ViewerApp {
     std::string exportStatus_;
     std::string exportDir_ = "view_export";
     std::string bookmarkPath_ = "bookmark.json";
+    std::string pathFile_ = "path.json";
+    std::vector<Camera> pathKeys_;
     ViewState draft_; // what the panels' text fields edit until "Apply" (lights, scene, size)
     float autoEv_ = 0.0f;
     uint64_t autoEvFor_ = 0;
