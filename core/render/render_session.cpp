@@ -54,8 +54,11 @@ Status RendererSession::plan() {
     if (!planned) return Error{planned.error()};
     planned_ = std::move(*planned);
     if (Status s = detail::pipelineStep(entry_, [&] { planned_.renderer->prepare(*planned_.graph); });
-        !s)
+        !s) {
+        planned_.graph.reset(); // half prepared: never followed or recorded
+        planned_.renderer.reset();
         return s;
+    }
     lightCount_ = scene_.lightCount();
     sceneConstants_ = scene_.specConstants(AlphaMode::Opaque);
     return record();
@@ -69,6 +72,7 @@ Status RendererSession::record() {
     Status s = detail::pipelineStep(
         entry_, [&] { detail::recordFrame(cmd_, *planned_.graph, *profiler_, *statistics_); });
     generation_ = scene_.viewGeneration();
+    recorded_ = bool(s);
     return s;
 }
 
@@ -76,7 +80,7 @@ Status RendererSession::record() {
 Status RendererSession::follow(double& updateMs) {
     const auto start = std::chrono::steady_clock::now();
     bool updated = false;
-    if (scene_.lightCount() == lightCount_ &&
+    if (planned_.renderer && scene_.lightCount() == lightCount_ &&
         sameConstants(scene_.specConstants(AlphaMode::Opaque), sceneConstants_)) {
         Status s = detail::pipelineStep(
             entry_, [&] { updated = planned_.renderer->updateView(*planned_.graph); });
@@ -91,7 +95,8 @@ Status RendererSession::follow(double& updateMs) {
 Result<RunResult> RendererSession::render(const RunOptions& options) {
     scene_.setView(settings_.width, settings_.height, settings_.msaa);
     double updateMs = -1;
-    if (scene_.viewGeneration() != generation_)
+    // A view change, or a plan or recording that failed last time (tried again).
+    if (scene_.viewGeneration() != generation_ || !planned_.renderer || !recorded_)
         if (Status s = follow(updateMs); !s) return Error{s.error()};
     profiler_->discardSamples();
     const uint32_t warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options);

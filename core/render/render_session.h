@@ -55,6 +55,7 @@ class RendererSession {
     std::unique_ptr<PassStatistics> statistics_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     uint64_t generation_ = 0;   // SceneGpu::viewGeneration() the recording is for
+    bool recorded_ = false;     // cmd_ holds a complete recording
     uint32_t lightCount_ = 0;   // planned for: a change needs a new plan
     std::vector<SpecConstant> sceneConstants_; // spot presence and texture count, planned for
     uint32_t updates_ = 0, replans_ = 0;

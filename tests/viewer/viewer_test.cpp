@@ -11,6 +11,7 @@
 #include "core/gpu/context.h"
 #include "core/image/image_io.h"
 #include "core/reference/reference_renderer.h"
+#include "core/render/camera_path.h"
 #include "core/render/renderer.h"
 #include "viewer/composite.h"
 #include "viewer/view_loop.h"
@@ -234,6 +235,25 @@ TEST(Viewer, ABookmarkBringsTheCameraBack) {
             EXPECT_NEAR(saved["camera"][k][i].get<double>(), loaded["camera"][k][i].get<double>(),
                         1e-5)
                 << k;
+}
+
+// A path recorded by flying: each key is the camera when it was added, the file reads back
+// through --camera-path's reader with the keys at the ends; and a camera move is followed by
+// the kept renderers (stats: "planned" false after the first render of a pipeline).
+TEST(Viewer, APathRecordedByFlyingReadsBackThroughItsKeys) {
+    ViewRun r = runScript("path", "pipeline b " + pipeline(0) +
+                                      "\nwait\ncamera key\nstats k0.json\ncamera orbit 40 5\n"
+                                      "wait\ncamera key\nstats k1.json\ncamera path p.json\n");
+    ASSERT_EQ(r.code, 0);
+    Result<std::vector<Camera>> views = readCameraPath(r.out + "/p.json");
+    ASSERT_TRUE(views) << views.error();
+    ASSERT_EQ(views->size(), 31u); // 30 views per segment, and the last key
+    for (auto [file, view] : {std::pair{"k0.json", views->front()}, {"k1.json", views->back()}}) {
+        nlohmann::json key = r.stats(file)["camera"];
+        for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(key["position"][i].get<double>(), view.position[i], 1e-4) << file;
+    }
+    EXPECT_FALSE(r.stats("k1.json")["pipeline_a"]["planned"].get<bool>()) << "the camera move replanned";
 }
 
 TEST(Viewer, ExportWritesRenderAndCompareOfTheCurrentView) {
