@@ -35,6 +35,7 @@ Settings readSettings(const RenderSettings& s) {
     d.height = s.height;
     d.sampling = readSampling(s);
     d.debug = s.debug;
+    d.manyViews = s.manyViews;
     d.assign = la::readAssignSettings(s);
     d.gbuffer = gbufferKnob().in(s);
     d.lighting = lightingKnob().in(s);

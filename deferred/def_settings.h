@@ -16,6 +16,7 @@ struct Settings {
     uint32_t width = 0, height = 0;
     Sampling sampling;
     bool debug = false;
+    bool manyViews = false; // RenderSettings::manyViews: per-view lists get headroom
     la::AssignSettings assign;
     GBuffer gbuffer = GBuffer::Compact;
     Lighting lighting = Lighting::Tiled;

@@ -24,7 +24,8 @@ class DeferredRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
           def_(def::readSettings(info.settings)), gbuffer_(info.ctx, info.scene),
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
-                    def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin)),
+                    def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin),
+                    def_.manyViews),
           volumes_(info.ctx, info.scene), blended_(info.ctx, info.scene) {}
 
     void plan(FrameGraph& graph) override {
@@ -92,7 +93,8 @@ class DeferredRenderer final : public Renderer {
     // reads (and, clustered, their slice rows; volumes lighting keeps the plain lists).
     void planBlendedLists(FrameGraph& graph) {
         TiledLightingTargets lt = lightingTargets();
-        blended_.planLists(graph, lighting_, lt, binned(), slices(), !useVolumes());
+        blended_.planLists(graph, lighting_, lt, binned(), slices(), !useVolumes(),
+                           def_.manyViews);
         t_.transparentLists = lt.transparentLists;
         t_.listOffsets = std::move(lt.listOffsets);
     }
@@ -118,6 +120,20 @@ class DeferredRenderer final : public Renderer {
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes()) volumes_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
+    }
+
+    // The G-buffer, the volumes and the blended draws (back to front) are recorded from the
+    // scene's current view and lights; what the plan derived from them is the tiled pass's
+    // binned candidates and the transparent lists' offsets, recomputed here on the CPU and
+    // uploaded (docs/deferred.md, "Many views").
+    bool updateView(FrameGraph& graph) override {
+        if (!t_.tileStats.valid()) return true; // volumes, opaque only: nothing derived
+        if (!lighting_.updateView(graph)) return false;
+        if (!hasBlended_) return true;
+        TiledLightingTargets lt = lightingTargets();
+        if (!blended_.updateLists(lighting_, lt)) return false;
+        t_.listOffsets = std::move(lt.listOffsets);
+        return true;
     }
 
     void collectStats(FrameGraph& graph) override {

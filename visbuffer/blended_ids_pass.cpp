@@ -6,6 +6,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/passes/tiled_lighting.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 #include "visbuffer/vis_shared.h"
@@ -19,12 +20,16 @@ BlendedIdsPass::~BlendedIdsPass() {
 }
 
 BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, ResourceHandle depth,
-                                        uint32_t capacityPercent, uint64_t bound) {
+                                        uint32_t capacityPercent, uint64_t bound,
+                                        bool manyViews) {
     samples_ = samples;
     depth_ = depth;
     const uint64_t pixels = uint64_t(graph.width()) * graph.height();
     const uint64_t most = ctx_.caps.maxStorageBufferRange / 8;
-    uint64_t capacity = capacityPercent == 0 ? std::min(bound, most)
+    most_ = most;
+    // Many views: a floor of a fragment per sample of the screen.
+    const uint64_t sized = viewCapacity(bound, pixels * samples, most, manyViews);
+    uint64_t capacity = capacityPercent == 0 ? std::min(sized, most)
                                              : pixels * capacityPercent / 100;
     capacity = std::max<uint64_t>(capacity, 1);
     if (capacity > most)
@@ -34,16 +39,17 @@ BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, Res
                             std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " +
                             ctx_.info.name + "; use a lower capacity or --res");
     t_.capacity = uint32_t(capacity);
-    const std::string sized =
+    const std::string how =
         capacityPercent == 0
             ? "the bound of the blended triangles' screen areas" +
-                  std::string(bound > most ? ", clamped to one storage buffer" : "")
+                  std::string(sized > bound ? ", with headroom for other views" : "") +
+                  std::string(sized > most ? ", clamped to one storage buffer" : "")
             : "--vis-blended-capacity " + std::to_string(capacityPercent) + "% of the pixels";
     t_.heads = graph.createBuffer("blended_list_heads", pixels * 4,
                                   "per pixel: its first blended fragment node + 1 (0: none)");
     t_.nodes = graph.createBuffer(
         "blended_list_nodes", capacity * 8,
-        "blended fragments: id and coverage, next node (" + sized + ")");
+        "blended fragments: id and coverage, next node (" + how + ")");
     t_.counters =
         graph.createBuffer("blended_list_counters", TP_VIS_BLEND_COUNTER_WORDS * 4,
                            "fragments met, dropped, pool capacity, most per pixel");

@@ -33,9 +33,13 @@ class BlendedIdsPass {
     // depth: the visibility depth (per sample under MSAA). capacityPercent: nodes in percent
     // of the pixels, or 0: `bound` nodes (fragment_bound.h), clamped to what one storage
     // buffer can hold (a fragment past it is then dropped and counted). Throws RendererError
-    // when an explicit capacity exceeds maxStorageBufferRange.
+    // when an explicit capacity exceeds maxStorageBufferRange. manyViews (capacity 0): the
+    // bound gets headroom for later views (core/passes/tiled_lighting.h: viewCapacity).
     BlendedListTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle depth,
-                            uint32_t capacityPercent, uint64_t bound);
+                            uint32_t capacityPercent, uint64_t bound, bool manyViews = false);
+    // Whether a new view whose bound is `bound` fits the planned pool: a pool clamped to one
+    // storage buffer already holds the most a plan could give it (drops there are counted).
+    bool fits(uint64_t bound) const { return bound <= t_.capacity || t_.capacity == most_; }
     void prepare(FrameGraph& graph);
 
   private:
@@ -46,6 +50,7 @@ class BlendedIdsPass {
     uint32_t samples_ = 1;
     ResourceHandle depth_;
     BlendedListTargets t_;
+    uint64_t most_ = 0; // nodes one storage buffer holds
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

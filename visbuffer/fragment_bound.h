@@ -27,4 +27,15 @@ double triangleCentreBound(glm::vec2 a, glm::vec2 b, glm::vec2 c, uint32_t width
 uint64_t blendedFragmentBound(const SceneGpu& scene, const std::vector<TableDraw>& blended,
                               uint32_t width, uint32_t height, uint32_t samples);
 
+// Planned for many views (RenderSettings::manyViews; every view computes it again: the
+// renderer's updateView): the same bound with each triangle clipped to w >= znear / 2 (the
+// rasterizer keeps only w >= znear, so this holds every fragment it makes) instead of counted
+// as the whole screen where it reaches behind the eye, and a draw whose box lies outside the
+// view frustum counted out. Tighter where the camera nears or enters the blended surfaces (a
+// view among the cloth would otherwise need the pool clamped to one storage buffer), and
+// cheaper: each vertex projected once, no allocation per triangle. A single view keeps
+// blendedFragmentBound, so its pool (in the memory ledger) is unchanged.
+uint64_t viewFragmentBound(const SceneGpu& scene, const std::vector<TableDraw>& blended,
+                           uint32_t width, uint32_t height, uint32_t samples);
+
 } // namespace tp::vis

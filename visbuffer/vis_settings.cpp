@@ -43,6 +43,7 @@ Settings readSettings(const RenderSettings& s) {
     v.height = s.height;
     v.sampling = readSampling(s);
     v.debug = s.debug;
+    v.manyViews = s.manyViews;
     v.assign = la::readAssignSettings(s);
     v.hdr = hdrKnob().in(s);
     v.blended = blendedKnob().in(s);

@@ -28,6 +28,7 @@ struct Settings {
     uint32_t width = 0, height = 0;
     Sampling sampling;
     bool debug = false;
+    bool manyViews = false; // RenderSettings::manyViews: per-view lists get headroom
     la::AssignSettings assign;
     HdrStorage hdr = HdrStorage::Fp32;
     Blended blended = Blended::Compute;

@@ -34,7 +34,8 @@ class VisbufferRenderer final : public Renderer {
           table_(vis::makeDrawTable(info.scene, blendInCompute_)),
           visibility_(info.ctx, info.scene, table_), blendedIds_(info.ctx, info.scene, table_),
           lighting_(info.ctx, info.scene, vis_.debug, vis_.assign.binned(),
-                    vis_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, vis_.assign.bin)),
+                    vis_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, vis_.assign.bin),
+                    vis_.manyViews),
           blended_(info.ctx, info.scene) {}
 
     void plan(FrameGraph& graph) override {
@@ -59,19 +60,17 @@ class VisbufferRenderer final : public Renderer {
                                "per tile: lights, transparent lights, edge pixels, overflow");
         if (hasBlended_)
             blended_.planLists(graph, lighting_, lt_, vis_.assign.binned(), slices(),
-                               !blendInCompute_); // slice rows: the forward pass's only
+                               !blendInCompute_, // slice rows: the forward pass's only
+                               vis_.manyViews);
         if (vis_.debug)
             lt_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
         ids_ = visibility_.plan(graph, samples, depth_);
         if (blendInCompute_)
-            lists_ = blendedIds_.plan(
-                graph, samples, ids_.depth, vis_.blendedCapacityPercent,
-                vis_.blendedCapacityPercent == 0 ? vis::blendedFragmentBound(scene_, table_.blended,
-                                                                           graph.width(),
-                                                                           graph.height(), samples)
-                                                 : 0);
+            lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
+                                      vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,
+                                      vis_.manyViews);
         // Static per scene and configuration, like the light candidates: made now, so the
         // surface source can name it.
         drawBuffer_ = createBufferWithData(
@@ -107,6 +106,22 @@ class VisbufferRenderer final : public Renderer {
         if (blendInCompute_) blendedIds_.prepare(graph);
     }
 
+    // The ids, the blended draws (back to front) and the resolve are recorded from the scene's
+    // current view and lights; what the plan derived from them is recomputed here on the CPU
+    // and uploaded (docs/visbuffer.md, "Many views"): the tiled pass's binned candidates, the
+    // transparent lists' offsets, and (--vis-blended compute) the draw table's blended rows in
+    // the new back-to-front order and the fragment pool's bound.
+    bool updateView(FrameGraph& graph) override {
+        if (!lighting_.updateView(graph)) return false;
+        if (hasBlended_ && !blended_.updateLists(lighting_, lt_)) return false;
+        if (!blendInCompute_) return true;
+        if (vis_.blendedCapacityPercent == 0 && !blendedIds_.fits(fragmentBound())) return false;
+        table_ = vis::makeDrawTable(scene_, true); // the passes hold it by reference
+        uploadBufferData(ctx_, drawBuffer_, table_.rows.data(),
+                         table_.rows.size() * sizeof(gpu::VisDraw));
+        return true;
+    }
+
     void collectStats(FrameGraph& graph) override {
         std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(lt_.tileStats));
         tileStats_.assign(raw.size() / 4, 0);
@@ -122,6 +137,12 @@ class VisbufferRenderer final : public Renderer {
 
   private:
     uint32_t slices() const { return vis_.assign.slicesOrZero(); }
+    // The blended fragments the current view can make (fragment_bound.h; many views: the
+    // bound clipped to the near plane, computed again for every view).
+    uint64_t fragmentBound() const {
+        return (vis_.manyViews ? vis::viewFragmentBound : vis::blendedFragmentBound)(
+            scene_, table_.blended, vis_.width, vis_.height, vis_.sampling.samples);
+    }
     void checkDevice() const;
     void addBlendedListStats(RendererStats& s) const;
 

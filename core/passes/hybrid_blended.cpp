@@ -11,7 +11,7 @@
 namespace tp {
 
 void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledLightingTargets& t,
-                              bool binned, uint32_t slices, bool sliceRows) {
+                              bool binned, uint32_t slices, bool sliceRows, bool manyViews) {
     const uint32_t tiles = t.grid.count();
     // Compact: each tile's run is sized by a conservative bound, so nothing can drop (a drop
     // would be counted in the tile's header, never silent). Binned: bitmasks over each tile's
@@ -20,7 +20,7 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
     const std::vector<uint32_t>* bound = binned ? &lighting.bound(t.grid, graph.owner()) : nullptr;
     TransparentListPlan lists =
         planTransparentLists(t.grid, scene_, ctx_.caps.maxStorageBufferRange, ctx_.info.name,
-                             binned, bound, graph.owner());
+                             binned, bound, graph.owner(), manyViews);
     t.transparentLists = graph.createBuffer(
         "transparent_lists", lists.bytes(),
         lists.masks ? "per tile: list header, then a bitmask over its binned candidates"
@@ -28,11 +28,12 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
     masks_ = lists.masks;
     t.listOffsets = std::move(lists.offsets);
     slots_ = lists.slots;
+    capacity_ = lists.capacity;
     if (slices == 0 || !sliceRows) return;
     // Clustered: slice rows over the lists for the blended pass (include/tiled_lighting.h:
     // defClusterRowsBase).
-    const uint64_t words =
-        2ull * tiles + uint64_t(slices) * (lists.masks ? lists.slots : lists.slots / 32 + tiles);
+    const uint64_t words = 2ull * tiles + uint64_t(slices) * (lists.masks ? lists.capacity
+                                                                          : lists.capacity / 32 + tiles);
     if (words * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError(graph.owner() + ": the transparent slice rows need " +
                             std::to_string(words * 4) +
@@ -42,6 +43,16 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
         "transparent_cluster_masks", words * 4,
         lists.masks ? "per tile: slicing, then per slice a bitmask row over its binned candidates"
                     : "per tile: slicing, then per slice a bitmask row over its transparent list");
+}
+
+bool HybridBlended::updateLists(TiledLighting& lighting, TiledLightingTargets& t) {
+    const std::vector<uint32_t>* bound = masks_ ? &lighting.bound(t.grid, "") : nullptr;
+    TransparentListPlan lists = transparentListNeed(t.grid, scene_, masks_, bound);
+    if (lists.slots > capacity_) return false;
+    slots_ = lists.slots;
+    t.listOffsets = std::move(lists.offsets);
+    lighting.setListOffsets(t.listOffsets);
+    return true;
 }
 
 ResourceHandle HybridBlended::planBounds(FrameGraph& graph, const la::BlendedBoundsConfig& config) {

@@ -28,8 +28,12 @@ class HybridBlended {
     // First (before tiled lighting plans): the transparent lists into t.transparentLists and
     // t.listOffsets. binned: bitmasks over the tiled pass's candidates (their bound comes from
     // `lighting`). slices > 0 with sliceRows: the clustered slice rows over the lists too.
+    // manyViews: the lists (and slice rows) get headroom for later views (blended_lists.h).
     void planLists(FrameGraph& graph, TiledLighting& lighting, TiledLightingTargets& t, bool binned,
-                   uint32_t slices, bool sliceRows);
+                   uint32_t slices, bool sliceRows, bool manyViews = false);
+    // A new view, after lighting.updateView: the lists' offsets for it into t.listOffsets and
+    // tiled lighting's buffer. false when they need more slots than planned (a replan).
+    bool updateLists(TiledLighting& lighting, TiledLightingTargets& t);
     // Then, after the pass that writes the opaque depth: the blended depth bounds.
     ResourceHandle planBounds(FrameGraph& graph, const la::BlendedBoundsConfig& config);
     // Last, after tiled lighting: the forward pass over the lists (t.bounds: planBounds's).
@@ -54,7 +58,8 @@ class HybridBlended {
     la::BlendedBounds bounds_;
     BlendedForwardPass forward_;
     ResourceHandle sliceRows_;
-    uint64_t slots_ = 0;
+    uint64_t slots_ = 0;    // the current view's
+    uint64_t capacity_ = 0; // planned
     bool masks_ = false; // binned: the lists are bitmasks over the candidates
     bool forwardPlanned_ = false;
 };

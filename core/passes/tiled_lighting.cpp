@@ -1,6 +1,7 @@
 #include "core/passes/tiled_lighting.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -102,61 +103,114 @@ void TiledLighting::prepare(FrameGraph& graph) {
     pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
 }
 
+uint64_t viewCapacity(uint64_t need, uint64_t floor, uint64_t most, bool manyViews) {
+    if (!manyViews) return need;
+    return std::max(need, std::min(std::max(need * kViewHeadroom, floor), most));
+}
+
 const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid,
                                                   const std::string& owner) {
     if (!binnedOnce_) {
         binnedOnce_ = true;
-        const gpu::FrameUniforms& f = scene_.shadingFrame();
-        const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
-        const std::vector<uint32_t> local = la::classifyLights(lights).local;
         if (gpuBinning_) { // sized now (one plan-time run); the frame's pass fills the runs
+            const std::vector<uint32_t> local = la::classifyLights(scene_.shadingLights()).local;
             binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid, local, owner);
-            bins_ = binning_->sizes();
-        } else {
-            bins_ = la::binLights(grid, f.view, f.proj, lights, local, true);
+            binnedProj_ = scene_.shadingFrame().proj;
         }
+        t_.grid = grid; // plan() sets it again
+        bin();
+        bigCapacity_ = binning_ ? binning_->bigLights() : 0;
     }
     return bins_.bound;
 }
 
+void TiledLighting::bin() {
+    if (binning_) {
+        bins_ = binning_->sizes();
+        return;
+    }
+    const gpu::FrameUniforms& f = scene_.shadingFrame();
+    const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
+    bins_ = la::binLights(t_.grid, f.view, f.proj, lights, la::classifyLights(lights).local, true);
+}
+
+std::vector<uint32_t> TiledLighting::candidateWords(const la::LightClasses& classes) {
+    const uint32_t tiles = t_.grid.count();
+    const uint32_t directional = uint32_t(classes.directional.size());
+    std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
+    words[TP_DEF_CAND_DIRECTIONAL] = directional;
+    words[TP_DEF_CAND_OFFSETS] = TP_DEF_CAND_HEADER + directional;
+    words[TP_DEF_CAND_RUNS] = TP_DEF_CAND_HEADER + directional + tiles + 1;
+    words.insert(words.end(), classes.directional.begin(), classes.directional.end());
+    words.insert(words.end(), bins_.offsets.begin(), bins_.offsets.end());
+    words.insert(words.end(), bins_.candidates.begin(), bins_.candidates.end());
+    maxCandidates_ = directional + bins_.maxBound;
+    candidateCount_ = uint64_t(directional) * tiles + bins_.slots;
+    std::vector<uint32_t>().swap(bins_.candidates); // uploaded: the host copy is not needed again
+    return words;
+}
+
 // Binned: per tile, the point/spot lights whose conservative tile rectangle covers it (CPU,
-// once per configuration: the lights and the camera are fixed for a run), after the
-// directional lights, which every tile takes. Otherwise a header saying "no candidates".
+// binned for the view planned, again by updateView for each new one), after the directional
+// lights, which every tile takes. Otherwise a header saying "no candidates". The runs get
+// headroom for later views under manyViews (viewCapacity).
 void TiledLighting::uploadCandidates(FrameGraph& graph) {
     std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
     const uint32_t tiles = t_.grid.count();
     if (binned_) {
         la::LightClasses classes = la::classifyLights(scene_.shadingLights());
-        const la::LightBins& bins = bins_; // from plan (bound())
-        const uint32_t directional = uint32_t(classes.directional.size());
+        const uint64_t fixed = uint64_t(TP_DEF_CAND_HEADER) + classes.directional.size() + tiles + 1;
         // The buffer's size from the unclamped slot count: refused before it is built.
-        const uint64_t bytes =
-            (uint64_t(TP_DEF_CAND_HEADER) + directional + tiles + 1 + bins.slots) * 4;
+        const uint64_t bytes = (fixed + bins_.slots) * 4;
         if (bytes > ctx_.caps.maxStorageBufferRange)
             throw RendererError(
                 graph.owner() + ": the binned light candidates need " + std::to_string(bytes) +
                 " bytes, more than maxStorageBufferRange (" +
                 std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " + ctx_.info.name +
                 "; use a larger --tile, a lower --res, fewer lights or --light-cull all");
-        words[TP_DEF_CAND_DIRECTIONAL] = directional;
-        words[TP_DEF_CAND_OFFSETS] = TP_DEF_CAND_HEADER + directional;
-        words[TP_DEF_CAND_RUNS] = TP_DEF_CAND_HEADER + directional + tiles + 1;
-        words.insert(words.end(), classes.directional.begin(), classes.directional.end());
-        words.insert(words.end(), bins.offsets.begin(), bins.offsets.end());
-        words.insert(words.end(), bins.candidates.begin(), bins.candidates.end());
-        if (gpuBinning_) words.resize(words.size() + bins.slots, 0); // light_binning writes them
-        maxCandidates_ = directional + bins.maxBound;
-        candidateCount_ = uint64_t(directional) * tiles + bins.slots;
+        // A view's slots are at most every local light in every tile.
+        slotCapacity_ =
+            viewCapacity(bins_.slots, kViewHeadroom * tiles,
+                         std::min(uint64_t(classes.local.size()) * tiles,
+                                  ctx_.caps.maxStorageBufferRange / 4 - fixed),
+                         manyViews_);
+        directional_ = classes.directional;
+        words = candidateWords(classes);
+        words.resize(fixed + slotCapacity_, 0); // GPU binning: light_binning writes the runs
     } else {
         candidateCount_ = uint64_t(scene_.lightCount()) * tiles;
     }
-    std::vector<uint32_t>().swap(bins_.candidates); // uploaded: the host copy is not needed again
     candidates_ = createBufferWithData(
         ctx_, words.data(), words.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
         {graph.owner(), "", "light_candidates",
-         binned_ ? "binned culling: directional lights, per-tile offsets, candidates"
+         binned_ ? "binned culling: directional lights, per-tile offsets, candidates" +
+                       std::string(slotCapacity_ > bins_.slots ? " (headroom for other views)" : "")
                  : "binned culling off (--light-cull all): header only"});
     if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_DEF_CAND_RUNS]);
+}
+
+bool TiledLighting::updateView(FrameGraph& graph) {
+    if (!binned_) return true; // every tile tests every light: nothing depends on the view
+    la::LightClasses classes = la::classifyLights(scene_.shadingLights());
+    if (classes.directional != directional_) return false; // the header's layout would move
+    if (binning_ && std::memcmp(&binnedProj_, &scene_.shadingFrame().proj, sizeof(glm::mat4)) != 0)
+        return false; // its slab planes were uploaded for the planned projection
+    bin();
+    if (binning_) {
+        // The sizing run rebinds the binning's set to its own buffers: back to the frame's.
+        binning_->prepare(graph, candidates_.buffer,
+                          TP_DEF_CAND_HEADER + directional_.size() + t_.grid.count() + 1);
+        if (binning_->bigLights() > bigCapacity_) return false;
+    }
+    if (bins_.slots > slotCapacity_) return false;
+    std::vector<uint32_t> words = candidateWords(classes);
+    uploadBufferData(ctx_, candidates_, words.data(), words.size() * 4);
+    return true;
+}
+
+void TiledLighting::setListOffsets(const std::vector<uint32_t>& offsets) {
+    t_.listOffsets = offsets;
+    uploadBufferData(ctx_, listOffsets_, offsets.data(), offsets.size() * 4);
 }
 
 TileStatTotals sumTileStats(const std::vector<uint32_t>& stats) {

@@ -15,6 +15,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/image/image.h"
+#include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/light_binning.h"
 #include "include/tiled_lighting.h"
@@ -47,6 +48,14 @@ EdgeAndRoughMetal splitDebugImage(const ImageRGBA& debug);
 
 class GpuContext;
 class SceneGpu;
+
+// Planned for many views (RenderSettings::manyViews): a list sized from the camera and the
+// lights gets kViewHeadroom times the first view's need (at least `floor`, never more than
+// `most`: what the worst view can need, or what one buffer can hold), so that ordinary camera
+// moves and light motion fit it; a view that needs more is planned again (counted). A single
+// view: exactly its need.
+constexpr uint64_t kViewHeadroom = 4;
+uint64_t viewCapacity(uint64_t need, uint64_t floor, uint64_t most, bool manyViews);
 
 // Where the lit surfaces' attributes come from. The shader family reads them through its
 // surface reader (shaders/deferred/gbuffer_read.glsl for the G-buffer) at the bindings given
@@ -84,10 +93,11 @@ class TiledLighting {
     // (core/lightassign/light_bins.h). slices > 0 (--light-assign clustered): each sample takes
     // only its depth slice's lights. gpuBinning (--light-bin resolved to gpu; binned only): pass
     // light_binning builds the candidates every frame (core/passes/light_binning.h).
+    // manyViews: the candidates get headroom (viewCapacity) for the views after the first.
     TiledLighting(GpuContext& ctx, SceneGpu& scene, bool debug, bool binned, uint32_t slices,
-                  bool gpuBinning = false)
+                  bool gpuBinning = false, bool manyViews = false)
         : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices),
-          gpuBinning_(binned && gpuBinning) {}
+          gpuBinning_(binned && gpuBinning), manyViews_(manyViews) {}
     ~TiledLighting();
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
@@ -103,6 +113,15 @@ class TiledLighting {
     // transparent lists are sized from it too), binned once per configuration, on the CPU or
     // (gpuBinning) by the plan-time run of the GPU binning. plan() bins if nobody asked before.
     const std::vector<uint32_t>& bound(const la::TileGrid& grid, const std::string& owner);
+    // A new view (camera or lights moved; SceneGpu holds them): the lights binned again for it
+    // (CPU: la::binLights; GPU binning: its sizing run again) and the candidates' header,
+    // offsets and (CPU) runs uploaded into the planned buffer, so bound() and the next
+    // recording follow. false when the view does not fit the plan: more candidate slots than
+    // the buffer holds, other directional lights, or (GPU binning) another projection or more
+    // lights of large rectangles than its big list holds.
+    bool updateView(FrameGraph& graph);
+    // The transparent lists' offsets of a new view (HybridBlended::updateLists), uploaded.
+    void setListOffsets(const std::vector<uint32_t>& offsets);
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
     bool gpuBinning() const { return gpuBinning_; }
@@ -119,6 +138,10 @@ class TiledLighting {
     std::string passName() const;
     std::string shaderName() const;
     void uploadCandidates(FrameGraph& graph);
+    void bin(); // bins_ for the scene's current view and lights
+    // The candidates buffer's words for bins_: header, directional lights, offsets, then the
+    // runs (CPU binning; GPU binning: zeros, the frame writes them).
+    std::vector<uint32_t> candidateWords(const la::LightClasses& classes);
     GpuContext& ctx_;
     SceneGpu& scene_;
     bool debug_;
@@ -126,6 +149,11 @@ class TiledLighting {
     uint32_t batches_ = 0;
     uint32_t slices_ = 0;
     bool gpuBinning_ = false;
+    bool manyViews_ = false;
+    uint64_t slotCapacity_ = 0;          // binned: candidate run slots the buffer holds
+    std::vector<uint32_t> directional_;  // binned: the directional lights planned for
+    glm::mat4 binnedProj_{1.0f};         // GPU binning: the projection its slabs are for
+    uint32_t bigCapacity_ = 0;           // GPU binning: its big list's planned length
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
     la::LightBins bins_; // binned: the runs (CPU) or their sizes (GPU: no candidates)
     bool binnedOnce_ = false;

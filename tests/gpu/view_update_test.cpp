@@ -29,7 +29,8 @@ std::string nameOf(const Config& c) {
 
 // The pipelines whose updateView follows these views without a replan (each one's own change
 // adds it here, with the test below as its proof).
-const std::set<std::string> kFollowsInPlace = {"reference", "multipass_forward"};
+const std::set<std::string> kFollowsInPlace = {"reference", "multipass_forward", "deferred",
+                                                "visbuffer"};
 
 std::vector<Config> configs() {
     return {
@@ -43,10 +44,14 @@ std::vector<Config> configs() {
         {"deferred", {}},
         {"deferred", {{"deferred-lighting", "volumes"}}},
         {"deferred", {}, 4},
+        {"deferred", {{"light-bin", "gpu"}}},
+        {"deferred", {{"light-assign", "clustered"}}},
         {"multipass_forward", {}},
         {"multipass_forward", {{"blended-lights", "one-pass"}}},
         {"visbuffer", {}},
         {"visbuffer", {{"vis-blended", "forward"}}},
+        {"visbuffer", {}, 4},
+        {"visbuffer", {{"light-bin", "gpu"}}},
     };
 }
 

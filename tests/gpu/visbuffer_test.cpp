@@ -5,7 +5,7 @@
 // centre is what that reference computes per sample); edges exactly where the ids differ;
 // the ledger's 8 bytes per sample. Blended surfaces both ways (--vis-blended compute, the
 // default, and forward), over several lighting batches, and a pool too small for them
-// counted, not silent.
+// counted, not silent; the many-views bound of the pool clipped at the near plane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,6 +19,8 @@
 #include "core/render/renderer.h"
 #include "core/scene/lights.h"
 #include "gpu_test_util.h"
+#include "visbuffer/draw_table.h"
+#include "visbuffer/fragment_bound.h"
 #include "visbuffer/lod_allowance.h"
 
 namespace tp::test {
@@ -231,6 +233,44 @@ TEST(Visbuffer, AFullFragmentPoolIsCountedNeverSilent) {
     EXPECT_EQ(capacity, double(96 * 64 / 100));
     ASSERT_GT(met, capacity) << "the glass makes more fragments than 1 % of the pixels";
     EXPECT_EQ(counterValue(vis, "blended_fragments_dropped"), met - capacity);
+    expectNoValidationMessages(*ctx);
+}
+
+// Many views: the pool's bound clipped to the near plane (fragment_bound.h: viewFragmentBound).
+// With the eye inside each cloth panel's box, looking along the courtyard, some of its
+// triangles lie behind the eye: the single view's bound counts each of them as the whole
+// screen, the clipped one only what lies in front of the near plane, and still at least every
+// fragment the raster pass met (none dropped).
+TEST(Visbuffer, ManyViewsBoundClipsTrianglesAtTheNearPlane) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(4, 6);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = small(1);
+    s.manyViews = true;
+    const std::vector<const DrawItem*> cloth = gpuScene.drawList(DrawFilter::Blend);
+    ASSERT_FALSE(cloth.empty());
+    uint32_t clipped = 0;
+    for (size_t i = 0; i < cloth.size() && i < 3; ++i) {
+        const glm::vec3 centre = (cloth[i]->bounds.min + cloth[i]->bounds.max) * 0.5f;
+        scene.camera.position = centre;
+        scene.camera.target = centre + glm::vec3(0.3f, -0.1f, 1.0f);
+        RunResult run = runOrFail(*ctx, gpuScene, "visbuffer", s); // sets the view
+        const vis::DrawTable table = vis::makeDrawTable(gpuScene, true);
+        const uint64_t view = vis::viewFragmentBound(gpuScene, table.blended, 96, 64, 1);
+        const uint64_t single = vis::blendedFragmentBound(gpuScene, table.blended, 96, 64, 1);
+        const double met = counterValue(run, "blended_fragments", -1);
+        SCOPED_TRACE("cloth draw " + std::to_string(i));
+        std::printf("[ visbuffer ] eye in cloth %zu: %.0f fragments met, bound %llu clipped, %llu "
+                    "single-view\n",
+                    i, met, (unsigned long long)view, (unsigned long long)single);
+        EXPECT_GT(met, 0.0) << "the eye is inside the panel's box, facing along it";
+        EXPECT_GE(double(view), met);
+        EXPECT_EQ(counterValue(run, "blended_fragments_dropped", -1), 0.0);
+        EXPECT_LE(view, single);
+        clipped += view < single ? 1 : 0;
+    }
+    EXPECT_GT(clipped, 0u) << "some view has cloth behind the eye";
     expectNoValidationMessages(*ctx);
 }
 

@@ -1,0 +1,110 @@
+// The tiled lighting of deferred and the visibility buffer follows a moved camera and moved
+// lights in place (Renderer::updateView; core/passes/tiled_lighting.h, hybrid_blended.h). The
+// lights are small enough that each covers a few tiles, so the binned candidates differ from
+// view to view (checked: a stale candidate buffer would light the wrong tiles); a session
+// moved there renders bit-identically what a renderer planned there renders, with no replan.
+// (ViewUpdate, tests/gpu/view_update_test.cpp, uses lights that reach every tile of its
+// 96x64 views, so there the candidates are the same at every view.)
+#include <cstring>
+
+#include "core/render/render_session.h"
+#include "core/scene/lights.h"
+#include "core/scene/procedural.h"
+#include "gpu_test_util.h"
+
+namespace tp::test {
+namespace {
+
+struct TiledViewCase {
+    std::string pipeline, bin; // --light-bin
+};
+
+Scene courtyardWithSmallLights() {
+    Result<Scene> s = makeBuiltinScene("courtyard-small");
+    EXPECT_TRUE(s.ok());
+    LightGenOptions o;
+    o.count = 96;
+    o.seed = 5;
+    o.radiusMin = 1.5f;
+    o.radiusMax = 3.0f;
+    s->lights = generateLights(s->bounds, o);
+    return std::move(*s);
+}
+
+bool identicalBits(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && !a.empty() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+class TiledView : public ::testing::TestWithParam<TiledViewCase> {};
+
+TEST_P(TiledView, BinsTheLightsAgainForEachViewWithoutAReplan) {
+    const TiledViewCase& c = GetParam();
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardWithSmallLights();
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 64;
+    settings.manyViews = true;
+    settings.set("light-bin", c.bin);
+    const RendererEntry& entry = **findRenderer(c.pipeline);
+    const Camera a = scene.camera;
+    Camera b = a;
+    b.position = a.position + glm::vec3(-2.5f, -0.6f, 1.5f);
+    b.target = a.target + glm::vec3(1.0f, 0.3f, -2.0f);
+    std::vector<Light> moved = scene.lights;
+    for (size_t i = 0; i < moved.size(); ++i)
+        moved[i].position += glm::vec3(1.5f * std::sin(float(i)), 0.0f, 1.5f * std::cos(float(i)));
+
+    SceneGpu gpu(*ctx, scene);
+    auto session = RendererSession::create(*ctx, gpu, entry, analyzeScene(scene, 1), settings);
+    ASSERT_TRUE(session.ok()) << session.error();
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    auto render = [&] {
+        Result<RunResult> r = (*session)->render(once);
+        EXPECT_TRUE(r.ok()) << r.error();
+        return r.ok() ? std::move(*r) : RunResult{};
+    };
+    auto fresh = [&] {
+        SceneGpu planned(*ctx, scene);
+        return runOrFail(*ctx, planned, c.pipeline, settings);
+    };
+    const RunResult atA = render();
+    scene.camera = b;
+    const RunResult atB = render();
+    const RunResult freshB = fresh();
+    gpu.setLights(moved);
+    scene.lights = moved;
+    const RunResult lightsMoved = render();
+    const RunResult freshMoved = fresh();
+
+    const double candA = atA.stats.counter("light_candidates"),
+                 candB = atB.stats.counter("light_candidates"),
+                 candMoved = lightsMoved.stats.counter("light_candidates");
+    std::printf("[ tiled view ] %s --light-bin %s: light candidates %.0f at A, %.0f at B, %.0f "
+                "with the lights moved\n",
+                c.pipeline.c_str(), c.bin.c_str(), candA, candB, candMoved);
+    EXPECT_NE(candA, candB) << "the views bin the lights differently";
+    EXPECT_NE(candB, candMoved) << "the moved lights bin differently";
+    EXPECT_EQ(candB, freshB.stats.counter("light_candidates"));
+    EXPECT_EQ(candMoved, freshMoved.stats.counter("light_candidates"));
+    EXPECT_TRUE(identicalBits(atB.hdr.rgba, freshB.hdr.rgba)) << "colour at B";
+    EXPECT_TRUE(identicalBits(atB.depth.r, freshB.depth.r)) << "depth at B";
+    EXPECT_TRUE(identicalBits(lightsMoved.hdr.rgba, freshMoved.hdr.rgba)) << "colour, lights moved";
+    EXPECT_EQ((*session)->replans(), 0u);
+    EXPECT_EQ((*session)->updates(), 2u);
+    expectNoValidationMessages(*ctx);
+}
+
+INSTANTIATE_TEST_SUITE_P(DeferredAndVisbuffer, TiledView,
+                         ::testing::Values(TiledViewCase{"deferred", "cpu"}, TiledViewCase{"deferred", "gpu"},
+                                           TiledViewCase{"visbuffer", "cpu"}),
+                         [](const ::testing::TestParamInfo<TiledViewCase>& info) {
+                             return info.param.pipeline + "_" + info.param.bin;
+                         });
+
+} // namespace
+} // namespace tp::test
