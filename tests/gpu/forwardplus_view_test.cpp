@@ -62,6 +62,20 @@ bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
 // --light-bin cpu and gpu (its sizing run per view), clustered (the mask rows' room too).
 class ForwardPlusViews : public ::testing::TestWithParam<std::map<std::string, std::string>> {};
 
+// What a renderer planned at the scene's current view renders, bit for bit.
+void expectPlannedThere(GpuContext& ctx, Scene& scene, const RendererEntry& entry,
+                        const RenderSettings& settings, const RunResult& got, const char* what) {
+    SceneGpu fresh(ctx, scene);
+    auto there = RendererSession::create(ctx, fresh, entry, analyzeScene(scene, 1), settings);
+    ASSERT_TRUE(there.ok()) << there.error();
+    const RunResult want = render(**there);
+    EXPECT_TRUE(sameBits(got.hdr.rgba, want.hdr.rgba)) << what << ": colour differs";
+    EXPECT_TRUE(sameBits(got.depth.r, want.depth.r)) << what << ": depth differs";
+    // The lists themselves (the image holds only the lights that reach a pixel).
+    EXPECT_EQ(got.stats.counter("lights_kept"), want.stats.counter("lights_kept")) << what;
+    EXPECT_EQ(got.stats.counter("lights_tested"), want.stats.counter("lights_tested")) << what;
+}
+
 TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -89,9 +103,10 @@ TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     EXPECT_EQ(first.stats.counter("light_list_slots"), double(atA) * lists); // A's need, exactly
 
     scene.camera = far;
-    render(**session);
+    const RunResult atFarInPlace = render(**session);
     EXPECT_EQ((*session)->updates(), 1u);
     EXPECT_EQ((*session)->replans(), 0u) << "a view within the room is followed in place";
+    expectPlannedThere(*ctx, scene, **entry, settings, atFarInPlace, "in place");
 
     gpu.setLights(close); // the lights come close to the eye: more tiles each
     scene.lights = close;
@@ -101,12 +116,7 @@ TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     EXPECT_EQ(moved.stats.counter("light_list_slots"), double(closeAtFar) * lists);
     EXPECT_EQ(moved.stats.counter("lights_dropped", -1.0), 0.0);
 
-    SceneGpu fresh(*ctx, scene);
-    auto there = RendererSession::create(*ctx, fresh, **entry, analyzeScene(scene, 1), settings);
-    ASSERT_TRUE(there.ok()) << there.error();
-    const RunResult plannedThere = render(**there);
-    EXPECT_TRUE(sameBits(moved.hdr.rgba, plannedThere.hdr.rgba));
-    EXPECT_TRUE(sameBits(moved.depth.r, plannedThere.depth.r));
+    expectPlannedThere(*ctx, scene, **entry, settings, moved, "planned again");
     expectNoValidationMessages(*ctx);
 }
 
