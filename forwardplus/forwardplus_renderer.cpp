@@ -294,7 +294,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (binned() && !gpuBinning_)
             s.leftOut.push_back({"light_binning pass (GPU binning)",
                                  "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
-                                     " resolved to cpu: candidates built once per configuration"});
+                                     " resolved to cpu: candidates built on the CPU per view"});
         if (!clustered())
             s.leftOut.push_back(
                 {"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
