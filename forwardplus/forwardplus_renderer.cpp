@@ -343,21 +343,15 @@ class ForwardPlusRenderer final : public Renderer {
                                                         "forwardplus", manyViews_);
         bins_ = fp::binView(scene_, viewBinning());
         // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
-        const uint64_t addressable = 0xffffffffull - classes_.local.size() - grid_.count() - 64;
-        if (bins_.slots > addressable)
+        if (bins_.slots > fp::addressableSlots(viewBinning()))
             throw RendererError(
                 "the tile lists need " + std::to_string(bins_.slots) +
                 " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
                 "fewer lights");
         if (clustered()) bins_.masks = fp::sizeMasks(ctx_, bins_.bound, fp_.assign.slices);
-        // Many views: the headroom stays within what the buffers can address (the index
-        // buffer's lists, fp_params' candidates, 32-bit offsets).
-        const uint64_t range = ctx_.caps.maxStorageBufferRange;
-        const uint64_t slotBytes = uint64_t(numLists_) * (layout() == TP_FP_LAYOUT_LINKED ? 8 : 4);
-        uint64_t limit = std::min(addressable, range / slotBytes);
-        if (binned()) limit = std::min(limit, range / 4 - 3 * uint64_t(grid_.count()) -
-                                                  classes_.local.size() * 2 - 64);
-        cap_ = fp::planCapacity(bins_, viewBinning(), manyViews_, limit, range / 4);
+        cap_ = fp::planCapacity(bins_, viewBinning(), manyViews_,
+                                {ctx_.caps.maxStorageBufferRange, numLists_,
+                                 layout() == TP_FP_LAYOUT_LINKED});
     }
 
     // fp_params for the current view, laid out in the planned room (the same bytes every view).

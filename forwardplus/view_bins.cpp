@@ -23,11 +23,20 @@ ViewBins binView(const SceneGpu& scene, const ViewBinning& b) {
     return v;
 }
 
+uint64_t addressableSlots(const ViewBinning& b) {
+    return 0xffffffffull - b.classes->local.size() - b.grid.count() - 64;
+}
+
 ViewCapacity planCapacity(const ViewBins& first, const ViewBinning& b, bool manyViews,
-                          uint64_t slotLimit, uint64_t maskWordLimit) {
+                          const RoomLimits& limits) {
     ViewCapacity c{first.slots, first.masks.words};
     if (!manyViews) return c;
-    const uint64_t tiles = b.grid.count();
+    const uint64_t tiles = b.grid.count(), range = limits.maxStorageBufferRange;
+    uint64_t slotLimit =
+        std::min(addressableSlots(b), range / (uint64_t(limits.numLists) * (limits.linked ? 8 : 4)));
+    if (b.binned) // fp_params holds the candidates after the light indices and two offset arrays
+        slotLimit = std::min(slotLimit, range / 4 - 3 * tiles - 2 * b.classes->local.size() - 64);
+    const uint64_t maskWordLimit = range / 4;
     const uint64_t perTile = std::min<uint64_t>(kMinViewSlotsPerTile, b.classes->local.size());
     const uint64_t slots = std::max(kViewHeadroom * first.slots, tiles * perTile);
     c.slots = std::max(first.slots, std::min(slots, slotLimit));

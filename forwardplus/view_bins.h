@@ -58,10 +58,21 @@ struct ViewCapacity {
     bool holds(const ViewBins& v) const { return v.slots <= slots && v.masks.words <= maskWords; }
 };
 
+// The slots fp_params' 32-bit offsets address (after the light indices and tile offsets).
+uint64_t addressableSlots(const ViewBinning& b);
+
+// What the buffers the room goes into hold: the index buffer's lists (linked: 8-byte nodes),
+// fp_params' candidates, the mask words, each up to maxStorageBufferRange.
+struct RoomLimits {
+    uint64_t maxStorageBufferRange = 0;
+    uint32_t numLists = 1;
+    bool linked = false;
+};
+
 // The first view's need, or with `manyViews` the headroom over it: kViewHeadroom times it, at
-// least kMinViewSlotsPerTile per tile, kept within `slotLimit` (what 32-bit offsets and the
-// device's buffers address; never below the need, which the sizing refuses on its own).
+// least kMinViewSlotsPerTile per tile, kept within the limits (never below the need, which the
+// sizing refuses on its own).
 ViewCapacity planCapacity(const ViewBins& first, const ViewBinning& b, bool manyViews,
-                          uint64_t slotLimit, uint64_t maskWordLimit);
+                          const RoomLimits& limits);
 
 } // namespace tp::fp
