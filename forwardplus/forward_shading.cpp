@@ -55,22 +55,15 @@ void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
 // CPU device (lavapipe) the shaders read the lights from it when they all fit
 // (docs/forwardplus.md, "The per-light cost on lavapipe"); on a GPU, and past TP_FP_UBO_LIGHTS
 // lights, from the scene's storage buffer as before, and a one-light stand-in is bound. The
-// lights are fixed for a run.
+// light count and types are fixed for a plan; their positions follow the view (updateLights).
 void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
     const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
-    const std::vector<uint32_t> directional = la::classifyLights(lights).directional;
+    const size_t directional = la::classifyLights(lights).directional.size();
     constexpr VkDeviceSize kUboBytes = TP_FP_UBO_LIGHTS * sizeof(gpu::LightGpu);
     lightsUbo_ = ctx_.isCpuDevice() && !lights.empty() &&
-                 directional.size() + lights.size() <= TP_FP_UBO_LIGHTS &&
+                 directional + lights.size() <= TP_FP_UBO_LIGHTS &&
                  ctx_.properties.limits.maxUniformBufferRange >= kUboBytes;
-    // The directional lights first, in fp_params' order (ascending), then every light at its
-    // index plus their count: the shader's loop takes the i-th directional light as light i
-    // without loading its index (shading.frag).
-    std::vector<gpu::LightGpu> copy(TP_FP_UBO_LIGHTS, gpu::LightGpu{});
-    if (lightsUbo_) {
-        for (size_t k = 0; k < directional.size(); ++k) copy[k] = lights[directional[k]];
-        std::copy(lights.begin(), lights.end(), copy.begin() + directional.size());
-    }
+    const std::vector<gpu::LightGpu> copy = lightsCopy();
     const VkDeviceSize bytes = lightsUbo_ ? kUboBytes : sizeof(gpu::LightGpu);
     lightsUboBuffer_ = createBufferWithData(
         ctx_, copy.data(), bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -80,6 +73,26 @@ void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
     set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE,
                                {{TP_FP_BINDING_PARAMS, params},
                                 {TP_FP_BINDING_LIGHTS_UBO, lightsUboBuffer_.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
+}
+
+// The directional lights first, in fp_params' order (ascending), then every light at its
+// index plus their count: the shader's loop takes the i-th directional light as light i
+// without loading its index (shading.frag). Zeros when the shaders do not read it.
+std::vector<gpu::LightGpu> ForwardShading::lightsCopy() const {
+    std::vector<gpu::LightGpu> copy(TP_FP_UBO_LIGHTS, gpu::LightGpu{});
+    if (!lightsUbo_) return copy;
+    const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
+    const std::vector<uint32_t> directional = la::classifyLights(lights).directional;
+    for (size_t k = 0; k < directional.size(); ++k)
+        copy[k] = lights[directional[k]];
+    std::copy(lights.begin(), lights.end(), copy.begin() + directional.size());
+    return copy;
+}
+
+void ForwardShading::updateLights() {
+    if (!lightsUbo_) return;
+    const std::vector<gpu::LightGpu> copy = lightsCopy();
+    uploadBufferData(ctx_, lightsUboBuffer_, copy.data(), copy.size() * sizeof(gpu::LightGpu));
 }
 
 GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {

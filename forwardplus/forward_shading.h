@@ -3,6 +3,8 @@
 // prepass) and, when something blended is drawn, forward_transparent (blended draws back to
 // front, depth GREATER, alpha-blended), each fragment walking its tile's light list (its
 // cluster's bitmask when clustered). The last of them resolves hdr_msaa into hdr under MSAA.
+#include <vector>
+
 #include <vulkan/vulkan.h>
 
 #include "core/gpu/descriptors.h"
@@ -10,6 +12,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/render/msaa_knob.h"
+#include "include/shared.h"
 
 namespace tp {
 class GpuContext;
@@ -45,12 +48,16 @@ class ForwardShading {
     ForwardShading(const ForwardShading&) = delete;
     ForwardShading& operator=(const ForwardShading&) = delete;
     void plan(FrameGraph& graph, const ShadingTargets& t);
-    // params: fp_params (uploaded once, outside the graph).
+    // params: fp_params (uploaded outside the graph).
     void prepare(FrameGraph& graph, VkBuffer params);
+    // A new view (Renderer::updateView): the lights' uniform-buffer copy again, when the shaders
+    // read it (between frames).
+    void updateLights();
 
   private:
     std::vector<PassUse> uses(bool transparent) const;
     void createPassSet(FrameGraph& graph, VkBuffer params);
+    std::vector<gpu::LightGpu> lightsCopy() const; // what the uniform buffer holds
     GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
     void createMaterialPipelines(AlphaMode mode);
     void record(PassContext& pc, bool transparent);

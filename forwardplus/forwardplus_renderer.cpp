@@ -31,6 +31,7 @@
 #include "forwardplus/light_lists.h"
 #include "forwardplus/light_spheres.h"
 #include "forwardplus/list_counters.h"
+#include "forwardplus/view_bins.h"
 
 namespace tp {
 namespace {
@@ -42,7 +43,7 @@ class ForwardPlusRenderer final : public Renderer {
   public:
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          fp_(fp::readSettings(info.settings)) {
+          fp_(fp::readSettings(info.settings)), manyViews_(info.settings.manyViews) {
         gpuBinning_ = binned() && la::binsOnGpu(ctx_, fp_.assign.bin);
         // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
         // transform in every tile it is tested in); on a GPU the transform is cheap and the
@@ -75,9 +76,9 @@ class ForwardPlusRenderer final : public Renderer {
         twoLists_ = blendPass_ && !clustered();
         numLists_ = twoLists_ ? 2 : 1;
         classes_ = la::classifyLights(scene_.lightsGpu());
-        if (layout() != TP_FP_LAYOUT_FIXED || binned()) boundLists();
+        if (boundsLists()) boundLists();
         lists_ = fp::sizeLists(ctx_, {layout(), fp::listsText(fp_.lists), grid_.count(),
-                                      fp_.tileCapacity, boundSlots_, numLists_});
+                                      fp_.tileCapacity, cap_.slots, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
         if (blendPass_) blendBounds_.emplace(ctx_, scene_);
     }
@@ -107,7 +108,7 @@ class ForwardPlusRenderer final : public Renderer {
                 graph.createBuffer("node_counter", 16, "linked lists: node allocation counter");
         if (clustered())
             masks_ =
-                graph.createBuffer("cluster_masks", std::max<uint64_t>(maskLayout_.words * 4, 16),
+                graph.createBuffer("cluster_masks", std::max<uint64_t>(cap_.maskWords * 4, 16),
                                    "per tile and depth slice: a bitmask over the tile's list");
 
         prepass_.emplace(ctx_, scene_,
@@ -156,6 +157,27 @@ class ForwardPlusRenderer final : public Renderer {
         shading_->prepare(graph, params_.buffer);
     }
 
+    // A new view (the camera or the lights' positions): its bins on the CPU (or the GPU
+    // binning's sizing run) laid out in the planned lists, fp_params and the shading's lights
+    // copy uploaded again; the frame's passes (spheres, binning, culling) recompute the rest.
+    // false when the view outgrew the lists' room or the light types changed.
+    bool updateView(FrameGraph&) override {
+        const la::LightClasses classes = la::classifyLights(scene_.lightsGpu());
+        if (classes.directional != classes_.directional || classes.local != classes_.local)
+            return false; // fp_params' light classes and the shading's loop are planned
+        if (boundsLists()) {
+            fp::ViewBins bins = fp::binView(scene_, viewBinning());
+            if (!cap_.holds(bins) || (binning_ && !binning_->bigListFits())) return false;
+            bins_ = std::move(bins);
+        }
+        const fp::PackedParams packed = packParams();
+        if (packed.bytes.size() != params_.size) return false; // not laid out as planned
+        uploadBufferData(ctx_, params_, packed.bytes.data(), packed.bytes.size());
+        culling_->setMostTested(mostTested());
+        shading_->updateLights();
+        return true;
+    }
+
     void collectStats(FrameGraph& graph) override {
         std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(tiles_));
         tileLists_.resize(grid_.count());
@@ -202,18 +224,22 @@ class ForwardPlusRenderer final : public Renderer {
         add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);    // --light-spheres, resolved
         add("culling_by_subgroup", subgroupCull_ ? 1.0 : 0.0); // --cull-by, resolved
         if (binned())
-            add("binned_candidates", double(gpuBinning_ ? boundSlots_ : candidates_.size()));
+            add("binned_candidates", double(gpuBinning_ ? bins_.slots : bins_.candidates.size()));
         if (binned()) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered()) {
             add("slices", double(fp_.assign.slices));
-            add("cluster_mask_words", double(maskLayout_.words));
+            add("cluster_mask_words", double(bins_.masks.words));
             add("light_loop_subgroup",
                 subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
+        if (manyViews_ && boundsLists()) {
+            add("view_list_slots_needed", double(bins_.slots)); // this view's, of one list kind
+            add("view_list_slots_planned", double(cap_.slots)); // the room (kViewHeadroom)
+        }
         if (collected_) {
             static const std::vector<uint32_t> none;
-            fp::ListCounterInput in{tileLists_, blended_, binned() ? tileBound_ : none,
-                                    maskLayout_.offsets, maskBits_};
+            fp::ListCounterInput in{tileLists_, blended_, binned() ? bins_.bound : none,
+                                    bins_.masks.offsets, maskBits_};
             in.localLights = classes_.local.size();
             in.slices = fp_.assign.slices;
             in.twoLists = twoLists_;
@@ -268,7 +294,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (binned() && !gpuBinning_)
             s.leftOut.push_back({"light_binning pass (GPU binning)",
                                  "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
-                                     " resolved to cpu: candidates built once per configuration"});
+                                     " resolved to cpu: candidates built on the CPU per view"});
         if (!clustered())
             s.leftOut.push_back(
                 {"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
@@ -299,51 +325,62 @@ class ForwardPlusRenderer final : public Renderer {
              "RGBA32F; each rounding below one ulp, <= 2^-10 relative; values saturate at 65504)"});
     }
 
-    // The conservative tile rectangle of every local light (CPU, once per configuration: the
-    // lights and the camera are fixed for a run), counted per tile: the compact layout's
-    // bound; with binned culling also each tile's candidates, in ascending light order.
+    // Whether the lists' layout follows the view: the compact and linked layouts' bound, binned
+    // culling's candidates (fixed, unbinned: nothing to bin).
+    bool boundsLists() const { return layout() != TP_FP_LAYOUT_FIXED || binned(); }
+
+    fp::ViewBinning viewBinning() {
+        return {grid_, &classes_, binned(), clustered(), fp_.assign.slices, binning_.get()};
+    }
+
+    // The conservative tile rectangle of every local light (CPU, per view: updateView bins
+    // again), counted per tile: the compact layout's bound; with binned culling also each
+    // tile's candidates, in ascending light order. The plan's room: cap_.
     void boundLists() {
-        // The uploaded (camera-relative) view and lights: what the culling shader tests.
-        const gpu::FrameUniforms& f = scene_.shadingFrame();
-        // --light-bin gpu: the frame builds the candidates; one plan-time run sizes them.
+        // --light-bin gpu: the frame builds the candidates; a sizing run per view sizes them.
         if (gpuBinning_)
             binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local,
-                                                        "forwardplus");
-        la::LightBins bins = gpuBinning_
-                                 ? binning_->sizes()
-                                 : la::binLights(grid_, f.view, f.proj, scene_.shadingLights(),
-                                                 classes_.local, binned());
-        tileBound_ = std::move(bins.bound);
-        tileOffsets_ = std::move(bins.offsets);
-        boundSlots_ = bins.slots;
-        maxBound_ = bins.maxBound;
+                                                        "forwardplus", manyViews_);
+        bins_ = fp::binView(scene_, viewBinning());
         // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
-        if (boundSlots_ > 0xffffffffull - classes_.local.size() - grid_.count() - 64)
+        if (bins_.slots > fp::addressableSlots(viewBinning()))
             throw RendererError(
-                "the tile lists need " + std::to_string(boundSlots_) +
+                "the tile lists need " + std::to_string(bins_.slots) +
                 " slots, more than 32-bit offsets address; use a larger --tile, a lower --res or "
                 "fewer lights");
-        candidates_ = std::move(bins.candidates);
-        if (clustered()) maskLayout_ = fp::sizeMasks(ctx_, tileBound_, fp_.assign.slices);
+        if (clustered()) bins_.masks = fp::sizeMasks(ctx_, bins_.bound, fp_.assign.slices);
+        cap_ = fp::planCapacity(bins_, viewBinning(), manyViews_,
+                                {ctx_.caps.maxStorageBufferRange, numLists_,
+                                 layout() == TP_FP_LAYOUT_LINKED});
+    }
+
+    // fp_params for the current view, laid out in the planned room (the same bytes every view).
+    fp::PackedParams packParams() const {
+        fp::ParamsInput in;
+        in.grid = grid_;
+        in.classes = &classes_;
+        in.layout = layout();
+        in.binned = binned();
+        in.tileOffsets = &bins_.offsets;
+        in.candidates = &bins_.candidates;
+        in.candidateSlots = binned() ? cap_.slots : 0;
+        in.maskOffsets = &bins_.masks.offsets;
+        in.tileCapacity = fp_.tileCapacity;
+        in.lists = lists_;
+        return fp::packParams(ctx_, in);
     }
 
     void createParams() {
-        fp::ParamsInput in{grid_,
-                           &classes_,
-                           layout(),
-                           binned(),
-                           gpuBinning_,
-                           &tileOffsets_,
-                           &candidates_,
-                           boundSlots_,
-                           &maskLayout_.offsets,
-                           fp_.tileCapacity,
-                           lists_};
-        fp::PackedParams packed = fp::packParams(ctx_, in);
+        fp::PackedParams packed = packParams();
         candidateWord_ = packed.candidateWord;
         params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(),
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        {"forwardplus", "", "fp_params", packed.purpose});
+    }
+
+    // The most lights a tile tests: the culling's batches.
+    uint32_t mostTested() const {
+        return binned() ? bins_.maxBound : uint32_t(classes_.local.size());
     }
 
     // The culling pass's configuration: what its shader variant, batches and dispatches depend on.
@@ -353,7 +390,7 @@ class ForwardPlusRenderer final : public Renderer {
         c.layout = layout();
         c.samples = samples();
         c.slices = fp_.assign.slices;
-        c.mostTested = binned() ? maxBound_ : uint32_t(classes_.local.size());
+        c.mostTested = mostTested();
         c.binned = binned();
         c.clustered = clustered();
         c.twoLists = twoLists_;
@@ -365,7 +402,7 @@ class ForwardPlusRenderer final : public Renderer {
 
     void createDescriptors(FrameGraph& graph) {
         if (spherePass_) spheres_.prepare(graph);
-        // fp_params is uploaded once in prepare(), outside the graph.
+        // fp_params is uploaded in prepare() and updateView(), outside the graph.
         culling_->prepare(graph, params_.buffer);
         if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
     }
@@ -388,12 +425,11 @@ class ForwardPlusRenderer final : public Renderer {
     bool subgroupCull_ = false;   // --cull-by resolved: one subgroup culls a tile
     bool subgroupLoop_ = false;   // clustered, --light-loop subgroup, and the device runs it
     std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
-    fp::MaskLayout maskLayout_;   // clustered: the slice rows' word offsets per tile
+    bool manyViews_ = false;         // RenderSettings::manyViews: the lists get headroom
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
-    std::vector<uint32_t> tileBound_, tileOffsets_, candidates_;
-    uint64_t boundSlots_ = 0;
-    uint32_t maxBound_ = 0; // binned: the most candidates of any tile (the culling batches' range)
+    fp::ViewBins bins_;              // the current view's bound, offsets, candidates, mask rows
+    fp::ViewCapacity cap_;           // what the plan's buffers hold (fp::planCapacity)
     bool gpuBinning_ = false;                 // --light-bin resolved to gpu (binned only)
     std::unique_ptr<la::GpuBinning> binning_; // then: the light_binning pass
     uint64_t candidateWord_ = 0;              // the candidates' first word in fp_params

@@ -50,9 +50,12 @@ class LightCulling {
         : ctx_(ctx), scene_(scene), config_(config) {}
     ~LightCulling();
     void plan(FrameGraph& graph, const CullResources& r);
-    // params: fp_params, uploaded once outside the graph.
+    // params: fp_params, uploaded outside the graph.
     void prepare(FrameGraph& graph, VkBuffer params);
     uint32_t dispatches() const { return dispatches_; } // batches of candidates
+    // A new view's most tested lights (binned: its longest candidate run): the batches of the
+    // next recording.
+    void setMostTested(uint32_t mostTested) { config_.mostTested = mostTested; }
 
   private:
     uint32_t batchSize() const;

@@ -41,7 +41,7 @@ ListSizes sizeLists(const GpuContext& ctx, const ListConfig& c) {
     return s;
 }
 
-MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, uint32_t slices) {
+MaskLayout layoutMasks(const std::vector<uint32_t>& bound, uint32_t slices) {
     MaskLayout m;
     m.offsets.assign(bound.size() + 1, 0);
     for (size_t t = 0; t < bound.size(); ++t) {
@@ -49,6 +49,11 @@ MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, 
         m.words += uint64_t(slices) * ((bound[t] + 31) / 32);
     }
     m.offsets.back() = uint32_t(std::min<uint64_t>(m.words, 0xffffffffu));
+    return m;
+}
+
+MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, uint32_t slices) {
+    MaskLayout m = layoutMasks(bound, slices);
     if (m.words * 4 > ctx.caps.maxStorageBufferRange)
         throw RendererError("the cluster bitmasks need " + std::to_string(m.words * 4) +
                             " bytes, more than maxStorageBufferRange (" +
@@ -71,7 +76,8 @@ PackedParams packParams(const GpuContext& ctx, const ParamsInput& in) {
     if (offsets) data.insert(data.end(), in.tileOffsets->begin(), in.tileOffsets->end());
     const uint32_t candidateBase = uint32_t(data.size());
     data.insert(data.end(), in.candidates->begin(), in.candidates->end());
-    if (in.gpuBinning) data.resize(data.size() + in.boundSlots, 0); // light_binning writes them
+    // The rest of the room: zeros (under gpu binning light_binning writes the runs there).
+    data.resize(std::max<uint64_t>(data.size(), uint64_t(candidateBase) + in.candidateSlots), 0);
     const uint32_t maskOffsetBase = uint32_t(data.size());
     data.insert(data.end(), in.maskOffsets->begin(), in.maskOffsets->end());
     data.push_back(0); // never empty

@@ -1,8 +1,10 @@
 #pragma once
-// Forward+'s light-list memory, sized once per configuration on the CPU (the lights and the
-// camera are fixed for a run): the index buffer of the chosen layout (fixed, compact,
-// linked) and, with --light-assign clustered, the depth slices' bitmasks. Each refuses,
-// with one line naming the knobs that shrink it, what maxStorageBufferRange cannot hold.
+// Forward+'s light-list memory, sized on the CPU when the renderer is planned: the index buffer
+// of the chosen layout (fixed, compact, linked) and, with --light-assign clustered, the depth
+// slices' bitmasks. Each refuses, with one line naming the knobs that shrink it, what
+// maxStorageBufferRange cannot hold. The sizes are capacities: a later view (updateView) lays
+// its lists out inside them, or the renderer is planned again (docs/forwardplus.md, "Many
+// views").
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,20 +45,23 @@ struct MaskLayout {
     uint64_t words = 0;
 };
 
+// The layout of `bound`'s rows; sizeMasks also refuses words past maxStorageBufferRange.
+MaskLayout layoutMasks(const std::vector<uint32_t>& bound, uint32_t slices);
 MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, uint32_t slices);
 
 // fp_params: FpParams, then its words - the directional and local light indices, the
 // per-tile offsets (compact layout or binned culling), the binned candidates (zeros that
-// light_binning fills under --light-bin gpu), the clusters' mask-row offsets - uploaded
-// once per configuration. Refuses, in one line, what maxStorageBufferRange cannot hold.
+// light_binning fills under --light-bin gpu) in room for `candidateSlots`, the clusters'
+// mask-row offsets - uploaded when planned and again for every view (the same size: the
+// candidates' room is a capacity). Refuses, in one line, what maxStorageBufferRange cannot hold.
 struct ParamsInput {
     la::TileGrid grid;
     const la::LightClasses* classes = nullptr;
     uint32_t layout = 0; // TP_FP_LAYOUT_*
-    bool binned = false, gpuBinning = false;
+    bool binned = false;
     const std::vector<uint32_t>* tileOffsets = nullptr;
     const std::vector<uint32_t>* candidates = nullptr; // CPU binning's; empty under gpu
-    uint64_t boundSlots = 0;                           // gpu binning: the candidates' slots
+    uint64_t candidateSlots = 0; // binned: the candidates' room (>= candidates->size())
     const std::vector<uint32_t>* maskOffsets = nullptr;
     uint32_t tileCapacity = 0;
     ListSizes lists;

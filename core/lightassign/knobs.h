@@ -23,8 +23,8 @@ enum class Assign { Tiled, Clustered };
 // light (brute force, tiles x lights), kept as the yardstick the binned lists must equal.
 enum class Cull { Binned, All };
 // --light-bin auto|cpu|gpu: where binned culling's candidate runs are built. cpu:
-// la::binLights, once per configuration (light_bins.h); gpu: the light_binning compute pass
-// every frame (core/passes/light_binning.h), after one plan-time run that sizes the buffers; auto
+// la::binLights, when planned and for every new view (light_bins.h); gpu: the light_binning
+// compute pass every frame (core/passes/light_binning.h), after a sizing run per view; auto
 // (default): cpu on a CPU device (lavapipe: the "GPU" is the same cores and the serial
 // scatter is cheapest), gpu otherwise. Meaningful only under --light-cull binned.
 enum class Bin { Auto, Cpu, Gpu };

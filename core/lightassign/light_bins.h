@@ -2,8 +2,9 @@
 // Light binning on the CPU, shared by the pipelines that cull per tile (Forward+, tiled
 // deferred): every local light's conservative tile rectangle (tile_bound.h), counted per
 // tile (the bound), laid out compactly (compact_layout.h) and, for binned culling, each
-// tile's candidates (tile_candidates.h). Once per configuration: the lights and the camera
-// are fixed for a run. Each pipeline keeps its own size limits and error messages.
+// tile's candidates (tile_candidates.h). When a renderer is planned, and again for every new
+// view of a renderer that follows the camera and the lights (Renderer::updateView). Each
+// pipeline keeps its own size limits and error messages.
 #include <cstdint>
 #include <vector>
 

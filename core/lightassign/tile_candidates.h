@@ -2,8 +2,8 @@
 // Binned culling's candidate lists: for every tile, the local lights whose conservative tile
 // rectangle (tile_bound.h) covers it, in ascending light order. The GPU then tests only a
 // tile's candidates instead of every light, so culling costs
-// lights * (tilesX + tilesY) on the CPU (the rectangles, once per configuration: the lights
-// and the camera are fixed for a run) plus the candidates on the GPU, never tiles x lights.
+// lights * (tilesX + tilesY) on the CPU (the rectangles, per view: when planned and when the
+// camera or the lights move) plus the candidates on the GPU, never tiles x lights.
 // The candidates of a tile are a superset of what the GPU keeps (its test is a subset of the
 // rectangle's volume), so the kept lists are exactly brute-force culling's, in the same order.
 #include <cstdint>

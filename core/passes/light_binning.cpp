@@ -39,28 +39,18 @@ uint32_t sortSize(uint32_t n) {
 } // namespace
 
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-                       const std::vector<uint32_t>& local, std::string owner)
+                       const std::vector<uint32_t>& local, std::string owner, bool everyBigLight)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
-      owner_(std::move(owner)) {
+      owner_(std::move(owner)), everyBigLight_(everyBigLight) {
     // Its largest buffer: the light list, bound whole.
     if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
                             " point/spot lights needs more than maxStorageBufferRange (" +
                             std::to_string(ctx_.caps.maxStorageBufferRange) + ") of " +
                             ctx_.info.name + "; use --light-bin cpu or fewer lights");
-    // Uploaded once per configuration: the grid and its slab planes (the CPU's floats), the lights
-    // to bin.
-    const std::vector<glm::vec4> slabs = binSlabPlanes(grid_, scene_.shadingFrame().proj);
-    gpu::BinInputs in{};
-    const uint32_t X = grid_.tilesX, Y = grid_.tilesY;
-    in.grid = glm::uvec4(X, Y, grid_.count(), locals_);
-    in.slabs = glm::uvec4(0, X, 2 * X, 2 * X + Y);
-    std::vector<uint8_t> bytes(sizeof(in) + slabs.size() * sizeof(glm::vec4));
-    std::memcpy(bytes.data(), &in, sizeof(in));
-    std::memcpy(bytes.data() + sizeof(in), slabs.data(), slabs.size() * sizeof(glm::vec4));
-    inputs_ = createBufferWithData(
-        ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-        {owner_, "light_binning", "light_bin_inputs", "GPU binning: tile grid, slab planes"});
+    // The lights to bin, once per configuration; the grid and its slab planes (the CPU's floats)
+    // per view (uploadInputs).
+    uploadInputs();
     std::vector<uint32_t> list = local.empty() ? std::vector<uint32_t>{0} : local;
     localList_ = createBufferWithData(
         ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -90,6 +80,26 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
     }
 }
 
+// The grid and the slab planes of the uploaded projection: made at the first call, overwritten
+// in place when a new view's projection moves the planes.
+void GpuBinning::uploadInputs() {
+    const std::vector<glm::vec4> slabs = binSlabPlanes(grid_, scene_.shadingFrame().proj);
+    gpu::BinInputs in{};
+    const uint32_t X = grid_.tilesX, Y = grid_.tilesY;
+    in.grid = glm::uvec4(X, Y, grid_.count(), locals_);
+    in.slabs = glm::uvec4(0, X, 2 * X, 2 * X + Y);
+    std::vector<uint8_t> bytes(sizeof(in) + slabs.size() * sizeof(glm::vec4));
+    std::memcpy(bytes.data(), &in, sizeof(in));
+    std::memcpy(bytes.data() + sizeof(in), slabs.data(), slabs.size() * sizeof(glm::vec4));
+    if (!inputs_.buffer)
+        inputs_ = createBufferWithData(
+            ctx_, bytes.data(), bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            {owner_, "light_binning", "light_bin_inputs", "GPU binning: tile grid, slab planes"});
+    else if (bytes != inputBytes_)
+        uploadBufferData(ctx_, inputs_, bytes.data(), bytes.size());
+    inputBytes_ = std::move(bytes);
+}
+
 GpuBinning::~GpuBinning() {
     destroyPipelines();
 }
@@ -114,7 +124,8 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
 }
 
 LightBins GpuBinning::sizes() {
-    // Plan-time buffers, freed on return; the frame's live in its graph.
+    uploadInputs();
+    // Sizing buffers, freed on return; the frame's live in its graph.
     const VkBufferUsageFlags usage =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     auto make = [&](uint64_t words, const char* name) {
@@ -152,6 +163,7 @@ LightBins GpuBinning::sizes() {
         bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
     maxBound_ = bins.maxBound;
     bigLights_ = words(big, 1)[0];
+    if (target_) bind(frame_, target_); // a later view's sizing: the frame's buffers again
     return bins;
 }
 
@@ -163,8 +175,9 @@ void GpuBinning::plan(FrameGraph& graph) {
                                   "GPU binning: each tile's first candidate (prefix sum)");
     rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4,
                                "GPU binning: per row, its scans' sum");
+    bigCapacity_ = everyBigLight_ ? locals_ : bigLights_;
     big_ = graph.createBuffer(
-        "light_bin_big", (uint64_t(bigLights_) + 1) * 4,
+        "light_bin_big", (uint64_t(bigCapacity_) + 1) * 4,
         "GPU binning: the lights of large rectangles, filled by a workgroup each");
     // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
     // the sort. Their runs go to a buffer outside the graph (ordered by hand-written barriers).
@@ -175,7 +188,7 @@ void GpuBinning::plan(FrameGraph& graph) {
                    {big_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
-                      recordSizing(pc.cmd, bigLights_);
+                      recordSizing(pc.cmd, bigCapacity_);
                   });
     graph.addPass(
         "light_bin_fill",
@@ -201,9 +214,10 @@ void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) 
     if (baseWord > 0xffffffffull)
         throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
-    bind({graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer, graph.buffer(rows_).buffer,
-          graph.buffer(big_).buffer},
-         target);
+    frame_ = {graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer,
+              graph.buffer(rows_).buffer, graph.buffer(big_).buffer};
+    target_ = target;
+    bind(frame_, target_);
 }
 
 void GpuBinning::begin(VkCommandBuffer cmd) {

@@ -21,7 +21,9 @@
 //                (bitonic steps within a block in shared memory, across blocks a dispatch each)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
 // steps 1-4 once, then readbacks of the counts, the offsets and the big list's length: the
-// numbers the CPU path gives.
+// numbers the CPU path gives. A renderer that follows a new view (Renderer::updateView) calls
+// sizes() again for it: the slab planes follow the projection, the sort and the fill follow the
+// new longest run and big list, and the frame's buffers are bound again afterwards.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,17 +45,23 @@ class GpuBinning {
   public:
     // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
     // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
+    // everyBigLight: the big list holds every light (4 bytes each), so no view outgrows it
+    // (RenderSettings::manyViews); otherwise it holds the lights of the view sizes() first saw.
     GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-               const std::vector<uint32_t>& local, std::string owner);
+               const std::vector<uint32_t>& local, std::string owner, bool everyBigLight = false);
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
 
-    // Plan time: steps 1-4 on the GPU, read back. bound, offsets, slots, maxBound; no candidates.
+    // For the scene's current view (plan time, and again per view): steps 1-4 on the GPU, read
+    // back. bound, offsets, slots, maxBound; no candidates. Between frames (it waits).
     LightBins sizes();
     // From sizes(): how many lights the fill gives a workgroup each (more than TP_BIN_BIG_RECT
     // tiles).
     uint32_t bigLights() const { return bigLights_; }
+    // Whether the big list plan() made holds the last sizes()'s lights; false: the view outgrew
+    // it (the renderer plans again).
+    bool bigListFits() const { return bigLights_ <= bigCapacity_; }
     // The frame: passes "light_binning" (steps 1-4), "light_bin_fill" (5), "light_bin_sort" (6),
     // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_counts).
     void plan(FrameGraph& graph);
@@ -67,6 +75,7 @@ class GpuBinning {
     };
     void destroyPipelines(); // and the layout and pass set
     void bind(const Bufs& b, VkBuffer target);
+    void uploadInputs(); // the grid and the slab planes of the current projection
     void recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity);
     void recordFill(VkCommandBuffer cmd);
     void recordSort(VkCommandBuffer cmd);
@@ -85,7 +94,12 @@ class GpuBinning {
     uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
     uint32_t bigLights_ =
         0; // from sizes(): lights whose rectangle covers more than TP_BIN_BIG_RECT tiles
+    bool everyBigLight_ = false;
+    uint32_t bigCapacity_ = 0; // plan(): the big list's lights
     Buffer inputs_, localList_;
+    std::vector<uint8_t> inputBytes_; // what inputs_ holds
+    Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()
+    VkBuffer target_ = VK_NULL_HANDLE;
     ResourceHandle counts_, offsets_, rows_, big_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;

@@ -30,7 +30,7 @@ std::string nameOf(const Config& c) {
 // The pipelines whose updateView follows these views without a replan (each one's own change
 // adds it here, with the test below as its proof).
 const std::set<std::string> kFollowsInPlace = {"reference", "multipass_forward", "deferred",
-                                                "visbuffer"};
+                                                "visbuffer", "forwardplus"};
 
 std::vector<Config> configs() {
     return {
