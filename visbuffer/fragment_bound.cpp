@@ -93,7 +93,8 @@ Poly clipPoly(const Poly& in, int axis, double at, double sign) {
         const glm::dvec2 p = in.p[i], q = in.p[(i + 1) % in.n];
         const double dp = sign * (p[axis] - at), dq = sign * (q[axis] - at);
         if (dp <= 0) out.p[out.n++] = p;
-        if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) out.p[out.n++] = p + (q - p) * (dp / (dp - dq));
+        if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))
+            out.p[out.n++] = p + (q - p) * (dp / (dp - dq));
     }
     return out;
 }

@@ -32,8 +32,8 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
     if (slices == 0 || !sliceRows) return;
     // Clustered: slice rows over the lists for the blended pass (include/tiled_lighting.h:
     // defClusterRowsBase).
-    const uint64_t words = 2ull * tiles + uint64_t(slices) * (lists.masks ? lists.capacity
-                                                                          : lists.capacity / 32 + tiles);
+    const uint64_t rowWords = lists.masks ? lists.capacity : lists.capacity / 32 + tiles;
+    const uint64_t words = 2ull * tiles + uint64_t(slices) * rowWords;
     if (words * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError(graph.owner() + ": the transparent slice rows need " +
                             std::to_string(words * 4) +

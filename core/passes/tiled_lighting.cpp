@@ -159,7 +159,8 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
     const uint32_t tiles = t_.grid.count();
     if (binned_) {
         la::LightClasses classes = la::classifyLights(scene_.shadingLights());
-        const uint64_t fixed = uint64_t(TP_DEF_CAND_HEADER) + classes.directional.size() + tiles + 1;
+        const uint64_t fixed =
+            uint64_t(TP_DEF_CAND_HEADER) + classes.directional.size() + tiles + 1;
         // The buffer's size from the unclamped slot count: refused before it is built.
         const uint64_t bytes = (fixed + bins_.slots) * 4;
         if (bytes > ctx_.caps.maxStorageBufferRange)

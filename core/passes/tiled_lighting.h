@@ -110,8 +110,9 @@ class TiledLighting {
               ResourceHandle blendBounds = {});
     void prepare(FrameGraph& graph);
     // Binned: each tile's candidate count (per point/spot light rectangle covering it; the
-    // transparent lists are sized from it too), binned once per configuration, on the CPU or
-    // (gpuBinning) by the plan-time run of the GPU binning. plan() bins if nobody asked before.
+    // transparent lists are sized from it too) for the scene's current view, on the CPU or
+    // (gpuBinning) by the plan-time run of the GPU binning: first for the planned view (plan()
+    // bins if nobody asked before), then for each new one by updateView.
     const std::vector<uint32_t>& bound(const la::TileGrid& grid, const std::string& owner);
     // A new view (camera or lights moved; SceneGpu holds them): the lights binned again for it
     // (CPU: la::binLights; GPU binning: its sizing run again) and the candidates' header,

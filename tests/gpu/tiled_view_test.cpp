@@ -100,7 +100,8 @@ TEST_P(TiledView, BinsTheLightsAgainForEachViewWithoutAReplan) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DeferredAndVisbuffer, TiledView,
-                         ::testing::Values(TiledViewCase{"deferred", "cpu"}, TiledViewCase{"deferred", "gpu"},
+                         ::testing::Values(TiledViewCase{"deferred", "cpu"},
+                                           TiledViewCase{"deferred", "gpu"},
                                            TiledViewCase{"visbuffer", "cpu"}),
                          [](const ::testing::TestParamInfo<TiledViewCase>& info) {
                              return info.param.pipeline + "_" + info.param.bin;
