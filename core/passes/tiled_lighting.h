@@ -154,7 +154,6 @@ class TiledLighting {
     uint64_t slotCapacity_ = 0;          // binned: candidate run slots the buffer holds
     std::vector<uint32_t> directional_;  // binned: the directional lights planned for
     glm::mat4 binnedProj_{1.0f};         // GPU binning: the projection its slabs are for
-    uint32_t bigCapacity_ = 0;           // GPU binning: its big list's planned length
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
     la::LightBins bins_; // binned: the runs (CPU) or their sizes (GPU: no candidates)
     bool binnedOnce_ = false;
