@@ -13,6 +13,7 @@
 #include "compare/calibration_file.h"
 #include "compare/reference_cache.h"
 #include "compare/commands.h"
+#include "compare/path_run.h"
 #include "compare/report_json.h"
 #include "compare/run_json.h"
 #include "compare/scene_hash.h"
@@ -297,7 +298,23 @@ struct GroupRunner {
     std::shared_ptr<const CeilingRates> ceilings; // null: no calibration
     size_t index = 0; // the next run's number
 
-    void run(SceneGpu& gpuScene, int lights, const std::string& lightsHash, const View& view) {
+    // --camera-path: a pipeline row's timing pass over the path (compare/path_run.h), then the
+    // scene back at the path's first view for the next run.
+    void runPath(Scene& scene, SceneGpu& gpuScene, const PathInput& path, SweepRow& row) {
+        if (row.pipeline == kReferenceRenderer || row.status != "ok") return;
+        PathRunSetup setup{ctx, scene, gpuScene, analyzeScene(scene, row.s.msaa), row.s, {row.pipeline},
+                           o.warmup, o.frames};
+        PathSeries series = timePath(setup, path, row.pipeline);
+        applyPathView(scene, gpuScene, path, 0);
+        row.path = seriesJson(series);
+        row.path["views"] = path.views.size();
+        if (series.error.empty()) return;
+        row.status = "failed";
+        row.error = "path: " + series.error;
+    }
+
+    void run(Scene& scene, SceneGpu& gpuScene, int lights, const std::string& lightsHash,
+             const View& view, const std::optional<PathInput>& path) {
         std::vector<std::pair<std::string, RenderSettings>> runs;
         for (const std::string& name : names)
             for (const RenderSettings& s : knobCombos(name, o, view.settings))
@@ -319,6 +336,7 @@ struct GroupRunner {
             if (!owned) continue; // another shard's row: its figures are that shard's
             rows.push_back(measureRun(name, lights, s, result, ref, ctx));
             SweepRow& row = rows.back();
+            if (path) runPath(scene, gpuScene, *path, row);
             row.seconds = secondsSince(start);
             row.lightsHash = lightsHash;
             row.runIndex = index;
@@ -340,6 +358,7 @@ int runSweep(const SweepOptions& o) {
     if (o.referenceFrames > 0) names.insert(names.begin(), kReferenceRenderer);
     if (!o.scene.cameraFile.empty())
         readCameraOption(o.scene.cameraFile); // refuse before any GPU work
+    loadPathInput(o.path, Scene{}, o.scene.seed); // likewise (read again per scene: its lights)
     std::vector<int> lightCounts;
     for (const std::string& s : splitList(o.lights, "--lights"))
         lightCounts.push_back(toInt(s, "--lights"));
@@ -372,10 +391,14 @@ int runSweep(const SweepOptions& o) {
         so.lightCount = lights;
         CameraSource camera;
         Scene scene = loadScene(so, &camera);
+        const std::optional<PathInput> path = loadPathInput(o.path, scene, o.scene.seed);
+        if (path) scene.camera = path->views.front(); // every row's single view: the first
         if (header.is_null()) header = sweepHeader(o, scene, camera, *ctx);
+        if (path) header["path"] = {{"source", path->source}, {"views", path->views.size()},
+                                    {"light_motion", path->lightMotion}};
         SceneGpu gpuScene(*ctx, scene);
         for (const View& view : views)
-            group.run(gpuScene, lights, hashLights(scene.lights), view);
+            group.run(scene, gpuScene, lights, hashLights(scene.lights), view, path);
     }
     header["shard"] = {{"index", shard.index}, {"count", shard.count}, {"runs", group.index}};
     header["sweep_id_fnv1a64"] = sweepId(header);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/cli_common.h"
+#include "compare/path_options.h"
 
 namespace tp::cli {
 
@@ -32,6 +33,9 @@ struct SweepOptions {
     std::string referenceCache; // --reference-cache (compare/reference_cache.h)
     bool noReferenceCache = false;
     std::string calibration = "auto"; // --calibration (compare/calibration_file.h)
+    // --camera-path / --light-motion: every row's single view is the path's first; each
+    // pipeline row also runs the path's timing pass (compare/path_run.h): its percentiles.
+    PathOptions path;
     // --shard K/N: only the runs whose index in the unsharded order is K modulo N (0 <= K < N);
     // `triptych merge` puts the shards back together (docs/scale-out.md).
     std::string shard;

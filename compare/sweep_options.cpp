@@ -90,6 +90,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
                    "Output directory (created if missing) for sweep.csv, sweep.json and sweep.html")
         ->capture_default_str();
     addDeviceOptions(cmd, o.device);
+    addPathOptions(cmd, o.path);
 }
 
 } // namespace tp::cli

@@ -57,6 +57,16 @@ std::string efficiencyFields(const SweepRow& r) {
 
 } // namespace
 
+// A row's path columns: empty where the row ran no path (the reference, a failed run).
+static std::string pathFields(const nlohmann::json& path) {
+    if (path.is_null() || path["summary"]["frame_ms"].is_null()) return ",,,,,,";
+    const nlohmann::json& f = path["summary"]["frame_ms"];
+    const nlohmann::json& u = path["summary"]["view_update_ms"];
+    return std::to_string(path["frame_ms"].size()) + "," + number(f["median"]) + "," +
+           number(f["p95"]) + "," + number(f["p99"]) + "," + number(f["max"]) + "," +
+           number(u["median"]) + "," + std::to_string(path["replans"].get<uint32_t>());
+}
+
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device) {
     // One column per sweepable knob of the registered pipelines (their key), in registration order.
     std::vector<Knob> columns;
@@ -72,7 +82,14 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
          "rmse_hdr_center,psnr_hdr_center,max_abs_hdr_center,rmse_tonemapped_center,psnr_"
          "tonemapped_center,"
          "max_abs_tonemapped_center,lights_dropped,ceiling_sum_ms,ceiling_percent,slowest_pass,"
-         "slowest_pass_ceiling,slowest_pass_ceiling_percent,device,error\n";
+         "slowest_pass_ceiling,slowest_pass_ceiling_percent,";
+    // With --camera-path: the path's frame-time percentiles (sweep.json has every view).
+    const bool paths = std::any_of(rows.begin(), rows.end(),
+                                   [](const SweepRow& r) { return !r.path.is_null(); });
+    if (paths)
+        t += "path_views,path_frame_median_ms,path_frame_p95_ms,path_frame_p99_ms,"
+             "path_frame_max_ms,path_view_update_median_ms,path_replans,";
+    t += "device,error\n";
     for (const SweepRow& r : rows) {
         t += csvField(r.pipeline) + "," + std::to_string(r.lights) + "," +
              std::to_string(r.s.width) + "," + std::to_string(r.s.height) + "," +
@@ -84,7 +101,8 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
              "," + errorFields(r.measured, r.hdr) + "," + errorFields(r.measured, r.display) + "," +
              flipFields(r) + "," + errorFields(r.measuredCenter, r.hdrCenter) + "," +
              errorFields(r.measuredCenter, r.displayCenter) + "," + number(r.dropped) + "," +
-             efficiencyFields(r) + "," + csvField(device) + "," + csvField(r.error) + "\n";
+             efficiencyFields(r) + "," + (paths ? pathFields(r.path) + "," : std::string()) +
+             csvField(device) + "," + csvField(r.error) + "\n";
     }
     return t;
 }
@@ -100,6 +118,7 @@ nlohmann::json sweepJson(nlohmann::json header, const std::vector<SweepRow>& row
                             {"wall_seconds", r.seconds},
                             {"run_index", r.runIndex}};
         if (!r.referenceCache.is_null()) j["reference_cache"] = r.referenceCache;
+        if (!r.path.is_null()) j["path"] = r.path;
         if (r.status != "ok")
             j["error"] = r.error;
         else {

@@ -33,6 +33,7 @@ struct SweepRow {
     std::string lightsHash;
     nlohmann::json referenceCache; // reference rows: where the run came from (reference_cache.h)
     size_t runIndex = 0;           // in the unsharded sweep's order (sweep.json: run_index)
+    nlohmann::json path;           // --camera-path: seriesJson of its timing pass (path_run.h)
 };
 
 std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& device);

@@ -56,6 +56,15 @@ problem=""
 [ -z "$problem" ] && [ "$(json "$work/m/render.json" "(j['path']['views'], j['path']['light_motion'])")" != "(3, 'drift:0.05')" ] && problem="$(json "$work/m/render.json" "j['path']")"
 report "--light-motion alone renders --path-frames views" "$problem"
 
+# sweep: each pipeline row runs the path too; sweep.csv gets its percentile columns.
+run_triptych sweep builtin:courtyard-small --res 64x40 --lights 16 --frames 1 --no-reference-cache \
+    --pipelines forwardplus,deferred --camera-path "$work/path.json" --out "$work/w"
+problem=""
+[ "$code" -ne 0 ] && problem="exit code $code"
+[ -z "$problem" ] && [ "$(python3 -c "import csv,sys; print(sorted((r['pipeline'], r['path_views'], r['path_replans']) for r in csv.DictReader(open(sys.argv[1]))))" "$work/w/sweep.csv" 2>&1)" != "[('deferred', '4', '0'), ('forwardplus', '4', '0'), ('reference', '', '')]" ] && problem="sweep.csv path columns: $(head -2 "$work/w/sweep.csv")"
+[ -z "$problem" ] && [ "$(json "$work/w/sweep.json" "j['path']['views']")" != 4 ] && problem="sweep.json has no path"
+report "sweep --camera-path: path percentiles per pipeline row" "$problem"
+
 # Refusals: one line, exit 2, nothing written.
 echo '{"schema":"triptych.camera_path/1","frames":4,"interpolation":"linear","keys":[],"speed":1}' >"$work/bad.json"
 for args in "--camera-path $work/missing.json|camera path file not found" \
@@ -64,7 +73,7 @@ for args in "--camera-path $work/missing.json|camera path file not found" \
     "--light-motion orbit:0|--light-motion" \
     "--path-frames 0|--path-frames"; do
     mention=${args#*|}
-    for cmd in compare render; do
+    for cmd in compare render sweep; do
         # shellcheck disable=SC2086
         run_triptych $cmd builtin:courtyard-small ${args%|*} --out "$work/cwd/out"
         report "$cmd ${args%|*} refused" "$(error_problem "$work/cwd/out" "$mention" 2)"
