@@ -13,6 +13,9 @@ class GpuContext;
 ImageRGBA readbackColor(GpuContext& ctx, const Image& image);
 // D32_SFLOAT depth (reverse-Z: 1 at the near plane, 0 at infinity / no geometry).
 ImageR32 readbackDepth(GpuContext& ctx, const Image& image);
+// n half floats (IEEE binary16) to float, exactly: F16C where the CPU has it (the viewer reads
+// back a 1080p RGBA16F image per view), glm otherwise.
+void halfToFloat(const uint16_t* src, float* dst, size_t n);
 // Raw bytes of a buffer (must have been created with TRANSFER_SRC usage).
 std::vector<uint8_t> readbackBuffer(GpuContext& ctx, const Buffer& buffer);
 
