@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include <glm/gtc/packing.hpp>
-#if defined(__x86_64__)
+#ifdef __x86_64__
 #include <immintrin.h>
 #endif
 
@@ -68,7 +68,7 @@ void texelToRgba(VkFormat f, const uint8_t* src, float* dst) {
 
 } // namespace
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef __x86_64__ // GCC and clang: target attributes and __builtin_cpu_supports
 __attribute__((target("f16c,avx"))) static void halfToFloatF16c(const uint16_t* src, float* dst,
                                                         size_t n) {
     size_t i = 0;
@@ -81,7 +81,7 @@ __attribute__((target("f16c,avx"))) static void halfToFloatF16c(const uint16_t* 
 #endif
 
 void halfToFloat(const uint16_t* src, float* dst, size_t n) {
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef __x86_64__ // GCC and clang: target attributes and __builtin_cpu_supports
     if (__builtin_cpu_supports("f16c") && __builtin_cpu_supports("avx"))
         return halfToFloatF16c(src, dst, n);
 #endif
