@@ -194,12 +194,6 @@ void measurePairs(CompareRecord& r) {
     });
 }
 
-double frameMedian(const RunResult& run) {
-    for (const TimingStats& t : run.timings)
-        if (t.name == "frame") return t.medianMs;
-    return 0.0;
-}
-
 void printSummary(const CompareRecord& r) {
     const std::string& device = r.ctx->info.name;
     std::printf("%-18s %12s %12s %12s %14s %10s %11s  %s\n", "pipeline", "frame ms", "memory MiB",
@@ -222,7 +216,7 @@ void printSummary(const CompareRecord& r) {
             if (p.flip.measured) std::snprintf(flip, sizeof flip, "%.4f", p.flip.hdr.mean);
         }
         std::printf("%-18s %12.3f %12.2f %12.1f %14s %10s %11s  ok\n", p.name.c_str(),
-                    frameMedian(*p.run), double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr, flip);
+                    frameMedianMs(*p.run), double(bytes) / (1024.0 * 1024.0), bpp, rmse, psnr, flip);
     };
     row(r.reference, true);
     for (const PipelineOutcome& p : r.pipelines)

@@ -300,10 +300,10 @@ struct GroupRunner {
 
     // --camera-path: a pipeline row's timing pass over the path (compare/path_run.h), then the
     // scene back at the path's first view for the next run.
-    void runPath(Scene& scene, SceneGpu& gpuScene, const PathInput& path, SweepRow& row) {
+    void runPath(Scene& scene, SceneGpu& gpuScene, const SceneFeatures& features,
+                 const PathInput& path, SweepRow& row) {
         if (row.pipeline == kReferenceRenderer || row.status != "ok") return;
-        PathRunSetup setup{ctx, scene, gpuScene, analyzeScene(scene, row.s.msaa), row.s, {row.pipeline},
-                           o.warmup, o.frames};
+        PathRunSetup setup{ctx, scene, gpuScene, features, row.s, {row.pipeline}, o.warmup, o.frames};
         PathSeries series = timePath(setup, path, row.pipeline);
         applyPathView(scene, gpuScene, path, 0);
         row.path = seriesJson(series);
@@ -336,7 +336,7 @@ struct GroupRunner {
             if (!owned) continue; // another shard's row: its figures are that shard's
             rows.push_back(measureRun(name, lights, s, result, ref, ctx));
             SweepRow& row = rows.back();
-            if (path) runPath(scene, gpuScene, *path, row);
+            if (path) runPath(scene, gpuScene, features, *path, row);
             row.seconds = secondsSince(start);
             row.lightsHash = lightsHash;
             row.runIndex = index;

@@ -22,12 +22,6 @@ struct Sessions {
     std::vector<std::unique_ptr<RendererSession>> pipelines; // null where planning failed
 };
 
-double frameMedian(const RunResult& run) {
-    for (const TimingStats& t : run.timings)
-        if (t.name == "frame") return t.medianMs;
-    return 0.0;
-}
-
 std::unique_ptr<RendererSession> plan(const PathRunSetup& s, const std::string& name,
                                       std::string& error) {
     Result<const RendererEntry*> entry = findRenderer(name);
@@ -57,7 +51,9 @@ void progress(const std::string& what, uint32_t v, uint32_t views) {
 void timeSeries(const PathRunSetup& s, const PathInput& in, RendererSession& session,
                 PathSeries& series) {
     const uint32_t views = uint32_t(in.views.size());
+    uint32_t updates = 0, replans = 0; // from view 1 on (view 0: where it was planned)
     for (uint32_t v = 0; v < views; ++v) {
+        if (v == 1) updates = session.updates(), replans = session.replans();
         applyPathView(s.scene, s.gpuScene, in, v);
         RunOptions ro;
         ro.warmupFrames = v == 0 ? uint32_t(s.warmup) : 0;
@@ -68,12 +64,14 @@ void timeSeries(const PathRunSetup& s, const PathInput& in, RendererSession& ses
             series.error = run.error();
             return;
         }
-        series.frameMs.push_back(frameMedian(*run));
-        series.updateMs.push_back(run->stats.counter("view_update_ms", 0.0));
+        series.frameMs.push_back(frameMedianMs(*run));
+        // View 0 is where the session was planned; following it again from where the previous
+        // pipeline left the scene is the harness's cost, not the path's.
+        series.updateMs.push_back(v == 0 ? 0.0 : run->stats.counter("view_update_ms", 0.0));
         progress("timing " + series.name, v, views);
     }
-    series.updates = session.updates();
-    series.replans = session.replans();
+    series.updates = session.updates() - (views > 1 ? updates : session.updates());
+    series.replans = session.replans() - (views > 1 ? replans : session.replans());
 }
 
 // Pass 2: per view, the reference (reused where nothing moved) and every pipeline's error.
@@ -81,7 +79,7 @@ void imagePass(const PathRunSetup& s, const PathInput& in, Sessions& sessions, P
     RunOptions once;
     once.warmupFrames = 0;
     once.timedFrames = 1;
-    ImageRGBA reference;
+    ImageRGBA reference, refDisplay;
     uint64_t referenceGeneration = ~0ull;
     MetricsOptions hdrOptions;
     for (uint32_t v = 0; v < in.views.size(); ++v) {
@@ -97,11 +95,11 @@ void imagePass(const PathRunSetup& s, const PathInput& in, Sessions& sessions, P
             ++rec.referenceRenders;
             rec.referenceMs += msSince(start);
             if (v == 0) rec.exposureEv = parseExposure(s.exposure, reference);
+            hdrOptions.psnrPeak = brightestFiniteChannel(reference);
+            refDisplay = tonemapToDisplay(reference, rec.exposureEv);
         } else {
             ++rec.referenceReused;
         }
-        hdrOptions.psnrPeak = brightestFiniteChannel(reference);
-        const ImageRGBA refDisplay = tonemapToDisplay(reference, rec.exposureEv);
         for (size_t p = 0; p < sessions.pipelines.size(); ++p) {
             PathSeries& series = rec.pipelines[p];
             if (!series.error.empty() || !sessions.pipelines[p]) continue;
@@ -193,12 +191,7 @@ PathRecord runPath(const PathRunSetup& s, const PathInput& input) {
                  input.views.size(), input.lightMotion.c_str());
     for (size_t p = 0; p < sessions.pipelines.size(); ++p)
         if (sessions.pipelines[p]) timeSeries(s, input, *sessions.pipelines[p], rec.pipelines[p]);
-    imagePass(s, input, sessions, rec);
-    for (size_t p = 0; p < sessions.pipelines.size(); ++p)
-        if (sessions.pipelines[p]) {
-            rec.pipelines[p].updates = sessions.pipelines[p]->updates();
-            rec.pipelines[p].replans = sessions.pipelines[p]->replans();
-        }
+    imagePass(s, input, sessions, rec); // its updates and replans are not the path's
     rec.worstView = worstView(rec);
     rec.rankFlips = rankFlips(rec);
     return rec;
@@ -214,13 +207,20 @@ PathSeries timePath(const PathRunSetup& s, const PathInput& input, const std::st
 }
 
 nlohmann::json percentilesJson(std::vector<double> values) {
+    values.erase(std::remove_if(values.begin(), values.end(),
+                                [](double v) { return !std::isfinite(v); }),
+                 values.end());
     if (values.empty()) return nullptr;
     std::sort(values.begin(), values.end());
     auto rank = [&](double q) { // nearest rank
         size_t i = size_t(std::ceil(q * double(values.size())));
         return values[std::min(values.size() - 1, i > 0 ? i - 1 : 0)];
     };
-    return {{"median", rank(0.5)}, {"p95", rank(0.95)}, {"p99", rank(0.99)}, {"max", values.back()}};
+    // The median as every timing of the project states it (summarize: the middle two averaged).
+    return {{"median", summarize("", values).medianMs},
+            {"p95", rank(0.95)},
+            {"p99", rank(0.99)},
+            {"max", values.back()}};
 }
 
 nlohmann::json seriesJson(const PathSeries& s) {

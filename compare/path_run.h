@@ -36,7 +36,7 @@ struct PathSeries {
     std::vector<double> frameMs, updateMs; // per view: median GPU frame, CPU view update
     std::vector<ErrorReport> hdr;          // per view, against the view's reference (pipelines)
     std::vector<double> displayPsnr;       // per view, tonemapped at the path's one exposure
-    uint32_t updates = 0, replans = 0;     // how it followed the views (render_session.h)
+    uint32_t updates = 0, replans = 0;     // how it followed views 1.. of the timing pass
 };
 
 struct PathRecord {
@@ -77,7 +77,8 @@ void applyPathView(Scene& scene, SceneGpu& gpuScene, const PathInput& input, uin
 nlohmann::json pathJson(const PathRecord& path);
 // One pipeline's series and its percentiles (an element of pathJson's "pipelines").
 nlohmann::json seriesJson(const PathSeries& series);
-// Median, 95th and 99th percentiles (nearest rank) and the maximum of `values`.
+// Of the finite `values`: the median (the middle two averaged, as every timing here), the
+// 95th and 99th percentiles (nearest rank) and the maximum; null when none is finite.
 nlohmann::json percentilesJson(std::vector<double> values);
 
 } // namespace tp::cli

@@ -63,10 +63,7 @@ void ViewerApp::setSplit(float share) {
 }
 
 double frameGpuMs(const Shown* s) {
-    if (!s || !s->run) return 0;
-    for (const TimingStats& t : s->run->timings)
-        if (t.name == "frame") return t.medianMs;
-    return 0;
+    return s && s->run ? frameMedianMs(*s->run) : 0.0;
 }
 
 const Shown* ViewerApp::shownFor(const std::string& pipeline) const {

@@ -97,12 +97,13 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     for (const Knob& k : entry.knobs)
         result.knobs.push_back({k, k.valueIn(settings.knobs)});
     result.timings = profiler.stats();
-    if (options.readback) {
-        result.hdr = readbackColor(ctx, graph.image(planned.hdr));
-        result.depth = readbackDepth(ctx, graph.image(planned.depth));
-    }
+    // A path's timing pass: nothing between one view's frames and the next's but the update
+    // (no images, no counters read back; the session adds its own).
+    if (!options.readback) return result;
+    result.hdr = readbackColor(ctx, graph.image(planned.hdr));
+    result.depth = readbackDepth(ctx, graph.image(planned.depth));
     planned.renderer->collectStats(graph);
-    if (settings.debug && options.readback) result.debugImages = planned.renderer->debugImages(graph);
+    if (settings.debug) result.debugImages = planned.renderer->debugImages(graph);
     result.stats = planned.renderer->stats();
     // The measure of the MSAA shading rate: --msaa-shading pixel runs about one invocation per
     // covered pixel and primitive, sample about one per covered sample.
@@ -118,7 +119,6 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     result.memory = ctx.ledger.entriesOf(entry.name);
     result.passes = graph.livePasses();
     result.culledPasses = graph.culledPasses();
-    if (!options.readback) return result; // the work counts need the depth image
     result.work = countWork(graph, counts, result);
     if (options.ceilings)
         result.efficiency = placeFrame(result.work, result.timings, *options.ceilings,
@@ -169,6 +169,12 @@ Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const Rendere
     } catch (const GpuError& e) {
         return Error{std::string("Vulkan error: ") + e.what()};
     }
+}
+
+double frameMedianMs(const RunResult& run) {
+    for (const TimingStats& t : run.timings)
+        if (t.name == "frame") return t.medianMs;
+    return 0.0;
 }
 
 double counterValue(const RunResult& run, const std::string& name, double fallback) {

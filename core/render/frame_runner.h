@@ -78,5 +78,7 @@ Result<RunResult> tryRunRenderer(GpuContext& ctx, SceneGpu& scene, const Rendere
 // A counter of the run (RendererStats::counters), or `fallback` where the renderer does not
 // count it (a pipeline that cannot drop a light counts no drops).
 double counterValue(const RunResult& run, const std::string& name, double fallback = 0.0);
+// The median GPU time of the run's whole frame ("frame" timing), 0 when it has none.
+double frameMedianMs(const RunResult& run);
 
 } // namespace tp
