@@ -61,13 +61,15 @@ Status RendererSession::plan() {
     }
     lightCount_ = scene_.lightCount();
     sceneConstants_ = scene_.specConstants(AlphaMode::Opaque);
+    // Query pools per plan: a new graph may have other passes (the profiler keeps their names);
+    // an update in place records the same passes again into the same pools.
+    profiler_ = std::make_unique<GpuProfiler>(ctx_, kMaxTimedScopes);
+    statistics_ = std::make_unique<PassStatistics>(ctx_, kMaxTimedScopes);
     return record();
 }
 
 Status RendererSession::record() {
     if (!cmd_) cmd_ = ctx_.allocateCommandBuffer();
-    profiler_ = std::make_unique<GpuProfiler>(ctx_, kMaxTimedScopes);
-    statistics_ = std::make_unique<PassStatistics>(ctx_, kMaxTimedScopes);
     VK_CHECK(vkResetCommandBuffer(cmd_, 0));
     Status s = detail::pipelineStep(
         entry_, [&] { detail::recordFrame(cmd_, *planned_.graph, *profiler_, *statistics_); });
