@@ -48,7 +48,7 @@ LightGpu uboLight(uint slot) {
     l.direction = uboLights[slot].direction;
     l.type = uboLights[slot].type;
     l.color = uboLights[slot].color;
-    l.pad0 = 0.0;
+    l.shadow = uboLights[slot].shadow;
     l.spotScale = uboLights[slot].spotScale;
     l.spotOffset = uboLights[slot].spotOffset;
     l.pad1 = 0.0;

@@ -82,7 +82,7 @@ TP_STRUCT(LightGpu) {
     vec3 direction; // where the light points (spot, directional), normalized
     uint type;
     vec3 color;     // linear colour times intensity
-    float pad0;
+    uint shadow;    // 0: casts no shadow; else 1 + its first ShadowFace (include/shadows.h)
     float spotScale;  // 1 / max(1e-4, cos(inner) - cos(outer))
     float spotOffset; // -cos(outer) * spotScale
     float pad1;

@@ -16,6 +16,7 @@
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
+#include "include/shadow_light.glsl"
 
 layout(location = 0) out vec4 outColor;
 
@@ -70,9 +71,9 @@ void main() {
     // iterations and silently skips the rest (docs/shading.md), and the CLI allows 65,536.
     uint count = frame.viewport.z, i = 0u;
     for (; i + 1u < count; i += 2u) {
-        sum += ACCUM(evalLight(lights[i], ms.surface, kHasSpot));
-        sum += ACCUM(evalLight(lights[i + 1u], ms.surface, kHasSpot));
+        sum += ACCUM(evalLightShadowed(lights[i], ms.surface));
+        sum += ACCUM(evalLightShadowed(lights[i + 1u], ms.surface));
     }
-    if (i < count) sum += ACCUM(evalLight(lights[i], ms.surface, kHasSpot));
+    if (i < count) sum += ACCUM(evalLightShadowed(lights[i], ms.surface));
     outColor = vec4(vec3(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
 }
