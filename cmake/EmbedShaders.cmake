@@ -35,3 +35,15 @@ function(triptych_embed_shaders target)
   add_library(${target} STATIC ${out})
   target_include_directories(${target} PUBLIC ${CMAKE_SOURCE_DIR})
 endfunction()
+
+# A shading shader and its shadowed twin: NAME, and NAME with "_shadow" before its stage suffix
+# (fp_shading_frag -> fp_shading_shadow_frag) compiled with TP_SHADOW_MAPS (include/shadow_light.glsl).
+# Without --shadows a pipeline uses NAME, the very SPIR-V it used before shadows existed.
+function(triptych_add_shadowed_shader out_var source name)
+  cmake_parse_arguments(ARG "" "" "DEFINES" ${ARGN})
+  string(REGEX REPLACE "_([a-z]+)$" "_shadow_\\1" shadowed ${name})
+  set(list ${${out_var}})
+  triptych_add_shader(list ${source} ${name} DEFINES ${ARG_DEFINES})
+  triptych_add_shader(list ${source} ${shadowed} DEFINES ${ARG_DEFINES} TP_SHADOW_MAPS=1)
+  set(${out_var} ${list} PARENT_SCOPE)
+endfunction()

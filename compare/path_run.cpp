@@ -85,6 +85,7 @@ void imagePass(const PathRunSetup& s, const PathInput& in, Sessions& sessions, P
     for (uint32_t v = 0; v < in.views.size(); ++v) {
         applyPathView(s.scene, s.gpuScene, in, v);
         s.gpuScene.setView(s.settings.width, s.settings.height, s.settings.msaa);
+        s.gpuScene.setShadows(s.settings.shadows);
         if (s.gpuScene.viewGeneration() != referenceGeneration) {
             const auto start = std::chrono::steady_clock::now();
             Result<RunResult> ref = sessions.reference->render(once);

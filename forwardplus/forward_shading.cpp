@@ -9,6 +9,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/lightassign/light_classes.h"
+#include "core/passes/shadow_maps.h"
 #include "core/render/scene_gpu.h"
 #include "forwardplus/forwardplus_shared.h"
 
@@ -33,6 +34,7 @@ std::vector<PassUse> ForwardShading::uses(bool transparent) const {
         uses.push_back({t_.masks, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
     const bool lastPass = transparent || !config_.blendPass;
     if (msaa && lastPass) uses.push_back({t_.hdr, Use::ColorResolve});
+    if (t_.shadows && t_.shadows->enabled()) uses.push_back(t_.shadows->sampledUse());
     return uses;
 }
 
@@ -46,7 +48,7 @@ void ForwardShading::plan(FrameGraph& graph, const ShadingTargets& t) {
 
 void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
     createPassSet(graph, params);
-    layout_ = scene_.createPipelineLayout(set_.layout);
+    layout_ = scene_.createPipelineLayout(set_.layout, t_.shadows ? t_.shadows->setLayout() : VK_NULL_HANDLE);
     for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
         if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
 }
@@ -120,6 +122,7 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
         d.specConstants.push_back({TP_FP_SPEC_SLICES, config_.slices});
         d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendPass ? 1u : 0u});
     }
+    if (t_.shadows) t_.shadows->apply(d.fragmentShader, d.specConstants);
     return d;
 }
 
@@ -181,6 +184,7 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
+    if (t_.shadows) t_.shadows->bind(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     std::vector<AlphaMode> modes = transparent
                                        ? std::vector<AlphaMode>{AlphaMode::Blend}
                                        : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};

@@ -19,6 +19,10 @@ class GpuContext;
 class SceneGpu;
 } // namespace tp
 
+namespace tp {
+class ShadowMaps;
+}
+
 namespace tp::fp {
 
 // What the shaders' variant and constants depend on.
@@ -38,6 +42,7 @@ struct ShadingConfig {
 struct ShadingTargets {
     ResourceHandle hdr, hdrMsaa, depth, depthMsaa, tiles, indices, masks;
     VkFormat hdrFormat = VK_FORMAT_UNDEFINED;
+    const ShadowMaps* shadows = nullptr; // the atlas, sampled by both passes when enabled
 };
 
 class ForwardShading {

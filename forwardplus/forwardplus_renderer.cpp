@@ -23,6 +23,7 @@
 #include "core/passes/light_binning.h"
 #include "core/render/msaa_knob.h"
 #include "core/render/scene_gpu.h"
+#include "core/passes/shadow_maps.h"
 #include "forwardplus/forward_shading.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -133,12 +134,15 @@ class ForwardPlusRenderer final : public Renderer {
         const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
 
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas); // shadow_maps, if any
+        shadows_->plan(graph);
         shading_.emplace(ctx_, scene_,
                          fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),
                                            fp_.assign.slices, twoLists_, clustered(), blendPass_,
                                            subgroupLoop_});
         shading_->plan(graph,
-                       {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat});
+                       {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat,
+                        &*shadows_});
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
         // Read back after the frame for the statistics, debug images and tests.
@@ -154,6 +158,7 @@ class ForwardPlusRenderer final : public Renderer {
         prepass_->prepare();
         if (blendBounds_) blendBounds_->prepare(graph);
         createDescriptors(graph);
+        shadows_->prepare(graph);
         shading_->prepare(graph, params_.buffer);
     }
 
@@ -162,6 +167,7 @@ class ForwardPlusRenderer final : public Renderer {
     // copy uploaded again; the frame's passes (spheres, binning, culling) recompute the rest.
     // false when the view outgrew the lists' room or the light types changed.
     bool updateView(FrameGraph&) override {
+        if (shadows_->stale()) return false; // other shadowed lights or map sizes
         const la::LightClasses classes = la::classifyLights(scene_.lightsGpu());
         if (classes.directional != classes_.directional || classes.local != classes_.local)
             return false; // fp_params' light classes and the shading's loop are planned
@@ -211,6 +217,7 @@ class ForwardPlusRenderer final : public Renderer {
 
     RendererStats stats() const override {
         RendererStats s;
+        if (shadows_) s.counters = shadows_->counters();
         auto add = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
         add("tile_size", fp_.assign.tile);
         add("tiles", grid_.count());
@@ -443,6 +450,7 @@ class ForwardPlusRenderer final : public Renderer {
     std::optional<la::BlendedBounds>
         blendBounds_; // blended scenes: where each tile's blended fragments are
     std::optional<passes::DepthPrepass> prepass_;
+    std::optional<ShadowMaps> shadows_;         // the atlas (shadow_maps) with --shadows
     std::optional<fp::ForwardShading> shading_; // forward_opaque, forward_transparent
 
     std::vector<gpu::FpTileLists> tileLists_;

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <CLI/CLI.hpp>
 
+#include "core/passes/shadow_plan.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/renderer.h"
 #include "core/render/view_settings.h"
@@ -91,6 +92,15 @@ void addViewOptions(CLI::App& app, ViewOptions& o) {
     app.add_option("--res", o.resolution, "Output resolution WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--msaa", o.msaa, "Samples per pixel: 1, 2, 4 or 8 (as the device supports)")
         ->capture_default_str();
+    app.add_option("--shadows", o.shadows,
+                   "Lights that cast shadows: none, all (every light that reaches the view) or N "
+                   "(the N with the largest screen-space influence); point lights get cube maps, "
+                   "spots one map, directional lights none (docs/shadows.md)")
+        ->capture_default_str();
+    app.add_option("--shadow-budget", o.shadowBudgetMb,
+                   "Shadow-map memory in MB: each light's map is sized from its screen size, "
+                   "the largest halved until the atlas fits (an error if even 16x16 faces do not)")
+        ->capture_default_str();
 }
 
 std::unique_ptr<GpuContext> createContext(const DeviceOptions& o) {
@@ -141,6 +151,15 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
     s.width = w;
     s.height = h;
     s.msaa = uint32_t(v.msaa);
+    try {
+        s.shadows = parseShadowCount(v.shadows);
+    } catch (const ShadowError& e) {
+        throw UsageError(e.what());
+    }
+    if (v.shadowBudgetMb < 1 || v.shadowBudgetMb > 65536)
+        throw UsageError("--shadow-budget " + std::to_string(v.shadowBudgetMb) +
+                         ": expected 1..65536 MB");
+    s.shadows.budgetMb = uint32_t(v.shadowBudgetMb);
     return s;
 }
 

@@ -43,6 +43,8 @@ struct DeviceOptions {
 struct ViewOptions {
     std::string resolution = "320x180";
     int msaa = 1;
+    std::string shadows = "none"; // --shadows N|all|none
+    int shadowBudgetMb = 256;     // --shadow-budget MB
 };
 
 void addSceneOptions(CLI::App& app, SceneOptions& o);

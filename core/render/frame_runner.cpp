@@ -134,6 +134,7 @@ Result<PlannedRenderer> planRenderer(GpuContext& ctx, SceneGpu& scene, const Ren
     // The count alone, without the pipeline's name: the CLI's line (checkSampleCount).
     if (Status s = checkSampleCount(ctx, settings.msaa); !s) return Error{s.error()};
     scene.setView(settings.width, settings.height, settings.msaa);
+    scene.setShadows(settings.shadows);
     PlannedRenderer planned;
     planned.graph = std::make_unique<FrameGraph>(ctx, entry.name, settings.width, settings.height);
     FrameGraph& graph = *planned.graph;

@@ -96,6 +96,7 @@ Status RendererSession::follow(double& updateMs) {
 
 Result<RunResult> RendererSession::render(const RunOptions& options) {
     scene_.setView(settings_.width, settings_.height, settings_.msaa);
+    scene_.setShadows(settings_.shadows);
     double updateMs = -1;
     // A view change, or a plan or recording that failed last time (tried again).
     if (scene_.viewGeneration() != generation_ || !planned_.renderer || !recorded_)

@@ -100,6 +100,8 @@ void SceneGpu::uploadTextures() {
 }
 
 void SceneGpu::createDescriptors() {
+    VkDescriptorSetLayoutCreateInfo empty{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &empty, nullptr, &emptySetLayout_));
     const uint32_t texCount = uint32_t(textures_.size());
     VkDescriptorSetLayoutBinding b[5] = {
         {TP_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr},

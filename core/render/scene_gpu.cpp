@@ -67,6 +67,7 @@ SceneGpu::SceneGpu(GpuContext& ctx, const Scene& scene)
 SceneGpu::~SceneGpu() {
     vkDestroyDescriptorPool(ctx_.device, pool_, nullptr);
     vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);
+    vkDestroyDescriptorSetLayout(ctx_.device, emptySetLayout_, nullptr);
     vkDestroySampler(ctx_.device, sampler_, nullptr);
 }
 
@@ -150,6 +151,7 @@ void SceneGpu::uploadLights() {
     shadingLights_ = lightsGpu_;
     for (gpu::LightGpu& l : shadingLights_)
         l.position = toShading(l.position);
+    applyShadowPlan();
     const VkDeviceSize bytes = shadingLights_.size() * sizeof(gpu::LightGpu);
     ++viewGeneration_;
     // Same count: overwritten in place, so a planned renderer's descriptors stay valid.
@@ -196,10 +198,40 @@ void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
     if (glm::dvec3(cam.position) != eye_) { // the camera moved: the relative lights follow
         eye_ = glm::dvec3(cam.position);
         uploadLights();
+    } else if (shadowSettings_.enabled() && !(computeShadowPlan() == shadowPlan_)) {
+        uploadLights(); // the view changed which lights are shadowed, or their map sizes
     }
     if (std::memcmp(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_)) != 0)
         ++viewGeneration_;
     std::memcpy(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_));
+}
+
+void SceneGpu::setShadows(const ShadowSettings& settings) {
+    if (settings == shadowSettings_) return;
+    shadowSettings_ = settings;
+    uploadLights();
+}
+
+ShadowPlan SceneGpu::computeShadowPlan() const {
+    return planShadows(shadingLights_, shadingFrame_, shadingFrame_.viewport.x,
+                       shadingFrame_.viewport.y, shadowSettings_, ctx_.caps.maxImageDimension2D);
+}
+
+// The plan for the lights about to be uploaded: their shadow words, and the faces' buffer
+// (overwritten in place while its size holds, so planned descriptors stay valid).
+void SceneGpu::applyShadowPlan() {
+    ShadowPlan plan = computeShadowPlan();
+    if (!(plan == shadowPlan_)) ++shadowGeneration_;
+    shadowPlan_ = std::move(plan);
+    for (const ShadowLight& sl : shadowPlan_.lights) shadingLights_[sl.light].shadow = sl.firstFace + 1;
+    const VkDeviceSize bytes = shadowPlan_.faces.size() * sizeof(gpu::ShadowFace);
+    if (bytes == 0) return;
+    if (shadowFaces_.buffer && shadowFaces_.size == bytes)
+        uploadBufferData(ctx_, shadowFaces_, shadowPlan_.faces.data(), bytes);
+    else
+        shadowFaces_ = createBufferWithData(ctx_, shadowPlan_.faces.data(), bytes,
+                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            {"scene", "", "shadow_faces", "shadow map faces"});
 }
 
 std::vector<SpecConstant> SceneGpu::specConstants(AlphaMode mode) const {
@@ -208,11 +240,13 @@ std::vector<SpecConstant> SceneGpu::specConstants(AlphaMode mode) const {
             {TP_SPEC_ALPHA_MODE, uint32_t(mode)}};
 }
 
-VkPipelineLayout SceneGpu::createPipelineLayout(VkDescriptorSetLayout passSet) const {
-    VkDescriptorSetLayout sets[2] = {setLayout_, passSet};
+VkPipelineLayout SceneGpu::createPipelineLayout(VkDescriptorSetLayout passSet,
+                                                VkDescriptorSetLayout shadowSet) const {
+    // A shadow set without a pass set of its own sits behind an empty set 1.
+    VkDescriptorSetLayout sets[3] = {setLayout_, passSet ? passSet : emptySetLayout_, shadowSet};
     VkPushConstantRange push{VK_SHADER_STAGE_ALL, 0, sizeof(gpu::DrawPush)};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = passSet ? 2 : 1;
+    info.setLayoutCount = shadowSet ? 3 : passSet ? 2 : 1;
     info.pSetLayouts = sets;
     info.pushConstantRangeCount = 1;
     info.pPushConstantRanges = &push;

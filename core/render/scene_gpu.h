@@ -8,6 +8,7 @@
 
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
+#include "core/passes/shadow_plan.h"
 #include "core/scene/scene.h"
 #include "include/shared.h"
 
@@ -42,11 +43,24 @@ class SceneGpu {
     void setView(uint32_t width, uint32_t height, uint32_t msaaSamples);
     void setLights(const std::vector<Light>& lights);
     uint64_t viewGeneration() const { return viewGeneration_; }
+    // --shadows / --shadow-budget: which lights cast shadows is planned at every view and light
+    // change (core/passes/shadow_plan.h) and written into the uploaded lights (LightGpu.shadow);
+    // the faces are a storage buffer (ledger: scene, shadow_faces). shadowGeneration() counts
+    // changes of the plan's layout (which lights, their map sizes): a renderer that sized its
+    // maps for one layout plans again when it changes. Throws ShadowError when the budget cannot
+    // hold the lights.
+    void setShadows(const ShadowSettings& settings);
+    const ShadowSettings& shadowSettings() const { return shadowSettings_; }
+    const ShadowPlan& shadowPlan() const { return shadowPlan_; }
+    VkBuffer shadowFaces() const { return shadowFaces_.buffer; }
+    uint64_t shadowGeneration() const { return shadowGeneration_; }
 
     // Specialization constants every scene shader takes (texture count, spot path, alpha mode).
     std::vector<SpecConstant> specConstants(AlphaMode mode) const;
-    // Layout with set 0 = the scene, optional set 1 = the pass's own, and the DrawPush range.
-    VkPipelineLayout createPipelineLayout(VkDescriptorSetLayout passSet = VK_NULL_HANDLE) const;
+    // Layout with set 0 = the scene, optional set 1 = the pass's own, optional set 2 = the
+    // shadow maps (core/passes/shadow_maps.h), and the DrawPush range.
+    VkPipelineLayout createPipelineLayout(VkDescriptorSetLayout passSet = VK_NULL_HANDLE,
+                                          VkDescriptorSetLayout shadowSet = VK_NULL_HANDLE) const;
     void bindSceneSet(VkCommandBuffer cmd, VkPipelineLayout layout,
                       VkPipelineBindPoint point) const;
     // Binds `pipeline` and records the draws of one alpha mode; Blend draws are sorted back
@@ -93,10 +107,18 @@ class SceneGpu {
     std::vector<Image> textures_;
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout emptySetLayout_ = VK_NULL_HANDLE; // set 1 of a layout with set 2 only
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     std::vector<DrawItem> draws_;
     void uploadLights();
+    ShadowPlan computeShadowPlan() const;
+    void applyShadowPlan();
+
+    ShadowSettings shadowSettings_;
+    ShadowPlan shadowPlan_;
+    Buffer shadowFaces_;
+    uint64_t shadowGeneration_ = 0;
 
     gpu::FrameUniforms frame_{}, shadingFrame_{};
     std::vector<gpu::LightGpu> lightsGpu_, shadingLights_;

@@ -9,6 +9,16 @@
 
 namespace tp {
 
+// --shadows / --shadow-budget (core/passes/shadow_plan.h, docs/shadows.md): which lights cast
+// shadows is the run's, not a pipeline's: every pipeline and the reference shadow the same ones.
+struct ShadowSettings {
+    uint32_t count = 0; // shadowed lights (0: none)
+    bool all = false;   // every light that reaches the view
+    uint32_t budgetMb = 256;
+    bool enabled() const { return all || count > 0; }
+    bool operator==(const ShadowSettings&) const = default;
+};
+
 struct RenderSettings {
     uint32_t width = 320; // output resolution
     uint32_t height = 180;
@@ -19,6 +29,7 @@ struct RenderSettings {
     // view that outgrows it is planned again, counted (view_replans). false: sized exactly for
     // the one view, as a single render always was.
     bool manyViews = false;
+    ShadowSettings shadows; // default: none (the images of a run without shadows)
     // Knob values as text, by knob name ("tile" -> "16"). A renderer is built only after its
     // schema has checked them and filled in its defaults (resolveKnobs), so a knob it declared
     // is always here; values of other renderers' knobs are carried along untouched.

@@ -13,6 +13,7 @@
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
+#include "include/shadow_light.glsl"
 
 layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
@@ -107,7 +108,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface, uint directionalCount)
                 int lsb = findLSB(bits);
                 bits &= bits - 1u;
                 LightGpu light = fpLight(indices[sharedStart + w * 32u + uint(lsb)], directionalCount);
-                if ((own & (1u << uint(lsb))) != 0u) sum += evalLight(light, surface, kHasSpot);
+                if ((own & (1u << uint(lsb))) != 0u) sum += evalLightShadowed(light, surface);
             }
         }
         return sum;
@@ -118,7 +119,7 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface, uint directionalCount)
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)], directionalCount), surface, kHasSpot);
+            sum += evalLightShadowed(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)], directionalCount), surface);
         }
     }
     return sum;
@@ -139,7 +140,7 @@ void main() {
     uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
-        sum += evalLight(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface, kHasSpot);
+        sum += evalLightShadowed(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface);
     sum += clusterLights(tileIndex, ms.surface, directionalCount);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
@@ -177,7 +178,7 @@ void main() {
         LightGpu light;
         if (kLightsUbo) light = uboLight(lightIndex);
         else light = lights[lightIndex];
-        sum += evalLight(light, ms.surface, kHasSpot);
+        sum += evalLightShadowed(light, ms.surface);
         ++i;
     } while (i < total);
     outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);

@@ -24,6 +24,8 @@
 #define TP_SHADOW_DEPTH_BIAS 1.0f      // and compared this many texel footprints nearer
 #define TP_SHADOW_FACES_POINT 6u
 #define TP_SHADOW_FACES_SPOT 1u
+// Specialization constant: the sampled map is one light's (the `local` rects), not the atlas.
+#define TP_SPEC_SHADOW_LOCAL 5
 
 #ifndef TP_GLSL
 namespace tp::gpu {
@@ -33,7 +35,8 @@ TP_STRUCT(ShadowFace) {
     mat4 lightProj; // light-relative position -> the face's clip space (w: distance on its axis)
     uvec4 atlas;    // x, y: the face's first texel in the atlas; z: edge in texels; w: light index
     uvec4 local;    // x, y: the first texel in its light's own map (3 x 2 faces); z: edge; w: face
-    vec4 params;    // x: texel footprint at distance 1 (2 tan(fov/2) / edge); y: near; z, w: unused
+    vec4 params;    // x: texel footprint at distance 1 (2 tan(fov/2) / edge); y: near; z: its
+                    // light's face count (6 or 1); w: unused
 };
 
 #ifndef TP_GLSL

@@ -1,0 +1,207 @@
+#include "core/passes/shadow_maps.h"
+
+#include <algorithm>
+
+#include "core/gpu/context.h"
+#include "core/gpu/rendering.h"
+#include "core/gpu/vk_check.h"
+#include "core/render/scene_gpu.h"
+
+namespace tp {
+namespace {
+
+// Whether a world-space box can hold anything the face sees within the light's range: the box
+// against the range sphere, then its corners against the face's clip volume (all outside one
+// plane: culled). Conservative: a draw that is kept may still put nothing on the face.
+bool faceSees(const gpu::ShadowFace& f, glm::vec3 light, float range, const Aabb& box) {
+    const glm::vec3 nearest = glm::clamp(light, box.min, box.max);
+    if (glm::length(nearest - light) > range) return false;
+    uint32_t outside[5] = {0, 0, 0, 0, 0}; // x > w, x < -w, y > w, y < -w, w < near
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
+                               (c & 4) ? box.max.z : box.min.z);
+        const glm::vec4 clip = f.lightProj * glm::vec4(corner - light, 1.0f);
+        outside[0] += clip.x > clip.w;
+        outside[1] += clip.x < -clip.w;
+        outside[2] += clip.y > clip.w;
+        outside[3] += clip.y < -clip.w;
+        outside[4] += clip.w < f.params.y;
+    }
+    return std::none_of(outside, outside + 5, [](uint32_t n) { return n == 8; });
+}
+
+} // namespace
+
+ShadowMaps::ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency)
+    : ctx_(ctx), scene_(scene), residency_(residency) {}
+
+ShadowMaps::~ShadowMaps() {
+    for (VkPipeline p : {opaque_, mask_})
+        if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
+    if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    if (sampler_) vkDestroySampler(ctx_.device, sampler_, nullptr);
+    destroyPassSet(ctx_, set_);
+}
+
+bool ShadowMaps::enabled() const { return !scene_.shadowPlan().empty(); }
+
+bool ShadowMaps::stale() const { return enabled() && scene_.shadowGeneration() != generation_; }
+
+ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
+    graph_ = &graph;
+    generation_ = scene_.shadowGeneration();
+    if (!enabled()) return map_ = {};
+    const ShadowPlan& p = scene_.shadowPlan();
+    const std::string lights = std::to_string(p.lights.size()) + " lights";
+    if (residency_ == Residency::Atlas) {
+        map_ = graph.createImage("shadow_atlas", {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight,
+                                                  VK_SAMPLE_COUNT_1_BIT,
+                                                  "shadow maps of " + lights + ", all resident"});
+        graph.addPass("shadow_maps", {{map_, Use::DepthAttachment}},
+                      [this](PassContext& pc) { recordAtlas(pc); });
+    } else {
+        map_ = graph.createImage("shadow_map", {VK_FORMAT_D32_SFLOAT, p.localWidth, p.localHeight,
+                                                VK_SAMPLE_COUNT_1_BIT,
+                                                "one light's shadow map, rendered for each of " + lights});
+    }
+    return map_;
+}
+
+SpecConstant ShadowMaps::specConstant() const {
+    return {TP_SPEC_SHADOW_LOCAL, residency_ == Residency::PerLight ? 1u : 0u};
+}
+
+void ShadowMaps::prepare(FrameGraph& graph) {
+    if (!enabled()) return;
+    set_ = createPassSet(ctx_, {{TP_BINDING_SHADOW_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                {TP_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
+    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST; // texelFetch only
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
+    writeBufferDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_FACES, scene_.shadowFaces());
+    writeImageDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_MAP,
+                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graph.image(map_).view,
+                         VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
+    layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, set_.layout);
+    GraphicsPipelineDesc d;
+    d.layout = layout_;
+    d.vertexShader = "shadow_vert";
+    d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+    opaque_ = createGraphicsPipeline(ctx_, d);
+    if (scene_.hasDraws(DrawFilter::Mask)) {
+        d.vertexShader = "shadow_mask_vert";
+        d.fragmentShader = "prepass_mask_frag";
+        d.specConstants = scene_.specConstants(AlphaMode::Mask);
+        mask_ = createGraphicsPipeline(ctx_, d);
+    }
+}
+
+void ShadowMaps::apply(std::string& shader, std::vector<SpecConstant>& spec) const {
+    if (!enabled()) return;
+    const size_t stage = shader.rfind('_');
+    shader.insert(stage == std::string::npos ? shader.size() : stage, "_shadow");
+    spec.push_back(specConstant());
+}
+
+void ShadowMaps::bind(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const {
+    if (!set_.set) return;
+    vkCmdBindDescriptorSets(cmd, point, layout, TP_SET_SHADOW, 1, &set_.set, 0, nullptr);
+}
+
+std::vector<const DrawItem*> ShadowMaps::faceDraws(uint32_t face) const {
+    const gpu::ShadowFace& f = scene_.shadowPlan().faces[face];
+    const gpu::LightGpu& light = scene_.lightsGpu()[f.atlas.w]; // world space, as the boxes
+    std::vector<const DrawItem*> out;
+    for (DrawFilter filter : {DrawFilter::Opaque, DrawFilter::Mask})
+        for (const DrawItem* d : scene_.drawList(filter))
+            if (faceSees(f, light.position, light.range, d->bounds)) out.push_back(d);
+    return out;
+}
+
+// The faces as squares of the map (positive-height viewports: texel = origin + (ndc * 0.5 +
+// 0.5) * edge, as shadow_sample.glsl reads them), every draw that may reach each.
+void ShadowMaps::recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t faceCount, bool local) {
+    scene_.bindSceneSet(cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    bind(cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    scene_.bindIndexBuffer(cmd);
+    vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE); // a map sees both sides of every surface
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (uint32_t face = firstFace; face < firstFace + faceCount; ++face) {
+        const gpu::ShadowFace& f = scene_.shadowPlan().faces[face];
+        const glm::uvec2 origin = local ? glm::uvec2(f.local) : glm::uvec2(f.atlas);
+        const VkViewport vp{float(origin.x), float(origin.y), float(f.atlas.z), float(f.atlas.z), 0.0f, 1.0f};
+        const VkRect2D sc{{int32_t(origin.x), int32_t(origin.y)}, {f.atlas.z, f.atlas.z}};
+        vkCmdSetViewport(cmd, 0, 1, &vp);
+        vkCmdSetScissor(cmd, 0, 1, &sc);
+        for (const DrawItem* d : faceDraws(face)) {
+            const VkPipeline p = d->alphaMode == AlphaMode::Mask ? mask_ : opaque_;
+            if (p != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = p);
+            const gpu::DrawPush push{d->material, face, 0, 0};
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+            vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, d->vertexOffset, 0);
+        }
+    }
+}
+
+void ShadowMaps::recordAtlas(PassContext& pc) {
+    beginRendering(pc, {}, DepthTarget{map_, {}, true, false, 0.0f});
+    recordFaces(pc.cmd, 0, uint32_t(scene_.shadowPlan().faces.size()), false);
+    endRendering(pc);
+}
+
+bool ShadowMaps::shadowed(uint32_t light) const {
+    return light < scene_.shadingLights().size() && scene_.shadingLights()[light].shadow != 0;
+}
+
+namespace {
+void depthBarrier(PassContext& pc, VkImage image, bool toRead) {
+    const VkPipelineStageFlags2 tests = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                                        VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    const VkPipelineStageFlags2 shaders = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    const VkAccessFlags2 write = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = toRead ? tests : shaders;
+    b.srcAccessMask = toRead ? write : VK_ACCESS_2_NONE;
+    b.dstStageMask = toRead ? shaders : tests;
+    b.dstAccessMask = toRead ? VK_ACCESS_2_SHADER_SAMPLED_READ_BIT : write;
+    b.oldLayout = toRead ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
+    b.newLayout = toRead ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(pc.cmd, &dep);
+}
+} // namespace
+
+void ShadowMaps::recordLight(PassContext& pc, uint32_t light) {
+    if (!shadowed(light)) return;
+    const uint32_t first = scene_.shadingLights()[light].shadow - 1;
+    const uint32_t count = uint32_t(scene_.shadowPlan().faces[first].params.z);
+    beginRendering(pc, {}, DepthTarget{map_, {}, true, false, 0.0f});
+    recordFaces(pc.cmd, first, count, true);
+    endRendering(pc);
+    depthBarrier(pc, pc.image(map_).image, true);
+}
+
+void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc, pc.image(map_).image, false); }
+
+std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
+    if (!enabled()) return {};
+    const ShadowPlan& p = scene_.shadowPlan();
+    double draws = 0;
+    for (uint32_t f = 0; f < p.faces.size(); ++f) draws += double(faceDraws(f).size());
+    const bool atlas = residency_ == Residency::Atlas;
+    return {{"shadowed_lights", double(p.lights.size())},
+            {"shadow_faces", double(p.faces.size())},
+            {"shadow_map_bytes", double(atlas ? p.atlasBytes() : p.localBytes())},
+            {"shadow_map_renders_per_frame", atlas ? 1.0 : double(p.lights.size())},
+            {"shadow_face_draws", draws}};
+}
+
+} // namespace tp

@@ -1,0 +1,4 @@
+# Shadow maps (core/passes/shadow_maps.cpp): depth only for opaque draws; masked draws keep
+# scene.vert's interface for prepass_mask.frag's alpha test.
+triptych_add_shader(SPVS ${SHADER_DIR}/shadow.vert shadow_vert)
+triptych_add_shader(SPVS ${SHADER_DIR}/shadow.vert shadow_mask_vert DEFINES TP_SHADOW_MASK=1)
