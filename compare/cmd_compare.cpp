@@ -254,37 +254,66 @@ void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene,
     }
 }
 
-// Under MSAA, the second error: the reference rendered once more with --reference-msaa center
-// (every sample shaded at the pixel centre), and each pipeline measured against it. The error
-// against the supersampled reference is the total; against this one, the method alone.
-void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
-    if (r.settings.msaa == 1 || !r.options->centerReference) return;
-    CompareRecord c; // what renderOne reads, with the reference's centre mode
+// A second reference: the reference rendered once more with one of its knobs changed, and
+// every pipeline measured against it too (the two errors split what a pipeline gets wrong).
+struct SecondReference {
+    const char* knob;  // the reference's knob and the value the second one takes
+    const char* value;
+    const char* label; // progress line
+    const char* name;  // its images and report name
+    PipelineOutcome CompareRecord::*outcome;
+    std::optional<ErrorReport> PipelineOutcome::*hdr;
+    std::optional<ErrorReport> PipelineOutcome::*display;
+};
+
+void measureAgainst(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, const SecondReference& s) {
+    CompareRecord c; // what renderOne reads, with the second reference's knob
     c.options = r.options;
     c.features = r.features;
     c.settings = r.settings;
     c.calibration = r.calibration;
-    c.settings.set("reference-msaa", "center");
-    PipelineOutcome& centre = r.centerReference;
-    // A reference already run with --reference-msaa center is the centre reference: not again.
-    const auto mode = r.settings.knobs.find("reference-msaa");
-    const bool alreadyCentre = mode != r.settings.knobs.end() && mode->second == "center";
-    centre = alreadyCentre ? r.reference
-                           : renderOne(ctx, gpuScene, kReferenceRenderer, c, "[center reference]");
-    centre.name = "reference_center";
-    if (!centre.run) return;
-    writeImages(r.options->out, centre, r.exposureEv);
+    c.settings.set(s.knob, s.value);
+    PipelineOutcome& second = r.*s.outcome;
+    // A reference already run with that value is the second reference: not again.
+    const auto mode = r.settings.knobs.find(s.knob);
+    const bool already = mode != r.settings.knobs.end() && mode->second == s.value;
+    second = already ? r.reference : renderOne(ctx, gpuScene, kReferenceRenderer, c, s.label);
+    second.name = s.name;
+    if (!second.run) return;
+    writeImages(r.options->out, second, r.exposureEv);
     MetricsOptions hdr;
     hdr.psnrPeak = r.hdrPsnrPeak;
-    const ImageRGBA centreDisplay = tonemapToDisplay(centre.run->hdr, r.exposureEv);
-    centre.hdr = computeError(centre.run->hdr, r.reference.run->hdr, hdr);
-    centre.display =
-        computeError(centreDisplay, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
+    const ImageRGBA secondDisplay = tonemapToDisplay(second.run->hdr, r.exposureEv);
+    second.hdr = computeError(second.run->hdr, r.reference.run->hdr, hdr);
+    second.display =
+        computeError(secondDisplay, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
     for (PipelineOutcome& p : r.pipelines) {
         if (!p.run) continue;
-        p.hdrVsCenter = computeError(p.run->hdr, centre.run->hdr, hdr);
-        p.displayVsCenter = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), centreDisplay);
+        p.*s.hdr = computeError(p.run->hdr, second.run->hdr, hdr);
+        p.*s.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), secondDisplay);
     }
+}
+
+// Under MSAA, the second error: the reference rendered once more with --reference-msaa center
+// (every sample shaded at the pixel centre). The error against the supersampled reference is
+// the total; against this one, the method alone.
+void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
+    if (r.settings.msaa == 1 || !r.options->centerReference) return;
+    measureAgainst(r, ctx, gpuScene,
+                   {"reference-msaa", "center", "[center reference]", "reference_center",
+                    &CompareRecord::centerReference, &PipelineOutcome::hdrVsCenter,
+                    &PipelineOutcome::displayVsCenter});
+}
+
+// With --shadows, the reference casts shadow rays (exact visibility); the second one samples the
+// very shadow maps the pipelines render (--reference-shadows maps). Against the first, a
+// pipeline's error is the total; against the second, its lighting architecture's part alone.
+void measureAgainstShadowMapReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
+    if (!r.settings.shadows.enabled()) return;
+    measureAgainst(r, ctx, gpuScene,
+                   {"reference-shadows", "maps", "[shadow-map reference]", "reference_shadow_maps",
+                    &CompareRecord::shadowMapReference, &PipelineOutcome::hdrVsShadowMaps,
+                    &PipelineOutcome::displayVsShadowMaps});
 }
 
 // The path first (compare/path_run.h); the rest of the run is the full report at its worst
@@ -343,6 +372,7 @@ int runCompare(const CompareOptions& o) {
                             "[1/" + std::to_string(names.size() + 1) + "]");
     if (!r.reference.run)
         throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
+    r.shadowPlan = gpuScene.shadowPlan();
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
     writeImages(o.out, r.reference, r.exposureEv);
@@ -354,6 +384,7 @@ int runCompare(const CompareOptions& o) {
     writeDifferences(r, diffs);
     measurePairs(r);
     measureAgainstCenterReference(r, *ctx, gpuScene);
+    measureAgainstShadowMapReference(r, *ctx, gpuScene);
     r.validationMessages = ctx->validationMessages();
 
     nlohmann::json report = reportJson(r);

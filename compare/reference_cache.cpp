@@ -13,6 +13,7 @@
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"
 #include "core/image/image_io.h"
+#include "core/passes/shadow_plan.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/scene_gpu.h"
 
@@ -142,6 +143,10 @@ ReferenceKey referenceKey(const GpuContext& ctx, const SceneGpu& scene,
                    features.spotLights, features.directionalLights})
         t += f ? " 1" : " 0";
     t += " samples " + std::to_string(features.msaaSamples) + "\n";
+    // --shadows: which lights cast shadows and their maps' sizes (the budget) change the image.
+    if (settings.shadows.enabled())
+        t += "shadows " + shadowCountText(settings.shadows) + " budget " +
+             std::to_string(settings.shadows.budgetMb) + "\n";
     // The reference's own knobs, defaults filled in: the only settings it reads.
     for (const Knob& k : (*findRenderer(kReferenceRenderer))->knobs)
         t += "knob " + k.name + "=" + k.valueIn(settings.knobs) + "\n";

@@ -121,36 +121,69 @@ std::string errorScatter(const json& r, const std::string& key, const std::strin
         points, "frame time, median ms on " + r["device"]["name"].get<std::string>(), yLabel);
 }
 
-// Under MSAA with the centre reference: both errors per pipeline, one sentence on what
-// separates them, the extra cost, and a switch (radio buttons, no script) between two plots.
-std::string twoReferences(const json& r) {
-    const json& c = r["center_reference"];
-    std::string t =
-        "<h2>Two errors under MSAA</h2>\n<p class=\"meta\">Against the supersampled reference the "
-        "error "
-        "is the total; against the centre reference (<code>--reference-msaa center</code>: every "
-        "sample "
-        "shaded at the pixel centre) it is the method alone, because the shading rate is left out: "
-        "their "
-        "difference is what shading once per pixel costs. The centre reference itself is RMSE " +
-        formatNumber(c["error_vs_reference"]["hdr"]["rmse"].get<double>()) +
-        " from the supersampled one; it cost one more reference render (frame median " +
-        formatNumber(frameMedian(c)) +
-        " ms; <code>--no-center-reference</code> skips it).</p>\n"
-        "<table><tr><th class=\"l\">pipeline</th><th class=\"l\">MSAA shading</th><th>RMSE (HDR) "
-        "vs "
-        "supersampled: total</th><th>RMSE (HDR) vs centre: method</th><th>PSNR dB (tonemapped) vs "
-        "supersampled</th><th>PSNR dB (tonemapped) vs centre</th></tr>\n";
+// Both errors per pipeline: against the first reference and against a second one (`errorKey`),
+// after a paragraph that says what separates them.
+std::string twoErrorTable(const json& r, const std::string& title, const std::string& intro,
+                          const std::string& first, const std::string& second,
+                          const std::string& errorKey, bool msaaColumn) {
+    std::string t = "<h2>" + title + "</h2>\n<p class=\"meta\">" + intro + "</p>\n"
+                    "<table><tr><th class=\"l\">pipeline</th>" +
+                    (msaaColumn ? "<th class=\"l\">MSAA shading</th>" : "") +
+                    "<th>RMSE (HDR) vs " + first + "</th><th>RMSE (HDR) vs " + second +
+                    "</th><th>PSNR dB (tonemapped) vs " + first + "</th><th>PSNR dB (tonemapped) vs " +
+                    second + "</th></tr>\n";
     for (const json& p : r["pipelines"]) {
-        if (!ok(p) || !p.contains("error_vs_center_reference")) continue;
-        const json &a = p["error_vs_reference"], &b = p["error_vs_center_reference"];
-        t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td class=\"l\">" +
-             (p["run"].contains("msaa_shading") ? esc(p["run"]["msaa_shading"])
-                                                : std::string("&ndash;")) +
-             "</td>" + numberCell(a["hdr"]["rmse"]) + numberCell(b["hdr"]["rmse"]) +
+        if (!ok(p) || !p.contains(errorKey)) continue;
+        const json &a = p["error_vs_reference"], &b = p[errorKey];
+        t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>";
+        if (msaaColumn)
+            t += "<td class=\"l\">" +
+                 (p["run"].contains("msaa_shading") ? esc(p["run"]["msaa_shading"])
+                                                    : std::string("&ndash;")) + "</td>";
+        t += numberCell(a["hdr"]["rmse"]) + numberCell(b["hdr"]["rmse"]) +
              numberCell(a["tonemapped"]["psnr"]) + numberCell(b["tonemapped"]["psnr"]) + "</tr>\n";
     }
     return t + "</table>\n";
+}
+
+// Under MSAA with the centre reference.
+std::string twoReferences(const json& r) {
+    const json& c = r["center_reference"];
+    return twoErrorTable(
+        r, "Two errors under MSAA",
+        "Against the supersampled reference the error is the total; against the centre reference "
+        "(<code>--reference-msaa center</code>: every sample shaded at the pixel centre) it is the "
+        "method alone, because the shading rate is left out: their difference is what shading "
+        "once per pixel costs. The centre reference itself is RMSE " +
+            formatNumber(c["error_vs_reference"]["hdr"]["rmse"].get<double>()) +
+            " from the supersampled one; it cost one more reference render (frame median " +
+            formatNumber(frameMedian(c)) + " ms; <code>--no-center-reference</code> skips it).",
+        "supersampled: total", "centre: method", "error_vs_center_reference", true);
+}
+
+bool hasShadowMapReference(const json& r) {
+    return r.contains("shadow_map_reference") && r["shadow_map_reference"].value("rendered", false);
+}
+
+// With --shadows: against the ray-traced reference and against the one that samples the maps.
+std::string shadowReferences(const json& r) {
+    const json& c = r["shadow_map_reference"];
+    const json& s = r["shadows"];
+    return twoErrorTable(
+        r, "Two errors with shadows",
+        "The reference casts a shadow ray per sample and shadowed light (exact visibility); the "
+        "shadow-map reference shades every light at every sample as well, but takes visibility "
+        "from the shadow maps the pipelines render, with their filter (" +
+            std::to_string(s["filter"]["pcf_texels"].get<int>()) +
+            "-texel PCF). Against the first a pipeline's error is the total; against the second, "
+            "its lighting architecture's part alone; the shadow maps' own part is the shadow-map "
+            "reference's error, RMSE " +
+            formatNumber(c["error_vs_reference"]["hdr"]["rmse"].get<double>()) + ". " +
+            std::to_string(s["shadowed_lights"].get<int>()) + " lights cast shadows (" +
+            std::to_string(s["faces"].get<int>()) + " faces; atlas " +
+            formatNumber(s["atlas"]["bytes"].get<double>() / 1048576.0) + " MiB, one light's map " +
+            formatNumber(s["one_light_map"]["bytes"].get<double>() / 1048576.0) + " MiB).",
+        "rays: total", "maps: architecture", "error_vs_shadow_map_reference", false);
 }
 
 // Mean HDR-FLIP against frame time: what a viewer would see, beside the RMSE plots.

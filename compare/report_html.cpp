@@ -344,7 +344,8 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     h += kStyle;
     h += reportViewerStyle();
     h += "</style></head><body>\n" + header(r) + pathSection(r) + summaryTable(r) +
-         (hasCenterReference(r) ? twoReferences(r) : "") + errorPlot(r);
+         (hasCenterReference(r) ? twoReferences(r) : "") +
+         (hasShadowMapReference(r) ? shadowReferences(r) : "") + errorPlot(r);
     Result<std::string> images = imagesSection(r, outDir);
     if (!images) return images;
     Result<std::string> pairs = pairwiseSection(r, outDir);

@@ -24,6 +24,8 @@ Result<std::string> figure(const std::string& outDir, const std::string& file,
 std::string summaryTable(const nlohmann::json& r);
 bool hasCenterReference(const nlohmann::json& r);
 std::string twoReferences(const nlohmann::json& r);
+bool hasShadowMapReference(const nlohmann::json& r);
+std::string shadowReferences(const nlohmann::json& r);
 std::string errorPlot(const nlohmann::json& r);
 std::string flipSection(const nlohmann::json& r);
 std::string efficiencySection(const nlohmann::json& r); // report_efficiency_html.cpp

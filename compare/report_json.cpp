@@ -34,26 +34,67 @@ nlohmann::json outcomeJson(const PipelineOutcome& p, const GpuContext& ctx, bool
         if (p.hdrVsCenter)
             j["error_vs_center_reference"] = {{"hdr", metricsJson(*p.hdrVsCenter)},
                                               {"tonemapped", metricsJson(*p.displayVsCenter)}};
+        if (p.hdrVsShadowMaps)
+            j["error_vs_shadow_map_reference"] = {{"hdr", metricsJson(*p.hdrVsShadowMaps)},
+                                                  {"tonemapped", metricsJson(*p.displayVsShadowMaps)}};
     }
+    return j;
+}
+
+// A second reference that ran: its files, its cost, how far it is from the first.
+nlohmann::json secondReferenceJson(const CompareRecord& r, const PipelineOutcome& c,
+                                   const std::string& knob, const std::string& meaning) {
+    if (!c.run) return {{"rendered", false}, {"why", "failed: " + c.error}};
+    nlohmann::json j = {{"rendered", true}, {"knob", knob}, {"files", c.files}};
+    j["run"] = runJson(*c.run, *r.ctx);
+    j["cache"] = referenceCacheJson(c.cache);
+    j["error_vs_reference"] = {{"hdr", metricsJson(c.hdr)}, {"tonemapped", metricsJson(c.display)}};
+    j["meaning"] = meaning;
     return j;
 }
 
 // The second reference under MSAA: whether it ran, what it cost, how far it is from the first.
 nlohmann::json centerReferenceJson(const CompareRecord& r) {
-    const PipelineOutcome& c = r.centerReference;
     if (r.settings.msaa == 1)
         return {{"rendered", false}, {"why", "MSAA is 1x: both references are one image"}};
     if (!r.options->centerReference) return {{"rendered", false}, {"why", "--no-center-reference"}};
-    if (!c.run) return {{"rendered", false}, {"why", "failed: " + c.error}};
-    nlohmann::json j = {{"rendered", true}, {"knob", "reference-msaa center"}, {"files", c.files}};
-    j["run"] = runJson(*c.run, *r.ctx);
-    j["cache"] = referenceCacheJson(c.cache);
-    j["error_vs_reference"] = {{"hdr", metricsJson(c.hdr)}, {"tonemapped", metricsJson(c.display)}};
-    j["meaning"] = "error against the supersampled reference = total; against the centre reference "
-                   "= the method "
-                   "alone (the shading rate left out); the centre reference's own error is the "
-                   "cost of shading once "
-                   "per pixel";
+    return secondReferenceJson(
+        r, r.centerReference, "reference-msaa center",
+        "error against the supersampled reference = total; against the centre reference = the "
+        "method alone (the shading rate left out); the centre reference's own error is the cost "
+        "of shading once per pixel");
+}
+
+// With --shadows: the reference that samples the pipelines' shadow maps.
+nlohmann::json shadowMapReferenceJson(const CompareRecord& r) {
+    if (!r.settings.shadows.enabled())
+        return {{"rendered", false}, {"why", "no shadows (--shadows none)"}};
+    return secondReferenceJson(
+        r, r.shadowMapReference, "reference-shadows maps",
+        "error against the ray-traced reference = total; against the shadow-map reference = the "
+        "lighting architecture alone (the same maps, the same filter); the shadow-map "
+        "reference's own error is the shadow maps' (resolution, filter, bias)");
+}
+
+// --shadows: what was asked, what the plan gave (docs/shadows.md).
+nlohmann::json shadowsJson(const CompareRecord& r) {
+    const ShadowSettings& s = r.settings.shadows;
+    nlohmann::json j = {{"shadows", shadowCountText(s)}, {"budget_mb", s.budgetMb}};
+    if (!s.enabled()) return j;
+    const ShadowPlan& p = r.shadowPlan;
+    std::vector<uint32_t> edges;
+    for (const ShadowLight& l : p.lights) edges.push_back(l.edge);
+    std::sort(edges.begin(), edges.end());
+    j["shadowed_lights"] = p.lights.size();
+    j["requested"] = p.requested;
+    j["faces"] = p.faces.size();
+    j["face_edge_texels"] = edges.empty() ? nlohmann::json() :
+        nlohmann::json{{"min", edges.front()}, {"median", edges[edges.size() / 2]}, {"max", edges.back()}};
+    j["atlas"] = {{"width", p.atlasWidth}, {"height", p.atlasHeight}, {"bytes", p.atlasBytes()}};
+    j["one_light_map"] = {{"width", p.localWidth}, {"height", p.localHeight}, {"bytes", p.localBytes()}};
+    j["filter"] = {{"pcf_texels", (2 * TP_SHADOW_PCF_RADIUS + 1) * (2 * TP_SHADOW_PCF_RADIUS + 1)},
+                   {"normal_offset_texels", TP_SHADOW_NORMAL_OFFSET},
+                   {"depth_bias_texels", TP_SHADOW_DEPTH_BIAS}};
     return j;
 }
 
@@ -122,6 +163,8 @@ nlohmann::json reportJson(const CompareRecord& r) {
         pipelines.push_back(outcomeJson(p, *r.ctx, false));
     j["pipelines"] = pipelines;
     j["center_reference"] = centerReferenceJson(r);
+    j["shadow_map_reference"] = shadowMapReferenceJson(r);
+    j["shadows"] = shadowsJson(r);
     nlohmann::json pairs = nlohmann::json::array();
     for (const PairOutcome& p : r.pairs)
         pairs.push_back({{"a", p.a},

@@ -15,6 +15,7 @@
 #include "core/gpu/context.h"
 #include "core/image/difference.h"
 #include "core/image/metrics.h"
+#include "core/passes/shadow_plan.h"
 #include "core/render/frame_runner.h"
 #include "core/scene/scene.h"
 
@@ -31,6 +32,9 @@ struct PipelineOutcome {
     std::vector<std::string> files; // written into --out, relative names
     // Under MSAA, against the reference shaded at the pixel centre (--reference-msaa center).
     std::optional<ErrorReport> hdrVsCenter, displayVsCenter;
+    // With --shadows, against the reference that samples the pipelines' shadow maps
+    // (--reference-shadows maps) instead of casting rays: the lighting architecture's error alone.
+    std::optional<ErrorReport> hdrVsShadowMaps, displayVsShadowMaps;
     ReferenceCacheUse cache; // the reference runs: whether the cache gave or took the run
 };
 
@@ -60,6 +64,10 @@ struct CompareRecord {
     // Under MSAA (unless --no-center-reference): the reference with --reference-msaa center;
     // its hdr/display are its own distance from the supersampled reference. No run: not rendered.
     PipelineOutcome centerReference;
+    // With --shadows (unless the reference itself used the maps): the reference again with
+    // --reference-shadows maps.
+    PipelineOutcome shadowMapReference;
+    ShadowPlan shadowPlan; // the lights the run shadowed and their maps (SceneGpu's, at its view)
     std::vector<PipelineOutcome> pipelines;
     std::vector<PairOutcome> pairs;
     std::vector<std::string> validationMessages;
