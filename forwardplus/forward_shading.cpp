@@ -34,7 +34,8 @@ std::vector<PassUse> ForwardShading::uses(bool transparent) const {
         uses.push_back({t_.masks, Use::StorageRead, TP_FP_BINDING_CLUSTER_MASKS});
     const bool lastPass = transparent || !config_.blendPass;
     if (msaa && lastPass) uses.push_back({t_.hdr, Use::ColorResolve});
-    if (t_.shadows && t_.shadows->enabled()) uses.push_back(t_.shadows->sampledUse());
+    if (t_.shadows)
+        for (const PassUse& u : t_.shadows->sampledUses()) uses.push_back(u);
     return uses;
 }
 

@@ -101,6 +101,14 @@ void addViewOptions(CLI::App& app, ViewOptions& o) {
                    "Shadow-map memory in MB: each light's map is sized from its screen size, "
                    "the largest halved until the atlas fits (an error if even 16x16 faces do not)")
         ->capture_default_str();
+    app.add_option("--shadow-cache", o.shadowCache,
+                   "on: the atlas pipelines render their shadow maps once and keep them while the "
+                   "shadowed lights do not move (a frame then costs no shadow pass; the one-time "
+                   "render is the counter shadow_maps_render_ms); off: every frame renders them "
+                   "(pass shadow_maps). One light's map (deferred volumes, multipass) is "
+                   "rendered for every light in every frame either way")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
 }
 
 std::unique_ptr<GpuContext> createContext(const DeviceOptions& o) {
@@ -160,6 +168,7 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
         throw UsageError("--shadow-budget " + std::to_string(v.shadowBudgetMb) +
                          ": expected 1..65536 MB");
     s.shadows.budgetMb = uint32_t(v.shadowBudgetMb);
+    s.shadows.cache = v.shadowCache == "on";
     return s;
 }
 

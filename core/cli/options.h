@@ -45,6 +45,7 @@ struct ViewOptions {
     int msaa = 1;
     std::string shadows = "none"; // --shadows N|all|none
     int shadowBudgetMb = 256;     // --shadow-budget MB
+    std::string shadowCache = "on"; // --shadow-cache on|off
 };
 
 void addSceneOptions(CLI::App& app, SceneOptions& o);

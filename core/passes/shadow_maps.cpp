@@ -1,6 +1,7 @@
 #include "core/passes/shadow_maps.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
@@ -45,7 +46,31 @@ ShadowMaps::~ShadowMaps() {
 
 bool ShadowMaps::enabled() const { return !scene_.shadowPlan().empty(); }
 
-bool ShadowMaps::stale() const { return enabled() && scene_.shadowGeneration() != generation_; }
+bool ShadowMaps::cached() const {
+    return residency_ == Residency::Atlas && scene_.shadowSettings().cache;
+}
+
+std::vector<PassUse> ShadowMaps::sampledUses() const {
+    if (!enabled() || cached()) return {};
+    return {{map_, Use::Sampled}};
+}
+
+bool ShadowMaps::stale() {
+    if (!enabled()) return false;
+    if (scene_.shadowGeneration() != generation_) return true;
+    if (!cached()) return false;
+    const std::vector<gpu::LightGpu> now = shadowedLights();
+    if (now.size() != keptLights_.size() ||
+        std::memcmp(now.data(), keptLights_.data(), now.size() * sizeof(gpu::LightGpu)) != 0)
+        renderCached();
+    return false;
+}
+
+std::vector<gpu::LightGpu> ShadowMaps::shadowedLights() const {
+    std::vector<gpu::LightGpu> out;
+    for (const ShadowLight& l : scene_.shadowPlan().lights) out.push_back(scene_.lightsGpu()[l.light]);
+    return out;
+}
 
 ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
     graph_ = &graph;
@@ -53,7 +78,14 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
     if (!enabled()) return map_ = {};
     const ShadowPlan& p = scene_.shadowPlan();
     const std::string lights = std::to_string(p.lights.size()) + " lights";
-    if (residency_ == Residency::Atlas) {
+    kept_ = Image();
+    if (cached()) {
+        kept_ = createImage(ctx_, {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight, 1, VK_SAMPLE_COUNT_1_BIT,
+                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
+                            {graph.owner(), "shadow_maps (once)", "shadow_atlas",
+                             "shadow maps of " + lights + ", all resident, rendered once and kept"});
+        map_ = {};
+    } else if (residency_ == Residency::Atlas) {
         map_ = graph.createImage("shadow_atlas", {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight,
                                                   VK_SAMPLE_COUNT_1_BIT,
                                                   "shadow maps of " + lights + ", all resident"});
@@ -83,7 +115,8 @@ void ShadowMaps::prepare(FrameGraph& graph) {
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
     writeBufferDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_FACES, scene_.shadowFaces());
     writeImageDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_MAP,
-                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graph.image(map_).view,
+                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                         cached() ? kept_.view : graph.image(map_).view,
                          VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
     layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, set_.layout);
     GraphicsPipelineDesc d;
@@ -97,6 +130,7 @@ void ShadowMaps::prepare(FrameGraph& graph) {
         d.specConstants = scene_.specConstants(AlphaMode::Mask);
         mask_ = createGraphicsPipeline(ctx_, d);
     }
+    if (cached()) renderCached();
 }
 
 void ShadowMaps::apply(std::string& shader, std::vector<SpecConstant>& spec) const {
@@ -191,6 +225,62 @@ void ShadowMaps::recordLight(PassContext& pc, uint32_t light) {
     depthBarrier(pc, pc.image(map_).image, true);
 }
 
+// The kept atlas, outside any frame: cleared, every face rendered, left readable, with two
+// timestamps around it. The queue is idle afterwards (submitAndWait), so the frames that sample
+// it need no barrier of their own.
+void ShadowMaps::renderCached() {
+    VkQueryPoolCreateInfo qi{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    qi.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    qi.queryCount = 2;
+    VkQueryPool pool;
+    VK_CHECK(vkCreateQueryPool(ctx_.device, &qi, nullptr, &pool));
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        vkCmdResetQueryPool(cmd, pool, 0, 2);
+        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        b.srcStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+        b.dstStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        b.dstAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED; // the old maps are discarded
+        b.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = kept_.image;
+        b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.imageMemoryBarrierCount = 1;
+        dep.pImageMemoryBarriers = &b;
+        vkCmdPipelineBarrier2(cmd, &dep);
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool, 0);
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = kept_.view;
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depth.clearValue.depthStencil = {0.0f, 0}; // reverse-Z: nothing in the way
+        VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        ri.renderArea = {{0, 0}, {kept_.desc.width, kept_.desc.height}};
+        ri.layerCount = 1;
+        ri.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &ri);
+        recordFaces(cmd, 0, uint32_t(scene_.shadowPlan().faces.size()), false);
+        vkCmdEndRendering(cmd);
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, pool, 1);
+        b.srcStageMask = b.dstStageMask;
+        b.srcAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        b.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+        b.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+        b.oldLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        b.newLayout = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    });
+    uint64_t ticks[2] = {0, 0};
+    VK_CHECK(vkGetQueryPoolResults(ctx_.device, pool, 0, 2, sizeof(ticks), ticks, sizeof(uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    vkDestroyQueryPool(ctx_.device, pool, nullptr);
+    keptRenderMs_ = double(ticks[1] - ticks[0]) * ctx_.caps.timestampPeriodNs * 1e-6;
+    ++keptRenders_;
+    keptLights_ = shadowedLights();
+}
+
 void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc, pc.image(map_).image, false); }
 
 std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
@@ -199,11 +289,18 @@ std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
     double draws = 0;
     for (uint32_t f = 0; f < p.faces.size(); ++f) draws += double(faceDraws(f).size());
     const bool atlas = residency_ == Residency::Atlas;
-    return {{"shadowed_lights", double(p.lights.size())},
-            {"shadow_faces", double(p.faces.size())},
-            {"shadow_map_bytes", double(atlas ? p.atlasBytes() : p.localBytes())},
-            {"shadow_map_renders_per_frame", atlas ? 1.0 : double(p.lights.size())},
-            {"shadow_face_draws", draws}};
+    std::vector<std::pair<std::string, double>> c = {
+        {"shadowed_lights", double(p.lights.size())},
+        {"shadow_faces", double(p.faces.size())},
+        {"shadow_map_bytes", double(atlas ? p.atlasBytes() : p.localBytes())},
+        {"shadow_map_renders_per_frame", cached() ? 0.0 : atlas ? 1.0 : double(p.lights.size())},
+        {"shadow_face_draws", draws},
+        {"shadow_maps_cached", cached() ? 1.0 : 0.0}};
+    if (cached()) {
+        c.push_back({"shadow_maps_render_ms", keptRenderMs_});
+        c.push_back({"shadow_maps_renders", double(keptRenders_)});
+    }
+    return c;
 }
 
 } // namespace tp

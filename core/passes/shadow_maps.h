@@ -6,6 +6,11 @@
 //   Atlas     every shadowed light's faces resident at once, rendered by one pass
 //             ("shadow_maps") before the shading: what tiled and clustered shading need, since
 //             any pixel may read any light (Forward+, tiled deferred, the visibility buffer).
+//             With --shadow-cache on (the default) the atlas is not a frame pass: it is rendered
+//             once, outside the frames, into an image the module keeps (the ledger lists it under
+//             the pipeline), and again only when a shadowed light moves (updateView: stale());
+//             its one-time GPU time is the counter shadow_maps_render_ms. Off: the pass renders
+//             it in every frame.
 //   PerLight  one light's map ("shadow_map", the largest light's 3 x 2 block of faces),
 //             rendered inside the consuming pass right before that light is shaded and rendered
 //             over for the next: what a pipeline that shades one light at a time can do
@@ -26,6 +31,8 @@
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
+#include "include/shadows.h"
 
 namespace tp {
 
@@ -45,10 +52,12 @@ class ShadowMaps {
     // Whether the scene's plan shadows any light (false: plan() adds nothing, and a pipeline
     // builds exactly what it built before shadows existed).
     bool enabled() const;
-    // Atlas: the "shadow_atlas" image and the "shadow_maps" pass; PerLight: the "shadow_map"
-    // image only. Returns the map. Remembers the plan's generation (stale()).
+    // Atlas: the "shadow_atlas" image and the "shadow_maps" pass (cached: neither; the module's
+    // own image); PerLight: the "shadow_map" image only. Returns the graph's map (invalid when
+    // cached). Remembers the plan's generation (stale()).
     ResourceHandle plan(FrameGraph& graph);
     ResourceHandle map() const { return map_; }
+    bool cached() const;
     // Pipelines and the set (after graph.compile()).
     void prepare(FrameGraph& graph);
     VkDescriptorSetLayout setLayout() const { return set_.layout; }
@@ -56,12 +65,15 @@ class ShadowMaps {
     // A consumer's shading pipeline: the shader's shadowed twin ("x_frag" -> "x_shadow_frag",
     // cmake's triptych_add_shadowed_shader) and the constant, when enabled(); else untouched.
     void apply(std::string& shader, std::vector<SpecConstant>& spec) const;
-    // What a pass that samples the atlas declares (enabled(), Atlas only).
-    PassUse sampledUse() const { return {map_, Use::Sampled}; }
+    // What a pass that samples the atlas declares (Atlas only): nothing when not enabled() or
+    // cached (the kept image is outside the graph, readable before any frame starts).
+    std::vector<PassUse> sampledUses() const;
     // Binds the set (nothing when not enabled()).
     void bind(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const;
-    // The plan changed its layout (other lights, other sizes) since plan(): plan again.
-    bool stale() const;
+    // For Renderer::updateView: true when the plan changed its layout (other lights, other
+    // sizes) since plan(): plan again. Cached: re-renders the kept atlas when a shadowed light
+    // moved (or turned), between frames.
+    bool stale();
 
     // PerLight, inside a pass that declared map() as its DepthAttachment and has no rendering
     // open: renders light `light`'s faces and leaves the map readable by fragment and compute
@@ -76,6 +88,8 @@ class ShadowMaps {
 
   private:
     void recordAtlas(PassContext& pc);
+    void renderCached();
+    std::vector<gpu::LightGpu> shadowedLights() const; // world space, as rendered
     void recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t faceCount, bool local);
     std::vector<const DrawItem*> faceDraws(uint32_t face) const;
 
@@ -84,6 +98,10 @@ class ShadowMaps {
     Residency residency_;
     ResourceHandle map_;
     FrameGraph* graph_ = nullptr;
+    Image kept_;                              // the cached atlas
+    std::vector<gpu::LightGpu> keptLights_;   // the shadowed lights it was rendered for
+    double keptRenderMs_ = 0;                 // its last one-time render, GPU time
+    uint32_t keptRenders_ = 0;
     uint64_t generation_ = 0;
     PassSet set_;
     VkSampler sampler_ = VK_NULL_HANDLE;

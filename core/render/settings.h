@@ -15,6 +15,9 @@ struct ShadowSettings {
     uint32_t count = 0; // shadowed lights (0: none)
     bool all = false;   // every light that reaches the view
     uint32_t budgetMb = 256;
+    // The atlas rendered once and kept while the shadowed lights and the geometry stay (the
+    // per-light residency cannot: it renders over its one map): --shadow-cache on|off.
+    bool cache = true;
     bool enabled() const { return all || count > 0; }
     bool operator==(const ShadowSettings&) const = default;
 };
