@@ -32,6 +32,9 @@ struct GraphImageInfo {
     uint32_t width = 0, height = 0; // 0 = the frame's extent
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     std::string purpose;
+    // Usage beyond what the declared uses give: an image a pass both renders and samples
+    // between its own renderings (ShadowMaps' PerLight map), which one Use cannot say.
+    VkImageUsageFlags extraUsage = 0;
 };
 
 class FrameGraph;
