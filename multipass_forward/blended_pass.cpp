@@ -15,6 +15,7 @@
 // (one_pass.frag), as engines light transparent objects.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/passes/shadow_maps.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
@@ -66,11 +67,13 @@ BlendedPass::BlendedPass(const PassEnv& env)
     if (additive_) { // --blended-lights additive: alpha * light added, no transmittance
         d.blend = BlendMode::Additive;
         light_ = createGraphicsPipeline(env.ctx, d);
+        lightShadowed_ = createShadowedTwin(env, d);
         return;
     }
     d.blend = BlendMode::Custom;
     d.customBlend = underBlend();
     light_ = createGraphicsPipeline(env.ctx, d);
+    lightShadowed_ = createShadowedTwin(env, d);
     d.fragmentShader = "mp_alpha_reset_frag";
     d.customBlend = alphaOnly();
     d.sampleShading = false; // a constant: per-sample coverage is enough
@@ -81,6 +84,7 @@ BlendedPass::BlendedPass(const PassEnv& env)
 BlendedPass::~BlendedPass() {
     destroyPipeline(env_.ctx, base_);
     destroyPipeline(env_.ctx, light_);
+    destroyPipeline(env_.ctx, lightShadowed_);
     destroyPipeline(env_.ctx, reset_);
 }
 
@@ -131,16 +135,32 @@ void BlendedPass::follow() {
         }
 }
 
+// --shadows: a shadowed light's map, unless the map holds it already (the previous draw's
+// last light), and the twin. A new rendering has lost the bindings (the map's own replaced
+// them): the scene set, the shadow set and `indices` again. Without shadows: light_.
+void BlendedPass::bindLight(PassContext& pc, ShadowedShading& shading, uint32_t light,
+                            VkBuffer indices) {
+    if (shading.hold(light)) {
+        env_.scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        env_.shadows->bind(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        vkCmdBindIndexBuffer(pc.cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+        bound_ = VK_NULL_HANDLE;
+    }
+    const VkPipeline p = shading.shadowed(light) ? lightShadowed_ : light_;
+    if (p != bound_) vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound_ = p);
+}
+
 // The exact light passes: each light's triangles of the draw in reverse order, composited
 // under the layers already passed (transmittance in the target's alpha), then T reset to 1.
-void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd) {
+void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd, ShadowedShading& shading) {
     if (bd.lights.empty()) return;
     vkCmdBindIndexBuffer(pc.cmd, reversedIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
     DrawItem reversed = *bd.draw;
     reversed.firstIndex = reversedFirst_.at(bd.draw);
     for (const auto& [light, scissor] : bd.lights) {
+        bound_ = VK_NULL_HANDLE; // the reset's pipeline was bound last: light_ again, as before
+        bindLight(pc, shading, light, reversedIndices_.buffer);
         setScissor(pc.cmd, scissor);
-        vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
         recordDraw(pc.cmd, env_.layout, reversed, light);
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, reset_);
         recordDraw(pc.cmd, env_.layout, reversed);
@@ -151,17 +171,23 @@ void BlendedPass::recordUnderLights(PassContext& pc, const BlendedDraw& bd) {
 // of every layer, in the scene's triangle order, so a far layer's share lands after the near
 // layer of the same draw was blended over it and escapes its (1 - alpha). Kept to measure
 // what the exact passes buy (docs/multipass_forward.md).
-void BlendedPass::recordAdditiveLights(PassContext& pc, const BlendedDraw& bd) {
+void BlendedPass::recordAdditiveLights(PassContext& pc, const BlendedDraw& bd,
+                                       ShadowedShading& shading) {
     if (bd.lights.empty()) return;
-    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, light_);
+    bound_ = VK_NULL_HANDLE; // the composite's pipeline is bound
     for (const auto& [light, scissor] : bd.lights) {
+        bindLight(pc, shading, light, env_.scene.indexBuffer());
         setScissor(pc.cmd, scissor);
         recordDraw(pc.cmd, env_.layout, *bd.draw, light);
     }
 }
 
 void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
-    beginShading(pc, t, resolve, false);
+    std::vector<uint32_t> order; // the lights in the order their passes run
+    if (light_)
+        for (const BlendedDraw& bd : env_.plan.blended)
+            for (const auto& lightRect : bd.lights) order.push_back(lightRect.first);
+    ShadowedShading shading(pc, t, resolve, env_.shadows, order);
     const SceneGpu& scene = env_.scene;
     scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
     const ScreenRect full{0, 0, int32_t(env_.settings.width), int32_t(env_.settings.height)};
@@ -173,14 +199,15 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
         setScissor(pc.cmd, full);
         recordDraw(pc.cmd, env_.layout, *bd.draw);
         if (additive_)
-            recordAdditiveLights(pc, bd);
+            recordAdditiveLights(pc, bd, shading);
         else
-            recordUnderLights(pc, bd);
+            recordUnderLights(pc, bd, shading);
         // A composite, then per light one draw (additive) or a light draw and a reset (under).
         draws_ += 1 + (additive_ ? 1u : 2u) * uint32_t(bd.lights.size());
         lightDraws_ += uint32_t(bd.lights.size());
     }
-    endRendering(pc);
+    shading.end();
+    mapRenders_ = shading.mapRenders();
 }
 
 } // namespace tp::mp

@@ -1,9 +1,11 @@
 // One additive pass per local light, all recorded in one graph pass ("light_passes") so
 // its GPU time is the cost of lighting as a whole. Each light draws only the meshes its
 // sphere touches (planLights), under a scissor at the sphere's screen rectangle; depth
-// EQUAL, no writes, blend ONE + ONE into the accumulation target.
+// EQUAL, no writes, blend ONE + ONE into the accumulation target. With --shadows, a shadowed
+// light's map is rendered right before its draws (shadowed_shading.cpp), timed with them.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/passes/shadow_maps.h"
 #include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
@@ -17,25 +19,41 @@ LightPasses::LightPasses(const PassEnv& env) : env_(env) {
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.blend = BlendMode::Additive;
     pipeline_ = createGraphicsPipeline(env.ctx, d);
+    shadowed_ = createShadowedTwin(env, d);
 }
 
 LightPasses::~LightPasses() {
     destroyPipeline(env_.ctx, pipeline_);
+    destroyPipeline(env_.ctx, shadowed_);
 }
 
+// With --shadows a shadowed light's batch is preceded by its map (ShadowedShading::hold) and
+// drawn with the twin; the others keep the plain pipeline.
 void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
-    beginShading(pc, t, resolve, false);
+    std::vector<uint32_t> order;
+    if (pipeline_)
+        for (const LightBatch& batch : env_.plan.batches) order.push_back(batch.light);
+    ShadowedShading shading(pc, t, resolve, env_.shadows, order);
     draws_ = 0;
     if (pipeline_) {
+        VkPipeline bound = pipeline_;
         bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const LightBatch& batch : env_.plan.batches) {
+            const bool restarted = shading.hold(batch.light);
+            const VkPipeline p = shading.shadowed(batch.light) ? shadowed_ : pipeline_;
+            if (restarted || p != bound) {
+                bindSceneDraws(pc.cmd, env_, bound = p);
+                if (p == shadowed_)
+                    env_.shadows->bind(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+            }
             setScissor(pc.cmd, batch.scissor);
             for (const DrawItem* d : batch.draws)
                 recordDraw(pc.cmd, env_.layout, *d, batch.light);
             draws_ += uint32_t(batch.draws.size());
         }
     }
-    endRendering(pc);
+    shading.end();
+    mapRenders_ = shading.mapRenders();
 }
 
 } // namespace tp::mp

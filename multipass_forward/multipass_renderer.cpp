@@ -5,6 +5,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/passes/depth_prepass.h"
+#include "core/passes/shadow_maps.h"
 #include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
@@ -26,11 +27,15 @@ class MultipassForwardRenderer final : public Renderer {
         base_.reset();
         lights_.reset();
         blended_.reset();
+        shadows_.reset();
         if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     }
 
     void plan(FrameGraph& graph) override {
         createTargets(graph);
+        // --shadows: one light's map ("shadow_map"), rendered by the light and blended passes.
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::PerLight);
+        shadows_->plan(graph);
         // The last pass that shades resolves the per-sample target into hdr.
         // Many views: the passes every view may need, whether or not this one does.
         hasLights_ = !plan_.batches.empty() || (manyViews_ && plan_.localLights > 0);
@@ -47,19 +52,25 @@ class MultipassForwardRenderer final : public Renderer {
                       [this, last](PassContext& pc) { base_->record(pc, t_, last); });
         if (hasLights) {
             last = !hasBlended;
-            graph.addPass("light_passes", shadingUses(t_, last),
+            std::vector<PassUse> uses = shadingUses(t_, last);
+            addShadowUse(uses, &*shadows_);
+            graph.addPass("light_passes", uses,
                           [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
         }
-        if (hasBlended)
-            graph.addPass("blended", shadingUses(t_, true),
+        if (hasBlended) {
+            std::vector<PassUse> uses = shadingUses(t_, true);
+            if (lightBlended()) addShadowUse(uses, &*shadows_); // one-pass: no light passes
+            graph.addPass("blended", uses,
                           [this](PassContext& pc) { blended_->record(pc, t_, true); });
+        }
         graph.exportResource("hdr", t_.hdr);
         graph.exportResource("depth", t_.depth);
     }
 
-    void prepare(FrameGraph&) override {
-        layout_ = scene_.createPipelineLayout();
-        PassEnv env{ctx_, scene_, mp_, plan_, layout_, accumFormat_, manyViews_};
+    void prepare(FrameGraph& graph) override {
+        shadows_->prepare(graph);
+        layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, shadows_->setLayout());
+        PassEnv env{ctx_, scene_, mp_, plan_, layout_, accumFormat_, manyViews_, &*shadows_};
         prepass_->prepare();
         base_ = std::make_unique<BasePass>(env);
         lights_ = std::make_unique<LightPasses>(env);
@@ -69,6 +80,7 @@ class MultipassForwardRenderer final : public Renderer {
     // The light plan again for the new view (CPU: scissors and per-light mesh lists), kept
     // where the planned passes and pipelines can record it.
     bool updateView(FrameGraph&) override {
+        if (shadows_->stale()) return false; // other shadowed lights or map sizes
         LightPlan next = planLights(scene_, lightBlended());
         const bool fits = next.baseDirectional == plan_.baseDirectional && // spec constants
                           (next.batches.empty() || hasLights_) &&
@@ -84,6 +96,7 @@ class MultipassForwardRenderer final : public Renderer {
     RendererStats stats() const override;
 
   private:
+    void shadowStats(RendererStats& s) const;
     bool lightBlended() const { return mp_.blendedLights != BlendedLights::OnePass; }
 
     void createTargets(FrameGraph& graph) {
@@ -111,6 +124,7 @@ class MultipassForwardRenderer final : public Renderer {
     LightPlan plan_;
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    std::optional<ShadowMaps> shadows_; // one light's map (shadow_map) with --shadows
     std::unique_ptr<passes::DepthPrepass> prepass_;
     std::unique_ptr<BasePass> base_;
     std::unique_ptr<LightPasses> lights_;
@@ -120,6 +134,7 @@ class MultipassForwardRenderer final : public Renderer {
 RendererStats MultipassForwardRenderer::stats() const {
     RendererStats s;
     auto count = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
+    shadowStats(s);
     const uint32_t lightDraws = lights_ ? lights_->draws() : 0,
                    blendDraws = blended_ ? blended_->draws() : 0;
     const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0,
@@ -163,6 +178,25 @@ RendererStats MultipassForwardRenderer::stats() const {
     s.lightWork.push_back({"base_pass", Base::Fragments, double(plan_.baseDirectional.size()), true,
                            "the directional lights, per fragment"});
     return s;
+}
+
+// ShadowMaps' counters, with the renders this pipeline made: one per shadowed light that lights
+// an opaque mesh on screen, plus one per change of light among the blended draws' light
+// passes (the map holds one light; a light that lights several blended draws is rendered
+// again for each run of them).
+void MultipassForwardRenderer::shadowStats(RendererStats& s) const {
+    if (!shadows_ || !shadows_->enabled()) return;
+    const double lightRenders = lights_ ? lights_->mapRenders() : 0,
+                 blendedRenders = blended_ ? blended_->mapRenders() : 0;
+    for (auto [name, value] : shadows_->counters())
+        s.counters.push_back(
+            {name, name == "shadow_map_renders_per_frame" ? lightRenders + blendedRenders : value});
+    s.counters.push_back({"light_passes_shadow_renders", lightRenders});
+    s.counters.push_back({"blended_shadow_renders", blendedRenders});
+    if (!lightBlended() && !plan_.blended.empty())
+        s.leftOut.push_back({"blended shadows", "--blended-lights one-pass shades every light at "
+                                                "once; one light's map is resident: blended "
+                                                "surfaces are lit unshadowed"});
 }
 
 } // namespace

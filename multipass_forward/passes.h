@@ -4,7 +4,7 @@
 // blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each
 // creates its pipelines in its constructor (after the graph allocated resources) and records into
 // the targets below. They share the scene's pipeline layout (set 0 + DrawPush); nothing has a
-// set 1.
+// set 1; with --shadows, set 2 is the one light's shadow map (shadowed_shading.cpp).
 #include <string>
 #include <vector>
 
@@ -19,7 +19,8 @@
 
 namespace tp {
 class GpuContext;
-}
+class ShadowMaps;
+} // namespace tp
 
 namespace tp::mp {
 
@@ -42,6 +43,10 @@ struct PassEnv {
     // RenderSettings::manyViews: pipelines for every draw the scene has, not only for those on
     // screen in the planned view, so a new view's plan fits (the renderer's updateView).
     bool allDraws = false;
+    // --shadows: one light's map (ShadowMaps::Residency::PerLight), rendered inside the light
+    // and blended passes before each shadowed light (ShadowedShading); null or not enabled():
+    // the passes record exactly what they recorded before shadows existed.
+    ShadowMaps* shadows = nullptr;
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass
@@ -52,6 +57,40 @@ void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear);
 // The fragment shader `mp_STEM_frag`, or its once-per-pixel variant `mp_STEM_pixel_frag`
 // (inputs at the pixel centre) under MSAA with --msaa-shading pixel.
 std::string fragmentShader(const PassEnv& env, const std::string& stem);
+// The frame-graph use of the shadow map by a pass that renders it (none without shadows).
+void addShadowUse(std::vector<PassUse>& uses, const ShadowMaps* shadows);
+// The shadowed twin of a light pipeline (mp_light_shadow_frag: evalLightShadowed with the
+// map); VK_NULL_HANDLE without shadows.
+VkPipeline createShadowedTwin(const PassEnv& env, GraphicsPipelineDesc d);
+
+// A shading pass's rendering, split where a shadowed light needs its map (--shadows): the map
+// can only be rendered with no rendering open, so before the first draw of a shadowed light
+// whose map is not already held, the accumulation's rendering ends, ShadowMaps::recordLight
+// renders the light's faces, a barrier orders the next rendering's load after the last one's
+// blending, and the rendering begins again (load). The map stays held across unshadowed
+// lights (they use the plain pipeline, which never reads it) and across consecutive draws of
+// the same light (blended draws); the MSAA resolve goes only into the last rendering. Without
+// shadows: one beginShading ... endRendering, as before.
+class ShadowedShading {
+  public:
+    // `order`: every light the pass will hold(), in order (to know which rendering is last).
+    ShadowedShading(PassContext& pc, const Targets& t, bool resolve, ShadowMaps* shadows,
+                    const std::vector<uint32_t>& order);
+    bool shadowed(uint32_t light) const;
+    // Before shading `light`: true when the rendering began again (bind everything again).
+    bool hold(uint32_t light);
+    void end(); // ends the rendering and returns the map to its attachment layout
+    uint32_t mapRenders() const { return renders_; }
+
+  private:
+    PassContext& pc_;
+    const Targets& t_;
+    const bool resolve_;
+    ShadowMaps* shadows_;
+    uint32_t switchesLeft_ = 0, renders_ = 0;
+    uint32_t held_ = ~0u; // the light the map holds (readable), ~0u: none
+};
+
 // Pipeline description shared by the shading passes: per-sample shading under MSAA with
 // --msaa-shading sample (the reference's rate), else once per pixel; scene layout,
 // accumulation format.
@@ -86,12 +125,14 @@ class LightPasses {
     ~LightPasses();
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
+    uint32_t mapRenders() const { return mapRenders_; } // shadow maps rendered (--shadows)
     bool hasPipeline() const { return pipeline_ != VK_NULL_HANDLE; }
 
   private:
     const PassEnv env_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
-    uint32_t draws_ = 0;
+    VkPipeline shadowed_ = VK_NULL_HANDLE; // --shadows: the twin, for the shadowed lights
+    uint32_t draws_ = 0, mapRenders_ = 0;
 };
 
 // 4. Blended draws back to front; each one's base pass composites over what is behind it,
@@ -104,22 +145,27 @@ class BlendedPass {
     void record(PassContext& pc, const Targets& t, bool resolve);
     uint32_t draws() const { return draws_; }
     uint32_t lightDraws() const { return lightDraws_; } // of draws(); under: each has a reset too
+    uint32_t mapRenders() const { return mapRenders_; } // shadow maps rendered (--shadows)
     bool hasPipelines() const { return base_ != VK_NULL_HANDLE; }
     // After the plan changed (a new view): the reversed triangles of every draw lit now.
     void follow();
 
   private:
     void createReversedIndices();
-    void recordUnderLights(PassContext& pc, const BlendedDraw& bd);
-    void recordAdditiveLights(PassContext& pc, const BlendedDraw& bd);
+    void recordUnderLights(PassContext& pc, const BlendedDraw& bd, ShadowedShading& shading);
+    void recordAdditiveLights(PassContext& pc, const BlendedDraw& bd, ShadowedShading& shading);
+    // Before a light's draws: the map (ShadowedShading::hold) and this light's pipeline.
+    void bindLight(PassContext& pc, ShadowedShading& shading, uint32_t light, VkBuffer indices);
 
     const PassEnv env_;
     const bool additive_; // --blended-lights additive: the textbook pass, no reversed order
     const bool onePass_;  // --blended-lights one-pass: every light in the composite, no light draws
     VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
+    VkPipeline lightShadowed_ = VK_NULL_HANDLE; // --shadows: light_'s twin
+    VkPipeline bound_ = VK_NULL_HANDLE;         // while recording
     Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
     std::map<const DrawItem*, uint32_t> reversedFirst_; // a lit draw's first index there
-    uint32_t draws_ = 0, lightDraws_ = 0;
+    uint32_t draws_ = 0, lightDraws_ = 0, mapRenders_ = 0;
 };
 
 } // namespace tp::mp

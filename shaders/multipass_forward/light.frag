@@ -11,12 +11,15 @@
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
+#include "include/shadow_light.glsl"
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
     MaterialSample ms = evalFragmentMaterial();
-    vec3 c = evalLight(lights[draw.TP_MP_LIGHT_INDEX], ms.surface, kHasSpot);
+    // The _shadow twin (--shadows) multiplies by the map this pass rendered for the light
+    // (one light's map: TP_SPEC_SHADOW_LOCAL); the plain shader is evalLight() itself.
+    vec3 c = evalLightShadowed(lights[draw.TP_MP_LIGHT_INDEX], ms.surface);
     if (kAlphaMode == TP_ALPHA_BLEND)
         outColor = vec4(c * ms.alpha, ms.alpha);
     else

@@ -1,10 +1,11 @@
 # multipass forward: base pass, one-light pass, blended transmittance reset, blended one-pass (the masked
 # prepass shader is shared).
 triptych_add_shader(SPVS ${SHADER_DIR}/base.frag mp_base_frag)
-triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_frag)
+# Light passes: each also as its _shadow twin (--shadows: the light's own map, shadow_light.glsl).
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_frag)
 # --msaa-shading pixel under MSAA: once per pixel, inputs at the pixel centre (scene_inputs.glsl).
 triptych_add_shader(SPVS ${SHADER_DIR}/base.frag mp_base_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
-triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/alpha_reset.frag mp_alpha_reset_frag)
 # --blended-lights one-pass: blended surfaces lit by every light in one pass.
 triptych_add_shader(SPVS ${SHADER_DIR}/one_pass.frag mp_one_pass_frag)

@@ -90,6 +90,35 @@ RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipelin
     return run.ok() ? std::move(*run) : RunResult{};
 }
 
+std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms& f) {
+    const uint32_t w = f.viewport.x, h = f.viewport.y;
+    std::vector<uint32_t> layers(size_t(w) * h, 0);
+    for (const Mesh& m : scene.meshes) {
+        if (scene.materials[m.material].alphaMode != AlphaMode::Blend) continue;
+        for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+            glm::vec2 lo(0.0f), hi{float(w), float(h)};
+            bool inFront = true;
+            glm::vec2 pmin(1e30f), pmax(-1e30f);
+            for (int k = 0; k < 3; ++k) {
+                glm::vec4 clip = f.viewProj * glm::vec4(m.positions[m.indices[t + k]], 1.0f);
+                if (clip.w <= f.projParams.x) inFront = false;
+                glm::vec2 px((clip.x / clip.w * 0.5f + 0.5f) * float(w),
+                             (0.5f - clip.y / clip.w * 0.5f) * float(h));
+                pmin = glm::min(pmin, px);
+                pmax = glm::max(pmax, px);
+            }
+            if (inFront) {
+                lo = glm::max(lo, glm::floor(pmin) - 1.0f);
+                hi = glm::min(hi, glm::ceil(pmax) + 1.0f);
+            }
+            for (int y = int(lo.y); y < int(hi.y); ++y)
+                for (int x = int(lo.x); x < int(hi.x); ++x)
+                    ++layers[size_t(y) * w + size_t(x)];
+        }
+    }
+    return layers;
+}
+
 const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name) {
     for (const DebugImage& d : run.debugImages)
         if (d.name == name) return &d.image;

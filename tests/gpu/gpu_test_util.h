@@ -29,6 +29,11 @@ Scene makeFloorScene(const std::vector<Light>& lights);
 RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
                     const RenderSettings& settings, uint32_t frames = 1);
 
+// Per pixel, an upper bound on the blended layers covering any of its samples: the blended
+// triangles whose screen bounding box touches it (all of them when one crosses the near
+// plane). CPU only; the scenes of these tests have few blended triangles.
+std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms& f);
+
 // The run's debug image of that name (settings.debug), or null.
 const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name);
 
