@@ -71,7 +71,7 @@ ImageDesc FrameGraph::imageDesc(uint32_t i) const {
     desc.width = r.imageInfo.width ? r.imageInfo.width : width_;
     desc.height = r.imageInfo.height ? r.imageInfo.height : height_;
     desc.samples = r.imageInfo.samples;
-    desc.usage = plan_.resources[i].imageUsage;
+    desc.usage = plan_.resources[i].imageUsage | r.imageInfo.extraUsage;
     return desc;
 }
 

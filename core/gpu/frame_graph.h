@@ -32,6 +32,10 @@ struct GraphImageInfo {
     uint32_t width = 0, height = 0; // 0 = the frame's extent
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     std::string purpose;
+    // Usage beyond what the declared uses give: an image a pass also uses in another way
+    // inside itself, behind barriers of its own (the per-light shadow map: rendered as the
+    // pass's depth attachment, then sampled by the same pass).
+    VkImageUsageFlags extraUsage = 0;
 };
 
 class FrameGraph;

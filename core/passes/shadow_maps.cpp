@@ -60,9 +60,12 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
         graph.addPass("shadow_maps", {{map_, Use::DepthAttachment}},
                       [this](PassContext& pc) { recordAtlas(pc); });
     } else {
+        // Declared as the consuming pass's depth attachment only; recordLight() makes it
+        // sampled inside that pass, so the sampled usage is asked for here.
         map_ = graph.createImage("shadow_map", {VK_FORMAT_D32_SFLOAT, p.localWidth, p.localHeight,
                                                 VK_SAMPLE_COUNT_1_BIT,
-                                                "one light's shadow map, rendered for each of " + lights});
+                                                "one light's shadow map, rendered for each of " + lights,
+                                                VK_IMAGE_USAGE_SAMPLED_BIT});
     }
     return map_;
 }
