@@ -127,6 +127,7 @@ class DeferredRenderer final : public Renderer {
     // binned candidates and the transparent lists' offsets, recomputed here on the CPU and
     // uploaded (docs/deferred.md, "Many views").
     bool updateView(FrameGraph& graph) override {
+        if (useVolumes() && volumes_.stale()) return false; // other shadowed lights or map sizes
         if (!t_.tileStats.valid()) return true; // volumes, opaque only: nothing derived
         if (!lighting_.updateView(graph)) return false;
         if (!hasBlended_) return true;
@@ -230,6 +231,7 @@ RendererStats DeferredRenderer::stats() const {
     if (useVolumes()) {
         edges = double(volumeEdges_);
         s.counters.push_back({"light_volume_draws", double(scene_.lightCount())});
+        for (const auto& c : volumes_.shadowCounters()) s.counters.push_back(c); // --shadows
         s.leftOut.push_back(
             {"lights per tile (statistics, heat map)", "volumes lighting has no opaque tiles"});
     } else {
@@ -280,6 +282,9 @@ void DeferredRenderer::addLightWork(RendererStats& s) const {
     else
         s.lightWork.push_back({"tiled_lighting", Base::CoveredPixels, s.counter("lights_per_tile_mean"), false,
                                "lights_per_tile_mean, per pixel with geometry"});
+    if (useVolumes() && volumes_.shadowPass()) // masked shadow-map draws run fragments too
+        s.lightWork.push_back({"volume_shadowed_lights", Base::Fragments, 1.0, false,
+                               "one light per volume fragment (and per masked shadow-map fragment)"});
     if (hasBlended_)
         s.lightWork.push_back({"transparent_forward", Base::Fragments,
                                s.counter("transparent_lights_per_nonempty_tile_mean"), false,

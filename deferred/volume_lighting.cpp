@@ -29,7 +29,7 @@ bool drawsCone(const gpu::LightGpu& light) {
 }
 
 VolumeLighting::~VolumeLighting() {
-    for (Stage* s : {&base_, &lights_, &sampleBase_}) {
+    for (Stage* s : {&base_, &lights_, &sampleBase_, &shadowed_}) {
         if (s->pipeline) vkDestroyPipeline(ctx_.device, s->pipeline, nullptr);
         if (s->layout) vkDestroyPipelineLayout(ctx_.device, s->layout, nullptr);
         destroyPassSet(ctx_, s->set);
@@ -87,6 +87,15 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
         graph.addPass("volume_sample_base", sampleBase,
                       [this](PassContext& pc) { recordSampleBase(pc); });
     graph.addPass("volume_lights", lights, [this](PassContext& pc) { recordLights(pc); });
+    // --shadows: the shadowed lights, each right after its map is rendered into the one map
+    // (its depth attachment, rendered over for every light). A pass of its own, so that its
+    // time (the map renders and these volumes) is apart from the unshadowed lights'. Nothing
+    // new is declared without shadows.
+    if (shadows_.plan(graph).valid()) {
+        lights.push_back({shadows_.map(), Use::DepthAttachment});
+        graph.addPass("volume_shadowed_lights", lights,
+                      [this](PassContext& pc) { recordShadowedLights(pc); });
+    }
 }
 
 void VolumeLighting::prepare(FrameGraph& graph) {
@@ -95,6 +104,14 @@ void VolumeLighting::prepare(FrameGraph& graph) {
     prepareBase(graph);
     prepareLights(graph);
     if (perSampleHdr()) prepareSampleBase(graph);
+    if (shadowPass()) {
+        shadows_.prepare(graph);
+        shadowed_.set = graph.createPassSet("volume_shadowed_lights", sampler_);
+        shadowed_.layout = scene_.createPipelineLayout(shadowed_.set.layout, shadows_.setLayout());
+        GraphicsPipelineDesc d = lightsDesc(shadowed_);
+        shadows_.apply(d.fragmentShader, d.specConstants); // the _shadow twin, local rects
+        shadowed_.pipeline = createGraphicsPipeline(ctx_, d);
+    }
 }
 
 void VolumeLighting::prepareBase(FrameGraph& graph) {
@@ -125,6 +142,10 @@ void VolumeLighting::prepareBase(FrameGraph& graph) {
 void VolumeLighting::prepareLights(FrameGraph& graph) {
     lights_.set = graph.createPassSet("volume_lights", sampler_);
     lights_.layout = scene_.createPipelineLayout(lights_.set.layout);
+    lights_.pipeline = createGraphicsPipeline(ctx_, lightsDesc(lights_));
+}
+
+GraphicsPipelineDesc VolumeLighting::lightsDesc(const Stage& stage) const {
     GraphicsPipelineDesc d;
     d.vertexShader = "deferred_volume_vert";
     d.fragmentShader = std::string("deferred_volume_light_m") +
@@ -141,15 +162,15 @@ void VolumeLighting::prepareLights(FrameGraph& graph) {
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL; // reverse-Z: back face at or behind the surface
     d.blend = BlendMode::Additive;
-    d.layout = lights_.layout;
-    d.passSet = &lights_.set;
+    d.layout = stage.layout;
+    d.passSet = &stage.set;
     if (perSampleHdr()) {
         d.samples = VkSampleCountFlagBits(t_->layout.samples);
         d.sampleShading = true;
         d.depthFormat = VK_FORMAT_UNDEFINED;
         d.depthTest = false;
     }
-    lights_.pipeline = createGraphicsPipeline(ctx_, d);
+    return d;
 }
 
 void VolumeLighting::prepareSampleBase(FrameGraph& graph) {
@@ -193,24 +214,57 @@ void VolumeLighting::recordBase(PassContext& pc) {
     endRendering(pc);
 }
 
-void VolumeLighting::recordLights(PassContext& pc) {
+void VolumeLighting::beginLights(PassContext& pc) {
     if (perSampleHdr()) {
         beginRendering(pc, {ColorTarget{t_->hdrMsaa, {}, false}}, std::nullopt);
     } else {
         ResourceHandle depth = t_->msaa() ? t_->volumeDepth : t_->gbufferDepth;
         beginRendering(pc, {ColorTarget{t_->hdr, {}, false}}, DepthTarget{depth, {}, false, true});
     }
+}
+
+void VolumeLighting::drawVolume(VkCommandBuffer cmd, uint32_t light) {
+    const gpu::LightGpu& l = scene_.lightsGpu()[light];
+    const bool cone = drawsCone(l);
+    uint32_t vertices = l.type == TP_LIGHT_DIRECTIONAL ? 3u
+                        : cone                         ? TP_DEF_CONE_VERTICES
+                                                       : TP_DEF_SPHERE_VERTICES;
+    vkCmdDraw(cmd, vertices, 1, 0, 2 * light + (cone ? 1u : 0u)); // firstInstance: light, mesh
+}
+
+// Every light without a shadow (all of them without --shadows), in one rendering.
+void VolumeLighting::recordLights(PassContext& pc) {
+    beginLights(pc);
     bind(pc.cmd, lights_);
     vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_FRONT_BIT); // back faces only
-    const std::vector<gpu::LightGpu>& lights = scene_.lightsGpu();
-    for (uint32_t i = 0; i < scene_.lightCount(); ++i) {
-        const bool cone = drawsCone(lights[i]);
-        uint32_t vertices = lights[i].type == TP_LIGHT_DIRECTIONAL ? 3u
-                            : cone                                 ? TP_DEF_CONE_VERTICES
-                                                                   : TP_DEF_SPHERE_VERTICES;
-        vkCmdDraw(pc.cmd, vertices, 1, 0, 2 * i + (cone ? 1u : 0u)); // firstInstance: light, mesh
-    }
+    for (uint32_t i = 0; i < scene_.lightCount(); ++i)
+        if (!shadows_.shadowed(i)) drawVolume(pc.cmd, i);
     endRendering(pc);
+}
+
+// Each shadowed light: its map rendered into the one map (no rendering open), then its volume
+// in a rendering of its own that samples it, then the map back to an attachment for the next.
+void VolumeLighting::recordShadowedLights(PassContext& pc) {
+    bool first = true;
+    for (uint32_t i = 0; i < scene_.lightCount(); ++i) {
+        if (!shadows_.shadowed(i)) continue;
+        shadows_.recordLight(pc, i);
+        // The previous light's blend into the same target, outside this rendering: the graph
+        // orders passes, not the renderings inside one, so the hazard is ours to cover.
+        if (!first)
+            memoryBarrier(pc.cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        first = false;
+        beginLights(pc);
+        bind(pc.cmd, shadowed_); // recordLight bound its own pipeline and sets
+        shadows_.bind(pc.cmd, shadowed_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_FRONT_BIT);
+        drawVolume(pc.cmd, i);
+        endRendering(pc);
+        shadows_.endLight(pc);
+    }
 }
 
 void VolumeLighting::recordSampleBase(PassContext& pc) {

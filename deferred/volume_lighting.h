@@ -7,8 +7,19 @@
 // scene under MSAA is lit per sample into hdr_msaa, which the hybrid forward pass blends
 // into: volume_sample_base writes each sample's ambient + emissive there, and the volumes
 // run per sample against the G-buffer's per-sample depth.
+//
+// --shadows (docs/deferred.md, "Shadows"): the shadowed lights leave volume_lights for a pass
+// of their own, volume_shadowed_lights, that holds one light's shadow map at a time
+// (ShadowMaps::Residency::PerLight): for each shadowed light it renders that light's faces
+// into the map, then draws the light's volume sampling it, and renders the next light's over
+// it. One map's memory, a map render per shadowed light; volume_lights is unchanged.
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
+#include "core/passes/shadow_maps.h"
 #include "deferred/deferred_shared.h"
 #include "deferred/deferred_targets.h"
 
@@ -27,10 +38,17 @@ bool drawsCone(const gpu::LightGpu& light);
 
 class VolumeLighting {
   public:
-    VolumeLighting(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
+    VolumeLighting(GpuContext& ctx, SceneGpu& scene)
+        : ctx_(ctx), scene_(scene), shadows_(ctx, scene, ShadowMaps::Residency::PerLight) {}
     ~VolumeLighting();
     void plan(FrameGraph& graph, DeferredTargets& t);
     void prepare(FrameGraph& graph);
+    // The shadow plan changed its layout (other lights, other map sizes): plan again.
+    bool stale() const { return shadows_.stale(); }
+    // Planned with shadows: the volume_shadowed_lights pass exists.
+    bool shadowPass() const { return shadows_.map().valid(); }
+    // The shadow map's counters for the renderer's stats (none without --shadows).
+    std::vector<std::pair<std::string, double>> shadowCounters() const { return shadows_.counters(); }
 
   private:
     struct Stage {
@@ -41,9 +59,13 @@ class VolumeLighting {
     void prepareBase(FrameGraph& graph);
     void prepareLights(FrameGraph& graph);
     void prepareSampleBase(FrameGraph& graph);
+    GraphicsPipelineDesc lightsDesc(const Stage& stage) const;
     void bind(VkCommandBuffer cmd, const Stage& stage);
     void recordBase(PassContext& pc);
+    void beginLights(PassContext& pc);
+    void drawVolume(VkCommandBuffer cmd, uint32_t light);
     void recordLights(PassContext& pc);
+    void recordShadowedLights(PassContext& pc);
     void recordSampleBase(PassContext& pc);
     // A blended scene under MSAA: lit per sample into hdr_msaa (the forward pass blends there).
     bool perSampleHdr() const { return t_->hdrMsaa.valid(); }
@@ -51,7 +73,8 @@ class VolumeLighting {
     SceneGpu& scene_;
     const DeferredTargets* t_ = nullptr;
     VkSampler sampler_ = VK_NULL_HANDLE;
-    Stage base_, lights_, sampleBase_;
+    Stage base_, lights_, sampleBase_, shadowed_;
+    ShadowMaps shadows_; // one light's map (PerLight), with --shadows
 };
 
 } // namespace tp

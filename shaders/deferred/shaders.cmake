@@ -49,6 +49,7 @@ triptych_add_shader(SPVS ${SHADER_DIR}/fullscreen.vert deferred_fullscreen_vert)
 triptych_add_shader(SPVS ${SHADER_DIR}/volume.vert deferred_volume_vert)
 # m = 2: per-sample hdr (a blended scene under MSAA): the light pass runs per sample into
 # hdr_msaa after volume_sample_base wrote each sample's ambient + emissive there.
+# Each with its shadowed twin (_shadow_frag: --shadows, one light's map at a time).
 foreach(m 0 1 2)
   set(msaa)
   if(m GREATER 0)
@@ -57,7 +58,7 @@ foreach(m 0 1 2)
   if(m EQUAL 2)
     list(APPEND msaa TP_HDR_MSAA=1)
   endif()
-  triptych_add_shader(SPVS ${SHADER_DIR}/volume_light.frag deferred_volume_light_m${m}_frag
+  triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/volume_light.frag deferred_volume_light_m${m}_frag
     DEFINES TP_EMISSIVE=0 ${msaa})
 endforeach()
 foreach(e 0 1)

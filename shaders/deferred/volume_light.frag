@@ -22,6 +22,7 @@
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "deferred/gbuffer_read.glsl"
+#include "include/shadow_light.glsl"
 
 layout(early_fragment_tests) in;
 #ifdef TP_MSAA
@@ -31,12 +32,14 @@ layout(location = 0) flat in uint inLight;
 layout(location = 0) out vec4 outColor;
 
 // evalLight(light, readSurface(...)) with its range test moved ahead of the G-buffer reads
-// (the same expression, so the same outcome).
+// (the same expression, so the same outcome). The shadowed twin (TP_SHADOW_MAPS, the pass
+// volume_shadowed_lights) multiplies by the light's own map, the one ShadowMaps::recordLight
+// rendered right before this draw (TP_SPEC_SHADOW_LOCAL: its faces' `local` rects).
 vec3 lightSample(LightGpu light, ivec2 p, uint s, vec2 offset, float depth) {
     vec3 position = reconstructPosition(p, offset, depth);
     if (light.type != TP_LIGHT_DIRECTIONAL && length(light.position - position) >= light.range)
         return vec3(0.0);
-    return evalLight(light, readSurface(p, s, position), kHasSpot);
+    return evalLightShadowed(light, readSurface(p, s, position));
 }
 
 #ifdef TP_MSAA
