@@ -22,6 +22,8 @@
 //   shades the opaque surfaces; the hybrid forward pass still needs the lists).
 //   TP_VIS_BLEND (with TP_VISBUFFER and TP_TRANSPARENT): blended fragments composited here
 //   from per-pixel lists (visbuffer/vis_blend.glsl), lit from the transparent lists.
+//   TP_SHADOW_MAPS (the _shadow twins, --shadows): every light's term (and the composited
+//   blended fragments') times its visibility in the shadow atlas (include/shadow_light.glsl).
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"

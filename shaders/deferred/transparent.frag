@@ -11,6 +11,8 @@
 // Rate: per sample (`sample` inputs, sample shading; 1x and --msaa-shading sample) or, built
 // with TP_INPUTS_AT_PIXEL (--msaa-shading pixel under MSAA), once per pixel and primitive at
 // the pixel centre, the value blended into every covered sample (scene_inputs.glsl).
+// TP_SHADOW_MAPS (the _shadow twins, --shadows): each light's term times its visibility in the
+// shadow atlas (include/shadow_light.glsl); blended surfaces receive shadows, cast none.
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
