@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "core/gpu/context.h"
@@ -9,6 +10,7 @@
 #include "core/gpu/readback.h"
 #include "core/passes/debug_views.h"
 #include "core/passes/hybrid_blended.h"
+#include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/render/scene_gpu.h"
 #include "deferred/def_settings.h"
@@ -76,6 +78,10 @@ class DeferredRenderer final : public Renderer {
             bounds = blended_.planBounds(graph, {t_.grid, t_.gbufferDepth, t_.layout.samples,
                                                  t_.msaa() && !t_.blendedPerPixel(),
                                                  t_.blendedPerPixel()});
+        if (!useVolumes()) { // tiled lighting samples every shadowed light's map: the atlas
+            shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas);
+            shadows_->plan(graph); // shadow_maps, with --shadows
+        }
         if (tilePass)
             lighting_.plan(graph, surfaceSource(), lightingTargets(), useVolumes(),
                            blended_.sliceRows(), bounds);
@@ -84,7 +90,7 @@ class DeferredRenderer final : public Renderer {
             blended_.planForward(graph,
                                  {t_.grid, t_.layout.samples, t_.blendedPerPixel(), t_.hdr,
                                   t_.hdrMsaa, t_.gbufferDepth, t_.transparentLists, bounds,
-                                  t_.hdrFormat},
+                                  t_.hdrFormat, atlas()},
                                  slices());
         exportOutputs(graph, tilePass, bounds);
     }
@@ -117,6 +123,7 @@ class DeferredRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         gbuffer_.prepare();
+        if (shadows_) shadows_->prepare(graph); // its set layout, before the passes sampling it
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes()) volumes_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
@@ -128,6 +135,7 @@ class DeferredRenderer final : public Renderer {
     // uploaded (docs/deferred.md, "Many views").
     bool updateView(FrameGraph& graph) override {
         if (useVolumes() && volumes_.stale()) return false; // other shadowed lights or map sizes
+        if (shadows_ && shadows_->stale()) return false;
         if (!t_.tileStats.valid()) return true; // volumes, opaque only: nothing derived
         if (!lighting_.updateView(graph)) return false;
         if (!hasBlended_) return true;
@@ -178,8 +186,10 @@ class DeferredRenderer final : public Renderer {
     TiledLightingTargets lightingTargets() const {
         return {t_.grid,      t_.hdr,        t_.hdrMsaa,
                 t_.hdrFormat, t_.tileStats,  t_.transparentLists,
-                t_.debug,     t_.listOffsets};
+                t_.debug,     t_.listOffsets, atlas()};
     }
+    // The shadow atlas tiled lighting and the blended pass sample (null: volumes lighting).
+    const ShadowMaps* atlas() const { return shadows_ ? &*shadows_ : nullptr; }
 
     GpuContext& ctx_;
     SceneGpu& scene_;
@@ -192,6 +202,7 @@ class DeferredRenderer final : public Renderer {
     bool hasBlended_ = false;
     uint64_t volumeEdges_ = 0; // edge pixels found by the volumes base pass (MSAA)
     GBufferPass gbuffer_;
+    std::optional<ShadowMaps> shadows_; // tiled lighting: the atlas (shadow_maps) with --shadows
     TiledLighting lighting_;
     VolumeLighting volumes_;
     HybridBlended blended_;           // blended scenes: lists, depth bounds, the forward pass
@@ -222,6 +233,7 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
 
 RendererStats DeferredRenderer::stats() const {
     RendererStats s;
+    if (shadows_) s.counters = shadows_->counters(); // none without --shadows
     const uint32_t samples = t_.layout.samples;
     s.counters.push_back({"gbuffer_bytes_per_sample", double(t_.layout.bytesPerSample())});
     s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});

@@ -44,7 +44,7 @@ class VolumeLighting {
     void plan(FrameGraph& graph, DeferredTargets& t);
     void prepare(FrameGraph& graph);
     // The shadow plan changed its layout (other lights, other map sizes): plan again.
-    bool stale() const { return shadows_.stale(); }
+    bool stale() { return shadows_.stale(); }
     // Planned with shadows: the volume_shadowed_lights pass exists.
     bool shadowPass() const { return shadows_.map().valid(); }
     // The shadow map's counters for the renderer's stats (none without --shadows).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
@@ -9,6 +10,7 @@
 #include "core/gpu/resources.h"
 #include "core/passes/debug_views.h"
 #include "core/passes/hybrid_blended.h"
+#include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/render/scene_gpu.h"
 #include "visbuffer/blended_ids_pass.h"
@@ -83,12 +85,16 @@ class VisbufferRenderer final : public Renderer {
             bounds = blended_.planBounds(graph,
                                          {lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
                                           vis_.sampling.perPixelUnderMsaa()});
+        // The resolve samples every shadowed light's map: the atlas, rendered before it.
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas);
+        shadows_->plan(graph); // shadow_maps, with --shadows
+        lt_.shadows = &*shadows_;
         lighting_.plan(graph, surfaceSource(), lt_, false, blended_.sliceRows(), bounds);
         if (hasBlended_ && !blendInCompute_)
             blended_.planForward(graph,
                                  {lt_.grid, samples, vis_.sampling.perPixelUnderMsaa(), lt_.hdr,
                                   lt_.hdrMsaa, ids_.depth, lt_.transparentLists, bounds,
-                                  lt_.hdrFormat},
+                                  lt_.hdrFormat, &*shadows_},
                                  slices());
         graph.exportResource("hdr", lt_.hdr);
         graph.exportResource("depth", depth_);
@@ -101,6 +107,7 @@ class VisbufferRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         visibility_.prepare();
+        shadows_->prepare(graph); // its set layout, before the passes sampling it
         lighting_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
         if (blendInCompute_) blendedIds_.prepare(graph);
@@ -112,6 +119,7 @@ class VisbufferRenderer final : public Renderer {
     // transparent lists' offsets, and (--vis-blended compute) the draw table's blended rows in
     // the new back-to-front order and the fragment pool's bound.
     bool updateView(FrameGraph& graph) override {
+        if (shadows_->stale()) return false; // other shadowed lights or map sizes
         if (!lighting_.updateView(graph)) return false;
         if (hasBlended_ && !blended_.updateLists(lighting_, lt_)) return false;
         if (!blendInCompute_) return true;
@@ -182,6 +190,7 @@ class VisbufferRenderer final : public Renderer {
     vis::BlendedIdsPass blendedIds_; // --vis-blended compute
     vis::BlendedListTargets lists_;
     uint32_t blendCounters_[TP_VIS_BLEND_COUNTER_WORDS] = {};
+    std::optional<ShadowMaps> shadows_; // the atlas (shadow_maps) with --shadows
     TiledLighting lighting_;
     HybridBlended blended_; // blended scenes: lists, depth bounds, the forward pass
     TiledLightingTargets lt_;
@@ -238,6 +247,7 @@ void VisbufferRenderer::addBlendedListStats(RendererStats& s) const {
 
 RendererStats VisbufferRenderer::stats() const {
     RendererStats s;
+    if (shadows_) s.counters = shadows_->counters(); // none without --shadows
     const uint32_t samples = vis_.sampling.samples;
     s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // fp32 id, beside depth
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});

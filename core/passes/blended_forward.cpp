@@ -5,6 +5,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/stand_ins.h"
+#include "core/passes/shadow_maps.h"
 #include "core/render/scene_gpu.h"
 #include "include/tiled_lighting.h"
 
@@ -31,8 +32,12 @@ void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t,
     } else {
         uses.push_back({t.hdr, Use::ColorAttachment});
     }
+    if (t.shadows)
+        for (const PassUse& u : t.shadows->sampledUses()) uses.push_back(u);
     graph.addPass("transparent_forward", uses, [this](PassContext& pc) { record(pc); });
 }
+
+bool BlendedForwardPass::shadowed() const { return t_.shadows && t_.shadows->enabled(); }
 
 void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binned) {
     std::vector<ExternalBuffer> externals = {{TP_DEF_FWD_BINDING_CANDIDATES, candidates}};
@@ -42,7 +47,8 @@ void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool bi
         externals.push_back({TP_DEF_FWD_BINDING_MASKS, noMasks_.buffer});
     }
     set_ = graph.createPassSet("transparent_forward", VK_NULL_HANDLE, externals);
-    layout_ = scene_.createPipelineLayout(set_.layout);
+    layout_ = scene_.createPipelineLayout(set_.layout,
+                                          shadowed() ? t_.shadows->setLayout() : VK_NULL_HANDLE);
     GraphicsPipelineDesc d;
     // --msaa-shading pixel under MSAA: inputs at the pixel centre (scene_inputs.glsl), no
     // sample shading; each covered sample that passes the depth test blends the pixel's value.
@@ -52,6 +58,7 @@ void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool bi
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
     d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
     d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
+    if (shadowed()) t_.shadows->apply(d.fragmentShader, d.specConstants); // the _shadow twin
     d.colorFormats = {t_.hdrFormat};
     d.samples = VkSampleCountFlagBits(t_.samples);
     d.sampleShading =
@@ -71,6 +78,7 @@ void BlendedForwardPass::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
+    if (shadowed()) t_.shadows->bind(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
     endRendering(pc);
 }

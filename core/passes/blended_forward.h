@@ -12,19 +12,24 @@
 
 namespace tp {
 
+class GpuContext;
+class SceneGpu;
+class ShadowMaps;
+
 // hdrMsaa valid under MSAA only; depth: the per-sample depth of the opaque surfaces (tested,
-// not written); lists: the transparent lists; bounds: the blended depth bounds.
+// not written); lists: the transparent lists; bounds: the blended depth bounds; shadows: the
+// shadow atlas the blended fragments sample when it is enabled (Atlas residency; null or not
+// enabled: no shadows, the pass as it was before them). Blended surfaces receive shadows;
+// they cast none (the maps hold opaque and masked draws).
 struct BlendedForwardTargets {
     la::TileGrid grid;
     uint32_t samples = 1;
     bool perPixel = false; // under MSAA: once per pixel at the centre (--msaa-shading pixel)
     ResourceHandle hdr, hdrMsaa, depth, lists, bounds;
     VkFormat hdrFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    const ShadowMaps* shadows = nullptr;
     bool msaa() const { return samples > 1; }
 };
-
-class GpuContext;
-class SceneGpu;
 
 class BlendedForwardPass {
   public:
@@ -41,6 +46,7 @@ class BlendedForwardPass {
 
   private:
     void record(PassContext& pc);
+    bool shadowed() const;
     GpuContext& ctx_;
     SceneGpu& scene_;
     BlendedForwardTargets t_;

@@ -106,7 +106,8 @@ SpecConstant ShadowMaps::specConstant() const {
 }
 
 void ShadowMaps::prepare(FrameGraph& graph) {
-    if (!enabled()) return;
+    // Not enabled, or a per-frame atlas no live pass samples (the graph culled it): no set.
+    if (!enabled() || (!cached() && !graph.isAllocated(map_))) return;
     set_ = createPassSet(ctx_, {{TP_BINDING_SHADOW_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                 {TP_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
     VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};

@@ -10,6 +10,7 @@
 #include "core/gpu/vk_check.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
+#include "core/passes/shadow_maps.h"
 #include "core/render/renderer.h"
 #include "core/render/scene_gpu.h"
 
@@ -46,7 +47,13 @@ void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source,
     if (t.transparentLists.valid())
         uses.push_back({blendBounds, Use::StorageRead, TP_DEF_BINDING_BLEND_BOUNDS});
     if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_DEF_BINDING_DEBUG});
+    if (shadowed()) // set 2, not the pass's set
+        for (const PassUse& u : t.shadows->sampledUses()) uses.push_back(u);
     graph.addPass(passName(), uses, [this](PassContext& pc) { record(pc); });
+}
+
+bool TiledLighting::shadowed() const {
+    return !listsOnly_ && t_.shadows && t_.shadows->enabled();
 }
 
 std::string TiledLighting::passName() const {
@@ -89,7 +96,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
         externals.insert(externals.end(), source_.buffers.begin(), source_.buffers.end());
     set_ = graph.createPassSet(passName(), sampler_, externals);
 
-    layout_ = scene_.createPipelineLayout(set_.layout);
+    layout_ = scene_.createPipelineLayout(set_.layout,
+                                          shadowed() ? t_.shadows->setLayout() : VK_NULL_HANDLE);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
     spec.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
     spec.insert(spec.end(), source_.constants.begin(), source_.constants.end());
@@ -100,7 +108,9 @@ void TiledLighting::prepare(FrameGraph& graph) {
     // The shared slice masks: clustered shading only (tiled groups keep one word).
     spec.push_back(
         {TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
-    pipeline_ = createComputePipeline(ctx_, shaderName(), spec, layout_, &set_);
+    std::string shader = shaderName();
+    if (shadowed()) t_.shadows->apply(shader, spec); // the _shadow twin
+    pipeline_ = createComputePipeline(ctx_, shader, spec, layout_, &set_);
 }
 
 uint64_t viewCapacity(uint64_t need, uint64_t floor, uint64_t most, bool manyViews) {
@@ -255,6 +265,7 @@ void TiledLighting::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
+    if (shadowed()) t_.shadows->bind(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     // Binned: batches over each tile's candidates, up to the fullest tile's.
     const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();

@@ -48,6 +48,7 @@ EdgeAndRoughMetal splitDebugImage(const ImageRGBA& debug);
 
 class GpuContext;
 class SceneGpu;
+class ShadowMaps;
 
 // Planned for many views (RenderSettings::manyViews): a list sized from the camera and the
 // lights gets kViewHeadroom times the first view's need (at least `floor`, never more than
@@ -85,6 +86,10 @@ struct TiledLightingTargets {
     VkFormat hdrFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     ResourceHandle tileStats, transparentLists, debug;
     std::vector<uint32_t> listOffsets; // transparent lists: tileCount + 1 run offsets
+    // The shadow atlas (ShadowMaps::Residency::Atlas, planned before this pass) the shading
+    // samples when it is enabled (--shadows): the shaders' _shadow twins, set TP_SET_SHADOW.
+    // Null, or not enabled: the pass is what it was before shadows existed.
+    const ShadowMaps* shadows = nullptr;
 };
 
 class TiledLighting {
@@ -138,6 +143,7 @@ class TiledLighting {
     void dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end);
     std::string passName() const;
     std::string shaderName() const;
+    bool shadowed() const; // shading that samples the shadow atlas
     void uploadCandidates(FrameGraph& graph);
     void bin(); // bins_ for the scene's current view and lights
     // The candidates buffer's words for bins_: header, directional lights, offsets, then the

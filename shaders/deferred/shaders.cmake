@@ -7,12 +7,15 @@ triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_frag
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_emissive_frag DEFINES TP_EMISSIVE=1)
 # The blended forward pass: per sample (1x, --msaa-shading sample) or, under MSAA at
 # --msaa-shading pixel, once per pixel at its centre (as Forward+'s and multipass's blended draws).
-triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_frag)
-triptych_add_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
+# Each with its _shadow twin (--shadows: the blended surfaces sample the atlas too).
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_frag)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/transparent.frag deferred_transparent_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 # Tiled lighting variants where the set-1 resources differ: m = 0 single-sample G-buffer,
 # 1 per-sample G-buffer, 2 per-sample G-buffer and per-sample hdr (blended under MSAA);
 # e = emissive target; t = transparent light lists; d = debug outputs; each also with the
 # suffix _h16 for an RGBA16F hdr (--hdr fp16: a storage image's format is in the shader).
+# Each with its _shadow twin (--shadows: the lights' visibility in the shadow atlas, set 2),
+# 96 in all (docs/deferred.md, "Shadows": what they add to the build).
 foreach(m 0 1 2)
   foreach(e 0 1)
     foreach(t 0 1)
@@ -30,9 +33,9 @@ foreach(m 0 1 2)
         if(d)
           list(APPEND defs TP_DEBUG=1)
         endif()
-        triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
+        triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
           deferred_tiled_m${m}_e${e}_t${t}_d${d}_comp DEFINES ${defs})
-        triptych_add_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
+        triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/tiled_lighting.comp
           deferred_tiled_m${m}_e${e}_t${t}_d${d}_h16_comp DEFINES ${defs} TP_HDR16=1)
       endforeach()
     endforeach()

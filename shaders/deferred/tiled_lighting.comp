@@ -22,10 +22,15 @@
 //   shades the opaque surfaces; the hybrid forward pass still needs the lists).
 //   TP_VIS_BLEND (with TP_VISBUFFER and TP_TRANSPARENT): blended fragments composited here
 //   from per-pixel lists (visbuffer/vis_blend.glsl), lit from the transparent lists.
+//   TP_SHADOW_MAPS (the _shadow twins, --shadows): every light's term (and the composited
+//   blended fragments') times its visibility in the shadow atlas (include/shadow_light.glsl).
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/light_model.h"
+// evalLightShadowed: evalLight itself, or (TP_SHADOW_MAPS, the _shadow twins) times the
+// light's visibility in the shadow atlas (set TP_SET_SHADOW).
+#include "include/shadow_light.glsl"
 #ifdef TP_LISTS_ONLY
 #define TP_GBUFFER_DEPTH_ONLY
 #endif
@@ -159,12 +164,12 @@ vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
             for (uint b = 0u; b < 32u && bits != 0u; ++b) {
                 int lsb = findLSB(bits);
                 bits &= bits - 1u;
-                sum += evalLight(lights[sLights[w * 32u + uint(lsb)]], ss, kHasSpot);
+                sum += evalLightShadowed(lights[sLights[w * 32u + uint(lsb)]], ss);
             }
         }
         return sum;
     }
-    for (uint i = 0u; i < n; ++i) sum += evalLight(lights[sLights[i]], ss, kHasSpot);
+    for (uint i = 0u; i < n; ++i) sum += evalLightShadowed(lights[sLights[i]], ss);
     return sum;
 }
 

@@ -11,12 +11,15 @@
 // Rate: per sample (`sample` inputs, sample shading; 1x and --msaa-shading sample) or, built
 // with TP_INPUTS_AT_PIXEL (--msaa-shading pixel under MSAA), once per pixel and primitive at
 // the pixel centre, the value blended into every covered sample (scene_inputs.glsl).
+// TP_SHADOW_MAPS (the _shadow twins, --shadows): each light's term times its visibility in the
+// shadow atlas (include/shadow_light.glsl); blended surfaces receive shadows, cast none.
 #include "include/shared.h"
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
+#include "include/shadow_light.glsl"
 
 layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
@@ -75,7 +78,7 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[listLight(c, start, w, uint(lsb))], surface, kHasSpot);
+            sum += evalLightShadowed(lights[listLight(c, start, w, uint(lsb))], surface);
         }
     }
     return sum;
@@ -92,7 +95,7 @@ vec3 maskLights(uint tile, uint count, uint start, SurfaceSample surface) {
         for (uint b = 0u; b < 32u && bits != 0u; ++b) {
             int lsb = findLSB(bits);
             bits &= bits - 1u;
-            sum += evalLight(lights[defCandidateLight(c, w * 32u + uint(lsb))], surface, kHasSpot);
+            sum += evalLightShadowed(lights[defCandidateLight(c, w * 32u + uint(lsb))], surface);
         }
     }
     return sum;
@@ -114,6 +117,6 @@ void main() {
         return;
     }
     for (uint i = 0u; i < count; ++i)
-        sum += evalLight(lights[tLists[start + i]], ms.surface, kHasSpot);
+        sum += evalLightShadowed(lights[tLists[start + i]], ms.surface);
     outColor = vec4(sum, ms.alpha);
 }

@@ -10,6 +10,7 @@ triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_frag)
 # (core/passes/tiled_lighting.cpp: shaderName): m = 0 single-sample ids, 1 per-sample ids,
 # 2 per-sample ids and per-sample hdr (blended under MSAA, forward); t = transparent light
 # lists; d = debug outputs; _h16 = RGBA16F hdr. e stays 0: emission comes from the material.
+# Each with its _shadow twin (--shadows: the shadow atlas, set 2).
 # Extra defines after the lists of m and t values.
 function(vis_tiled_variants family ms ts)
   foreach(m ${ms})
@@ -29,8 +30,8 @@ function(vis_tiled_variants family ms ts)
           list(APPEND defs TP_DEBUG=1)
         endif()
         set(name ${family}_m${m}_e0_t${t}_d${d})
-        triptych_add_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp ${name}_comp DEFINES ${defs})
-        triptych_add_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp ${name}_h16_comp DEFINES ${defs} TP_HDR16=1)
+        triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp ${name}_comp DEFINES ${defs})
+        triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp ${name}_h16_comp DEFINES ${defs} TP_HDR16=1)
       endforeach()
     endforeach()
   endforeach()

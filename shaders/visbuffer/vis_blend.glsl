@@ -100,7 +100,7 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
                 uint lsb = uint(findLSB(bits));
                 bits &= bits - 1u;
                 uint i = w * 32u + lsb;
-                if (i >= first && i < end) sum += evalLight(lights[defCandidateLight(c, i)], ss, kHasSpot);
+                if (i >= first && i < end) sum += evalLightShadowed(lights[defCandidateLight(c, i)], ss);
             }
         }
         return sum;
@@ -110,7 +110,7 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
     for (uint i = lowerBound(start, count, first); i < count; ++i) {
         uint light = tLists[start + i];
         if (light >= end) break;
-        sum += evalLight(lights[light], ss, kHasSpot);
+        sum += evalLightShadowed(lights[light], ss);
     }
     return sum;
 }
