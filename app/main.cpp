@@ -12,6 +12,7 @@
 #include "compare/commands.h"
 #include "core/cli/options.h"
 #include "core/gpu/vk_check.h"
+#include "core/passes/shadow_plan.h"
 #include "viewer/view_command.h"
 
 int main(int argc, char** argv) {
@@ -46,6 +47,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "triptych: %s (see --help)\n", e.what());
         return 2;
     } catch (const tp::cli::UsageError& e) {
+        std::fprintf(stderr, "triptych: %s\n", e.what());
+        return 2;
+    } catch (const tp::ShadowError& e) { // the budget cannot hold the lights (known at the view)
         std::fprintf(stderr, "triptych: %s\n", e.what());
         return 2;
     } catch (const tp::GpuError& e) {
