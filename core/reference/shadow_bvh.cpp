@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <tuple>
 
 namespace tp::ref {
 namespace {
@@ -46,11 +47,13 @@ class BvhBuilder {
         }
     }
 
+    // [begin, end) under one child: leaves of at most leafMax triangles, tagged leafFlags.
     BvhChild build(uint32_t begin, uint32_t end, uint32_t depth) {
         Aabb box;
         for (uint32_t i = begin; i < end; ++i) box.extend(boxes_[order_[i]]);
-        if (end - begin <= TP_SHADOW_BVH_LEAF_MAX)
-            return {bvhPadded(box), begin, TP_SHADOW_BVH_LEAF | (end - begin)};
+        if (end == begin) return {box, 0, TP_SHADOW_BVH_LEAF}; // empty: no triangle to test
+        if (end - begin <= leafMax_)
+            return {bvhPadded(box), begin, TP_SHADOW_BVH_LEAF | leafFlags_ | (end - begin)};
         const uint32_t node = uint32_t(nodes_.size());
         nodes_.emplace_back();
         depth_ = std::max(depth_, depth + 1);
@@ -65,6 +68,7 @@ class BvhBuilder {
     std::vector<gpu::ShadowBvhNode> nodes_;
     std::vector<uint32_t> order_;
     uint32_t depth_ = 0;
+    uint32_t leafMax_ = TP_SHADOW_BVH_LEAF_MAX, leafFlags_ = 0;
 
   private:
     // Where [begin, end) splits: the binned-SAH plane, or the median of the widest centroid
@@ -165,22 +169,20 @@ ShadowBvh buildShadowBvh(const std::vector<glm::vec3>& positions,
                          const std::vector<gpu::ShadowTriangle>& triangles) {
     const auto start = std::chrono::steady_clock::now();
     BvhBuilder b(positions, triangles);
+    // Opaque triangles first: the root's child a holds them, child b the masked ones.
+    auto masked = std::stable_partition(b.order_.begin(), b.order_.end(), [&](uint32_t t) {
+        return triangles[t].material == TP_SHADOW_OPAQUE;
+    });
+    const uint32_t n = uint32_t(triangles.size()), opaque = uint32_t(masked - b.order_.begin());
+    b.nodes_.emplace_back();
+    const BvhChild a = b.build(0, opaque, 1);
+    b.leafMax_ = 1; // a masked leaf is one triangle: the shader alpha-tests it on its own
+    b.leafFlags_ = TP_SHADOW_BVH_MASKED;
+    const BvhChild m = b.build(opaque, n, 1);
+    b.nodes_[0] = {a.box.min, a.index, a.box.max, a.info, m.box.min, m.index, m.box.max, m.info};
     ShadowBvh out;
-    const uint32_t n = uint32_t(triangles.size());
-    if (n <= TP_SHADOW_BVH_LEAF_MAX) {
-        // A root of one leaf and one empty leaf: the shader always starts at an inner node.
-        Aabb box;
-        for (const gpu::ShadowTriangle& t : triangles)
-            for (uint32_t v : {t.v0, t.v1, t.v2}) box.extend(positions.at(v));
-        box = bvhPadded(box);
-        b.nodes_.push_back({box.min, 0, box.max, TP_SHADOW_BVH_LEAF | n, box.min, 0, box.max,
-                            TP_SHADOW_BVH_LEAF});
-        b.depth_ = 1;
-    } else {
-        b.build(0, n, 0);
-    }
     out.nodes = std::move(b.nodes_);
-    out.depth = b.depth_;
+    out.depth = std::max(b.depth_, 1u);
     out.triangles.reserve(n);
     for (uint32_t i : b.order_) out.triangles.push_back(triangles[i]);
     out.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
@@ -192,35 +194,36 @@ bool shadowRayBlocked(const ShadowBvh& bvh, const std::vector<glm::vec3>& positi
                       glm::vec3 origin, glm::vec3 target, uint32_t* steps) {
     const glm::vec3 d = target - origin;
     const glm::vec3 inv = gpu::shadowRayInvDir(d);
-    auto leafBlocks = [&](uint32_t first, uint32_t info) {
-        for (uint32_t k = 0; k < (info & ~TP_SHADOW_BVH_LEAF); ++k) {
-            const gpu::ShadowTriangle& t = bvh.triangles[first + k];
-            const glm::vec3 h = gpu::rayTriangle(origin, d, positions[t.v0], positions[t.v1],
-                                                 positions[t.v2]);
-            if (h.x > 0.0f && h.x < 1.0f) return true;
-        }
-        return false;
+    auto triangleHit = [&](uint32_t i) {
+        const gpu::ShadowTriangle& t = bvh.triangles[i];
+        const glm::vec3 h =
+            gpu::rayTriangle(origin, d, positions[t.v0], positions[t.v1], positions[t.v2]);
+        return h.x > 0.0f && h.x < 1.0f;
     };
+    // The shader's order: pop an entry; a masked leaf is tested on its own, an inner node tests
+    // both children's boxes, its opaque leaves at once, and pushes the rest.
     uint32_t stack[TP_SHADOW_BVH_STACK];
-    uint32_t sp = 0, node = 0, visits = 0;
+    uint32_t sp = 0, visits = 0;
+    stack[sp++] = 0;
     bool blocked = false;
-    for (;;) {
+    while (sp > 0 && !blocked) {
         ++visits;
-        const gpu::ShadowBvhNode& n = bvh.nodes[node];
-        const bool hitA = gpu::rayBoxEntry(origin, inv, 1.0f, n.aMin, n.aMax) <= 1.0f;
-        const bool hitB = gpu::rayBoxEntry(origin, inv, 1.0f, n.bMin, n.bMax) <= 1.0f;
-        if ((hitA && n.aInfo != 0 && leafBlocks(n.a, n.aInfo)) ||
-            (hitB && n.bInfo != 0 && leafBlocks(n.b, n.bInfo))) {
-            blocked = true;
-            break;
+        const uint32_t entry = stack[--sp];
+        if (entry & TP_SHADOW_BVH_LEAF) {
+            blocked = triangleHit(entry & ~TP_SHADOW_BVH_LEAF);
+            continue;
         }
-        const bool goA = hitA && n.aInfo == 0, goB = hitB && n.bInfo == 0;
-        if (goA && goB) stack[sp++] = n.b;
-        if (goA || goB) {
-            node = goA ? n.a : n.b;
-        } else {
-            if (sp == 0) break;
-            node = stack[--sp];
+        const gpu::ShadowBvhNode& n = bvh.nodes[entry];
+        for (auto [lo, hi, index, info] : {std::tuple{n.aMin, n.aMax, n.a, n.aInfo},
+                                           std::tuple{n.bMin, n.bMax, n.b, n.bInfo}}) {
+            if (gpu::rayBoxEntry(origin, inv, 1.0f, lo, hi) > 1.0f) continue;
+            const uint32_t count = info & TP_SHADOW_BVH_COUNT;
+            if (info == 0)
+                stack[sp++] = index;
+            else if (info & TP_SHADOW_BVH_MASKED)
+                stack[sp++] = TP_SHADOW_BVH_LEAF | index;
+            else
+                for (uint32_t k = 0; k < count && !blocked; ++k) blocked = triangleHit(index + k);
         }
     }
     if (steps) *steps = visits;

@@ -7,8 +7,10 @@
 // World space: a triangle's corners are the scene's vertices (set 0's vertex buffer, which
 // holds world positions), so the BVH owns no positions, only its boxes and its triangles'
 // vertex indices. A node holds its two children's boxes (one fetch tests both); a child is an
-// inner node (info 0) or a leaf of 1..TP_SHADOW_BVH_LEAF_MAX consecutive triangles (info =
-// TP_SHADOW_BVH_LEAF | count; 0 triangles: an empty leaf, only in a scene with one leaf).
+// inner node (info 0) or a leaf of consecutive triangles (info = TP_SHADOW_BVH_LEAF | count).
+// The root (node 0) is always an inner node: child a holds the opaque triangles (leaves of up to
+// TP_SHADOW_BVH_LEAF_MAX), child b the masked ones (leaves of one, TP_SHADOW_BVH_MASKED: each is
+// alpha-tested on its own, outside the node loop); either may be an empty leaf (count 0).
 #ifndef TP_SHADOW_BVH_H
 #define TP_SHADOW_BVH_H
 #include "include/shared.h"
@@ -16,9 +18,11 @@
 #define TP_BINDING_SHADOW_BVH_NODES 0     // set TP_SET_PASS: buffer ShadowBvhNode[]
 #define TP_BINDING_SHADOW_BVH_TRIANGLES 1 // set TP_SET_PASS: buffer ShadowTriangle[]
 #define TP_SHADOW_BVH_LEAF 0x80000000u    // ShadowBvhNode info: a leaf (low bits: its count)
+#define TP_SHADOW_BVH_MASKED 0x40000000u  // ... of one masked triangle
+#define TP_SHADOW_BVH_COUNT 0x3FFFFFFFu   // the count bits of a leaf's info
 #define TP_SHADOW_BVH_LEAF_MAX 4u         // triangles per leaf at most (tested unrolled)
 #define TP_SHADOW_BVH_MAX_DEPTH 60u       // inner nodes on a path, at most (the builder's bound)
-#define TP_SHADOW_BVH_STACK 64            // traversal stack: one entry per level suffices
+#define TP_SHADOW_BVH_STACK 64            // traversal stack: one entry per level and one more
 #define TP_SHADOW_OPAQUE 0xFFFFFFFFu      // ShadowTriangle.material of a triangle never alpha-tested
 // Iterations (nodes) one shadow ray may take, and all the rays of one invocation together:
 // lavapipe ends an invocation after 65,535 loop iterations over all its loops (docs/shading.md),

@@ -43,22 +43,32 @@ bool shadowTriangleBlocks(ShadowTriangle tri, float u, float v) {
     return alpha >= m.alphaCutoff;
 }
 
-// A hit strictly between the origin (t = 0) and the light (t = 1: d is the whole segment).
-bool shadowTriangleHit(uint index, vec3 o, vec3 d) {
-    ShadowTriangle tri = shadowTriangles[index];
-    vec3 h = rayTriangle(o, d, vertices[tri.v0].positionU.xyz, vertices[tri.v1].positionU.xyz,
-                         vertices[tri.v2].positionU.xyz);
-    return h.x > 0.0 && h.x < 1.0 && shadowTriangleBlocks(tri, h.y, h.z);
+// A hit strictly between the origin (t = 0) and the light (t = 1: d is the whole segment);
+// (u, v) of the hit in h.yz.
+bool shadowTriangleHit(ShadowTriangle tri, vec3 o, vec3 d, out vec3 h) {
+    h = rayTriangle(o, d, vertices[tri.v0].positionU.xyz, vertices[tri.v1].positionU.xyz,
+                    vertices[tri.v2].positionU.xyz);
+    return h.x > 0.0 && h.x < 1.0;
+}
+bool shadowOpaqueHit(uint index, vec3 o, vec3 d) {
+    vec3 h;
+    return shadowTriangleHit(shadowTriangles[index], o, d, h);
 }
 
-// Unrolled, not a loop: lavapipe counts every loop iteration against its limit.
+// Unrolled, not a loop: lavapipe counts every loop iteration against its limit. Opaque leaves
+// only (a masked leaf is pushed and tested alone).
 bool shadowLeafBlocks(uint first, uint info, vec3 o, vec3 d) {
-    uint n = info & ~TP_SHADOW_BVH_LEAF;
-    if (n > 0u && shadowTriangleHit(first, o, d)) return true;
-    if (n > 1u && shadowTriangleHit(first + 1u, o, d)) return true;
-    if (n > 2u && shadowTriangleHit(first + 2u, o, d)) return true;
-    return n > 3u && shadowTriangleHit(first + 3u, o, d);
+    uint n = (info & TP_SHADOW_BVH_MASKED) != 0u ? 0u : info & TP_SHADOW_BVH_COUNT;
+    if (n > 0u && shadowOpaqueHit(first, o, d)) return true;
+    if (n > 1u && shadowOpaqueHit(first + 1u, o, d)) return true;
+    if (n > 2u && shadowOpaqueHit(first + 2u, o, d)) return true;
+    return n > 3u && shadowOpaqueHit(first + 3u, o, d);
 }
+
+// What an inner node's child adds to the stack: an inner node, a masked leaf (its triangle with
+// TP_SHADOW_BVH_LEAF), or nothing (missed, or an opaque leaf, tested at once).
+bool shadowPushes(uint info) { return info == 0u || (info & TP_SHADOW_BVH_MASKED) != 0u; }
+uint shadowEntry(uint index, uint info) { return info == 0u ? index : TP_SHADOW_BVH_LEAF | index; }
 
 // The iterations left to this ray: its own bound, within what the invocation has left after
 // the light loop's (two lights an iteration, reference.frag) and the earlier rays' iterations.
@@ -70,33 +80,46 @@ uint shadowStepsLeft() {
 // 0: a triangle blocks the segment from the surface to the light; 1: none does (or the ray
 // was cut short by the iteration bounds: counted as lit, docs/shadows.md). position and
 // light.position are camera-relative (shared.h); the BVH is in world space.
+// lavapipe runs every branch of a loop body on every iteration (under a mask), so the node loop
+// holds only box and opaque-triangle tests: it stops at a masked triangle, which the outer loop
+// alpha-tests (texture fetches) before the node loop goes on where it stopped.
 float shadowRayVisibility(LightGpu light, vec3 position, vec3 normal) {
     vec3 eye = frame.eyeWorld.xyz;
     vec3 o = shadowRayOrigin(position, eye, normal, light.position - position);
     vec3 d = (light.position + eye) - o;
     vec3 inv = shadowRayInvDir(d);
     uint stack[TP_SHADOW_BVH_STACK];
-    uint sp = 0u, node = 0u, steps = shadowStepsLeft(), step = 0u;
-    float visibility = 1.0;
-    for (; step < steps; ++step) {
-        ShadowBvhNode n = shadowNodes[node];
-        bool hitA = rayBoxEntry(o, inv, 1.0, n.aMin, n.aMax) <= 1.0;
-        bool hitB = rayBoxEntry(o, inv, 1.0, n.bMin, n.bMax) <= 1.0;
-        if ((hitA && n.aInfo != 0u && shadowLeafBlocks(n.a, n.aInfo, o, d)) ||
-            (hitB && n.bInfo != 0u && shadowLeafBlocks(n.b, n.bInfo, o, d))) {
-            visibility = 0.0;
-            break;
+    uint sp = 1u, left = shadowStepsLeft(), used = 0u;
+    stack[0] = 0u;
+    bool blocked = false;
+    while (used < left && sp > 0u && !blocked) {
+        ++used; // this loop's own iteration
+        uint masked = TP_SHADOW_OPAQUE;
+        for (; used < left && sp > 0u; ) {
+            ++used;
+            uint entry = stack[--sp];
+            if ((entry & TP_SHADOW_BVH_LEAF) != 0u) {
+                masked = entry & ~TP_SHADOW_BVH_LEAF;
+                break;
+            }
+            ShadowBvhNode n = shadowNodes[entry];
+            bool hitA = rayBoxEntry(o, inv, 1.0, n.aMin, n.aMax) <= 1.0;
+            bool hitB = rayBoxEntry(o, inv, 1.0, n.bMin, n.bMax) <= 1.0;
+            if ((hitA && shadowLeafBlocks(n.a, n.aInfo, o, d)) ||
+                (hitB && shadowLeafBlocks(n.b, n.bInfo, o, d))) {
+                blocked = true;
+                break;
+            }
+            if (hitA && shadowPushes(n.aInfo)) stack[sp++] = shadowEntry(n.a, n.aInfo);
+            if (hitB && shadowPushes(n.bInfo)) stack[sp++] = shadowEntry(n.b, n.bInfo);
         }
-        bool goA = hitA && n.aInfo == 0u, goB = hitB && n.bInfo == 0u;
-        if (goA && goB) stack[sp++] = n.b;
-        if (goA || goB) {
-            node = goA ? n.a : n.b;
-        } else {
-            if (sp == 0u) break;
-            node = stack[--sp];
+        if (masked != TP_SHADOW_OPAQUE) {
+            ShadowTriangle tri = shadowTriangles[masked];
+            vec3 h;
+            blocked = shadowTriangleHit(tri, o, d, h) && shadowTriangleBlocks(tri, h.y, h.z);
         }
     }
-    gShadowSteps += step + 1u;
-    return visibility;
+    gShadowSteps += used;
+    return blocked ? 0.0 : 1.0;
 }
 #endif

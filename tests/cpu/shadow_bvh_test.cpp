@@ -54,8 +54,15 @@ void checkInvariants(const ref::ShadowBvh& bvh, size_t triangles) {
                 EXPECT_LT(index, bvh.nodes.size());
                 continue;
             }
-            const uint32_t count = info & ~TP_SHADOW_BVH_LEAF;
+            const uint32_t count = info & TP_SHADOW_BVH_COUNT;
             EXPECT_LE(count, TP_SHADOW_BVH_LEAF_MAX);
+            if (info & TP_SHADOW_BVH_MASKED) {
+                EXPECT_EQ(count, 1u);
+                EXPECT_NE(bvh.triangles[index].material, TP_SHADOW_OPAQUE);
+            } else {
+                for (uint32_t k = 0; k < count; ++k)
+                    EXPECT_EQ(bvh.triangles[index + k].material, TP_SHADOW_OPAQUE);
+            }
             EXPECT_LE(index + count, bvh.triangles.size());
             inLeaves += count;
         }
@@ -70,8 +77,11 @@ TEST(ShadowBvh, AnyHitAgreesWithBruteForceOnARealMesh) {
     Result<Scene> scene = loadGltf(path.string());
     ASSERT_TRUE(scene.ok()) << scene.error();
     scene->computeBounds();
-    const ref::ShadowBvhInput in = ref::shadowBvhInput(*scene);
+    ref::ShadowBvhInput in = ref::shadowBvhInput(*scene);
     ASSERT_GT(in.triangles.size(), 10000u);
+    // A third of them masked, so the masked subtree (leaves of one, pushed and popped) is
+    // traversed too; the CPU traversal counts them opaque, as the brute force does.
+    for (size_t i = 0; i < in.triangles.size(); i += 3) in.triangles[i].material = 0;
     const ref::ShadowBvh bvh = ref::buildShadowBvh(in.positions, in.triangles);
     checkInvariants(bvh, in.triangles.size());
 
@@ -117,6 +127,7 @@ TEST(ShadowBvh, TinyInputs) {
     in.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     ref::ShadowBvh none = ref::buildShadowBvh(in.positions, in.triangles);
     ASSERT_EQ(none.nodes.size(), 1u);
+    checkInvariants(none, 0);
     EXPECT_FALSE(ref::shadowRayBlocked(none, in.positions, {0.2f, 0.2f, -1}, {0.2f, 0.2f, 1}));
     in.triangles.push_back({0, 1, 2, TP_SHADOW_OPAQUE});
     ref::ShadowBvh one = ref::buildShadowBvh(in.positions, in.triangles);
