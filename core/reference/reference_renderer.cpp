@@ -7,6 +7,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/reference/reference_settings.h"
+#include "core/reference/shadow_rays.h"
 #include "core/render/scene_gpu.h"
 
 namespace tp {
@@ -16,14 +17,18 @@ class ReferenceRenderer final : public Renderer {
   public:
     explicit ReferenceRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
-          ref_(ref::readSettings(info.settings)) {
+          ref_(ref::readSettings(info.settings)), shadowed_(ref::anyLightShadowed(info.scene)) {
         fp64_ = ref_.precision == ref::Precision::Fp64 && ctx_.caps.float64;
+        if (ref_.shadows == ref::Shadows::Maps)
+            throw RendererError("--reference-shadows maps: not built yet (the pipelines' shadow "
+                                "maps come with --shadows); use rays");
     }
 
     ~ReferenceRenderer() override {
         for (VkPipeline p : pipelines_)
             if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
         if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+        if (passSet_.layout) destroyPassSet(ctx_, passSet_);
     }
 
     void plan(FrameGraph& graph) override {
@@ -45,21 +50,29 @@ class ReferenceRenderer final : public Renderer {
         } else {
             uses = {{hdr_, Use::ColorAttachment}, {depth_, Use::DepthAttachment}};
         }
-        graph.addPass("reference_shading", uses, [this](PassContext& pc) { record(pc); });
+        graph.addPass(kPass, uses, [this](PassContext& pc) { record(pc); });
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
     }
 
-    void prepare(FrameGraph&) override {
-        layout_ = scene_.createPipelineLayout();
+    void prepare(FrameGraph& graph) override {
+        // Shadowed lights: the TP_SHADOW_RAYS variants, with the BVH in set 1. Otherwise the
+        // shaders and layout of a run without shadows, untouched.
+        if (shadowed_) {
+            rays_ = std::make_unique<ref::ShadowRayScene>(ctx_, scene_, kPass);
+            passSet_ = graph.createPassSet(kPass, VK_NULL_HANDLE, rays_->externals());
+        }
+        layout_ = scene_.createPipelineLayout(passSet_.layout);
         GraphicsPipelineDesc d;
         const bool center = settings_.msaa > 1 && ref_.msaa == ref::MsaaMode::Center;
         const std::string base = std::string(center ? "reference_center" : "reference");
-        const std::string precision = fp64_ ? "_fp64_frag" : "_frag";
+        const std::string precision =
+            std::string(shadowed_ ? "_rays" : "") + (fp64_ ? "_fp64_frag" : "_frag");
         d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
         d.samples = VkSampleCountFlagBits(settings_.msaa);
         d.sampleShading = settings_.msaa > 1;
         d.layout = layout_;
+        d.passSet = shadowed_ ? &passSet_ : nullptr;
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
             if (!scene_.hasDraws(DrawFilter(mode))) continue;
             d.specConstants = scene_.specConstants(mode);
@@ -74,8 +87,9 @@ class ReferenceRenderer final : public Renderer {
     }
 
     // Every light at every sample: nothing derives from the view but the blended draws' back-
-    // to-front order, which the recording takes from the scene.
-    bool updateView(FrameGraph&) override { return true; }
+    // to-front order, which the recording takes from the scene, and which shaders run: a view
+    // whose lights start or stop casting shadows is planned again.
+    bool updateView(FrameGraph&) override { return ref::anyLightShadowed(scene_) == shadowed_; }
 
     RendererStats stats() const override {
         RendererStats s;
@@ -90,6 +104,7 @@ class ReferenceRenderer final : public Renderer {
                                           ? "device has no shaderFloat64"
                                           : "fp32 chosen (--reference-precision fp32)"});
         if (settings_.msaa == 1) s.leftOut.push_back({"per-sample targets", "MSAA is 1x"});
+        if (rays_) rays_->addStats(s);
         s.lightWork.push_back({"reference_shading", PassLightWork::Base::Fragments, double(scene_.lightCount()),
                                true, "every light, per fragment (sample)"});
         return s;
@@ -110,6 +125,9 @@ class ReferenceRenderer final : public Renderer {
         }
         beginRendering(pc, {color}, depth);
         scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+        if (shadowed_)
+            vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS,
+                                    1, &passSet_.set, 0, nullptr);
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
             scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
         endRendering(pc);
@@ -121,6 +139,10 @@ class ReferenceRenderer final : public Renderer {
     RenderSettings settings_;
     ref::Settings ref_;
     bool fp64_ = false;
+    bool shadowed_ = false; // some light casts a shadow: shadow rays (prepare)
+    static constexpr const char* kPass = "reference_shading";
+    std::unique_ptr<ref::ShadowRayScene> rays_;
+    PassSet passSet_;
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipelines_[3] = {};

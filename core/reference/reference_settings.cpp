@@ -44,14 +44,26 @@ const ChoiceKnob<Position>& positionKnob() {
     return k;
 }
 
+const ChoiceKnob<Shadows>& shadowsKnob() {
+    static const ChoiceKnob<Shadows> k =
+        ChoiceKnob<Shadows>{
+            "reference-shadows",
+            {{Shadows::Rays, "rays"}, {Shadows::Maps, "maps"}},
+            "Visibility of the shadowed lights in the reference: rays (a shadow ray per sample "
+            "and light against the opaque and masked triangles, through a BVH: exact) or maps "
+            "(the pipelines' own shadow maps: not built yet). No effect without shadowed lights"}
+            .fixed();
+    return k;
+}
+
 } // namespace
 
 KnobSchema knobs() {
-    return {precisionKnob().knob(), msaaKnob().knob(), positionKnob().knob()};
+    return {precisionKnob().knob(), msaaKnob().knob(), positionKnob().knob(), shadowsKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
-    return {precisionKnob().in(s), msaaKnob().in(s), positionKnob().in(s)};
+    return {precisionKnob().in(s), msaaKnob().in(s), positionKnob().in(s), shadowsKnob().in(s)};
 }
 
 } // namespace tp::ref

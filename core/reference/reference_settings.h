@@ -8,11 +8,13 @@ namespace tp::ref {
 enum class Precision { Fp64, Fp32 };         // --reference-precision
 enum class MsaaMode { Sample, Center };      // --reference-msaa
 enum class Position { Interpolated, Depth }; // --reference-position
+enum class Shadows { Rays, Maps };            // --reference-shadows
 
 struct Settings {
     Precision precision = Precision::Fp64;
     MsaaMode msaa = MsaaMode::Sample;
     Position position = Position::Interpolated;
+    Shadows shadows = Shadows::Rays;
 };
 
 KnobSchema knobs();
