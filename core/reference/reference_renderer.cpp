@@ -6,6 +6,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/passes/shadow_maps.h"
 #include "core/reference/reference_settings.h"
 #include "core/reference/shadow_rays.h"
 #include "core/render/scene_gpu.h"
@@ -19,9 +20,6 @@ class ReferenceRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), features_(info.features), settings_(info.settings),
           ref_(ref::readSettings(info.settings)), shadowed_(ref::anyLightShadowed(info.scene)) {
         fp64_ = ref_.precision == ref::Precision::Fp64 && ctx_.caps.float64;
-        if (ref_.shadows == ref::Shadows::Maps)
-            throw RendererError("--reference-shadows maps: not built yet (the pipelines' shadow "
-                                "maps come with --shadows); use rays");
     }
 
     ~ReferenceRenderer() override {
@@ -50,6 +48,11 @@ class ReferenceRenderer final : public Renderer {
         } else {
             uses = {{hdr_, Use::ColorAttachment}, {depth_, Use::DepthAttachment}};
         }
+        if (usesMaps()) { // the pipelines' atlas (shadow_maps), sampled as they sample it
+            maps_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas);
+            maps_->plan(graph);
+            for (const PassUse& u : maps_->sampledUses()) uses.push_back(u);
+        }
         graph.addPass(kPass, uses, [this](PassContext& pc) { record(pc); });
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
@@ -58,21 +61,23 @@ class ReferenceRenderer final : public Renderer {
     void prepare(FrameGraph& graph) override {
         // Shadowed lights: the TP_SHADOW_RAYS variants, with the BVH in set 1. Otherwise the
         // shaders and layout of a run without shadows, untouched.
-        if (shadowed_) {
+        // --reference-shadows maps: the _shadow twins (TP_SHADOW_MAPS) with the maps in set 2.
+        if (usesRays()) {
             rays_ = std::make_unique<ref::ShadowRayScene>(ctx_, scene_, kPass);
             passSet_ = graph.createPassSet(kPass, VK_NULL_HANDLE, rays_->externals());
         }
-        layout_ = scene_.createPipelineLayout(passSet_.layout);
+        if (maps_) maps_->prepare(graph);
+        layout_ = scene_.createPipelineLayout(passSet_.layout, maps_ ? maps_->setLayout() : VK_NULL_HANDLE);
         GraphicsPipelineDesc d;
         const bool center = settings_.msaa > 1 && ref_.msaa == ref::MsaaMode::Center;
         const std::string base = std::string(center ? "reference_center" : "reference");
         const std::string precision =
-            std::string(shadowed_ ? "_rays" : "") + (fp64_ ? "_fp64_frag" : "_frag");
+            std::string(usesRays() ? "_rays" : "") + (fp64_ ? "_fp64_frag" : "_frag");
         d.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};
         d.samples = VkSampleCountFlagBits(settings_.msaa);
         d.sampleShading = settings_.msaa > 1;
         d.layout = layout_;
-        d.passSet = shadowed_ ? &passSet_ : nullptr;
+        d.passSet = usesRays() ? &passSet_ : nullptr;
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}) {
             if (!scene_.hasDraws(DrawFilter(mode))) continue;
             d.specConstants = scene_.specConstants(mode);
@@ -80,6 +85,7 @@ class ReferenceRenderer final : public Renderer {
             // position reconstructed from depth; blended surfaces stay forward-lit, as in deferred.
             const bool fromDepth = positionFromDepth() && mode != AlphaMode::Blend;
             d.fragmentShader = base + (fromDepth ? "_depth" : "") + precision;
+            if (maps_) maps_->apply(d.fragmentShader, d.specConstants);
             d.depthWrite = mode != AlphaMode::Blend;
             d.blend = mode == AlphaMode::Blend ? BlendMode::Alpha : BlendMode::None;
             pipelines_[uint32_t(mode)] = createGraphicsPipeline(ctx_, d);
@@ -89,10 +95,14 @@ class ReferenceRenderer final : public Renderer {
     // Every light at every sample: nothing derives from the view but the blended draws' back-
     // to-front order, which the recording takes from the scene, and which shaders run: a view
     // whose lights start or stop casting shadows is planned again.
-    bool updateView(FrameGraph&) override { return ref::anyLightShadowed(scene_) == shadowed_; }
+    bool updateView(FrameGraph&) override {
+        if (maps_ && maps_->stale()) return false;
+        return ref::anyLightShadowed(scene_) == shadowed_;
+    }
 
     RendererStats stats() const override {
         RendererStats s;
+        if (maps_) s.counters = maps_->counters();
         s.counters.push_back({"accumulation_bits", fp64_ ? 64.0 : 32.0});
         s.counters.push_back({"lights_evaluated_per_sample", double(scene_.lightCount())});
         if (settings_.msaa > 1)
@@ -111,6 +121,8 @@ class ReferenceRenderer final : public Renderer {
     }
 
   private:
+    bool usesRays() const { return shadowed_ && ref_.shadows == ref::Shadows::Rays; }
+    bool usesMaps() const { return shadowed_ && ref_.shadows == ref::Shadows::Maps; }
     bool positionFromDepth() const { return ref_.position == ref::Position::Depth; }
 
     void record(PassContext& pc) {
@@ -125,9 +137,10 @@ class ReferenceRenderer final : public Renderer {
         }
         beginRendering(pc, {color}, depth);
         scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-        if (shadowed_)
+        if (usesRays())
             vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS,
                                     1, &passSet_.set, 0, nullptr);
+        if (maps_) maps_->bind(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
         for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
             scene_.recordDraws(pc.cmd, layout_, DrawFilter(mode), pipelines_[uint32_t(mode)]);
         endRendering(pc);
@@ -142,6 +155,7 @@ class ReferenceRenderer final : public Renderer {
     bool shadowed_ = false; // some light casts a shadow: shadow rays (prepare)
     static constexpr const char* kPass = "reference_shading";
     std::unique_ptr<ref::ShadowRayScene> rays_;
+    std::optional<ShadowMaps> maps_; // --reference-shadows maps
     PassSet passSet_;
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;

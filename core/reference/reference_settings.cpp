@@ -51,7 +51,8 @@ const ChoiceKnob<Shadows>& shadowsKnob() {
             {{Shadows::Rays, "rays"}, {Shadows::Maps, "maps"}},
             "Visibility of the shadowed lights in the reference: rays (a shadow ray per sample "
             "and light against the opaque and masked triangles, through a BVH: exact) or maps "
-            "(the pipelines' own shadow maps: not built yet). No effect without shadowed lights"}
+            "(the shadow maps the pipelines sample, with their filter: compare renders it as the second "
+            "reference, docs/shadows.md). No effect without shadowed lights"}
             .fixed();
     return k;
 }
