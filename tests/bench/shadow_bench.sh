@@ -18,7 +18,7 @@ for n in "${counts[@]}"; do
         [ "$lighting" = tiled ] && pipes=forwardplus,deferred,visbuffer,multipass_forward
         dir="$out/s${n}_$lighting"
         "$bin" compare builtin:courtyard --res "$res" --lights "$lights" --shadows "$n" \
-            --pipelines "$pipes" --deferred-lighting "$lighting" --frames 5 --no-reference-cache \
+            --pipelines "$pipes" --deferred-lighting "$lighting" --frames 5 \
             --out "$dir" >"$dir.log" 2>&1
         echo "== --shadows $n, deferred $lighting: exit $? ($dir.log)"
     done
