@@ -13,14 +13,17 @@ counts=("$@")
 here=$(dirname "$0")
 mkdir -p "$out"
 for n in "${counts[@]}"; do
-    for lighting in tiled volumes; do
-        pipes=deferred
-        [ "$lighting" = tiled ] && pipes=forwardplus,deferred,visbuffer,multipass_forward
-        dir="$out/s${n}_$lighting"
+    # tiled: every pipeline, the atlas cached; off: the atlas pipelines rendering their maps
+    # every frame (--shadow-cache off); volumes: deferred with one light's map at a time.
+    for run in tiled off volumes; do
+        pipes=deferred lighting=$run cache=on
+        [ "$run" = tiled ] && pipes=forwardplus,deferred,visbuffer,multipass_forward
+        [ "$run" = off ] && pipes=forwardplus,deferred,visbuffer lighting=tiled cache=off
+        dir="$out/s${n}_$run"
         "$bin" compare builtin:courtyard --res "$res" --lights "$lights" --shadows "$n" \
-            --pipelines "$pipes" --deferred-lighting "$lighting" --frames 5 \
+            --pipelines "$pipes" --deferred-lighting "$lighting" --shadow-cache "$cache" --frames 5 \
             --out "$dir" >"$dir.log" 2>&1
-        echo "== --shadows $n, deferred $lighting: exit $? ($dir.log)"
+        echo "== --shadows $n, $run: exit $? ($dir.log)"
     done
 done
 python3 "$here/shadow_table.py" "$out" "${counts[@]}"

@@ -23,7 +23,7 @@ def counter(run, name):
 
 
 def rows(out, n):
-    for lighting in ("tiled", "volumes"):
+    for lighting in ("tiled", "off", "volumes"):
         path = os.path.join(out, f"s{n}_{lighting}", "report.json")
         if not os.path.exists(path):
             continue
@@ -33,7 +33,7 @@ def rows(out, n):
                 continue
             if lighting == "volumes" and p["name"] != "deferred":
                 continue
-            name = p["name"] + (" (volumes)" if lighting == "volumes" else "")
+            name = p["name"] + {"volumes": " (volumes)", "off": " (maps every frame)"}.get(lighting, "")
             run = p["run"]
             shadow_ms = timing(run, "shadow_maps")
             yield r, {
@@ -42,6 +42,7 @@ def rows(out, n):
                 "shadow_ms": shadow_ms,
                 "bytes": counter(run, "shadow_map_bytes") or 0,
                 "renders": counter(run, "shadow_map_renders_per_frame"),
+                "once_ms": counter(run, "shadow_maps_render_ms"),
                 "rays": p["error_vs_reference"]["hdr"]["rmse"],
                 "maps": p.get("error_vs_shadow_map_reference", {}).get("hdr", {}).get("rmse"),
             }
@@ -65,10 +66,10 @@ def table(out, n):
                       f"reference (rays) frame {fmt(timing(ref, 'frame'))} ms; shadow-map reference "
                       f"{fmt(timing(smr['run'], 'frame')) if smr.get('rendered') else '-'} ms, "
                       f"rmse vs rays {fmt(smr.get('error_vs_reference', {}).get('hdr', {}).get('rmse'))}\n\n"
-                      "| pipeline | frame ms | shadow maps pass ms | map renders/frame | shadow memory MiB |"
-                      " rmse vs rays | rmse vs maps |\n|---|---|---|---|---|---|---|")
+                      "| pipeline | frame ms | shadow_maps pass ms | cached maps, one render ms | map renders/frame |"
+                      " shadow memory MiB | rmse vs rays | rmse vs maps |\n|---|---|---|---|---|---|---|---|")
             print(header)
-        print(f"| {row['name']} | {fmt(row['frame'])} | {fmt(row['shadow_ms'])} | {fmt(row['renders'])} |"
+        print(f"| {row['name']} | {fmt(row['frame'])} | {fmt(row['shadow_ms'])} | {fmt(row['once_ms'])} | {fmt(row['renders'])} |"
               f" {row['bytes'] / 2**20:.2f} | {fmt(row['rays'])} | {fmt(row['maps'])} |")
         points.append((row["name"], n, row["bytes"] / 2**20, row["frame"]))
     print()
@@ -90,6 +91,7 @@ def plot(points, path):
     sy = lambda v: h - m - (v - y0) / (y1 - y0) * (h - 2 * m)
     colours = {"forwardplus": "#1f77b4", "deferred": "#2ca02c", "deferred (volumes)": "#d62728",
                "visbuffer": "#9467bd", "multipass_forward": "#ff7f0e"}
+    colours.update({k + " (maps every frame)": v for k, v in list(colours.items())})
     svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="11">',
            f'<text x="{w/2}" y="{h-15}" text-anchor="middle">shadow-map memory, MiB (log)</text>',
            f'<text x="15" y="{h/2}" transform="rotate(-90 15 {h/2})" text-anchor="middle">frame, median ms (log)</text>',
