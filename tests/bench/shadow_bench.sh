@@ -2,7 +2,7 @@
 # The shadows benchmark (docs/shadows.md, "Measured"): compare on the courtyard with 1,024 lights
 # and N of them shadowed, every pipeline (deferred both as tiled compute and as light volumes:
 # the atlas against one light's map), then the table and the memory-against-time plot.
-# Usage: shadow_bench.sh BIN OUT [RES] [LIGHTS] [SHADOWED...]
+# Usage: [FRAMES=5] shadow_bench.sh BIN OUT [RES] [LIGHTS] [SHADOWED...]
 #   H100: shadow_bench.sh build/triptych out 1920x1080 1024 16 64 256
 #   lavapipe: shadow_bench.sh build/triptych out 640x360 1024 16
 set -u
@@ -21,7 +21,7 @@ for n in "${counts[@]}"; do
         [ "$run" = off ] && pipes=forwardplus,deferred,visbuffer lighting=tiled cache=off
         dir="$out/s${n}_$run"
         "$bin" compare builtin:courtyard --res "$res" --lights "$lights" --shadows "$n" \
-            --pipelines "$pipes" --deferred-lighting "$lighting" --shadow-cache "$cache" --frames 5 \
+            --pipelines "$pipes" --deferred-lighting "$lighting" --shadow-cache "$cache" --frames "${FRAMES:-5}" \
             --out "$dir" >"$dir.log" 2>&1
         echo "== --shadows $n, $run: exit $? ($dir.log)"
     done
