@@ -309,7 +309,7 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
 // very shadow maps the pipelines render (--reference-shadows maps). Against the first, a
 // pipeline's error is the total; against the second, its lighting architecture's part alone.
 void measureAgainstShadowMapReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
-    if (!r.settings.shadows.enabled()) return;
+    if (!r.settings.shadows.enabled() || r.shadowPlan.empty()) return; // no light shadowed here
     measureAgainst(r, ctx, gpuScene,
                    {"reference-shadows", "maps", "[shadow-map reference]", "reference_shadow_maps",
                     &CompareRecord::shadowMapReference, &PipelineOutcome::hdrVsShadowMaps,
@@ -372,7 +372,6 @@ int runCompare(const CompareOptions& o) {
                             "[1/" + std::to_string(names.size() + 1) + "]");
     if (!r.reference.run)
         throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
-    r.shadowPlan = gpuScene.shadowPlan();
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
     writeImages(o.out, r.reference, r.exposureEv);
@@ -380,6 +379,7 @@ int runCompare(const CompareOptions& o) {
     check(writeCameraFile(o.out + "/camera.json", scene.camera)); // ready for --camera
 
     renderPipelines(r, *ctx, gpuScene, names);
+    r.shadowPlan = gpuScene.shadowPlan(); // set up by the runs (a cached reference sets up nothing)
     std::vector<ImageRGBA> diffs = measure(r, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
     writeDifferences(r, diffs);
     measurePairs(r);

@@ -69,6 +69,8 @@ nlohmann::json centerReferenceJson(const CompareRecord& r) {
 nlohmann::json shadowMapReferenceJson(const CompareRecord& r) {
     if (!r.settings.shadows.enabled())
         return {{"rendered", false}, {"why", "no shadows (--shadows none)"}};
+    if (r.shadowPlan.empty())
+        return {{"rendered", false}, {"why", "no shadowed light reaches the view"}};
     return secondReferenceJson(
         r, r.shadowMapReference, "reference-shadows maps",
         "error against the ray-traced reference = total; against the shadow-map reference = the "

@@ -56,13 +56,14 @@ std::vector<PassUse> ShadowMaps::sampledUses() const {
 }
 
 bool ShadowMaps::stale() {
+    if (scene_.shadowGeneration() != generation_) return true; // other lights or sizes, or none
     if (!enabled()) return false;
-    if (scene_.shadowGeneration() != generation_) return true;
-    if (!cached()) return false;
     const std::vector<gpu::LightGpu> now = shadowedLights();
-    if (now.size() != keptLights_.size() ||
-        std::memcmp(now.data(), keptLights_.data(), now.size() * sizeof(gpu::LightGpu)) != 0)
-        renderCached();
+    if (now.size() == culledLights_.size() &&
+        std::memcmp(now.data(), culledLights_.data(), now.size() * sizeof(gpu::LightGpu)) == 0)
+        return false;
+    cullFaces(); // a shadowed light moved: its faces see other draws, the kept maps are stale
+    if (cached()) renderCached();
     return false;
 }
 
@@ -131,6 +132,7 @@ void ShadowMaps::prepare(FrameGraph& graph) {
         d.specConstants = scene_.specConstants(AlphaMode::Mask);
         mask_ = createGraphicsPipeline(ctx_, d);
     }
+    cullFaces();
     if (cached()) renderCached();
 }
 
@@ -146,14 +148,20 @@ void ShadowMaps::bind(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBi
     vkCmdBindDescriptorSets(cmd, point, layout, TP_SET_SHADOW, 1, &set_.set, 0, nullptr);
 }
 
-std::vector<const DrawItem*> ShadowMaps::faceDraws(uint32_t face) const {
-    const gpu::ShadowFace& f = scene_.shadowPlan().faces[face];
-    const gpu::LightGpu& light = scene_.lightsGpu()[f.atlas.w]; // world space, as the boxes
-    std::vector<const DrawItem*> out;
-    for (DrawFilter filter : {DrawFilter::Opaque, DrawFilter::Mask})
-        for (const DrawItem* d : scene_.drawList(filter))
-            if (faceSees(f, light.position, light.range, d->bounds)) out.push_back(d);
-    return out;
+void ShadowMaps::cullFaces() {
+    const ShadowPlan& plan = scene_.shadowPlan();
+    faceDraws_.assign(plan.faces.size(), {});
+    faceDrawCount_ = 0;
+    std::vector<const DrawItem*> draws = scene_.drawList(DrawFilter::Opaque);
+    for (const DrawItem* d : scene_.drawList(DrawFilter::Mask)) draws.push_back(d);
+    for (uint32_t face = 0; face < plan.faces.size(); ++face) {
+        const gpu::ShadowFace& f = plan.faces[face];
+        const gpu::LightGpu& light = scene_.lightsGpu()[f.atlas.w]; // world space, as the boxes
+        for (const DrawItem* d : draws)
+            if (faceSees(f, light.position, light.range, d->bounds)) faceDraws_[face].push_back(d);
+        faceDrawCount_ += double(faceDraws_[face].size());
+    }
+    culledLights_ = shadowedLights();
 }
 
 // The faces as squares of the map (positive-height viewports: texel = origin + (ndc * 0.5 +
@@ -171,7 +179,7 @@ void ShadowMaps::recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t f
         const VkRect2D sc{{int32_t(origin.x), int32_t(origin.y)}, {f.atlas.z, f.atlas.z}};
         vkCmdSetViewport(cmd, 0, 1, &vp);
         vkCmdSetScissor(cmd, 0, 1, &sc);
-        for (const DrawItem* d : faceDraws(face)) {
+        for (const DrawItem* d : faceDraws_[face]) {
             const VkPipeline p = d->alphaMode == AlphaMode::Mask ? mask_ : opaque_;
             if (p != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = p);
             const gpu::DrawPush push{d->material, face, 0, 0};
@@ -279,7 +287,6 @@ void ShadowMaps::renderCached() {
     vkDestroyQueryPool(ctx_.device, pool, nullptr);
     keptRenderMs_ = double(ticks[1] - ticks[0]) * ctx_.caps.timestampPeriodNs * 1e-6;
     ++keptRenders_;
-    keptLights_ = shadowedLights();
 }
 
 void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc, pc.image(map_).image, false); }
@@ -287,15 +294,13 @@ void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc, pc.image(map_).ima
 std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
     if (!enabled()) return {};
     const ShadowPlan& p = scene_.shadowPlan();
-    double draws = 0;
-    for (uint32_t f = 0; f < p.faces.size(); ++f) draws += double(faceDraws(f).size());
     const bool atlas = residency_ == Residency::Atlas;
     std::vector<std::pair<std::string, double>> c = {
         {"shadowed_lights", double(p.lights.size())},
         {"shadow_faces", double(p.faces.size())},
         {"shadow_map_bytes", double(atlas ? p.atlasBytes() : p.localBytes())},
         {"shadow_map_renders_per_frame", cached() ? 0.0 : atlas ? 1.0 : double(p.lights.size())},
-        {"shadow_face_draws", draws},
+        {"shadow_face_draws", faceDrawCount_},
         {"shadow_maps_cached", cached() ? 1.0 : 0.0}};
     if (cached()) {
         c.push_back({"shadow_maps_render_ms", keptRenderMs_});

@@ -83,7 +83,8 @@ class ShadowMaps {
     void endLight(PassContext& pc);
     bool shadowed(uint32_t light) const;
 
-    // Counters for a renderer's stats: shadowed lights, faces, map bytes, face draws a frame.
+    // Counters for a renderer's stats: shadowed lights, faces, map bytes, the draws of one
+    // render of every face (shadow_face_draws), whether cached and its one-time render.
     std::vector<std::pair<std::string, double>> counters() const;
 
   private:
@@ -91,7 +92,7 @@ class ShadowMaps {
     void renderCached();
     std::vector<gpu::LightGpu> shadowedLights() const; // world space, as rendered
     void recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t faceCount, bool local);
-    std::vector<const DrawItem*> faceDraws(uint32_t face) const;
+    void cullFaces(); // faceDraws_ from the plan and the lights as they are now
 
     GpuContext& ctx_;
     SceneGpu& scene_;
@@ -99,7 +100,11 @@ class ShadowMaps {
     ResourceHandle map_;
     FrameGraph* graph_ = nullptr;
     Image kept_;                              // the cached atlas
-    std::vector<gpu::LightGpu> keptLights_;   // the shadowed lights it was rendered for
+    std::vector<gpu::LightGpu> culledLights_; // the shadowed lights faceDraws_ (and kept_) are for
+    // Per face, the draws that may reach it: culled once per plan and again when a shadowed
+    // light moves, not at every recording.
+    std::vector<std::vector<const DrawItem*>> faceDraws_;
+    double faceDrawCount_ = 0;
     double keptRenderMs_ = 0;                 // its last one-time render, GPU time
     uint32_t keptRenders_ = 0;
     uint64_t generation_ = 0;
@@ -107,7 +112,6 @@ class ShadowMaps {
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, mask_ = VK_NULL_HANDLE;
-    mutable double drawsPerFrame_ = 0;
 };
 
 } // namespace tp

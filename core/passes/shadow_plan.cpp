@@ -195,6 +195,8 @@ ShadowPlan planShadows(const std::vector<gpu::LightGpu>& lights, const gpu::Fram
         sl.faceCount = castsCube(lights[sl.light]) ? TP_SHADOW_FACES_POINT : TP_SHADOW_FACES_SPOT;
         const double reach = std::sqrt(influence[k]) / (sl.faceCount == 6 ? 2.0 : 1.0);
         sl.edge = std::clamp(pow2Ceil(reach), kShadowMinEdge, kShadowMaxEdge);
+        // One light's map holds a cube's faces 3 x 2: within the device's image edge.
+        while (sl.faceCount == 6 && sl.edge > kShadowMinEdge && sl.edge * 3 > maxImageDimension) sl.edge /= 2;
         plan.lights.push_back(sl);
     }
     const uint64_t cap = (uint64_t(settings.budgetMb) << 20) / 4;

@@ -8,8 +8,8 @@
 //               light that reaches the view. Directional lights cast none (no cascades yet).
 //   faces       a point light (or a spot whose cone is wider than kMaxSpotHalfAngle) gets six
 //               90-degree cube faces, a spot one face over its cone.
-//   resolution  per light from its screen size, about one texel per screen pixel of its reach
-//               (a cube face sees half of it), a power of two in [kMinEdge, kMaxEdge]; over
+//   resolution  per light from its screen size: the face edge is the square root of its
+//               influence (halved for a cube's faces), a power of two in [kMinEdge, kMaxEdge]; over
 //               --shadow-budget, the largest maps are halved (the least influential first) until
 //               the atlas fits; a budget that cannot hold every face at kMinEdge is an error.
 //   atlas       every face a power-of-two square, packed largest first along a Z-order curve

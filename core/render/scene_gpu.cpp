@@ -198,7 +198,9 @@ void SceneGpu::setView(uint32_t width, uint32_t height, uint32_t msaaSamples) {
     if (glm::dvec3(cam.position) != eye_) { // the camera moved: the relative lights follow
         eye_ = glm::dvec3(cam.position);
         uploadLights();
-    } else if (shadowSettings_.enabled() && !(computeShadowPlan() == shadowPlan_)) {
+    } else if (shadowSettings_.enabled() &&
+               std::memcmp(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_)) != 0 &&
+               !(computeShadowPlan() == shadowPlan_)) {
         uploadLights(); // the view changed which lights are shadowed, or their map sizes
     }
     if (std::memcmp(frameBuffer_.mapped, &shadingFrame_, sizeof(shadingFrame_)) != 0)
