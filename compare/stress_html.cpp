@@ -121,6 +121,35 @@ std::string boundDetails(const json& c) {
     return h + "</details>\n";
 }
 
+// A shadowed case: the shadow technique's checks (the maps reference against the rays one),
+// then the rays reference and the heat map of maps - rays.
+Result<std::string> shadowSection(const json& c, const std::string& outDir) {
+    if (!c.contains("shadow_technique")) return std::string();
+    const json& t = c["shadow_technique"];
+    const bool pass = t["verdict"] == "pass";
+    std::string h = "<h3>Shadow technique: " + std::string(pass ? "pass" : "FAIL") +
+                    "</h3>\n<p class=\"meta\">The reference on the pipelines' shadow maps (the "
+                    "reference above, which the pipelines are measured against) against the "
+                    "ray-traced one; bounds from the maps' texel footprint and the filter "
+                    "(docs/stress.md, \"Shadowed cases\").</p>\n<table><tr><th "
+                    "class=\"l\">check</th><th>measured</th><th>limit</th><th "
+                    "class=\"l\">why</th></tr>\n";
+    for (const json& k : t["checks"])
+        h += "<tr><td class=\"l " + std::string(k["pass"].get<bool>() ? "pass" : "fail") +
+             "\">" + esc(k["name"]) + "</td><td>" + num(k["measured"]) + "</td><td>" +
+             num(k["limit"]) + "</td><td class=\"l\">" + esc(k["why"]) + "</td></tr>\n";
+    h += "</table>\n<div class=\"grid\">\n";
+    for (const json& f : t["reference_rays"]["files"]) {
+        const std::string file = f;
+        if (!file.ends_with(".png")) continue;
+        Result<std::string> fig = figure(
+            outDir, file, file.ends_with("_diff.png") ? "maps &minus; rays" : "reference (rays)");
+        if (!fig) return fig;
+        h += *fig;
+    }
+    return h + "</div>\n";
+}
+
 Result<std::string> caseSection(const json& c, const std::string& outDir) {
     const bool pass = c["verdict"] == "pass";
     const json& s = c["settings"];
@@ -135,6 +164,9 @@ Result<std::string> caseSection(const json& c, const std::string& outDir) {
         h += "<div class=\"failed\">reference failed: " +
              esc(c["reference"].value("error", json(""))) + "</div>\n";
     h += caseTable(c) + boundDetails(c);
+    Result<std::string> shadow = shadowSection(c, outDir);
+    if (!shadow) return shadow;
+    h += *shadow;
     h += "<p class=\"meta\">Per pipeline: the reference, the pipeline, and the heat map of "
          "|pipeline &minus; reference| "
          "(max over RGB, linear) from 0 to " +

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "compare/stress_shadows.h"
 #include "core/image/tonemap.h"
 
 namespace tp::cli {
@@ -160,6 +161,7 @@ void addChecks(StressOutcome& p, const StressCaseResult& r, const ImageRGBA& ref
         const double v = counterValue(*p.run, s.counter, 0);
         p.checks.push_back({"stressed: " + s.counter, v >= s.atLeast, v, s.atLeast, s.why});
     }
+    if (r.c->shadows.enabled()) p.checks.push_back(shadowedLightsCheck(*p.run, *r.c));
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "compare/stress_report.h"
 
 #include "compare/run_json.h"
+#include "core/passes/shadow_plan.h"
 #include "core/render/error_model.h"
 
 namespace tp::cli {
@@ -32,19 +33,23 @@ json boundJson(const ErrorBound& b, float ev) {
     return j;
 }
 
+json checksJson(const std::vector<StressCheck>& checks) {
+    json out = json::array();
+    for (const StressCheck& c : checks)
+        out.push_back({{"name", c.name},
+                       {"pass", c.pass},
+                       {"measured", c.measured},
+                       {"limit", c.limit},
+                       {"why", c.why}});
+    return out;
+}
+
 json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool reference) {
     json j = {{"name", p.name}, {"status", p.run ? "ok" : "failed"}, {"files", p.files}};
     if (!p.run) j["error"] = p.error;
     if (!reference) {
-        json checks = json::array();
-        for (const StressCheck& c : p.checks)
-            checks.push_back({{"name", c.name},
-                              {"pass", c.pass},
-                              {"measured", c.measured},
-                              {"limit", c.limit},
-                              {"why", c.why}});
         j["verdict"] = p.pass ? "pass" : "fail";
-        j["checks"] = checks;
+        j["checks"] = checksJson(p.checks);
     }
     j["nan_pixels"] = p.nanPixels;
     j["inf_pixels"] = p.infPixels;
@@ -73,11 +78,21 @@ json outcomeJson(const StressOutcome& p, const GpuContext& ctx, float ev, bool r
     return j;
 }
 
+// A shadowed case: the exact reference and the maps reference's verdict against it.
+json shadowJson(const ShadowTechnique& t, const GpuContext& ctx, float ev) {
+    json j = {{"reference_rays", outcomeJson(t.rays, ctx, ev, true)},
+              {"verdict", t.pass ? "pass" : "fail"},
+              {"checks", checksJson(t.checks)}};
+    if (t.rays.run)
+        j["maps_vs_rays"] = {{"hdr", metricsJson(t.hdr)}, {"tonemapped", metricsJson(t.display)}};
+    return j;
+}
+
 json caseJson(const StressCaseResult& r, const GpuContext& ctx) {
     json pipelines = json::array();
     for (const StressOutcome& p : r.pipelines)
         pipelines.push_back(outcomeJson(p, ctx, r.exposureEv, false));
-    return {{"name", r.c->name},
+    json j = {{"name", r.c->name},
             {"stresses", r.c->stresses},
             {"expectation", r.c->expectation},
             {"verdict", r.pass ? "pass" : "fail"},
@@ -92,6 +107,12 @@ json caseJson(const StressCaseResult& r, const GpuContext& ctx) {
               {"rule", "largest 99th percentile of |pipeline - reference| over the pipelines"}}},
             {"reference", outcomeJson(r.reference, ctx, r.exposureEv, true)},
             {"pipelines", pipelines}};
+    if (r.c->shadows.enabled()) {
+        j["shadows"] = shadowCountText(r.c->shadows);
+        j["reference"]["shadows"] = "maps";
+        if (r.shadow) j["shadow_technique"] = shadowJson(*r.shadow, ctx, r.exposureEv);
+    }
+    return j;
 }
 
 } // namespace
@@ -108,6 +129,9 @@ json stressJson(const StressOptions& o, const GpuContext& ctx,
             for (const StressCheck& c : p.checks)
                 if (!c.pass) failures.push_back(r.c->name + "/" + p.name + ": " + c.name);
         if (!r.reference.run) failures.push_back(r.c->name + "/reference: " + r.reference.error);
+        if (r.shadow)
+            for (const StressCheck& c : r.shadow->checks)
+                if (!c.pass) failures.push_back(r.c->name + "/shadow technique: " + c.name);
     }
     json j;
     j["schema"] = "triptych.stress/2";

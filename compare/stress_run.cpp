@@ -13,6 +13,7 @@
 #include "compare/report_json.h"
 #include "compare/stress_measure.h"
 #include "compare/stress_report.h"
+#include "compare/stress_shadows.h"
 #include "compare/svg_plot.h"
 #include "core/image/difference.h"
 #include "core/image/image_io.h"
@@ -93,6 +94,29 @@ void failUnrun(StressOutcome& p, const std::string& why) {
     p.checks.push_back({"ran", false, 0, 1, why.empty() ? p.error : why});
 }
 
+// A shadowed case's exact reference (--reference-shadows rays), its images and its inert-light
+// check, beside the maps reference (`r.reference`, which the pipelines are measured against).
+void renderRays(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene, InertTwin* twin,
+                StressCaseResult& r, const std::string& dir) {
+    const RenderSettings settings = withReferenceShadows(r.settings, kReferenceShadowRays);
+    r.shadow.emplace();
+    StressOutcome& rays = r.shadow->rays;
+    rays = renderOne(ctx, gpuScene, kReferenceRenderer, scene, settings);
+    if (!rays.run) return;
+    countNonFinite(rays.run->hdr, rays.nanPixels, rays.infPixels);
+    checkInert(ctx, twin, rays, settings);
+    rays.name = "reference_rays";
+    writeImages(dir, r.c->name, rays, r.exposureEv);
+    if (!r.reference.run) return;
+    const ImageRGBA diff = signedDifference(r.reference.run->hdr, rays.run->hdr);
+    const std::string base = "reference_maps_vs_rays_diff";
+    check(writeExr(dir + "/" + base + ".exr", diff, ExrPixelType::Float));
+    check(writePng(dir + "/" + base + ".png",
+                   heatMap(diff, std::max(differencePercentile99(diff), 1e-6f), 12)));
+    rays.files.push_back(r.c->name + "/" + base + ".exr");
+    rays.files.push_back(r.c->name + "/" + base + ".png");
+}
+
 std::string referenceFault(const StressOutcome& ref) {
     if (!ref.run) return "failed: " + ref.error;
     if (ref.nanPixels + ref.infPixels) return "has NaN/Inf pixels";
@@ -110,6 +134,7 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c,
     r.settings.width = c.width;
     r.settings.height = c.height;
     r.settings.msaa = c.msaa;
+    r.settings.shadows = c.shadows; // none unless the case is about shadows
     r.subPixelBits = ctx.properties.limits.subPixelPrecisionBits;
     const Scene scene = c.build();
     r.lights = scene.lights.size();
@@ -121,12 +146,23 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c,
     std::unique_ptr<InertTwin> twin;
     if (c.inertLights)
         twin = std::make_unique<InertTwin>(ctx, scene, std::min(c.inertLights, uint32_t(r.lights)));
-    r.reference = renderOne(ctx, gpuScene, kReferenceRenderer, scene, r.settings);
+    // A shadowed case measures the pipelines against the reference on the same shadow maps.
+    const bool shadowed = c.shadows.enabled();
+    const RenderSettings refSettings =
+        shadowed ? withReferenceShadows(r.settings, kReferenceShadowMaps) : r.settings;
+    const std::string missing = shadowed ? missingShadowReferences() : "";
+    if (missing.empty()) {
+        r.reference = renderOne(ctx, gpuScene, kReferenceRenderer, scene, refSettings);
+    } else {
+        r.reference.name = kReferenceRenderer;
+        r.reference.error = missing;
+    }
     if (r.reference.run) {
         r.exposureEv = autoExposureEv(r.reference.run->hdr);
         countNonFinite(r.reference.run->hdr, r.reference.nanPixels, r.reference.infPixels);
         writeImages(dir, c.name, r.reference, r.exposureEv);
-        checkInert(ctx, twin.get(), r.reference, r.settings);
+        checkInert(ctx, twin.get(), r.reference, refSettings);
+        if (shadowed) renderRays(ctx, gpuScene, scene, twin.get(), r, dir);
     }
     const bool refUsable = r.reference.run && r.reference.nanPixels + r.reference.infPixels == 0 &&
                            r.reference.inertChanged == 0;
@@ -154,21 +190,29 @@ StressCaseResult runCase(GpuContext& ctx, const stress::StressCase& c,
     r.pass = refUsable;
     for (const StressOutcome& p : r.pipelines)
         r.pass &= p.pass;
+    if (r.shadow) {
+        measureShadowTechnique(r, scene, gpuScene.shadowPlan());
+        r.pass &= r.shadow->pass;
+    }
     r.seconds = secondsSince(start);
     return r;
 }
 
+void printVerdict(const std::string& name, bool pass, const std::vector<StressCheck>& checks) {
+    std::string failed;
+    for (const StressCheck& k : checks)
+        if (!k.pass)
+            failed += (failed.empty() ? "" : "; ") + k.name + " " + formatNumber(k.measured) +
+                      " (limit " + formatNumber(k.limit) + ")";
+    std::printf("  %-20s %s%s%s\n", name.c_str(), pass ? "pass" : "FAIL",
+                failed.empty() ? "" : ": ", failed.c_str());
+}
+
 void printCase(const StressCaseResult& r) {
     std::printf("%-26s %s (%.1f s)\n", r.c->name.c_str(), r.pass ? "pass" : "FAIL", r.seconds);
-    for (const StressOutcome& p : r.pipelines) {
-        std::string failed;
-        for (const StressCheck& k : p.checks)
-            if (!k.pass)
-                failed += (failed.empty() ? "" : "; ") + k.name + " " + formatNumber(k.measured) +
-                          " (limit " + formatNumber(k.limit) + ")";
-        std::printf("  %-20s %s%s%s\n", p.name.c_str(), p.pass ? "pass" : "FAIL",
-                    failed.empty() ? "" : ": ", failed.c_str());
-    }
+    for (const StressOutcome& p : r.pipelines)
+        printVerdict(p.name, p.pass, p.checks);
+    if (r.shadow) printVerdict("shadow technique", r.shadow->pass, r.shadow->checks);
 }
 
 } // namespace

@@ -64,6 +64,16 @@ struct StressOutcome {
     std::vector<std::string> files; // relative to --out
 };
 
+// A shadowed case's second reference and the shadow technique's verdict: the reference on the
+// pipelines' shadow maps (StressCaseResult::reference) against the exact one (`rays`), checked
+// against the case's facts (stress::ShadowFacts; compare/stress_shadows.h).
+struct ShadowTechnique {
+    StressOutcome rays; // the reference with --reference-shadows rays
+    ErrorReport hdr, display; // the maps reference against the rays reference
+    std::vector<StressCheck> checks;
+    bool pass = false;
+};
+
 struct StressCaseResult {
     const stress::StressCase* c = nullptr;
     size_t lights = 0, triangles = 0;
@@ -74,6 +84,7 @@ struct StressCaseResult {
     double seconds = 0;
     StressOutcome reference;
     std::vector<StressOutcome> pipelines;
+    std::optional<ShadowTechnique> shadow; // shadowed cases (StressCase::shadows)
     bool pass = false;
 };
 

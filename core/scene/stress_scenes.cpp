@@ -71,6 +71,16 @@ Light point(glm::vec3 p, float intensity, float range, glm::vec3 color) {
     return l;
 }
 
+Light spot(glm::vec3 p, glm::vec3 direction, float intensity, float range, float inner,
+           float outer, glm::vec3 color) {
+    Light l = point(p, intensity, range, color);
+    l.type = LightType::Spot;
+    l.direction = glm::normalize(direction);
+    l.innerConeAngle = inner;
+    l.outerConeAngle = outer;
+    return l;
+}
+
 Light sun(glm::vec3 direction, float lux) {
     Light l;
     l.type = LightType::Directional;
@@ -390,6 +400,7 @@ const std::vector<StressCase>& stressCases() {
         geometryCases(add);
         lightCases(add);
         stiffCases(add);
+        shadowCases(add);
         return c;
     }();
     return cases;

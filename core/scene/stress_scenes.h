@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/render/settings.h"
 #include "core/scene/scene.h"
 #include "core/util/result.h"
 
@@ -21,6 +22,29 @@ struct CounterAtLeast {
     std::string counter;
     double atLeast = 0;
     std::string why;
+};
+
+// What a shadowed case (StressCase::shadows) states for its shadow-technique verdict: the
+// reference on the pipelines' shadow maps (--reference-shadows maps) against the exact one
+// (rays), with bounds derived from the maps' texel footprint and the filter
+// (include/shadows.h; docs/stress.md, "Shadowed cases"). compare/stress_shadows.cpp checks them.
+struct ShadowFacts {
+    // The plan must shadow this many lights, and every pipeline report them (its
+    // `shadowed_lights` counter): a pipeline that ignores --shadows fails the case.
+    uint32_t shadowedLights = 0;
+    // Acne: on the floor (the plane y = 0), no pixel the rays see lit may be darker in the
+    // maps image by more than one PCF tap of the (2r + 1)^2.
+    bool floorAcne = false;
+    // A thin wall: the slab wallBack < z < wallFront, facing +z, lit by the spot light
+    // `wallLight` whose axis is -z. Behind it the maps may leak light onto the floor only
+    // within the derived peter-panning band (-1: no wall).
+    int wallLight = -1;
+    float wallFront = 0, wallBack = 0;
+    // A closed box holding light `boxLight` (the scene's last light, an inert light of the
+    // case: StressCase::inertLights = 1): nothing outside may be lit by it in either
+    // reference, and its receivers outside must fall in all six cube faces (-1: no box).
+    int boxLight = -1;
+    glm::vec3 boxLo{0.0f}, boxHi{0.0f};
 };
 
 struct StressCase {
@@ -54,6 +78,11 @@ struct StressCase {
     // values span more than one exposure can show (a 10^9 range), the dim end is black once
     // tonemapped and only the HDR check sees its error.
     bool hdrChecked = false;
+    // Shadows: the run's --shadows (none: the case renders as it always did). A shadowed case
+    // measures the pipelines against the reference on the same shadow maps and adds the
+    // shadow technique's verdict (shadowFacts) against the ray-traced reference.
+    ShadowSettings shadows;
+    ShadowFacts shadowFacts;
 };
 
 const std::vector<StressCase>& stressCases();
@@ -71,6 +100,9 @@ Mesh meshOf(const char* name, uint32_t material);
 // Axis-aligned box, faces outward, exact normals.
 void box(Mesh& m, glm::vec3 lo, glm::vec3 hi);
 Light point(glm::vec3 p, float intensity, float range, glm::vec3 color = glm::vec3(1.0f));
+// A spot light at p along `direction` (normalized here), cone angles in radians.
+Light spot(glm::vec3 p, glm::vec3 direction, float intensity, float range, float inner,
+           float outer, glm::vec3 color = glm::vec3(1.0f));
 // A directional light shining along `direction` (normalized here), `lux` strong.
 Light sun(glm::vec3 direction, float lux);
 // Deterministic [0,1) sequence (splitmix64): the scenes never depend on a library's RNG.
@@ -108,5 +140,11 @@ Scene blendedLayers();
 Scene zeroRangeLights();
 Scene cameraInLights();
 Scene zeroConeSpots();
+// stress_scenes_shadows.cpp: the shadowed cases and their catalogue part.
+Scene shadowAcne();
+Scene thinWall();
+Scene lightInBox();
+Scene shadowedLightsInOneTile();
+void shadowCases(const std::function<void(StressCase)>& add);
 
 } // namespace tp::stress

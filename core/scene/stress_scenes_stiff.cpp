@@ -16,16 +16,6 @@ using glm::vec3;
 
 namespace {
 
-Light spot(vec3 p, vec3 direction, float intensity, float range, float inner, float outer,
-           vec3 color = vec3(1.0f)) {
-    Light l = point(p, intensity, range, color);
-    l.type = LightType::Spot;
-    l.direction = glm::normalize(direction);
-    l.innerConeAngle = inner;
-    l.outerConeAngle = outer;
-    return l;
-}
-
 // The world-space direction of the ray through pixel (px, py)'s centre of a w x h image of
 // the scene's camera (right-handed view, y up, rows from the top): where a spot's axis must
 // point for a pixel's shaded point to lie on it, within rounding.

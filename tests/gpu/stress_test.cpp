@@ -28,10 +28,19 @@ using nlohmann::json;
 
 // "case/pipeline" -> why it fails today (docs/stress.md, "Known failures").
 const std::map<std::string, std::string>& knownFailures() {
-    // Empty since shading became camera-relative (docs/shading.md): far-from-origin
-    // (deferred, multipass) and light-on-surface (deferred) pass; docs/stress.md says how
-    // robust each pass is.
-    static const std::map<std::string, std::string> known = {};
+    // None among the unshadowed cases since shading became camera-relative (docs/shading.md):
+    // far-from-origin (deferred, multipass) and light-on-surface (deferred) pass; docs/stress.md
+    // says how robust each pass is. The shadowed cases fail for every pipeline that does not
+    // consume --shadows yet (issue 26, item 2): it reports no shadowed_lights and renders
+    // unshadowed; remove a pipeline here when its shadows land.
+    static const std::map<std::string, std::string> known = [] {
+        std::map<std::string, std::string> k;
+        for (const char* pipeline : {"deferred", "multipass_forward", "visbuffer"})
+            for (const stress::StressCase& c : stress::stressCases())
+                if (c.shadows.enabled())
+                    k[c.name + "/" + pipeline] = "does not consume --shadows yet (issue 26, item 2)";
+        return k;
+    }();
     return known;
 }
 
@@ -62,12 +71,35 @@ bool hasCheck(const json& p, const std::string& prefix) {
 void expectFactChecks(const stress::StressCase& sc, const json& p, const std::string& key) {
     EXPECT_EQ(hasCheck(p, "pixels the inert lights change"), sc.inertLights > 0) << key;
     EXPECT_EQ(hasCheck(p, "HDR max"), sc.hdrChecked) << key;
+    EXPECT_EQ(hasCheck(p, "stressed: shadowed_lights"), sc.shadows.enabled()) << key;
     if (sc.blendedLayers) {
         bool term = false;
         for (const json& t : p["bound"]["terms"])
             term |= t["name"] == "blended layers: fp32 blend arithmetic";
         EXPECT_TRUE(term) << key;
     }
+}
+
+// A shadowed case's technique verdict (the maps reference against the rays one) is a pass,
+// with a check for each fact the case states. Returns the verdict.
+bool expectShadowTechniquePasses(const stress::StressCase& sc, const json& c) {
+    const std::string name = c["name"];
+    EXPECT_TRUE(c.contains("shadow_technique")) << name;
+    if (!c.contains("shadow_technique")) return false;
+    const json& t = c["shadow_technique"];
+    EXPECT_EQ(t["reference_rays"]["status"], "ok") << name;
+    const stress::ShadowFacts& f = sc.shadowFacts;
+    EXPECT_TRUE(hasCheck(t, "stressed: lights the plan shadows")) << name;
+    EXPECT_EQ(hasCheck(t, "acne:"), f.floorAcne) << name;
+    EXPECT_EQ(hasCheck(t, "peter-panning:"), f.wallLight >= 0) << name;
+    EXPECT_EQ(hasCheck(t, "light in the box:"), f.boxLight >= 0) << name;
+    std::string failed;
+    for (const json& k : t["checks"])
+        if (!k["pass"].get<bool>())
+            failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " vs " +
+                      k["limit"].dump() + "; ";
+    EXPECT_EQ(t["verdict"], "pass") << name << " shadow technique: " << failed;
+    return t["verdict"] == "pass";
 }
 
 // Every pipeline's verdict on case `c` is a pass; a failure names the checks that failed.
@@ -149,6 +181,7 @@ TEST(Stress, EveryCaseGivesTodaysVerdicts) {
                     << key;
             }
         }
+        if (sc.shadows.enabled()) casePass &= expectShadowTechniquePasses(sc, c);
         EXPECT_EQ(c["verdict"], casePass ? "pass" : "fail") << name;
         anyFail |= !casePass;
     }
