@@ -28,19 +28,11 @@ using nlohmann::json;
 
 // "case/pipeline" -> why it fails today (docs/stress.md, "Known failures").
 const std::map<std::string, std::string>& knownFailures() {
-    // None among the unshadowed cases since shading became camera-relative (docs/shading.md):
-    // far-from-origin (deferred, multipass) and light-on-surface (deferred) pass; docs/stress.md
-    // says how robust each pass is. The shadowed cases fail for every pipeline that does not
-    // consume --shadows yet (issue 26, item 2): it reports no shadowed_lights and renders
-    // unshadowed; remove a pipeline here when its shadows land.
-    static const std::map<std::string, std::string> known = [] {
-        std::map<std::string, std::string> k;
-        for (const char* pipeline : {"deferred", "multipass_forward", "visbuffer"})
-            for (const stress::StressCase& c : stress::stressCases())
-                if (c.shadows.enabled())
-                    k[c.name + "/" + pipeline] = "does not consume --shadows yet (issue 26, item 2)";
-        return k;
-    }();
+    // Empty since shading became camera-relative (docs/shading.md): far-from-origin
+    // (deferred, multipass) and light-on-surface (deferred) pass; docs/stress.md says how
+    // robust each pass is. The shadowed cases pass for every pipeline (each consumes
+    // --shadows: issue 26, item 2).
+    static const std::map<std::string, std::string> known = {};
     return known;
 }
 
