@@ -86,8 +86,8 @@ void acneChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays
 // every other tap of a receiver behind it sees the floor in front (nearer). A receiver on the
 // floor at axis distance X (the floor's normal offset is across the axis: X unchanged) is
 // compared at X (1 - b p), so the maps light it exactly where X (1 - b p) <= D: the band
-// D b p / (1 - b p) - w behind the back face (b the depth bias in footprints; the offset and
-// the PCF radius add nothing here). The leak check takes the general band, where the offset
+// D b p / (1 - b p) - w behind the back face, none if negative (b: the depth bias in
+// footprints; the offset and the PCF radius add nothing here). The leak check takes the general band, where the offset
 // and the tap reach count too (a wall at any angle): k = offset + bias + radius footprints.
 void wallChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays,
                 const std::vector<glm::dvec3>& world, const Scene& scene, const ShadowPlan& plan,
@@ -101,8 +101,9 @@ void wallChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays
     const double w = double(f.wallFront) - f.wallBack;
     const double b = TP_SHADOW_DEPTH_BIAS;
     const double k = TP_SHADOW_NORMAL_OFFSET + TP_SHADOW_DEPTH_BIAS + TP_SHADOW_PCF_RADIUS;
-    const double band = D * b * p / (1 - b * p) - w;
-    const double general = D * k * p / (1 - k * p) - w;
+    // A band narrower than the wall is none: the receiver behind it is never lit.
+    const double band = std::max(0.0, D * b * p / (1 - b * p) - w);
+    const double general = std::max(0.0, D * k * p / (1 - k * p) - w);
     constexpr double kSlack = 1e-4; // m: rounding of depths and positions (a pixel is ~1 cm)
     uint64_t behind = 0, beyond = 0;
     double widest = 0;
