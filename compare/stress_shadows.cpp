@@ -38,15 +38,13 @@ bool leaks(double maps, double rays) {
     return !(maps <= rays * (1 + kSameRelative) + kSameAbsolute);
 }
 
-void check(ShadowTechnique& t, std::string name, double measured, double limit,
-           std::string why) {
+void check(ShadowTechnique& t, std::string name, double measured, double limit, std::string why) {
     t.checks.push_back({std::move(name), measured <= limit, measured, limit, std::move(why)});
 }
 
-void atLeast(ShadowTechnique& t, std::string name, double measured, double limit,
-             std::string why) {
-    t.checks.push_back({"stressed: " + std::move(name), measured >= limit, measured, limit,
-                        std::move(why)});
+void atLeast(ShadowTechnique& t, std::string name, double measured, double limit, std::string why) {
+    t.checks.push_back(
+        {"stressed: " + std::move(name), measured >= limit, measured, limit, std::move(why)});
 }
 
 const ShadowLight* planned(const ShadowPlan& plan, int light) {
@@ -69,7 +67,7 @@ void acneChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays
         if (!onFloor(world[i]) || !(r > 1e-30)) continue;
         ++lit;
         const double darker = (r - rgb(maps, i)) / r; // the share of the light the maps took
-        if (!(darker <= worst)) worst = darker;        // NaN propagates
+        if (!(darker <= worst)) worst = darker;       // NaN propagates
     }
     atLeast(t, "floor pixels the rays see lit", double(lit), 1,
             "the case must put lit receivers under the acne check");
@@ -87,8 +85,9 @@ void acneChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays
 // floor at axis distance X (the floor's normal offset is across the axis: X unchanged) is
 // compared at X (1 - b p), so the maps light it exactly where X (1 - b p) <= D: the band
 // D b p / (1 - b p) - w behind the back face, none if negative (b: the depth bias in
-// footprints; the offset and the PCF radius add nothing here). The leak check takes the general band, where the offset
-// and the tap reach count too (a wall at any angle): k = offset + bias + radius footprints.
+// footprints; the offset and the PCF radius add nothing here). The leak check takes the general
+// band, where the offset and the tap reach count too (a wall at any angle): k = offset + bias +
+// radius footprints.
 void wallChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays,
                 const std::vector<glm::dvec3>& world, const Scene& scene, const ShadowPlan& plan,
                 const stress::ShadowFacts& f) {
@@ -122,9 +121,11 @@ void wallChecks(ShadowTechnique& t, const ImageRGBA& maps, const ImageRGBA& rays
                                   " m), the wall " + formatNumber(w) + " m thick";
     check(t, "light leaks: floor pixels lit behind the wall beyond the general band",
           double(beyond), 0,
-          "beyond " + formatNumber(general) + " m (offset + bias + PCF radius = " +
-              formatNumber(k) + " footprints, less the wall) the maps must shadow the floor as "
-              "the rays do; " + footprint);
+          "beyond " + formatNumber(general) +
+              " m (offset + bias + PCF radius = " + formatNumber(k) +
+              " footprints, less the wall) the maps must shadow the floor as "
+              "the rays do; " +
+              footprint);
     check(t, "peter-panning: widest lit band behind the wall (m)", widest, band + kSlack,
           "the depth bias's " + formatNumber(b) + " footprint(s) at the receiver, less the wall: " +
               formatNumber(band) + " m, + 0.1 mm for rounding; " + footprint);
@@ -153,7 +154,8 @@ void boxChecks(ShadowTechnique& t, const StressCaseResult& r, const std::vector<
         ++perFace[size_t(2 * axis + (d[axis] >= 0 ? 0 : 1))];
     }
     double faces = 0;
-    for (uint64_t n : perFace) faces += n > 0;
+    for (uint64_t n : perFace)
+        faces += n > 0;
     atLeast(t, "cube faces of the light in the box with receivers in its range outside", faces, 6,
             "every face of the cube map must stand between the light and a pixel the eye sees");
 }
@@ -194,14 +196,17 @@ void measureShadowTechnique(StressCaseResult& r, const Scene& scene, const Shado
     }
     const ImageRGBA &maps = r.reference.run->hdr, &rays = t.rays.run->hdr;
     t.hdr = computeError(maps, rays);
-    t.display = computeError(tonemapToDisplay(maps, r.exposureEv), tonemapToDisplay(rays, r.exposureEv));
+    t.display =
+        computeError(tonemapToDisplay(maps, r.exposureEv), tonemapToDisplay(rays, r.exposureEv));
     std::vector<glm::dvec3> world = pixelPositions(scene.camera, r.reference.run->depth);
-    for (glm::dvec3& p : world) p += glm::dvec3(scene.camera.position);
+    for (glm::dvec3& p : world)
+        p += glm::dvec3(scene.camera.position);
     if (f.floorAcne) acneChecks(t, maps, rays, world);
     if (f.wallLight >= 0) wallChecks(t, maps, rays, world, scene, plan, f);
     if (f.boxLight >= 0) boxChecks(t, r, world, scene, f);
     t.pass = true;
-    for (const StressCheck& c : t.checks) t.pass &= c.pass;
+    for (const StressCheck& c : t.checks)
+        t.pass &= c.pass;
 }
 
 StressCheck shadowedLightsCheck(const RunResult& run, const stress::StressCase& c) {

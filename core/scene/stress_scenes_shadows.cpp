@@ -84,7 +84,7 @@ Scene lightInBox() {
     s.camera.target = {0, 1.2f, 0};
     s.camera.yfov = 1.0f;
     s.ambient = vec3(0.01f);
-    s.lights.push_back(point({1.8f, 2.0f, 2.2f}, 15.0f, 6.0f)); // outside: the box casts a shadow
+    s.lights.push_back(point({1.8f, 2.0f, 2.2f}, 15.0f, 6.0f));  // outside: the box casts a shadow
     s.lights.push_back(point({0.1f, 1.3f, 0.05f}, 30.0f, 8.0f)); // inside, off centre; last
     finish(s);
     return s;
@@ -131,10 +131,8 @@ void shadowCases(const std::function<void(StressCase)>& add) {
          .height = 96,
          .build = thinWall,
          .shadows = all,
-         .shadowFacts = {.shadowedLights = 1,
-                         .wallLight = 0,
-                         .wallFront = kWallFront,
-                         .wallBack = kWallBack}});
+         .shadowFacts = {
+             .shadowedLights = 1, .wallLight = 0, .wallFront = kWallFront, .wallBack = kWallBack}});
     add({.name = "light-in-box",
          .stresses = "a point light inside a closed floating box (six cube faces, each with "
                      "receivers outside), a second light outside",

@@ -90,7 +90,7 @@ bool expectShadowTechniquePasses(const stress::StressCase& sc, const json& c) {
         if (!k["pass"].get<bool>())
             failed += k["name"].get<std::string>() + " " + k["measured"].dump() + " vs " +
                       k["limit"].dump() + "; ";
-    EXPECT_EQ(t["verdict"], "pass") << name << " shadow technique: " << failed;
+    EXPECT_EQ(t["verdict"].get<std::string>(), "pass") << name << " shadow technique: " << failed;
     return t["verdict"] == "pass";
 }
 
