@@ -200,7 +200,9 @@ bool ShadowMaps::shadowed(uint32_t light) const {
 }
 
 namespace {
-void depthBarrier(PassContext& pc, VkImage image, bool toRead) {
+// The map between its two uses: rendered (depth attachment) -> sampled (toRead), or back;
+// `discard`: back from nothing (its old contents are not kept).
+void depthBarrier(VkCommandBuffer cmd, VkImage image, bool toRead, bool discard = false) {
     const VkPipelineStageFlags2 tests = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
                                         VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     const VkPipelineStageFlags2 shaders = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
@@ -212,7 +214,9 @@ void depthBarrier(PassContext& pc, VkImage image, bool toRead) {
     b.srcAccessMask = toRead ? write : VK_ACCESS_2_NONE;
     b.dstStageMask = toRead ? shaders : tests;
     b.dstAccessMask = toRead ? VK_ACCESS_2_SHADER_SAMPLED_READ_BIT : write;
-    b.oldLayout = toRead ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
+    b.oldLayout = toRead    ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL
+                  : discard ? VK_IMAGE_LAYOUT_UNDEFINED
+                            : VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
     b.newLayout = toRead ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = image;
@@ -220,7 +224,7 @@ void depthBarrier(PassContext& pc, VkImage image, bool toRead) {
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.imageMemoryBarrierCount = 1;
     dep.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(pc.cmd, &dep);
+    vkCmdPipelineBarrier2(cmd, &dep);
 }
 } // namespace
 
@@ -231,7 +235,7 @@ void ShadowMaps::recordLight(PassContext& pc, uint32_t light) {
     beginRendering(pc, {}, DepthTarget{map_, {}, true, false, 0.0f});
     recordFaces(pc.cmd, first, count, true);
     endRendering(pc);
-    depthBarrier(pc, pc.image(map_).image, true);
+    depthBarrier(pc.cmd, pc.image(map_).image, true);
 }
 
 // The kept atlas, outside any frame: cleared, every face rendered, left readable, with two
@@ -245,19 +249,7 @@ void ShadowMaps::renderCached() {
     VK_CHECK(vkCreateQueryPool(ctx_.device, &qi, nullptr, &pool));
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         vkCmdResetQueryPool(cmd, pool, 0, 2);
-        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-        b.srcStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-        b.dstStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-        b.dstAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED; // the old maps are discarded
-        b.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = kept_.image;
-        b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.imageMemoryBarrierCount = 1;
-        dep.pImageMemoryBarriers = &b;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        depthBarrier(cmd, kept_.image, false, true); // the old maps are discarded
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool, 0);
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = kept_.view;
@@ -273,13 +265,7 @@ void ShadowMaps::renderCached() {
         recordFaces(cmd, 0, uint32_t(scene_.shadowPlan().faces.size()), false);
         vkCmdEndRendering(cmd);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, pool, 1);
-        b.srcStageMask = b.dstStageMask;
-        b.srcAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-        b.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-        b.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-        b.oldLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-        b.newLayout = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        depthBarrier(cmd, kept_.image, true);
     });
     uint64_t ticks[2] = {0, 0};
     VK_CHECK(vkGetQueryPoolResults(ctx_.device, pool, 0, 2, sizeof(ticks), ticks, sizeof(uint64_t),
@@ -289,7 +275,7 @@ void ShadowMaps::renderCached() {
     ++keptRenders_;
 }
 
-void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc, pc.image(map_).image, false); }
+void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc.cmd, pc.image(map_).image, false); }
 
 std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
     if (!enabled()) return {};

@@ -20,14 +20,12 @@ uint32_t pow2Ceil(double v) {
     return p;
 }
 
-bool castsCube(const gpu::LightGpu& l) {
-    if (l.type != TP_LIGHT_SPOT) return true;
-    const float cosOuter = std::clamp(-l.spotOffset / l.spotScale, -1.0f, 1.0f);
-    return std::acos(cosOuter) > kMaxSpotHalfAngle;
-}
-
 float spotHalfAngle(const gpu::LightGpu& l) {
     return std::acos(std::clamp(-l.spotOffset / l.spotScale, -1.0f, 1.0f));
+}
+
+bool castsCube(const gpu::LightGpu& l) {
+    return l.type != TP_LIGHT_SPOT || spotHalfAngle(l) > kMaxSpotHalfAngle;
 }
 
 // The pixels each local light's reach covers on screen (0: it does not reach the view).

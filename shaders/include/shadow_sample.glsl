@@ -14,9 +14,7 @@
 #include "include/shadows.h"
 
 layout(constant_id = TP_SPEC_SHADOW_LOCAL) const bool kShadowLocal = false;
-layout(std430, set = TP_SET_SHADOW, binding = TP_BINDING_SHADOW_FACES) readonly buffer ShadowFaceBlock {
-    ShadowFace shadowFaces[];
-};
+#include "include/shadow_faces.glsl"
 layout(set = TP_SET_SHADOW, binding = TP_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 
 // The face of a light (first = LightGpu.shadow - 1) that sees light-relative position d.

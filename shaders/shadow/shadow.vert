@@ -8,9 +8,7 @@
 #include "include/shadows.h"
 #include "include/scene_bindings.glsl"
 
-layout(std430, set = TP_SET_SHADOW, binding = TP_BINDING_SHADOW_FACES) readonly buffer ShadowFaceBlock {
-    ShadowFace shadowFaces[];
-};
+#include "include/shadow_faces.glsl"
 
 #ifdef TP_SHADOW_MASK
 layout(location = 0) out vec3 outPosition;
