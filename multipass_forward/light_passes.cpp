@@ -3,6 +3,12 @@
 // sphere touches (planLights), under a scissor at the sphere's screen rectangle; depth
 // EQUAL, no writes, blend ONE + ONE into the accumulation target. With --shadows, a shadowed
 // light's map is rendered right before its draws (shadowed_shading.cpp), timed with them.
+//
+// Coincident surfaces (a mesh instanced twice at one transform, overlapping coplanar
+// triangles) all pass depth EQUAL where the prepass's GREATER kept one of them, so additive
+// blending would add the light once per surface (a cube face of a real scene was lit twice:
+// docs/multipass_forward.md). Each light's draws therefore write its tag into the stencil and
+// pass only where the stencil does not hold it yet: a sample takes each light once.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/passes/shadow_maps.h"
@@ -10,6 +16,19 @@
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
+namespace {
+
+constexpr uint32_t kMaxStencilTag = 255; // 8 stencil bits; 0 is "no light yet"
+
+// Every 255 lights the tags start again from a cleared stencil (inside the rendering).
+void clearStencil(PassContext& pc, const Targets& t) {
+    const Image& depth = pc.image(t.depthTarget());
+    VkClearAttachment clear{VK_IMAGE_ASPECT_STENCIL_BIT, 0, {}};
+    VkClearRect rect{{{0, 0}, {depth.desc.width, depth.desc.height}}, 0, 1};
+    vkCmdClearAttachments(pc.cmd, 1, &clear, 1, &rect);
+}
+
+} // namespace
 
 LightPasses::LightPasses(const PassEnv& env) : env_(env) {
     if (!env.allDraws && env.plan.batches.empty()) return;
@@ -18,6 +37,7 @@ LightPasses::LightPasses(const PassEnv& env) : env_(env) {
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.blend = BlendMode::Additive;
+    d.stencilOnce = true;
     pipeline_ = createGraphicsPipeline(env.ctx, d);
     shadowed_ = createShadowedTwin(env, d);
 }
@@ -33,8 +53,9 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
     std::vector<uint32_t> order;
     if (pipeline_)
         for (const LightBatch& batch : env_.plan.batches) order.push_back(batch.light);
-    ShadowedShading shading(pc, t, resolve, env_.shadows, order);
+    ShadowedShading shading(pc, t, resolve, env_.shadows, order, true);
     draws_ = 0;
+    uint32_t tag = 0; // the stencil starts at 0 (cleared by each rendering's begin)
     if (pipeline_) {
         VkPipeline bound = pipeline_;
         bindSceneDraws(pc.cmd, env_, pipeline_);
@@ -46,6 +67,12 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
                 if (p == shadowed_)
                     env_.shadows->bind(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
             }
+            if (restarted) tag = 0;
+            if (++tag > kMaxStencilTag) {
+                clearStencil(pc, t);
+                tag = 1;
+            }
+            vkCmdSetStencilReference(pc.cmd, VK_STENCIL_FACE_FRONT_AND_BACK, tag);
             setScissor(pc.cmd, batch.scissor);
             for (const DrawItem* d : batch.draws)
                 recordDraw(pc.cmd, env_.layout, *d, batch.light);

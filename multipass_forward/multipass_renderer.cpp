@@ -44,7 +44,7 @@ class MultipassForwardRenderer final : public Renderer {
         prepass_ = std::make_unique<passes::DepthPrepass>(
             ctx_, scene_,
             passes::DepthPrepassParams{mp_.sampling.samples, plan_.opaque, plan_.masked,
-                                       manyViews_});
+                                       manyViews_, kDepthFormat});
         prepass_->plan(graph,
                        {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;
@@ -52,7 +52,7 @@ class MultipassForwardRenderer final : public Renderer {
                       [this, last](PassContext& pc) { base_->record(pc, t_, last); });
         if (hasLights) {
             last = !hasBlended;
-            std::vector<PassUse> uses = shadingUses(t_, last);
+            std::vector<PassUse> uses = shadingUses(t_, last, true);
             addShadowUse(uses, &*shadows_);
             graph.addPass("light_passes", uses,
                           [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
@@ -104,14 +104,14 @@ class MultipassForwardRenderer final : public Renderer {
         const std::string accum = fp16 ? "accumulated radiance, fp16 (resolved)"
                                        : "accumulated radiance, fp32 (resolved)";
         t_.hdr = graph.createImage("hdr", {accumFormat_, 0, 0, VK_SAMPLE_COUNT_1_BIT, accum});
-        t_.depth = graph.createImage("depth", {VK_FORMAT_D32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+        t_.depth = graph.createImage("depth", {kDepthFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                                "prepass depth (resolved: sample 0)"});
         if (mp_.sampling.samples > 1) {
             const auto samples = VkSampleCountFlagBits(mp_.sampling.samples);
             t_.hdrMsaa = graph.createImage(
                 "hdr_msaa", {accumFormat_, 0, 0, samples, "per-sample accumulation"});
             t_.depthMsaa = graph.createImage(
-                "depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, samples, "per-sample prepass depth"});
+                "depth_msaa", {kDepthFormat, 0, 0, samples, "per-sample prepass depth"});
         }
     }
 

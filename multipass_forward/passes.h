@@ -26,6 +26,11 @@ namespace tp::mp {
 
 // The accumulation target and depth every pass renders into: the single-sample exported
 // images at 1x, the per-sample ones under MSAA (resolved by the last pass into hdr).
+// Depth with a stencil: the light passes mark each sample they lit, so that coincident surfaces
+// (duplicated geometry, overlapping coplanar triangles), which all pass the EQUAL test, add a
+// light once as the reference's GREATER test shades one of them (light_passes.cpp).
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+
 struct Targets {
     ResourceHandle hdr, depth;         // exported
     ResourceHandle hdrMsaa, depthMsaa; // valid only when msaa > 1
@@ -50,10 +55,13 @@ struct PassEnv {
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass
-// depth read-only; `resolve`: this is the last such pass and averages into hdr.
-std::vector<PassUse> shadingUses(const Targets& t, bool resolve);
-// beginRendering for those uses (`clear`: the base pass starts the accumulation).
-void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear);
+// depth read-only (`stencil`: depth tested, never written, and the stencil written);
+// `resolve`: this is the last such pass and averages into hdr.
+std::vector<PassUse> shadingUses(const Targets& t, bool resolve, bool stencil = false);
+// beginRendering for those uses (`clear`: the base pass starts the accumulation; `stencil`:
+// the stencil attachment too, cleared to 0).
+void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear,
+                  bool stencil = false);
 // The fragment shader `mp_STEM_frag`, or its once-per-pixel variant `mp_STEM_pixel_frag`
 // (inputs at the pixel centre) under MSAA with --msaa-shading pixel.
 std::string fragmentShader(const PassEnv& env, const std::string& stem);
@@ -74,8 +82,9 @@ VkPipeline createShadowedTwin(const PassEnv& env, GraphicsPipelineDesc d);
 class ShadowedShading {
   public:
     // `order`: every light the pass will hold(), in order (to know which rendering is last).
+    // `stencil`: the renderings have the stencil attachment (beginShading).
     ShadowedShading(PassContext& pc, const Targets& t, bool resolve, ShadowMaps* shadows,
-                    const std::vector<uint32_t>& order);
+                    const std::vector<uint32_t>& order, bool stencil = false);
     bool shadowed(uint32_t light) const;
     // Before shading `light`: true when the rendering began again (bind everything again).
     bool hold(uint32_t light);
@@ -85,7 +94,7 @@ class ShadowedShading {
   private:
     PassContext& pc_;
     const Targets& t_;
-    const bool resolve_;
+    const bool resolve_, stencil_;
     ShadowMaps* shadows_;
     uint32_t switchesLeft_ = 0, renders_ = 0;
     uint32_t held_ = ~0u; // the light the map holds (readable), ~0u: none

@@ -7,16 +7,17 @@
 
 namespace tp::mp {
 
-std::vector<PassUse> shadingUses(const Targets& t, bool resolve) {
+std::vector<PassUse> shadingUses(const Targets& t, bool resolve, bool stencil) {
     std::vector<PassUse> uses = {{t.color(), Use::ColorAttachment},
-                                 {t.depthTarget(), Use::DepthTest}};
+                                 {t.depthTarget(), stencil ? Use::DepthAttachment : Use::DepthTest}};
     if (resolve && t.hdrMsaa.valid()) uses.push_back({t.hdr, Use::ColorResolve});
     return uses;
 }
 
-void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear) {
+void beginShading(PassContext& pc, const Targets& t, bool resolve, bool clear, bool stencil) {
     ColorTarget color{t.color(), resolve && t.hdrMsaa.valid() ? t.hdr : ResourceHandle{}, clear};
-    DepthTarget depth{t.depthTarget(), {}, false, true};
+    DepthTarget depth{t.depthTarget(), {}, false, !stencil};
+    depth.stencil = stencil;
     beginRendering(pc, {color}, depth);
 }
 
@@ -24,6 +25,7 @@ GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode) {
     GraphicsPipelineDesc d;
     d.specConstants = env.scene.specConstants(mode);
     d.colorFormats = {env.accumFormat};
+    d.depthFormat = kDepthFormat;
     d.samples = VkSampleCountFlagBits(env.settings.sampling.samples);
     d.sampleShading = env.settings.sampling.perSample(); // --msaa-shading sample
     d.layout = env.layout;

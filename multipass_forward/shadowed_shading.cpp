@@ -21,8 +21,9 @@ VkPipeline createShadowedTwin(const PassEnv& env, GraphicsPipelineDesc d) {
 }
 
 ShadowedShading::ShadowedShading(PassContext& pc, const Targets& t, bool resolve,
-                                 ShadowMaps* shadows, const std::vector<uint32_t>& order)
-    : pc_(pc), t_(t), resolve_(resolve),
+                                 ShadowMaps* shadows, const std::vector<uint32_t>& order,
+                                 bool stencil)
+    : pc_(pc), t_(t), resolve_(resolve), stencil_(stencil),
       shadows_(shadows && shadows->enabled() ? shadows : nullptr) {
     uint32_t held = ~0u;
     for (uint32_t light : order)
@@ -30,7 +31,7 @@ ShadowedShading::ShadowedShading(PassContext& pc, const Targets& t, bool resolve
             held = light;
             ++switchesLeft_;
         }
-    beginShading(pc, t, resolve && switchesLeft_ == 0, false);
+    beginShading(pc, t, resolve && switchesLeft_ == 0, false, stencil_);
 }
 
 bool ShadowedShading::shadowed(uint32_t light) const {
@@ -51,7 +52,7 @@ bool ShadowedShading::hold(uint32_t light) {
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    beginShading(pc_, t_, resolve_ && switchesLeft_ == 0, false);
+    beginShading(pc_, t_, resolve_ && switchesLeft_ == 0, false, stencil_);
     return true;
 }
 

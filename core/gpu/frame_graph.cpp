@@ -154,8 +154,10 @@ PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
 void FrameGraph::recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const {
     const ResourceNode& r = resources_[b.resource];
     if (b.image) {
-        imageBarrier(cmd, r.image.image, b.oldLayout, b.newLayout, b.srcStages, b.srcAccess,
-                     b.dstStages, b.dstAccess, {r.image.aspect, 0, 1, 0, 1});
+        const VkFormat f = r.image.desc.format;
+        imageBarrier(cmd, r.image.image, attachmentLayout(f, b.oldLayout),
+                     attachmentLayout(f, b.newLayout), b.srcStages, b.srcAccess, b.dstStages,
+                     b.dstAccess, {r.image.aspect, 0, 1, 0, 1});
         return;
     }
     VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};

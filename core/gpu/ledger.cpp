@@ -46,6 +46,8 @@ uint32_t formatBytesPerTexel(VkFormat format) {
     case VK_FORMAT_R32_UINT:
     case VK_FORMAT_D32_SFLOAT:
         return 4;
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: // the data: depth and stencil are two planes on GPUs
+        return 5;
     case VK_FORMAT_R16G16B16A16_SFLOAT:
     case VK_FORMAT_R32G32_SFLOAT:
     case VK_FORMAT_R32G32_UINT:
@@ -88,6 +90,8 @@ const char* formatName(VkFormat format) {
         return "R32_UINT";
     case VK_FORMAT_D32_SFLOAT:
         return "D32_SFLOAT";
+    case VK_FORMAT_D32_SFLOAT_S8_UINT:
+        return "D32_SFLOAT_S8_UINT";
     case VK_FORMAT_R16G16B16A16_SFLOAT:
         return "RGBA16_SFLOAT";
     case VK_FORMAT_R32G32_SFLOAT:

@@ -89,8 +89,8 @@ struct FixedState {
     std::vector<VkPipelineColorBlendAttachmentState> blends;
     VkPipelineColorBlendStateCreateInfo blend{
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    VkDynamicState dynamics[3] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                  VK_DYNAMIC_STATE_CULL_MODE};
+    VkDynamicState dynamics[4] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                  VK_DYNAMIC_STATE_CULL_MODE, VK_DYNAMIC_STATE_STENCIL_REFERENCE};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
 };
@@ -111,13 +111,20 @@ FixedState::FixedState(const GraphicsPipelineDesc& d)
     depth.depthTestEnable = d.depthTest;
     depth.depthWriteEnable = d.depthWrite;
     depth.depthCompareOp = d.depthCompare;
+    if (d.stencilOnce) {
+        depth.stencilTestEnable = VK_TRUE;
+        depth.front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
+                       VK_COMPARE_OP_NOT_EQUAL, 0xff, 0xff, 0};
+        depth.back = depth.front;
+    }
     blend.attachmentCount = uint32_t(blends.size());
     blend.pAttachments = blends.data();
-    dynamic.dynamicStateCount = 3;
+    dynamic.dynamicStateCount = d.stencilOnce ? 4 : 3;
     dynamic.pDynamicStates = dynamics;
     rendering.colorAttachmentCount = uint32_t(d.colorFormats.size());
     rendering.pColorAttachmentFormats = d.colorFormats.data();
     rendering.depthAttachmentFormat = d.depthFormat;
+    if (d.stencilOnce) rendering.stencilAttachmentFormat = d.depthFormat;
 }
 
 } // namespace

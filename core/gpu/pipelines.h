@@ -34,6 +34,11 @@ struct GraphicsPipelineDesc {
     bool depthTest = true;
     bool depthWrite = true;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER; // reverse-Z
+    // `depthFormat`'s stencil as a "once per sample" mark: a fragment passes where the stencil
+    // is not yet the reference (dynamic state, vkCmdSetStencilReference) and, passing depth
+    // too, writes it, so coincident surfaces that all pass depth EQUAL count once per
+    // reference (multipass forward's light passes). The rendering names the stencil attachment.
+    bool stencilOnce = false;
     BlendMode blend = BlendMode::None;
     // Used as given with BlendMode::Custom (multipass forward's transmittance passes need
     // factors and write masks the named modes do not have).

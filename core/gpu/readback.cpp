@@ -27,7 +27,10 @@ Buffer copyToHost(GpuContext& ctx, const Image& image, uint32_t texelBytes) {
                                   {"readback", "", "staging", "readback"});
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferImageCopy region{};
-        region.imageSubresource = {image.aspect, 0, 0, 1};
+        // One aspect a copy: a depth-stencil image gives its depth.
+        const VkImageAspectFlags aspect =
+            image.aspect & VK_IMAGE_ASPECT_DEPTH_BIT ? VK_IMAGE_ASPECT_DEPTH_BIT : image.aspect;
+        region.imageSubresource = {aspect, 0, 0, 1};
         region.imageExtent = {image.desc.width, image.desc.height, 1};
         vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                staging.buffer, 1, &region);
@@ -111,8 +114,10 @@ ImageRGBA readbackColor(GpuContext& ctx, const Image& image) {
 }
 
 ImageR32 readbackDepth(GpuContext& ctx, const Image& image) {
-    if (image.desc.format != VK_FORMAT_D32_SFLOAT || image.desc.samples != VK_SAMPLE_COUNT_1_BIT)
-        throw std::logic_error("readbackDepth: needs a single-sample D32_SFLOAT image");
+    const VkFormat f = image.desc.format;
+    if ((f != VK_FORMAT_D32_SFLOAT && f != VK_FORMAT_D32_SFLOAT_S8_UINT) ||
+        image.desc.samples != VK_SAMPLE_COUNT_1_BIT)
+        throw std::logic_error("readbackDepth: needs a single-sample D32_SFLOAT(_S8_UINT) image");
     const Buffer staging = copyToHost(ctx, image, 4);
     ImageR32 out{image.desc.width, image.desc.height, std::vector<float>(staging.size / 4)};
     std::memcpy(out.r.data(), staging.mapped, staging.size);

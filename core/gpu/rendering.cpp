@@ -1,6 +1,7 @@
 #include "core/gpu/rendering.h"
 
 #include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
 
 namespace tp {
 
@@ -32,10 +33,13 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
         colorInfos.push_back(a);
     }
     VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    VkRenderingAttachmentInfo stencilInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     if (depth) {
         depthInfo.imageView = pc.image(depth->image).view;
-        depthInfo.imageLayout = depth->readOnly ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL
-                                                : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        const VkFormat format = pc.image(depth->image).desc.format;
+        depthInfo.imageLayout =
+            depth->readOnly ? VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL
+                            : attachmentLayout(format, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
         depthInfo.loadOp = depth->clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
         depthInfo.storeOp =
             depth->readOnly ? VK_ATTACHMENT_STORE_OP_NONE : VK_ATTACHMENT_STORE_OP_STORE;
@@ -43,7 +47,17 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
         if (depth->resolve.valid()) {
             depthInfo.resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
             depthInfo.resolveImageView = pc.image(depth->resolve).view;
-            depthInfo.resolveImageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+            depthInfo.resolveImageLayout =
+                attachmentLayout(format, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        }
+        if (depth->stencil) {
+            if (depth->readOnly || !hasStencil(format))
+                throw GraphError("a stencil attachment needs a writable depth-stencil image");
+            stencilInfo = depthInfo;
+            stencilInfo.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            stencilInfo.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+            stencilInfo.resolveMode = VK_RESOLVE_MODE_NONE;
+            stencilInfo.resolveImageView = VK_NULL_HANDLE;
         }
     }
     const Image& any = colors.empty() ? pc.image(depth->image) : pc.image(colors.front().image);
@@ -53,6 +67,7 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
     info.colorAttachmentCount = uint32_t(colorInfos.size());
     info.pColorAttachments = colorInfos.data();
     info.pDepthAttachment = depth ? &depthInfo : nullptr;
+    info.pStencilAttachment = depth && depth->stencil ? &stencilInfo : nullptr;
     vkCmdBeginRendering(pc.cmd, &info);
     setViewportAndScissor(pc.cmd, any.desc.width, any.desc.height);
 }

@@ -2,7 +2,7 @@
 // Dynamic rendering begin/end from frame-graph resources, so passes never spell out
 // VkRenderingAttachmentInfo by hand. Layouts match the graph's Use (ColorAttachment ->
 // COLOR_ATTACHMENT_OPTIMAL, DepthAttachment -> DEPTH_ATTACHMENT_OPTIMAL, DepthTest ->
-// READ_ONLY_OPTIMAL).
+// READ_ONLY_OPTIMAL; a depth-stencil image: DEPTH_STENCIL_ATTACHMENT_OPTIMAL).
 #include <optional>
 #include <vector>
 
@@ -25,6 +25,9 @@ struct DepthTarget {
     bool clear = true;       // false = load
     bool readOnly = false;   // DepthTest use (no writes)
     float clearValue = 0.0f; // reverse-Z: 0 is the far plane
+    // The image's stencil aspect as the stencil attachment too, cleared to 0 at the start and
+    // not stored (a depth-stencil format; the pass's pipelines name it as stencil format).
+    bool stencil = false;
 };
 
 void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,

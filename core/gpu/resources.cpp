@@ -40,6 +40,16 @@ VkDeviceMemory allocate(GpuContext& ctx, const VkMemoryRequirements& req,
 
 } // namespace
 
+bool hasStencil(VkFormat format) {
+    return format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+VkImageLayout attachmentLayout(VkFormat format, VkImageLayout layout) {
+    return hasStencil(format) && layout == VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL
+               ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+               : layout;
+}
+
 bool isDepthFormat(VkFormat format) {
     return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
            format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
@@ -177,7 +187,9 @@ Image createImage(GpuContext& ctx, const ImageDesc& desc, const LedgerTag& tag) 
     Image img;
     img.ctx = &ctx;
     img.desc = desc;
-    img.aspect = isDepthFormat(desc.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    img.aspect = !isDepthFormat(desc.format) ? VK_IMAGE_ASPECT_COLOR_BIT
+                 : hasStencil(desc.format)   ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
+                                             : VK_IMAGE_ASPECT_DEPTH_BIT;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = desc.format;

@@ -74,6 +74,12 @@ Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size
 void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDeviceSize size);
 
 bool isDepthFormat(VkFormat format);
+// A depth format with a stencil aspect too: its views and barriers name both aspects, its
+// attachment layout is DEPTH_STENCIL_ATTACHMENT_OPTIMAL (attachmentLayout), a copy names depth.
+bool hasStencil(VkFormat format);
+// The layout a use's `layout` is for an image of `format`: DEPTH_ATTACHMENT_OPTIMAL may not
+// name a stencil aspect, so a depth-stencil image is in DEPTH_STENCIL_ATTACHMENT_OPTIMAL.
+VkImageLayout attachmentLayout(VkFormat format, VkImageLayout layout);
 
 // A global memory barrier, for the few hand-written ones outside the frame graph (uploads,
 // readbacks): each call site says why it needs one.

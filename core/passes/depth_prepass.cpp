@@ -27,6 +27,7 @@ void DepthPrepass::prepare() {
     layout_ = scene_.createPipelineLayout();
     GraphicsPipelineDesc d;
     d.samples = VkSampleCountFlagBits(params_.samples);
+    d.depthFormat = params_.depthFormat;
     d.layout = layout_;
     const bool every = params_.everyPipeline;
     if (!params_.opaque.empty() || (every && scene_.hasDraws(DrawFilter::Opaque))) {

@@ -28,6 +28,7 @@ struct DepthPrepassParams {
     // Pipelines for every alpha mode the scene has, not only for the non-empty lists: a
     // renderer that follows many views (RenderSettings::manyViews) gets new lists per view.
     bool everyPipeline = false;
+    VkFormat depthFormat = VK_FORMAT_D32_SFLOAT; // the depth target's (and resolve's) format
 };
 
 // depth: the attachment (per sample under MSAA); resolve: the single-sample depth it resolves

@@ -1,5 +1,6 @@
 #include "transformed_scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -115,12 +116,18 @@ fs::path writeTransformedNodesScene(const fs::path& dir, uint32_t seed, uint32_t
              {"translation", {uni(-2.5f, 2.5f), uni(-1.5f, 1.5f), uni(-2.5f, 2.5f)}}});
         children.push_back(i);
     }
+    // Two meshes twice at one transform, as real scenes instance them (SubpassGlass): coincident
+    // surfaces that all pass a depth EQUAL test, where the reference shades one of them.
+    for (uint32_t i = 0; i < std::min(nodes, 2u); ++i) {
+        children.push_back(nodeList.size());
+        nodeList.push_back(nodeList[i]);
+    }
     // The parent mirrors and stretches everything once more (the world matrix is a product).
     nodeList.push_back(
         {{"children", children}, {"scale", {-1.0, 1.25, 0.8}}, {"translation", {0.5, 0.0, -0.5}}});
     json gltf = {{"asset", {{"version", "2.0"}, {"generator", "triptych tests"}}},
                  {"scene", 0},
-                 {"scenes", {{{"nodes", {nodes}}}}},
+                 {"scenes", {{{"nodes", {nodeList.size() - 1}}}}},
                  {"nodes", nodeList},
                  {"meshes", meshes},
                  {"materials",

@@ -1,7 +1,8 @@
 #pragma once
 // A generated glTF scene whose meshes reach world space only through node transforms:
 // negative and non-uniform scales, rotations, translations, a mirrored parent over mirrored
-// children, meshes that sit off their node's origin. Every conservative test that takes a box
+// children, meshes that sit off their node's origin, two meshes instanced twice at one
+// transform (coincident surfaces). Every conservative test that takes a box
 // or a sphere through a transform (multipass's per-light draw selection, light culling and
 // binning, blended bounds) is checked on it (tests/gpu/light_plan_test.cpp).
 #include <cstdint>
