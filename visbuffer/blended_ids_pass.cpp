@@ -1,10 +1,12 @@
 #include "visbuffer/blended_ids_pass.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/readback.h"
 #include "core/gpu/rendering.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/render/renderer.h"
@@ -19,16 +21,29 @@ BlendedIdsPass::~BlendedIdsPass() {
     destroyPassSet(ctx_, set_);
 }
 
+namespace {
+
+// The pool under many views (docs/visbuffer.md, "Many views"): what the views need, not what
+// the CPU bound allows. The bound counts occluded and back-facing triangles and, near the
+// eye, every triangle as large as the screen (a courtyard path on the H200 planned 536 million
+// nodes, 4 GiB, for 124,859 fragments): so one node per sample of the screen, or twice the
+// most fragments an earlier view of the session met when it overflowed (`seen`), but never
+// more than this view's bound, which already holds all it can meet.
+uint64_t manyViewsCapacity(uint64_t bound, uint64_t floor, uint64_t seen) {
+    return std::min(bound, std::max(floor, seen));
+}
+
+} // namespace
+
 BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, ResourceHandle depth,
                                         uint32_t capacityPercent, uint64_t bound,
-                                        bool manyViews) {
+                                        bool manyViews, uint64_t seen) {
     samples_ = samples;
     depth_ = depth;
     const uint64_t pixels = uint64_t(graph.width()) * graph.height();
     const uint64_t most = ctx_.caps.maxStorageBufferRange / 8;
     most_ = most;
-    // Many views: a floor of a fragment per sample of the screen.
-    const uint64_t sized = viewCapacity(bound, pixels * samples, most, manyViews);
+    const uint64_t sized = manyViews ? manyViewsCapacity(bound, pixels * samples, seen) : bound;
     uint64_t capacity = capacityPercent == 0 ? std::min(sized, most)
                                              : pixels * capacityPercent / 100;
     capacity = std::max<uint64_t>(capacity, 1);
@@ -41,8 +56,10 @@ BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, Res
     t_.capacity = uint32_t(capacity);
     const std::string how =
         capacityPercent == 0
-            ? "the bound of the blended triangles' screen areas" +
-                  std::string(sized > bound ? ", with headroom for other views" : "") +
+            ? (manyViews && sized < bound
+                   ? std::string("many views: a node per sample, or twice the fragments a view "
+                                 "overflowed with")
+                   : std::string("the bound of the blended triangles' screen areas")) +
                   std::string(sized > most ? ", clamped to one storage buffer" : "")
             : "--vis-blended-capacity " + std::to_string(capacityPercent) + "% of the pixels";
     t_.heads = graph.createBuffer("blended_list_heads", pixels * 4,
@@ -70,6 +87,15 @@ BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, Res
                    {t_.counters, Use::StorageWrite, TP_VIS_BINDING_BLEND_COUNTERS}},
                   [this](PassContext& pc) { record(pc); });
     return t_;
+}
+
+bool BlendedIdsPass::overflowed(FrameGraph& graph) {
+    const std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.counters));
+    uint32_t counters[TP_VIS_BLEND_COUNTER_WORDS];
+    std::memcpy(counters, raw.data(), sizeof(counters));
+    if (counters[TP_VIS_BLEND_DROPPED] == 0 || t_.capacity == most_) return false;
+    grownNeed_ = 2 * uint64_t(counters[TP_VIS_BLEND_APPENDED]); // met: held and dropped
+    return true;
 }
 
 void BlendedIdsPass::prepare(FrameGraph& graph) {

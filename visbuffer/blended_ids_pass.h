@@ -33,10 +33,16 @@ class BlendedIdsPass {
     // depth: the visibility depth (per sample under MSAA). capacityPercent: nodes in percent
     // of the pixels, or 0: `bound` nodes (fragment_bound.h), clamped to what one storage
     // buffer can hold (a fragment past it is then dropped and counted). Throws RendererError
-    // when an explicit capacity exceeds maxStorageBufferRange. manyViews (capacity 0): the
-    // bound gets headroom for later views (core/passes/tiled_lighting.h: viewCapacity).
+    // when an explicit capacity exceeds maxStorageBufferRange. manyViews (capacity 0): sized
+    // from need, not from the bound (manyViewsCapacity), and grown on a counted overflow.
     BlendedListTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle depth,
-                            uint32_t capacityPercent, uint64_t bound, bool manyViews = false);
+                            uint32_t capacityPercent, uint64_t bound, bool manyViews = false,
+                            uint64_t seen = 0);
+    // After a view's frames (many views): whether the pool dropped fragments it could have
+    // held had it been larger (not when it is already one whole storage buffer); then
+    // grownNeed() is what it should hold. Reads the pass's counters back.
+    bool overflowed(FrameGraph& graph);
+    uint64_t grownNeed() const { return grownNeed_; }
     // Whether a new view whose bound is `bound` fits the planned pool: a pool clamped to one
     // storage buffer already holds the most a plan could give it (drops there are counted).
     bool fits(uint64_t bound) const { return bound <= t_.capacity || t_.capacity == most_; }
@@ -51,6 +57,7 @@ class BlendedIdsPass {
     ResourceHandle depth_;
     BlendedListTargets t_;
     uint64_t most_ = 0; // nodes one storage buffer holds
+    uint64_t grownNeed_ = 0;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -48,6 +48,8 @@ Settings readSettings(const RenderSettings& s) {
     v.hdr = hdrKnob().in(s);
     v.blended = blendedKnob().in(s);
     v.blendedCapacityPercent = blendedCapacityKnob().in(s);
+    if (auto seen = s.capacities.find(kSeenFragments); seen != s.capacities.end())
+        v.blendedSeen = seen->second;
     return v;
 }
 

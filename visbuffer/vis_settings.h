@@ -33,11 +33,16 @@ struct Settings {
     HdrStorage hdr = HdrStorage::Fp32;
     Blended blended = Blended::Compute;
     uint32_t blendedCapacityPercent = 0; // 0: the derived bound
+    // Many views: the blended fragments an earlier plan of this session overflowed with, times
+    // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).
+    uint64_t blendedSeen = 0;
     // Light evaluations per pixel and light of a batch the resolve may make: its samples, and
     // with `blendedBudget` (blended fragments composited in compute, on a CPU device) the
     // budgeted blended fragments (each sample's at the sample rate). Sizes the batches.
     uint32_t evaluationsPerPixel(bool blendedBudget) const;
 };
+
+inline constexpr const char* kSeenFragments = "visbuffer.blended_fragments";
 
 KnobSchema knobs();
 Settings readSettings(const RenderSettings& s);

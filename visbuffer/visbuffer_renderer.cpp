@@ -72,7 +72,7 @@ class VisbufferRenderer final : public Renderer {
         if (blendInCompute_)
             lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
                                       vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,
-                                      vis_.manyViews);
+                                      vis_.manyViews, vis_.blendedSeen);
         // Static per scene and configuration, like the light candidates: made now, so the
         // surface source can name it.
         drawBuffer_ = createBufferWithData(
@@ -123,7 +123,11 @@ class VisbufferRenderer final : public Renderer {
         if (!lighting_.updateView(graph)) return false;
         if (hasBlended_ && !blended_.updateLists(lighting_, lt_)) return false;
         if (!blendInCompute_) return true;
-        if (vis_.blendedCapacityPercent == 0 && !blendedIds_.fits(fragmentBound())) return false;
+        // Many views: the pool is checked after the frames instead (overflowed), from what the
+        // view met, not from its bound (which costs milliseconds a view on the CPU).
+        if (!vis_.manyViews && vis_.blendedCapacityPercent == 0 &&
+            !blendedIds_.fits(fragmentBound()))
+            return false;
         table_ = vis::makeDrawTable(scene_, true); // the passes hold it by reference
         uploadBufferData(ctx_, drawBuffer_, table_.rows.data(),
                          table_.rows.size() * sizeof(gpu::VisDraw));
@@ -138,6 +142,16 @@ class VisbufferRenderer final : public Renderer {
             raw = readbackBuffer(ctx_, graph.buffer(lists_.counters));
             std::memcpy(blendCounters_, raw.data(), sizeof(blendCounters_));
         }
+    }
+
+    // Many views, derived pool: a view that dropped blended fragments is rendered again with a
+    // pool twice what it met (RendererSession; docs/visbuffer.md, "Many views").
+    bool overflowed(FrameGraph& graph) override {
+        return blendInCompute_ && vis_.manyViews && vis_.blendedCapacityPercent == 0 &&
+               blendedIds_.overflowed(graph);
+    }
+    std::map<std::string, uint64_t> capacityHints() const override {
+        return {{vis::kSeenFragments, blendedIds_.grownNeed()}};
     }
 
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;

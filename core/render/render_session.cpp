@@ -1,5 +1,6 @@
 #include "core/render/render_session.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/gpu/context.h"
@@ -14,6 +15,9 @@ namespace tp {
 namespace {
 
 constexpr uint32_t kMaxTimedScopes = 64;
+// Replans for one view's overflow: a renderer's hint at least doubles what it met, so a few
+// cover any growth; past them the drops stay counted in its statistics.
+constexpr uint32_t kMaxGrowths = 4;
 
 bool sameConstants(const std::vector<SpecConstant>& a, const std::vector<SpecConstant>& b) {
     if (a.size() != b.size()) return false;
@@ -101,8 +105,18 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
     // A view change, or a plan or recording that failed last time (tried again).
     if (scene_.viewGeneration() != generation_ || !planned_.renderer || !recorded_)
         if (Status s = follow(updateMs); !s) return Error{s.error()};
-    profiler_->discardSamples();
-    const uint32_t warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options);
+    // Frames until no capacity sized from measured needs overflowed (contract step 7): each
+    // overflow plans again with the needs measured, so this ends once they fit.
+    uint32_t warmup = 0;
+    for (uint32_t grown = 0;; ++grown) {
+        profiler_->discardSamples();
+        warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options);
+        if (grown == kMaxGrowths || !planned_.renderer->overflowed(*planned_.graph)) break;
+        for (const auto& [name, need] : planned_.renderer->capacityHints())
+            settings_.capacities[name] = std::max(settings_.capacities[name], need);
+        if (Status s = plan(); !s) return Error{s.error()};
+        ++replans_;
+    }
     RunResult result = detail::collectResult(ctx_, scene_, entry_, settings_, planned_, *profiler_,
                                              *statistics_, options);
     // more warm-up frames than asked on a GPU: kGpuWarmupMs

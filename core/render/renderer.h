@@ -21,6 +21,12 @@
 //      plan() gave it: counted, never silent) or the renderer cannot update; the session then
 //      plans it again and counts the replan. The default is false: a renderer that bakes the
 //      view is planned again for every view, as before.
+//   7. A capacity sized from what views were seen to need (not from a bound that cannot be
+//      exceeded) is checked after each view's frames: overflowed(graph) reads the renderer's
+//      own counters and says whether this view dropped anything. The session then plans the
+//      renderer again with RenderSettings::capacities holding capacityHints() (the needs it
+//      measured), renders the view again and counts the replan: an image with a dropped
+//      element is never kept. The default: nothing is sized that way.
 // Nothing downstream asks which renderer ran.
 #include <functional>
 #include <map>
@@ -93,6 +99,8 @@ class Renderer {
     virtual void prepare(FrameGraph& graph) = 0;
     virtual bool updateView(FrameGraph&) { return false; }
     virtual void collectStats(FrameGraph&) {}
+    virtual bool overflowed(FrameGraph&) { return false; }
+    virtual std::map<std::string, uint64_t> capacityHints() const { return {}; }
     // Read back after the frames when settings.debug is set (see DebugImage).
     virtual std::vector<DebugImage> debugImages(FrameGraph&) { return {}; }
     virtual RendererStats stats() const = 0;

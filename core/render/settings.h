@@ -33,6 +33,9 @@ struct RenderSettings {
     // the one view, as a single render always was.
     bool manyViews = false;
     ShadowSettings shadows; // default: none (the images of a run without shadows)
+    // Needs a previous plan of the same renderer measured and outgrew (Renderer contract step
+    // 7, RendererSession): by the renderer's own names; empty for a first plan.
+    std::map<std::string, uint64_t> capacities;
     // Knob values as text, by knob name ("tile" -> "16"). A renderer is built only after its
     // schema has checked them and filled in its defaults (resolveKnobs), so a knob it declared
     // is always here; values of other renderers' knobs are carried along untouched.

@@ -10,12 +10,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
 #include "core/render/error_model.h"
 #include "core/render/frame_runner.h"
+#include "core/render/render_session.h"
 #include "core/render/renderer.h"
 #include "core/scene/lights.h"
 #include "gpu_test_util.h"
@@ -296,6 +298,61 @@ TEST(Visbuffer, LedgerHoldsEightBytesPerSample) {
         for (const LedgerEntry& e : r.memory)
             EXPECT_EQ(e.tag.name.find("gbuffer"), std::string::npos) << e.tag.name;
     }
+    expectNoValidationMessages(*ctx);
+}
+
+} // namespace
+} // namespace tp::test
+
+namespace tp::test {
+namespace {
+
+// Many views (a camera path, the viewer): the fragment pool is sized from what views need, not
+// from the bound (docs/visbuffer.md, "Many views"). A first view that sees almost no glass
+// plans a pool of its bound; the next view meets more fragments than that, drops some, and
+// the session renders it again with twice what it met: counted as a replan, nothing dropped
+// in the kept image, which is bit for bit that of a renderer planned at that view.
+TEST(Visbuffer, ManyViewsPoolGrowsOnACountedOverflow) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(4, 6);
+    const Camera seeing = scene.camera;
+    Camera away = seeing;
+    away.target = away.position + (away.position - seeing.target); // the other way
+    RenderSettings s = small(1);
+    s.manyViews = true;
+    Result<const RendererEntry*> entry = findRenderer("visbuffer");
+    ASSERT_TRUE(entry.ok());
+    scene.camera = away;
+    SceneGpu gpu(*ctx, scene);
+    auto session = RendererSession::create(*ctx, gpu, **entry, analyzeScene(scene, 1), s);
+    ASSERT_TRUE(session.ok()) << session.error();
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    Result<RunResult> first = (*session)->render(once);
+    ASSERT_TRUE(first.ok()) << first.error();
+    const double pool = first->stats.counter("blended_list_capacity");
+
+    scene.camera = seeing;
+    Result<RunResult> grown = (*session)->render(once);
+    ASSERT_TRUE(grown.ok()) << grown.error();
+    const double met = grown->stats.counter("blended_fragments");
+    std::printf("[ visbuffer ] first view's pool %.0f nodes; the next view met %.0f, pool %.0f\n",
+                pool, met, grown->stats.counter("blended_list_capacity"));
+    ASSERT_GT(met, pool) << "the second view needs more than the first view's pool";
+    EXPECT_EQ(grown->stats.counter("blended_fragments_dropped", -1), 0.0);
+    EXPECT_GE(grown->stats.counter("blended_list_capacity"), met);
+    EXPECT_EQ((*session)->replans(), 1u) << "the overflow is counted";
+    EXPECT_EQ(grown->stats.counter("view_replans"), 1.0);
+
+    SceneGpu fresh(*ctx, scene);
+    auto there = RendererSession::create(*ctx, fresh, **entry, analyzeScene(scene, 1), s);
+    ASSERT_TRUE(there.ok()) << there.error();
+    Result<RunResult> want = (*there)->render(once);
+    ASSERT_TRUE(want.ok()) << want.error();
+    EXPECT_EQ(0, std::memcmp(grown->hdr.rgba.data(), want->hdr.rgba.data(),
+                             want->hdr.rgba.size() * sizeof(float)));
     expectNoValidationMessages(*ctx);
 }
 
