@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "compare/report_html_parts.h"
+#include "core/image/metrics.h"
 #include "compare/svg_plot.h"
 
 namespace tp::cli::html {
@@ -69,14 +70,16 @@ std::string summaryTable(const json& r) {
     std::string t =
         "<h2>Summary</h2>\n<table><tr><th class=\"l\">pipeline</th><th>frame median ms<br>(" +
         device +
-        ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>PSNR dB "
+        ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>RMSE (HDR) "
+        "without the worst pixel</th><th>mean relative error (HDR)</th><th>PSNR dB "
         "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>HDR-FLIP mean</th><th>FLIP "
         "mean "
         "(tonemapped)</th><th>lights dropped</th></tr>\n";
+    std::string dominated; // the pipelines whose RMSE one pixel decides
     auto row = [&](const json& p, bool reference) {
         t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>";
         if (!ok(p)) {
-            t += "<td colspan=\"9\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
+            t += "<td colspan=\"11\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
             return;
         }
         const json& mem = p["run"]["memory"];
@@ -84,10 +87,20 @@ std::string summaryTable(const json& r) {
              formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" +
              numberCell(mem["bytes_per_pixel"]);
         if (reference)
-            t += "<td>0</td><td>inf</td><td>0</td><td>0</td><td>0</td>";
+            t += "<td>0</td><td>0</td><td>0</td><td>inf</td><td>0</td><td>0</td><td>0</td>";
         else {
             const json& e = p["error_vs_reference"];
-            t += numberCell(e["hdr"]["rmse"]) + numberCell(e["tonemapped"]["psnr"]) +
+            const json& hdr = e["hdr"];
+            const double share = hdr.value("worst_pixel_share", 0.0);
+            const bool one = share > kOnePixelDominates;
+            if (one)
+                dominated += "<li>" + esc(p["name"]) + ": pixel (" +
+                             std::to_string(hdr.value("worst_pixel_x", 0)) + ", " +
+                             std::to_string(hdr.value("worst_pixel_y", 0)) + ") holds " +
+                             formatNumber(100.0 * share) + " % of the squared error</li>";
+            t += (one ? "<td class=\"warn\">&dagger; " : "<td>") + formatNumber(hdr["rmse"]) +
+                 "</td>" + numberCell(hdr["rmse_without_worst_pixel"]) +
+                 numberCell(hdr["mean_relative"]) + numberCell(e["tonemapped"]["psnr"]) +
                  numberCell(e["tonemapped"]["share_over_threshold"]) +
                  numberCell(flipValue(p, "hdr", "mean")) + numberCell(flipValue(p, "ldr", "mean"));
         }
@@ -96,7 +109,15 @@ std::string summaryTable(const json& r) {
     row(r["reference"], true);
     for (const json& p : r["pipelines"])
         row(p, false);
-    t += "</table>\n<p class=\"meta\">Shared scene data (counted once, not in any pipeline's "
+    t += "</table>\n";
+    if (!dominated.empty())
+        t += "<p class=\"meta\">&dagger; One pixel decides this RMSE (it holds more than half of "
+             "the squared error): near a light's 1/d&sup2; pole a tiny difference in the shaded "
+             "position is a large one in radiance, and one such pixel can rank the pipelines. "
+             "Read the RMSE without it and the mean relative error (|p &minus; r| / max(|r|, "
+             "10<sup>&minus;3</sup>)), which no single pixel decides.</p><ul>" +
+             dominated + "</ul>\n";
+    t += "<p class=\"meta\">Shared scene data (counted once, not in any pipeline's "
          "total): " +
          formatNumber(r["shared_memory"]["total_bytes"].get<double>() / 1048576.0) + " MiB.</p>\n";
     return t;
@@ -107,15 +128,16 @@ bool hasCenterReference(const json& r) {
     return r.contains("center_reference") && r["center_reference"].value("rendered", false);
 }
 
-// `key`: error_vs_reference or error_vs_center_reference.
-std::string errorScatter(const json& r, const std::string& key, const std::string& yLabel) {
+// `key`: error_vs_reference or error_vs_center_reference; `metric`: its HDR metric plotted.
+std::string errorScatter(const json& r, const std::string& key, const std::string& yLabel,
+                         const std::string& metric = "rmse") {
     std::vector<PlotPoint> points;
     points.push_back({"reference (error 0)", frameMedian(r["reference"]), 0.0, -1, false,
                       pipelineColour(r["reference"]["name"].get<std::string>())});
     for (const json& p : r["pipelines"])
         if (ok(p) && p.contains(key))
             points.push_back({p["name"].get<std::string>(), frameMedian(p),
-                              p[key]["hdr"]["rmse"].get<double>(), -1, false,
+                              p[key]["hdr"].value(metric, 0.0), -1, false,
                               pipelineColour(p["name"].get<std::string>())});
     return scatterLogLogSvg(
         points, "frame time, median ms on " + r["device"]["name"].get<std::string>(), yLabel);
@@ -205,10 +227,14 @@ std::string flipScatter(const json& r) {
 std::string errorPlot(const json& r) {
     const std::string note =
         "<p class=\"meta\">Lower left is better: cheaper and closer to the reference (by "
-        "RMSE, and by what a viewer would see: HDR-FLIP).</p>\n";
+        "RMSE, by the mean relative error, which one hot pixel cannot decide, and by what a "
+        "viewer would see: HDR-FLIP).</p>\n";
     if (!hasCenterReference(r))
         return "<h2>Error against run time</h2>\n" +
                errorScatter(r, "error_vs_reference", "RMSE vs reference (linear HDR)") +
+               errorScatter(r, "error_vs_reference",
+                            "mean relative error vs reference (linear HDR; no pixel decides it)",
+                            "mean_relative") +
                flipScatter(r) + note;
     return "<h2>Error against run "
            "time</h2>\n<style>#ep-c:checked~.ep-s,#ep-s:checked~.ep-c{display:none}</style>"

@@ -58,7 +58,7 @@ body{font-family:sans-serif;margin:16px 24px;color:#222;max-width:1400px}
 h1{font-size:22px;margin:4px 0}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ccc}
 table{border-collapse:collapse;font-size:13px;margin:6px 0}
 td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f0f0f0}
-td.l,th.l{text-align:left}
+td.l,th.l{text-align:left}td.warn{background:#fff6d6}
 .meta{font-size:13px;color:#444}.meta code{background:#f4f4f4;padding:1px 4px;word-break:break-all}
 .failed{background:#fde2e2;border:1px solid #d33;padding:8px;margin:8px 0}
 .note{background:#fff6d6;border:1px solid #e0c040;padding:6px;margin:8px 0;font-size:13px}

@@ -155,6 +155,8 @@ nlohmann::json metricsJson(const ErrorReport& e) {
     }
     j["max_abs_x"] = e.maxAbsX;
     j["max_abs_y"] = e.maxAbsY;
+    j["worst_pixel_x"] = e.worstPixelX;
+    j["worst_pixel_y"] = e.worstPixelY;
     j["compared_pixels"] = e.comparedPixels;
     return j;
 }

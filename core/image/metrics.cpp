@@ -17,18 +17,25 @@ struct Sums {
     double squared = 0;
     double relative = 0;
     uint64_t overThreshold = 0;
+    double worstPixelSquared = 0; // the largest sum of squared RGB differences of one pixel
 };
 
 void accumulatePixel(const float* t, const float* r, uint32_t x, uint32_t y,
                      const MetricsOptions& options, Sums& sums, ErrorReport& report) {
-    double pixelMax = 0;
+    double pixelMax = 0, pixelSquared = 0;
     for (int c = 0; c < 3; ++c) {
         double diff = double(t[c]) - double(r[c]);
         double absDiff = std::abs(diff);
-        sums.squared += diff * diff;
+        pixelSquared += diff * diff;
         sums.relative +=
             absDiff / std::max(std::abs(double(r[c])), double(options.relativeEpsilon));
         pixelMax = std::max(pixelMax, absDiff);
+    }
+    sums.squared += pixelSquared;
+    if (pixelSquared > sums.worstPixelSquared) {
+        sums.worstPixelSquared = pixelSquared;
+        report.worstPixelX = x;
+        report.worstPixelY = y;
     }
     // Strictly greater: the first pixel in scan order wins ties, so the location is stable.
     if (pixelMax > report.maxAbs) {
@@ -50,6 +57,11 @@ void finish(const Sums& sums, const MetricsOptions& options, ErrorReport& report
         mse > 0.0 ? 10.0 * std::log10(peak * peak / mse) : std::numeric_limits<double>::infinity();
     report.meanRelative = sums.relative / channels;
     report.shareOverThreshold = double(sums.overThreshold) / double(report.comparedPixels);
+    report.worstPixelShare = sums.squared > 0.0 ? sums.worstPixelSquared / sums.squared : 0.0;
+    report.rmseWithoutWorstPixel =
+        report.comparedPixels > 1
+            ? std::sqrt(std::max(sums.squared - sums.worstPixelSquared, 0.0) / (channels - 3.0))
+            : 0.0;
 }
 
 } // namespace
@@ -107,6 +119,10 @@ const std::vector<MetricInfo>& metricTable() {
          [](const ErrorReport& r) { return r.shareOverThreshold; }},
         {"nan_inf", "pixels of the test image with a NaN or Inf in RGB",
          [](const ErrorReport& r) { return double(r.nanInfCount); }},
+        {"worst_pixel_share", "share of the summed squared error held by the worst single pixel",
+         [](const ErrorReport& r) { return r.worstPixelShare; }},
+        {"rmse_without_worst_pixel", "root mean square error over every pixel but that one",
+         [](const ErrorReport& r) { return r.rmseWithoutWorstPixel; }},
     };
     return table;
 }

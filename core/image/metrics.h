@@ -26,6 +26,12 @@ struct ErrorReport {
     double shareOverThreshold = 0; // fraction of compared pixels with max channel |t-r| > thr
     uint64_t nanInfCount = 0;      // pixels of the test image with a NaN or Inf in RGB
     uint64_t comparedPixels = 0;
+    // Whether one pixel decides the RMSE: the largest share of the summed squared error that a
+    // single pixel holds (0 when identical), and the RMSE over the other pixels. Near a light's
+    // 1/d^2 pole one pixel can hold nearly all of it and rank pipelines by that pixel alone.
+    double worstPixelShare = 0;
+    double rmseWithoutWorstPixel = 0;
+    uint32_t worstPixelX = 0, worstPixelY = 0; // that pixel (first in scan order on ties)
 };
 
 struct MetricInfo {
@@ -34,8 +40,12 @@ struct MetricInfo {
     std::function<double(const ErrorReport&)> value;
 };
 
-// The table: rmse, psnr, max_abs, mean_relative, share_over_threshold, nan_inf.
+// The table: rmse, psnr, max_abs, mean_relative, share_over_threshold, nan_inf,
+// worst_pixel_share, rmse_without_worst_pixel.
 const std::vector<MetricInfo>& metricTable();
+
+// worstPixelShare above which the report says that one pixel decides the RMSE (half of it).
+constexpr double kOnePixelDominates = 0.5;
 
 // Pixels with a NaN or Inf in RGB (the nanInfCount of computeError, for a single image).
 uint64_t countNonFinitePixels(const ImageRGBA& image);

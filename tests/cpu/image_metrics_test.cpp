@@ -72,6 +72,23 @@ TEST(Metrics, HandComputedTwoByTwo) {
     EXPECT_DOUBLE_EQ(r.shareOverThreshold, 0.75);
 }
 
+// The worst pixel's share: pixel (1,1) holds 0.25 of the summed 0.328125, i.e. 0.761904...;
+// without it 0.015625 + 0.0625 = 0.078125 over the other 3 pixels * 3 channels = 9 terms:
+// RMSE 0.0931694990624912.
+TEST(Metrics, WorstPixelShareAndRmseWithoutIt) {
+    HandPair pair;
+    ErrorReport r = computeError(pair.test, pair.reference);
+    EXPECT_NEAR(r.worstPixelShare, 0.25 / 0.328125, 1e-12);
+    EXPECT_GT(r.worstPixelShare, kOnePixelDominates);
+    EXPECT_NEAR(r.rmseWithoutWorstPixel, 0.0931694990624912, 1e-12);
+    EXPECT_EQ(r.worstPixelX, 1u);
+    EXPECT_EQ(r.worstPixelY, 1u);
+    // Identical images: no error, no share.
+    ErrorReport same = computeError(pair.reference, pair.reference);
+    EXPECT_EQ(same.worstPixelShare, 0.0);
+    EXPECT_EQ(same.rmseWithoutWorstPixel, 0.0);
+}
+
 TEST(Metrics, ThresholdUsesMaxChannelPerPixel) {
     HandPair pair;
     MetricsOptions options;
@@ -152,7 +169,8 @@ TEST(Metrics, TableListsEveryMetricInOrder) {
         EXPECT_FALSE(m.description.empty()) << m.name;
     }
     EXPECT_EQ(names, (std::vector<std::string>{"rmse", "psnr", "max_abs", "mean_relative",
-                                               "share_over_threshold", "nan_inf"}));
+                                               "share_over_threshold", "nan_inf",
+                                               "worst_pixel_share", "rmse_without_worst_pixel"}));
     ErrorReport r;
     r.rmse = 1;
     r.psnr = 2;
@@ -160,6 +178,8 @@ TEST(Metrics, TableListsEveryMetricInOrder) {
     r.meanRelative = 4;
     r.shareOverThreshold = 5;
     r.nanInfCount = 6;
+    r.worstPixelShare = 7;
+    r.rmseWithoutWorstPixel = 8;
     for (size_t i = 0; i < table.size(); ++i)
         EXPECT_EQ(table[i].value(r), double(i + 1)) << table[i].name;
 }
