@@ -54,29 +54,6 @@ double triangleCentreBound(glm::vec2 a, glm::vec2 b, glm::vec2 c, uint32_t width
     return std::min(box, std::ceil(std::abs(twiceArea) * 0.5 + l1 * 0.5 + 1.0));
 }
 
-uint64_t blendedFragmentBound(const SceneGpu& scene, const std::vector<TableDraw>& blended,
-                              uint32_t width, uint32_t height, uint32_t samples) {
-    const glm::mat4& viewProj = scene.shadingFrame().viewProj;
-    const double screen = double(width) * height;
-    double total = 0.0;
-    for (const TableDraw& d : blended) {
-        const Mesh& m = scene.scene().meshes[d.item->mesh];
-        for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-            glm::vec2 p[3];
-            bool behind = false;
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec4 clip =
-                    viewProj * glm::vec4(scene.toShading(m.positions[m.indices[t + k]]), 1.0f);
-                behind = behind || !(clip.w > 1e-6f);
-                const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-                p[k] = (ndc * 0.5f + 0.5f) * glm::vec2(width, height);
-            }
-            total += behind ? screen : triangleCentreBound(p[0], p[1], p[2], width, height);
-        }
-    }
-    return uint64_t(total) * samples;
-}
-
 namespace {
 
 // A convex polygon of at most 8 vertices: a triangle cut by the near plane (4), then by the

@@ -22,19 +22,15 @@ namespace tp::vis {
 double triangleCentreBound(glm::vec2 a, glm::vec2 b, glm::vec2 c, uint32_t width,
                            uint32_t height);
 
-// The blended draws' triangles through the scene's shading camera, times the samples. A
-// triangle reaching behind the eye counts the whole screen.
-uint64_t blendedFragmentBound(const SceneGpu& scene, const std::vector<TableDraw>& blended,
-                              uint32_t width, uint32_t height, uint32_t samples);
-
-// Planned for many views (RenderSettings::manyViews; every view computes it again: the
-// renderer's updateView): the same bound with each triangle clipped to w >= znear / 2 (the
-// rasterizer keeps only w >= znear, so this holds every fragment it makes) instead of counted
-// as the whole screen where it reaches behind the eye, and a draw whose box lies outside the
-// view frustum counted out. Tighter where the camera nears or enters the blended surfaces (a
-// view among the cloth would otherwise need the pool clamped to one storage buffer), and
-// cheaper: each vertex projected once, no allocation per triangle. A single view keeps
-// blendedFragmentBound, so its pool (in the memory ledger) is unchanged.
+// The blended draws' triangles through the scene's shading camera, times the samples, each
+// triangle clipped to w >= znear / 2 (the rasterizer keeps only w >= znear, so this holds every
+// fragment it makes) and a draw whose box lies outside the view frustum counted out; each
+// vertex projected once, no allocation per triangle. It once counted a triangle reaching behind
+// the eye as the whole screen: at a view beside the courtyard's cloth (1920x1080) that was
+// more than one storage buffer, so a single view planned 536 million nodes (4.2 GB on an H200)
+// for 124,859 fragments; clipped, the same view's bound is 258,606 nodes. Single views and many
+// views (RenderSettings::manyViews, where the pool is sized from need: blended_ids_pass.cpp)
+// take this bound alike.
 uint64_t viewFragmentBound(const SceneGpu& scene, const std::vector<TableDraw>& blended,
                            uint32_t width, uint32_t height, uint32_t samples);
 

@@ -162,8 +162,8 @@ class VisbufferRenderer final : public Renderer {
     // The blended fragments the current view can make (fragment_bound.h; many views: the
     // bound clipped to the near plane, computed again for every view).
     uint64_t fragmentBound() const {
-        return (vis_.manyViews ? vis::viewFragmentBound : vis::blendedFragmentBound)(
-            scene_, table_.blended, vis_.width, vis_.height, vis_.sampling.samples);
+        return vis::viewFragmentBound(scene_, table_.blended, vis_.width, vis_.height,
+                                      vis_.sampling.samples);
     }
     void checkDevice() const;
     void addBlendedListStats(RendererStats& s) const;
