@@ -87,7 +87,8 @@ size_t differingPixels(const ImageRGBA& a, const ImageRGBA& b, size_t& first) {
 }
 
 // The courtyard-small (blended cloth, masked panels, emissive), 256 lights at 96x64 (24 tiles
-// of 16 pixels, tens of lights in a tile's lists); on lavapipe about a minute and a half in all.
+// of 16 pixels, tens of lights in a tile's lists); on lavapipe 407 s in all with ViewUpdate
+// run beside it on 2 shared cores (the ctest TIMEOUT is 600 s).
 TEST(Determinism, EveryConfigurationRendersTheSameBytesTwice) {
     // A knob renamed or gone would drop its configurations without a word: each must still be
     // read by some renderer.
