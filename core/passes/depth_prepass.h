@@ -51,7 +51,6 @@ class DepthPrepass {
     // A new view's lists (recorded from the next recording on); false, and nothing changed,
     // when a non-empty list has no pipeline (it was empty at prepare, without everyPipeline).
     bool setDraws(std::vector<const DrawItem*> opaque, std::vector<const DrawItem*> masked);
-    bool hasMaskedPipeline() const { return masked_ != VK_NULL_HANDLE; }
 
   private:
     void record(PassContext& pc);

@@ -103,7 +103,7 @@ class GpuBinning {
     ResourceHandle counts_, offsets_, rows_, big_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    std::vector<VkPipeline> pipelines_; // one per step (kSteps in gpu_binning.cpp)
+    std::vector<VkPipeline> pipelines_; // one per step (kSteps in light_binning.cpp)
 };
 
 } // namespace tp::la

@@ -25,10 +25,6 @@ Sampling readSampling(const RenderSettings& s) {
     return {s.msaa, msaaShadingKnob().in(s)};
 }
 
-bool shadesPerSample(const RenderSettings& s) {
-    return readSampling(s).perSample();
-}
-
 bool shadesPerPixelUnderMsaa(const RenderSettings& s) {
     return readSampling(s).perPixelUnderMsaa();
 }

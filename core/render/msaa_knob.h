@@ -27,7 +27,6 @@ struct Sampling {
 };
 // For a renderer that declares msaaShadingKnob().
 Sampling readSampling(const RenderSettings& s);
-bool shadesPerSample(const RenderSettings& s);
 bool shadesPerPixelUnderMsaa(const RenderSettings& s);
 
 // The bound of shading a pixel once at its centre instead of at each 4x sample, where the

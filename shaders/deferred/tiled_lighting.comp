@@ -129,7 +129,7 @@ shared uint sMaskDropped; // binned: survivors past the tile's mask words (none 
 shared uint sEdges;
 shared uint sLights[TP_DEF_TILE_LIGHT_CAPACITY];
 // The culling's survivors of this batch as bits over its candidates (a batch holds at most
-// the shared capacity: deferred/tiled_lighting.cpp), made into sLights by compactList.
+// the shared capacity: core/passes/tiled_lighting.cpp), made into sLights by compactList.
 shared uint sBits[TP_DEF_TILE_LIGHT_CAPACITY / 32u];
 // Clustered (kSlices > 0): bit i of slice s's row is set when sLights[i] can reach the
 // slice (include/light_assign.glsl: laSliceOf over the tile's opaque depth range, no front
@@ -287,7 +287,7 @@ void cull(uvec2 tile, bool hasGeometry) {
 // every slice its padded depth interval reaches (laLightSlices: conservative). Each
 // invocation owns whole 32-light words and writes each word of every row once: no clear,
 // no atomics. After memoryBarrierBuffer + barrier (the list is complete).
-uint gWordBits[64]; // kSlices <= 64 (core/lightassign/assign_knob.cpp)
+uint gWordBits[64]; // kSlices <= 64 (core/lightassign/knobs.cpp)
 void writeTransparentSlices(uint tileIndex) {
     const uint tileCount = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
     const uint offset = tOffsets[tileIndex];

@@ -39,7 +39,7 @@ layout(local_size_x = 8, local_size_y = 8) in; // 8 x 8 tiles
 // The bits of the current 32-slot word for every slice, written out once per word: a
 // survivor reaches several slices, and one store per slice and word is far cheaper on
 // lavapipe than a read-modify-write of the buffer per slice and light.
-uint gWordBits[64]; // kSlices <= 64 (core/lightassign/assign_knob.cpp)
+uint gWordBits[64]; // kSlices <= 64 (core/lightassign/knobs.cpp)
 
 // Sets list slot `pos`'s bit in every slice that takes the light (sliceTakes).
 void markSlices(vec4 sphere, uint pos, LaSlicing slicing, bool inOpaque, bool openEnd) {

@@ -70,7 +70,7 @@ Candidate candidateAt(CullTile c, uint k) {
 // Slice sl's word w0 + j of the current window is sWords[sl * 3 + j], where w0 is the word
 // of the first unstored position: a step of at most 64 survivors reaches words w0 .. w0 + 2
 // (the device's subgroup size is at most 64: light_culling.cpp).
-shared uint sWords[64 * 3]; // kSlices <= 64 (core/lightassign/assign_knob.cpp)
+shared uint sWords[64 * 3]; // kSlices <= 64 (core/lightassign/knobs.cpp)
 
 // Loads the window at a batch's start: a word left partial by the previous batch is
 // continued, not restarted. Each lane keeps the slices sl = lane (mod lanes).

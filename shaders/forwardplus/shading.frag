@@ -64,7 +64,7 @@ LightGpu fpLight(uint index, uint directionalCount) {
 
 #ifdef TP_FP_LIGHT_LOOP_SUBGROUP
 // --light-loop subgroup: a variant of its own, since a module that declares these
-// capabilities cannot be used on a device without them (core/lightassign/loop_knob.h).
+// capabilities cannot be used on a device without them (core/lightassign/knobs.h).
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require

@@ -1,6 +1,6 @@
-// Light binning (core/lightassign/light_bins.h on the CPU, gpu_binning.h on the GPU):
-// bindings, constants and the conservative tile-rectangle test, compiled as C++ and as GLSL
-// so both sides run the same float operations in the same order. Every operation of the
+// Light binning (core/lightassign/light_bins.h on the CPU, core/passes/light_binning.h on the
+// GPU): bindings, constants and the conservative tile-rectangle test, compiled as C++ and as
+// GLSL so both sides run the same float operations in the same order. Every operation of the
 // test is an add, a multiply, a compare or a max (Vulkan requires those correctly rounded
 // for 32-bit floats), none is contracted into an FMA (`precise` in GLSL, -ffp-contract=off
 // for tile_bound.cpp), and the slab planes are computed once on the CPU and uploaded: so

@@ -428,7 +428,9 @@ double counter(const RunResult& run, const std::string& name) {
 // Binned culling (--light-cull binned, the default) tests each tile's candidates only; it
 // must find exactly what testing every light finds: the same number of lights in every
 // tile's opaque and transparent lists (summed and fullest), the same image up to the order
-// of the fp32 sum (the shared list fills in atomic order either way), with fewer tests.
+// of the fp32 sum (the lists hold the same lights in ascending order, but the batches of the
+// tiled pass split candidates, not lights: a tile over one batch adds its lights in other
+// groups), with fewer tests.
 TEST(Deferred, BinnedCullingFindsWhatEveryLightFinds) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);

@@ -127,10 +127,10 @@ const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name) {
 
 // Two images whose pixels sum the same fp32 terms in different orders (e.g. deferred
 // tiled against volumes: the same code on the same G-buffer, culled-list order in a
-// register against one blend per light; or deferred's shared list, filled in atomic order,
-// on two runs of a GPU), with an RGBA32F target. Every term is >= 0, so two summation orders of N
-// terms differ by at most 2 (N - 1) u * sum, u = 2^-24 (Higham, recursive summation), with N =
-// samples * (lights + 1) per pixel. Checked per channel against that bound (+1e-30 for zeros).
+// register against one blend per light), with an RGBA32F target. Every term is >= 0, so two
+// summation orders of N terms differ by at most 2 (N - 1) u * sum, u = 2^-24 (Higham,
+// recursive summation), with N = samples * (lights + 1) per pixel. Checked per channel against
+// that bound (+1e-30 for zeros).
 void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uint32_t lights,
                                      uint32_t samples, const std::string& what) {
     const double u = std::ldexp(1.0, -24);
