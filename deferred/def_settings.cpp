@@ -26,7 +26,7 @@ KnobSchema knobs() {
             la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),   gbufferKnob().knob(),
             msaaShadingKnob().knob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
-            lightingKnob().knob(),     hdrKnob().knob()};
+            lightingKnob().knob(),     hdrKnob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -39,7 +39,7 @@ Settings readSettings(const RenderSettings& s) {
     d.assign = la::readAssignSettings(s);
     d.gbuffer = gbufferKnob().in(s);
     d.lighting = lightingKnob().in(s);
-    d.hdr = hdrKnob().in(s);
+    d.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32
     return d;
 }
 

@@ -237,6 +237,8 @@ RendererStats DeferredRenderer::stats() const {
     const uint32_t samples = t_.layout.samples;
     s.counters.push_back({"gbuffer_bytes_per_sample", double(t_.layout.bytesPerSample())});
     s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});
+    s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved
+                          def_.hdr == def::Hdr::Fp16 ? 16.0 : 32.0});
     const TileStatTotals totals = sumTileStats(tileStats_);
     double edges = totals.edges;
     double pixels = double(def_.width) * def_.height;

@@ -38,8 +38,7 @@ void GBufferPass::prepare() {
     layout_ = scene_.createPipelineLayout();
     GraphicsPipelineDesc d;
     const bool perSample = t_->msaa() && t_->sampleRateGBuffer;
-    d.fragmentShader = std::string("deferred_gbuffer") + (perSample ? "_sample" : "") +
-                       (t_->layout.emissive ? "_emissive_frag" : "_frag");
+    const std::string emissive = t_->layout.emissive ? "_emissive_frag" : "_frag";
     d.sampleShading = perSample;
     for (const GBufferTarget& c : t_->layout.colors)
         d.colorFormats.push_back(c.format);
@@ -48,8 +47,15 @@ void GBufferPass::prepare() {
     d.layout = layout_;
     for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask}) {
         if (!scene_.hasDraws(DrawFilter(mode))) continue;
+        // Masked draws once per pixel under MSAA alpha-test every sample (the coverage variant),
+        // so they cover what the per-sample masked prepass of the other pipelines covers.
+        const bool coverage = mode == AlphaMode::Mask && t_->msaa() && !perSample;
+        const char* rate = perSample ? "_sample" : "";
+        if (coverage) rate = "_coverage";
+        d.fragmentShader = std::string("deferred_gbuffer") + rate + emissive;
         d.specConstants = scene_.specConstants(mode);
         d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+        if (coverage) d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
         (mode == AlphaMode::Opaque ? opaque_ : masked_) = createGraphicsPipeline(ctx_, d);
     }
 }

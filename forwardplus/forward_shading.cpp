@@ -119,6 +119,8 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
     d.specConstants.push_back({TP_FP_SPEC_LIGHTS_UBO, lightsUbo_ ? 1u : 0u});
+    d.specConstants.push_back(
+        {TP_FP_SPEC_HDR16, t_.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 1u : 0u});
     if (config_.clustered) {
         d.specConstants.push_back({TP_FP_SPEC_SLICES, config_.slices});
         d.specConstants.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendPass ? 1u : 0u});

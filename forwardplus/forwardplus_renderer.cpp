@@ -37,14 +37,15 @@
 namespace tp {
 namespace {
 
-constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT; // storage-precision choice (docs)
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 class ForwardPlusRenderer final : public Renderer {
   public:
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          fp_(fp::readSettings(info.settings)), manyViews_(info.settings.manyViews) {
+          fp_(fp::readSettings(info.settings)), manyViews_(info.settings.manyViews),
+          hdrFormat_(fp_.hdr == HdrStorage::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
+                                                 : VK_FORMAT_R32G32B32A32_SFLOAT) {
         gpuBinning_ = binned() && la::binsOnGpu(ctx_, fp_.assign.bin);
         // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
         // transform in every tile it is tested in); on a GPU the transform is cheap and the
@@ -87,14 +88,15 @@ class ForwardPlusRenderer final : public Renderer {
     void plan(FrameGraph& graph) override {
         const bool msaa = samples() > 1;
         const auto sampleBits = VkSampleCountFlagBits(samples());
-        hdr_ = graph.createImage("hdr", {kHdrFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
-                                         "linear radiance, resolved (RGBA16F)"});
+        const std::string format = fp_.hdr == HdrStorage::Fp16 ? "RGBA16F" : "RGBA32F";
+        hdr_ = graph.createImage("hdr", {hdrFormat_, 0, 0, VK_SAMPLE_COUNT_1_BIT,
+                                         "linear radiance, resolved (" + format + ")"});
         depth_ =
             graph.createImage("depth", {kDepthFormat, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                         msaa ? "depth (resolved: sample 0)" : "prepass depth"});
         if (msaa) {
             hdrMsaa_ = graph.createImage(
-                "hdr_msaa", {kHdrFormat, 0, 0, sampleBits, "per-sample radiance (RGBA16F)"});
+                "hdr_msaa", {hdrFormat_, 0, 0, sampleBits, "per-sample radiance (" + format + ")"});
             depthMsaa_ = graph.createImage(
                 "depth_msaa", {kDepthFormat, 0, 0, sampleBits, "per-sample prepass depth"});
         }
@@ -140,9 +142,8 @@ class ForwardPlusRenderer final : public Renderer {
                          fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),
                                            fp_.assign.slices, twoLists_, clustered(), blendPass_,
                                            subgroupLoop_});
-        shading_->plan(graph,
-                       {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_, kHdrFormat,
-                        &*shadows_});
+        shading_->plan(graph, {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_,
+                               hdrFormat_, &*shadows_});
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
         // Read back after the frame for the statistics, debug images and tests.
@@ -224,7 +225,8 @@ class ForwardPlusRenderer final : public Renderer {
         add("light_lists", double(numLists_));
         add("directional_lights_unculled", double(classes_.directional.size()));
         add("local_lights", double(classes_.local.size()));
-        add("hdr_storage_bits_per_channel", 16.0);
+        add("hdr_storage_bits_per_channel",
+            fp_.hdr == HdrStorage::Fp16 ? 16.0 : 32.0); // --hdr, resolved
         add("light_list_slots", double(lists_.slots));
         add("culling_dispatches",
             double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
@@ -326,10 +328,12 @@ class ForwardPlusRenderer final : public Renderer {
         if (layout() != TP_FP_LAYOUT_LINKED)
             s.leftOut.push_back(
                 {"node counter and its reset pass", "only the 'linked' layout allocates nodes"});
-        s.leftOut.push_back(
-            {"fp32 colour storage",
-             "hdr and hdr_msaa are RGBA16F (storage-precision choice: half the bytes of "
-             "RGBA32F; each rounding below one ulp, <= 2^-10 relative; values saturate at 65504)"});
+        if (fp_.hdr == HdrStorage::Fp16)
+            s.leftOut.push_back(
+                {"fp32 colour storage",
+                 "--hdr " + std::string(hdrText(fp_.hdr)) +
+                     ": hdr and hdr_msaa are RGBA16F (half the bytes of RGBA32F; each rounding "
+                     "below one ulp, <= 2^-10 relative; values saturate at 65504)"});
     }
 
     // Whether the lists' layout follows the view: the compact and linked layouts' bound, binned
@@ -433,6 +437,7 @@ class ForwardPlusRenderer final : public Renderer {
     bool subgroupLoop_ = false;   // clustered, --light-loop subgroup, and the device runs it
     std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
     bool manyViews_ = false;         // RenderSettings::manyViews: the lists get headroom
+    VkFormat hdrFormat_;             // hdr and hdr_msaa: --hdr, resolved (fp_.hdr)
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
     fp::ViewBins bins_;              // the current view's bound, offsets, candidates, mask rows

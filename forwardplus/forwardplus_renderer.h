@@ -8,7 +8,8 @@
 //   forward_opaque     opaque + masked draws, depth test EQUAL, no discard, tile list loop
 //   forward_transparent blended draws back to front with the transparent list (only when
 //                      the scene has blended materials)
-// Publishes "hdr" (RGBA16F, resolved) and "depth". See docs/forwardplus.md.
+// Publishes "hdr" (resolved; RGBA16F, or RGBA32F under --hdr fp32) and "depth". See
+// docs/forwardplus.md.
 // The renderer orchestrates; light_culling.h records the culling pass, light_lists.h sizes
 // the lists, core/lightassign/light_bins.h bins the lights (shared with tiled deferred).
 #include <memory>

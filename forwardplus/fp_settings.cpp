@@ -55,7 +55,7 @@ KnobSchema knobs() {
     return {la::tileSizeKnob().knob(),    la::lightCullKnob().knob(), la::lightBinKnob().knob(),
             la::lightAssignKnob().knob(), la::slicesKnob().knob(),    la::lightLoopKnob().knob(),
             msaaShadingKnob().knob(),     listsKnob().knob(),         capacityKnob().knob(),
-            spheresKnob().knob(),         cullByKnob().knob()};
+            spheresKnob().knob(),         cullByKnob().knob(),        hdrKnob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -69,6 +69,8 @@ Settings readSettings(const RenderSettings& s) {
     f.tileCapacity = capacityKnob().in(s);
     f.spheres = spheresKnob().in(s);
     f.cullBy = cullByKnob().in(s);
+    // --hdr auto: RGBA16F, Forward+'s storage before the knob existed (half the bytes).
+    f.hdr = readHdr(s, HdrStorage::Fp16);
     return f;
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/lightassign/knobs.h"
+#include "core/render/hdr_knob.h"
 #include "core/render/knobs.h"
 #include "core/render/msaa_knob.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -28,6 +29,7 @@ struct Settings {
     uint32_t tileCapacity = 256;
     Spheres spheres = Spheres::Auto;
     CullBy cullBy = CullBy::Auto;
+    HdrStorage hdr = HdrStorage::Fp16; // --hdr, resolved: auto is Forward+'s RGBA16F
 };
 
 KnobSchema knobs();

@@ -9,9 +9,11 @@
 namespace tp {
 namespace {
 
-// Colour is stored in RGBA16F: one rounding per store (the sample, then the resolve).
+// Colour stored in RGBA16F (--hdr fp16, and auto): one rounding per store (the sample, then
+// the resolve). --hdr fp32: RGBA32F holds the fp32 sum as it is, no storage term.
 void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
-    addFp16StorageTerm(b, in.settings.msaa > 1 ? 2 : 1, "sample, resolve");
+    if (fp::readSettings(in.settings).hdr == HdrStorage::Fp16)
+        addFp16StorageTerm(b, in.settings.msaa > 1 ? 2 : 1, "sample, resolve");
     addPixelRateErrorTerm(b, in);
 }
 

@@ -34,7 +34,7 @@ KnobSchema knobs() {
             la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),
             msaaShadingKnob().knob(), // pixel: once per pixel and triangle; sample: every sample
-            hdrKnob().knob(), blendedKnob().knob(), blendedCapacityKnob().knob()};
+            hdrKnob(), blendedKnob().knob(), blendedCapacityKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -45,7 +45,7 @@ Settings readSettings(const RenderSettings& s) {
     v.debug = s.debug;
     v.manyViews = s.manyViews;
     v.assign = la::readAssignSettings(s);
-    v.hdr = hdrKnob().in(s);
+    v.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32
     v.blended = blendedKnob().in(s);
     v.blendedCapacityPercent = blendedCapacityKnob().in(s);
     if (auto seen = s.capacities.find(kSeenFragments); seen != s.capacities.end())

@@ -266,6 +266,8 @@ RendererStats VisbufferRenderer::stats() const {
     s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // fp32 id, beside depth
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
+    s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved
+                          vis_.hdr == HdrStorage::Fp16 ? 16.0 : 32.0});
     const TileStatTotals t = sumTileStats(tileStats_);
     const double pixels = double(vis_.width) * vis_.height;
     s.counters.push_back({"lights_per_tile_mean", t.meanLights()});

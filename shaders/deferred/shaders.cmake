@@ -3,6 +3,11 @@
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_frag DEFINES TP_INPUTS_AT_PIXEL=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_emissive_frag
   DEFINES TP_EMISSIVE=1 TP_INPUTS_AT_PIXEL=1)
+# Masked draws under MSAA at pixel rate: the alpha test per sample, the coverage written.
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_coverage_frag
+  DEFINES TP_INPUTS_AT_PIXEL=1 TP_SAMPLE_COVERAGE=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_coverage_emissive_frag
+  DEFINES TP_EMISSIVE=1 TP_INPUTS_AT_PIXEL=1 TP_SAMPLE_COVERAGE=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/gbuffer.frag deferred_gbuffer_sample_emissive_frag DEFINES TP_EMISSIVE=1)
 # The blended forward pass: per sample (1x, --msaa-shading sample) or, under MSAA at

@@ -29,6 +29,7 @@ namespace tp::gpu {
 #define TP_FP_SPEC_SPHERES 19 // culling: 1 = read each light's sphere from light_spheres, 0 = compute it per candidate
 #define TP_FP_SPEC_CULL_LANES 20 // light_culling_subgroup: workgroup size = the device's subgroup size (<= 64)
 #define TP_FP_SPEC_LIGHTS_UBO 21 // shading: 1 = read the lights from TP_FP_BINDING_LIGHTS_UBO, 0 = from the scene's storage buffer
+#define TP_FP_SPEC_HDR16 22 // shading: 1 = hdr is RGBA16F (--hdr fp16, auto): sums saturate at 65,504; 0 = RGBA32F
 // Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
 #define TP_FP_UBO_LIGHTS 1024
 

@@ -128,9 +128,11 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface, uint directionalCount)
 
 layout(location = 0) out vec4 outColor;
 
-// Largest finite half: the hdr target is RGBA16F, so larger values saturate instead of
-// becoming +Inf.
+// Largest finite half: when the hdr target is RGBA16F (--hdr fp16, and auto), larger values
+// saturate instead of becoming +Inf; an RGBA32F target (--hdr fp32) takes the fp32 sum as it is.
+layout(constant_id = TP_FP_SPEC_HDR16) const bool kHdr16 = true;
 const float kHalfMax = 65504.0;
+vec3 storable(vec3 c) { return kHdr16 ? min(c, vec3(kHalfMax)) : c; }
 
 void main() {
     MaterialSample ms = evalFragmentMaterial();
@@ -142,7 +144,7 @@ void main() {
     for (uint i = 0u; i < directionalCount; ++i)
         sum += evalLightShadowed(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface);
     sum += clusterLights(tileIndex, ms.surface, directionalCount);
-    outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
+    outColor = vec4(storable(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
     return;
 #endif
     uint list = (kTwoLists && kAlphaMode == TP_ALPHA_BLEND) ? 1u : 0u;
@@ -181,5 +183,5 @@ void main() {
         sum += evalLightShadowed(light, ms.surface);
         ++i;
     } while (i < total);
-    outColor = vec4(min(sum, vec3(kHalfMax)), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
+    outColor = vec4(storable(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
 }

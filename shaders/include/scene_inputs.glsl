@@ -58,4 +58,13 @@ MaterialSample evalFragmentMaterial() { TP_EVAL_MATERIAL_READ(TP_INPUT); }
 MaterialSample evalSampleMaterial() { TP_EVAL_MATERIAL_READ(TP_AT_SAMPLE); }
 #undef TP_AT_SAMPLE
 #endif
+
+#ifdef TP_SAMPLE_COVERAGE
+// The material at sample s of this pixel, read as evalSampleMaterial() reads it in sample s's
+// own invocation: for a pass that runs once per pixel (TP_INPUTS_AT_PIXEL) but alpha-tests every
+// sample (the deferred G-buffer's masked draws under MSAA, gbuffer.frag).
+#define TP_AT_SAMPLE_S(x) interpolateAtSample(x, s)
+MaterialSample evalMaterialAtSample(int s) { TP_EVAL_MATERIAL_READ(TP_AT_SAMPLE_S); }
+#undef TP_AT_SAMPLE_S
+#endif
 #endif // TP_INPUTS_POSITION_ONLY

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/ledger.h"
@@ -12,8 +14,10 @@
 #include "core/gpu/vk_check.h"
 #include "core/image/metrics.h"
 #include "core/passes/blended_bounds.h"
+#include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
+#include "gltf_test_scenes.h"
 #include "gpu_test_util.h"
 #include "include/light_assign.h"
 
@@ -327,8 +331,8 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
 // (0.27 relative) on lavapipe; now 0 (bit-identical) and 0.10 of it. (b) The reconstruction
 // error of the centre-shaded reference on those pixels (edge pixels set to 0 in both), as a
 // mean relative error: the courtyard's 1e-4.
-// Masked materials made opaque: deferred's G-buffer pass decides a masked pixel's coverage at
-// its centre (a discard without sample shading), a question of coverage, not of this pass.
+// Masked materials made opaque: their coverage is a question of the G-buffer pass, not of this
+// one (PixelRateGBufferKeepsPerSampleAlphaCoverage).
 TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -361,6 +365,57 @@ TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
         checkReconstructionError(*ctx, computeError(a, b).meanRelative, 1e-4,
                                  what + ", centre-shaded (mean)");
     }
+    expectNoValidationMessages(*ctx);
+}
+
+// 4x, --msaa-shading pixel, on a scene whose only material is alpha-masked (round holes in a
+// sphere and its floor, writeMaskedScene): which samples a masked surface covers is the alpha
+// at each sample, in the centre reference (it alpha-tests every sample and shades at the
+// centre) and in the other pipelines (their per-sample masked prepass), so deferred's
+// per-pixel G-buffer must cover the same samples: it alpha-tests each sample's own location
+// and writes gl_SampleMask (gbuffer.frag, TP_SAMPLE_COVERAGE). (a) The published depth is
+// sample 0's, from the same triangles and vertex shader: equal to the centre reference's bit
+// for bit on every pixel. (b) The pixels where the two cover different samples differ by a
+// whole sample's share, beyond deferred's registered model (pixel rate: its shading-rate term
+// included): none may. Before, the G-buffer took the centre's alpha for the whole pixel:
+// (a) failed on the pixels along the holes' contours where sample 0 and the centre disagree.
+TEST(Deferred, PixelRateGBufferKeepsPerSampleAlphaCoverage) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("triptych_defcov_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const fs::path path = writeMaskedScene(dir / "masked");
+    Result<Scene> loaded = loadGltf(path.string(), {});
+    fs::remove_all(dir);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    Scene scene = std::move(*loaded);
+    LightGenOptions g;
+    g.count = 32;
+    g.seed = 5;
+    scene.lights = generateLights(scene.bounds, g);
+
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s = small(4, "wide");
+    s.set("msaa-shading", "pixel");
+    s.set("reference-msaa", "center");
+    const RunResult deferred = runOrFail(*ctx, gpuScene, "deferred", s);
+    const RunResult centre = runOrFail(*ctx, gpuScene, "reference", s);
+    ASSERT_EQ(deferred.depth.r.size(), centre.depth.r.size());
+    size_t depthDiffers = 0, covered = 0;
+    for (size_t i = 0; i < centre.depth.r.size(); ++i) {
+        depthDiffers += deferred.depth.r[i] != centre.depth.r[i];
+        covered += centre.depth.r[i] != 0.0f; // reverse-Z: 0 is the far plane, nothing drawn
+    }
+    const ErrorReport e = computeError(deferred.hdr, centre.hdr);
+    std::printf("[ 4x pixel-rate ] alpha-tested surfaces: %zu of %zu pixels' sample 0 covered in "
+                "the centre reference, %zu with another depth in deferred; hdr rmse %.3g "
+                "against the centre reference\n",
+                covered, centre.depth.r.size(), depthDiffers, e.rmse);
+    EXPECT_GT(covered, centre.depth.r.size() / 16) << "the masked surfaces are in view";
+    EXPECT_EQ(depthDiffers, 0u) << "sample 0's coverage differs from the centre reference's";
+    EXPECT_EQ(e.nanInfCount, 0u);
     expectNoValidationMessages(*ctx);
 }
 
