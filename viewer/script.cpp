@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -66,15 +67,24 @@ float number(const std::string& text, bool& ok) {
 
 } // namespace
 
+std::string scriptErrorLine(const std::string& path, int line, const std::string& message) {
+    const std::string where = line > 0 ? path + ":" + std::to_string(line) : path;
+    return printableLine(where + ": " + message);
+}
+
 Result<std::vector<ScriptLine>> readScript(const std::string& path) {
+    auto refuse = [&](int line, const std::string& message) {
+        return Error{scriptErrorLine(path, line, message)};
+    };
+    // A directory opens as a stream and reads as no lines: it would run as an empty script.
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return refuse(0, "is a directory, not a script");
     std::ifstream in(path);
-    // Every message quotes the file (its path, its words): control characters and bytes that
-    // are not UTF-8 would reach the terminal (found by tests/fuzz/fuzz_script.cpp).
-    auto refuse = [](const std::string& message) { return Error{printableLine(message)}; };
-    if (!in) return refuse("--script " + path + ": cannot open the file");
+    if (!in) return refuse(0, "cannot open the file");
     std::vector<ScriptLine> lines;
     std::string text;
-    for (int n = 1; std::getline(in, text); ++n) {
+    int n = 1;
+    for (; std::getline(in, text); ++n) {
         if (size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
         std::istringstream words(text);
         ScriptLine line{n, {}};
@@ -82,14 +92,13 @@ Result<std::vector<ScriptLine>> readScript(const std::string& path) {
             line.words.push_back(w);
         if (line.words.empty()) continue;
         auto it = commands().find(line.words[0]);
-        const std::string where = path + ":" + std::to_string(n) + ": ";
-        if (it == commands().end())
-            return refuse(where + "unknown command '" + line.words[0] + "'");
+        if (it == commands().end()) return refuse(n, "unknown command '" + line.words[0] + "'");
         size_t args = line.words.size() - 1;
         if (args < it->second.minArgs || args > it->second.maxArgs)
-            return refuse(where + "expected '" + it->second.usage + "'");
+            return refuse(n, "expected '" + std::string(it->second.usage) + "'");
         lines.push_back(std::move(line));
     }
+    if (in.bad()) return refuse(n, "cannot read the file past here");
     return lines;
 }
 
@@ -99,7 +108,7 @@ ScriptRunner::ScriptRunner(std::vector<ScriptLine> lines, std::string path, std:
       waitLimit_(waitLimitSeconds), screenshots_(screenshots) {}
 
 void ScriptRunner::fail(const ScriptLine& line, const std::string& message) const {
-    throw ScriptError(printableLine(path_ + ":" + std::to_string(line.number) + ": " + message));
+    throw ScriptError(scriptErrorLine(path_, line.number, message));
 }
 
 void ScriptRunner::beforeFrame(ViewerApp& app, ScriptMouse& mouse) {

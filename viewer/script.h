@@ -27,6 +27,11 @@ struct ScriptLine {
     std::vector<std::string> words;
 };
 
+// Every script error, read or run, in one form: "PATH:LINE: message" ("PATH: message" for
+// line 0, the file as a whole), made printable: messages quote the file's words, whose
+// control characters and bytes that are not UTF-8 would reach the terminal.
+std::string scriptErrorLine(const std::string& path, int line, const std::string& message);
+
 // Reads and checks every line (command names and argument counts) before anything runs.
 Result<std::vector<ScriptLine>> readScript(const std::string& path);
 

@@ -18,6 +18,11 @@ gpu::LightGpu toGpu(const Light& light) {
     g.direction = len > 0.0f ? light.direction / len : glm::vec3(0, -1, 0);
     g.type = uint32_t(light.type);
     g.color = light.color * light.intensity;
+    // The model clamps the distance at TP_MIN_LIGHT_DISTANCE: a point or spot whose range is
+    // below it would light only that clamp's flat core, its own position included (a range of
+    // 1e-40 lit the point at distance 0 with 1e4 x its intensity). Such a light is inert.
+    if (light.type != LightType::Directional && !(light.range >= TP_MIN_LIGHT_DISTANCE))
+        g.color = glm::vec3(0.0f);
     float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
     g.spotScale = 1.0f / std::max(1e-4f, cosInner - cosOuter);
     g.spotOffset = -cosOuter * g.spotScale;

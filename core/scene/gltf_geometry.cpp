@@ -2,6 +2,7 @@
 // world space.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "core/scene/gltf_internal.h"
@@ -236,6 +237,38 @@ size_t storeColors(const std::vector<float>& data, size_t comps, size_t n, Local
     return count;
 }
 
+std::string shortNumber(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(v));
+    return text;
+}
+
+// Finite uvs past kMaxUvMagnitude (the repair of non-finite ones has run): clamped and
+// recorded, or, under --strict, an error naming the accessor and the value.
+Status clampHugeUvs(int accessor, bool strict, LocalPrimitive& out) {
+    size_t count = 0;
+    float largest = 0.0f;
+    for (const glm::vec2& uv : out.uvs)
+        if (float m = std::max(std::abs(uv.x), std::abs(uv.y)); m > kMaxUvMagnitude) {
+            ++count;
+            largest = std::max(largest, m);
+        }
+    if (count == 0) return {};
+    const std::string limit = shortNumber(kMaxUvMagnitude);
+    if (strict)
+        return Error{"TEXCOORD_0 accessor " + std::to_string(accessor) + " holds a uv of " +
+                     shortNumber(largest) + ", past the " + limit +
+                     " at which texture addressing overflows on the GPU"};
+    for (glm::vec2& uv : out.uvs)
+        uv = glm::clamp(uv, -kMaxUvMagnitude, kMaxUvMagnitude);
+    out.repairs.push_back(SceneRepair{"TEXCOORD_0", accessor, count, out.uvs.size(),
+                                      "finite but past " + limit + " (largest " +
+                                          shortNumber(largest) +
+                                          "), where texture addressing overflows on the GPU",
+                                      "clamped to +-" + limit});
+    return {};
+}
+
 // POSITION, then the optional attributes; values that are not finite are refused under
 // --strict and otherwise repaired (each repair recorded in out.repairs).
 Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options,
@@ -275,6 +308,7 @@ Status readVertexAttributes(AttributeReader& r, const PrimitiveOptions& options,
     if (s)
         s = readOptional(kUv, "NaN or infinite", "set to (0, 0)",
                          [&] { return storeUvs(data, n, out); });
+    if (s) s = clampHugeUvs(r.accessor(kUv.name), options.strict, out);
     if (s)
         s = readOptional(kColor, "NaN or infinite", "set to white, opaque",
                          [&] { return storeColors(data, r.comps, n, out); });
@@ -300,14 +334,21 @@ Status readIndexList(AttributeReader& r, bool compressed, size_t n,
     return {};
 }
 
-void applyUvTransform(const tinygltf::Material& material, std::vector<glm::vec2>& uvs) {
+// Returns how many uvs the transform took past kMaxUvMagnitude (clamped, as the accessor's are).
+size_t applyUvTransform(const tinygltf::Material& material, std::vector<glm::vec2>& uvs) {
     const UvTransform t = materialUvTransform(material);
-    if (!t.present) return;
+    if (!t.present) return 0;
+    size_t clamped = 0;
     for (glm::vec2& uv : uvs) {
         uv = t.matrix * glm::vec3(uv, 1.0f);
-        // Huge (finite) uvs times a scale can overflow: no texel is meant there.
-        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
+        // Huge (finite) uvs times a scale can overflow: an infinity is clamped below as a huge
+        // uv is; a NaN (infinities cancelling in the rotation) means no texel, (0, 0).
+        if (std::isnan(uv.x) || std::isnan(uv.y)) uv = glm::vec2(0.0f);
+        const glm::vec2 kept = glm::clamp(uv, -kMaxUvMagnitude, kMaxUvMagnitude);
+        clamped += kept != uv;
+        uv = kept;
     }
+    return clamped;
 }
 
 // Repairs the bad normals from the faces, or makes all of them where the file has none.
@@ -404,7 +445,10 @@ Status readPrimitive(const tinygltf::Model& model, int meshIndex, int primIndex,
         p.material >= 0 && size_t(p.material) < model.materials.size()
             ? &model.materials[size_t(p.material)]
             : nullptr;
-    if (material) applyUvTransform(*material, out.uvs);
+    if (size_t c = material ? applyUvTransform(*material, out.uvs) : 0; c > 0)
+        warn(label + ": material " + std::to_string(p.material) +
+             "'s KHR_texture_transform takes " + std::to_string(c) + " uvs past " +
+             shortNumber(kMaxUvMagnitude) + "; clamped there");
     completeNormals(options.smoothNormals, bad, out);
     completeTangents(material && material->normalTexture.index >= 0, bad.tangent, out);
     return {};

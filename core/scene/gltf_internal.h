@@ -38,6 +38,13 @@ constexpr int kMaxTextureSide = 16384;
 // 2^28 pixels are 1 GiB as RGBA8 (Sponza's textures are ~2^26).
 constexpr int kMaxTexturePixelsLog2 = 28;
 constexpr uint64_t kMaxTexturePixels = 1ull << kMaxTexturePixelsLog2;
+// The largest uv magnitude kept; larger ones are clamped to it (a repair: --strict refuses).
+// The sampler scales a uv by the texture's side (up to kMaxTextureSide = 2^14), and the
+// difference of two neighbouring pixels' uvs by it for the mip level: past about 2e34 the
+// first overflows fp32 and the texel address is undefined. 2^112 keeps the second, at most
+// 2^113 x 2^14 = 2^127, below FLT_MAX too. Nothing visible is lost: past 2^24 an fp32 uv holds
+// no fraction, and a triangle spanning 2^112 repeats shows the coarsest mip either way.
+constexpr float kMaxUvMagnitude = 0x1p112f;
 
 using WarnFn = std::function<void(const std::string&)>;
 
@@ -172,20 +179,20 @@ struct LocalPrimitive {
     std::vector<glm::vec4> colors;
     std::vector<uint32_t> indices;
     int material = -1;                // as in the file, unchecked
-    std::vector<SceneRepair> repairs; // what readPrimitive replaced, one per attribute
+    std::vector<SceneRepair> repairs; // readPrimitive's replacements, per attribute and problem
 };
 
 struct PrimitiveOptions {
     bool smoothNormals = false; // missing normals: area-weighted smooth instead of flat
-    bool strict = false;        // non-finite attribute values are errors, not repairs
+    bool strict = false;        // non-finite attribute values and huge uvs are errors, not repairs
 };
 
 // Reads primitive `prim` of mesh `mesh` (indices already checked by the caller), converting
 // strips and fans and generating what is missing. Zero-length normals and tangents and,
-// unless options.strict (then an error), NaN/infinite normals, tangents, uvs and colours are
-// replaced and listed in out.repairs (the caller warns). Returns an error for invalid data; sets
-// `out.positions` empty (with a warning) for a primitive that is skipped (points, lines, no
-// POSITION).
+// unless options.strict (then an error), NaN/infinite normals, tangents, uvs and colours and
+// uvs beyond kMaxUvMagnitude are replaced and listed in out.repairs (the caller warns). Returns an
+// error for invalid data; sets `out.positions` empty (with a warning) for a primitive that is
+// skipped (points, lines, no POSITION).
 Status readPrimitive(const tinygltf::Model& model, int mesh, int prim,
                      const PrimitiveOptions& options, LocalPrimitive& out, const WarnFn& warn);
 

@@ -50,10 +50,13 @@ Status checkDeclaredSize(const tinygltf::Model& model, const std::vector<Instanc
     return {};
 }
 
-// One warning line per repaired accessor, however many primitives share it.
+// One warning line per repair of an accessor, however many primitives share it (a TEXCOORD_0
+// accessor may have two: non-finite values and huge ones).
 void noteRepair(SceneRepair r, Scene& scene, const WarnFn& warn) {
     for (const SceneRepair& seen : scene.repairs)
-        if (seen.attribute == r.attribute && seen.accessor == r.accessor) return;
+        if (seen.attribute == r.attribute && seen.accessor == r.accessor &&
+            seen.problem == r.problem)
+            return;
     warn("repaired " + r.attribute + " accessor " + std::to_string(r.accessor) + ": " +
          std::to_string(r.count) + " of " + std::to_string(r.total) + " values were " + r.problem +
          "; " + r.action + " (--strict refuses the file instead)");

@@ -16,8 +16,9 @@ struct GltfLoadOptions {
     // Missing NORMALs: the spec's flat normals (false: vertices are split per triangle) or
     // area-weighted smooth ones (true).
     bool smoothMissingNormals = false;
-    // Refuse, instead of repairing, NaN/infinite normals, tangents, uvs and colours
-    // (Scene::repairs lists what was repaired; zero-length normals and tangents always are).
+    // Refuse, instead of repairing, NaN/infinite normals, tangents, uvs and colours and uvs
+    // past 2^112, where texture addressing overflows on the GPU (Scene::repairs lists what was
+    // repaired; zero-length normals and tangents always are).
     bool strict = false;
     // Set to the index (into the file's "cameras") of the camera Scene::camera was taken
     // from, or -1 when the file has no usable one and the camera frames the bounds: reports

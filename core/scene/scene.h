@@ -111,7 +111,7 @@ struct SceneRepair {
 
 struct Scene {
     std::string source;                  // file path, or "builtin:courtyard" etc.
-    std::vector<SceneRepair> repairs;    // loader repairs, one per accessor
+    std::vector<SceneRepair> repairs;    // loader repairs, one per accessor and problem
     std::vector<std::string> extensions; // glTF extensions the loader decoded or applied
     std::vector<Mesh> meshes;
     std::vector<Material> materials; // never empty once loaded (a default material is added)

@@ -10,6 +10,10 @@ bin=$1
 make_scenes=$(realpath "$2")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# A cache of its own: triptych reads its calibration and reference cache from $XDG_CACHE_HOME,
+# else the user's ~/.cache (a calibration there changes what render prints), and the driver
+# keeps its shader cache there (Mesa's lavapipe): this test must neither read nor fill the user's.
+export XDG_CACHE_HOME="$work/cache"
 . "$(dirname "$0")/cli_lib.sh"
 out="$work/out"
 fast=(--res 16x16 --frames 1 --warmup 0)

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -769,6 +770,68 @@ TEST_F(GltfGenerated, NonFinitePositionsStayAnError) {
     gltf_["accessors"][0]["bufferView"] = addView(positions, sizeof positions);
     fs::path path = write();
     expectOneLineError(load(path), path, "POSITION accessor 0 holds a NaN or infinite value");
+}
+
+// Finite uvs past about 2e34 overflow the GPU's texture addressing (uv x texture side): the
+// loader clamps them to kMaxUvMagnitude with one warning naming the accessor, or, under
+// --strict, refuses the file naming the accessor and the value. A NaN in the same accessor
+// is its own repair.
+TEST_F(GltfGenerated, HugeFiniteUvsAreClampedLoudly) {
+    float uvs[6] = {std::nanf(""), 0, 3.2e38f, 1, -1e35f, 0x1p112f};
+    auto& attributes = gltf_["meshes"][0]["primitives"][0]["attributes"];
+    const int accessor = addAccessor({{"bufferView", addView(uvs, sizeof uvs)},
+                                      {"componentType", 5126},
+                                      {"count", 3},
+                                      {"type", "VEC2"}});
+    attributes["TEXCOORD_0"] = accessor;
+    fs::path path = write();
+    Loaded l = load(path);
+    ASSERT_TRUE(l.scene.ok()) << l.scene.error();
+    const Mesh& m = l.scene->meshes[0];
+    EXPECT_EQ(m.uvs[0], glm::vec2(0.0f));
+    EXPECT_EQ(m.uvs[1], glm::vec2(0x1p112f, 1.0f));
+    EXPECT_EQ(m.uvs[2], glm::vec2(-0x1p112f, 0x1p112f)); // the limit kept
+    ASSERT_EQ(l.scene->repairs.size(), 2u);
+    EXPECT_EQ(l.scene->repairs[1].attribute, "TEXCOORD_0");
+    EXPECT_EQ(l.scene->repairs[1].accessor, accessor);
+    EXPECT_EQ(l.scene->repairs[1].count, 2u);
+    const std::string named = "repaired TEXCOORD_0 accessor " + std::to_string(accessor) + ": ";
+    EXPECT_TRUE(anyContains(l.warnings, named + "1 of 3 values were NaN or infinite"));
+    EXPECT_TRUE(anyContains(l.warnings, named + "2 of 3 values were finite but past 5.1923e+33 "
+                                                "(largest 3.2e+38)"));
+
+    GltfLoadOptions strict;
+    strict.strict = true;
+    float finiteUvs[6] = {0, 0, 3.2e38f, 1, 0, 1};
+    std::memcpy(bin_.data() + bin_.size() - sizeof finiteUvs, finiteUvs, sizeof finiteUvs);
+    expectOneLineError(load(write(), strict), path,
+                       "TEXCOORD_0 accessor " + std::to_string(accessor) +
+                           " holds a uv of 3.2e+38, past the 5.1923e+33");
+}
+
+// A texture transform can take uvs past the limit too: clamped, with a warning naming the
+// material.
+TEST_F(GltfGenerated, TextureTransformPastTheUvLimitIsClamped) {
+    float uvs[6] = {0, 0, 1e30f, 0, 0, 1};
+    gltf_["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
+        addAccessor({{"bufferView", addView(uvs, sizeof uvs)},
+                     {"componentType", 5126},
+                     {"count", 3},
+                     {"type", "VEC2"}});
+    gltf_["extensionsUsed"] = {"KHR_texture_transform"};
+    gltf_["materials"] = {
+        {{"pbrMetallicRoughness",
+          {{"baseColorTexture",
+            {{"index", 0},
+             {"extensions", {{"KHR_texture_transform", {{"scale", {1e10, 1}}}}}}}}}}}};
+    gltf_["meshes"][0]["primitives"][0]["material"] = 0;
+    gltf_["textures"] = {{{"source", 0}}};
+    gltf_["images"] = {{{"uri", "missing.png"}}};
+    Loaded l = load(write());
+    ASSERT_TRUE(l.scene.ok()) << l.scene.error();
+    EXPECT_EQ(l.scene->meshes[0].uvs[1], glm::vec2(0x1p112f, 0.0f));
+    EXPECT_TRUE(anyContains(l.warnings, "material 0's KHR_texture_transform takes 1 uvs past "
+                                        "5.1923e+33; clamped there"));
 }
 
 TEST(GltfImages, ToRgba8ConvertsChannelsAndDepths) {

@@ -81,5 +81,30 @@ TEST(LightModelDegenerate, ZeroAndSubnormalRangesLightNothing) {
             }
 }
 
+// A range below TP_MIN_LIGHT_DISTANCE lies inside the model's distance clamp: the light is
+// inert, at its own position too (distance 0 < a subnormal range lit it with 1e4 x its
+// intensity); a range of exactly 1 cm still lights.
+TEST(LightModelDegenerate, RangeBelowTheDistanceClampLightsNotEvenItsPosition) {
+    for (float range : {1e-40f, std::numeric_limits<float>::denorm_min(), 0.005f})
+        for (LightType type : {LightType::Point, LightType::Spot}) {
+            Light l;
+            l.type = type;
+            l.range = range;
+            l.intensity = 1.0e6f;
+            l.position = glm::vec3(0.25f, 1.0f, -2.0f);
+            const gpu::LightGpu g = toGpu(l);
+            EXPECT_EQ(gpu::evalLight(g, surfaceAt(l.position, glm::vec3(0, 1, 0)), true),
+                      glm::vec3(0.0f))
+                << "range " << range;
+        }
+    Light ordinary;
+    ordinary.range = TP_MIN_LIGHT_DISTANCE;
+    ordinary.intensity = 1.0f;
+    ordinary.position = glm::vec3(0.0f);
+    EXPECT_GT(
+        gpu::evalLight(toGpu(ordinary), surfaceAt(glm::vec3(0.0f), glm::vec3(0, 1, 0)), true).x,
+        0.0f);
+}
+
 } // namespace
 } // namespace tp::test

@@ -298,5 +298,34 @@ TEST(Viewer, ABadScriptLineIsOneErrorAndNoRun) {
         << lines.error();
 }
 
+// Every reading error is "PATH:LINE: message", or "PATH: message" for the file as a whole; a
+// directory is refused (it read as an empty script and ran nothing).
+TEST(Viewer, MalformedScriptsSayPathAndLine) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "triptych_view_malformed";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    auto error = [&](const std::string& name, const std::string& text) {
+        const std::string path = (dir / name).string();
+        std::ofstream(path) << text;
+        Result<std::vector<ScriptLine>> lines = readScript(path);
+        return lines ? std::string("(read)") : lines.error();
+    };
+    const std::string p = dir.string() + "/";
+    EXPECT_EQ(error("unknown.txt", "# a comment\n\nwait\nteleport 1 2\n"),
+              p + "unknown.txt:4: unknown command 'teleport'");
+    EXPECT_EQ(error("few.txt", "split\n"), p + "few.txt:1: expected 'split SHARE (0 to 1)'");
+    EXPECT_EQ(error("many.txt", "wait\nwait now # comment\n"), p + "many.txt:2: expected 'wait'");
+    EXPECT_EQ(error("control.txt", "frames 1\nfo\x01o\n"),
+              p + "control.txt:2: unknown command 'fo o'");
+    Result<std::vector<ScriptLine>> missing = readScript(p + "missing.txt");
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.error(), p + "missing.txt: cannot open the file");
+    Result<std::vector<ScriptLine>> folder = readScript(dir.string());
+    ASSERT_FALSE(folder);
+    EXPECT_EQ(folder.error(), dir.string() + ": is a directory, not a script");
+    std::filesystem::remove_all(dir);
+}
+
 } // namespace
 } // namespace tp::view
