@@ -52,6 +52,15 @@ bool ShadowedShading::hold(uint32_t light) {
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    // With the stencil (the light passes), each rendering stores depth and stencil and the next
+    // loads depth and clears the stencil: writes ordered likewise, in the fragment tests.
+    if (stencil_) {
+        constexpr VkPipelineStageFlags2 tests = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                                                VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        memoryBarrier(pc_.cmd, tests, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, tests,
+                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                          VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    }
     beginShading(pc_, t_, resolve_ && switchesLeft_ == 0, false, stencil_);
     return true;
 }

@@ -51,8 +51,11 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
                 attachmentLayout(format, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
         }
         if (depth->stencil) {
-            if (depth->readOnly || !hasStencil(format))
-                throw GraphError("a stencil attachment needs a writable depth-stencil image");
+            // No resolve beside it: depth and stencil resolve modes must agree on devices
+            // without independentResolveNone, and nothing needs the stencil resolved.
+            if (depth->readOnly || depth->resolve.valid() || !hasStencil(format))
+                throw GraphError("a stencil attachment needs a writable depth-stencil image, "
+                                 "not resolved");
             stencilInfo = depthInfo;
             stencilInfo.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
             stencilInfo.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;

@@ -106,16 +106,21 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
     if (scene_.viewGeneration() != generation_ || !planned_.renderer || !recorded_)
         if (Status s = follow(updateMs); !s) return Error{s.error()};
     // Frames until no capacity sized from measured needs overflowed (contract step 7): each
-    // overflow plans again with the needs measured, so this ends once they fit.
+    // overflow plans again with the needs measured, so this ends once they fit. Its time is the
+    // view's update time (a replan for this view), its count a replan. No frame: nothing to read.
+    const bool framed = options.warmupFrames + options.timedFrames > 0;
     uint32_t warmup = 0;
     for (uint32_t grown = 0;; ++grown) {
         profiler_->discardSamples();
         warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options);
-        if (grown == kMaxGrowths || !planned_.renderer->overflowed(*planned_.graph)) break;
+        if (!framed || grown == kMaxGrowths || !planned_.renderer->overflowed(*planned_.graph))
+            break;
+        const auto start = std::chrono::steady_clock::now();
         for (const auto& [name, need] : planned_.renderer->capacityHints())
             settings_.capacities[name] = std::max(settings_.capacities[name], need);
         if (Status s = plan(); !s) return Error{s.error()};
         ++replans_;
+        updateMs = std::max(0.0, updateMs) + msSince(start);
     }
     RunResult result = detail::collectResult(ctx_, scene_, entry_, settings_, planned_, *profiler_,
                                              *statistics_, options);

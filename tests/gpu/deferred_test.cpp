@@ -380,19 +380,9 @@ TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
 // included): none may. Before, the G-buffer took the centre's alpha for the whole pixel:
 // (a) failed on the pixels along the holes' contours where sample 0 and the centre disagree.
 TEST(Deferred, PixelRateGBufferKeepsPerSampleAlphaCoverage) {
-    namespace fs = std::filesystem;
-    const fs::path dir =
-        fs::temp_directory_path() / ("triptych_defcov_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    const fs::path path = writeMaskedScene(dir / "masked");
-    Result<Scene> loaded = loadGltf(path.string(), {});
-    fs::remove_all(dir);
+    Result<Scene> loaded = loadMaskedScene(32, 5);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     Scene scene = std::move(*loaded);
-    LightGenOptions g;
-    g.count = 32;
-    g.seed = 5;
-    scene.lights = generateLights(scene.bounds, g);
 
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);

@@ -1,13 +1,18 @@
 #include "gpu_test_util.h"
-#include "core/gpu/vk_check.h"
-#include "core/scene/lights.h"
-#include "core/scene/procedural.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
+#include <unistd.h>
+
+#include "core/gpu/vk_check.h"
 #include "core/render/renderer.h"
+#include "core/scene/gltf_loader.h"
+#include "core/scene/lights.h"
+#include "core/scene/procedural.h"
+#include "gltf_test_scenes.h"
 
 namespace tp::test {
 
@@ -167,6 +172,21 @@ Scene courtyardSmallWithLights(uint32_t count, uint64_t seed) {
     o.seed = seed;
     s->lights = generateLights(s->bounds, o);
     return std::move(*s);
+}
+
+Result<Scene> loadMaskedScene(uint32_t lights, uint32_t seed) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() /
+        ("triptych_masked_" + std::to_string(::getpid()) + "_" + std::to_string(seed));
+    std::filesystem::remove_all(dir);
+    Result<Scene> loaded = loadGltf(writeMaskedScene(dir / "masked").string(), {});
+    std::filesystem::remove_all(dir);
+    if (!loaded) return loaded;
+    LightGenOptions g;
+    g.count = lights;
+    g.seed = seed;
+    loaded->lights = generateLights(loaded->bounds, g);
+    return loaded;
 }
 
 } // namespace tp::test

@@ -16,6 +16,10 @@ namespace tp::test {
 // Validation (with synchronization validation) on; fails the test if creation fails.
 std::unique_ptr<GpuContext> makeValidatedContext();
 
+// gltf_test_scenes.h's masked scene loaded (written to a temporary folder, removed after) with
+// `lights` seeded lights.
+Result<Scene> loadMaskedScene(uint32_t lights, uint32_t seed);
+
 // Asserts that the validation layers reported nothing so far.
 void expectNoValidationMessages(const GpuContext& ctx);
 

@@ -178,19 +178,9 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
 // removes. Before the centre reference kept per-sample coverage it took the centre's alpha
 // for the whole pixel, and both pipelines were off by whole samples along every hole.
 TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
-    namespace fs = std::filesystem;
-    const fs::path dir =
-        fs::temp_directory_path() / ("triptych_refcov_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    const fs::path path = writeMaskedScene(dir / "masked");
-    Result<Scene> loaded = loadGltf(path.string(), {});
-    fs::remove_all(dir);
+    Result<Scene> loaded = loadMaskedScene(32, 5);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     Scene scene = std::move(*loaded);
-    LightGenOptions g;
-    g.count = 32;
-    g.seed = 5;
-    scene.lights = generateLights(scene.bounds, g);
 
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
