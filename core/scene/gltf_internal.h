@@ -201,6 +201,15 @@ Status readPrimitive(const tinygltf::Model& model, int mesh, int prim,
 // too so that front faces stay front faces.
 void appendTransformed(const LocalPrimitive& prim, const glm::mat4& world, Mesh& out);
 
+// v[indices[i]] for each i: a vertex per index (flat normals, repairs per face corner).
+template <class T> void deindex(std::vector<T>& v, const std::vector<uint32_t>& indices) {
+    if (v.empty()) return;
+    std::vector<T> out(indices.size());
+    for (size_t i = 0; i < indices.size(); ++i)
+        out[i] = v[indices[i]];
+    v.swap(out);
+}
+
 // Flat normals need one vertex per triangle corner: de-indexes every attribute, then sets each
 // corner's normal to its face normal.
 void makeFlatNormals(LocalPrimitive& prim);
@@ -215,6 +224,8 @@ void makeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm
                   const std::vector<glm::vec2>& uvs, const std::vector<uint32_t>& indices,
                   std::vector<glm::vec4>& tangents);
 glm::vec3 anyPerpendicular(const glm::vec3& n);
+// v / |v|, or `fallback` where v has no direction (zero, tiny, not finite).
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback);
 
 // --- gltf_materials.cpp ------------------------------------------------------------------
 
