@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Prints one line per configuration: the configuration and the SHA-256 of the EXR it
-# renders. Run before and after a change that must not move a pixel (a refactoring), then
+# renders (and of its debug images). Run before and after a change that must not move a pixel (a refactoring), then
 # diff the two outputs: every pipeline and the reference on the built-in scene, 1x and 4x
 # at both shading rates, tiled and clustered, every light-list layout and culling mode.
 #   tests/tools/image_fingerprints.sh BUILD/triptych > before.txt
@@ -28,6 +28,7 @@ for msaa in "--msaa 1" "--msaa 4 --msaa-shading pixel" "--msaa 4 --msaa-shading 
             [[ $assign == clustered ]] && configs+=("--pipeline forwardplus $base --light-loop subgroup --slices 8")
             configs+=("--pipeline deferred $base" "--pipeline deferred $base --gbuffer wide --hdr fp16 --tile 32")
             configs+=("--pipeline visbuffer $base" "--pipeline visbuffer $base --hdr fp16 --tile 32")
+            configs+=("--pipeline visbuffer $base --vis-blended forward")
         done
     done
     configs+=("--pipeline deferred $msaa --deferred-lighting volumes")
@@ -35,6 +36,15 @@ for msaa in "--msaa 1" "--msaa 4 --msaa-shading pixel" "--msaa 4 --msaa-shading 
         configs+=("--pipeline multipass_forward $msaa --blended-lights $bl")
     done
     configs+=("--pipeline multipass_forward $msaa --accum fp16")
+    # Shadow maps through every pipeline, and the reference with the same maps.
+    for p in forwardplus deferred visbuffer multipass_forward reference; do
+        configs+=("--pipeline $p $msaa --shadows 3")
+    done
+    configs+=("--pipeline deferred $msaa --deferred-lighting volumes --shadows 3")
+done
+# The debug images (heat maps, depth bounds, G-buffer channels) of the tiled pipelines.
+for p in forwardplus deferred visbuffer; do
+    configs+=("--pipeline $p --msaa 4 --msaa-shading pixel --debug")
 done
 
 i=0
@@ -42,6 +52,6 @@ for c in "${configs[@]}"; do
     out="$work/$i"
     # shellcheck disable=SC2086
     "$exe" render "$scene" "${common[@]}" $c --out "$out" >"$work/log" 2>&1 || { echo "FAILED: $c"; cat "$work/log"; exit 1; }
-    echo "$c  $(sha256sum "$out"/*.exr | cut -c1-16)"
+    echo "$c  $(cd "$out" && sha256sum -- *.exr *debug*.png 2>/dev/null | cut -c1-16 | tr '\n' ' ')"
     i=$((i + 1))
 done
