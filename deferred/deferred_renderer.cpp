@@ -220,14 +220,7 @@ std::vector<DebugImage> DeferredRenderer::debugImages(FrameGraph& graph) {
             out.push_back({"edge_mask", readbackColor(ctx_, graph.image(t_.edgeMask)), true});
         return out;
     }
-    out.push_back({"lights_per_tile",
-                   passes::lightsPerTileHeatMap(t_.grid, tileStatColumn(tileStats_, 0)), true});
-    if (hasBlended_)
-        out.push_back({"lights_per_tile_transparent",
-                       blended_.heatMap(t_.grid, tileStats_, t_.listOffsets), true});
-    EdgeAndRoughMetal split = splitDebugImage(readbackColor(ctx_, graph.image(t_.debug)));
-    out.push_back({"edge_mask", std::move(split.edge), true});
-    out.push_back({"gbuffer_roughness_metallic", std::move(split.roughMetal), true});
+    appendTiledLightingDebug(ctx_, graph, lightingTargets(), tileStats_, hasBlended_ ? &blended_ : nullptr, out);
     return out;
 }
 

@@ -79,7 +79,7 @@ void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
     } else {
         uint32_t batch = tiledLightBatch(s.assign.tile, s.sampling.samples);
         if (s.assign.clustered())
-            batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
+            batch = std::min(batch, TP_TL_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
         stores = int(std::max(1u, (lights + batch - 1) / batch));
         what = "one per lighting batch of " + std::to_string(batch) + " lights";
     }

@@ -12,7 +12,7 @@ namespace {
 std::vector<stress::CounterAtLeast> deferredStressed(const ErrorModelInput& in) {
     const stress::StressCase& c = in.stressCase;
     if (def::readSettings(in.settings).lighting != def::Lighting::Tiled ||
-        c.lightsInOneTile <= TP_DEF_TILE_LIGHT_CAPACITY)
+        c.lightsInOneTile <= TP_TL_TILE_LIGHT_CAPACITY)
         return {};
     return {{"tiles_over_shared_capacity", 1,
              "the 4,096-light shared list must overflow (the case puts " +

@@ -55,7 +55,7 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
     std::vector<PassUse> gbuffer, lights;
     for (size_t i = 0; i < t.gbuffer.size(); ++i)
         gbuffer.push_back({t.gbuffer[i], Use::Sampled, numbers[i]});
-    gbuffer.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+    gbuffer.push_back({t.gbufferDepth, Use::Sampled, TP_TL_BINDING_DEPTH});
     for (size_t i = 0; i < 3; ++i)
         lights.push_back({t.gbuffer[i], Use::Sampled, numbers[i]}); // no emissive
     std::vector<PassUse> base = gbuffer, sampleBase = gbuffer;
@@ -65,17 +65,17 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
         sampleBase.push_back({t.hdrMsaa, Use::ColorAttachment});
         sampleBase.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
         lights.push_back({t.hdrMsaa, Use::ColorAttachment});
-        lights.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+        lights.push_back({t.gbufferDepth, Use::Sampled, TP_TL_BINDING_DEPTH});
         lights.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
     } else {
         lights.push_back({t.hdr, Use::ColorAttachment});
         if (msaa) {
-            lights.push_back({t.gbufferDepth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+            lights.push_back({t.gbufferDepth, Use::Sampled, TP_TL_BINDING_DEPTH});
             lights.push_back({t.volumeDepth, Use::DepthTest});
             lights.push_back({t.edgeMask, Use::Sampled, TP_DEF_BINDING_EDGE_MASK});
         } else {
             lights.push_back(
-                {t.gbufferDepth, Use::DepthTest, TP_DEF_BINDING_DEPTH}); // tested and sampled
+                {t.gbufferDepth, Use::DepthTest, TP_TL_BINDING_DEPTH}); // tested and sampled
         }
     }
     if (msaa) {
@@ -124,7 +124,7 @@ void VolumeLighting::prepareBase(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(AlphaMode::Opaque);
     d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
     d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
-    d.specConstants.push_back({TP_DEF_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
+    d.specConstants.push_back({TP_TL_SPEC_EVERY_SAMPLE, t_->sampleRateGBuffer ? 1u : 0u});
     d.colorFormats = {t_->hdrFormat};
     d.depthFormat = VK_FORMAT_UNDEFINED;
     d.depthTest = d.depthWrite = false;

@@ -26,7 +26,7 @@ void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
     const bool blended = hasBlended(in.scene);
     uint32_t batch = tiledLightBatch(s.assign.tile, s.evaluationsPerPixel(blended));
     if (s.assign.clustered())
-        batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
+        batch = std::min(batch, TP_TL_CLUSTER_MASK_WORDS * 32 / s.assign.slices);
     const uint32_t lights = uint32_t(in.scene.lights.size());
     int stores = int(std::max(1u, (lights + batch - 1) / batch));
     std::string what = "one per lighting batch of " + std::to_string(batch) + " lights";

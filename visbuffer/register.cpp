@@ -1,7 +1,7 @@
 // The visibility buffer as the rest of the program sees it: its name, its knobs, its
 // precision model for `triptych stress` (visbuffer/error_model.cpp).
 #include "core/render/renderer.h"
-#include "include/tiled_lighting.h"
+#include "passes/tiled_lighting.h"
 #include "visbuffer/error_model.h"
 #include "visbuffer/vis_settings.h"
 #include "visbuffer/visbuffer_renderer.h"
@@ -13,7 +13,7 @@ namespace {
 // come in several batches, none dropped), as for deferred.
 std::vector<stress::CounterAtLeast> visbufferStressed(const ErrorModelInput& in) {
     const stress::StressCase& c = in.stressCase;
-    if (c.lightsInOneTile <= TP_DEF_TILE_LIGHT_CAPACITY) return {};
+    if (c.lightsInOneTile <= TP_TL_TILE_LIGHT_CAPACITY) return {};
     return {{"tiles_over_shared_capacity", 1,
              "the 4,096-light shared list must overflow (the case puts " +
                  std::to_string(c.lightsInOneTile) + " in one tile)"}};

@@ -233,14 +233,7 @@ void VisbufferRenderer::checkDevice() const {
 
 std::vector<DebugImage> VisbufferRenderer::debugImages(FrameGraph& graph) {
     std::vector<DebugImage> out;
-    out.push_back({"lights_per_tile",
-                   passes::lightsPerTileHeatMap(lt_.grid, tileStatColumn(tileStats_, 0)), true});
-    if (hasBlended_)
-        out.push_back({"lights_per_tile_transparent",
-                       blended_.heatMap(lt_.grid, tileStats_, lt_.listOffsets), true});
-    EdgeAndRoughMetal split = splitDebugImage(readbackColor(ctx_, graph.image(lt_.debug)));
-    out.push_back({"edge_mask", std::move(split.edge), true});
-    out.push_back({"roughness_metallic", std::move(split.roughMetal), true});
+    appendTiledLightingDebug(ctx_, graph, lt_, tileStats_, hasBlended_ ? &blended_ : nullptr, out);
     return out;
 }
 

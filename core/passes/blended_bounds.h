@@ -6,7 +6,7 @@
 // (after the depth prepass) and deferred (after the G-buffer), before their culling.
 //
 // Two passes: "blended_bounds_clear" (transfer fill: min = +inf, max = 0) and
-// "blended_bounds" (the blended draws, shaders/blended_bounds.frag). Plan it only when the
+// "blended_bounds" (the blended draws, shaders/passes/blended_bounds.frag). Plan it only when the
 // scene draws something blended; the buffer "blended_bounds" (2 words per tile) is in the
 // ledger.
 #include <cstdint>

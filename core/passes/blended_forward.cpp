@@ -7,7 +7,7 @@
 #include "core/gpu/stand_ins.h"
 #include "core/passes/shadow_maps.h"
 #include "core/render/scene_gpu.h"
-#include "include/tiled_lighting.h"
+#include "passes/tiled_lighting.h"
 
 namespace tp {
 
@@ -22,10 +22,10 @@ void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t,
     t_ = t;
     slices_ = masks.valid() ? slices : 0u;
     masks_ = masks;
-    std::vector<PassUse> uses = {{t.lists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS},
+    std::vector<PassUse> uses = {{t.lists, Use::StorageRead, TP_BF_BINDING_LISTS},
                                  {t.depth, Use::DepthTest},
-                                 {t.bounds, Use::StorageRead, TP_DEF_FWD_BINDING_BLEND_BOUNDS}};
-    if (masks.valid()) uses.push_back({masks, Use::StorageRead, TP_DEF_FWD_BINDING_MASKS});
+                                 {t.bounds, Use::StorageRead, TP_BF_BINDING_BLEND_BOUNDS}};
+    if (masks.valid()) uses.push_back({masks, Use::StorageRead, TP_BF_BINDING_MASKS});
     if (t.msaa()) {
         uses.push_back({t.hdrMsaa, Use::ColorAttachment});
         uses.push_back({t.hdr, Use::ColorResolve});
@@ -40,11 +40,11 @@ void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t,
 bool BlendedForwardPass::shadowed() const { return t_.shadows && t_.shadows->enabled(); }
 
 void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool binned) {
-    std::vector<ExternalBuffer> externals = {{TP_DEF_FWD_BINDING_CANDIDATES, candidates}};
+    std::vector<ExternalBuffer> externals = {{TP_BF_BINDING_CANDIDATES, candidates}};
     if (!masks_.valid()) {
         noMasks_ = createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
                                               "stand-in: slice rows are clustered only"});
-        externals.push_back({TP_DEF_FWD_BINDING_MASKS, noMasks_.buffer});
+        externals.push_back({TP_BF_BINDING_MASKS, noMasks_.buffer});
     }
     set_ = graph.createPassSet("transparent_forward", VK_NULL_HANDLE, externals);
     layout_ = scene_.createPipelineLayout(set_.layout,
@@ -53,11 +53,11 @@ void BlendedForwardPass::prepare(FrameGraph& graph, VkBuffer candidates, bool bi
     // --msaa-shading pixel under MSAA: inputs at the pixel centre (scene_inputs.glsl), no
     // sample shading; each covered sample that passes the depth test blends the pixel's value.
     d.fragmentShader =
-        t_.perPixel ? "deferred_transparent_pixel_frag" : "deferred_transparent_frag";
+        t_.perPixel ? "blended_forward_pixel_frag" : "blended_forward_frag";
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
-    d.specConstants.push_back({TP_DEF_SPEC_SLICES, slices_});
-    d.specConstants.push_back({TP_DEF_SPEC_BINNED, binned ? 1u : 0u});
+    d.specConstants.push_back({TP_TL_SPEC_SLICES, slices_});
+    d.specConstants.push_back({TP_TL_SPEC_BINNED, binned ? 1u : 0u});
     if (shadowed()) t_.shadows->apply(d.fragmentShader, d.specConstants); // the _shadow twin
     d.colorFormats = {t_.hdrFormat};
     d.samples = VkSampleCountFlagBits(t_.samples);

@@ -41,7 +41,7 @@ class BlendedForwardPass {
     void plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices = 0,
               ResourceHandle masks = {});
     // candidates: the tiled pass's light_candidates; binned: the transparent lists are
-    // bitmasks over them (include/tiled_lighting.h).
+    // bitmasks over them (passes/tiled_lighting.h).
     void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);
 
   private:

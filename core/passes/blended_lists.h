@@ -33,7 +33,7 @@ TransparentListPlan transparentListNeed(const la::TileGrid& grid, const SceneGpu
 // maxStorageBufferRange (`limit`). masks (--light-cull binned): a list is a subset of its
 // tile's candidates (the directional lights and the lights whose conservative tile
 // rectangle covers it: the same rectangles as the bound), so its run is a bitmask over them,
-// ceil(candidates / 32) words (include/tiled_lighting.h). localBound: that bound
+// ceil(candidates / 32) words (passes/tiled_lighting.h). localBound: that bound
 // when the caller has binned the lights already (binned culling bins them once, on the CPU
 // or the GPU); null: computed here. manyViews: capacity with headroom for later views
 // (core/passes/tiled_lighting.h: viewCapacity), never more than every light in every tile or

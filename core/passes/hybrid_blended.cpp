@@ -3,10 +3,11 @@
 #include <algorithm>
 
 #include "core/gpu/context.h"
+#include "core/gpu/readback.h"
 #include "core/passes/blended_lists.h"
 #include "core/passes/debug_views.h"
 #include "core/render/renderer.h"
-#include "include/tiled_lighting.h"
+#include "passes/tiled_lighting.h"
 
 namespace tp {
 
@@ -30,8 +31,8 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
     slots_ = lists.slots;
     capacity_ = lists.capacity;
     if (slices == 0 || !sliceRows) return;
-    // Clustered: slice rows over the lists for the blended pass (include/tiled_lighting.h:
-    // defClusterRowsBase).
+    // Clustered: slice rows over the lists for the blended pass (passes/tiled_lighting.h:
+    // tlClusterRowsBase).
     const uint64_t rowWords = lists.masks ? lists.capacity : lists.capacity / 32 + tiles;
     const uint64_t words = 2ull * tiles + uint64_t(slices) * rowWords;
     if (words * 4 > ctx_.caps.maxStorageBufferRange)
@@ -130,6 +131,19 @@ std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_
     for (size_t t = 0; t < out.size(); ++t)
         out[t] = stats[t * 4 + c];
     return out;
+}
+
+void appendTiledLightingDebug(GpuContext& ctx, FrameGraph& graph, const TiledLightingTargets& t,
+                              const std::vector<uint32_t>& tileStats, const HybridBlended* blended,
+                              std::vector<DebugImage>& out) {
+    out.push_back(
+        {"lights_per_tile", passes::lightsPerTileHeatMap(t.grid, tileStatColumn(tileStats, 0)), true});
+    if (blended)
+        out.push_back({"lights_per_tile_transparent",
+                       blended->heatMap(t.grid, tileStats, t.listOffsets), true});
+    EdgeAndRoughMetal split = splitDebugImage(readbackColor(ctx, graph.image(t.debug)));
+    out.push_back({"edge_mask", std::move(split.edge), true});
+    out.push_back({"roughness_metallic", std::move(split.roughMetal), true});
 }
 
 } // namespace tp

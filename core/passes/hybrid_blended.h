@@ -64,6 +64,15 @@ class HybridBlended {
     bool forwardPlanned_ = false;
 };
 
+struct DebugImage;
+
+// --debug's images of the tiled lighting pass, named alike for every surface source:
+// lights_per_tile, lights_per_tile_transparent (`blended`: a blended scene's lists, or null),
+// edge_mask and roughness_metallic (TP_DEBUG's image split, splitDebugImage).
+void appendTiledLightingDebug(GpuContext& ctx, FrameGraph& graph, const TiledLightingTargets& t,
+                              const std::vector<uint32_t>& tileStats, const HybridBlended* blended,
+                              std::vector<DebugImage>& out);
+
 // Column `c` of per-tile statistics stored as uvec4 per tile.
 std::vector<uint32_t> tileStatColumn(const std::vector<uint32_t>& stats, uint32_t c);
 

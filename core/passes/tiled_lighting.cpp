@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <initializer_list>
+#include <utility>
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -35,18 +37,18 @@ void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source,
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
     std::vector<PassUse> uses;
     if (!listsOnly) uses = source.attributes;
-    uses.push_back({source.depth, Use::Sampled, TP_DEF_BINDING_DEPTH});
+    uses.push_back({source.depth, Use::Sampled, TP_TL_BINDING_DEPTH});
     if (!listsOnly)
         uses.push_back(
-            {t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_DEF_BINDING_HDR});
-    uses.push_back({t.tileStats, Use::StorageWrite, TP_DEF_BINDING_TILE_STATS});
+            {t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_TL_BINDING_HDR});
+    uses.push_back({t.tileStats, Use::StorageWrite, TP_TL_BINDING_TILE_STATS});
     if (t.transparentLists.valid())
-        uses.push_back({t.transparentLists, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_LISTS});
+        uses.push_back({t.transparentLists, Use::StorageWrite, TP_TL_BINDING_TRANSPARENT_LISTS});
     if (transparentMasks.valid())
-        uses.push_back({transparentMasks, Use::StorageWrite, TP_DEF_BINDING_TRANSPARENT_MASKS});
+        uses.push_back({transparentMasks, Use::StorageWrite, TP_TL_BINDING_TRANSPARENT_MASKS});
     if (t.transparentLists.valid())
-        uses.push_back({blendBounds, Use::StorageRead, TP_DEF_BINDING_BLEND_BOUNDS});
-    if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_DEF_BINDING_DEBUG});
+        uses.push_back({blendBounds, Use::StorageRead, TP_TL_BINDING_BLEND_BOUNDS});
+    if (t.debug.valid()) uses.push_back({t.debug, Use::StorageWrite, TP_TL_BINDING_DEBUG});
     if (shadowed()) // set 2, not the pass's set
         for (const PassUse& u : t.shadows->sampledUses()) uses.push_back(u);
     graph.addPass(passName(), uses, [this](PassContext& pc) { record(pc); });
@@ -60,13 +62,31 @@ std::string TiledLighting::passName() const {
     return listsOnly_ ? "transparent_light_lists" : "tiled_lighting";
 }
 
+namespace {
+// A variant key of passes/tiled_lighting.h (TP_TL_VARIANT_KEY, TP_TL_LISTS_KEY) with each
+// {field} replaced by its value: the names CMake compiled from the same key.
+std::string fillKey(std::string key, std::initializer_list<std::pair<const char*, std::string>> fields) {
+    for (const auto& [field, value] : fields) {
+        const std::string token = std::string("{") + field + "}";
+        for (size_t at = key.find(token); at != std::string::npos; at = key.find(token))
+            key.replace(at, token.size(), value);
+    }
+    return key;
+}
+} // namespace
+
 std::string TiledLighting::shaderName() const {
     const std::string& family = source_.shaderFamily;
-    if (listsOnly_) return family + "_lists_m" + (msaa() ? "1" : "0") + "_comp";
-    int m = !msaa() ? 0 : t_.hdrMsaa.valid() ? 2 : 1;
-    return family + "_m" + std::to_string(m) + "_e" + (source_.emissive ? "1" : "0") + "_t" +
-           (t_.transparentLists.valid() ? "1" : "0") + "_d" + (t_.debug.valid() ? "1" : "0") +
-           (t_.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : "") + "_comp";
+    if (listsOnly_) return family + fillKey(TP_TL_LISTS_KEY, {{"m", msaa() ? "1" : "0"}}) + "_comp";
+    const int m = !msaa() ? 0 : t_.hdrMsaa.valid() ? 2 : 1;
+    return family +
+           fillKey(TP_TL_VARIANT_KEY,
+                   {{"m", std::to_string(m)},
+                    {"e", source_.emissive ? "1" : "0"},
+                    {"t", t_.transparentLists.valid() ? "1" : "0"},
+                    {"d", t_.debug.valid() ? "1" : "0"},
+                    {"h", t_.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? "_h16" : ""}}) +
+           "_comp";
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {
@@ -80,18 +100,18 @@ void TiledLighting::prepare(FrameGraph& graph) {
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                  {graph.owner(), "", "transparent_list_offsets",
                                   "per tile: first slot of its transparent list (prefix sum)"});
-        externals.push_back({TP_DEF_BINDING_LIST_OFFSETS, listOffsets_.buffer});
+        externals.push_back({TP_TL_BINDING_LIST_OFFSETS, listOffsets_.buffer});
         if (!transparentMasks_.valid()) {
             // The shader declares the slice rows whenever it writes lists; only clustered uses
             // them.
             noMasks_ =
                 createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
                                            "stand-in: slice rows are clustered only"});
-            externals.push_back({TP_DEF_BINDING_TRANSPARENT_MASKS, noMasks_.buffer});
+            externals.push_back({TP_TL_BINDING_TRANSPARENT_MASKS, noMasks_.buffer});
         }
     }
     uploadCandidates(graph);
-    externals.push_back({TP_DEF_BINDING_CANDIDATES, candidates_.buffer});
+    externals.push_back({TP_TL_BINDING_CANDIDATES, candidates_.buffer});
     if (!listsOnly_)
         externals.insert(externals.end(), source_.buffers.begin(), source_.buffers.end());
     set_ = graph.createPassSet(passName(), sampler_, externals);
@@ -102,12 +122,12 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_SPEC_TILE_SIZE, t_.grid.tileSize});
     spec.insert(spec.end(), source_.constants.begin(), source_.constants.end());
     spec.push_back({TP_SPEC_SAMPLES, source_.samples});
-    spec.push_back({TP_DEF_SPEC_EVERY_SAMPLE, source_.everySample ? 1u : 0u});
-    spec.push_back({TP_DEF_SPEC_BINNED, binned_ ? 1u : 0u});
-    spec.push_back({TP_DEF_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
+    spec.push_back({TP_TL_SPEC_EVERY_SAMPLE, source_.everySample ? 1u : 0u});
+    spec.push_back({TP_TL_SPEC_BINNED, binned_ ? 1u : 0u});
+    spec.push_back({TP_TL_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading
     // The shared slice masks: clustered shading only (tiled groups keep one word).
     spec.push_back(
-        {TP_DEF_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_DEF_CLUSTER_MASK_WORDS : 1u});
+        {TP_TL_SPEC_MASK_WORDS, !listsOnly_ && slices_ > 0 ? TP_TL_CLUSTER_MASK_WORDS : 1u});
     std::string shader = shaderName();
     if (shadowed()) t_.shadows->apply(shader, spec); // the _shadow twin
     pipeline_ = createComputePipeline(ctx_, shader, spec, layout_, &set_);
@@ -147,10 +167,10 @@ void TiledLighting::bin() {
 std::vector<uint32_t> TiledLighting::candidateWords(const la::LightClasses& classes) {
     const uint32_t tiles = t_.grid.count();
     const uint32_t directional = uint32_t(classes.directional.size());
-    std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
-    words[TP_DEF_CAND_DIRECTIONAL] = directional;
-    words[TP_DEF_CAND_OFFSETS] = TP_DEF_CAND_HEADER + directional;
-    words[TP_DEF_CAND_RUNS] = TP_DEF_CAND_HEADER + directional + tiles + 1;
+    std::vector<uint32_t> words(TP_TL_CAND_HEADER, 0);
+    words[TP_TL_CAND_DIRECTIONAL] = directional;
+    words[TP_TL_CAND_OFFSETS] = TP_TL_CAND_HEADER + directional;
+    words[TP_TL_CAND_RUNS] = TP_TL_CAND_HEADER + directional + tiles + 1;
     words.insert(words.end(), classes.directional.begin(), classes.directional.end());
     words.insert(words.end(), bins_.offsets.begin(), bins_.offsets.end());
     words.insert(words.end(), bins_.candidates.begin(), bins_.candidates.end());
@@ -165,12 +185,12 @@ std::vector<uint32_t> TiledLighting::candidateWords(const la::LightClasses& clas
 // lights, which every tile takes. Otherwise a header saying "no candidates". The runs get
 // headroom for later views under manyViews (viewCapacity).
 void TiledLighting::uploadCandidates(FrameGraph& graph) {
-    std::vector<uint32_t> words(TP_DEF_CAND_HEADER, 0);
+    std::vector<uint32_t> words(TP_TL_CAND_HEADER, 0);
     const uint32_t tiles = t_.grid.count();
     if (binned_) {
         la::LightClasses classes = la::classifyLights(scene_.shadingLights());
         const uint64_t fixed =
-            uint64_t(TP_DEF_CAND_HEADER) + classes.directional.size() + tiles + 1;
+            uint64_t(TP_TL_CAND_HEADER) + classes.directional.size() + tiles + 1;
         // The buffer's size from the unclamped slot count: refused before it is built.
         const uint64_t bytes = (fixed + bins_.slots) * 4;
         if (bytes > ctx_.caps.maxStorageBufferRange)
@@ -197,7 +217,7 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
          binned_ ? "binned culling: directional lights, per-tile offsets, candidates" +
                        std::string(slotCapacity_ > bins_.slots ? " (headroom for other views)" : "")
                  : "binned culling off (--light-cull all): header only"});
-    if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_DEF_CAND_RUNS]);
+    if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_TL_CAND_RUNS]);
 }
 
 bool TiledLighting::updateView(FrameGraph& graph) {
@@ -210,7 +230,7 @@ bool TiledLighting::updateView(FrameGraph& graph) {
     if (binning_) {
         // The sizing run rebinds the binning's set to its own buffers: back to the frame's.
         binning_->prepare(graph, candidates_.buffer,
-                          TP_DEF_CAND_HEADER + directional_.size() + t_.grid.count() + 1);
+                          TP_TL_CAND_HEADER + directional_.size() + t_.grid.count() + 1);
         if (!binning_->bigListFits()) return false;
     }
     if (bins_.slots > slotCapacity_) return false;
@@ -250,13 +270,13 @@ EdgeAndRoughMetal splitDebugImage(const ImageRGBA& dbg) {
 
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples) {
     const uint32_t pixels = (tileSize / 8) * (tileSize / 8);
-    return std::max(1u, std::min(TP_DEF_TILE_LIGHT_CAPACITY, 32768u / (pixels * samples)));
+    return std::max(1u, std::min(TP_TL_TILE_LIGHT_CAPACITY, 32768u / (pixels * samples)));
 }
 
 void TiledLighting::dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end) {
     gpu::DrawPush push{0, 0, 0, 0};
-    push.TP_DEF_LIGHT_FIRST = first;
-    push.TP_DEF_LIGHT_END = end;
+    push.TP_TL_LIGHT_FIRST = first;
+    push.TP_TL_LIGHT_END = end;
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDispatch(cmd, t_.grid.tilesX, t_.grid.tilesY, 1);
 }
@@ -274,9 +294,9 @@ void TiledLighting::record(PassContext& pc) {
         listsOnly_ ? std::max(lights, 1u)
                    : tiledLightBatch(t_.grid.tileSize,
                                      std::max(source_.samples, source_.evaluationsPerPixel));
-    // Clustered: the slice bitmasks of a batch fit the shared array (include/tiled_lighting.h).
+    // Clustered: the slice bitmasks of a batch fit the shared array (passes/tiled_lighting.h).
     if (slices_ > 0 && !listsOnly_)
-        batch = std::min(batch, TP_DEF_CLUSTER_MASK_WORDS * 32 / slices_);
+        batch = std::min(batch, TP_TL_CLUSTER_MASK_WORDS * 32 / slices_);
     batches_ = 0;
     for (uint32_t first = 0; first == 0 || first < lights; first += batch, ++batches_) {
         if (first > 0) {

@@ -18,7 +18,7 @@
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/light_binning.h"
-#include "include/tiled_lighting.h"
+#include "passes/tiled_lighting.h"
 
 namespace tp {
 
@@ -28,7 +28,7 @@ namespace tp {
 // shades (tileSize / 8)^2 pixels, each up to `samples` times, with every light of its
 // tile's list, so a batch holds at most 32,768 / (pixels * samples) lights (half the
 // limit: the other loops - depth bounds, culling, transparent lists - stay far below the
-// rest) and never more than the shared list (TP_DEF_TILE_LIGHT_CAPACITY).
+// rest) and never more than the shared list (TP_TL_TILE_LIGHT_CAPACITY).
 uint32_t tiledLightBatch(uint32_t tileSize, uint32_t samples);
 
 // The per-tile statistics the pass writes (uvec4 per tile: opaque lights, transparent lights,
@@ -107,7 +107,7 @@ class TiledLighting {
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
     // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
-    // transparent lists that this pass writes for the blended pass (include/tiled_lighting.h).
+    // transparent lists that this pass writes for the blended pass (passes/tiled_lighting.h).
     // blendBounds (blended scenes): the blended depth bounds the transparent lists are culled
     // against (core/passes/blended_bounds.h).
     void plan(FrameGraph& graph, const SurfaceSource& source, const TiledLightingTargets& t,

@@ -4,7 +4,7 @@
 #ifndef TP_DEFERRED_SHARED_H
 #define TP_DEFERRED_SHARED_H
 #include "include/shared.h"
-#include "include/tiled_lighting.h"
+#include "passes/tiled_lighting.h"
 #ifndef TP_GLSL
 #include <cmath>
 namespace tp::gpu {
@@ -13,6 +13,15 @@ using std::sin;
 #endif
 #define TP_PI_DEF 3.14159265358979f
 
+// ---- set 1 of the tiled lighting pass: the G-buffer's bindings (passes/tiled_lighting.h
+// leaves these to the surface source); the light volumes use the same ----
+#define TP_DEF_BINDING_BASE 0        // sampler: base colour rgb + occlusion a
+#define TP_DEF_BINDING_NORMAL 1      // sampler: octahedral normal (compact) or xyz (wide)
+#define TP_DEF_BINDING_ROUGH_METAL 2 // sampler: roughness r, metallic g
+#define TP_DEF_BINDING_EMISSIVE 3    // sampler: emissive rgb (only when the scene emits)
+#define TP_DEF_BINDING_EDGE_MASK 9   // sampler: 1x edge mask (volumes lighting under MSAA)
+
+#define TP_DEF_SPEC_WIDE 11          // 1: wide (fp32, xyz normal) G-buffer, 0: compact
 // ---- specialization constants of the light-volume shaders ----
 #define TP_DEF_SPEC_SPHERE_SCALE 14  // float bits: volumeSphereVertex scale that circumscribes the unit sphere
 

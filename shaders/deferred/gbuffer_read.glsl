@@ -3,7 +3,7 @@
 // tiled compute pass and by every light-volume shader, so both lighting modes shade with
 // the very same code (their results differ only in the order the light sum is added).
 // The includer defines TP_MSAA (per-sample G-buffer) and TP_EMISSIVE (0/1) as the variant
-// needs, and TP_GBUFFER_DEPTH_ONLY when it reads depth alone.
+// needs, and TP_SURFACE_DEPTH_ONLY when it reads depth alone.
 #ifndef TP_GBUFFER_READ_GLSL
 #define TP_GBUFFER_READ_GLSL
 #include "include/gbuffer_encoding.h"
@@ -14,7 +14,7 @@
 
 layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
 layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
-layout(constant_id = TP_DEF_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
+layout(constant_id = TP_TL_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 
 #ifdef TP_MSAA
 #define GTEX sampler2DMS
@@ -23,7 +23,7 @@ layout(constant_id = TP_DEF_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 #define GTEX sampler2D
 #define FETCH(t, p, s) texelFetch(t, p, 0)
 #endif
-#ifndef TP_GBUFFER_DEPTH_ONLY
+#ifndef TP_SURFACE_DEPTH_ONLY
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_BASE) uniform GTEX gBase;
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_NORMAL) uniform GTEX gNormal;
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_ROUGH_METAL) uniform GTEX gRoughMetal;
@@ -31,7 +31,7 @@ layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_ROUGH_METAL) uniform GTEX gRo
 layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_EMISSIVE) uniform GTEX gEmissive;
 #endif
 #endif
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEPTH) uniform GTEX gDepth;
+layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEPTH) uniform GTEX gDepth;
 
 #include "include/sample_locations.glsl"
 
@@ -52,7 +52,7 @@ vec3 reconstructPosition(ivec2 p, vec2 offset, float depth) {
     return unprojectPosition(vec2(float(p.x) + offset.x, float(p.y) + offset.y), depth);
 }
 
-#ifndef TP_GBUFFER_DEPTH_ONLY
+#ifndef TP_SURFACE_DEPTH_ONLY
 vec3 fetchNormal(ivec2 p, uint s) {
     vec4 e = FETCH(gNormal, p, s);
     return kWide ? e.xyz : octDecode(e.xy);

@@ -13,6 +13,7 @@
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
+#include "include/light_list_walk.glsl"
 #include "include/shadow_light.glsl"
 
 layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
@@ -104,23 +105,17 @@ vec3 clusterLights(uint tileIndex, SurfaceSample surface, uint directionalCount)
         for (uint w = 0u; w < sharedWords; ++w) {
             uint own = masks[row + w];
             uint bits = subgroupOr(own);
-            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-                int lsb = findLSB(bits);
-                bits &= bits - 1u;
+            TP_FOR_EACH_BIT(bits, lsb,
                 LightGpu light = fpLight(indices[sharedStart + w * 32u + uint(lsb)], directionalCount);
-                if ((own & (1u << uint(lsb))) != 0u) sum += evalLightShadowed(light, surface);
-            }
+                if ((own & (1u << uint(lsb))) != 0u) sum += evalLightShadowed(light, surface);)
         }
         return sum;
     }
 #endif
     for (uint w = 0u; w < words; ++w) {
         uint bits = masks[row + w];
-        for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-            int lsb = findLSB(bits);
-            bits &= bits - 1u;
-            sum += evalLightShadowed(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)], directionalCount), surface);
-        }
+        TP_FOR_EACH_BIT(bits, lsb,
+            sum += evalLightShadowed(fpLight(indices[t.list[0].start + w * 32u + uint(lsb)], directionalCount), surface);)
     }
     return sum;
 }

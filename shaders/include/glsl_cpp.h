@@ -4,6 +4,9 @@
 // no GLSL-only built-ins.
 #ifndef TP_GLSL_CPP_H
 #define TP_GLSL_CPP_H
+// A struct that crosses to the GPU: declared with TP_STRUCT so the header reads alike in both
+// languages (C++ mirrors it with static_asserts on size and offsets).
+#define TP_STRUCT(name) struct name
 #ifdef TP_GLSL
 #define TP_INLINE
 #else

@@ -36,7 +36,7 @@ TileFrustum laOpaqueFrustum(uvec2 tile, uint tileSize, vec2 viewportSize, mat4 i
 
 // ---- blended depth bounds (light_assign.h: TP_LA_BLEND_*; docs/clustered.md) ----
 // The transparent list and the front slices cover only the view distances where the tile's
-// blended fragments are (shaders/blended_bounds.frag records them), not everything from the
+// blended fragments are (shaders/passes/blended_bounds.frag records them), not everything from the
 // near plane: most lights in front of the opaque surfaces float where no blended surface is.
 // Why the bound holds: the bounds pass draws the blended draws with the shading pass's vertex
 // shader (scene.vert, `precise`: bit-identical gl_Position and interpolants; its position-only
@@ -160,16 +160,14 @@ uint laListStart(uint tileCount, uint offset) { return tileCount * TP_LA_HEADER_
 // TP_LA_LIST_STORE(slot, k): write candidate light k (its light index, however the includer
 // maps it) into slot `slot`.
 #ifdef TP_LA_LIST_STORE
+#include "include/light_list_walk.glsl"
 // Stores the lights of one survivor word (candidates firstCandidate + bit) at
 // listStart + pos, pos + 1, ...; a light at or beyond `capacity` is not stored (the caller
 // counts it as dropped). Returns the next pos.
 uint laStoreWord(uint bits, uint firstCandidate, uint listStart, uint pos, uint capacity) {
-    for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-        int lsb = findLSB(bits);
-        bits &= bits - 1u;
+    TP_FOR_EACH_BIT(bits, lsb,
         if (pos < capacity) TP_LA_LIST_STORE(listStart + pos, firstCandidate + uint(lsb));
-        ++pos;
-    }
+        ++pos;)
     return pos;
 }
 #endif

@@ -19,7 +19,7 @@ namespace tp::gpu {
 // depth (light_assign.glsl: laFrontSlices); the rest cut the opaque range.
 #define TP_LA_FRONT_SLICE_SHARE 4u
 
-// Blended depth bounds (core/passes/blended_bounds.h, shaders/blended_bounds.frag): per
+// Blended depth bounds (core/passes/blended_bounds.h, shaders/passes/blended_bounds.frag): per
 // tile, the nearest and farthest view distance (-z, > 0) of the blended fragments that the
 // blended shading pass will shade, as float bits (non-negative floats order like their
 // bits): words [0, tiles) the minimum (+inf bits = 0x7f800000: no blended fragment),

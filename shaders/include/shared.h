@@ -42,11 +42,8 @@
 #define TP_MIN_ROUGHNESS 0.03f     // perceptual roughness floor: keeps GGX D finite
 #define TP_MIN_LIGHT_DISTANCE 0.01f // inverse-square falloff clamped at 1 cm
 
-#ifdef TP_GLSL
-#define TP_STRUCT(name) struct name
-#else
+#ifndef TP_GLSL
 namespace tp::gpu {
-#define TP_STRUCT(name) struct name
 #endif
 
 // Vertex pulling: one interleaved vertex, uv split across the two w components so the

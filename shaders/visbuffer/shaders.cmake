@@ -5,39 +5,12 @@ triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_masked_fra
 # --vis-blended compute: the blended fragment lists.
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_frag)
 
-# The resolve: the tiled lighting pass (shaders/deferred/tiled_lighting.comp) with the
-# visibility buffer's surface reader (vis_read.glsl), in the variants the pass names
-# (core/passes/tiled_lighting.cpp: shaderName): m = 0 single-sample ids, 1 per-sample ids,
-# 2 per-sample ids and per-sample hdr (blended under MSAA, forward); t = transparent light
-# lists; d = debug outputs; _h16 = RGBA16F hdr. e stays 0: emission comes from the material.
-# Each with its _shadow twin (--shadows: the shadow atlas, set 2).
-# Extra defines after the lists of m and t values.
-function(vis_tiled_variants family ms ts)
-  foreach(m ${ms})
-    foreach(t ${ts})
-      foreach(d 0 1)
-        set(defs TP_VISBUFFER=1 TP_EMISSIVE=0 ${ARGN})
-        if(m GREATER 0)
-          list(APPEND defs TP_MSAA=1)
-        endif()
-        if(m EQUAL 2)
-          list(APPEND defs TP_HDR_MSAA=1)
-        endif()
-        if(t)
-          list(APPEND defs TP_TRANSPARENT=1)
-        endif()
-        if(d)
-          list(APPEND defs TP_DEBUG=1)
-        endif()
-        set(name ${family}_m${m}_e0_t${t}_d${d})
-        triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp ${name}_comp DEFINES ${defs})
-        triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/../deferred/tiled_lighting.comp ${name}_h16_comp DEFINES ${defs} TP_HDR16=1)
-      endforeach()
-    endforeach()
-  endforeach()
-  set(SPVS ${SPVS} PARENT_SCOPE)
-endfunction()
-vis_tiled_variants(vis_tiled "0;1;2" "0;1")
+# The resolve: the library's tiled lighting with the visibility buffer's surface reader and
+# pixel (vis_resolve.comp), the variant key of passes/tiled_lighting.h: m 0/1/2 (single-sample
+# ids, per-sample ids, and per-sample hdr for the forward blended pass under MSAA), t, d,
+# _h16, each with its _shadow twin. e stays 0: emission comes from the material.
+triptych_tiled_lighting_variants(vis_tiled ${SHADER_DIR}/vis_resolve.comp MS 0 1 2 ES 0 TS 0 1)
 # --vis-blended compute: the composite in the resolve (never per-sample hdr, always the
 # transparent lists the blended fragments are lit from).
-vis_tiled_variants(vis_tiled_blend "0;1" "1" TP_VIS_BLEND=1)
+triptych_tiled_lighting_variants(vis_tiled_blend ${SHADER_DIR}/vis_resolve.comp MS 0 1 ES 0 TS 1
+  DEFINES TP_VIS_BLEND=1)

@@ -12,6 +12,7 @@
 // batches is the composite of the sums.
 #ifndef TP_VIS_BLEND_GLSL
 #define TP_VIS_BLEND_GLSL
+#include "include/light_list_walk.glsl"
 
 layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_BLEND_HEADS) readonly buffer BlendHeads {
     uint bHeads[];
@@ -90,18 +91,15 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
     const uint offset = tOffsets[tileIndex];
     const uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, offset);
     const uint capacity = tOffsets[tileIndex + 1u] - offset;
-    const uint first = draw.TP_DEF_LIGHT_FIRST, end = draw.TP_DEF_LIGHT_END;
+    const uint first = draw.TP_TL_LIGHT_FIRST, end = draw.TP_TL_LIGHT_END;
     vec3 sum = vec3(0.0);
     if (kBinned) {
-        const DefCandidates c = defCandidates(tileIndex); // read once, as transparent.frag does
+        const TlCandidates c = tlCandidates(tileIndex); // read once, as blended_forward.frag does
         for (uint w = first / 32u; w < min((end + 31u) / 32u, capacity); ++w) {
             uint bits = tLists[start + w];
-            for (uint b = 0u; b < 32u && bits != 0u; ++b) {
-                uint lsb = uint(findLSB(bits));
-                bits &= bits - 1u;
-                uint i = w * 32u + lsb;
-                if (i >= first && i < end) sum += evalLightShadowed(lights[defCandidateLight(c, i)], ss);
-            }
+            TP_FOR_EACH_BIT(bits, lsb,
+                uint i = w * 32u + uint(lsb);
+                if (i >= first && i < end) sum += evalLightShadowed(lights[tlCandidateLight(c, i)], ss);)
         }
         return sum;
     }

@@ -1,6 +1,5 @@
-// The visibility buffer's surface reader for the tiled lighting pass (included by
-// deferred/tiled_lighting.comp under TP_VISBUFFER, in place of gbuffer_read.glsl, with the same
-// entry points). A sample's id names a draw and a triangle (vis_shared.h); the reader fetches
+// The visibility buffer's surface reader for the pass library's tiled lighting (the interface
+// passes/tiled_lighting_inputs.glsl declares; visbuffer/vis_resolve.comp puts them together). A sample's id names a draw and a triangle (vis_shared.h); the reader fetches
 // the triangle's three vertices (the scene's index and vertex buffers), intersects the ray
 // through the shaded location with the triangle's plane, and from the hit's barycentrics and
 // their analytic screen-space derivatives interpolates the vertex attributes and evaluates the
@@ -9,12 +8,15 @@
 // hardware's derivatives.
 #ifndef TP_VIS_READ_GLSL
 #define TP_VIS_READ_GLSL
+#ifdef TP_VIS_BLEND // --vis-blended compute: the resolve composites the blended fragments
+#define TP_TL_COMPOSITES_BLENDED
+#endif
 #include "visbuffer/vis_shared.h"
 #include "include/tile_culling.glsl" // viewZFromDepth
 #include "include/unproject.glsl"
 
 layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
-layout(constant_id = TP_DEF_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
+layout(constant_id = TP_TL_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
 #include "include/sample_locations.glsl"
 
@@ -26,7 +28,7 @@ layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
 #define FETCH(t, p, s) texelFetch(t, p, 0)
 #endif
 layout(set = TP_SET_PASS, binding = TP_VIS_BINDING_IDS) uniform VTEX gIds;
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_DEPTH) uniform VTEX gDepth;
+layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEPTH) uniform VTEX gDepth;
 layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_INDICES) readonly buffer VisIndices {
     uint visIndices[];
 };

@@ -1,5 +1,5 @@
-// The visibility buffer's pixel in the tiled lighting pass (deferred/tiled_lighting.comp under
-// TP_VISBUFFER, in place of the G-buffer's shadePixel; needs its shade and writeHdr). A pixel
+// The visibility buffer's pixel in the tiled lighting pass (vis_resolve.comp: in place of the
+// library's passes/tiled_lighting_pixel.glsl; needs its shade and writeHdr). A pixel
 // whose samples hold one triangle is shaded once at its centre. Otherwise, at --msaa-shading
 // pixel, once per distinct triangle at the centre (what a forward pass's fragment does for
 // each primitive covering the pixel, and the centre reference for each sample), reused by

@@ -1,15 +1,12 @@
 // The visibility buffer's GPU interface (C++ and GLSL): the id it stores per sample, its
 // per-draw table and its set-1 bindings beside the tiled lighting pass's
-// (include/tiled_lighting.h), whose bindings it shares.
+// (passes/tiled_lighting.h), whose bindings it shares.
 #ifndef TP_VIS_SHARED_H
 #define TP_VIS_SHARED_H
 #include "include/glsl_cpp.h"
 
-#ifdef TP_GLSL
-#define TP_STRUCT(name) struct name
-#else
+#ifndef TP_GLSL
 namespace tp::gpu {
-#define TP_STRUCT(name) struct name
 #endif
 
 // Packed id per sample: (draw + 1) << triangleBits | triangle, 0 = no geometry. `draw` indexes

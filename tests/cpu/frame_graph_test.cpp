@@ -247,17 +247,17 @@ TEST(ShaderReflection, EveryEmbeddedShaderReflects) {
 }
 
 TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
-    const std::vector<SetBinding>& b = reflectShaderSet("deferred_transparent_frag", TP_SET_PASS);
+    const std::vector<SetBinding>& b = reflectShaderSet("blended_forward_frag", TP_SET_PASS);
     // The transparent lists, their slice rows (clustered), the blended depth bounds, the
     // binned candidates (binned: the lists are bitmasks over them).
     ASSERT_EQ(b.size(), 4u);
-    EXPECT_EQ(b[0].binding, uint32_t(TP_DEF_FWD_BINDING_LISTS));
+    EXPECT_EQ(b[0].binding, uint32_t(TP_BF_BINDING_LISTS));
     EXPECT_EQ(b[0].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-    EXPECT_EQ(b[1].binding, uint32_t(TP_DEF_FWD_BINDING_MASKS));
+    EXPECT_EQ(b[1].binding, uint32_t(TP_BF_BINDING_MASKS));
     EXPECT_EQ(b[1].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-    EXPECT_EQ(b[2].binding, uint32_t(TP_DEF_FWD_BINDING_BLEND_BOUNDS));
+    EXPECT_EQ(b[2].binding, uint32_t(TP_BF_BINDING_BLEND_BOUNDS));
     EXPECT_EQ(b[2].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-    EXPECT_EQ(b[3].binding, uint32_t(TP_DEF_FWD_BINDING_CANDIDATES));
+    EXPECT_EQ(b[3].binding, uint32_t(TP_BF_BINDING_CANDIDATES));
     EXPECT_EQ(b[3].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_TRUE(reflectShaderSet("scene_vert", TP_SET_PASS).empty());
 }
@@ -265,36 +265,36 @@ TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
 TEST(ShaderReflection, AMismatchedPassSetIsAOneLineErrorNamingPassBindingAndShader) {
     PassSet set;
     set.pass = "transparent_forward";
-    set.bindings = {{TP_DEF_FWD_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                    {TP_DEF_FWD_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                    {TP_DEF_FWD_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                    {TP_DEF_FWD_BINDING_CANDIDATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    set.bindings = {{TP_BF_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                    {TP_BF_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                    {TP_BF_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                    {TP_BF_BINDING_CANDIDATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     EXPECT_EQ(errorOf([&] {
-                  checkPassBindings(&set, {"scene_vert", "deferred_transparent_frag"});
+                  checkPassBindings(&set, {"scene_vert", "blended_forward_frag"});
               }),
               "");
 
     PassSet wrongType = set;
     wrongType.bindings[0].type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     EXPECT_EQ(
-        errorOf([&] { checkPassBindings(&wrongType, {"deferred_transparent_frag"}); }),
-        "pass 'transparent_forward': binding " + std::to_string(TP_DEF_FWD_BINDING_LISTS) +
-            " (storage image) is declared as storage buffer by shader 'deferred_transparent_frag'");
+        errorOf([&] { checkPassBindings(&wrongType, {"blended_forward_frag"}); }),
+        "pass 'transparent_forward': binding " + std::to_string(TP_BF_BINDING_LISTS) +
+            " (storage image) is declared as storage buffer by shader 'blended_forward_frag'");
 
     PassSet extra = set;
     extra.bindings.push_back({6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    EXPECT_EQ(errorOf([&] { checkPassBindings(&extra, {"deferred_transparent_frag"}); }),
+    EXPECT_EQ(errorOf([&] { checkPassBindings(&extra, {"blended_forward_frag"}); }),
               "pass 'transparent_forward': binding 6 (storage buffer) is not declared by shader "
-              "'deferred_transparent_frag'");
+              "'blended_forward_frag'");
 
     PassSet missing = set;
     missing.bindings.clear();
     EXPECT_NE(errorOf([&] {
-                  checkPassBindings(&missing, {"deferred_transparent_frag"});
-              }).find("shader 'deferred_transparent_frag' declares binding"),
+                  checkPassBindings(&missing, {"blended_forward_frag"});
+              }).find("shader 'blended_forward_frag' declares binding"),
               std::string::npos);
     EXPECT_NE(errorOf([&] {
-                  checkPassBindings(nullptr, {"deferred_transparent_frag"});
+                  checkPassBindings(nullptr, {"blended_forward_frag"});
               }).find("a pipeline without a pass set"),
               std::string::npos);
     EXPECT_EQ(errorOf([&] { checkPassBindings(nullptr, {"scene_vert"}); }), "");

@@ -101,7 +101,7 @@ TEST(GpuLayer, FrameGraphMakesPassSetsFromUsesAndPipelinesCheckThemAgainstShader
         g.addPass("fill", {{lists, Use::TransferDst}}, [](PassContext&) {});
         g.addPass(
             "transparent_forward",
-            {{lists, Use::StorageRead, TP_DEF_FWD_BINDING_LISTS}, {hdr, Use::ColorAttachment}},
+            {{lists, Use::StorageRead, TP_BF_BINDING_LISTS}, {hdr, Use::ColorAttachment}},
             [](PassContext&) {});
         g.exportResource("hdr", hdr);
         g.compile();
@@ -109,7 +109,7 @@ TEST(GpuLayer, FrameGraphMakesPassSetsFromUsesAndPipelinesCheckThemAgainstShader
 
         PassSet set = g.createPassSet("transparent_forward");
         ASSERT_EQ(set.bindings.size(), 1u);
-        EXPECT_EQ(set.bindings[0].binding, uint32_t(TP_DEF_FWD_BINDING_LISTS));
+        EXPECT_EQ(set.bindings[0].binding, uint32_t(TP_BF_BINDING_LISTS));
         EXPECT_EQ(set.bindings[0].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
         // The wrong shader for this set: refused before Vulkan sees it, naming pass and shader.
         try {

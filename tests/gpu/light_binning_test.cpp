@@ -268,7 +268,7 @@ double counter(const RunResult& r, const std::string& name) {
 
 // Every registered renderer that reads --light-bin. The GPU's runs equal the CPU's (above),
 // and each pipeline's lists keep their runs' order (tiled lighting compacts its survivors in
-// ascending candidate order: deferred/ordered_lists.glsl), so the images are the same byte for
+// ascending candidate order: passes/ordered_lists.glsl), so the images are the same byte for
 // byte on any device.
 void expectSameImages(const Scene& scene, RenderSettings s) {
     auto ctx = makeValidatedContext();

@@ -5,11 +5,12 @@
 // invocations, and the shading sums a list in its order: the image then changes in its last
 // bits from run to run (it did on an H100 with the opaque list; the transparent index lists of
 // --light-cull all were the last such append).
-// The includer declares: shared uint sBits[TP_DEF_TILE_LIGHT_CAPACITY / 32], sLights[...],
+// The includer declares: shared uint sBits[TP_TL_TILE_LIGHT_CAPACITY / 32], sLights[...],
 // sCount, sTransparentCount; TP_GROUP; candidateLight/candidateCount (candidates.glsl); under
 // TP_TRANSPARENT the buffer tLists, TransparentRun and transparentRun().
-#ifndef TP_DEF_ORDERED_LISTS_GLSL
-#define TP_DEF_ORDERED_LISTS_GLSL
+#ifndef TP_TL_ORDERED_LISTS_GLSL
+#define TP_TL_ORDERED_LISTS_GLSL
+#include "include/light_list_walk.glsl"
 
 // Survivors of sBits' words [0, w).
 uint survivorsBefore(uint w) {
@@ -24,26 +25,27 @@ uint survivorsBefore(uint w) {
 // `placed` on. toShared: into sLights (the batch's opaque list);
 // otherwise into the transparent run at `start`, positions from `capacity` on left out (the
 // caller counts them as dropped).
+// Survivor `light` at position `pos` of the shared list or of the transparent run at `start`
+// (positions from `capacity` on left out).
+void storeSurvivor(bool toShared, uint pos, uint light, uint start, uint capacity) {
+    if (toShared) sLights[pos] = light;
+#ifdef TP_TRANSPARENT
+    else if (pos < capacity) tLists[start + pos] = light;
+#endif
+}
+
 void compactBits(uint tileIndex, uint first, uint words, uint placed, bool toShared, uint start, uint capacity) {
     for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
         uint pos = placed + survivorsBefore(w);
         uint bits = sBits[w];
-        for (uint k = 0u; k < 32u && bits != 0u; ++k, ++pos) {
-            uint b = uint(findLSB(bits));
-            bits &= bits - 1u;
-            uint light = candidateLight(tileIndex, first + w * 32u + b);
-            if (toShared) sLights[pos] = light;
-#ifdef TP_TRANSPARENT
-            else if (pos < capacity) tLists[start + pos] = light;
-#endif
-        }
+        TP_FOR_EACH_BIT(bits, lsb, storeSurvivor(toShared, pos++, candidateLight(tileIndex, first + w * 32u + uint(lsb)), start, capacity);)
     }
 }
 
 #ifndef TP_LISTS_ONLY
 // The batch's survivors into sLights, in ascending candidate order (compactBits).
 void compactList(uint tileIndex) {
-    const uint first = draw.TP_DEF_LIGHT_FIRST, end = min(draw.TP_DEF_LIGHT_END, candidateCount(tileIndex));
+    const uint first = draw.TP_TL_LIGHT_FIRST, end = min(draw.TP_TL_LIGHT_END, candidateCount(tileIndex));
     const uint words = end > first ? (end - first + 31u) / 32u : 0u;
     compactBits(tileIndex, first, words, 0u, true, 0u, 0u);
     if (gl_LocalInvocationIndex == 0u) sCount = survivorsBefore(words);
@@ -61,8 +63,8 @@ void cullTransparentIndices(uvec2 tile) {
     const TransparentRun t = transparentRun(tile);
     const uint candidates = t.blended.any ? candidateCount(tileIndex) : 0u; // none where no blended fragment is
     uint placed = 0u; // the earlier chunks' survivors: the same in every invocation
-    for (uint first = 0u; first < candidates; first += TP_DEF_TILE_LIGHT_CAPACITY) {
-        const uint n = min(candidates - first, TP_DEF_TILE_LIGHT_CAPACITY), words = (n + 31u) / 32u;
+    for (uint first = 0u; first < candidates; first += TP_TL_TILE_LIGHT_CAPACITY) {
+        const uint n = min(candidates - first, TP_TL_TILE_LIGHT_CAPACITY), words = (n + 31u) / 32u;
         for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) sBits[w] = 0u;
         barrier();
         for (uint i = gl_LocalInvocationIndex; i < n; i += TP_GROUP * TP_GROUP)

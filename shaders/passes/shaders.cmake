@@ -1,0 +1,22 @@
+# The pass library's own shaders (core/passes/; names are what its passes ask
+# core/gpu/pipelines for). The tiled lighting pass is compiled per surface source, by the
+# pipelines' lists (triptych_tiled_lighting_variants, passes/tiled_lighting.cmake).
+# The masked depth prepass (and the shadow faces' alpha test).
+triptych_add_shader(SPVS ${SHADER_DIR}/prepass_mask.frag prepass_mask_frag)
+# Blended depth bounds (core/passes/blended_bounds.h): per-sample inputs / once per
+# pixel (as the blended shading).
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_bounds.frag blended_bounds_frag)
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_bounds.frag blended_bounds_pixel_frag
+  DEFINES TP_INPUTS_AT_PIXEL=1)
+# The same with scene.vert's whole interface (tests: BlendedBoundsConfig::fullInterface).
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_bounds.frag blended_bounds_full_frag
+  DEFINES TP_LA_BLEND_FULL_INTERFACE=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_bounds.frag blended_bounds_pixel_full_frag
+  DEFINES TP_INPUTS_AT_PIXEL=1 TP_LA_BLEND_FULL_INTERFACE=1)
+# The hybrid's blended forward pass (core/passes/blended_forward.h): per sample (1x,
+# --msaa-shading sample) or, under MSAA at --msaa-shading pixel, once per pixel at its centre
+# (as Forward+'s and multipass's blended draws). Each with its _shadow twin (--shadows: the
+# blended surfaces sample the atlas too).
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_forward_frag)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_forward_pixel_frag
+  DEFINES TP_INPUTS_AT_PIXEL=1)

@@ -1,0 +1,217 @@
+// The tiled lighting pass, part 4 of 4 (passes/tiled_lighting_inputs.glsl lists the parts):
+// the culling, the ordered lists, the clustered slice rows and main.
+
+void cull(uvec2 tile, bool hasGeometry) {
+    uint groupSize = TP_GROUP * TP_GROUP;
+    vec2 size = vec2(frame.viewport.xy);
+    float nearDepth = laTileNearDepth(), farDepth = laTileFarDepth();
+    TileFrustum f = laOpaqueFrustum(tile, kTileSize, size, frame.invProj, nearDepth, farDepth);
+    uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
+    uint candidates = candidateCount(tileIndex);
+#ifdef TP_TRANSPARENT
+    const TransparentRun t = transparentRun(tile);
+#endif
+#ifndef TP_LISTS_ONLY
+    // A survivor sets its bit in sBits (bit i: this batch's candidate i); compactList turns
+    // the bits into the list.
+    const uint first = draw.TP_TL_LIGHT_FIRST, end = min(draw.TP_TL_LIGHT_END, candidates);
+    for (uint i = first + gl_LocalInvocationIndex; hasGeometry && i < end; i += groupSize) {
+        uint light = candidateLight(tileIndex, i);
+        if (lightInTile(lights[light], f, frame.view)) atomicOr(sBits[(i - first) >> 5u], 1u << ((i - first) & 31u));
+    }
+#endif
+#ifdef TP_TRANSPARENT
+    // Binned: every candidate, once (first batch), sets its bit in the tile's mask (atomicOr:
+    // the same mask whatever the order); a loop of candidates / 64 iterations per invocation,
+    // none where no blended fragment is shaded. Index lists: cullTransparentIndices.
+    for (uint i = gl_LocalInvocationIndex; kBinned && firstBatch() && t.blended.any && i < candidates; i += groupSize) {
+        if (lightInTile(lights[candidateLight(tileIndex, i)], t.frustum, frame.view)) {
+            atomicAdd(sTransparentCount, 1u);
+            if ((i >> 5u) < t.capacity) atomicOr(tLists[t.start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
+            else atomicAdd(sMaskDropped, 1u); // counted, never silent
+        }
+    }
+#endif
+}
+
+// The culling's survivors into ordered lists: compactList (the opaque list in sLights) and
+// cullTransparentIndices (the transparent index lists).
+#include "passes/ordered_lists.glsl"
+
+#if defined(TP_TRANSPARENT) && !defined(TP_LISTS_ONLY)
+// Clustered: the slice rows of tile `tileIndex`'s transparent list, for the blended pass
+// (passes/blended_forward.frag): front slices from the nearest blended fragment to the nearest opaque
+// depth (light_assign.glsl: laFrontNear), range
+// slices over the opaque range (light_assign.glsl: laFrontSlices). A light's bit is set in
+// every slice its padded depth interval reaches (laLightSlices: conservative). Each
+// invocation owns whole 32-light words and writes each word of every row once: no clear,
+// no atomics. After memoryBarrierBuffer + barrier (the list is complete).
+uint gWordBits[64]; // kSlices <= 64 (core/lightassign/knobs.cpp)
+void writeTransparentSlices(uint tileIndex) {
+    const uint tileCount = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
+    const uint offset = tOffsets[tileIndex];
+    const uint kept = min(sTransparentCount, tOffsets[tileIndex + 1u] - offset);
+    const uint start = laListStart(tileCount, offset);
+    // Binned: rows over the candidates, as the list's mask (bit p: candidate p); a row bit
+    // is set only where the mask's is.
+    const uint words = kBinned ? tOffsets[tileIndex + 1u] - offset : (kept + 31u) / 32u;
+    const bool geometry = laTileHasGeometry();
+    const float sliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
+    const float sliceFar = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
+    const uint front = laFrontSlices(kSlices, true);
+    const LaSlicing s = laSlicing(laFrontNear(tileBlendedBounds(tileIndex), sliceNear), sliceNear,
+                                  laSliceScale(sliceNear, sliceFar, kSlices, front), kSlices, front);
+    const uint base = kBinned ? tlMaskRowsBase(tileCount, offset, kSlices)
+                              : tlClusterRowsBase(tileCount, offset, tileIndex, kSlices);
+    for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
+        for (uint sl = 0u; sl < kSlices; ++sl) gWordBits[sl] = 0u;
+        uint mask = kBinned ? tLists[start + w] : 0u;
+        for (uint b = 0u; b < 32u && (kBinned ? mask >> b != 0u : w * 32u + b < kept); ++b) {
+            if (kBinned && (mask & (1u << b)) == 0u) continue;
+            LightGpu light = lights[kBinned ? candidateLight(tileIndex, w * 32u + b) : tLists[start + w * 32u + b]];
+            vec4 sphere = lightSphereView(light, frame.view);
+            uvec2 range = light.type == TP_LIGHT_DIRECTIONAL ? uvec2(0u, kSlices - 1u)
+                                                             : laLightSlices(sphere.xyz, sphere.w, s);
+            for (uint sl = range.x; sl <= range.y; ++sl) gWordBits[sl] |= 1u << b;
+        }
+        for (uint sl = 0u; sl < kSlices; ++sl) tMasks[base + sl * words + w] = gWordBits[sl];
+    }
+    if (gl_LocalInvocationIndex == 0u) {
+        tMasks[2u * tileIndex] = floatBitsToUint(s.sliceNear);
+        tMasks[2u * tileIndex + 1u] = floatBitsToUint(s.sliceScale);
+    }
+}
+#endif
+
+// The pixels of this invocation: (k % perAxis, k / perAxis) steps of TP_GROUP.
+ivec2 pixelOf(uvec2 tile, uint k) {
+    uint perAxis = kTileSize / TP_GROUP;
+    uvec2 local = gl_LocalInvocationID.xy + uvec2(k % perAxis, k / perAxis) * TP_GROUP;
+    return ivec2(tile * kTileSize + local);
+}
+
+bool insideViewport(ivec2 p) { return all(lessThan(uvec2(p), frame.viewport.xy)); }
+
+// The tile's shared state cleared, its depth bounds reduced and (clustered) its slices set.
+void beginTile(uvec2 tile) {
+    laDepthBoundsBegin();
+    if (gl_LocalInvocationIndex == 0u) {
+        sCount = 0u;
+        sTransparentCount = 0u;
+        sMaskDropped = 0u;
+        sEdges = 0u;
+    }
+    if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
+        for (uint i = gl_LocalInvocationIndex; i < kMaskWords; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
+    for (uint i = gl_LocalInvocationIndex; i < TP_TL_TILE_LIGHT_CAPACITY / 32u; i += TP_GROUP * TP_GROUP) sBits[i] = 0u;
+    barrier();
+    laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
+    barrier();
+    if (kSlices > 0u && gl_LocalInvocationIndex == 0u) {
+        // Slices over the tile's opaque range (laSliceOf; nothing to slice without geometry).
+        bool geometry = laTileHasGeometry();
+        sSliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
+        float far = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
+        sSliceScale = laSliceScale(sSliceNear, far, kSlices, 0u);
+    }
+#ifdef TP_TRANSPARENT
+    if (kBinned && firstBatch()) {
+        // The tile's candidate bitmask starts empty (cull sets its bits with atomicOr).
+        uint t = tile.y * gl_NumWorkGroups.x + tile.x;
+        uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[t]);
+        for (uint w = gl_LocalInvocationIndex; w < tOffsets[t + 1u] - tOffsets[t]; w += TP_GROUP * TP_GROUP)
+            tLists[start + w] = 0u;
+        memoryBarrierBuffer();
+        barrier();
+    }
+#endif
+}
+
+// The tile's lists: the culling, the opaque list in sLights, the transparent list and
+// (clustered) the slice masks and rows. Ends after a barrier: the lists are complete.
+void buildLists(uvec2 tile) {
+    cull(tile, laTileHasGeometry());
+#ifndef TP_LISTS_ONLY
+    barrier(); // every survivor's bit
+    compactList(tile.y * gl_NumWorkGroups.x + tile.x);
+#endif
+#ifdef TP_TRANSPARENT
+    if (!kBinned && firstBatch()) { // uniform over the group
+        barrier(); // compactList has read sBits
+        cullTransparentIndices(tile);
+    }
+#endif
+#ifndef TP_LISTS_ONLY
+#ifdef TP_TL_COMPOSITES_BLENDED
+    memoryBarrierBuffer(); // the transparent list, which the blended fragments are lit from
+#elif defined(TP_TRANSPARENT)
+    if (kSlices > 0u) memoryBarrierBuffer(); // the transparent list, for writeTransparentSlices
+#endif
+    barrier();
+    if (kSlices > 0u) {
+        markSlices();
+#if defined(TP_TRANSPARENT) && !defined(TP_TL_COMPOSITES_BLENDED) // no blended pass to read slice rows
+        if (firstBatch()) writeTransparentSlices(tile.y * gl_NumWorkGroups.x + tile.x);
+#endif
+        barrier();
+    }
+#endif
+}
+
+#ifndef TP_LISTS_ONLY
+// This invocation's pixels of the tile, shaded from the lists (and their debug texels).
+void shadeTile(uvec2 tile) {
+    uint pixelsPerInvocation = (kTileSize / TP_GROUP) * (kTileSize / TP_GROUP);
+    // A later batch with no light in this tile adds nothing (sCount is uniform here), unless
+    // blended fragments composited here may have lights in it.
+#ifdef TP_TL_COMPOSITES_BLENDED
+    uint shadedPixels = firstBatch() || sCount > 0u || transparentRun(tile).blended.any ? pixelsPerInvocation : 0u;
+#else
+    uint shadedPixels = firstBatch() || sCount > 0u ? pixelsPerInvocation : 0u;
+#endif
+    for (uint k = 0u; k < shadedPixels; ++k) {
+        ivec2 p = pixelOf(tile, k);
+        if (!insideViewport(p)) continue;
+        bool edge = shadePixel(p);
+        if (edge) atomicAdd(sEdges, 1u);
+#ifdef TP_DEBUG
+        vec2 rm = debugRoughMetal(p);
+        if (firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
+#endif
+    }
+}
+#endif
+
+// The tile's statistics (and, first batch, its transparent list's header), by one invocation.
+void writeTileStats(uvec2 tile) {
+    uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
+    if (firstBatch()) {
+        tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, 0u);
+#ifdef TP_TRANSPARENT
+        uint capacity = tOffsets[tileIndex + 1u] - tOffsets[tileIndex];
+        // Binned: every survivor has its bit (the mask covers every candidate).
+        uint kept = kBinned ? sTransparentCount - sMaskDropped : min(sTransparentCount, capacity);
+        tLists[laHeaderWord(tileIndex, TP_LA_COUNT)] = kept;
+        tLists[laHeaderWord(tileIndex, TP_LA_START)] =
+            laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[tileIndex]);
+        tLists[laHeaderWord(tileIndex, TP_LA_DROPPED)] = sTransparentCount - kept;
+        tLists[laHeaderWord(tileIndex, TP_LA_FOUND)] = sTransparentCount;
+#endif
+    } else {
+        tileStats[tileIndex].x += sCount;
+    }
+    // Overflow: the tile met more lights than one shared list holds (its lights came
+    // from several batches; none is dropped).
+    if (tileStats[tileIndex].x > TP_TL_TILE_LIGHT_CAPACITY) tileStats[tileIndex].w = 1u;
+}
+
+void main() {
+    uvec2 tile = gl_WorkGroupID.xy;
+    beginTile(tile);
+    buildLists(tile);
+#ifndef TP_LISTS_ONLY
+    shadeTile(tile);
+#endif
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) writeTileStats(tile);
+}
