@@ -23,8 +23,8 @@
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/scene_gpu.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/util/files.h"
 #include "core/util/parallel.h"
 

@@ -14,9 +14,9 @@
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/frame_runner.h"
-#include "core/render/scene_gpu.h"
+#include "core/camera/camera_file.h"
+#include "core/runner/frame_runner.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/util/files.h"
 
 namespace tp::cli {

@@ -21,9 +21,9 @@
 #include "compare/sweep_output.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/scene_gpu.h"
-#include "core/render/view_settings.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "core/renderer/view_settings.h"
 #include "core/util/clock.h"
 #include "core/util/files.h"
 

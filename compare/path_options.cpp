@@ -6,7 +6,7 @@
 
 #include "compare/svg_plot.h"
 #include "core/cli/options.h"
-#include "core/render/camera_path.h"
+#include "core/camera/camera_path.h"
 #include "core/scene/light_motion.h"
 
 namespace tp::cli {

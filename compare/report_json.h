@@ -15,8 +15,8 @@
 #include "core/gpu/context.h"
 #include "core/image/difference.h"
 #include "core/image/metrics.h"
-#include "core/passes/shadow_plan.h"
-#include "core/render/frame_runner.h"
+#include "core/gpuscene/shadow_plan.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
 namespace tp::cli {

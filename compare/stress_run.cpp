@@ -19,7 +19,7 @@
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/util/clock.h"
 #include "core/util/files.h"
 

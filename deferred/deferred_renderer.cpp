@@ -12,7 +12,7 @@
 #include "core/passes/hybrid_blended.h"
 #include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "deferred/def_settings.h"
 #include "deferred/gbuffer_pass.h"
 #include "deferred/volume_lighting.h"

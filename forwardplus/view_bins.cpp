@@ -4,7 +4,7 @@
 
 #include "core/lightassign/light_bins.h"
 #include "core/passes/light_binning.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 
 namespace tp::fp {
 

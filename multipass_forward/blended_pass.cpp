@@ -16,8 +16,8 @@
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {

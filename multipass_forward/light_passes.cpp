@@ -12,7 +12,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {

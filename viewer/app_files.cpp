@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/camera_path.h"
+#include "core/camera/camera_file.h"
+#include "core/camera/camera_path.h"
 #include "viewer/viewer_app.h"
 
 namespace tp::view {

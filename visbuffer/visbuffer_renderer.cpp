@@ -12,7 +12,7 @@
 #include "core/passes/hybrid_blended.h"
 #include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "visbuffer/blended_ids_pass.h"
 #include "visbuffer/draw_table.h"
 #include "visbuffer/fragment_bound.h"

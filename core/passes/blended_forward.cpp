@@ -6,7 +6,7 @@
 #include "core/gpu/resources.h"
 #include "core/gpu/stand_ins.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "include/tiled_lighting.h"
 
 namespace tp {

@@ -6,8 +6,8 @@
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/passes/tiled_lighting.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "include/light_assign.h"
 
 namespace tp {

@@ -5,7 +5,7 @@
 #include "core/gpu/context.h"
 #include "core/passes/blended_lists.h"
 #include "core/passes/debug_views.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "include/tiled_lighting.h"
 
 namespace tp {

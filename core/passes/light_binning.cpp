@@ -9,8 +9,8 @@
 #include "core/gpu/vk_check.h"
 #include "core/lightassign/compact_layout.h"
 #include "core/lightassign/tile_bound.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "include/light_binning.h"
 
 namespace tp::la {

@@ -11,8 +11,8 @@
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
+#include "core/gpuscene/scene_gpu.h"
 
 namespace tp {
 

@@ -9,7 +9,7 @@
 #include "core/passes/shadow_maps.h"
 #include "core/reference/reference_settings.h"
 #include "core/reference/shadow_rays.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 
 namespace tp {
 namespace {

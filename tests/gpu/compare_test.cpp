@@ -22,8 +22,8 @@
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
-#include "core/render/camera_file.h"
-#include "core/render/renderer.h"
+#include "core/camera/camera_file.h"
+#include "core/renderer/renderer.h"
 #include "temp_path.h"
 
 namespace tp::test {

@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "core/image/metrics.h"
-#include "core/render/camera.h"
+#include "core/camera/camera.h"
 #include "core/scene/lights.h"
 #include "core/scene/mesh_builder.h"
 #include "core/scene/procedural.h"
