@@ -8,8 +8,8 @@
 #include "compare/cli_common.h"
 #include "compare/commands.h"
 #include "core/camera/camera_file.h"
-#include "core/runner/frame_runner.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/runner/frame_runner.h"
 
 namespace tp::cli {
 namespace {

@@ -7,11 +7,11 @@
 #include <memory>
 
 #include "compare/cli_common.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/camera/camera_file.h"
 #include "core/runner/render_session.h"
-#include "core/gpuscene/scene_gpu.h"
 #include "core/util/clock.h"
 
 namespace tp::cli {

@@ -13,9 +13,9 @@
 #include "compare/reference_cache.h"
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"
+#include "core/gpuscene/shadow_plan.h"
 #include "core/image/difference.h"
 #include "core/image/metrics.h"
-#include "core/gpuscene/shadow_plan.h"
 #include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 

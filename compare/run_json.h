@@ -6,8 +6,8 @@
 #include "compare/cli_common.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
-#include "core/runner/frame_runner.h"
 #include "core/renderer/settings.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
 namespace tp::cli {

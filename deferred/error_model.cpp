@@ -5,9 +5,9 @@
 
 #include "core/passes/tiled_lighting.h"
 #include "core/renderer/msaa_knob.h"
+#include "core/renderer/position_allowance.h"
 #include "deferred/def_settings.h"
 #include "deferred/deferred_shared.h"
-#include "core/renderer/position_allowance.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/camera/camera.h"
 #include "core/gpu/context.h"
 #include "core/gpu/vk_check.h"
-#include "core/camera/camera.h"
 
 namespace tp {
 

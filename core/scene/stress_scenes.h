@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/scene/shadow_settings.h"
 #include "core/scene/scene.h"
+#include "core/scene/shadow_settings.h"
 #include "core/util/result.h"
 
 namespace tp::stress {
