@@ -12,7 +12,7 @@
 #include "compare/commands.h"
 #include "core/cli/options.h"
 #include "core/gpu/vk_check.h"
-#include "core/passes/shadow_plan.h"
+#include "core/scene/shadow_settings.h"
 #include "viewer/view_command.h"
 
 int main(int argc, char** argv) {

@@ -11,7 +11,7 @@
 
 #include "core/calibrate/calibration.h"
 #include "core/calibrate/efficiency.h"
-#include "core/render/frame_runner.h"
+#include "core/runner/frame_runner.h"
 
 namespace tp {
 class GpuContext;

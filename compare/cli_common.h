@@ -6,7 +6,7 @@
 #include "core/cli/options.h"
 #include "core/cli/scene_input.h"
 #include "core/image/image.h"
-#include "core/render/frame_runner.h"
+#include "core/runner/frame_runner.h"
 
 namespace tp::cli {
 

@@ -7,9 +7,9 @@
 
 #include "compare/cli_common.h"
 #include "compare/commands.h"
-#include "core/render/camera_file.h"
-#include "core/render/frame_runner.h"
-#include "core/render/scene_gpu.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "core/runner/frame_runner.h"
 
 namespace tp::cli {
 namespace {

@@ -15,7 +15,7 @@
 #include "compare/report_json.h"
 #include "compare/sweep.h"
 #include "compare/sweep_output.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "core/util/files.h"
 
 namespace tp::cli {

@@ -10,13 +10,13 @@
 #include "compare/commands.h"
 #include "compare/path_options.h"
 #include "compare/run_json.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/frame_runner.h"
-#include "core/render/scene_gpu.h"
+#include "core/runner/frame_runner.h"
 #include "core/util/files.h"
 
 namespace tp::cli {

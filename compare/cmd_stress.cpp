@@ -4,7 +4,7 @@
 
 #include "compare/commands.h"
 #include "compare/stress_run.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::cli {
 namespace {

@@ -11,19 +11,19 @@
 #include <CLI/CLI.hpp>
 
 #include "compare/calibration_file.h"
-#include "compare/reference_cache.h"
 #include "compare/commands.h"
 #include "compare/path_run.h"
+#include "compare/reference_cache.h"
 #include "compare/report_json.h"
 #include "compare/run_json.h"
 #include "compare/scene_hash.h"
 #include "compare/sweep.h"
 #include "compare/sweep_output.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/scene_gpu.h"
-#include "core/render/view_settings.h"
+#include "core/renderer/view_settings.h"
 #include "core/util/clock.h"
 #include "core/util/files.h"
 

@@ -8,7 +8,7 @@
 
 #include "compare/cli_common.h"
 #include "compare/path_options.h"
-#include "core/render/settings.h"
+#include "core/renderer/settings.h"
 
 namespace tp::cli {
 

@@ -6,7 +6,7 @@
 
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
-#include "core/render/frame_runner.h"
+#include "core/runner/frame_runner.h"
 
 namespace tp::cli {
 

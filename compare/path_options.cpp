@@ -5,8 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "compare/svg_plot.h"
+#include "core/camera/camera_path.h"
 #include "core/cli/options.h"
-#include "core/render/camera_path.h"
 #include "core/scene/light_motion.h"
 
 namespace tp::cli {

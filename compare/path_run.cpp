@@ -7,11 +7,11 @@
 #include <memory>
 
 #include "compare/cli_common.h"
+#include "core/camera/camera_file.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/render_session.h"
-#include "core/render/scene_gpu.h"
+#include "core/runner/render_session.h"
 #include "core/util/clock.h"
 
 namespace tp::cli {
@@ -85,7 +85,7 @@ void imagePass(const PathRunSetup& s, const PathInput& in, Sessions& sessions, P
     for (uint32_t v = 0; v < in.views.size(); ++v) {
         applyPathView(s.scene, s.gpuScene, in, v);
         s.gpuScene.setView(s.settings.width, s.settings.height, s.settings.msaa);
-        s.gpuScene.setShadows(s.settings.shadows);
+        planSceneShadows(s.ctx, s.gpuScene, s.settings.shadows);
         if (s.gpuScene.viewGeneration() != referenceGeneration) {
             const auto start = std::chrono::steady_clock::now();
             Result<RunResult> ref = sessions.reference->render(once);

@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/image/metrics.h"
-#include "core/render/frame_runner.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
 namespace tp::cli {

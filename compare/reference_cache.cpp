@@ -11,11 +11,11 @@
 
 #include "compare/build_identity.h"
 #include "compare/scene_hash.h"
+#include "core/cli/shadow_option.h"
 #include "core/gpu/context.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/image/image_io.h"
-#include "core/passes/shadow_plan.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/scene_gpu.h"
 
 namespace tp::cli {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "compare/cli_common.h"
 
-#include "core/render/frame_runner.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 #include "core/util/result.h"
 

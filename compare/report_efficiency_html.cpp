@@ -6,7 +6,7 @@
 
 #include "compare/report_html_parts.h"
 #include "compare/svg_plot.h"
-#include "core/render/pipeline_colour.h"
+#include "core/renderer/pipeline_colour.h"
 
 namespace tp::cli::html {
 namespace {

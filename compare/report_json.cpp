@@ -8,7 +8,8 @@
 #include <fstream>
 
 #include "compare/run_json.h"
-#include "core/render/camera_file.h"
+#include "core/camera/camera_file.h"
+#include "core/cli/shadow_option.h"
 
 namespace tp::cli {
 namespace {

@@ -13,10 +13,10 @@
 #include "compare/reference_cache.h"
 #include "compare/scene_hash.h"
 #include "core/gpu/context.h"
+#include "core/gpuscene/shadow_plan.h"
 #include "core/image/difference.h"
 #include "core/image/metrics.h"
-#include "core/passes/shadow_plan.h"
-#include "core/render/frame_runner.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
 namespace tp::cli {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "compare/efficiency_json.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::cli {
 namespace {

@@ -6,8 +6,8 @@
 #include "compare/cli_common.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
-#include "core/render/frame_runner.h"
-#include "core/render/settings.h"
+#include "core/renderer/settings.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
 namespace tp::cli {
@@ -16,7 +16,7 @@ nlohmann::json deviceJson(const GpuContext& ctx);
 nlohmann::json settingsJson(const RenderSettings& s);
 nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f);
 // Where a run's camera came from: {kind, gltf_camera | path, description}. The camera itself
-// is written by cameraToJson (core/render/camera_file.h), so that object is a camera file.
+// is written by cameraToJson (core/camera/camera_file.h), so that object is a camera file.
 nlohmann::json cameraSourceJson(const CameraSource& source);
 // Timings carry the device's name beside every figure set.
 // Memory: {resources, total_bytes, bytes_per_pixel} (per output pixel).

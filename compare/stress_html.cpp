@@ -5,7 +5,7 @@
 #include "compare/report_html_parts.h"
 #include "compare/stress_report.h"
 #include "compare/svg_plot.h"
-#include "core/render/pipeline_colour.h"
+#include "core/renderer/pipeline_colour.h"
 
 namespace tp::cli {
 namespace {
@@ -22,7 +22,7 @@ summary{font-weight:normal}
 .sw{display:inline-block;width:10px;height:10px;margin-right:5px;border-radius:2px}
 )";
 
-// A pipeline's name behind a swatch of its colour on every page (core/render/pipeline_colour.h).
+// A pipeline's name behind a swatch of its colour on every page (core/renderer/pipeline_colour.h).
 std::string pipelineName(const json& name) {
     const std::string n = name.get<std::string>();
     return std::string("<span class=\"sw\" style=\"background:") + paletteHex(pipelineColour(n)) +

@@ -2,8 +2,8 @@
 #include "compare/stress_report.h"
 
 #include "compare/run_json.h"
-#include "core/passes/shadow_plan.h"
-#include "core/render/error_model.h"
+#include "core/cli/shadow_option.h"
+#include "core/renderer/error_model.h"
 
 namespace tp::cli {
 namespace {

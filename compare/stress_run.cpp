@@ -15,11 +15,11 @@
 #include "compare/stress_report.h"
 #include "compare/stress_shadows.h"
 #include "compare/svg_plot.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/image/difference.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/scene_gpu.h"
 #include "core/util/clock.h"
 #include "core/util/files.h"
 

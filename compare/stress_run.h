@@ -1,7 +1,7 @@
 #pragma once
 // triptych stress: every selected case of the catalogue (core/scene/stress_scenes.h) through
 // the reference and every registered pipeline, measured against the case's expectations
-// (core/render/error_model.h and each pipeline's register.cpp), written as images, difference maps,
+// (core/renderer/error_model.h and each pipeline's register.cpp), written as images, difference maps,
 // stress.json and stress.html (docs/stress.md).
 #include <optional>
 #include <string>
@@ -9,8 +9,8 @@
 
 #include "compare/cli_common.h"
 #include "core/image/metrics.h"
-#include "core/render/error_model.h"
-#include "core/render/frame_runner.h"
+#include "core/renderer/error_model.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/stress_scenes.h"
 
 namespace tp::cli {

@@ -11,10 +11,11 @@
 #include <cmath>
 
 #include "compare/svg_plot.h"
+#include "core/cli/shadow_option.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/position_allowance.h"
-#include "core/render/renderer.h"
+#include "core/renderer/position_allowance.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "compare/stress_run.h"
-#include "core/passes/shadow_plan.h"
+#include "core/gpuscene/shadow_plan.h"
 
 namespace tp::cli {
 

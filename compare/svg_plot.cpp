@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/render/pipeline_colour.h"
-#include "core/render/renderer.h"
+#include "core/renderer/pipeline_colour.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/render/pipeline_colour.h" // pipelineColour: a series' palette index
+#include "core/renderer/pipeline_colour.h" // pipelineColour: a series' palette index
 
 namespace tp::cli {
 

@@ -11,7 +11,7 @@
 #include "compare/run_json.h"
 #include "compare/svg_plot.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::cli {
 namespace {

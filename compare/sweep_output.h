@@ -10,8 +10,8 @@
 
 #include "compare/flip_measure.h"
 #include "core/image/metrics.h"
-#include "core/render/frame_runner.h"
-#include "core/render/settings.h"
+#include "core/renderer/settings.h"
+#include "core/runner/frame_runner.h"
 
 namespace tp::cli {
 

@@ -2,15 +2,15 @@
 // Deferred's knobs and the typed settings its passes read, turned from RenderSettings once in
 // the factory (register.cpp builds the schema from the same declarations).
 #include "core/lightassign/knobs.h"
-#include "core/render/hdr_knob.h"
-#include "core/render/knobs.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/hdr_knob.h"
+#include "core/renderer/knobs.h"
+#include "core/renderer/msaa_knob.h"
 
 namespace tp::def {
 
 enum class GBuffer { Compact, Wide };   // --gbuffer
 enum class Lighting { Tiled, Volumes }; // --deferred-lighting
-using Hdr = HdrStorage;                 // --hdr (core/render/hdr_knob.h)
+using Hdr = HdrStorage;                 // --hdr (core/renderer/hdr_knob.h)
 
 struct Settings {
     uint32_t width = 0, height = 0;

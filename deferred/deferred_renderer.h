@@ -6,7 +6,7 @@
 // Forward+'s, half the bytes, one fp16 rounding per store) and "depth" (D32, MSAA: sample 0).
 #include <memory>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

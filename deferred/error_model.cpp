@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "core/passes/tiled_lighting.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/msaa_knob.h"
+#include "core/renderer/position_allowance.h"
 #include "deferred/def_settings.h"
 #include "deferred/deferred_shared.h"
-#include "core/render/position_allowance.h"
 #include "include/light_model.h"
 #include "include/tonemap.h"
 

@@ -1,6 +1,6 @@
 // G-buffer deferred as the rest of the program sees it: its name, its knobs, its precision
 // model for `triptych stress` (deferred/error_model.cpp).
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "deferred/def_settings.h"
 #include "deferred/deferred_renderer.h"
 #include "deferred/deferred_shared.h"

@@ -8,7 +8,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpu/stand_ins.h"
 #include "core/gpu/vk_check.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 
 namespace tp {
 

@@ -8,9 +8,9 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_classes.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/scene_gpu.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {

@@ -11,7 +11,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/msaa_knob.h"
 #include "include/shared.h"
 
 namespace tp {

@@ -14,7 +14,7 @@
 // the lists, core/lightassign/light_bins.h bins the lights (shared with tiled deferred).
 #include <memory>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

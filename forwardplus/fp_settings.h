@@ -4,9 +4,9 @@
 #include <string>
 
 #include "core/lightassign/knobs.h"
-#include "core/render/hdr_knob.h"
-#include "core/render/knobs.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/hdr_knob.h"
+#include "core/renderer/knobs.h"
+#include "core/renderer/msaa_knob.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {

@@ -7,7 +7,7 @@
 #include "core/gpu/resources.h"
 #include "core/gpu/stand_ins.h"
 #include "core/gpu/vk_check.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {

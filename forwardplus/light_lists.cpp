@@ -5,7 +5,7 @@
 
 #include "core/gpu/context.h"
 #include "core/lightassign/light_classes.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {

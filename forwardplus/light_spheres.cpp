@@ -4,7 +4,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {

@@ -1,8 +1,8 @@
 // Forward+ as the rest of the program sees it: its name, its knobs, its precision model for
 // `triptych stress`. This file is the only place outside forwardplus/ that needs to change
 // when Forward+ gains a knob: nowhere.
-#include "core/render/msaa_knob.h"
-#include "core/render/renderer.h"
+#include "core/renderer/msaa_knob.h"
+#include "core/renderer/renderer.h"
 #include "forwardplus/forwardplus_renderer.h"
 #include "forwardplus/fp_settings.h"
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_bins.h"
 #include "core/passes/light_binning.h"
-#include "core/render/scene_gpu.h"
 
 namespace tp::fp {
 

@@ -2,7 +2,7 @@
 // every opaque and masked sample (depth EQUAL against the prepass, no depth writes).
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {

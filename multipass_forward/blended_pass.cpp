@@ -15,9 +15,9 @@
 // (one_pass.frag), as engines light transparent objects.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {

@@ -11,8 +11,8 @@
 // pass only where the stencil does not hold it yet: a sample takes each light once.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "multipass_forward/multipass_shared.h"
 
 namespace tp::mp {

@@ -1,8 +1,8 @@
 #pragma once
 // Multipass forward's knobs and the typed settings its passes read (register.cpp builds the
 // schema from the same declarations).
-#include "core/render/knobs.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/knobs.h"
+#include "core/renderer/msaa_knob.h"
 
 namespace tp::mp {
 

@@ -4,9 +4,9 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/passes/depth_prepass.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/scene_gpu.h"
 #include "multipass_forward/passes.h"
 
 namespace tp {

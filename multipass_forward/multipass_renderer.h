@@ -10,7 +10,7 @@
 // and resolves into hdr. See docs/multipass_forward.md.
 #include <memory>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

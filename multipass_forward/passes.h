@@ -104,7 +104,7 @@ class ShadowedShading {
 // --msaa-shading sample (the reference's rate), else once per pixel; scene layout,
 // accumulation format.
 GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
-// Draws are recorded with recordDraw (core/render/scene_gpu.h); a light pass
+// Draws are recorded with recordDraw (core/gpuscene/scene_gpu.h); a light pass
 // gives its light as DrawPush.pad0 (TP_MP_LIGHT_INDEX), ignored by non-light shaders.
 // Binds `pipeline`, the scene set and the scene's index buffer: what every draw loop needs.
 void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline);

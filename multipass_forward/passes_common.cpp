@@ -2,7 +2,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/msaa_knob.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {

@@ -1,7 +1,7 @@
 // Multipass forward as the rest of the program sees it: its name, its knobs, its precision
 // model for `triptych stress`.
-#include "core/render/msaa_knob.h"
-#include "core/render/renderer.h"
+#include "core/renderer/msaa_knob.h"
+#include "core/renderer/renderer.h"
 #include "multipass_forward/mp_settings.h"
 #include "multipass_forward/multipass_renderer.h"
 

@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/camera/camera_file.h"
+#include "core/camera/camera_path.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_file.h"
-#include "core/render/camera_path.h"
 #include "viewer/viewer_app.h"
 
 namespace tp::view {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/render/pixel_position.h"
+#include "core/camera/pixel_position.h"
 
 namespace tp::view {
 

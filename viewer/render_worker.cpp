@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "core/cli/scene_input.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/scene/lights.h"
 #include "core/util/clock.h"
 

@@ -7,7 +7,7 @@
 // Rebuilds only what a job's state needs (view_state.h): a new scene key reloads and uploads
 // the scene, a new lights key regenerates and uploads only the lights, a new plan key (lights,
 // resolution, MSAA, knobs, overlays) plans the renderers again; a camera move only follows the
-// view: each pipeline's RendererSession (core/render/render_session.h) is kept between jobs
+// view: each pipeline's RendererSession (core/runner/render_session.h) is kept between jobs
 // and updates its per-view data in place.
 #include <condition_variable>
 #include <map>
@@ -20,8 +20,8 @@
 
 #include "core/calibrate/calibration_file.h"
 #include "core/gpu/context.h"
-#include "core/render/frame_runner.h"
-#include "core/render/render_session.h"
+#include "core/runner/frame_runner.h"
+#include "core/runner/render_session.h"
 #include "viewer/view_state.h"
 
 namespace tp::view {

@@ -11,8 +11,8 @@
 
 #include "core/cli/scene_input.h"
 #include "core/image/image_io.h"
-#include "core/render/renderer.h"
-#include "core/render/view_settings.h"
+#include "core/renderer/renderer.h"
+#include "core/renderer/view_settings.h"
 #include "core/util/clock.h"
 #include "core/util/files.h"
 #include "viewer/keys.h"

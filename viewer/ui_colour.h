@@ -1,11 +1,11 @@
 #pragma once
 // A pipeline's colour in the viewer's panels: the one report.html, sweep.html and stress.html
-// draw it in (core/render/pipeline_colour.h).
+// draw it in (core/renderer/pipeline_colour.h).
 #include <string>
 
 #include <imgui.h>
 
-#include "core/render/pipeline_colour.h"
+#include "core/renderer/pipeline_colour.h"
 
 namespace tp::view {
 

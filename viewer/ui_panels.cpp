@@ -9,8 +9,8 @@
 
 #include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/renderer.h"
-#include "core/render/view_settings.h"
+#include "core/renderer/renderer.h"
+#include "core/renderer/view_settings.h"
 #include "viewer/ui_colour.h"
 #include "viewer/viewer_app.h"
 

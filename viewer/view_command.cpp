@@ -14,7 +14,7 @@
 #include "core/cli/options.h"
 #include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/view_settings.h"
+#include "core/renderer/view_settings.h"
 #include "viewer/view_loop.h"
 
 namespace tp::view {

@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "core/reference/reference_renderer.h"
-#include "core/render/renderer.h"
-#include "core/render/view_settings.h"
+#include "core/renderer/renderer.h"
+#include "core/renderer/view_settings.h"
 
 namespace tp::view {
 namespace {

@@ -102,7 +102,7 @@ class ViewerApp {
         state_.camera = c;
         state_.cameraFromScene = false;
     }
-    // Bookmarks: one camera file each (core/render/camera_file.h), or a list of them (load
+    // Bookmarks: one camera file each (core/camera/camera_file.h), or a list of them (load
     // takes the first). Errors go to the status line.
     void saveBookmark(const std::string& path);
     void loadBookmark(const std::string& path);

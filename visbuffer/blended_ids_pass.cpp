@@ -8,9 +8,9 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/rendering.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/passes/tiled_lighting.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
 #include "visbuffer/vis_shared.h"
 
 namespace tp::vis {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::vis {
 

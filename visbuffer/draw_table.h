@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "visbuffer/vis_shared.h"
 
 namespace tp::vis {

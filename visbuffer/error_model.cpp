@@ -4,8 +4,8 @@
 #include <string>
 
 #include "core/passes/tiled_lighting.h"
-#include "core/render/msaa_knob.h"
-#include "core/render/position_allowance.h"
+#include "core/renderer/msaa_knob.h"
+#include "core/renderer/position_allowance.h"
 #include "visbuffer/lod_allowance.h"
 #include "visbuffer/vis_settings.h"
 
@@ -64,7 +64,7 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     // scene gives it; the rasterizer (and so the reference) interpolates with barycentrics of
     // vertices snapped to its sub-pixel grid: the two shaded points lie up to
     // sqrt(2) * 2^-(bits + 1) pixel widths apart on the surface, deferred's displacement
-    // (core/render/position_allowance.h), with the same per-pixel bound next to lights.
+    // (core/renderer/position_allowance.h), with the same per-pixel bound next to lights.
     // Textures: sampled at the analytic level of detail, the reference's at the hardware's
     // (lod_allowance.h); the two allowances add per pixel.
     if (in.referenceDepth) {

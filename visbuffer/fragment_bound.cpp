@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/scene/scene.h"
 
 namespace tp::vis {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/render/camera.h"
-#include "core/render/position_allowance.h"
+#include "core/camera/camera.h"
+#include "core/renderer/position_allowance.h"
 #include "include/shared.h"
 #include "include/tonemap.h"
 

@@ -1,6 +1,6 @@
 // The visibility buffer as the rest of the program sees it: its name, its knobs, its
 // precision model for `triptych stress` (visbuffer/error_model.cpp).
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "passes/tiled_lighting.h"
 #include "visbuffer/error_model.h"
 #include "visbuffer/vis_settings.h"

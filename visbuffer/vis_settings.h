@@ -5,9 +5,9 @@
 // lighting's radiance precision) and its own two: where blended surfaces are shaded and the
 // size of the blended fragment lists.
 #include "core/lightassign/knobs.h"
-#include "core/render/hdr_knob.h"
-#include "core/render/knobs.h"
-#include "core/render/msaa_knob.h"
+#include "core/renderer/hdr_knob.h"
+#include "core/renderer/knobs.h"
+#include "core/renderer/msaa_knob.h"
 
 namespace tp::vis {
 

@@ -8,7 +8,7 @@
 // Publishes "hdr" (--hdr as deferred's) and "depth" (D32, MSAA: sample 0). docs/visbuffer.md.
 #include <memory>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

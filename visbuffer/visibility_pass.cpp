@@ -3,8 +3,8 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "core/renderer/renderer.h"
 
 namespace tp::vis {
 

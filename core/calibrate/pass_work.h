@@ -9,7 +9,7 @@
 
 #include "core/gpu/graph_plan.h"
 #include "core/gpu/pass_statistics.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

@@ -7,10 +7,10 @@
 #include <sstream>
 #include <CLI/CLI.hpp>
 
-#include "core/passes/shadow_plan.h"
+#include "core/cli/shadow_option.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/renderer.h"
-#include "core/render/view_settings.h"
+#include "core/renderer/renderer.h"
+#include "core/renderer/view_settings.h"
 
 namespace tp::cli {
 
@@ -159,11 +159,7 @@ RenderSettings makeSettings(const ViewOptions& v, const GpuContext& ctx, RenderS
     s.width = w;
     s.height = h;
     s.msaa = uint32_t(v.msaa);
-    try {
-        s.shadows = parseShadowCount(v.shadows);
-    } catch (const ShadowError& e) {
-        throw UsageError(e.what());
-    }
+    s.shadows = parseShadowCount(v.shadows);
     if (v.shadowBudgetMb < 1 || v.shadowBudgetMb > 65536)
         throw UsageError("--shadow-budget " + std::to_string(v.shadowBudgetMb) +
                          ": expected 1..65536 MB");

@@ -12,8 +12,8 @@
 #include "core/cli/cli_fwd.h"
 
 #include "core/gpu/context.h"
-#include "core/render/renderer.h"
-#include "core/render/settings.h"
+#include "core/renderer/renderer.h"
+#include "core/renderer/settings.h"
 
 namespace tp::cli {
 
@@ -58,14 +58,14 @@ CLI::Option* addStrictFlag(CLI::App& app, bool& strict);
 CLI::Option* addCameraOption(CLI::App& app, std::string& path);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
-// One option per knob of the registered renderers (core/render/knobs.h), bound into
+// One option per knob of the registered renderers (core/renderer/knobs.h), bound into
 // `values` (RenderSettings::knobs) and set to the knob's default; checked by checkKnobs.
 // sweep: a sweepable knob takes a comma-separated list.
 void addKnobOptions(CLI::App& app, std::map<std::string, std::string>& values, bool sweep = false);
 // A knob's help text: what it does, its allowed values, who reads it, whether it matters
 // only under MSAA (list: sweep's comma-separated form).
 std::string knobHelp(const KnobReaders& k, bool list);
-// Every knob value in `values` through checkSetting (core/render/view_settings.h); UsageError
+// Every knob value in `values` through checkSetting (core/renderer/view_settings.h); UsageError
 // (one line naming the knob and its allowed values) on the first bad one. Commands call it
 // before any GPU work. sweep: the lists of sweepable knobs are left to runSweep.
 void checkKnobs(const std::map<std::string, std::string>& values, bool sweep = false);

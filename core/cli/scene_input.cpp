@@ -8,7 +8,7 @@
 #include <optional>
 #include <sstream>
 
-#include "core/render/camera_file.h"
+#include "core/camera/camera_file.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/procedural.h"
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/render/knobs.h"
+#include "core/renderer/knobs.h"
 
 namespace tp {
 class GpuContext;

@@ -5,7 +5,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "include/light_assign.h"
 
 namespace tp::la {

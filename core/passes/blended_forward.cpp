@@ -5,8 +5,8 @@
 #include "core/gpu/rendering.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/stand_ins.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/scene_gpu.h"
 #include "passes/tiled_lighting.h"
 
 namespace tp {

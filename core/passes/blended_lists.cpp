@@ -2,12 +2,12 @@
 
 #include <string>
 
+#include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/compact_layout.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/passes/tiled_lighting.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
 #include "include/light_assign.h"
 
 namespace tp {

@@ -6,7 +6,7 @@
 #include "core/gpu/readback.h"
 #include "core/passes/blended_lists.h"
 #include "core/passes/debug_views.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "passes/tiled_lighting.h"
 
 namespace tp {

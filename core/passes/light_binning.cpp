@@ -7,10 +7,10 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/compact_layout.h"
 #include "core/lightassign/tile_bound.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
 #include "include/light_binning.h"
 
 namespace tp::la {

@@ -6,7 +6,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/gpu/vk_check.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 
 namespace tp {
 namespace {

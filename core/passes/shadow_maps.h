@@ -1,6 +1,6 @@
 #pragma once
 // The shadow maps of the pass library (docs/shadows.md): renders the faces SceneGpu's shadow
-// plan holds (core/passes/shadow_plan.h) and binds them for sampling as set TP_SET_SHADOW
+// plan holds (core/gpuscene/shadow_plan.h) and binds them for sampling as set TP_SET_SHADOW
 // (include/shadow_sample.glsl). Two residencies, the trade a pipeline makes:
 //
 //   Atlas     every shadowed light's faces resident at once, rendered by one pass

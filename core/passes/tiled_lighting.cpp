@@ -10,11 +10,11 @@
 #include "core/gpu/resources.h"
 #include "core/gpu/stand_ins.h"
 #include "core/gpu/vk_check.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/passes/shadow_maps.h"
-#include "core/render/renderer.h"
-#include "core/render/scene_gpu.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

@@ -6,10 +6,10 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
 #include "core/reference/reference_settings.h"
 #include "core/reference/shadow_rays.h"
-#include "core/render/scene_gpu.h"
 
 namespace tp {
 namespace {

@@ -9,7 +9,7 @@
 // per-sample masked prepass does (docs/shading.md).
 #include <memory>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

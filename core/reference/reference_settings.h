@@ -1,7 +1,7 @@
 #pragma once
 // The reference's knobs and the typed settings its renderer reads (register.cpp builds the
 // schema from the same declarations).
-#include "core/render/knobs.h"
+#include "core/renderer/knobs.h"
 
 namespace tp::ref {
 

@@ -2,7 +2,7 @@
 // measured against, and its knobs.
 #include "core/reference/reference_renderer.h"
 #include "core/reference/reference_settings.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/gpu/context.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 
 namespace tp::ref {
 

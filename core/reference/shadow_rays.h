@@ -8,7 +8,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/resources.h"
 #include "core/reference/shadow_bvh.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 

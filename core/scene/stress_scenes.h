@@ -3,14 +3,14 @@
 // built to push one pipeline choice to its limit (a tile full of lights, a specular spike,
 // values beyond fp16, positions 10^6 from the origin, ...). Scenes are built in code, so a
 // case is the same on every machine; the expectations (error bounds and checks per
-// pipeline) come from each pipeline's error model (core/render/error_model.h), which reads
+// pipeline) come from each pipeline's error model (core/renderer/error_model.h), which reads
 // the facts a case states here.
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "core/render/settings.h"
 #include "core/scene/scene.h"
+#include "core/scene/shadow_settings.h"
 #include "core/util/result.h"
 
 namespace tp::stress {

@@ -1,7 +1,7 @@
 // The standard MSAA sample locations of the Vulkan spec ("Multisampling", table "Standard
 // sample locations"), pixel-relative, y down (framebuffer coordinates), each written V(x, y)
 // for the includer's vector constructor: read by the GPU's surface readers
-// (sample_locations.glsl, V = vec2) and by the CPU error models (core/render/pixel_position.h:
+// (sample_locations.glsl, V = vec2) and by the CPU error models (core/camera/pixel_position.h:
 // standardSampleOffset, V = glm::dvec2), so the two never disagree.
 #ifndef TP_SAMPLE_LOCATIONS_H
 #define TP_SAMPLE_LOCATIONS_H

@@ -1,5 +1,5 @@
 // Shadow maps (core/passes/shadow_maps.h, docs/shadows.md): what crosses between the CPU plan
-// (core/passes/shadow_plan.h) and the shaders that render and sample the maps. Shared by C++
+// (core/passes/shadow_planner.h) and the shaders that render and sample the maps. Shared by C++
 // and GLSL; include after shared.h.
 //
 // A shadowed light has consecutive ShadowFace records (LightGpu.shadow = 1 + its first): six

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "core/gpu/context.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/passes/light_binning.h"
-#include "core/render/scene_gpu.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 

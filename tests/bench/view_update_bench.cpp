@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/gpu/context.h"
-#include "core/render/render_session.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "core/runner/render_session.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 

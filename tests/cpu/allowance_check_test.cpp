@@ -1,10 +1,10 @@
-// errorBeyondAllowance (core/render/error_model.h): what each pixel's allowance explains is
+// errorBeyondAllowance (core/renderer/error_model.h): what each pixel's allowance explains is
 // taken out on its side of the reference, and +Inf allowances are counted and left out.
 #include <limits>
 
 #include <gtest/gtest.h>
 
-#include "core/render/error_model.h"
+#include "core/renderer/error_model.h"
 #include "include/tonemap.h"
 
 namespace tp {

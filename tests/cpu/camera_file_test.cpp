@@ -1,4 +1,4 @@
-// Camera files (core/render/camera_file.h): what is written reads back as the same camera, bit
+// Camera files (core/camera/camera_file.h): what is written reads back as the same camera, bit
 // for bit, and every kind of hostile input is refused with one line that names the file.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "core/render/camera_file.h"
+#include "core/camera/camera_file.h"
 #include "temp_path.h"
 
 using namespace tp;

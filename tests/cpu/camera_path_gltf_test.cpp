@@ -1,4 +1,4 @@
-// A glTF file's animated camera as a camera path (core/render/camera_path.h, form b): a tiny
+// A glTF file's animated camera as a camera path (core/camera/camera_path.h, form b): a tiny
 // .gltf with its buffer in a data: URI, a camera node under a translated parent, sampled at
 // the keyframes, between them (LINEAR, STEP, CUBICSPLINE) and with the animation on the
 // parent instead of the camera's node.
@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/report_html.h"
-#include "core/render/camera_path.h"
+#include "core/camera/camera_path.h"
 #include "temp_path.h"
 #include "tests/cli/hostile_scenes.h"
 

@@ -1,4 +1,4 @@
-// Camera paths (core/render/camera_path.h): views at key times are the keys bit for bit, views
+// Camera paths (core/camera/camera_path.h): views at key times are the keys bit for bit, views
 // are evenly spaced in time, the centripetal curve does not run backwards where keys are
 // unevenly spaced, strict parsing with one-line errors, and a glTF file's animated camera
 // sampled at its keyframes gives the keyframe poses.
@@ -14,8 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/report_html.h"
-#include "core/render/camera_file.h"
-#include "core/render/camera_path.h"
+#include "core/camera/camera_file.h"
+#include "core/camera/camera_path.h"
 #include "temp_path.h"
 
 using namespace tp;

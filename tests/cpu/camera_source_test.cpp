@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/report_html.h"
+#include "core/camera/camera_file.h"
 #include "core/cli/scene_input.h"
-#include "core/render/camera_file.h"
 #include "core/scene/gltf_loader.h"
 #include "temp_path.h"
 

@@ -7,7 +7,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 namespace {

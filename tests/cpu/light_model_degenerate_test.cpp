@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/scene/stress_scenes.h"
 #include "include/light_model.h"
 

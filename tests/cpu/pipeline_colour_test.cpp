@@ -1,4 +1,4 @@
-// One colour per pipeline on every page (core/render/pipeline_colour.h): each registered
+// One colour per pipeline on every page (core/renderer/pipeline_colour.h): each registered
 // renderer has its own palette index, the report's bar groups and the sweep's series draw a
 // pipeline with the same colour, and series of one pipeline are told apart by dashes.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <set>
 
 #include "compare/svg_plot.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 namespace {

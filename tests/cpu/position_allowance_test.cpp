@@ -1,4 +1,4 @@
-// Deferred's per-pixel position-from-depth allowance (core/render/position_allowance.h): on a
+// Deferred's per-pixel position-from-depth allowance (core/renderer/position_allowance.h): on a
 // floor rendered analytically, every way of moving the shaded point by up to eps must
 // change the light sum by no more than the allowance, and the allowance must vanish where
 // no light reaches.
@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <random>
 
-#include "core/render/camera.h"
-#include "core/render/scene_gpu.h"
-#include "core/render/position_allowance.h"
+#include "core/camera/camera.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "core/renderer/position_allowance.h"
 #include "include/light_model.h"
 
 namespace tp {

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "compare/scene_hash.h"
-#include "core/render/camera_file.h"
+#include "core/camera/camera_file.h"
 #include "core/scene/procedural.h"
 
 using namespace tp;

@@ -1,11 +1,13 @@
-// The shadow plan (core/passes/shadow_plan.h): which lights cast shadows, their faces, the
+// The shadow plan (core/passes/shadow_planner.h): which lights cast shadows, their faces, the
 // budget and the atlas packing, and the matrices the maps are rendered and sampled with.
 #include <gtest/gtest.h>
 
 #include <set>
 
-#include "core/passes/shadow_plan.h"
-#include "core/render/camera.h"
+#include "core/camera/camera.h"
+#include "core/cli/options.h"
+#include "core/cli/shadow_option.h"
+#include "core/passes/shadow_planner.h"
 
 using namespace tp;
 
@@ -128,10 +130,11 @@ TEST(ShadowPlan, AFaceProjectsDistanceAsNearOverDepth) {
     }
 }
 
-TEST(ShadowPlan, ParsesItsOptionWithOneLineErrors) {
+// --shadows is parsed at the command line's boundary (core/cli/shadow_option.h).
+TEST(ShadowOption, ParsesWithOneLineErrors) {
     EXPECT_FALSE(parseShadowCount("none").enabled());
     EXPECT_TRUE(parseShadowCount("all").all);
     EXPECT_EQ(parseShadowCount("16").count, 16u);
     for (const char* bad : {"", "0", "-3", "x", "12x", "65537"})
-        EXPECT_THROW(parseShadowCount(bad), ShadowError) << bad;
+        EXPECT_THROW(parseShadowCount(bad), cli::UsageError) << bad;
 }

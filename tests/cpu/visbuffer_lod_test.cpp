@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/render/camera.h"
+#include "core/camera/camera.h"
 #include "visbuffer/draw_table.h"
 #include "visbuffer/lod_allowance.h"
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the camera file (`triptych.camera/1`, core/render/camera_file.h), parsed
+// libFuzzer target: the camera file (`triptych.camera/1`, core/camera/camera_file.h), parsed
 // as readCameraFile parses it. An accepted camera must give a finite view and projection, as
 // docs/hostile_input.md promises, and survive cameraToJson and a second read bit for bit; an
 // error must be one printable line naming the file. Anything else aborts (a finding).
@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "core/render/camera.h"
-#include "core/render/camera_file.h"
+#include "core/camera/camera.h"
+#include "core/camera/camera_file.h"
 
 namespace {
 

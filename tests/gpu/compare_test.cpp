@@ -19,11 +19,11 @@
 #include "compare/report_html.h"
 #include "compare/svg_plot.h"
 #include "compare/sweep.h"
+#include "core/camera/camera_file.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
-#include "core/render/camera_file.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "temp_path.h"
 
 namespace tp::test {

@@ -9,7 +9,7 @@
 
 #include "core/gpu/ledger.h"
 #include "core/image/metrics.h"
-#include "core/render/error_model.h"
+#include "core/renderer/error_model.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "gpu_test_util.h"

@@ -1,4 +1,4 @@
-// Forward+'s --hdr (core/render/hdr_knob.h) on the default device, validation on. `auto`, the
+// Forward+'s --hdr (core/renderer/hdr_knob.h) on the default device, validation on. `auto`, the
 // default, keeps Forward+'s RGBA16F target (the images of before the knob, bit for bit);
 // `fp32` stores the fp32 light sum as it is, so a pixel past 65,504, the largest half, keeps
 // its value where fp16 saturates (issue 40, item 4: a light passing a wall on a camera path
@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "core/gpu/ledger.h"
-#include "core/render/error_model.h"
+#include "core/renderer/error_model.h"
 #include "core/scene/stress_scenes.h"
 #include "gpu_test_util.h"
 

@@ -11,7 +11,7 @@
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
-#include "core/render/render_session.h"
+#include "core/runner/render_session.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {

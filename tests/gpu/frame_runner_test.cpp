@@ -3,7 +3,7 @@
 #include <string>
 
 #include "core/gpu/frame_graph.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {

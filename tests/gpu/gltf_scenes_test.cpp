@@ -1,7 +1,7 @@
 // Scenes the loader decodes or repairs (Draco, meshopt, repaired attributes, texture
 // transform; written by gltf_test_scenes.h) rendered by every pipeline and the reference:
 // no NaN or Inf, and each pipeline within its derived error bound of the reference, beyond
-// each pixel's allowance where its model gives one (core/render/error_model.h, as
+// each pixel's allowance where its model gives one (core/renderer/error_model.h, as
 // `triptych stress` checks it).
 #include <algorithm>
 #include <cmath>
@@ -13,9 +13,9 @@
 
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
-#include "core/render/error_model.h"
-#include "core/render/knobs.h"
-#include "core/render/renderer.h"
+#include "core/renderer/error_model.h"
+#include "core/renderer/knobs.h"
+#include "core/renderer/renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/stress_scenes.h"

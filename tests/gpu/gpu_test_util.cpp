@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "core/gpu/vk_check.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"

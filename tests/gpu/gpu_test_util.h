@@ -7,8 +7,8 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
-#include "core/render/frame_runner.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
 namespace tp::test {

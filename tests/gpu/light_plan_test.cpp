@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "core/render/camera.h"
+#include "core/camera/camera.h"
 #include "core/scene/gltf_loader.h"
 #include "gpu_test_util.h"
 #include "multipass_forward/light_plan.h"

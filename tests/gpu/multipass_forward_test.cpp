@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/camera/camera.h"
 #include "core/image/metrics.h"
-#include "core/render/camera.h"
 #include "core/scene/lights.h"
 #include "core/scene/mesh_builder.h"
 #include "core/scene/procedural.h"

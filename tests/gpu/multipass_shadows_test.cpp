@@ -20,8 +20,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/passes/shadow_plan.h"
-#include "core/render/error_model.h"
+#include "core/cli/shadow_option.h"
+#include "core/renderer/error_model.h"
 #include "gpu_test_util.h"
 
 // Named: the GPU tests build as unity files, where other tests' anonymous helpers are visible.

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "compare/reference_cache.h"
-#include "core/render/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h"
 #include "core/scene/lights.h"
 #include "gpu_test_util.h"
 

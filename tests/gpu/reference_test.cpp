@@ -8,9 +8,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <unistd.h>
 
-#include "core/render/error_model.h"
-#include "core/render/knobs.h"
-#include "core/render/renderer.h"
+#include "core/renderer/error_model.h"
+#include "core/renderer/knobs.h"
+#include "core/renderer/renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/stress_scenes.h"
@@ -173,7 +173,7 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
 // test at the sample, the shading at the centre), so on a scene made of alpha-tested
 // surfaces both pipelines are within their models' bounds of it on every pixel, alpha-test
 // boundaries included: the error against it is the method's alone (docs/shading.md). The
-// bound is each pipeline's registered model (core/render/error_model.h) with the shading-rate
+// bound is each pipeline's registered model (core/renderer/error_model.h) with the shading-rate
 // term left out (its input at --msaa-shading sample), which is what the centre reference
 // removes. Before the centre reference kept per-sample coverage it took the centre's alpha
 // for the whole pixel, and both pipelines were off by whole samples along every hole.

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/reference/shadow_rays.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {

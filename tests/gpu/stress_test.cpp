@@ -14,8 +14,8 @@
 #include <unistd.h>
 
 #include "compare/stress_run.h"
-#include "core/render/pipeline_colour.h"
-#include "core/render/renderer.h"
+#include "core/renderer/pipeline_colour.h"
+#include "core/renderer/renderer.h"
 #include "core/scene/stress_scenes.h"
 #include "core/util/files.h"
 #include "temp_path.h"
@@ -126,7 +126,7 @@ TEST(Stress, EveryCaseGivesTodaysVerdicts) {
     std::vector<std::string> pipelines;
     for (const RendererEntry& e : registeredRenderers())
         if (e.name != "reference") pipelines.push_back(e.name);
-    // Each pipeline is named in the colour it has on every page (core/render/pipeline_colour.h).
+    // Each pipeline is named in the colour it has on every page (core/renderer/pipeline_colour.h).
     Result<std::string> html = readWholeFile(o.out + "/stress.html");
     ASSERT_TRUE(html.ok());
     for (const std::string& name : pipelines)

@@ -7,7 +7,7 @@
 // 96x64 views, so there the candidates are the same at every view.)
 #include <cstring>
 
-#include "core/render/render_session.h"
+#include "core/runner/render_session.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
 #include "gpu_test_util.h"

@@ -1,4 +1,4 @@
-// Plan once, render many views (core/render/render_session.h): a renderer planned at one view
+// Plan once, render many views (core/runner/render_session.h): a renderer planned at one view
 // and moved to another renders exactly what a renderer planned at the other view renders
 // (bit-identical colour and depth), for every registered renderer and the knobs that change
 // what it derives from the camera and the lights.
@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "core/render/render_session.h"
+#include "core/runner/render_session.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {
@@ -29,7 +29,7 @@ std::string nameOf(const Config& c) {
 }
 
 // The pipelines whose updateView may plan again on these views (a renderer that bakes the
-// view: core/render/renderer.h, contract 6). None today: every other registered renderer, a
+// view: core/renderer/renderer.h, contract 6). None today: every other registered renderer, a
 // new one included, must follow every view in place, with the test below as its proof.
 const std::set<std::string> kMayReplan = {};
 

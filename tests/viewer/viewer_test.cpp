@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/camera/camera_path.h"
 #include "core/gpu/context.h"
 #include "core/image/image_io.h"
 #include "core/reference/reference_renderer.h"
-#include "core/render/camera_path.h"
-#include "core/render/renderer.h"
+#include "core/renderer/renderer.h"
 #include "viewer/composite.h"
 #include "viewer/view_loop.h"
 

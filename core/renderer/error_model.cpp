@@ -1,0 +1,89 @@
+#include "core/renderer/error_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "include/tonemap.h"
+
+namespace tp {
+namespace {
+
+constexpr double kCodeTerm = 1e-5; // same code in different shaders: a few ulps per term
+
+double tonemapAt(double x) {
+    return gpu::tonemap(gpu::vec3(float(x)), 0.0f).x;
+}
+
+// sup over x of the slope of T (absolute) or of x * T'(x) (relative), on a log grid from
+// 1e-8 to 1e8 with central differences of 1e-3 relative, times 1.01 for the grid's gaps.
+double tonemapSlope(bool relative) {
+    double best = 0;
+    for (double e = -8.0; e <= 8.0; e += 0.001) {
+        double x = std::pow(10.0, e), h = x * 1e-3;
+        double slope = (tonemapAt(x + h) - tonemapAt(x - h)) / (2 * h);
+        best = std::max(best, relative ? x * slope : slope);
+    }
+    return best * 1.01;
+}
+
+BoundTerm summation(size_t lights) {
+    return {"summation", double(lights + 8) * kUlp32, 0,
+            "fp32 sums of <= " + std::to_string(lights) +
+                " non-negative light terms (+8 for ambient, emissive, "
+                "resolve) against the reference's fp64 sum: (n + 8) * 2^-24"};
+}
+
+} // namespace
+
+double ErrorBound::relative() const {
+    double r = 0;
+    for (const BoundTerm& t : terms)
+        r += t.relative;
+    return r;
+}
+
+double ErrorBound::absolute() const {
+    double a = 0;
+    for (const BoundTerm& t : terms)
+        a += t.absolute;
+    return a;
+}
+
+double ErrorBound::tonemapped(float ev) const {
+    return tonemapRelativeSlope() * relative() +
+           tonemapAbsoluteSlope() * std::exp2(double(ev)) * absolute();
+}
+
+void addFp16StorageTerm(ErrorBound& b, int roundings, const std::string& stores) {
+    b.terms.push_back(
+        {"fp16 colour storage", roundings * kHalfUlp16, roundings * 6e-8,
+         std::to_string(roundings) + " fp16 store(s) (" + stores +
+             "): each below one ulp, 2^-10 "
+             "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
+}
+
+double tonemapRelativeSlope() {
+    static const double k = tonemapSlope(true);
+    return k;
+}
+
+double tonemapAbsoluteSlope() {
+    static const double s0 = tonemapSlope(false);
+    return s0;
+}
+
+ErrorBound expectedBound(const ErrorModel& model, const ErrorModelInput& in) {
+    ErrorBound b;
+    b.terms.push_back(summation(in.scene.lights.size()));
+    b.terms.push_back({"same code, other shader", kCodeTerm, 1e-7,
+                       "the one light model compiled into different shaders: a few ulps per term"});
+    if (model)
+        model(b, in);
+    else
+        b.terms.push_back({"no precision model", 2 * kHalfUlp16, 1.2e-7,
+                           "a pipeline stress does not know: two fp16 roundings assumed"});
+    if (b.bounded) b.why = "sum of the terms; tonemapped: K * relative + S0 * 2^ev * absolute";
+    return b;
+}
+
+} // namespace tp

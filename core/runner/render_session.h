@@ -1,0 +1,64 @@
+#pragma once
+// Plan once, render many views (issue: the camera moves). A renderer is planned for (scene,
+// resolution, MSAA, settings, light count); the camera and the lights' positions are per-view
+// inputs: the caller changes them on the SceneGpu (Scene::camera then setView, or setLights
+// with the same count) and calls render() again. Before its frames, render() brings the
+// renderer to the new view with Renderer::updateView (the contract's step 6), records again,
+// and measures that CPU work; where the renderer cannot update (the view outgrew a list, the
+// light count or spot presence changed) it plans the renderer again and counts the replan.
+// runRenderer is a session that renders once.
+#include <memory>
+
+#include "core/gpu/pipelines.h"
+#include "core/runner/frame_runner.h"
+
+namespace tp {
+
+class GpuProfiler;
+class PassStatistics;
+
+class RendererSession {
+  public:
+    // planRenderer + prepare; the errors are runRenderer's.
+    static Result<std::unique_ptr<RendererSession>> create(GpuContext& ctx, SceneGpu& scene,
+                                                           const RendererEntry& entry,
+                                                           const SceneFeatures& features,
+                                                           const RenderSettings& settings);
+    ~RendererSession();
+    RendererSession(const RendererSession&) = delete;
+    RendererSession& operator=(const RendererSession&) = delete;
+
+    // The scene's current camera and lights: updated to (or planned again for) first, then
+    // options' frames, then read back (RunOptions::readback false: timings and counters only).
+    // After a view change the result's counters carry view_update_ms (CPU: the update and the
+    // new recording), view_updates and view_replans (over the session so far).
+    Result<RunResult> render(const RunOptions& options);
+
+    const std::string& name() const;
+    uint32_t updates() const { return updates_; }
+    uint32_t replans() const { return replans_; }
+
+  private:
+    RendererSession(GpuContext& ctx, SceneGpu& scene, const RendererEntry& entry,
+                    const SceneFeatures& features, const RenderSettings& settings);
+    Status plan();
+    Status record();
+    Status follow(double& updateMs); // the view changed since the last recording
+
+    GpuContext& ctx_;
+    SceneGpu& scene_;
+    const RendererEntry& entry_;
+    SceneFeatures features_;
+    RenderSettings settings_;
+    PlannedRenderer planned_;
+    std::unique_ptr<GpuProfiler> profiler_;
+    std::unique_ptr<PassStatistics> statistics_;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    uint64_t generation_ = 0;   // SceneGpu::viewGeneration() the recording is for
+    bool recorded_ = false;     // cmd_ holds a complete recording
+    uint32_t lightCount_ = 0;   // planned for: a change needs a new plan
+    std::vector<SpecConstant> sceneConstants_; // spot presence and texture count, planned for
+    uint32_t updates_ = 0, replans_ = 0;
+};
+
+} // namespace tp
