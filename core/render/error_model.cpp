@@ -62,6 +62,23 @@ void addFp16StorageTerm(ErrorBound& b, int roundings, const std::string& stores)
              "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
 }
 
+void addBlendedLayersTerm(ErrorBound& b, const ErrorModelInput& in, uint32_t blendsPerLayer,
+                          bool fp16Store, const std::string& how) {
+    const uint32_t layers = in.stressCase.blendedLayers;
+    if (layers == 0) return;
+    const double blends = double(layers) * double(blendsPerLayer);
+    const std::string count = std::to_string(int64_t(blends)) + " blends per pixel at most (" +
+                              std::to_string(layers) + " layers, " + how + ")";
+    b.terms.push_back({"blended layers: fp32 blend arithmetic", 4.0 * (blends + layers) * kUlp32, 0,
+                       count + " and " + std::to_string(layers) +
+                           " in the reference, each <= 4 fp32 roundings of values weighing <= "
+                           "the pixel: 4 * (B + L) * 2^-24"});
+    if (fp16Store)
+        b.terms.push_back(
+            {"blended layers: fp16 stores", blends * kHalfUlp16, blends * 6e-8,
+             count + ", each result stored in the RGBA16F target once: B * 2^-10, B * 6e-8"});
+}
+
 double tonemapRelativeSlope() {
     static const double k = tonemapSlope(true);
     return k;
