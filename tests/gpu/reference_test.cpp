@@ -183,8 +183,9 @@ struct Variant {
 // reference on every pixel, the model without its shading-rate term (its input at
 // --msaa-shading sample), which is what the centre reference removes (docs/shading.md); with
 // the reference's depth, for the models with a per-pixel position allowance.
+// `probe`: a pixel whose values are printed too (x < 0: none).
 void expectWithinModelOfTheCentreReference(const Scene& scene, const std::vector<Variant>& variants,
-                                           const char* what) {
+                                           const char* what, glm::ivec2 probe = {-1, -1}) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     SceneGpu gpuScene(*ctx, scene);
@@ -225,6 +226,13 @@ void expectWithinModelOfTheCentreReference(const Scene& scene, const std::vector
         std::printf("[ centre   ] %-40s 4x pixel rate, %s: worst |d|/bound %.3g at %u,%u; %u "
                     "pixels over the bound\n",
                     label.c_str(), what, w.ratio, w.x, w.y, w.pixelsOver);
+        if (probe.x >= 0)
+            std::printf("[ centre   ] %-40s pixel %d,%d: %.4f %.4f %.4f, centre reference %.4f "
+                        "%.4f %.4f\n",
+                        label.c_str(), probe.x, probe.y, r.hdr.at(probe.x, probe.y)[0],
+                        r.hdr.at(probe.x, probe.y)[1], r.hdr.at(probe.x, probe.y)[2],
+                        centre.hdr.at(probe.x, probe.y)[0], centre.hdr.at(probe.x, probe.y)[1],
+                        centre.hdr.at(probe.x, probe.y)[2]);
         EXPECT_LE(w.ratio, 1.0) << "pixel " << w.x << "," << w.y << ": got " << w.got
                                 << ", centre reference " << w.ref << "; " << w.pixelsOver
                                 << " pixels over the bound";
@@ -254,7 +262,11 @@ TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
 // extrapolated along that triangle's plane, a point that can lie outside every depth the
 // pixel's tile stores (nearer or farther). A tile's lights culled against its stored depths
 // alone miss a light that reaches that point: Forward+ gave pixel 61,29 0.0158 where the centre
-// reference and multipass give 0.0514, at every tile size and clustered alike.
+// reference and multipass give 0.0514, at every tile size and clustered alike. The visibility
+// buffer gives that pixel 0.0158 too (its resolve shades an edge pixel's triangles at the
+// centre, its tiles' depth bounds are the stored samples'), but is not listed here: its model's
+// per-pixel allowance covers the difference on this textured scene, so the check could not
+// fail for it (docs/forwardplus.md, "Silhouettes at pixel rate"; not fixed).
 TEST(ReferenceCentre, SilhouettesKeepTheLightsOfTheirExtrapolatedCentres) {
     Result<Scene> loaded = loadMaskedScene(32, 5);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
@@ -267,9 +279,8 @@ TEST(ReferenceCentre, SilhouettesKeepTheLightsOfTheirExtrapolatedCentres) {
                                            {"forwardplus", {{"light-assign", "clustered"}}},
                                            {"forwardplus", {{"light-cull", "all"}}},
                                            {"forwardplus", {{"cull-by", "subgroup"}}},
-                                           {"multipass_forward", {}},
-                                           {"visbuffer", {}}},
-                                          "silhouettes from above");
+                                           {"multipass_forward", {}}},
+                                          "silhouettes from above", {61, 29});
 }
 
 } // namespace
