@@ -78,35 +78,6 @@ double hdrBeyondBound(const ErrorBound& b, const ImageRGBA& checked, const Image
     return worst;
 }
 
-// Blended layers (StressCase::blendedLayers = L over one pixel): the pipelines' models bound
-// one pixel's shading; compositing adds the blends' roundings, which the models leave to the
-// caller (deferred/error_model.cpp says so). A pixel is blended at most B = L + D times, D =
-// the run's `blended_light_draws` (a renderer that blends each light onto a layer in a draw
-// of its own, multipass forward; 0 where a layer's lights are shaded in its one draw), each
-// draw blending a pixel once (every layer is one quad). Each blend rounds at most 4 times in
-// fp32 (src * a, 1 - a, dst * (1 - a), the sum), each relative to a value whose weight in
-// the final pixel is at most the pixel (weights are products of alphas and 1 - alpha, all in
-// [0, 1], and every term is non-negative): 4 * 2^-24 per blend, B in the pipeline and L in
-// the reference. A pipeline whose hdr target is RGBA16F rounds each blend's result once more
-// at the store (fp32 blend arithmetic assumed; Vulkan only requires the destination's
-// precision): B * (2^-10 relative, 6e-8 absolute), as forwardplus_test and
-// deferred_hdr_test count blended layers.
-void addBlendedTerm(ErrorBound& b, const stress::StressCase& c, const StressOutcome& p) {
-    if (c.blendedLayers == 0) return;
-    const double layers = c.blendedLayers,
-                 blends = layers + counterValue(*p.run, "blended_light_draws", 0);
-    const std::string count = std::to_string(int64_t(blends)) + " blends per pixel at most (" +
-                              std::to_string(c.blendedLayers) + " layers + blended_light_draws)";
-    b.terms.push_back({"blended layers: fp32 blend arithmetic", 4.0 * (blends + layers) * kUlp32, 0,
-                       count + " and " + std::to_string(c.blendedLayers) +
-                           " in the reference, each <= 4 fp32 "
-                           "roundings of values weighing <= the pixel: 4 * (B + L) * 2^-24"});
-    if (p.fp16Storage)
-        b.terms.push_back(
-            {"blended layers: fp16 stores", blends * kHalfUlp16, blends * 6e-8,
-             count + ", each result stored in the RGBA16F target once: B * 2^-10, B * 6e-8"});
-}
-
 uint64_t depthMismatch(const ImageR32& a, const ImageR32& b) {
     if (a.r.size() != b.r.size()) return a.r.size() + b.r.size();
     uint64_t n = 0;
@@ -209,7 +180,6 @@ void measureOutcome(StressOutcome& p, const StressOutcome& reference, const Stre
     resolveKnobs(entry.knobs, settings);
     p.bound = expectedBound(entry.errorModel, {*r.c, scene, settings, &reference.run->depth,
                                                r.subPixelBits, &reference.run->hdr});
-    if (p.bound.bounded) addBlendedTerm(p.bound, *r.c, p);
     const ImageRGBA checked = maskOverflow(p, ref);
     p.rawMaxTonemapped = computeError(tonemapToDisplay(checked, r.exposureEv), refDisplay).maxAbs;
     const AllowanceCheck beyond = errorBeyondAllowance(p.bound, checked, ref, r.exposureEv);

@@ -65,8 +65,7 @@ bool hasBlended(const Scene& scene) {
 // one rounding per store a pixel's sum goes through. Tiled: one per lighting batch (a later
 // batch loads the rounded sum, adds and stores again); volumes: the base pass and one blend
 // per light; then the resolve of hdr_msaa (blended scenes under MSAA). As for Forward+, each
-// blended layer's store adds one more, which the model leaves to the caller (no stress case
-// has blended materials; tests/gpu/deferred_hdr_test.cpp adds them).
+// blended layer's store adds one more: addBlendedLayersTerm in deferredErrorModel.
 void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
     const def::Settings s = def::readSettings(in.settings);
     if (s.hdr != def::Hdr::Fp16) return;
@@ -113,6 +112,9 @@ void deferredErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     // shaded at itself.
     addPixelRateErrorTerm(b, in);
     addHdrStorage(b, in);
+    // The hybrid forward pass blends each layer, with all its lights, into hdr (hdr_msaa).
+    addBlendedLayersTerm(b, in, 1, def::readSettings(in.settings).hdr == def::Hdr::Fp16,
+                         "each blended with all its lights by the hybrid forward pass");
 }
 
 } // namespace tp

@@ -83,6 +83,9 @@ class ForwardPlusRenderer final : public Renderer {
                                       fp_.tileCapacity, cap_.slots, numLists_});
         culling_.emplace(ctx_, scene_, cullConfig());
         if (blendPass_) blendBounds_.emplace(ctx_, scene_);
+        // Opaque fragments shaded once at the pixel centre: where their centres are
+        // (core/passes/blended_bounds.h, `opaque`).
+        if (fp_.sampling.perPixelUnderMsaa()) centreBounds_.emplace(ctx_, scene_);
     }
 
     void plan(FrameGraph& graph) override {
@@ -133,8 +136,15 @@ class ForwardPlusRenderer final : public Renderer {
             blendBounds =
                 blendBounds_->plan(graph, {grid_, depthSrc, samples(), fp_.sampling.perSample(),
                                            fp_.sampling.perPixelUnderMsaa()});
+        ResourceHandle centreBounds;
+        if (centreBounds_) {
+            la::BlendedBoundsConfig centres{grid_, depthSrc, samples(), false, true};
+            centres.opaque = true;
+            centreBounds = centreBounds_->plan(graph, centres);
+        }
         const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
-        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres});
+        culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres,
+                               centreBounds});
 
         shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas); // shadow_maps, if any
         shadows_->plan(graph);
@@ -158,6 +168,7 @@ class ForwardPlusRenderer final : public Renderer {
         createParams();
         prepass_->prepare();
         if (blendBounds_) blendBounds_->prepare(graph);
+        if (centreBounds_) centreBounds_->prepare(graph);
         createDescriptors(graph);
         shadows_->prepare(graph);
         shading_->prepare(graph, params_.buffer);
@@ -454,6 +465,8 @@ class ForwardPlusRenderer final : public Renderer {
         culling_; // made once the lists are sized (its batches depend on them)
     std::optional<la::BlendedBounds>
         blendBounds_; // blended scenes: where each tile's blended fragments are
+    std::optional<la::BlendedBounds>
+        centreBounds_; // --msaa-shading pixel under MSAA: where the opaque fragments' centres are
     std::optional<passes::DepthPrepass> prepass_;
     std::optional<ShadowMaps> shadows_;         // the atlas (shadow_maps) with --shadows
     std::optional<fp::ForwardShading> shading_; // forward_opaque, forward_transparent

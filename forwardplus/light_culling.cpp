@@ -47,6 +47,9 @@ void LightCulling::plan(FrameGraph& graph, const CullResources& r) {
         uses.push_back({r.masks, Use::StorageWrite, TP_FP_BINDING_CLUSTER_MASKS});
     blendBounds_ = r.blendBounds.valid();
     if (blendBounds_) uses.push_back({r.blendBounds, Use::StorageRead, TP_FP_BINDING_BLEND_BOUNDS});
+    centreBounds_ = r.centreBounds.valid();
+    if (centreBounds_)
+        uses.push_back({r.centreBounds, Use::StorageRead, TP_FP_BINDING_CENTRE_BOUNDS});
     graph.addPass("light_culling", uses, [this](PassContext& pc) { record(pc); });
 }
 
@@ -60,6 +63,14 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
                                  "stand-in: no blended draws, no blended depth bounds"},
                                 {TP_LA_BLEND_EMPTY, TP_LA_BLEND_EMPTY, 0, 0});
         externals.push_back({TP_FP_BINDING_BLEND_BOUNDS, noBlendBounds_.buffer});
+    }
+    if (!centreBounds_) {
+        noCentreBounds_ = createStandInBuffer(
+            ctx_,
+            {graph.owner(), "", "centre_bounds_unused",
+             "stand-in: every opaque fragment is shaded at its own sample (1x, --msaa-shading sample)"},
+            {TP_LA_BLEND_EMPTY, TP_LA_BLEND_EMPTY, 0, 0});
+        externals.push_back({TP_FP_BINDING_CENTRE_BOUNDS, noCentreBounds_.buffer});
     }
     if (!config_.spheres) {
         // The shader declares the spheres whatever kSpheres says.
@@ -86,6 +97,7 @@ void LightCulling::prepare(FrameGraph& graph, VkBuffer params) {
     spec.push_back({TP_FP_SPEC_SLICES, config_.slices});
     spec.push_back({TP_FP_SPEC_BLENDED_SPAN, config_.blendedSpan ? 1u : 0u});
     spec.push_back({TP_FP_SPEC_SPHERES, config_.spheres ? 1u : 0u});
+    spec.push_back({TP_FP_SPEC_CENTRE_BOUNDS, centreBounds_ ? 1u : 0u});
     if (subgroup) spec.push_back({TP_FP_SPEC_CULL_LANES, config_.subgroupLanes});
     pipeline_ = createComputePipeline(ctx_, name, spec, layout_, &set_, config_.subgroupLanes);
 }

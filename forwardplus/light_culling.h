@@ -39,9 +39,10 @@ struct CullConfig {
 std::string subgroupCullingUnsupported(const DeviceCaps& caps);
 
 // The resources the pass reads and writes (counter: linked only; masks: clustered only;
-// blendBounds: blended scenes only, core/passes/blended_bounds.h; spheres: light_spheres.h).
+// blendBounds: blended scenes only, core/passes/blended_bounds.h; spheres: light_spheres.h;
+// centreBounds: --msaa-shading pixel under MSAA only, blended_bounds.h with `opaque`).
 struct CullResources {
-    ResourceHandle depth, tiles, indices, counter, masks, blendBounds, spheres;
+    ResourceHandle depth, tiles, indices, counter, masks, blendBounds, spheres, centreBounds;
 };
 
 class LightCulling {
@@ -72,6 +73,8 @@ class LightCulling {
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     bool blendBounds_ = false;
     Buffer noBlendBounds_; // the shader's bounds binding without blended draws
+    bool centreBounds_ = false;
+    Buffer noCentreBounds_; // the shader's centre bounds binding where the shading is per sample
 };
 
 } // namespace fp

@@ -11,10 +11,13 @@ namespace {
 
 // Colour stored in RGBA16F (--hdr fp16, and auto): one rounding per store (the sample, then
 // the resolve). --hdr fp32: RGBA32F holds the fp32 sum as it is, no storage term.
+// Blended layers: each blended into the hdr target (per sample under MSAA) once, with all its
+// lights, and stored there in its format.
 void forwardPlusErrorModel(ErrorBound& b, const ErrorModelInput& in) {
-    if (fp::readSettings(in.settings).hdr == HdrStorage::Fp16)
-        addFp16StorageTerm(b, in.settings.msaa > 1 ? 2 : 1, "sample, resolve");
+    const bool fp16 = fp::readSettings(in.settings).hdr == HdrStorage::Fp16;
+    if (fp16) addFp16StorageTerm(b, in.settings.msaa > 1 ? 2 : 1, "sample, resolve");
     addPixelRateErrorTerm(b, in);
+    addBlendedLayersTerm(b, in, 1, fp16, "each blended with all its lights in one draw");
 }
 
 // A case that crowds one tile must find Forward+'s list holding all of them (the compact and

@@ -93,6 +93,14 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     // Forward+'s and the blended pass's fragments are: the same centre-shading term.
     addPixelRateErrorTerm(b, in);
     addHdrStorage(b, in);
+    // Blended layers: --vis-blended compute composites them in the resolve's fp32 registers and
+    // stores the pixel with its batch (addHdrStorage's stores); forward blends each into hdr_msaa
+    // (hdr at 1x) and stores it there.
+    const vis::Settings s = vis::readSettings(in.settings);
+    const bool forward = s.blended == vis::Blended::Forward;
+    addBlendedLayersTerm(b, in, 1, forward && s.hdr == HdrStorage::Fp16,
+                         forward ? "each blended with all its lights by the hybrid forward pass"
+                                 : "each composited in the resolve's registers");
 }
 
 } // namespace tp

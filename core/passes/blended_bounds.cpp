@@ -19,36 +19,41 @@ BlendedBounds::~BlendedBounds() {
 ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig& config) {
     config_ = config;
     const uint32_t tiles = config.grid.count();
-    bounds_ =
-        graph.createBuffer("blended_bounds", uint64_t(tiles) * 8,
-                           "per tile: min and max view distance of the blended fragments shaded");
+    const std::string name = config.opaque ? "centre_bounds" : "blended_bounds";
+    bounds_ = graph.createBuffer(
+        name, uint64_t(tiles) * 8,
+        config.opaque ? "per tile: min and max view distance of the opaque fragments' pixel centres"
+                      : "per tile: min and max view distance of the blended fragments shaded");
     graph.addPass(
-        "blended_bounds_clear", {{bounds_, Use::TransferDst}}, [this, tiles](PassContext& pc) {
+        name + "_clear", {{bounds_, Use::TransferDst}}, [this, tiles](PassContext& pc) {
             VkBuffer b = pc.buffer(bounds_).buffer;
             vkCmdFillBuffer(pc.cmd, b, 0, VkDeviceSize(tiles) * 4, TP_LA_BLEND_EMPTY);
             vkCmdFillBuffer(pc.cmd, b, VkDeviceSize(tiles) * 4, VkDeviceSize(tiles) * 4, 0u);
         });
     graph.addPass(
-        "blended_bounds",
+        name,
         {{config.depth, Use::DepthTest}, {bounds_, Use::StorageWrite, TP_LA_BLEND_BINDING_BOUNDS}},
         [this](PassContext& pc) { record(pc); });
     return bounds_;
 }
 
 void BlendedBounds::prepare(FrameGraph& graph) {
-    set_ = graph.createPassSet("blended_bounds");
+    set_ = graph.createPassSet(config_.opaque ? "centre_bounds" : "blended_bounds");
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
     // The fragment shader reads the position only (fullInterface: the tests' comparison).
     d.vertexShader = config_.fullInterface ? "scene_vert" : "scene_position_vert";
     d.fragmentShader = std::string("blended_bounds") + (config_.inputsAtPixel ? "_pixel" : "") +
                        (config_.fullInterface ? "_full" : "") + "_frag";
-    d.specConstants = scene_.specConstants(AlphaMode::Blend);
+    // The fragment shader reads no material: one pipeline for the opaque and masked draws.
+    d.specConstants = scene_.specConstants(config_.opaque ? AlphaMode::Opaque : AlphaMode::Blend);
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.grid.tileSize});
     d.samples = VkSampleCountFlagBits(config_.samples);
     d.sampleShading = config_.sampleShading;
     d.depthWrite = false;
-    d.depthCompare = VK_COMPARE_OP_GREATER; // in front of the opaque depth, as the blended pass
+    // Blended: in front of the opaque depth, as the blended pass; opaque: on it, as the opaque
+    // shading (no discard there: every sample the prepass kept passes, alpha-tested or not).
+    d.depthCompare = config_.opaque ? VK_COMPARE_OP_EQUAL : VK_COMPARE_OP_GREATER;
     d.layout = layout_;
     d.passSet = &set_;
     pipeline_ = createGraphicsPipeline(ctx_, d);
@@ -60,7 +65,12 @@ void BlendedBounds::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
-    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
+    if (config_.opaque) {
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque, pipeline_);
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Mask, pipeline_);
+    } else {
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
+    }
     endRendering(pc);
 }
 

@@ -9,6 +9,14 @@
 // "blended_bounds" (the blended draws, shaders/passes/blended_bounds.frag). Plan it only when the
 // scene draws something blended; the buffer "blended_bounds" (2 words per tile) is in the
 // ledger.
+//
+// With `opaque` the same passes ("centre_bounds_clear", "centre_bounds", buffer
+// "centre_bounds") record the opaque and masked draws tested EQUAL against the prepass depth
+// instead: the fragments an EQUAL-tested shading pass shades. Forward+ plans it at
+// --msaa-shading pixel under MSAA, where a fragment is shaded once at the pixel centre with its
+// inputs extrapolated along its triangle's plane when the centre lies off the triangle: a point
+// that can lie nearer or farther than every depth the tile's samples store, so the tile's
+// opaque range must take these distances too (issue 40, item 7).
 #include <cstdint>
 
 #include "core/gpu/descriptors.h"
@@ -30,6 +38,9 @@ struct BlendedBoundsConfig {
     uint32_t samples = 1; // its sample count
     bool sampleShading = false; // the blended pass shades per sample
     bool inputsAtPixel = false; // its fragment inputs are TP_INPUTS_AT_PIXEL (scene_inputs.glsl)
+    // The opaque and masked draws, depth EQUAL (the prepass's depth), instead of the blended
+    // ones, depth GREATER (header comment).
+    bool opaque = false;
     // Tests only: draw with the whole scene.vert interface (every output and input) instead
     // of its position-only variant, to check that the variant records the same bounds.
     bool fullInterface = false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/render/position_allowance.h"
 #include "include/tonemap.h"
 
 namespace tp {
@@ -31,6 +32,29 @@ BoundTerm summation(size_t lights) {
             "fp32 sums of <= " + std::to_string(lights) +
                 " non-negative light terms (+8 for ambient, emissive, "
                 "resolve) against the reference's fp64 sum: (n + 8) * 2^-24"};
+}
+
+// A hard-edged spot (position_allowance.h: isHardSpot) is a step in the image: a pixel whose
+// points may straddle its cone edge can be lit by it in one image and not in the other,
+// whatever the pipeline. Those pixels get the spot's whole reflected light on top of the
+// model's own allowance; every other pixel keeps the model's bound.
+void addHardSpotEdges(ErrorBound& b, const ErrorModelInput& in) {
+    const ImageR32 edges = hardSpotEdgeAllowance(in.scene, *in.referenceDepth, in.settings.msaa);
+    if (edges.r.empty()) return;
+    PixelAllowance& p = b.perPixel;
+    if (p.radiance.r.size() == edges.r.size()) {
+        for (size_t i = 0; i < edges.r.size(); ++i)
+            p.radiance.r[i] += edges.r[i];
+        p.name += " + hard spot edges";
+        p.why += "; plus, where a pixel's points may straddle a hard spot's cone edge, the spot's "
+                 "whole reflected light";
+    } else {
+        p = {"hard spot edges",
+             "a spot with inner = outer is a step: where a pixel's points may straddle its cone "
+             "edge (a ball of one pixel width at the point's depth meets the cone's 1e-4 ramp), "
+             "the spot's whole reflected light (docs/stress.md)",
+             edges};
+    }
 }
 
 } // namespace
@@ -62,6 +86,23 @@ void addFp16StorageTerm(ErrorBound& b, int roundings, const std::string& stores)
              "relative (Vulkan allows rounding toward zero), 6e-8 absolute in the subnormals"});
 }
 
+void addBlendedLayersTerm(ErrorBound& b, const ErrorModelInput& in, uint32_t blendsPerLayer,
+                          bool fp16Store, const std::string& how) {
+    const uint32_t layers = in.stressCase.blendedLayers;
+    if (layers == 0) return;
+    const double blends = double(layers) * double(blendsPerLayer);
+    const std::string count = std::to_string(int64_t(blends)) + " blends per pixel at most (" +
+                              std::to_string(layers) + " layers, " + how + ")";
+    b.terms.push_back({"blended layers: fp32 blend arithmetic", 4.0 * (blends + layers) * kUlp32, 0,
+                       count + " and " + std::to_string(layers) +
+                           " in the reference, each <= 4 fp32 roundings of values weighing <= "
+                           "the pixel: 4 * (B + L) * 2^-24"});
+    if (fp16Store)
+        b.terms.push_back(
+            {"blended layers: fp16 stores", blends * kHalfUlp16, blends * 6e-8,
+             count + ", each result stored in the RGBA16F target once: B * 2^-10, B * 6e-8"});
+}
+
 double tonemapRelativeSlope() {
     static const double k = tonemapSlope(true);
     return k;
@@ -82,6 +123,7 @@ ErrorBound expectedBound(const ErrorModel& model, const ErrorModelInput& in) {
     else
         b.terms.push_back({"no precision model", 2 * kHalfUlp16, 1.2e-7,
                            "a pipeline stress does not know: two fp16 roundings assumed"});
+    if (in.referenceDepth) addHardSpotEdges(b, in);
     if (b.bounded) b.why = "sum of the terms; tonemapped: K * relative + S0 * 2^ev * absolute";
     return b;
 }

@@ -24,6 +24,8 @@
 
 namespace tp {
 
+struct ErrorModelInput;
+
 struct BoundTerm {
     std::string name;
     double relative = 0;
@@ -77,6 +79,19 @@ constexpr double kUlp32 = 1.0 / 16777216.0; // 2^-24
 // rounding toward zero), 6e-8 absolute in the subnormals. Every pipeline with an fp16 colour
 // target adds this one term (Forward+ always; deferred under --hdr fp16).
 void addFp16StorageTerm(ErrorBound& b, int roundings, const std::string& stores);
+
+// Blended layers (StressCase::blendedLayers = L over one pixel; nothing when 0): the composite
+// goes through B = L * blendsPerLayer blends at most in the pipeline (1 per layer where a
+// layer is shaded with all its lights in one draw; 1 + its lights where each light is blended
+// onto it in a draw of its own) and through L in the reference. Each blend rounds at most 4
+// times in fp32 (src * a, 1 - a, dst * (1 - a), the sum), each relative to a value whose weight
+// in the final pixel is at most the pixel (weights are products of alphas and 1 - alpha, all in
+// [0, 1], and every term is non-negative): 4 * (B + L) * 2^-24. `fp16Store`: each blend's
+// result is stored in an RGBA16F target (the blend unit's storage; fp32 blend arithmetic
+// assumed, Vulkan only requires the destination's precision): once more each, B * (2^-10
+// relative, 6e-8 absolute). `how` says what a layer's blends are. docs/stress.md.
+void addBlendedLayersTerm(ErrorBound& b, const ErrorModelInput& in, uint32_t blendsPerLayer,
+                          bool fp16Store, const std::string& how);
 
 // K and S0 of the header comment, from the tonemap at exposure 0 (K does not depend on
 // exposure; S0 scales with 2^ev).

@@ -142,7 +142,8 @@ double lightGradientBound(const Light& light, double d, double eps, double eyeDi
     if (light.type == LightType::Spot) {
         const double spread =
             std::cos(double(light.innerConeAngle)) - std::cos(double(light.outerConeAngle));
-        attenuationGrad += 2.0 / std::max(0.001, spread) / dlo / (m * m);
+        // The GPU's slope of the cone factor's ramp is 1 / max(kHardSpotSpread, spread).
+        attenuationGrad += 2.0 / std::max(kHardSpotSpread, spread) / dlo / (m * m);
     }
     const double directionGrad = b.lipschitz * (1.0 / dlo + 1.0 / eyeDistance) / (m * m);
     return b.maxValue * attenuationGrad + directionGrad;
@@ -342,6 +343,66 @@ ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& de
             out.lipschitz.r[i] = float(light * b.lipschitz);
         });
     return out;
+}
+
+bool isHardSpot(const Light& light) {
+    return light.type == LightType::Spot && light.outerConeAngle > 0.0f &&
+           std::cos(double(light.innerConeAngle)) - std::cos(double(light.outerConeAngle)) <=
+               kHardSpotSpread;
+}
+
+ImageR32 hardSpotEdgeAllowance(const Scene& scene, const ImageR32& depth, uint32_t samples) {
+    std::vector<const Light*> spots;
+    for (const Light& l : scene.lights)
+        if (isHardSpot(l)) spots.push_back(&l);
+    if (spots.empty()) return {};
+    ImageR32 out{depth.width, depth.height, std::vector<float>(depth.r.size(), 0.0f)};
+    const Camera& cam = scene.camera;
+    const std::vector<glm::dvec3> pos = pixelPositions(cam, depth);
+    const glm::dmat4 view = viewRotation(cam);
+    const double pixelPerDepth = 2.0 * std::tan(double(cam.yfov) * 0.5) / double(depth.height);
+    constexpr double kCosineRounding = 1e-5;
+    Scene alone; // the spot by itself, with the scene's camera and materials
+    alone.camera = cam;
+    alone.materials = scene.materials;
+    for (const Light* spot : spots) {
+        const double cosOuter = std::cos(double(spot->outerConeAngle));
+        const double spread = std::max(kHardSpotSpread, std::cos(double(spot->innerConeAngle)) - cosOuter);
+        // The ramp [theta1, theta2] in angle from the axis, widened by the cosine's rounding.
+        const double theta1 = std::acos(std::min(1.0, cosOuter + spread + kCosineRounding));
+        const double theta2 = std::acos(std::max(-1.0, cosOuter - kCosineRounding));
+        const glm::dvec3 apex = glm::dvec3(spot->position) - glm::dvec3(cam.position);
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(spot->direction));
+        alone.lights = {*spot};
+        const ImageR32 light = reflectedLightBounds(alone, depth).value;
+        for (size_t i = 0; i < pos.size(); ++i) {
+            if (std::isnan(pos[i].x) || light.r[i] == 0.0f) continue;
+            const glm::dvec3 toPoint = pos[i] - apex;
+            const double d = glm::length(toPoint);
+            const double ball = pixelPerDepth * -(view * glm::dvec4(pos[i], 1.0)).z;
+            bool straddles = d <= ball; // the ball holds the apex: every direction
+            if (!straddles) {
+                const double alpha = std::acos(std::clamp(glm::dot(toPoint, axis) / d, -1.0, 1.0));
+                const double beta = std::asin(std::min(1.0, ball / d));
+                straddles = alpha + beta >= theta1 && alpha - beta <= theta2;
+            }
+            if (straddles) out.r[i] += light.r[i];
+        }
+    }
+    if (samples <= 1) return out;
+    ImageR32 dilated = out;
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            float m = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int xx = int(x) + dx, yy = int(y) + dy;
+                    if (xx >= 0 && yy >= 0 && xx < int(out.width) && yy < int(out.height))
+                        m = std::max(m, out.r[size_t(yy) * out.width + size_t(xx)]);
+                }
+            dilated.r[size_t(y) * out.width + x] = m;
+        }
+    return dilated;
 }
 
 } // namespace tp

@@ -61,4 +61,24 @@ struct ReflectedLightBounds {
 };
 ReflectedLightBounds reflectedLightBounds(const Scene& scene, const ImageR32& depth);
 
+// A spot whose cone has no falloff to speak of: cos(inner) - cos(outer) at most the GPU's
+// clamp (kHardSpotSpread, scene_gpu.cpp: spotScale = 1 / max(1e-4, cos inner - cos outer)),
+// outer > 0 (a zero cone lights nothing at all). Its ramp is 1e-4 wide in the cosine, far
+// thinner than a pixel: the edge is a step.
+constexpr double kHardSpotSpread = 1e-4;
+bool isHardSpot(const Light& light);
+
+// Per pixel, what a hard spot's edge can change there (docs/stress.md, "Hard spot edges"): a
+// pixel whose shaded points may lie on both sides of the cone, or inside its ramp, can be lit
+// by the spot in one image and not in another (points a rounding apart, or a position error
+// apart, or another sample under MSAA). Such a pixel gets the spot's whole reflected light
+// (reflectedLightBounds of the spot alone); every other pixel 0, for it sees the spot's cone
+// factor the same (0 or 1) in every image. "May straddle": a ball of one pixel width at the
+// point's view depth (the samples' and the pipelines' points all lie within it at 1x) around the
+// reference's point meets the ramp widened by 1e-5 in the cosine (the fp32 rounding of the
+// cosine against the axis); under MSAA (samples > 1) the largest of the 3x3 neighbourhood (a
+// sample's surface is the centre's of this pixel or of a neighbour). Empty (0 x 0) when the
+// scene has no hard spot.
+ImageR32 hardSpotEdgeAllowance(const Scene& scene, const ImageR32& depth, uint32_t samples);
+
 } // namespace tp

@@ -389,6 +389,14 @@ void stiffCases(AddCase add) {
                         "within the bound",
          .build = zeroConeSpots,
          .inertLights = 74});
+    add({.name = "spot-hard-edge",
+         .stresses = "three spots with inner = outer > 0 (a step at the cone's edge: its 1e-4 "
+                     "ramp in the cosine is far thinner than a pixel) across the floor, the box "
+                     "and the wall; one point light",
+         .expectation = "within the bound on every pixel but those whose points may straddle a "
+                        "cone edge, which may differ by the spot's whole light (a per-pixel "
+                        "allowance); no NaN/Inf",
+         .build = hardSpots});
 }
 
 } // namespace

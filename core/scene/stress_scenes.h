@@ -138,6 +138,7 @@ Scene msaaEdges();
 Scene dynamicRange();
 Scene blendedLayers();
 Scene zeroRangeLights();
+Scene hardSpots();
 Scene cameraInLights();
 Scene zeroConeSpots();
 // stress_scenes_shadows.cpp: the shadowed cases and their catalogue part.

@@ -140,4 +140,20 @@ Scene zeroConeSpots() {
     return s;
 }
 
+Scene hardSpots() {
+    Scene s = stage("stress:spot-hard-edge");
+    s.lights.push_back(point({1.5f, 2.0f, 1.5f}, 10.0f, 8.0f));
+    // inner = outer > 0: the cone factor steps from 0 to 1 over 1e-4 of the cosine (the GPU's
+    // clamp), far thinner than a pixel. Straight down, its circle across the floor and the
+    // box; slanted, an ellipse across the floor running up the wall; a narrow one grazing the
+    // wall from the side.
+    s.lights.push_back(spot({-1.5f, 3.0f, -0.5f}, {0, -1, 0}, 60.0f, 8.0f, 0.45f, 0.45f));
+    s.lights.push_back(spot({2.0f, 2.5f, 2.0f}, {-0.3f, -0.5f, -1.0f}, 80.0f, 12.0f, 0.3f, 0.3f,
+                            {1.0f, 0.8f, 0.6f}));
+    s.lights.push_back(spot({4.5f, 2.0f, -4.0f}, {-1.0f, -0.1f, -0.4f}, 40.0f, 10.0f, 0.2f, 0.2f,
+                            {0.6f, 0.8f, 1.0f}));
+    finish(s);
+    return s;
+}
+
 } // namespace tp::stress

@@ -19,6 +19,7 @@ namespace tp::gpu {
 #define TP_FP_BINDING_BLEND_BOUNDS 6  // culling only: blended depth bounds (light_assign.h: TP_LA_BLEND_*; a stand-in without blended draws)
 #define TP_FP_BINDING_SPHERES 7 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
 #define TP_FP_BINDING_LIGHTS_UBO 8 // shading only: the scene's lights again, as a uniform buffer (TP_FP_SPEC_LIGHTS_UBO)
+#define TP_FP_BINDING_CENTRE_BOUNDS 9 // culling only: the opaque fragments' centre distances (core/passes/blended_bounds.h, `opaque`; a stand-in unless TP_FP_SPEC_CENTRE_BOUNDS)
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
@@ -30,6 +31,7 @@ namespace tp::gpu {
 #define TP_FP_SPEC_CULL_LANES 20 // light_culling_subgroup: workgroup size = the device's subgroup size (<= 64)
 #define TP_FP_SPEC_LIGHTS_UBO 21 // shading: 1 = read the lights from TP_FP_BINDING_LIGHTS_UBO, 0 = from the scene's storage buffer
 #define TP_FP_SPEC_HDR16 22 // shading: 1 = hdr is RGBA16F (--hdr fp16, auto): sums saturate at 65,504; 0 = RGBA32F
+#define TP_FP_SPEC_CENTRE_BOUNDS 23 // culling: 1 = widen each tile's opaque range to its opaque fragments' centre distances (--msaa-shading pixel under MSAA)
 // Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
 #define TP_FP_UBO_LIGHTS 1024
 

@@ -57,6 +57,17 @@ layout(set = TP_SET_PASS, binding = TP_FP_BINDING_DEPTH) uniform sampler2D depth
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_BLEND_BOUNDS) readonly buffer BlendBoundsBlock {
     uint blendBounds[];
 };
+// At --msaa-shading pixel under MSAA the opaque shading runs once per pixel and primitive at
+// the pixel centre, extrapolated along the triangle's plane where the centre lies off it (or
+// interpolated over samples it does not keep): a point that can lie nearer or farther than
+// every depth the tile's samples store (a silhouette seen at a slant). The centre bounds pass
+// (core/passes/blended_bounds.h, `opaque`) records those fragments' view distances per tile, in
+// the blended bounds' format; the opaque range is widened to them (kCentreBounds), otherwise a
+// 16-byte stand-in is bound.
+layout(constant_id = TP_FP_SPEC_CENTRE_BOUNDS) const bool kCentreBounds = false;
+layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_CENTRE_BOUNDS) readonly buffer CentreBoundsBlock {
+    uint centreBounds[];
+};
 #ifdef TP_FP_CULL_LINKED
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_COUNTER) buffer CounterBlock {
     uint nodeCounter;
@@ -88,9 +99,15 @@ ListVolume volumeOf(uvec2 tile, TileFrustum f, bool tests) {
     return v;
 }
 
-ListVolume makeVolume(uvec2 tile, float nearDepth, float farDepth, bool tests) {
-    return volumeOf(tile, makeTileFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, nearDepth, farDepth),
-                    tests);
+// The opaque range's sub-frustum between two depths, widened to the tile's opaque fragment
+// centres (kCentreBounds: `centres`, padded like the blended bounds).
+TileFrustum opaqueFrustum(uvec2 tile, float nearDepth, float farDepth, LaBlendedBounds centres) {
+    TileFrustum f = makeTileFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, nearDepth, farDepth);
+    if (centres.any) {
+        f.nearViewZ = max(f.nearViewZ, -centres.nearDist);
+        f.farViewZ = min(f.farViewZ, -centres.farDist);
+    }
+    return f;
 }
 
 vec4 candidateSphere(uint lightIndex) {
@@ -189,13 +206,15 @@ CullTile cullTile(uvec2 tile, LaTileDepth depth) {
     if (kTwoLists || kBlendedSpan)
         blended = laBlendedBounds(blendBounds[c.index], blendBounds[params.tiles.z + c.index]);
     const TileFrustum blendedFrustum = laBlendedFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, blended);
+    LaBlendedBounds centres = laBlendedBounds(TP_LA_BLEND_EMPTY, 0u);
+    if (kCentreBounds) centres = laBlendedBounds(centreBounds[c.index], centreBounds[params.tiles.z + c.index]);
+    const TileFrustum opaque = opaqueFrustum(tile, depth.nearDepth, depth.farDepth, centres);
 #ifdef TP_FP_CLUSTERED
     // The span: the opaque range, widened to the blended bounds where the tile has blended
     // fragments (only those can be nearer than the opaque range, or farther where the tile
     // sees the sky). Slices follow the opaque range and, with blended surfaces, the front
     // region from the nearest blended fragment (include/light_assign.glsl: laSliceOf, laFrontNear).
-    TileFrustum span = makeTileFrustum(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, depth.nearDepth,
-                                       depth.farDepth);
+    TileFrustum span = opaque;
     if (blended.any && depth.hasGeometry) {
         span.nearViewZ = max(span.nearViewZ, blendedFrustum.nearViewZ);
         span.farViewZ = min(span.farViewZ, blendedFrustum.farViewZ);
@@ -212,9 +231,9 @@ CullTile cullTile(uvec2 tile, LaTileDepth depth) {
     c.maskBase = data[params.lists.w + c.index];
     c.maskStride = (data[params.lists.w + c.index + 1u] - c.maskBase) / kSlices;
     c.volume0 = volumeOf(tile, span, spanTests);
-    c.volume1 = makeVolume(tile, depth.nearDepth, depth.farDepth, kBlendedSpan && depth.hasGeometry);
+    c.volume1 = volumeOf(tile, opaque, kBlendedSpan && depth.hasGeometry);
 #else
-    c.volume0 = makeVolume(tile, depth.nearDepth, depth.farDepth, depth.hasGeometry);
+    c.volume0 = volumeOf(tile, opaque, depth.hasGeometry);
     c.volume1 = volumeOf(tile, blendedFrustum, kTwoLists && blended.any);
 #endif
     // The candidates: every local light (after the directional ones in data[]), or the

@@ -36,13 +36,15 @@ struct ReferenceRun {
 
 // One pipeline's image against the reference: no NaN or Inf, and within its derived bound
 // beyond each pixel's allowance.
+// `blendedLayers`: the most blended layers over one pixel (each model counts its blends' roundings).
 void expectWithinBound(GpuContext& ctx, SceneGpu& gpuScene, const Scene& scene,
                        const RendererEntry& entry, const RenderSettings& settings,
-                       const ReferenceRun& ref, const std::string& label) {
+                       const ReferenceRun& ref, uint32_t blendedLayers, const std::string& label) {
     SCOPED_TRACE(label);
     stress::StressCase c;
     c.name = "gltf";
     c.freeNormals = true; // a sphere: normals in every direction
+    c.blendedLayers = blendedLayers;
     const RunResult run = runOrFail(ctx, gpuScene, entry.name, settings);
     EXPECT_EQ(countNonFinitePixels(run.hdr), 0u);
     RenderSettings resolved = settings;
@@ -86,6 +88,7 @@ struct Renders {
     uint32_t msaa = 1;
     std::string shading = "pixel";
     fs::path lightsFile; // lights added from this lights file too (none: empty)
+    std::vector<std::pair<std::string, std::string>> knobs; // set for every run
 };
 
 // `grazing`: that many more lights that barely touch a surface near a triangle's corner or edge
@@ -122,6 +125,8 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0, const Rende
     // The textured surfaces' base colour is not in the compact G-buffer's model (which
     // bounds 8-bit storage by the material factors): the wide one stores it in fp32.
     settings.set("gbuffer", "wide");
+    for (const auto& [knob, value] : renders.knobs)
+        settings.set(knob, value);
     ReferenceRun ref;
     ref.run = runOrFail(*ctx, gpuScene, "reference", settings);
     ASSERT_EQ(countNonFinitePixels(ref.run.hdr), 0u);
@@ -131,6 +136,10 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0, const Rende
     for (size_t i = 0; i < ref.run.hdr.pixelCount(); ++i)
         lit += ref.run.hdr.rgba[i * 4 + 1];
     EXPECT_GT(lit, 0.0) << "the reference is black";
+    // The blended layers over a pixel: every blended triangle whose screen rectangle (one pixel
+    // wider each side) holds the pixel, counted (an upper bound on the layers there).
+    const std::vector<uint32_t> layers = blendedLayers(scene, gpuScene.frame());
+    const uint32_t mostLayers = layers.empty() ? 0u : *std::max_element(layers.begin(), layers.end());
 
     const std::string name = path.filename().string() == "scene.gltf"
                                  ? path.parent_path().filename().string()
@@ -140,14 +149,15 @@ void renderEveryPipeline(const fs::path& path, uint32_t grazing = 0, const Rende
         if (!renders.only.empty() &&
             std::find(renders.only.begin(), renders.only.end(), entry.name) == renders.only.end())
             continue;
-        expectWithinBound(*ctx, gpuScene, scene, entry, settings, ref, name + " " + entry.name);
+        expectWithinBound(*ctx, gpuScene, scene, entry, settings, ref, mostLayers,
+                          name + " " + entry.name);
         for (const auto& [knob, value] : kAssignmentVariants) {
             auto reads = [&, &knob = knob](const Knob& k) { return k.name == knob; };
             if (grazing == 0 || std::none_of(entry.knobs.begin(), entry.knobs.end(), reads))
                 continue;
             RenderSettings variant = settings;
             variant.set(knob, value);
-            expectWithinBound(*ctx, gpuScene, scene, entry, variant, ref,
+            expectWithinBound(*ctx, gpuScene, scene, entry, variant, ref, mostLayers,
                               name + " " + entry.name + " --" + knob + " " + value);
         }
     }
@@ -184,10 +194,19 @@ TEST_F(GltfScenesRender, TextureTransform) {
 // Meshes placed by mirrored, non-uniformly scaled, rotated and translated nodes, lit by 48
 // more lights that barely touch them where a box and its triangles part most: every
 // conservative box or sphere test on the way (multipass's draw selection and scissors, tile and
-// cluster culling, CPU and GPU binning) must keep each light where it lights a pixel. Opaque:
-// this check's bounds have no term for blended layers (`triptych stress` adds one).
+// cluster culling, CPU and GPU binning) must keep each light where it lights a pixel. Every
+// third mesh blended: the blended bounds and transparent lists take the same transforms, and
+// each model counts the roundings of its blended layers (core/render/error_model.h:
+// addBlendedLayersTerm) with the most layers over a pixel counted on the CPU. The visibility
+// buffer's blended layers through its forward pass (--vis-blended forward: interpolated
+// positions, as the reference's): its compute path shades them at the exact ray hit, and its
+// model's position allowance next to lights is taken at the opaque surface only (the
+// reference's depth), not at the blended layers' points, so next to these grazing lights it
+// has no bound there (measured 4.4e-4 tonemapped against a limit of 9.1e-6; issue 40, left open).
 TEST_F(GltfScenesRender, TransformedNodes) {
-    renderEveryPipeline(writeTransformedNodesScene(dir_ / "transformed", 3), 48);
+    Renders renders;
+    renders.knobs = {{"vis-blended", "forward"}};
+    renderEveryPipeline(writeTransformedNodesScene(dir_ / "transformed", 3, 13, true), 48, renders);
 }
 
 // The visibility buffer on the shared scenes that exercise what its resolve rebuilds by itself:

@@ -143,7 +143,8 @@ TEST(Reference, ShadesTheLastOf65536Lights) {
     expectNoValidationMessages(*ctx);
 }
 
-// Worst |p - r| / (relative |r| + absolute) over every pixel and colour channel.
+// Worst (|p - r| less the pixel's allowance) / (relative |r| + absolute) over every pixel and
+// colour channel (the allowance: the bound's per-pixel one where its model has one).
 struct WorstRatio {
     double ratio = 0, got = 0, ref = 0;
     uint32_t x = 0, y = 0, pixelsOver = 0;
@@ -151,14 +152,19 @@ struct WorstRatio {
 
 WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBound& b) {
     WorstRatio w;
+    const bool perPixel = b.perPixel.radiance.r.size() == ref.pixelCount();
     for (uint32_t y = 0; y < ref.height; ++y)
         for (uint32_t x = 0; x < ref.width; ++x) {
+            const double allowance =
+                perPixel ? double(b.perPixel.radiance.r[size_t(y) * ref.width + x]) : 0.0;
             bool over = false;
             for (int c = 0; c < 3; ++c) {
                 const double g = got.at(x, y)[c], r = ref.at(x, y)[c];
                 const double ratio =
-                    std::isfinite(g) ? std::abs(g - r) / (b.relative() * std::abs(r) + b.absolute())
-                                     : INFINITY;
+                    std::isfinite(g) && std::isfinite(allowance)
+                        ? std::max(std::abs(g - r) - allowance, 0.0) /
+                              (b.relative() * std::abs(r) + b.absolute())
+                        : INFINITY;
                 over = over || ratio > 1.0;
                 if (ratio > w.ratio) w = {ratio, g, r, x, y, w.pixelsOver};
             }
@@ -167,21 +173,19 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
     return w;
 }
 
-// Under MSAA at --msaa-shading pixel, Forward+ and multipass forward shade a masked surface
-// once at the pixel centre, but which samples it covers is decided by their masked depth
-// prepass, which alpha-tests every sample. The centre reference does the same (the alpha
-// test at the sample, the shading at the centre), so on a scene made of alpha-tested
-// surfaces both pipelines are within their models' bounds of it on every pixel, alpha-test
-// boundaries included: the error against it is the method's alone (docs/shading.md). The
-// bound is each pipeline's registered model (core/renderer/error_model.h) with the shading-rate
-// term left out (its input at --msaa-shading sample), which is what the centre reference
-// removes. Before the centre reference kept per-sample coverage it took the centre's alpha
-// for the whole pixel, and both pipelines were off by whole samples along every hole.
-TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
-    Result<Scene> loaded = loadMaskedScene(32, 5);
-    ASSERT_TRUE(loaded.ok()) << loaded.error();
-    Scene scene = std::move(*loaded);
+// A pipeline and the knobs it runs with beside the test's settings.
+struct Variant {
+    const char* pipeline;
+    std::vector<std::pair<const char*, const char*>> knobs;
+};
 
+// 4x at --msaa-shading pixel: each variant's image within its registered model of the centre
+// reference on every pixel, the model without its shading-rate term (its input at
+// --msaa-shading sample), which is what the centre reference removes (docs/shading.md); with
+// the reference's depth, for the models with a per-pixel position allowance.
+// `probe`: a pixel whose values are printed too (x < 0: none).
+void expectWithinModelOfTheCentreReference(const Scene& scene, const std::vector<Variant>& variants,
+                                           const char* what, glm::ivec2 probe = {-1, -1}) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
     SceneGpu gpuScene(*ctx, scene);
@@ -199,26 +203,84 @@ TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
 
     stress::StressCase c;
     c.name = "masked";
-    for (const char* pipeline : {"forwardplus", "multipass_forward"}) {
-        SCOPED_TRACE(pipeline);
-        const RunResult run = runOrFail(*ctx, gpuScene, pipeline, settings);
-        Result<const RendererEntry*> entry = findRenderer(pipeline);
+    for (const Variant& v : variants) {
+        RenderSettings run = settings;
+        std::string label = v.pipeline;
+        for (const auto& [knob, value] : v.knobs) {
+            run.set(knob, value);
+            label += std::string(" --") + knob + " " + value;
+        }
+        SCOPED_TRACE(label);
+        const RunResult r = runOrFail(*ctx, gpuScene, v.pipeline, run);
+        Result<const RendererEntry*> entry = findRenderer(v.pipeline);
         ASSERT_TRUE(entry.ok()) << entry.error();
-        RenderSettings model = settings;
+        RenderSettings model = run;
         model.set("msaa-shading", "sample"); // the model without its shading-rate term
         ASSERT_TRUE(resolveKnobs((*entry)->knobs, model).ok());
-        const ErrorBound bound = expectedBound((*entry)->errorModel, {c, scene, model});
+        const ErrorBound bound =
+            expectedBound((*entry)->errorModel,
+                          {c, scene, model, &centre.depth,
+                           ctx->properties.limits.subPixelPrecisionBits, &centre.hdr});
         ASSERT_TRUE(bound.bounded) << bound.why;
-        const WorstRatio w = worstRatio(run.hdr, centre.hdr, bound);
-        std::printf("[ centre   ] %-17s 4x pixel rate on alpha-tested surfaces: worst |d|/bound "
-                    "%.3g at %u,%u; "
-                    "%u pixels over the bound\n",
-                    pipeline, w.ratio, w.x, w.y, w.pixelsOver);
+        const WorstRatio w = worstRatio(r.hdr, centre.hdr, bound);
+        std::printf("[ centre   ] %-40s 4x pixel rate, %s: worst |d|/bound %.3g at %u,%u; %u "
+                    "pixels over the bound\n",
+                    label.c_str(), what, w.ratio, w.x, w.y, w.pixelsOver);
+        if (probe.x >= 0)
+            std::printf("[ centre   ] %-40s pixel %d,%d: %.4f %.4f %.4f, centre reference %.4f "
+                        "%.4f %.4f\n",
+                        label.c_str(), probe.x, probe.y, r.hdr.at(probe.x, probe.y)[0],
+                        r.hdr.at(probe.x, probe.y)[1], r.hdr.at(probe.x, probe.y)[2],
+                        centre.hdr.at(probe.x, probe.y)[0], centre.hdr.at(probe.x, probe.y)[1],
+                        centre.hdr.at(probe.x, probe.y)[2]);
         EXPECT_LE(w.ratio, 1.0) << "pixel " << w.x << "," << w.y << ": got " << w.got
                                 << ", centre reference " << w.ref << "; " << w.pixelsOver
                                 << " pixels over the bound";
     }
     expectNoValidationMessages(*ctx);
+}
+
+// Under MSAA at --msaa-shading pixel, Forward+ and multipass forward shade a masked surface
+// once at the pixel centre, but which samples it covers is decided by their masked depth
+// prepass, which alpha-tests every sample. The centre reference does the same (the alpha
+// test at the sample, the shading at the centre), so on a scene made of alpha-tested
+// surfaces both pipelines are within their models' bounds of it on every pixel, alpha-test
+// boundaries included: the error against it is the method's alone (docs/shading.md). The
+// bound is each pipeline's registered model (core/renderer/error_model.h) with the shading-rate
+// term left out (its input at --msaa-shading sample), which is what the centre reference
+// removes. Before the centre reference kept per-sample coverage it took the centre's alpha
+// for the whole pixel, and both pipelines were off by whole samples along every hole.
+TEST(ReferenceCentre, KeepsPerSampleCoverageOfMaskedSurfaces) {
+    Result<Scene> loaded = loadMaskedScene(32, 5);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    expectWithinModelOfTheCentreReference(*loaded, {{"forwardplus", {}}, {"multipass_forward", {}}},
+                                          "alpha-tested surfaces");
+}
+
+// The same scene seen from above at a slant (issue 40, item 7): a silhouette pixel whose
+// centre lies off the triangle that covers some of its samples is shaded at the centre
+// extrapolated along that triangle's plane, a point that can lie outside every depth the
+// pixel's tile stores (nearer or farther). A tile's lights culled against its stored depths
+// alone miss a light that reaches that point: Forward+ gave pixel 61,29 0.0158 where the centre
+// reference and multipass give 0.0514, at every tile size and clustered alike. The visibility
+// buffer gives that pixel 0.0158 too (its resolve shades an edge pixel's triangles at the
+// centre, its tiles' depth bounds are the stored samples'), but is not listed here: its model's
+// per-pixel allowance covers the difference on this textured scene, so the check could not
+// fail for it (docs/forwardplus.md, "Silhouettes at pixel rate"; not fixed).
+TEST(ReferenceCentre, SilhouettesKeepTheLightsOfTheirExtrapolatedCentres) {
+    Result<Scene> loaded = loadMaskedScene(32, 5);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    loaded->camera.position = {3.0f, 3.2f, 4.0f};
+    loaded->camera.target = {0.0f, 0.6f, 0.0f};
+    expectWithinModelOfTheCentreReference(*loaded,
+                                          {{"forwardplus", {{"tile", "8"}}},
+                                           {"forwardplus", {{"tile", "16"}}},
+                                           {"forwardplus", {{"tile", "32"}}},
+                                           {"forwardplus", {{"light-assign", "clustered"}}},
+                                           {"forwardplus", {{"light-cull", "all"}}},
+                                           {"forwardplus", {{"cull-by", "subgroup"}}},
+                                           {"multipass_forward", {}}},
+                                          "silhouettes from above", {61, 29});
 }
 
 } // namespace
