@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/render/position_allowance.h"
+#include "core/renderer/position_allowance.h"
 #include "include/tonemap.h"
 
 namespace tp {

@@ -196,7 +196,7 @@ TEST_F(GltfScenesRender, TextureTransform) {
 // conservative box or sphere test on the way (multipass's draw selection and scissors, tile and
 // cluster culling, CPU and GPU binning) must keep each light where it lights a pixel. Every
 // third mesh blended: the blended bounds and transparent lists take the same transforms, and
-// each model counts the roundings of its blended layers (core/render/error_model.h:
+// each model counts the roundings of its blended layers (core/renderer/error_model.h:
 // addBlendedLayersTerm) with the most layers over a pixel counted on the CPU. The visibility
 // buffer's blended layers through its forward pass (--vis-blended forward: interpolated
 // positions, as the reference's): its compute path shades them at the exact ray hit, and its
