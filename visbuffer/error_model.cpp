@@ -37,26 +37,6 @@ void addHdrStorage(ErrorBound& b, const ErrorModelInput& in) {
     addFp16StorageTerm(b, stores, what);
 }
 
-// Under MSAA a resolved pixel averages its samples, which may lie on other surfaces than the
-// reference depth's sample 0 (or on geometry where sample 0 has none): each such surface holds
-// sample 0 of this pixel or of a neighbour unless it is thinner than a pixel, so the pixel
-// takes the largest allowance of its 3x3 neighbourhood.
-ImageR32 dilated(const ImageR32& a) {
-    ImageR32 out = a;
-    for (uint32_t y = 0; y < a.height; ++y)
-        for (uint32_t x = 0; x < a.width; ++x) {
-            float m = 0.0f;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int xx = int(x) + dx, yy = int(y) + dy;
-                    if (xx >= 0 && yy >= 0 && xx < int(a.width) && yy < int(a.height))
-                        m = std::max(m, a.r[size_t(yy) * a.width + size_t(xx)]);
-                }
-            out.r[size_t(y) * a.width + x] = m;
-        }
-    return out;
-}
-
 } // namespace
 
 void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
@@ -75,7 +55,11 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
             vis::textureLodAllowance(in.scene, *in.referenceDepth, in.referenceHdr);
         for (size_t i = 0; i < allowance.r.size(); ++i)
             allowance.r[i] += lod.r[i];
-        if (in.settings.msaa > 1) allowance = dilated(allowance);
+        // Under MSAA a resolved pixel averages its samples, which may lie on other surfaces
+        // than the reference depth's sample 0 (or on geometry where sample 0 has none): each
+        // such surface holds sample 0 of this pixel or of a neighbour unless it is thinner
+        // than a pixel, so the pixel takes the largest allowance of its 3x3 neighbourhood.
+        if (in.settings.msaa > 1) allowance = maxOver3x3(allowance);
         b.perPixel = {"exact hit next to lights, analytic texture level of detail",
                       "the shaded point is the exact hit at the sample location, the reference's "
                       "the point of the triangle snapped to 2^-" +

@@ -390,19 +390,23 @@ ImageR32 hardSpotEdgeAllowance(const Scene& scene, const ImageR32& depth, uint32
         }
     }
     if (samples <= 1) return out;
-    ImageR32 dilated = out;
-    for (uint32_t y = 0; y < out.height; ++y)
-        for (uint32_t x = 0; x < out.width; ++x) {
+    return maxOver3x3(out);
+}
+
+ImageR32 maxOver3x3(const ImageR32& a) {
+    ImageR32 out = a;
+    for (uint32_t y = 0; y < a.height; ++y)
+        for (uint32_t x = 0; x < a.width; ++x) {
             float m = 0.0f;
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int xx = int(x) + dx, yy = int(y) + dy;
-                    if (xx >= 0 && yy >= 0 && xx < int(out.width) && yy < int(out.height))
-                        m = std::max(m, out.r[size_t(yy) * out.width + size_t(xx)]);
+                    if (xx >= 0 && yy >= 0 && xx < int(a.width) && yy < int(a.height))
+                        m = std::max(m, a.r[size_t(yy) * a.width + size_t(xx)]);
                 }
-            dilated.r[size_t(y) * out.width + x] = m;
+            out.r[size_t(y) * a.width + x] = m;
         }
-    return dilated;
+    return out;
 }
 
 } // namespace tp

@@ -81,4 +81,8 @@ bool isHardSpot(const Light& light);
 // scene has no hard spot.
 ImageR32 hardSpotEdgeAllowance(const Scene& scene, const ImageR32& depth, uint32_t samples);
 
+// Each pixel the largest value of its 3x3 neighbourhood (an MSAA pixel's samples may lie on
+// the surfaces of its neighbours' sample 0).
+ImageR32 maxOver3x3(const ImageR32& a);
+
 } // namespace tp
