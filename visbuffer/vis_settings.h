@@ -2,8 +2,8 @@
 // The visibility buffer's knobs and the typed settings its passes read, turned from
 // RenderSettings once in the factory (register.cpp builds the schema from the same
 // declarations). The library's knobs (the light assignment's, the MSAA shading rate, the tiled
-// lighting's radiance precision) and its own two: where blended surfaces are shaded and the
-// size of the blended fragment lists.
+// lighting's radiance precision) and its own three: where blended surfaces are shaded, the
+// size of the blended fragment lists and the texture footprint's derivatives.
 #include "core/lightassign/knobs.h"
 #include "core/render/hdr_knob.h"
 #include "core/render/knobs.h"

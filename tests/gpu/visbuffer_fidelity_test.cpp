@@ -106,9 +106,9 @@ TEST(VisbufferFootprint, QuadDerivativesOnTheDamagedHelmet) {
 }
 
 // The shaded point next to a light hugging a surface (docs/visbuffer.md, "The position's
-// error"). The stress case's floor (80 m, two triangles whose corners lie 45-70 m from the eye)
+// error next to a light"). The stress case's floor (80 m, two triangles whose corners lie 45-70 m from the eye)
 // seen from 2 m above it; in the middle column the pixel-centre rays have x = 0 exactly (the
-// view's right axis is x), and seven of them, 12-41 m away, meet the floor 5 mm beside a light
+// view's right axis is x), and seven of them, 13-44 m away, meet the floor 5 mm beside a light
 // 0.1 mm above it (2 cm range: each light reaches its own pixel only). There n . l is about
 // 0.02 and a point 1 um off the plane is 1% of the radiance. The truth is the light model on
 // the CPU at the exact hit (y = -2 camera-relative, exact in fp32), so each pipeline's error is
