@@ -127,9 +127,9 @@ VisHit intersect(vec3 p0, vec3 p1, vec3 p2, vec2 fc, float depth) {
     // light hugging the surface is a change of n . l of that over the light's height; the
     // plane's own distance n^ . (X - p0) rounds at |X - p0| (exactly 0 for a plane along an
     // axis), and the move along n^ leaves the point's place on the plane (its error at |X|,
-    // as the hit's) as it was. So it is at least as exact as the rasterizer's
-    // b0 p0 + b1 p1 + b2 p2, which rounds at the vertices' magnitudes both ways
-    // (docs/visbuffer.md, "The position's error next to a light").
+    // as the hit's) as it was. The rasterizer's b0 p0 + b1 p1 + b2 p2 rounds at the vertices'
+    // magnitudes both ways: this is of its order or better (docs/visbuffer.md, "The
+    // position's error next to a light").
     vec3 unitN = n * inversesqrt(max(nn, 1e-38));
     h.position = finiteHit ? hit - unitN * dot(unitN, r) : hit;
     vec2 b12dx = vec2(dot(cross(h.pdx, e2), n), dot(cross(e1, h.pdx), n)) * inv;
