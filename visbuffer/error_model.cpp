@@ -45,8 +45,9 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
     // vertices snapped to its sub-pixel grid: the two shaded points lie up to
     // sqrt(2) * 2^-(bits + 1) pixel widths apart on the surface, deferred's displacement
     // (core/renderer/position_allowance.h), with the same per-pixel bound next to lights.
-    // Textures: sampled at the analytic level of detail, the reference's at the hardware's
-    // (lod_allowance.h); the two allowances add per pixel.
+    // Textures: sampled with the analytic derivatives or the quad's differences
+    // (--vis-derivatives), the reference's with the hardware's (lod_allowance.h bounds either:
+    // the model does not know the device's fine or coarse rule); the two allowances add.
     if (in.referenceDepth) {
         ImageR32 allowance =
             positionFromDepthAllowance(in.scene, *in.referenceDepth, in.subPixelBits,
@@ -60,7 +61,7 @@ void visbufferErrorModel(ErrorBound& b, const ErrorModelInput& in) {
         // such surface holds sample 0 of this pixel or of a neighbour unless it is thinner
         // than a pixel, so the pixel takes the largest allowance of its 3x3 neighbourhood.
         if (in.settings.msaa > 1) allowance = maxOver3x3(allowance);
-        b.perPixel = {"exact hit next to lights, analytic texture level of detail",
+        b.perPixel = {"exact hit next to lights, texture level of detail",
                       "the shaded point is the exact hit at the sample location, the reference's "
                       "the point of the triangle snapped to 2^-" +
                           std::to_string(in.subPixelBits) +

@@ -1,5 +1,7 @@
 #include "visbuffer/vis_settings.h"
 
+#include "visbuffer/vis_shared.h"
+
 namespace tp::vis {
 
 const ChoiceKnob<Blended>& blendedKnob() {
@@ -11,6 +13,30 @@ const ChoiceKnob<Blended>& blendedKnob() {
         "(the hybrid forward pass deferred uses: per-tile light lists, per-sample radiance under "
         "MSAA)"};
     return k;
+}
+
+const ChoiceKnob<Derivatives>& derivativesKnob() {
+    static const ChoiceKnob<Derivatives> k{
+        "vis-derivatives",
+        {{Derivatives::Quad, "quad"},
+         {Derivatives::Analytic, "analytic"},
+         {Derivatives::QuadFine, "quad-fine"},
+         {Derivatives::QuadCoarse, "quad-coarse"}},
+        "visbuffer's texture footprint: quad (uv differences over the pixel's 2x2 quad on the "
+        "same triangle's plane, fine or coarse as the device's fragment quads take them: coarse "
+        "on a CPU device, fine elsewhere), analytic (the exact derivatives at the shaded point), "
+        "or quad-fine / quad-coarse whatever the device"};
+    return k;
+}
+
+uint32_t resolveDerivatives(Derivatives d, bool cpuDevice) {
+    switch (d) {
+    case Derivatives::Analytic: return TP_VIS_DERIVATIVES_ANALYTIC;
+    case Derivatives::QuadFine: return TP_VIS_DERIVATIVES_QUAD_FINE;
+    case Derivatives::QuadCoarse: return TP_VIS_DERIVATIVES_QUAD_COARSE;
+    case Derivatives::Quad: break;
+    }
+    return cpuDevice ? TP_VIS_DERIVATIVES_QUAD_COARSE : TP_VIS_DERIVATIVES_QUAD_FINE;
 }
 
 const IntegerKnob& blendedCapacityKnob() {
@@ -34,7 +60,8 @@ KnobSchema knobs() {
             la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),
             msaaShadingKnob().knob(), // pixel: once per pixel and triangle; sample: every sample
-            hdrKnob(), blendedKnob().knob(), blendedCapacityKnob().knob()};
+            hdrKnob(), blendedKnob().knob(), blendedCapacityKnob().knob(),
+            derivativesKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -48,6 +75,7 @@ Settings readSettings(const RenderSettings& s) {
     v.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32
     v.blended = blendedKnob().in(s);
     v.blendedCapacityPercent = blendedCapacityKnob().in(s);
+    v.derivatives = derivativesKnob().in(s);
     if (auto seen = s.capacities.find(kSeenFragments); seen != s.capacities.end())
         v.blendedSeen = seen->second;
     return v;

@@ -2,8 +2,8 @@
 // The visibility buffer's knobs and the typed settings its passes read, turned from
 // RenderSettings once in the factory (register.cpp builds the schema from the same
 // declarations). The library's knobs (the light assignment's, the MSAA shading rate, the tiled
-// lighting's radiance precision) and its own two: where blended surfaces are shaded and the
-// size of the blended fragment lists.
+// lighting's radiance precision) and its own three: where blended surfaces are shaded, the
+// size of the blended fragment lists and the texture footprint's derivatives.
 #include "core/lightassign/knobs.h"
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
@@ -15,6 +15,17 @@ namespace tp::vis {
 // library's hybrid forward pass, as deferred's).
 enum class Blended { Compute, Forward };
 const ChoiceKnob<Blended>& blendedKnob();
+// --vis-derivatives: the uv derivatives the resolve samples textures with. Analytic: the
+// barycentrics' exact screen derivatives at the shaded location; Quad: the differences over
+// the pixel's 2x2 quad on the same triangle's plane, as a fragment quad's helper lanes take
+// them, fine or coarse as the device does (resolveDerivatives); QuadFine / QuadCoarse: one of
+// the two whatever the device (docs/visbuffer.md, "The texture footprint").
+enum class Derivatives { Quad, Analytic, QuadFine, QuadCoarse };
+const ChoiceKnob<Derivatives>& derivativesKnob();
+// The shader's mode (TP_VIS_DERIVATIVES_*) for `d` on a device: Quad is coarse on a CPU
+// device (llvmpipe takes implicit derivatives from the quad's top-left pixel and one level of
+// detail per quad) and fine elsewhere.
+uint32_t resolveDerivatives(Derivatives d, bool cpuDevice);
 // --vis-blended-capacity: the fragment pool in percent of the pixel count, 0: the derived
 // bound (fragment_bound.h).
 const IntegerKnob& blendedCapacityKnob();
@@ -32,6 +43,7 @@ struct Settings {
     la::AssignSettings assign;
     HdrStorage hdr = HdrStorage::Fp32;
     Blended blended = Blended::Compute;
+    Derivatives derivatives = Derivatives::Quad;
     uint32_t blendedCapacityPercent = 0; // 0: the derived bound
     // Many views: the blended fragments an earlier plan of this session overflowed with, times
     // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).

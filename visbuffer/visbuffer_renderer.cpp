@@ -165,6 +165,10 @@ class VisbufferRenderer final : public Renderer {
         return vis::viewFragmentBound(scene_, table_.blended, vis_.width, vis_.height,
                                       vis_.sampling.samples);
     }
+    // --vis-derivatives on this device (TP_VIS_DERIVATIVES_*).
+    uint32_t derivativesMode() const {
+        return vis::resolveDerivatives(vis_.derivatives, ctx_.isCpuDevice());
+    }
     void checkDevice() const;
     void addBlendedListStats(RendererStats& s) const;
 
@@ -177,7 +181,8 @@ class VisbufferRenderer final : public Renderer {
         s.depth = ids_.depth;
         s.samples = vis_.sampling.samples;
         s.everySample = vis_.sampling.perSample();
-        s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits}};
+        s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits},
+                       {TP_VIS_SPEC_DERIVATIVES, derivativesMode()}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
         if (blendInCompute_) {
@@ -259,6 +264,8 @@ RendererStats VisbufferRenderer::stats() const {
     s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // fp32 id, beside depth
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
+    // --vis-derivatives, resolved: 0 analytic, 1 quad fine, 2 quad coarse.
+    s.counters.push_back({"uv_derivatives_mode", double(derivativesMode())});
     s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved
                           vis_.hdr == HdrStorage::Fp16 ? 16.0 : 32.0});
     const TileStatTotals t = sumTileStats(tileStats_);

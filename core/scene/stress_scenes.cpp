@@ -192,6 +192,29 @@ Scene lightOnSurface() {
     return s;
 }
 
+Scene lightHuggingFar() {
+    Scene s;
+    s.source = "stress:light-hugging-far";
+    const uint32_t grey = addMaterial(s, plain("grey", glm::vec3(0.5f), 0.0f, 1.0f));
+    // An 80 x 80 m floor of two triangles: its vertices lie 45-70 m from the eye, the shaded
+    // point 22 m away, so a plane-distance computed from a vertex rounds at |p0|, not at |X|.
+    Mesh floor = meshOf("floor", grey);
+    rect(floor, {-40, 0, 30}, {80, 0, 0}, {0, 0, -80}, {0, 1, 0});
+    s.meshes = {floor};
+    // At 95 x 63 the ray through pixel (47, 31)'s centre is the view axis: it meets the floor
+    // at the target, 5 mm beside a light 0.1 mm above the floor. There n . l is about
+    // 0.1 / 5, so a shaded point 1 um off the plane moves the radiance by 1%.
+    s.camera.position = {0, 2, 10};
+    s.camera.target = {0, 0, -10};
+    s.camera.yfov = 0.8f;
+    s.camera.znear = 0.05f;
+    s.camera.zfar = 0.0f;
+    s.ambient = glm::vec3(0.01f);
+    s.lights.push_back(point({0.005f, 0.0001f, -10}, 1.0f, 1.0f));
+    finish(s);
+    return s;
+}
+
 Scene beyondHalfFloat() {
     Scene s = stage("stress:beyond-half-float");
     // 1e6 cd 1 m above the floor: radiance 1e6 * 0.5 / pi = 1.6e5 below it, above 65,504
@@ -299,6 +322,12 @@ void geometryCases(AddCase add) {
          "finite (distance clamped at 1 cm, l = n at distance 0), the back side unlit, within "
          "the bound",
          96, 64, 1, lightOnSurface});
+    add({"light-hugging-far",
+         "a light 0.1 mm above an 80 m floor, 5 mm beside the point a pixel centre sees 22 m "
+         "away (95x63)",
+         "the shaded point on the surface to fp32's rounding at its own distance, not at the "
+         "triangle's vertices: within the bound",
+         95, 63, 1, lightHuggingFar});
     add({"beyond-half-float", "a 10^6 cd light: radiance up to 1.6e5, beyond fp16's 65,504",
          "no NaN; fp32 targets exact within the bound; fp16 targets saturate or overflow only "
          "where the "

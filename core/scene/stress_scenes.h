@@ -126,6 +126,7 @@ Scene tileOverflow();
 Scene depthDiscontinuity();
 Scene mirrorSpike();
 Scene lightOnSurface();
+Scene lightHuggingFar();
 Scene beyondHalfFloat();
 Scene farFromOrigin();
 Scene depthPrecision(bool infiniteFar);

@@ -1,10 +1,11 @@
 // The visibility buffer's surface reader for the pass library's tiled lighting (the interface
 // passes/tiled_lighting_inputs.glsl declares; visbuffer/vis_resolve.comp puts them together). A sample's id names a draw and a triangle (vis_shared.h); the reader fetches
 // the triangle's three vertices (the scene's index and vertex buffers), intersects the ray
-// through the shaded location with the triangle's plane, and from the hit's barycentrics and
-// their analytic screen-space derivatives interpolates the vertex attributes and evaluates the
-// material (include/material.glsl: the same code every fragment stage runs), sampling its
-// textures with textureGrad. docs/visbuffer.md derives it and bounds it against the
+// through the shaded location with the triangle's plane, and from the hit's barycentrics
+// interpolates the vertex attributes and evaluates the material (include/material.glsl: the
+// same code every fragment stage runs), sampling its textures with textureGrad from the
+// barycentrics' analytic screen-space derivatives or the differences over the pixel's quad
+// (--vis-derivatives). docs/visbuffer.md derives it and bounds it against the
 // hardware's derivatives.
 #ifndef TP_VIS_READ_GLSL
 #define TP_VIS_READ_GLSL
@@ -18,6 +19,8 @@
 layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
 layout(constant_id = TP_TL_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
+// --vis-derivatives: the uv derivatives textureGrad is given (TP_VIS_DERIVATIVES_*).
+layout(constant_id = TP_VIS_SPEC_DERIVATIVES) const uint kDerivatives = TP_VIS_DERIVATIVES_ANALYTIC;
 #include "include/sample_locations.glsl"
 
 #ifdef TP_MSAA
@@ -115,12 +118,22 @@ VisHit intersect(vec3 p0, vec3 p1, vec3 p2, vec2 fc, float depth) {
     // An edge-on triangle (n . dir = 0) can hold a sample only at the rasterizer's rounding:
     // take the depth buffer's point there instead of an infinite one.
     bool finiteHit = nd != 0.0 && !isinf(t) && !isnan(t) && nn > 0.0;
-    h.position = finiteHit ? t * dir : unprojectPosition(fc, depth);
+    vec3 hit = finiteHit ? t * dir : unprojectPosition(fc, depth);
     h.pdx = finiteHit ? t * (ddx - dir * (dot(n, ddx) / nd)) : vec3(0.0);
     h.pdy = finiteHit ? t * (ddy - dir * (dot(n, ddy) / nd)) : vec3(0.0);
     float inv = nn > 0.0 ? 1.0 / nn : 0.0;
-    vec3 r = h.position - p0;
+    vec3 r = hit - p0;
     vec2 b12 = vec2(dot(cross(r, e2), n), dot(cross(e1, r), n)) * inv;
+    // The shaded point: the hit moved onto the plane along the unit normal. t * dir alone is
+    // off the plane by the rounding of t, up to 3u (|p0| + |X|) (u = 2^-24), which next to a
+    // light hugging the surface is a change of n . l of that over the light's height; the
+    // plane's own distance n^ . (X - p0) rounds at |X - p0| (exactly 0 for a plane along an
+    // axis), and the move along n^ leaves the point's place on the plane (its error at |X|,
+    // as the hit's) as it was. The rasterizer's b0 p0 + b1 p1 + b2 p2 rounds at the vertices'
+    // magnitudes both ways: this is of its order or better (docs/visbuffer.md, "The
+    // position's error next to a light").
+    vec3 unitN = n * inversesqrt(max(nn, 1e-38));
+    h.position = finiteHit ? hit - unitN * dot(unitN, r) : hit;
     vec2 b12dx = vec2(dot(cross(h.pdx, e2), n), dot(cross(e1, h.pdx), n)) * inv;
     vec2 b12dy = vec2(dot(cross(h.pdy, e2), n), dot(cross(e1, h.pdy), n)) * inv;
     h.b = vec3(1.0 - b12.x - b12.y, b12);
@@ -130,6 +143,43 @@ VisHit intersect(vec3 p0, vec3 p1, vec3 p2, vec2 fc, float depth) {
 }
 
 #define TP_VIS_LERP(a0, a1, a2, w) ((a0) * (w).x + (a1) * (w).y + (a2) * (w).z)
+
+// (b1, b2) where the ray through framebuffer location fc meets the plane of the triangle
+// p0 + b1 e1 + b2 e2 (n = e1 x e2, invNN = 1 / |n|^2): intersect()'s arithmetic, at any
+// location, inside the triangle or not.
+vec2 planeBarycentrics(vec3 p0, vec3 e1, vec3 e2, vec3 n, float invNN, vec2 fc) {
+    vec3 dir = unprojectPosition(fc, 1.0);
+    vec3 r = (dot(n, p0) / dot(n, dir)) * dir - p0;
+    return vec2(dot(cross(r, e2), n), dot(cross(e1, r), n)) * invNN;
+}
+
+// --vis-derivatives quad: the uv differences a fragment quad takes (docs/visbuffer.md,
+// "The texture footprint"). A quad is the 2x2 pixels at even coordinates; each of its lanes
+// (helper lanes where the triangle does not cover them) holds the uv interpolated on the same
+// triangle's plane at its pixel, at the same offset within the pixel as the shaded location.
+// Fine: d/dx from the pair in the shaded pixel's row, d/dy from the pair in its column;
+// coarse: from the quad's top row and left column, one pair for the four pixels.
+void quadUvDerivatives(vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec2 uv2, vec2 fc) {
+    vec3 e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
+    float nn = dot(n, n);
+    float inv = nn > 0.0 ? 1.0 / nn : 0.0;
+    vec2 base = fc - mod(floor(fc), 2.0); // the quad's top-left pixel, same offset
+    bool coarse = kDerivatives == TP_VIS_DERIVATIVES_QUAD_COARSE;
+    float row = coarse ? base.y : fc.y, column = coarse ? base.x : fc.x;
+    vec2 l = planeBarycentrics(p0, e1, e2, n, inv, vec2(base.x, row));
+    vec2 r = planeBarycentrics(p0, e1, e2, n, inv, vec2(base.x + 1.0, row));
+    vec2 t = planeBarycentrics(p0, e1, e2, n, inv, vec2(column, base.y));
+    vec2 b = planeBarycentrics(p0, e1, e2, n, inv, vec2(column, base.y + 1.0));
+    vec2 dx = TP_VIS_LERP(uv0, uv1, uv2, vec3(1.0 - r.x - r.y, r)) -
+              TP_VIS_LERP(uv0, uv1, uv2, vec3(1.0 - l.x - l.y, l));
+    vec2 dy = TP_VIS_LERP(uv0, uv1, uv2, vec3(1.0 - b.x - b.y, b)) -
+              TP_VIS_LERP(uv0, uv1, uv2, vec3(1.0 - t.x - t.y, t));
+    // A neighbour's ray parallel to the plane (an edge-on triangle): no footprint, as the
+    // analytic path's edge-on case.
+    bool finite = !any(isnan(vec4(dx, dy))) && !any(isinf(vec4(dx, dy)));
+    gVisUvDx = finite ? dx : vec2(0.0);
+    gVisUvDy = finite ? dy : vec2(0.0);
+}
 
 // Ambient + emissive of the surface readSurfaceAt evaluated last (ambientEmissive's answer).
 vec3 gVisAmbient = vec3(0.0);
@@ -159,8 +209,12 @@ MaterialSample readTriangle(VisTriangle t, vec2 fc, float depth) {
     VisHit h = intersect(t.p0, t.p1, t.p2, fc, depth);
     vec2 uv0 = vec2(t.v0.positionU.w, t.v0.normalV.w), uv1 = vec2(t.v1.positionU.w, t.v1.normalV.w),
          uv2 = vec2(t.v2.positionU.w, t.v2.normalV.w);
-    gVisUvDx = TP_VIS_LERP(uv0, uv1, uv2, h.bdx);
-    gVisUvDy = TP_VIS_LERP(uv0, uv1, uv2, h.bdy);
+    if (kDerivatives == TP_VIS_DERIVATIVES_ANALYTIC) {
+        gVisUvDx = TP_VIS_LERP(uv0, uv1, uv2, h.bdx);
+        gVisUvDy = TP_VIS_LERP(uv0, uv1, uv2, h.bdy);
+    } else {
+        quadUvDerivatives(t.p0, t.p1, t.p2, uv0, uv1, uv2, fc);
+    }
     gVisPosDx = h.pdx;
     gVisPosDy = h.pdy;
     // Front-facing as the rasterizer decides it (counter-clockwise in the flipped-viewport

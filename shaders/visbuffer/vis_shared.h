@@ -50,6 +50,12 @@ TP_STRUCT(VisDraw) {
 
 // ---- specialization constants (ids after deferred's 11..18, which the tiled pass sets) ----
 #define TP_VIS_SPEC_TRIANGLE_BITS 19 // low bits of an id that hold the triangle
+#define TP_VIS_SPEC_DERIVATIVES 20 // the resolve's texture footprint: TP_VIS_DERIVATIVES_* (--vis-derivatives)
+
+// ---- the uv derivatives textureGrad is given (--vis-derivatives) ----
+#define TP_VIS_DERIVATIVES_ANALYTIC 0     // d(uv)/dx, d(uv)/dy at the shaded location itself
+#define TP_VIS_DERIVATIVES_QUAD_FINE 1    // differences over the 2x2 quad: the pixel's row and column pair
+#define TP_VIS_DERIVATIVES_QUAD_COARSE 2  // differences over the 2x2 quad: its top row and left column
 
 #ifndef TP_GLSL
 static_assert(sizeof(VisDraw) == 16);

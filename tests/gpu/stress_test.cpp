@@ -32,7 +32,12 @@ const std::map<std::string, std::string>& knownFailures() {
     // (deferred, multipass) and light-on-surface (deferred) pass; docs/stress.md says how
     // robust each pass is. The shadowed cases pass for every pipeline (each consumes
     // --shadows: issue 26, item 2).
-    static const std::map<std::string, std::string> known = {};
+    static const std::map<std::string, std::string> known = {
+        {"light-hugging-far/deferred",
+         "position from depth on a floor seen at 5.7 degrees 22 m away, 0.1 mm under a light: "
+         "0.00216 beyond the per-pixel allowance against 0.00182 on lavapipe; the allowance "
+         "(the snapped vertices' displacement) lacks a term the reconstruction has there "
+         "(issue 40: found with the visibility buffer's position case, not yet derived)"}};
     return known;
 }
 
