@@ -1,7 +1,7 @@
 #pragma once
 // Reading a calibration file (`triptych.calibration/1`, written by `triptych calibrate`) for
 // its ceilings: what the viewer places passes against. The cache, its keys and the writing are
-// compare/calibration_file.h.
+// compare/cache/calibration_cache.h.
 #include <optional>
 #include <string>
 

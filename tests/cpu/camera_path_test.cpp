@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/report_html.h"
+#include "compare/report/report_html.h"
 #include "core/render/camera_file.h"
 #include "core/render/camera_path.h"
 #include "temp_path.h"
