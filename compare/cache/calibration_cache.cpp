@@ -6,37 +6,13 @@
 #include "compare/cache/build_identity.h"
 #include "core/cli/cli_common.h"
 #include "compare/cache/scene_hash.h"
-#include "core/calibrate/calibration_file.h"
 #include "core/gpu/context.h"
-#include "core/util/files.h"
 
 namespace tp::cli {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-json ceilingsToJson(const std::vector<Ceiling>& ceilings) {
-    json out = json::array();
-    for (const Ceiling& c : ceilings)
-        out.push_back({{"name", c.name}, {"unit", c.unit}, {"what", c.what}, {"median", c.median},
-                       {"min", c.min}, {"max", c.max}, {"median_ms", c.medianMs}, {"work", c.work},
-                       {"repeats", c.repeats}});
-    return out;
-}
-
-// Every field the readers read, of the types they read them as.
-bool isComplete(const json& file) {
-    if (!file.value("measured_at", json()).is_string() || !file.value("ceilings", json()).is_array())
-        return false;
-    for (const json& c : file["ceilings"])
-        for (const char* k : {"median", "min", "max"})
-            if (!c.is_object() || !c.value(k, json()).is_number() || !c.value("unit", json()).is_string() ||
-                !c.value("what", json()).is_string() || !c.value("name", json()).is_string())
-                return false;
-    const json key = file.value("key", json());
-    return key.is_object() && key.value("device", json()).is_string() && key.value("driver", json()).is_string();
-}
 
 std::shared_ptr<RunCalibration> usable(const json& file, const std::string& path) {
     auto cal = std::make_shared<RunCalibration>();
@@ -58,9 +34,9 @@ std::shared_ptr<RunCalibration> unavailable(const std::string& why) {
 // used, and say so in the report through their key).
 std::shared_ptr<RunCalibration> fromFile(GpuContext& ctx, const std::string& path) {
     const std::optional<json> file = readCalibration(path);
-    if (!file || !isCalibration(*file) || !isComplete(*file))
+    if (!file || !isCalibration(*file) || !isCompleteCalibration(*file))
         throw UsageError("--calibration: " + path + " is not a complete triptych calibration");
-    const json& key = (*file)["key"]; // isComplete: device and driver are strings
+    const json& key = (*file)["key"]; // complete: device and driver are strings
     if (key["device"] != ctx.info.name || key["driver"] != ctx.info.driver)
         throw UsageError("--calibration: " + path + " was measured on " + key["device"].get<std::string>() +
                          ", not on " + ctx.info.name);
@@ -82,42 +58,6 @@ std::string cachedCalibrationPath(const json& key) {
     return dir + "/" + h.hex() + ".json";
 }
 
-bool isCalibration(const json& file) {
-    return file.is_object() && file.value("schema", json()) == json(kCalibrationSchema); // any type: no throw
-}
-
-std::optional<json> readCalibration(const std::string& path) {
-    if (!fs::exists(path)) return std::nullopt;
-    Result<std::string> text = readWholeFile(path);
-    json file = text ? json::parse(*text, nullptr, false) : json();
-    return file.is_discarded() ? json() : file;
-}
-
-std::optional<json> reusableCalibration(const json& file, const json& key, std::string& why) {
-    if (!isCalibration(file) || !isComplete(file)) {
-        why = "not a complete calibration";
-        return std::nullopt;
-    }
-    if (file["key"] != key) {
-        why = "made for another device, driver, build or mode";
-        return std::nullopt;
-    }
-    std::vector<std::string> names;
-    for (const json& c : file["ceilings"])
-        names.push_back(c["name"]);
-    if (names != ceilingNames()) {
-        why = "its ceilings are not this build's";
-        return std::nullopt;
-    }
-    return file;
-}
-
-json calibrationJson(const json& key, uint32_t repeats, const std::vector<std::string>& command,
-                     const std::vector<Ceiling>& ceilings) {
-    return {{"schema", kCalibrationSchema}, {"key", key}, {"measured_at", utcNow()},
-            {"repeats", repeats}, {"command", command}, {"ceilings", ceilingsToJson(ceilings)}};
-}
-
 json measureCalibration(GpuContext& ctx, const json& key, const std::string& path, uint32_t repeats,
                         const std::vector<std::string>& command) {
     const bool quick = key["quick"].get<bool>();
@@ -127,9 +67,10 @@ json measureCalibration(GpuContext& ctx, const json& key, const std::string& pat
     co.quick = quick;
     co.repeats = repeats;
     co.progress = [](const std::string& line) { std::fprintf(stderr, "triptych: %s\n", line.c_str()); };
-    const json file = calibrationJson(key, repeats, command, measureCeilings(ctx, co));
+    const std::vector<Ceiling> ceilings = measureCeilings(ctx, co); // measured_at: when they were done
+    const json file = calibrationJson(key, utcNow(), repeats, command, ceilings);
     if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) ensureDirectory(parent.string());
-    if (Status written = writeTextFile(path, file.dump(2) + "\n"); !written.ok())
+    if (Status written = writeCalibration(path, file); !written.ok())
         throw UsageError("calibrate: " + written.error());
     return file;
 }

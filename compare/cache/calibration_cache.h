@@ -1,7 +1,8 @@
 #pragma once
-// The calibration file (`triptych.calibration/1`, docs/efficiency.md): written by `triptych
-// calibrate`, keyed by device, driver, triptych build and mode, read by render, compare and
-// sweep to place every pass against the device's ceilings (--calibration).
+// The calibration cache (docs/efficiency.md): a device's calibration file (its format, read and
+// written: core/calibrate/calibration_file.h) kept in the user's cache folder, keyed by device,
+// driver, triptych build and mode; measured by `triptych calibrate` or --calibration measure, and
+// what render, compare and sweep place every pass against (--calibration).
 #include <memory>
 #include <optional>
 #include <string>
@@ -9,8 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/calibrate/calibration.h"
-#include "core/calibrate/efficiency.h"
+#include "core/calibrate/calibration_file.h"
 #include "core/render/frame_runner.h"
 
 namespace tp {
@@ -19,20 +19,9 @@ class GpuContext;
 
 namespace tp::cli {
 
-constexpr const char* kCalibrationSchema = "triptych.calibration/1";
-
 nlohmann::json calibrationKey(const GpuContext& ctx, bool quick);
 // The file a key lives in within the user's cache folder; empty without a cache folder.
 std::string cachedCalibrationPath(const nlohmann::json& key);
-bool isCalibration(const nlohmann::json& file);
-// Absent: nothing; else parsed (a value that is not a calibration when it does not parse).
-std::optional<nlohmann::json> readCalibration(const std::string& path);
-// `file` when it is a complete calibration of `key` with this build's ceilings; else nothing,
-// with `why` saying what was wrong.
-std::optional<nlohmann::json> reusableCalibration(const nlohmann::json& file, const nlohmann::json& key,
-                                                  std::string& why);
-nlohmann::json calibrationJson(const nlohmann::json& key, uint32_t repeats, const std::vector<std::string>& command,
-                               const std::vector<Ceiling>& ceilings);
 // Measures this device (progress on stderr) and writes the file to `path`.
 nlohmann::json measureCalibration(GpuContext& ctx, const nlohmann::json& key, const std::string& path,
                                   uint32_t repeats, const std::vector<std::string>& command);
