@@ -2,12 +2,11 @@
 // camera and lights), one exposure for every PNG (auto from the reference), signed
 // difference EXRs and heat maps on one shared scale, metrics against the reference and
 // between pipelines, then report.html and, last, report.json: a directory without
-// report.json is an unfinished run.
+// report.json is an unfinished run. The measurements and their maps: compare_measure.h.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <CLI/CLI.hpp>
 
 #include "compare/cache/calibration_cache.h"
@@ -15,44 +14,22 @@
 #include "compare/report/compare_summary.h"
 #include "compare/measure/path_run.h"
 #include "compare/commands/compare.h"
+#include "compare/commands/compare_measure.h"
 #include "compare/cache/reference_cache.h"
 #include "compare/report/report_html.h"
 #include "compare/report/report_json.h"
-#include "core/image/difference.h"
-#include "core/image/flip.h"
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/camera_file.h"
 #include "core/render/scene_gpu.h"
 #include "core/util/files.h"
-#include "core/util/parallel.h"
 
 namespace tp::cli {
 namespace {
 
 void check(const Status& s) {
     if (!s) throw UsageError(s.error());
-}
-
-// Files of the pair (a, b): the signed difference a - b.
-std::string pairDiffStem(const std::string& a, const std::string& b) {
-    return a + "_vs_" + b + "_diff";
-}
-
-// The legend's font scales with its height: keep it readable when the page shrinks a large
-// image to a column (about 320-600 px wide).
-uint32_t legendHeight(const ImageRGBA& image) {
-    return 24 * std::max(1u, image.width / 320);
-}
-
-// Signed EXR and heat map (on the report's one scale) of a difference image.
-void writeDifference(const std::string& out, const std::string& stem, const ImageRGBA& diff,
-                     float scale, std::vector<std::string>& files) {
-    check(writeExr(out + "/" + stem + ".exr", diff, ExrPixelType::Float));
-    check(writePng(out + "/" + stem + ".png", heatMap(diff, scale, legendHeight(diff))));
-    files.push_back(stem + ".exr");
-    files.push_back(stem + ".png");
 }
 
 // A previous run's report must not survive next to this run's partial output.
@@ -77,19 +54,18 @@ void removeStaleOutputs(const std::string& out, const std::vector<std::string>& 
 // Runs one renderer; a renderer that cannot be built, or a Vulkan failure inside it, becomes
 // a failed outcome so the other pipelines still run.
 PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
-                          const CompareRecord& r, const std::string& label) {
+                          const CompareRecord& r, const CompareOptions& o, const std::string& label) {
     PipelineOutcome p;
     p.name = name;
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
-    RunOptions ro = progressRunOptions(name, r.options->warmup, r.options->frames);
+    RunOptions ro = progressRunOptions(name, o.warmup, o.frames);
     if (r.calibration) ro.ceilings = ceilingsOf(*r.calibration);
     Result<RunResult> result =
         name == kReferenceRenderer
             ? runReferenceCached(ctx, scene, r.features, r.settings, ro,
-                                 referenceCacheDir(r.options->referenceCache,
-                                                   r.options->noReferenceCache),
+                                 referenceCacheDir(o.referenceCache, o.noReferenceCache),
                                  p.cache)
             : tryRunRenderer(ctx, scene, *entry, r.features, r.settings, ro);
     if (result)
@@ -116,93 +92,14 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
     p.files = {p.name + ".exr", p.name + ".png"};
 }
 
-// Metrics against the reference and the signed difference of every pipeline that ran.
-std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
-    const ImageRGBA& ref = r.reference.run->hdr;
-    MetricsOptions hdrOptions;
-    hdrOptions.psnrPeak = r.hdrPsnrPeak;
-    std::vector<ImageRGBA> diffs;
-    const FlipReference flipRef = prepareFlipReference(ref, r.exposureEv, r.options->flipDistance);
-    for (PipelineOutcome& p : r.pipelines) {
-        if (!p.run) {
-            diffs.emplace_back();
-            continue;
-        }
-        p.hdr = computeError(p.run->hdr, ref, hdrOptions);
-        p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
-        diffs.push_back(signedDifference(p.run->hdr, ref));
-        p.diffP99 = differencePercentile99(diffs.back());
-        p.flip = measureFlip(p.run->hdr, flipRef, /*keepMaps=*/true);
-        r.diffScale = std::max(r.diffScale, p.diffP99);
-    }
-    // A scale of 0 (every pipeline equals the reference) would make the legend meaningless.
-    if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f;
-    return diffs;
-}
-
-// A FLIP map as EXR (the values, grey) and as the magma PNG with its legend.
-void writeFlipMap(const std::string& out, const std::string& stem, const ImageR32& map,
-                  std::vector<std::string>& files) {
-    ImageRGBA grey(map.width, map.height);
-    for (size_t i = 0; i < map.r.size(); ++i) {
-        for (int c = 0; c < 3; ++c)
-            grey.rgba[i * 4 + size_t(c)] = map.r[i];
-        grey.rgba[i * 4 + 3] = 1.0f;
-    }
-    check(writeExr(out + "/" + stem + ".exr", grey, ExrPixelType::Float));
-    check(writePng(out + "/" + stem + ".png", flipErrorMap(map, legendHeight(grey))));
-    files.push_back(stem + ".exr");
-    files.push_back(stem + ".png");
-}
-
-// Each pipeline's maps are its own files: written side by side (EXR and PNG encoding is most
-// of a compare's time after the renders).
-void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs) {
-    const std::string& out = r.options->out;
-    forEachInParallel(r.pipelines.size(), [&](size_t i) {
-        PipelineOutcome& p = r.pipelines[i];
-        if (!p.run) return;
-        writeDifference(out, p.name + "_diff", diffs[i], r.diffScale, p.files);
-        if (!p.flip.measured) return;
-        writeFlipMap(out, p.name + "_flip", p.flip.hdrMap, p.files);
-        writeFlipMap(out, p.name + "_flip_ldr", p.flip.ldrMap, p.files);
-        p.flip.hdrMap = {};
-        p.flip.ldrMap = {};
-    });
-}
-
-// Pipelines against each other: metrics of a against b, and the signed difference a - b as
-// EXR and heat map on the same scale as the maps against the reference (what exceeds it
-// saturates), so one legend reads every map of the report.
-void measurePairs(CompareRecord& r) {
-    MetricsOptions hdrOptions;
-    hdrOptions.psnrPeak = r.hdrPsnrPeak;
-    std::vector<std::pair<size_t, size_t>> ran; // pairs of pipelines that both ran, in order
-    for (size_t i = 0; i < r.pipelines.size(); ++i)
-        for (size_t k = i + 1; k < r.pipelines.size(); ++k)
-            if (r.pipelines[i].run && r.pipelines[k].run) ran.push_back({i, k});
-    r.pairs.resize(ran.size());
-    forEachInParallel(ran.size(), [&](size_t n) { // each pair its own slot and files
-        const PipelineOutcome &a = r.pipelines[ran[n].first], &b = r.pipelines[ran[n].second];
-        PairOutcome pair{a.name, b.name, computeError(a.run->hdr, b.run->hdr, hdrOptions),
-                         computeError(tonemapToDisplay(a.run->hdr, r.exposureEv),
-                                      tonemapToDisplay(b.run->hdr, r.exposureEv))};
-        ImageRGBA diff = signedDifference(a.run->hdr, b.run->hdr);
-        pair.diffP99 = differencePercentile99(diff);
-        writeDifference(r.options->out, pairDiffStem(a.name, b.name), diff, r.diffScale,
-                        pair.files);
-        r.pairs[n] = std::move(pair);
-    });
-}
-
-void renderPipelines(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene,
+void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
                      const std::vector<std::string>& names) {
     for (size_t i = 0; i < names.size(); ++i) {
         std::string label =
             "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
-        PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, label);
+        PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, o, label);
         if (p.run) {
-            writeImages(r.options->out, p, r.exposureEv);
+            writeImages(o.out, p, r.exposureEv);
             warnDropped(p);
         }
         r.pipelines.push_back(std::move(p));
@@ -221,9 +118,9 @@ struct SecondReference {
     std::optional<ErrorReport> PipelineOutcome::*display;
 };
 
-void measureAgainst(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, const SecondReference& s) {
+void measureAgainst(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
+                    const SecondReference& s) {
     CompareRecord c; // what renderOne reads, with the second reference's knob
-    c.options = r.options;
     c.features = r.features;
     c.settings = r.settings;
     c.calibration = r.calibration;
@@ -232,10 +129,10 @@ void measureAgainst(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, const
     // A reference already run with that value is the second reference: not again.
     const auto mode = r.settings.knobs.find(s.knob);
     const bool already = mode != r.settings.knobs.end() && mode->second == s.value;
-    second = already ? r.reference : renderOne(ctx, gpuScene, kReferenceRenderer, c, s.label);
+    second = already ? r.reference : renderOne(ctx, gpuScene, kReferenceRenderer, c, o, s.label);
     second.name = s.name;
     if (!second.run) return;
-    writeImages(r.options->out, second, r.exposureEv);
+    writeImages(o.out, second, r.exposureEv);
     MetricsOptions hdr;
     hdr.psnrPeak = r.hdrPsnrPeak;
     const ImageRGBA secondDisplay = tonemapToDisplay(second.run->hdr, r.exposureEv);
@@ -252,9 +149,9 @@ void measureAgainst(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene, const
 // Under MSAA, the second error: the reference rendered once more with --reference-msaa center
 // (every sample shaded at the pixel centre). The error against the supersampled reference is
 // the total; against this one, the method alone.
-void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
-    if (r.settings.msaa == 1 || !r.options->centerReference) return;
-    measureAgainst(r, ctx, gpuScene,
+void measureAgainstCenterReference(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene) {
+    if (r.settings.msaa == 1 || !o.centerReference) return;
+    measureAgainst(r, o, ctx, gpuScene,
                    {"reference-msaa", "center", "[center reference]", "reference_center",
                     &CompareRecord::centerReference, &PipelineOutcome::hdrVsCenter,
                     &PipelineOutcome::displayVsCenter});
@@ -263,9 +160,10 @@ void measureAgainstCenterReference(CompareRecord& r, GpuContext& ctx, SceneGpu& 
 // With --shadows, the reference casts shadow rays (exact visibility); the second one samples the
 // very shadow maps the pipelines render (--reference-shadows maps). Against the first, a
 // pipeline's error is the total; against the second, its lighting architecture's part alone.
-void measureAgainstShadowMapReference(CompareRecord& r, GpuContext& ctx, SceneGpu& gpuScene) {
+void measureAgainstShadowMapReference(CompareRecord& r, const CompareOptions& o, GpuContext& ctx,
+                                      SceneGpu& gpuScene) {
     if (!r.settings.shadows.enabled() || r.shadowPlan.empty()) return; // no light shadowed here
-    measureAgainst(r, ctx, gpuScene,
+    measureAgainst(r, o, ctx, gpuScene,
                    {"reference-shadows", "maps", "[shadow-map reference]", "reference_shadow_maps",
                     &CompareRecord::shadowMapReference, &PipelineOutcome::hdrVsShadowMaps,
                     &PipelineOutcome::displayVsShadowMaps});
@@ -273,9 +171,8 @@ void measureAgainstShadowMapReference(CompareRecord& r, GpuContext& ctx, SceneGp
 
 // The path first (compare/measure/path_run.h); the rest of the run is the full report at its worst
 // view, so the scene's camera and lights are left there and its hashes follow.
-void runComparePath(CompareRecord& r, GpuContext& ctx, Scene& scene, SceneGpu& gpuScene,
+void runComparePath(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, Scene& scene, SceneGpu& gpuScene,
                     const std::vector<std::string>& names, const PathInput& path) {
-    const CompareOptions& o = *r.options;
     PathRunSetup setup{ctx, scene, gpuScene, r.features, r.settings, names, o.warmup, o.frames,
                        o.exposure};
     PathRecord rec = runPath(setup, path);
@@ -285,6 +182,12 @@ void runComparePath(CompareRecord& r, GpuContext& ctx, Scene& scene, SceneGpu& g
     r.path = pathJson(rec);
     std::fprintf(stderr, "triptych: path done; the full report follows at its worst view, %u\n",
                  rec.worstView);
+}
+
+// What report.json records of the options (the writers never see the options themselves).
+CompareRequest requestOf(const CompareOptions& o) {
+    return {o.commandLine, o.scene.seed,   o.scene.scene, o.scene.lightTypes, o.scene.lightCount,
+            o.frames,      o.warmup,       o.exposure,    o.flipDistance,     o.centerReference};
 }
 
 } // namespace
@@ -298,7 +201,7 @@ int runCompare(const CompareOptions& o) {
     checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     CompareRecord r;
-    r.options = &o;
+    r.request = requestOf(o);
     r.ctx = ctx.get();
     r.settings = makeSettings(o.view, *ctx, o.knobs);
     Scene scene = loadScene(o.scene, &r.cameraSource);
@@ -322,8 +225,8 @@ int runCompare(const CompareOptions& o) {
 
     SceneGpu gpuScene(*ctx, scene);
     r.sharedMemory = ctx->ledger.entriesOf("scene");
-    if (path) runComparePath(r, *ctx, scene, gpuScene, names, *path);
-    r.reference = renderOne(*ctx, gpuScene, kReferenceRenderer, r,
+    if (path) runComparePath(r, o, *ctx, scene, gpuScene, names, *path);
+    r.reference = renderOne(*ctx, gpuScene, kReferenceRenderer, r, o,
                             "[1/" + std::to_string(names.size() + 1) + "]");
     if (!r.reference.run)
         throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
@@ -333,13 +236,12 @@ int runCompare(const CompareOptions& o) {
     check(writeLightsFile(o.out + "/lights.json", scene.lights));
     check(writeCameraFile(o.out + "/camera.json", scene.camera)); // ready for --camera
 
-    renderPipelines(r, *ctx, gpuScene, names);
+    renderPipelines(r, o, *ctx, gpuScene, names);
     r.shadowPlan = gpuScene.shadowPlan(); // set up by the runs (a cached reference sets up nothing)
-    std::vector<ImageRGBA> diffs = measure(r, tonemapToDisplay(r.reference.run->hdr, r.exposureEv));
-    writeDifferences(r, diffs);
-    measurePairs(r);
-    measureAgainstCenterReference(r, *ctx, gpuScene);
-    measureAgainstShadowMapReference(r, *ctx, gpuScene);
+    measureAgainstReference(r, o.out);
+    measurePairs(r, o.out);
+    measureAgainstCenterReference(r, o, *ctx, gpuScene);
+    measureAgainstShadowMapReference(r, o, *ctx, gpuScene);
     r.validationMessages = ctx->validationMessages();
 
     nlohmann::json report = reportJson(r);

@@ -235,7 +235,7 @@ int runStress(const StressOptions& o) {
         printCase(results.back());
     }
     const std::vector<std::string> validation = ctx->validationMessages();
-    nlohmann::json report = stressJson(o, *ctx, results, validation);
+    nlohmann::json report = stressJson(o.commandLine, *ctx, results, validation);
     Result<std::string> html = stressHtml(report, o.out);
     if (!html) throw UsageError(html.error());
     check(writeTextFile(o.out + "/stress.html", *html));

@@ -3,15 +3,12 @@
 // the reference and every registered pipeline, measured against the case's expectations
 // (core/render/error_model.h and each pipeline's register.cpp), written as images, difference maps,
 // stress.json and stress.html (docs/stress.md).
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/cli/cli_common.h"
-#include "core/image/metrics.h"
-#include "core/render/error_model.h"
-#include "core/render/frame_runner.h"
-#include "core/scene/stress_scenes.h"
+#include "compare/measure/stress_case.h"
+#include "core/render/settings.h"
 
 namespace tp::cli {
 
@@ -24,75 +21,8 @@ struct StressOptions {
     std::vector<std::string> commandLine;
 };
 
-// One verdict ingredient: `measured` against `limit` (pass when measured <= limit, or
-// >= for the checks named "stressed: ...").
-struct StressCheck {
-    std::string name;
-    bool pass = true;
-    double measured = 0;
-    double limit = 0;
-    std::string why;
-};
-
-struct StressOutcome {
-    std::string name;
-    std::string error; // empty when it ran
-    std::optional<RunResult> run;
-    ErrorReport hdr, display; // against the reference, whole image
-    uint64_t nanPixels = 0, infPixels = 0;
-    // Channels where the reference exceeds the fp16 maximum 65,504, and what this pipeline
-    // wrote there: about 65,504 (saturated), +Inf, or a value within the bound.
-    uint64_t overflowChannels = 0, saturated = 0, overflowInf = 0;
-    bool fp16Storage = false;   // its "hdr" target is RGBA16F (from the memory ledger)
-    uint64_t depthMismatch = 0; // pixels whose depth differs from the reference's
-    // Cases with inert lights (StressCase::inertLights): pixels whose colour bits differ from
-    // the same renderer's image of the twin scene, where those lights have intensity 0.
-    bool inertChecked = false;
-    uint64_t inertChanged = 0;
-    // Cases checked on HDR values (StressCase::hdrChecked): max over pixels and channels of
-    // (|p - r| less the pixel's allowance) / (relative * |r| + absolute); pass at <= 1.
-    double hdrBeyondBound = -1; // -1: not checked
-    double lightsDropped = 0;
-    double rawMaxTonemapped = 0;     // |T(p) - T(r)| max outside the fp16-overflow channels
-    double checkedMaxTonemapped = 0; // the same less each pixel's allowance (ErrorBound::perPixel)
-    uint64_t allowancePixels = 0;    // pixels the allowance widened
-    uint64_t unboundedPixels = 0;    // pixels the allowance leaves unchecked (+Inf)
-    ErrorBound bound;
-    std::vector<StressCheck> checks;
-    bool pass = false;
-    float diffP99 = 0;
-    std::vector<std::string> files; // relative to --out
-};
-
-// A shadowed case's second reference and the shadow technique's verdict: the reference on the
-// pipelines' shadow maps (StressCaseResult::reference) against the exact one (`rays`), checked
-// against the case's facts (stress::ShadowFacts; compare/measure/stress_shadows.h).
-struct ShadowTechnique {
-    StressOutcome rays; // the reference with --reference-shadows rays
-    ErrorReport hdr, display; // the maps reference against the rays reference
-    std::vector<StressCheck> checks;
-    bool pass = false;
-};
-
-struct StressCaseResult {
-    const stress::StressCase* c = nullptr;
-    size_t lights = 0, triangles = 0;
-    RenderSettings settings;
-    float exposureEv = 0;
-    float diffScale = 0;
-    uint32_t subPixelBits = 8; // the device's VkPhysicalDeviceLimits::subPixelPrecisionBits
-    double seconds = 0;
-    StressOutcome reference;
-    std::vector<StressOutcome> pipelines;
-    std::optional<ShadowTechnique> shadow; // shadowed cases (StressCase::shadows)
-    bool pass = false;
-};
-
 // Exit codes: 0 every case passed; 6 a case failed (its verdicts are in the report);
 // 3 validation messages (with --validate). Bad input throws UsageError (2).
 int runStress(const StressOptions& o);
-
-// "fp16 storage behaviour" of an outcome as one phrase for the report.
-std::string overflowBehaviour(const StressOutcome& p);
 
 } // namespace tp::cli

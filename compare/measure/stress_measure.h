@@ -1,7 +1,7 @@
 #pragma once
 // Measuring one pipeline's image against the reference in a stress case and turning the
 // figures into checks and a verdict (internal to triptych stress).
-#include "compare/commands/stress_run.h"
+#include "compare/measure/stress_case.h"
 
 namespace tp::cli {
 

@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "compare/report/svg_plot.h"
+#include "core/util/number_text.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
 #include "core/render/position_allowance.h"

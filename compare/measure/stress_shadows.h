@@ -6,7 +6,7 @@
 // maps' texel footprint and the filter (include/shadows.h). Internal to triptych stress.
 #include <string>
 
-#include "compare/commands/stress_run.h"
+#include "compare/measure/stress_case.h"
 #include "core/passes/shadow_plan.h"
 
 namespace tp::cli {

@@ -57,7 +57,7 @@ nlohmann::json secondReferenceJson(const CompareRecord& r, const PipelineOutcome
 nlohmann::json centerReferenceJson(const CompareRecord& r) {
     if (r.settings.msaa == 1)
         return {{"rendered", false}, {"why", "MSAA is 1x: both references are one image"}};
-    if (!r.options->centerReference) return {{"rendered", false}, {"why", "--no-center-reference"}};
+    if (!r.request.centerReference) return {{"rendered", false}, {"why", "--no-center-reference"}};
     return secondReferenceJson(
         r, r.centerReference, "reference-msaa center",
         "error against the supersampled reference = total; against the centre reference = the "
@@ -116,7 +116,7 @@ nlohmann::json metricTableJson(const CompareRecord& r) {
 } // namespace
 
 nlohmann::json reportJson(const CompareRecord& r) {
-    const CompareOptions& o = *r.options;
+    const CompareRequest& o = r.request;
     nlohmann::json j;
     j["schema"] = "triptych.report/2";
     j["command_line"] = o.commandLine;
@@ -124,9 +124,9 @@ nlohmann::json reportJson(const CompareRecord& r) {
     bool allOk = std::all_of(r.pipelines.begin(), r.pipelines.end(),
                              [](const PipelineOutcome& p) { return bool(p.run); });
     j["status"] = allOk ? "ok" : "failed";
-    j["seed"] = o.scene.seed;
+    j["seed"] = o.seed;
     j["scene"] = sceneJson(*r.scene, r.features);
-    j["scene"]["path"] = o.scene.scene.empty() ? "builtin:courtyard" : o.scene.scene;
+    j["scene"]["path"] = o.scenePath.empty() ? "builtin:courtyard" : o.scenePath;
     j["scene"]["hash_fnv1a64"] =
         r.sceneHash.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.sceneHash);
     const bool fromFile = !r.sceneFiles.hash.empty();
@@ -147,8 +147,8 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["settings"]["warmup"] = o.warmup;
     j["settings"]["exposure"] = o.exposure;
     j["settings"]["exposure_ev"] = r.exposureEv;
-    j["settings"]["light_types"] = o.scene.lightTypes;
-    j["settings"]["lights_requested"] = o.scene.lightCount;
+    j["settings"]["light_types"] = o.lightTypes;
+    j["settings"]["lights_requested"] = o.lightsRequested;
     j["device"] = deviceJson(*r.ctx);
     j["calibration"] = calibrationUseJson(*r.calibration);
     j["difference_scale"] = {

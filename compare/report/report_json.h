@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/cache/calibration_cache.h"
-#include "compare/commands/compare.h"
 #include "compare/measure/flip_measure.h"
 #include "compare/cache/reference_cache.h"
 #include "compare/cache/scene_hash.h"
@@ -45,8 +44,21 @@ struct PairOutcome {
     std::vector<std::string> files; // a_vs_b_diff.exr / .png
 };
 
+// What the user asked for, as report.json records it: enough to repeat the run.
+struct CompareRequest {
+    std::vector<std::string> commandLine;
+    uint64_t seed = 1;
+    std::string scenePath; // as given; empty: the built-in scene
+    std::string lightTypes;
+    int lightsRequested = 0;
+    int frames = 0, warmup = 0;
+    std::string exposure;       // "auto" or an EV, as given
+    float flipDistance = 0.7f;  // FLIP's viewing distance, metres
+    bool centerReference = true; // false: --no-center-reference
+};
+
 struct CompareRecord {
-    const CompareOptions* options = nullptr;
+    CompareRequest request;
     const Scene* scene = nullptr;
     SceneFeatures features;
     RenderSettings settings;

@@ -117,7 +117,7 @@ json caseJson(const StressCaseResult& r, const GpuContext& ctx) {
 
 } // namespace
 
-json stressJson(const StressOptions& o, const GpuContext& ctx,
+json stressJson(const std::vector<std::string>& commandLine, const GpuContext& ctx,
                 const std::vector<StressCaseResult>& results,
                 const std::vector<std::string>& validationMessages) {
     json cases = json::array(), failures = json::array();
@@ -135,8 +135,8 @@ json stressJson(const StressOptions& o, const GpuContext& ctx,
     }
     json j;
     j["schema"] = "triptych.stress/2";
-    j["command_line"] = o.commandLine;
-    j["command"] = quoted(o.commandLine);
+    j["command_line"] = commandLine;
+    j["command"] = quoted(commandLine);
     j["status"] = passed == results.size() ? "pass" : "fail";
     j["device"] = deviceJson(ctx);
     // Deferred's per-pixel allowance depends on it (docs/stress.md, "Position from depth next to a

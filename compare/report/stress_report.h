@@ -6,12 +6,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/commands/stress_run.h"
+#include "compare/measure/stress_case.h"
 #include "core/gpu/context.h"
 
 namespace tp::cli {
 
-nlohmann::json stressJson(const StressOptions& o, const GpuContext& ctx,
+// commandLine: argv as given (stress.json repeats the run).
+nlohmann::json stressJson(const std::vector<std::string>& commandLine, const GpuContext& ctx,
                           const std::vector<StressCaseResult>& results,
                           const std::vector<std::string>& validationMessages);
 

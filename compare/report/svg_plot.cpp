@@ -102,17 +102,6 @@ std::string escapeXml(const std::string& s) {
     return out;
 }
 
-std::string formatNumber(double v) {
-    char buf[32];
-    if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "nan");
-    double a = std::abs(v);
-    if (a != 0.0 && (a < 1e-3 || a >= 1e6))
-        std::snprintf(buf, sizeof buf, "%.2e", v);
-    else
-        std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
-
 std::string barChartSvg(const std::vector<BarGroup>& groups, const std::string& unit, int width) {
     const double rowH = 18, labelW = 220, valueW = 110, top = 6;
     double maxValue = 0;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/render/pipeline_colour.h" // pipelineColour: a series' palette index
+#include "core/util/number_text.h"     // formatNumber, the plots' and pages' numbers
 
 namespace tp::cli {
 
@@ -59,7 +60,5 @@ std::string seriesPlotSvg(const std::vector<Series>& series, const std::string& 
 
 // Escapes &, <, >, " and ' for HTML/SVG text and attributes.
 std::string escapeXml(const std::string& text);
-// Short human form of a number: 3 significant digits, exponent when very small or large.
-std::string formatNumber(double v);
 
 } // namespace tp::cli
