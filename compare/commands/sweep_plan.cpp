@@ -36,8 +36,6 @@ int toInt(const std::string& s, const char* option) {
     return int(v);
 }
 
-// Every value of every knob against its declaration, before anything runs. Single values
-// (knobs the sweep does not vary) are checked by the CLI, like every command's knobs.
 void checkKnobLists(const SweepOptions& o) {
     for (const KnobReaders& k : allKnobs()) {
         if (!k.knob.sweepable) continue;
@@ -46,8 +44,6 @@ void checkKnobLists(const SweepOptions& o) {
     }
 }
 
-// A pipeline runs once per value of the knobs it reads, with the first value of the others,
-// so the sweep repeats no identical run.
 std::vector<RenderSettings> knobCombos(const std::string& pipeline, const SweepOptions& o,
                                        const RenderSettings& base) {
     std::vector<RenderSettings> combos = {base};
