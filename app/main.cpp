@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "compare/commands.h"
+#include "compare/commands/commands.h"
 #include "core/cli/options.h"
 #include "core/gpu/vk_check.h"
 #include "core/scene/shadow_settings.h"

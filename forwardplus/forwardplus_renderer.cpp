@@ -25,6 +25,7 @@
 #include "core/passes/shadow_maps.h"
 #include "core/renderer/msaa_knob.h"
 #include "forwardplus/forward_shading.h"
+#include "forwardplus/fp_config.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "forwardplus/fp_settings.h"
@@ -45,44 +46,15 @@ class ForwardPlusRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
           fp_(fp::readSettings(info.settings)), manyViews_(info.settings.manyViews),
           hdrFormat_(fp_.hdr == HdrStorage::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
-                                                 : VK_FORMAT_R32G32B32A32_SFLOAT) {
-        gpuBinning_ = binned() && la::binsOnGpu(ctx_, fp_.assign.bin);
-        // --light-spheres: the pass pays on a CPU device (lavapipe runs each candidate's
-        // transform in every tile it is tested in); on a GPU the transform is cheap and the
-        // buffer (16 MB at 1,000,000 lights) would take Forward+ past 100 MB there.
-        spherePass_ = fp_.spheres == fp::Spheres::Pass ||
-                      (fp_.spheres == fp::Spheres::Auto && ctx_.isCpuDevice());
-        // --light-loop subgroup where the device has the operations; otherwise the lane loop
-        // (the same image), with a note in the report.
-        if (clustered() && fp_.loop == la::Loop::Subgroup) {
-            subgroupMissing_ = la::subgroupLoopUnsupported(ctx_.caps);
-            subgroupLoop_ = subgroupMissing_.empty();
-        }
-        // --cull-by: asked for, a subgroup per tile must be possible; auto takes it on a GPU that
-        // can.
-        const fp::CullBy cullBy = fp_.cullBy;
-        const std::string noSubgroupCull = fp::subgroupCullingUnsupported(ctx_.caps);
-        if (cullBy == fp::CullBy::Subgroup && !noSubgroupCull.empty())
-            throw RendererError("--cull-by subgroup: " + noSubgroupCull +
-                                " (use --cull-by invocation)");
-        subgroupCull_ =
-            cullBy == fp::CullBy::Subgroup ||
-            (cullBy == fp::CullBy::Auto && !ctx_.isCpuDevice() && noSubgroupCull.empty());
-        if (clustered() && layout() != TP_FP_LAYOUT_COMPACT)
-            throw RendererError("--light-assign clustered needs --light-lists compact (got '" +
-                                fp::listsText(fp_.lists) + "')");
+                                                 : VK_FORMAT_R32G32B32A32_SFLOAT),
+          r_(fp::resolve(ctx_, scene_, features_, fp_)) {
         grid_ = la::makeTileGrid(fp_.width, fp_.height, fp_.assign.tile);
-        // Two lists only when something is blended (and drawn); clustered has one list per
-        // tile whose span covers the blended surfaces too.
-        blendPass_ = features_.blended && scene_.hasDraws(DrawFilter::Blend);
-        twoLists_ = blendPass_ && !clustered();
-        numLists_ = twoLists_ ? 2 : 1;
         classes_ = la::classifyLights(scene_.lightsGpu());
         if (boundsLists()) boundLists();
         lists_ = fp::sizeLists(ctx_, {layout(), fp::listsText(fp_.lists), grid_.count(),
-                                      fp_.tileCapacity, cap_.slots, numLists_});
+                                      fp_.tileCapacity, cap_.slots, r_.numLists});
         culling_.emplace(ctx_, scene_, cullConfig());
-        if (blendPass_) blendBounds_.emplace(ctx_, scene_);
+        if (r_.blendPass) blendBounds_.emplace(ctx_, scene_);
         // Opaque fragments shaded once at the pixel centre: where their centres are
         // (core/passes/blended_bounds.h, `opaque`).
         if (fp_.sampling.perPixelUnderMsaa()) centreBounds_.emplace(ctx_, scene_);
@@ -132,7 +104,7 @@ class ForwardPlusRenderer final : public Renderer {
         // Blended depth bounds: the blended shading pass's fragments, before the culling reads
         // them.
         ResourceHandle blendBounds;
-        if (blendPass_)
+        if (r_.blendPass)
             blendBounds =
                 blendBounds_->plan(graph, {grid_, depthSrc, samples(), fp_.sampling.perSample(),
                                            fp_.sampling.perPixelUnderMsaa()});
@@ -142,7 +114,7 @@ class ForwardPlusRenderer final : public Renderer {
             centres.opaque = true;
             centreBounds = centreBounds_->plan(graph, centres);
         }
-        const ResourceHandle spheres = spherePass_ ? spheres_.plan(graph) : ResourceHandle{};
+        const ResourceHandle spheres = r_.spherePass ? spheres_.plan(graph) : ResourceHandle{};
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres,
                                centreBounds});
 
@@ -150,8 +122,8 @@ class ForwardPlusRenderer final : public Renderer {
         shadows_->plan(graph);
         shading_.emplace(ctx_, scene_,
                          fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),
-                                           fp_.assign.slices, twoLists_, clustered(), blendPass_,
-                                           subgroupLoop_});
+                                           fp_.assign.slices, r_.twoLists, clustered(), r_.blendPass,
+                                           r_.subgroupLoop});
         shading_->plan(graph, {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_,
                                hdrFormat_, &*shadows_});
         graph.exportResource("hdr", hdr_);
@@ -161,7 +133,7 @@ class ForwardPlusRenderer final : public Renderer {
         graph.exportResource("fp_light_indices", indices_);
         if (layout() == TP_FP_LAYOUT_LINKED) graph.exportResource("fp_node_counter", counter_);
         if (clustered()) graph.exportResource("fp_cluster_masks", masks_);
-        if (blendPass_) graph.exportResource("blended_bounds", blendBounds);
+        if (r_.blendPass) graph.exportResource("blended_bounds", blendBounds);
     }
 
     void prepare(FrameGraph& graph) override {
@@ -219,7 +191,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (!collected_) return {};
         std::vector<DebugImage> out;
         out.push_back({"lights_per_tile", fp::lightsPerTileHeatMap(grid_, tileLists_, 0), true});
-        if (twoLists_)
+        if (r_.twoLists)
             out.push_back({"lights_per_tile_transparent",
                            fp::lightsPerTileHeatMap(grid_, tileLists_, 1), true});
         out.push_back({"tile_depth_bounds",
@@ -233,7 +205,7 @@ class ForwardPlusRenderer final : public Renderer {
         auto add = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
         add("tile_size", fp_.assign.tile);
         add("tiles", grid_.count());
-        add("light_lists", double(numLists_));
+        add("light_lists", double(r_.numLists));
         add("directional_lights_unculled", double(classes_.directional.size()));
         add("local_lights", double(classes_.local.size()));
         add("hdr_storage_bits_per_channel",
@@ -241,16 +213,16 @@ class ForwardPlusRenderer final : public Renderer {
         add("light_list_slots", double(lists_.slots));
         add("culling_dispatches",
             double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
-        add("light_spheres_pass", spherePass_ ? 1.0 : 0.0);    // --light-spheres, resolved
-        add("culling_by_subgroup", subgroupCull_ ? 1.0 : 0.0); // --cull-by, resolved
+        add("light_spheres_pass", r_.spherePass ? 1.0 : 0.0);    // --light-spheres, resolved
+        add("culling_by_subgroup", r_.subgroupCull ? 1.0 : 0.0); // --cull-by, resolved
         if (binned())
-            add("binned_candidates", double(gpuBinning_ ? bins_.slots : bins_.candidates.size()));
-        if (binned()) add("light_binning_on_gpu", gpuBinning_ ? 1.0 : 0.0); // --light-bin, resolved
+            add("binned_candidates", double(r_.gpuBinning ? bins_.slots : bins_.candidates.size()));
+        if (binned()) add("light_binning_on_gpu", r_.gpuBinning ? 1.0 : 0.0); // --light-bin, resolved
         if (clustered()) {
             add("slices", double(fp_.assign.slices));
             add("cluster_mask_words", double(bins_.masks.words));
             add("light_loop_subgroup",
-                subgroupLoop_ ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
+                r_.subgroupLoop ? 1.0 : 0.0); // 0: lane loop (asked for, or the fallback)
         }
         if (manyViews_ && boundsLists()) {
             add("view_list_slots_needed", double(bins_.slots)); // this view's, of one list kind
@@ -262,91 +234,20 @@ class ForwardPlusRenderer final : public Renderer {
                                     bins_.masks.offsets, maskBits_};
             in.localLights = classes_.local.size();
             in.slices = fp_.assign.slices;
-            in.twoLists = twoLists_;
+            in.twoLists = r_.twoLists;
             in.clustered = clustered();
-            in.blendPass = blendPass_;
+            in.blendPass = r_.blendPass;
             in.linked = layout() == TP_FP_LAYOUT_LINKED;
             in.nodesUsed = nodesUsed_;
             in.poolNodes = lists_.poolNodes;
             fp::addListCounters(s.counters, in);
-            addLightWork(s);
+            fp::addLightWork(s, r_, fp_, classes_.directional.size());
         }
-        addLeftOut(s);
+        fp::addLeftOut(s, r_, fp_, scene_, features_);
         return s;
     }
 
   private:
-    // Every shaded fragment evaluates its tile's (cluster's) list and the unculled directional
-    // lights: the lists' mean stands for the fragment's list.
-    void addLightWork(RendererStats& s) const {
-        const double directional = double(classes_.directional.size());
-        // Fragments lie in the tiles with geometry: the list's mean over those (sky tiles' lists
-        // are empty). Clustered: the mean over every cluster, an under-estimate.
-        const char* opaque = clustered() ? "lights_per_cluster_mean" : "lights_per_tile_mean";
-        const double tiles = s.counter("tiles"), withGeometry = tiles - s.counter("tiles_without_geometry");
-        const double opaqueShare = clustered() ? 1.0 : tiles / std::max(1.0, withGeometry);
-        s.lightWork.push_back({"forward_opaque", PassLightWork::Base::Fragments,
-                               s.counter(opaque) * opaqueShare + directional, false,
-                               std::string(opaque) + (clustered() ? "" : " over the tiles with geometry") +
-                                   " + directional lights, per fragment"});
-        if (!blendPass_) return;
-        // Blended fragments lie in the tiles with blended fragments: the list's mean over those.
-        const char* blended = clustered() ? "lights_per_front_cluster_mean" : "transparent_lights_per_tile_mean";
-        const double share = clustered() ? 1.0 : s.counter("tiles") / std::max(1.0, s.counter("tiles_with_blended_fragments"));
-        s.lightWork.push_back({"forward_transparent", PassLightWork::Base::Fragments,
-                               s.counter(blended, s.counter(opaque)) * share + directional, false,
-                               std::string(blended) + (clustered() ? "" : " over the tiles with blended fragments") +
-                                   " + directional lights, per fragment"});
-    }
-
-    // What this configuration leaves out, and why (the report's "left out" list).
-    void addLeftOut(RendererStats& s) const {
-        if (!blendPass_)
-            s.leftOut.push_back(
-                {"transparent light list, blended depth bounds, forward_transparent pass and their "
-                 "memory",
-                 "the scene has no blended materials"});
-        else if (clustered())
-            s.leftOut.push_back(
-                {"the second (transparent) light list per tile",
-                 "clustered: one list spans the tile's opaque range widened to its blended "
-                 "fragments' depths, and blended surfaces look up their own depth slice"});
-        if (binned() && !gpuBinning_)
-            s.leftOut.push_back({"light_binning pass (GPU binning)",
-                                 "--light-bin " + la::lightBinKnob().text(fp_.assign.bin) +
-                                     " resolved to cpu: candidates built on the CPU per view"});
-        if (!clustered())
-            s.leftOut.push_back(
-                {"depth slices and their bitmasks (cluster_masks)", "--light-assign tiled"});
-        if (!spherePass_)
-            s.leftOut.push_back({"light_spheres pass and its buffer (16 bytes per light)",
-                                 "--light-spheres " + fp::spheresText(fp_.spheres) +
-                                     ": the culling computes each candidate's sphere itself"});
-        if (!subgroupMissing_.empty())
-            s.leftOut.push_back(
-                {"the subgroup light loop (--light-loop subgroup): shading uses the lane loop, "
-                 "the same image",
-                 subgroupMissing_});
-        if (samples() == 1)
-            s.leftOut.push_back(
-                {"MSAA targets (hdr_msaa, depth_msaa) and their resolve", "MSAA is 1x"});
-        if (!scene_.hasDraws(DrawFilter::Mask))
-            s.leftOut.push_back({"alpha-masked prepass and shading pipelines",
-                                 "the scene has no masked materials"});
-        if (!features_.spotLights)
-            s.leftOut.push_back(
-                {"spot-light shading code (TP_SPEC_HAS_SPOT = 0)", "the scene has no spot lights"});
-        if (layout() != TP_FP_LAYOUT_LINKED)
-            s.leftOut.push_back(
-                {"node counter and its reset pass", "only the 'linked' layout allocates nodes"});
-        if (fp_.hdr == HdrStorage::Fp16)
-            s.leftOut.push_back(
-                {"fp32 colour storage",
-                 "--hdr " + std::string(hdrText(fp_.hdr)) +
-                     ": hdr and hdr_msaa are RGBA16F (half the bytes of RGBA32F; each rounding "
-                     "below one ulp, <= 2^-10 relative; values saturate at 65504)"});
-    }
-
     // Whether the lists' layout follows the view: the compact and linked layouts' bound, binned
     // culling's candidates (fixed, unbinned: nothing to bin).
     bool boundsLists() const { return layout() != TP_FP_LAYOUT_FIXED || binned(); }
@@ -360,7 +261,7 @@ class ForwardPlusRenderer final : public Renderer {
     // tile's candidates, in ascending light order. The plan's room: cap_.
     void boundLists() {
         // --light-bin gpu: the frame builds the candidates; a sizing run per view sizes them.
-        if (gpuBinning_)
+        if (r_.gpuBinning)
             binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local,
                                                         "forwardplus", manyViews_);
         bins_ = fp::binView(scene_, viewBinning());
@@ -372,7 +273,7 @@ class ForwardPlusRenderer final : public Renderer {
                 "fewer lights");
         if (clustered()) bins_.masks = fp::sizeMasks(ctx_, bins_.bound, fp_.assign.slices);
         cap_ = fp::planCapacity(bins_, viewBinning(), manyViews_,
-                                {ctx_.caps.maxStorageBufferRange, numLists_,
+                                {ctx_.caps.maxStorageBufferRange, r_.numLists,
                                  layout() == TP_FP_LAYOUT_LINKED});
     }
 
@@ -415,15 +316,15 @@ class ForwardPlusRenderer final : public Renderer {
         c.mostTested = mostTested();
         c.binned = binned();
         c.clustered = clustered();
-        c.twoLists = twoLists_;
-        c.blendedSpan = blendPass_;
-        c.spheres = spherePass_;
-        c.subgroupLanes = subgroupCull_ ? ctx_.caps.subgroupSize : 0;
+        c.twoLists = r_.twoLists;
+        c.blendedSpan = r_.blendPass;
+        c.spheres = r_.spherePass;
+        c.subgroupLanes = r_.subgroupCull ? ctx_.caps.subgroupSize : 0;
         return c;
     }
 
     void createDescriptors(FrameGraph& graph) {
-        if (spherePass_) spheres_.prepare(graph);
+        if (r_.spherePass) spheres_.prepare(graph);
         // fp_params is uploaded in prepare() and updateView(), outside the graph.
         culling_->prepare(graph, params_.buffer);
         if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
@@ -439,22 +340,15 @@ class ForwardPlusRenderer final : public Renderer {
     bool clustered() const { return fp_.assign.clustered(); }
     uint32_t samples() const { return fp_.sampling.samples; }
     la::TileGrid grid_;
-    bool twoLists_ = false;
-    uint32_t numLists_ = 1;
     la::LightClasses classes_;
-    bool blendPass_ = false;
-    bool spherePass_ = false;     // --light-spheres resolved: the light_spheres pass runs
-    bool subgroupCull_ = false;   // --cull-by resolved: one subgroup culls a tile
-    bool subgroupLoop_ = false;   // clustered, --light-loop subgroup, and the device runs it
-    std::string subgroupMissing_; // --light-loop subgroup asked for but unsupported: why
     bool manyViews_ = false;         // RenderSettings::manyViews: the lists get headroom
     VkFormat hdrFormat_;             // hdr and hdr_msaa: --hdr, resolved (fp_.hdr)
+    fp::Resolved r_;                 // which optional passes and variants run (fp_config.h)
     ResourceHandle masks_;
     std::vector<uint32_t> maskBits_; // read back: clustered statistics
     fp::ViewBins bins_;              // the current view's bound, offsets, candidates, mask rows
     fp::ViewCapacity cap_;           // what the plan's buffers hold (fp::planCapacity)
-    bool gpuBinning_ = false;                 // --light-bin resolved to gpu (binned only)
-    std::unique_ptr<la::GpuBinning> binning_; // then: the light_binning pass
+    std::unique_ptr<la::GpuBinning> binning_; // r_.gpuBinning: the light_binning pass
     uint64_t candidateWord_ = 0;              // the candidates' first word in fp_params
     fp::ListSizes lists_;
 

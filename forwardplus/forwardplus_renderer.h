@@ -10,8 +10,10 @@
 //                      the scene has blended materials)
 // Publishes "hdr" (resolved; RGBA16F, or RGBA32F under --hdr fp32) and "depth". See
 // docs/forwardplus.md.
-// The renderer orchestrates; light_culling.h records the culling pass, light_lists.h sizes
-// the lists, core/lightassign/light_bins.h bins the lights (shared with tiled deferred).
+// The renderer orchestrates; fp_config.h resolves the settings against the device and the
+// scene (and lists what that leaves out), light_culling.h records the culling pass,
+// light_lists.h sizes the lists, core/lightassign/light_bins.h bins the lights (shared with
+// tiled deferred).
 #include <memory>
 
 #include "core/renderer/renderer.h"

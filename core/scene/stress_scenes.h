@@ -27,7 +27,7 @@ struct CounterAtLeast {
 // What a shadowed case (StressCase::shadows) states for its shadow-technique verdict: the
 // reference on the pipelines' shadow maps (--reference-shadows maps) against the exact one
 // (rays), with bounds derived from the maps' texel footprint and the filter
-// (include/shadows.h; docs/stress.md, "Shadowed cases"). compare/stress_shadows.cpp checks them.
+// (include/shadows.h; docs/stress.md, "Shadowed cases"). compare/measure/stress_shadows.cpp checks them.
 struct ShadowFacts {
     // The plan must shadow this many lights, and every pipeline report them (its
     // `shadowed_lights` counter): a pipeline that ignores --shadows fails the case.

@@ -2,7 +2,7 @@
 // few millimetres above a floor (acne), a thin wall (peter-panning, light leaks), a point light
 // inside a closed box (all six cube faces; nothing may leak out), 256 shadowed lights over one
 // tile. Each renders with --shadows all; its facts (StressCase::shadowFacts) give the shadow
-// technique's checks, compare/stress_shadows.cpp derives their bounds from the maps' texel
+// technique's checks, compare/measure/stress_shadows.cpp derives their bounds from the maps' texel
 // footprint and the filter (include/shadows.h).
 #include "core/scene/stress_scenes.h"
 

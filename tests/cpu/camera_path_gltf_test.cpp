@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/report_html.h"
+#include "compare/report/report_html.h"
 #include "core/camera/camera_path.h"
 #include "temp_path.h"
 #include "tests/cli/hostile_scenes.h"

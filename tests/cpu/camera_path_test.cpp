@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/report_html.h"
+#include "compare/report/report_html.h"
 #include "core/camera/camera_file.h"
 #include "core/camera/camera_path.h"
 #include "temp_path.h"

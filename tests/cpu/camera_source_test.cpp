@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/report_html.h"
+#include "compare/report/report_html.h"
 #include "core/camera/camera_file.h"
 #include "core/cli/scene_input.h"
 #include "core/scene/gltf_loader.h"

@@ -9,7 +9,7 @@
 #include <limits>
 #include <random>
 
-#include "compare/flip_measure.h"
+#include "compare/measure/flip_measure.h"
 #include "core/image/difference.h"
 #include "core/image/flip.h"
 #include "core/image/flip_color.h"

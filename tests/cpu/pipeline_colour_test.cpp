@@ -6,7 +6,7 @@
 #include <regex>
 #include <set>
 
-#include "compare/svg_plot.h"
+#include "compare/report/svg_plot.h"
 #include "core/renderer/renderer.h"
 
 namespace tp {

@@ -1,4 +1,4 @@
-// The hashes report.json carries to identify a scene (compare/scene_hash.h): a built-in scene
+// The hashes report.json carries to identify a scene (compare/cache/scene_hash.h): a built-in scene
 // hashes the same every time it is generated and differently after any change to its data; a
 // glTF's file hash covers the file and every buffer and image it references, and nothing else.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "compare/scene_hash.h"
+#include "compare/cache/scene_hash.h"
 #include "core/camera/camera_file.h"
 #include "core/scene/procedural.h"
 

@@ -14,11 +14,11 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
-#include "compare/commands.h"
-#include "compare/compare.h"
-#include "compare/report_html.h"
-#include "compare/svg_plot.h"
-#include "compare/sweep.h"
+#include "compare/commands/commands.h"
+#include "compare/commands/compare.h"
+#include "compare/commands/sweep.h"
+#include "compare/report/report_html.h"
+#include "compare/report/svg_plot.h"
 #include "core/camera/camera_file.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"

@@ -26,7 +26,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "compare/compare.h"
+#include "compare/commands/compare.h"
 #include "core/image/image_io.h"
 #include "core/image/metrics.h"
 #include "temp_path.h"

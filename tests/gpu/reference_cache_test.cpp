@@ -1,4 +1,4 @@
-// The reference cache (compare/reference_cache.h): a key changes with every input the
+// The reference cache (compare/cache/reference_cache.h): a key changes with every input the
 // reference's image depends on (resolution, MSAA, a reference knob, the lights, the camera)
 // and with none it does not (a pipeline's knob: changing it is what the cache is for); an
 // entry gives back the run it stored, images bit for bit and the figures it measured.
@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "compare/reference_cache.h"
+#include "compare/cache/reference_cache.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/scene/lights.h"
 #include "gpu_test_util.h"

@@ -15,7 +15,7 @@
 #include <stb_image.h> // Debian's libstb exports stbi_load
 #include <unistd.h>
 
-#include "compare/compare.h"
+#include "compare/commands/compare.h"
 
 namespace tp::test {
 namespace {
@@ -133,7 +133,7 @@ TEST(ReportBrowser, ChromiumRendersImagesAndPlots) {
     EXPECT_EQ(h, height);
     size_t notBackground = 0, paleYellow = 0;
     std::set<int> colours;
-    // The chart palette (compare/svg_plot.cpp): the reference, then the first three pipelines.
+    // The chart palette (compare/report/svg_plot.cpp): the reference, then the first three pipelines.
     const Rgb palette[] = {
         {0x1f, 0x77, 0xb4}, {0xd6, 0x27, 0x28}, {0x2c, 0xa0, 0x2c}, {0x94, 0x67, 0xbd}};
     size_t paletteHits[4] = {0, 0, 0, 0};

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include "compare/stress_run.h"
+#include "compare/commands/stress_run.h"
 #include "core/renderer/pipeline_colour.h"
 #include "core/renderer/renderer.h"
 #include "core/scene/stress_scenes.h"

@@ -10,8 +10,8 @@
 #include <filesystem>
 
 #include "core/image/metrics.h"
-#include "core/render/pixel_position.h"
-#include "core/render/renderer.h"
+#include "core/camera/pixel_position.h"
+#include "core/renderer/renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/stress_scenes.h"
