@@ -90,6 +90,23 @@ for dir in core/*/; do
 done
 forbid core cpp compare viewer app tests $pipelines
 
+# compare/'s rooms, lowest first (docs/architecture.md, "Rooms inside compare/"): a room
+# includes only the rooms below it; a new room or a loose file must be placed.
+compare_rooms=(cache measure report commands)
+for r in "${!compare_rooms[@]}"; do
+  x=${compare_rooms[$r]}
+  [ -d "compare/$x" ] || { echo "compare/$x/ is in compare_rooms but not in the tree"; fail=1; continue; }
+  for y in "${compare_rooms[@]:$r}"; do
+    [ "$y" = "$x" ] && continue
+    report "compare/$x/ includes compare/$y/ (a room above it)" \
+      "$(grep -rIn "${cpp[@]}" "#include \"compare/$y/" "compare/$x")"
+  done
+done
+for f in compare/*; do
+  [[ " ${compare_rooms[*]} " == *" $(basename "$f") "* ]] ||
+    { echo "$f is in no room of compare/ (compare_rooms in layers.sh)"; fail=1; }
+done
+
 # The front ends and the composition root.
 forbid compare cpp viewer app tests $pipelines
 forbid viewer cpp compare app tests $pipelines
@@ -119,7 +136,7 @@ for entry in "${allowlist[@]}"; do
     echo "note: allowlist entry '$entry' matches nothing any more: remove it from layers.sh"
 done
 if [ $fail = 0 ]; then
-  echo "layers one-way: core/ ($(echo "${core_ranks[@]}" | wc -w) folders in ${#core_ranks[@]} ranks) < compare/, viewer/ < app/;" \
+  echo "layers one-way: core/ ($(echo "${core_ranks[@]}" | wc -w) folders in ${#core_ranks[@]} ranks) < compare/ (${#compare_rooms[@]} rooms), viewer/ < app/;" \
        "$(echo $pipelines | wc -w) pipelines beside one another, C++ and shaders (${#allowlist[@]} allowed, listed)"
 fi
 exit $fail
