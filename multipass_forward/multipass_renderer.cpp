@@ -85,7 +85,7 @@ class MultipassForwardRenderer final : public Renderer {
         const bool fits = next.baseDirectional == plan_.baseDirectional && // spec constants
                           (next.batches.empty() || hasLights_) &&
                           (next.blended.empty() || (hasBlended_ && blended_->hasPipelines())) &&
-                          (next.opaque.empty() && next.masked.empty() || base_->hasPipeline()) &&
+                          ((next.opaque.empty() && next.masked.empty()) || base_->hasPipeline()) &&
                           (next.batches.empty() || lights_->hasPipeline());
         if (!fits || !prepass_->setDraws(next.opaque, next.masked)) return false;
         plan_ = std::move(next);

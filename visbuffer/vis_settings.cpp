@@ -23,20 +23,20 @@ const ChoiceKnob<Derivatives>& derivativesKnob() {
          {Derivatives::QuadFine, "quad-fine"},
          {Derivatives::QuadCoarse, "quad-coarse"}},
         "visbuffer's texture footprint: quad (uv differences over the pixel's 2x2 quad on the "
-        "same triangle's plane, fine or coarse as the device's fragment quads take them: coarse "
-        "on a CPU device, fine elsewhere), analytic (the exact derivatives at the shaded point), "
-        "or quad-fine / quad-coarse whatever the device"};
+        "same triangle's plane, coarse: one pair per quad, as lavapipe's fragment quads take them "
+        "and as measured closest on an H200), analytic (the exact derivatives at the shaded "
+        "point), or quad-fine / quad-coarse"};
     return k;
 }
 
-uint32_t resolveDerivatives(Derivatives d, bool cpuDevice) {
+uint32_t resolveDerivatives(Derivatives d) {
     switch (d) {
     case Derivatives::Analytic: return TP_VIS_DERIVATIVES_ANALYTIC;
     case Derivatives::QuadFine: return TP_VIS_DERIVATIVES_QUAD_FINE;
     case Derivatives::QuadCoarse: return TP_VIS_DERIVATIVES_QUAD_COARSE;
     case Derivatives::Quad: break;
     }
-    return cpuDevice ? TP_VIS_DERIVATIVES_QUAD_COARSE : TP_VIS_DERIVATIVES_QUAD_FINE;
+    return TP_VIS_DERIVATIVES_QUAD_COARSE;
 }
 
 const IntegerKnob& blendedCapacityKnob() {

@@ -18,14 +18,14 @@ const ChoiceKnob<Blended>& blendedKnob();
 // --vis-derivatives: the uv derivatives the resolve samples textures with. Analytic: the
 // barycentrics' exact screen derivatives at the shaded location; Quad: the differences over
 // the pixel's 2x2 quad on the same triangle's plane, as a fragment quad's helper lanes take
-// them, fine or coarse as the device does (resolveDerivatives); QuadFine / QuadCoarse: one of
-// the two whatever the device (docs/visbuffer.md, "The texture footprint").
+// them (coarse: resolveDerivatives); QuadFine / QuadCoarse: one of the two
+// (docs/visbuffer.md, "The texture footprint").
 enum class Derivatives { Quad, Analytic, QuadFine, QuadCoarse };
 const ChoiceKnob<Derivatives>& derivativesKnob();
-// The shader's mode (TP_VIS_DERIVATIVES_*) for `d` on a device: Quad is coarse on a CPU
-// device (llvmpipe takes implicit derivatives from the quad's top-left pixel and one level of
-// detail per quad) and fine elsewhere.
-uint32_t resolveDerivatives(Derivatives d, bool cpuDevice);
+// The shader's mode (TP_VIS_DERIVATIVES_*) for `d`: Quad is coarse, as llvmpipe takes implicit
+// derivatives (from the quad's top-left pixel, one level of detail per quad) and as measured
+// closest to the reference on an NVIDIA H200 (docs/visbuffer.md, "The texture footprint").
+uint32_t resolveDerivatives(Derivatives d);
 // --vis-blended-capacity: the fragment pool in percent of the pixel count, 0: the derived
 // bound (fragment_bound.h).
 const IntegerKnob& blendedCapacityKnob();

@@ -167,7 +167,7 @@ class VisbufferRenderer final : public Renderer {
     }
     // --vis-derivatives on this device (TP_VIS_DERIVATIVES_*).
     uint32_t derivativesMode() const {
-        return vis::resolveDerivatives(vis_.derivatives, ctx_.isCpuDevice());
+        return vis::resolveDerivatives(vis_.derivatives);
     }
     void checkDevice() const;
     void addBlendedListStats(RendererStats& s) const;

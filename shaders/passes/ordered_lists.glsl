@@ -1,4 +1,4 @@
-// Ordered light lists of the tiled lighting pass (tiled_lighting.comp, which includes this
+// Ordered light lists of the tiled lighting pass (tiled_lighting_main.glsl, which includes this
 // after its culling): the survivors of a cull are marked as bits over the candidates they were
 // taken from (shared sBits) and compacted in ascending candidate order, never appended with an
 // atomic counter. An atomic append orders a list as the GPU happens to schedule the
