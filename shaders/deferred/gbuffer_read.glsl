@@ -16,22 +16,16 @@ layout(constant_id = TP_DEF_SPEC_WIDE) const bool kWide = false;
 layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
 layout(constant_id = TP_TL_SPEC_EVERY_SAMPLE) const bool kEverySample = false;
 
-#ifdef TP_MSAA
-#define GTEX sampler2DMS
-#define FETCH(t, p, s) texelFetch(t, p, int(s))
-#else
-#define GTEX sampler2D
-#define FETCH(t, p, s) texelFetch(t, p, 0)
-#endif
+#include "passes/surface_images.glsl"
 #ifndef TP_SURFACE_DEPTH_ONLY
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_BASE) uniform GTEX gBase;
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_NORMAL) uniform GTEX gNormal;
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_ROUGH_METAL) uniform GTEX gRoughMetal;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_BASE) uniform TP_SURFACE_TEX gBase;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_NORMAL) uniform TP_SURFACE_TEX gNormal;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_ROUGH_METAL) uniform TP_SURFACE_TEX gRoughMetal;
 #if TP_EMISSIVE
-layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_EMISSIVE) uniform GTEX gEmissive;
+layout(set = TP_SET_PASS, binding = TP_DEF_BINDING_EMISSIVE) uniform TP_SURFACE_TEX gEmissive;
 #endif
 #endif
-layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEPTH) uniform GTEX gDepth;
+layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEPTH) uniform TP_SURFACE_TEX gDepth;
 
 #include "include/sample_locations.glsl"
 

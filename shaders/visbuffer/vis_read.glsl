@@ -23,15 +23,9 @@ layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
 layout(constant_id = TP_VIS_SPEC_DERIVATIVES) const uint kDerivatives = TP_VIS_DERIVATIVES_ANALYTIC;
 #include "include/sample_locations.glsl"
 
-#ifdef TP_MSAA
-#define VTEX sampler2DMS
-#define FETCH(t, p, s) texelFetch(t, p, int(s))
-#else
-#define VTEX sampler2D
-#define FETCH(t, p, s) texelFetch(t, p, 0)
-#endif
-layout(set = TP_SET_PASS, binding = TP_VIS_BINDING_IDS) uniform VTEX gIds;
-layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEPTH) uniform VTEX gDepth;
+#include "passes/surface_images.glsl"
+layout(set = TP_SET_PASS, binding = TP_VIS_BINDING_IDS) uniform TP_SURFACE_TEX gIds;
+layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEPTH) uniform TP_SURFACE_TEX gDepth;
 layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_INDICES) readonly buffer VisIndices {
     uint visIndices[];
 };
