@@ -9,7 +9,6 @@
 #include "core/gpu/readback.h"
 #include "core/gpu/resources.h"
 #include "core/gpuscene/scene_gpu.h"
-#include "core/passes/debug_views.h"
 #include "core/passes/hybrid_blended.h"
 #include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
