@@ -17,6 +17,7 @@
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
+#include "triangle_pixels.h"
 #include "gltf_test_scenes.h"
 #include "gpu_test_util.h"
 #include "include/light_assign.h"
@@ -120,6 +121,7 @@ double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r
     const double u = std::ldexp(1.0, -24);
     const double n = double(samples) * (lights + 1);
     double worstRatio = 0.0, worstRelative = 0.0;
+    size_t worstPixel = 0;
     for (size_t i = 0; i < r.pixelCount(); ++i) {
         if (only && !(*only)[i]) continue;
         for (int c = 0; c < 3; ++c) {
@@ -127,6 +129,7 @@ double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r
             double bound =
                 (2.0 * (n - 1.0) + 6.0 + kEvaluationUlps) * u * std::max(std::abs(x), std::abs(y)) +
                 1e-30;
+            if (std::abs(x - y) / bound > worstRatio) worstPixel = i;
             worstRatio = std::max(worstRatio, std::abs(x - y) / bound);
             worstRelative = std::max(worstRelative, std::abs(x - y) / (std::abs(y) + 1e-4));
         }
@@ -134,8 +137,9 @@ double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r
     EXPECT_LE(worstRatio, 1.0) << what
                                << ": deferred against the depth reference, worst |d - r| / bound = "
                                << worstRatio;
-    std::printf("[ vs depth reference ] %s: worst difference = %.3g of the bound (%.3g relative)\n",
-                what.c_str(), worstRatio, worstRelative);
+    std::printf("[ vs depth reference ] %s: worst difference = %.3g of the bound (%.3g relative) "
+                "at %zu,%zu\n",
+                what.c_str(), worstRatio, worstRelative, worstPixel % r.width, worstPixel / r.width);
     return worstRatio;
 }
 
@@ -360,8 +364,38 @@ TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
         const std::string what =
             "courtyard " + std::to_string(lights) + " lights 4x pixel-rate, other pixels";
         EXPECT_EQ(computeError(deferred.hdr, centre.hdr).nanInfCount, 0u) << what;
+        // (c) Where the samples lie on more than one triangle (or a sample is within the
+        // device's snapping distance of its triangle's edge), "at the centre" is two positions
+        // on a device that snaps vertices before it sets up each triangle's depth plane (an
+        // H200): the depth reference moves each sample's depth along its own triangle's plane
+        // to the centre, deferred averages the samples' depths, and two triangles of one plane
+        // have planes up to 2^-(bits + 1) pixels apart; next to a light, on a face seen edge-on,
+        // that is 1e-3 of the radiance (pixel 63,27 here: four triangles of one face of the
+        // colonnade, depth 6.5 % steeper per pixel; 11x this bound on the H200, 0.1x on
+        // lavapipe, which sets up the plane from the unsnapped vertices). Those pixels are held
+        // to deferred's registered model against the centre reference, whose per-pixel term is
+        // that snapping distance times the light terms' gradient.
+        const TrianglePixels triangles = findManyTrianglePixels(
+            scene, s.width, s.height, 4,
+            std::ldexp(1.0, -int(ctx->properties.limits.subPixelPrecisionBits)));
+        std::vector<uint8_t> oneTriangle(isOther.size()), manyTriangles(isOther.size());
+        size_t manyCount = 0;
+        for (size_t i = 0; i < isOther.size(); ++i) {
+            oneTriangle[i] = isOther[i] && !triangles.manyTriangles[i];
+            manyTriangles[i] = isOther[i] && triangles.manyTriangles[i];
+            manyCount += manyTriangles[i];
+        }
         expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
-                                           what + " against the centre-shaded reference", &isOther);
+                                           what + " on one triangle, against the centre-shaded reference",
+                                           &oneTriangle);
+        const ErrorBound model = centreModelBound(*ctx, scene, "deferred", s, centre);
+        ASSERT_TRUE(model.bounded) << model.why;
+        const WorstRatio w = worstRatio(deferred.hdr, centre.hdr, model, &manyTriangles);
+        std::printf("[ triangles ] %s on more than one triangle: %zu pixels, worst |d|/model %.3g "
+                    "at %u,%u\n",
+                    what.c_str(), manyCount, w.ratio, w.x, w.y);
+        EXPECT_LE(w.ratio, 1.0) << what << " on more than one triangle: pixel " << w.x << "," << w.y
+                                << ": " << w.got << " against " << w.ref;
         checkReconstructionError(*ctx, computeError(a, b).meanRelative, 1e-4,
                                  what + ", centre-shaded (mean)");
     }

@@ -8,10 +8,12 @@
 #include <unistd.h>
 
 #include "core/gpu/vk_check.h"
+#include "core/renderer/knobs.h"
 #include "core/renderer/renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
+#include "core/scene/stress_scenes.h"
 #include "gltf_test_scenes.h"
 
 namespace tp::test {
@@ -187,6 +189,51 @@ Result<Scene> loadMaskedScene(uint32_t lights, uint32_t seed) {
     g.seed = seed;
     loaded->lights = generateLights(loaded->bounds, g);
     return loaded;
+}
+
+WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBound& b,
+                      const std::vector<uint8_t>* only) {
+    WorstRatio w;
+    const bool perPixel = b.perPixel.radiance.r.size() == ref.pixelCount();
+    for (uint32_t y = 0; y < ref.height; ++y)
+        for (uint32_t x = 0; x < ref.width; ++x) {
+            const size_t i = size_t(y) * ref.width + x;
+            if (only && !(*only)[i]) continue;
+            const double allowance = perPixel ? double(b.perPixel.radiance.r[i]) : 0.0;
+            bool over = false;
+            for (int c = 0; c < 3; ++c) {
+                const double g = got.at(x, y)[c], r = ref.at(x, y)[c];
+                const double ratio =
+                    std::isfinite(g) && std::isfinite(allowance)
+                        ? std::max(std::abs(g - r) - allowance, 0.0) /
+                              (b.relative() * std::abs(r) + b.absolute())
+                        : INFINITY;
+                over = over || ratio > 1.0;
+                if (ratio > w.ratio) w = {ratio, g, r, x, y, w.pixelsOver};
+            }
+            w.pixelsOver += over;
+        }
+    return w;
+}
+
+ErrorBound centreModelBound(const GpuContext& ctx, const Scene& scene, const std::string& pipeline,
+                            const RenderSettings& run, const RunResult& centre) {
+    Result<const RendererEntry*> entry = findRenderer(pipeline);
+    EXPECT_TRUE(entry.ok()) << entry.error();
+    if (!entry) {
+        ErrorBound none;
+        none.bounded = false;
+        none.why = entry.error();
+        return none;
+    }
+    RenderSettings model = run;
+    model.set("msaa-shading", "sample"); // the model without its shading-rate term
+    EXPECT_TRUE(resolveKnobs((*entry)->knobs, model).ok());
+    stress::StressCase c;
+    c.name = "centre";
+    return expectedBound((*entry)->errorModel,
+                         {c, scene, model, &centre.depth, ctx.properties.limits.subPixelPrecisionBits,
+                          &centre.hdr});
 }
 
 } // namespace tp::test

@@ -8,6 +8,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/renderer/error_model.h"
 #include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
 
@@ -51,5 +52,22 @@ void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames = 1);
 
 // The built-in courtyard-small with `count` generated lights of `seed`.
 Scene courtyardSmallWithLights(uint32_t count, uint64_t seed);
+
+// Worst (|p - r| less the pixel's allowance) / (relative |r| + absolute) over every pixel
+// (those `only` marks 1, when given) and colour channel (the allowance: the bound's per-pixel
+// one where its model has one).
+struct WorstRatio {
+    double ratio = 0, got = 0, ref = 0;
+    uint32_t x = 0, y = 0, pixelsOver = 0;
+};
+WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBound& b,
+                      const std::vector<uint8_t>* only = nullptr);
+
+// A pipeline's registered model of its image `run` (4x, --msaa-shading pixel) against the
+// centre reference `centre`: without its shading-rate term (its input at --msaa-shading
+// sample), which is what the centre reference removes (docs/shading.md); with the reference's
+// depth, for the models with a per-pixel position allowance.
+ErrorBound centreModelBound(const GpuContext& ctx, const Scene& scene, const std::string& pipeline,
+                            const RenderSettings& run, const RunResult& centre);
 
 } // namespace tp::test

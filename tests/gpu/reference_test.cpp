@@ -143,36 +143,6 @@ TEST(Reference, ShadesTheLastOf65536Lights) {
     expectNoValidationMessages(*ctx);
 }
 
-// Worst (|p - r| less the pixel's allowance) / (relative |r| + absolute) over every pixel and
-// colour channel (the allowance: the bound's per-pixel one where its model has one).
-struct WorstRatio {
-    double ratio = 0, got = 0, ref = 0;
-    uint32_t x = 0, y = 0, pixelsOver = 0;
-};
-
-WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBound& b) {
-    WorstRatio w;
-    const bool perPixel = b.perPixel.radiance.r.size() == ref.pixelCount();
-    for (uint32_t y = 0; y < ref.height; ++y)
-        for (uint32_t x = 0; x < ref.width; ++x) {
-            const double allowance =
-                perPixel ? double(b.perPixel.radiance.r[size_t(y) * ref.width + x]) : 0.0;
-            bool over = false;
-            for (int c = 0; c < 3; ++c) {
-                const double g = got.at(x, y)[c], r = ref.at(x, y)[c];
-                const double ratio =
-                    std::isfinite(g) && std::isfinite(allowance)
-                        ? std::max(std::abs(g - r) - allowance, 0.0) /
-                              (b.relative() * std::abs(r) + b.absolute())
-                        : INFINITY;
-                over = over || ratio > 1.0;
-                if (ratio > w.ratio) w = {ratio, g, r, x, y, w.pixelsOver};
-            }
-            w.pixelsOver += over;
-        }
-    return w;
-}
-
 // A pipeline and the knobs it runs with beside the test's settings.
 struct Variant {
     const char* pipeline;
@@ -201,8 +171,6 @@ void expectWithinModelOfTheCentreReference(const Scene& scene, const std::vector
         lit += centre.hdr.rgba[i * 4 + 1];
     EXPECT_GT(lit, 0.0) << "the centre reference is black";
 
-    stress::StressCase c;
-    c.name = "masked";
     for (const Variant& v : variants) {
         RenderSettings run = settings;
         std::string label = v.pipeline;
@@ -212,15 +180,7 @@ void expectWithinModelOfTheCentreReference(const Scene& scene, const std::vector
         }
         SCOPED_TRACE(label);
         const RunResult r = runOrFail(*ctx, gpuScene, v.pipeline, run);
-        Result<const RendererEntry*> entry = findRenderer(v.pipeline);
-        ASSERT_TRUE(entry.ok()) << entry.error();
-        RenderSettings model = run;
-        model.set("msaa-shading", "sample"); // the model without its shading-rate term
-        ASSERT_TRUE(resolveKnobs((*entry)->knobs, model).ok());
-        const ErrorBound bound =
-            expectedBound((*entry)->errorModel,
-                          {c, scene, model, &centre.depth,
-                           ctx->properties.limits.subPixelPrecisionBits, &centre.hdr});
+        const ErrorBound bound = centreModelBound(*ctx, scene, v.pipeline, run, centre);
         ASSERT_TRUE(bound.bounded) << bound.why;
         const WorstRatio w = worstRatio(r.hdr, centre.hdr, bound);
         std::printf("[ centre   ] %-40s 4x pixel rate, %s: worst |d|/bound %.3g at %u,%u; %u "

