@@ -136,7 +136,7 @@ int run(RenderOptions& o) {
         std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)%s\n",
                      t.name.c_str(), t.medianMs, t.minMs, t.maxMs, t.frames,
                      ctx->info.name.c_str(), efficiencyNote(*result, t.name).c_str());
-    std::fprintf(stderr, "  %s\n", energyLine(result->energy).c_str());
+    if (energy->meter) std::fprintf(stderr, "  %s\n", energyLine(result->energy).c_str()); // else: the line below
     if (!calibration->available) std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
     noteEnergyLeftOut(*energy);
     std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n",

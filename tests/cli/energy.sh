@@ -92,7 +92,8 @@ r = json.load(open(sys.argv[1]))
 out = [energy_problem(r['run'], 'render')]
 if r['run']['pass_statistics']['collected'] is not False: out.append('pass_statistics collected')
 print('; '.join(o for o in out if o))" "$work/r/render.json" 2>&1)
-[ -z "$problem" ] && ! grep -Eq "J/frame|energy unknown: " "$work/stderr" && problem="no energy line on stderr"
+[ -z "$problem" ] && ! grep -Eq "J/frame|energy unknown: |^triptych: energy left out: " "$work/stderr" && problem="no energy line on stderr"
+[ -z "$problem" ] && [ "$(grep -c 'energy left out: \|energy unknown: ' "$work/stderr")" -gt 1 ] && problem="the reason said twice on stderr"
 report "render --pass-statistics off: render.json has the energy and says the counts are off" "$problem"
 
 # sweep: a joules_per_frame column beside the times (empty when unknown), energy per run.
