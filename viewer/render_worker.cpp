@@ -5,6 +5,7 @@
 
 #include "core/cli/scene_input.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/runner/device_energy.h"
 #include "core/scene/lights.h"
 #include "core/util/clock.h"
 
@@ -51,9 +52,10 @@ bool RenderWorker::idle() const {
 
 void RenderWorker::loop() {
     Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(options_);
-    if (ctx)
+    if (ctx) {
         ctx_ = std::move(*ctx);
-    else
+        energy_ = openDeviceEnergy(*ctx_);
+    } else
         contextError_ = ctx.error();
     for (;;) {
         RenderJob job;
@@ -189,9 +191,12 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     settings.debug = job.debug;
     settings.knobs = job.state.knobs;
     settings.manyViews = true; // the next job is likely another view
+    settings.passStatistics = job.passStatistics;
     RunOptions runOptions;
     runOptions.warmupFrames = 0;
     runOptions.timedFrames = job.timedFrames;
+    runOptions.energy = energy_;
+    runOptions.extendEnergyWindow = false; // a render is not held up to lengthen the window
     if (job.calibration && job.calibration->device == ctx_->info.name &&
         job.calibration->driver == ctx_->info.driver) // shares the file's lifetime
         runOptions.ceilings = std::shared_ptr<const CeilingRates>(job.calibration, &job.calibration->rates);

@@ -34,6 +34,7 @@ struct RenderJob {
     std::string key;    // renderKey/referenceKey of `state`: tags the outcome
     uint32_t timedFrames = 1;
     std::shared_ptr<const CeilingFile> calibration; // used when it is this device's
+    bool passStatistics = true; // --pass-statistics (RenderSettings::passStatistics)
 };
 
 struct PipelineImage {
@@ -97,6 +98,9 @@ class RenderWorker {
     // Owned by the worker thread only.
     std::unique_ptr<GpuContext> ctx_;
     std::string contextError_;
+    // The device's energy counter (core/runner/device_energy.h): a render's window is its timed
+    // frames only (a window too short says so: the viewer does not wait to extend it).
+    std::shared_ptr<EnergySource> energy_;
     std::unique_ptr<Scene> scene_;
     std::unique_ptr<SceneGpu> gpuScene_;
     std::vector<Light> sceneLights_; // the scene file's own lights

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/energy/energy_json.h"
 #include "core/reference/reference_renderer.h"
 #include "core/util/files.h"
 #include "viewer/script.h"
@@ -32,6 +33,8 @@ nlohmann::json shownJson(const Shown* s) {
             j["debug_images"].push_back(d.name);
         for (const auto& [name, value] : s->run->stats.counters)
             j["counters"][name] = value;
+        j["energy"] = energyJson(s->run->energy); // of this render's timed frames, or why not
+        j["pass_statistics"] = s->run->statisticsCollected ? "on" : "off";
         if (s->run->efficiency) { // with --calibration: what the numbers panel shows
             j["efficiency"]["percent_of_ceiling"] = s->run->efficiency->percent;
             for (const PassEfficiency& p : s->run->efficiency->passes)

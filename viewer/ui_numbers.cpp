@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "core/energy/energy_text.h"
 #include "core/reference/reference_renderer.h"
 #include "viewer/ui_colour.h"
 #include "viewer/ui_panels.h"
@@ -65,6 +66,10 @@ void timingGraph(const std::string& pipeline, const TimingHistory& h, const std:
         }
         ImGui::EndTable();
     }
+    // The last render's energy per frame: its timed frames only (--frames), so a counter that
+    // moves every 100 ms needs a second of them (docs/efficiency.md).
+    ImGui::TextWrapped("%s", energyLine(run.energy).c_str());
+    if (!run.statisticsCollected) ImGui::TextWrapped("pipeline statistics off: %s", run.statisticsWhy.c_str());
     if (h.passes.count("frame")) {
         std::vector<float> values(h.passes.at("frame").begin(), h.passes.at("frame").end());
         ImGui::PushStyleColor(ImGuiCol_PlotLines, pipelineImColour(pipeline));

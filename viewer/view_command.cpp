@@ -65,6 +65,7 @@ struct ViewCommandOptions {
     int quitAfter = 0;
     bool noReference = false;
     std::string calibration; // empty: the passes are not placed
+    bool passStatistics = true;
 };
 
 std::string firstPipeline() {
@@ -107,6 +108,7 @@ int runView(ViewCommandOptions& o, const std::string& exe) {
     setup.viewer.context.validate = o.device.validate;
     setup.viewer.timedFrames = uint32_t(o.frames);
     setup.viewer.exe = exe;
+    setup.viewer.passStatistics = o.passStatistics;
     if (!o.calibration.empty()) {
         Result<CeilingFile> cal = readCeilingFile(o.calibration);
         if (!cal) throw UsageError("--calibration: " + cal.error());
@@ -145,6 +147,7 @@ CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine
     cmd->add_option("--calibration", o->calibration,
                     "A calibration FILE from 'triptych calibrate' of this device: the numbers panel places every "
                     "pass against its ceilings (docs/efficiency.md)");
+    addPassStatisticsOption(*cmd, o->passStatistics);
     cmd->add_option("--script", o->script, "Actions to run, one per line (docs/viewer.md)");
     cmd->add_option("--out", o->out, "Folder for the script's screenshots, stats and exports")
         ->capture_default_str();

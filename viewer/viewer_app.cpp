@@ -145,7 +145,8 @@ void ViewerApp::submitJobs() {
             pipelines.push_back(p);
     const std::string key = renderKey(state_, debug);
     if (key != submittedKey_ || pipelines != submittedPipelines_) {
-        RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames, options_.calibration};
+        RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames, options_.calibration,
+                      options_.passStatistics};
         // Debug images of a pipeline only when an overlay is shown: they cost readbacks.
         worker_->submit(std::move(job));
         submittedKey_ = key;
@@ -156,7 +157,7 @@ void ViewerApp::submitJobs() {
                          state_.pipelineB == kReferenceRenderer;
     const std::string refKey = referenceKey(state_);
     if (wantReference && refKey != submittedReferenceKey_) {
-        RenderJob job{nextJob_++, state_, {kReferenceRenderer}, false, refKey, 1};
+        RenderJob job{nextJob_++, state_, {kReferenceRenderer}, false, refKey, 1, nullptr, options_.passStatistics};
         referenceWorker_->submit(std::move(job));
         submittedReferenceKey_ = refKey;
     }

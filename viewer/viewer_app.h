@@ -30,6 +30,7 @@ struct ViewerOptions {
     // --calibration FILE: every pass placed against its ceilings in the numbers panel
     // (docs/efficiency.md); null: not placed.
     std::shared_ptr<const CeilingFile> calibration;
+    bool passStatistics = true; // --pass-statistics: off records no pipeline-statistics query
 };
 
 // A finished render of one pipeline, as the UI keeps it.

@@ -89,8 +89,11 @@ void checkCalibrationOption(const std::string& option) {
         throw UsageError("--calibration: " + option + " does not exist (auto, none, measure or a calibration file)");
 }
 
-std::shared_ptr<const RunCalibration> loadRunCalibration(GpuContext& ctx, const std::string& option) {
+std::shared_ptr<const RunCalibration> loadRunCalibration(GpuContext& ctx, const std::string& option,
+                                                         bool passStatistics) {
     if (option == "none") return unavailable("--calibration none");
+    if (!passStatistics)
+        return unavailable("--pass-statistics off: placing a pass needs its pipeline statistics");
     if (option != "auto" && option != "measure") return fromFile(ctx, option);
     const json key = calibrationKey(ctx, false);
     const std::string path = cachedCalibrationPath(key);

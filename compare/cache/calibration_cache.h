@@ -41,7 +41,9 @@ struct RunCalibration {
 // --calibration: "auto" (the cached file of this device and build when there is one), "none",
 // "measure" (the cached file, measured and cached when absent or stale), or a FILE (refused
 // with one line unless it is a complete calibration of this device and driver).
-std::shared_ptr<const RunCalibration> loadRunCalibration(GpuContext& ctx, const std::string& option);
+// passStatistics false (--pass-statistics off): none, as placing a pass needs its counts.
+std::shared_ptr<const RunCalibration> loadRunCalibration(GpuContext& ctx, const std::string& option,
+                                                         bool passStatistics = true);
 // The option's help text.
 std::string calibrationOptionHelp();
 // Checks the option's form before any GPU work (a FILE must exist).

@@ -232,6 +232,9 @@ Result<RunResult> runReferenceCached(GpuContext& ctx, SceneGpu& scene,
     use.entry = (fs::path(cacheDir) / key.hash).string();
     if (std::optional<RunResult> cached = loadReference(cacheDir, key, use.note, use.renderedAt)) {
         use.reused = true;
+        // Its timings are the stored run's; what was measured beside them is not stored.
+        cached->energy.reason = "reused from the reference cache: energy is measured only when the frames run";
+        cached->statisticsWhy = "reused from the reference cache: its entry holds no pipeline statistics";
         return std::move(*cached);
     }
     Result<RunResult> run = tryRunRenderer(ctx, scene, entry, features, settings, options);

@@ -18,6 +18,7 @@
 #include "compare/report/compare_summary.h"
 #include "compare/report/report_html.h"
 #include "compare/report/report_json.h"
+#include "compare/report/run_json.h"
 #include "core/camera/camera_file.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/image/difference.h"
@@ -25,6 +26,7 @@
 #include "core/image/image_io.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
+#include "core/runner/device_energy.h"
 #include "core/util/files.h"
 
 namespace tp::cli {
@@ -64,6 +66,7 @@ PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& n
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
     RunOptions ro = progressRunOptions(name, o.warmup, o.frames);
     if (r.calibration) ro.ceilings = ceilingsOf(*r.calibration);
+    ro.energy = r.energy;
     Result<RunResult> result =
         name == kReferenceRenderer
             ? runReferenceCached(ctx, scene, r.features, r.settings, ro,
@@ -126,6 +129,7 @@ void measureAgainst(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, 
     c.features = r.features;
     c.settings = r.settings;
     c.calibration = r.calibration;
+    c.energy = r.energy;
     c.settings.set(s.knob, s.value);
     PipelineOutcome& second = r.*s.outcome;
     // A reference already run with that value is the second reference: not again.
@@ -206,6 +210,8 @@ int runCompare(const CompareOptions& o) {
     r.request = requestOf(o);
     r.ctx = ctx.get();
     r.settings = makeSettings(o.view, *ctx, o.knobs);
+    r.settings.passStatistics = o.passStatistics;
+    r.energy = openDeviceEnergy(*ctx);
     Scene scene = loadScene(o.scene, &r.cameraSource);
     r.scene = &scene;
     r.features = analyzeScene(scene, r.settings.msaa);
@@ -216,7 +222,7 @@ int runCompare(const CompareOptions& o) {
     r.contentHash = hashSceneContent(scene);
     r.lightsHash = hashLights(scene.lights);
     const std::optional<PathInput> path = loadPathInput(o.path, scene, o.scene.seed);
-    r.calibration = loadRunCalibration(*ctx, o.calibration); // after the input is checked
+    r.calibration = loadRunCalibration(*ctx, o.calibration, o.passStatistics); // after the input is checked
     ensureDirectory(o.out);
     removeStaleOutputs(o.out, names);
     std::fprintf(
@@ -257,6 +263,7 @@ int runCompare(const CompareOptions& o) {
                  o.out.c_str());
     if (!r.calibration->available) // after the run: an error before it stays one line
         std::fprintf(stderr, "triptych: efficiency left out: %s\n", r.calibration->why.c_str());
+    noteEnergyLeftOut(*r.energy);
 
     if (int code = validationExit(r.validationMessages)) return code;
     return report["status"] == "ok" ? 0 : 5;
@@ -283,6 +290,7 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
                     "report.json and report.html; this run's files there are replaced")
         ->capture_default_str();
     cmd->add_option("--calibration", o->calibration, calibrationOptionHelp())->capture_default_str();
+    addPassStatisticsOption(*cmd, o->passStatistics);
     cmd->add_option("--frames", o->frames,
                     "Timed frames per pipeline (median/min/max are over these)")
         ->capture_default_str();

@@ -16,6 +16,8 @@
 #include "core/image/metrics.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
+#include "core/energy/energy_text.h"
+#include "core/runner/device_energy.h"
 #include "core/runner/frame_runner.h"
 #include "core/util/files.h"
 
@@ -33,6 +35,7 @@ struct RenderOptions {
     std::string exposure = "auto";
     std::string exrType = "float";
     std::string calibration = "auto";
+    bool passStatistics = true; // --pass-statistics
     PathOptions path; // --camera-path / --light-motion: the path's timings, then view 0's image
     RenderSettings knobs;
 };
@@ -40,7 +43,7 @@ struct RenderOptions {
 void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource& camera,
                   const RunResult& run, const GpuContext& ctx, const RenderSettings& settings,
                   const SceneFeatures& features, const RunCalibration& calibration,
-                  const nlohmann::json& path) {
+                  const EnergySource& energy, const nlohmann::json& path) {
     const std::string base = o.out + "/" + run.renderer;
     float ev = parseExposure(o.exposure, run.hdr);
     Status s = writeExr(base + ".exr", run.hdr,
@@ -65,6 +68,7 @@ void writeOutputs(const RenderOptions& o, const Scene& scene, const CameraSource
     j["camera_source"] = cameraSourceJson(camera);
     j["run"] = runJson(run, ctx);
     j["calibration"] = calibrationUseJson(calibration);
+    j["energy_source"] = energySourceJson(energy);
     j["nan_inf_pixels"] = countNonFinitePixels(run.hdr);
     if (!path.is_null()) j["path"] = path;
     if (s) s = writeTextFile(o.out + "/render.json", j.dump(2) + "\n");
@@ -107,11 +111,14 @@ int run(RenderOptions& o) {
     checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings settings = makeSettings(o.view, *ctx, o.knobs);
+    settings.passStatistics = o.passStatistics;
     CameraSource camera;
     Scene scene = loadScene(o.scene, &camera);
     const std::optional<PathInput> pathInput = loadPathInput(o.path, scene, o.scene.seed);
     // After the input is checked: `measure` may take 40 s on lavapipe.
-    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
+    const std::shared_ptr<const RunCalibration> calibration =
+        loadRunCalibration(*ctx, o.calibration, o.passStatistics);
+    const std::shared_ptr<EnergySource> energy = openDeviceEnergy(*ctx);
     ensureDirectory(o.out);
     SceneFeatures features = analyzeScene(scene, settings.msaa);
     std::fprintf(stderr, "triptych: %s, %zu triangles, %zu lights, %ux%u, %ux MSAA on %s\n",
@@ -121,14 +128,17 @@ int run(RenderOptions& o) {
     const nlohmann::json path = renderPath(o, pathInput, scene, gpuScene, *ctx, features, settings);
     RunOptions runOptions = progressRunOptions(o.pipeline, o.warmup, o.frames);
     runOptions.ceilings = ceilingsOf(*calibration);
+    runOptions.energy = energy;
     Result<RunResult> result = runRenderer(*ctx, gpuScene, **entry, features, settings, runOptions);
     if (!result) throw UsageError(result.error());
-    writeOutputs(o, scene, camera, *result, *ctx, settings, features, *calibration, path);
+    writeOutputs(o, scene, camera, *result, *ctx, settings, features, *calibration, *energy, path);
     for (const TimingStats& t : result->timings)
         std::fprintf(stderr, "  %-24s median %9.3f ms  (min %.3f, max %.3f, %u frames, %s)%s\n",
                      t.name.c_str(), t.medianMs, t.minMs, t.maxMs, t.frames,
                      ctx->info.name.c_str(), efficiencyNote(*result, t.name).c_str());
+    if (energy->meter) std::fprintf(stderr, "  %s\n", energyLine(result->energy).c_str()); // else: the line below
     if (!calibration->available) std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
+    noteEnergyLeftOut(*energy);
     std::fprintf(stderr, "triptych: wrote %s/%s.exr, .png, render.json, lights.json, camera.json\n",
                  o.out.c_str(), o.pipeline.c_str());
     return validationExit(ctx->validationMessages());
@@ -162,6 +172,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
         ->check(CLI::IsMember({"half", "float"}))
         ->capture_default_str();
     cmd->add_option("--calibration", o->calibration, calibrationOptionHelp())->capture_default_str();
+    addPassStatisticsOption(*cmd, o->passStatistics);
     addPathOptions(*cmd, o->path);
     addKnobOptions(*cmd, o->knobs.knobs);
     cmd->add_flag(

@@ -24,6 +24,7 @@
 #include "core/gpuscene/scene_gpu.h"
 #include "core/image/tonemap.h"
 #include "core/reference/reference_renderer.h"
+#include "core/runner/device_energy.h"
 #include "core/renderer/view_settings.h"
 #include "core/util/clock.h"
 #include "core/util/files.h"
@@ -55,6 +56,7 @@ SweepRow measureRun(const std::string& name, int lights, const RenderSettings& s
     row.frame = r.timings.front();
     row.run = runJson(r, ctx);
     row.efficiency = r.efficiency;
+    row.energy = r.energy;
     row.bytes = row.run["memory"]["total_bytes"].get<uint64_t>();
     row.bytesPerPixel = row.run["memory"]["bytes_per_pixel"].get<double>();
     row.dropped = counterValue(r, "lights_dropped");
@@ -113,13 +115,15 @@ struct Progress {
 };
 
 // The reference's frames (timed, no warm-up, with progress) or a pipeline's.
-RunOptions sweepRunOptions(const SweepOptions& o, bool reference, std::shared_ptr<const CeilingRates> ceilings) {
+RunOptions sweepRunOptions(const SweepOptions& o, bool reference, std::shared_ptr<const CeilingRates> ceilings,
+                           std::shared_ptr<EnergySource> energy) {
     RunOptions ro = reference ? progressRunOptions(kReferenceRenderer, 0, o.referenceFrames) : RunOptions{};
     if (!reference) {
         ro.warmupFrames = uint32_t(o.warmup);
         ro.timedFrames = uint32_t(o.frames);
     }
     ro.ceilings = std::move(ceilings);
+    ro.energy = std::move(energy);
     return ro;
 }
 
@@ -181,6 +185,7 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const Came
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["reference_frames"] = o.referenceFrames;
+    j["pass_statistics"] = o.passStatistics ? "on" : "off";
     j["flip"] = flipConditionsJson(o.flipDistance);
     j["files"] = {"sweep.csv", "sweep.json", "sweep.html"};
     return j;
@@ -191,7 +196,7 @@ nlohmann::json sweepHeader(const SweepOptions& o, const Scene& scene, const Came
 std::string sweepId(nlohmann::json header) {
     const std::string device = header["device"].value("name", "");
     for (const char* k : {"command", "command_line", "device", "validation_messages",
-                          "sweep_id_fnv1a64", "merged_from", "calibration"})
+                          "sweep_id_fnv1a64", "merged_from", "calibration", "energy_source"})
         header.erase(k);
     header["shard"].erase("index");
     Fnv1a64 h;
@@ -242,6 +247,7 @@ struct GroupRunner {
     Progress& progress;
     std::vector<SweepRow>& rows;
     std::shared_ptr<const CeilingRates> ceilings; // null: no calibration
+    std::shared_ptr<EnergySource> energy;         // the device's energy counter, or why none
     size_t index = 0; // the next run's number
 
     // --camera-path: a pipeline row's timing pass over the path (compare/measure/path_run.h), then the
@@ -274,7 +280,7 @@ struct GroupRunner {
             const auto& [name, s] = runs[k];
             const bool isRef = name == kReferenceRenderer, owned = shard.owns(index);
             if (!any || (!owned && !isRef)) continue;
-            const RunOptions ro = sweepRunOptions(o, isRef, ceilings);
+            const RunOptions ro = sweepRunOptions(o, isRef, ceilings, energy);
             auto start = Clock::now();
             ReferenceCacheUse cache;
             Result<RunResult> result = runOne(ctx, gpuScene, name, features, s, ro, o, cache);
@@ -311,6 +317,7 @@ int runSweep(const SweepOptions& o) {
     checkCalibrationOption(o.calibration);
     std::unique_ptr<GpuContext> ctx = createContext(o.device);
     RenderSettings base;
+    base.passStatistics = o.passStatistics;
     std::vector<View> views; // validated up front: bad input fails before any run
     for (const std::string& r : splitList(o.res, "--res"))
         for (const std::string& m : splitList(o.msaa, "--msaa"))
@@ -323,7 +330,9 @@ int runSweep(const SweepOptions& o) {
     progress.references = o.referenceFrames > 0 ? lightCounts.size() * views.size() : 0;
     const Shard shard = parseShard(o.shard);
     // After the input is checked (a scene is checked when loaded): `measure` may take 40 s.
-    const std::shared_ptr<const RunCalibration> calibration = loadRunCalibration(*ctx, o.calibration);
+    const std::shared_ptr<const RunCalibration> calibration =
+        loadRunCalibration(*ctx, o.calibration, o.passStatistics);
+    const std::shared_ptr<EnergySource> energy = openDeviceEnergy(*ctx);
     progress.shard(shard);
     ensureDirectory(o.out);
     for (const char* f : {"sweep.csv", "sweep.json", "sweep.html"})
@@ -331,7 +340,7 @@ int runSweep(const SweepOptions& o) {
 
     std::vector<SweepRow> rows;
     nlohmann::json header;
-    GroupRunner group{o, *ctx, names, shard, progress, rows, ceilingsOf(*calibration)};
+    GroupRunner group{o, *ctx, names, shard, progress, rows, ceilingsOf(*calibration), energy};
     for (int lights : lightCounts) {
         SceneOptions so = o.scene;
         so.lightCount = lights;
@@ -349,6 +358,7 @@ int runSweep(const SweepOptions& o) {
     header["shard"] = {{"index", shard.index}, {"count", shard.count}, {"runs", group.index}};
     header["sweep_id_fnv1a64"] = sweepId(header);
     header["calibration"] = calibrationUseJson(*calibration); // per machine: outside the id
+    header["energy_source"] = energySourceJson(*energy);      // likewise
     const std::vector<std::string> validation = ctx->validationMessages();
     header["validation_messages"] = validation;
     writeOutputs(o, rows, header, ctx->info.name);
@@ -359,6 +369,7 @@ int runSweep(const SweepOptions& o) {
                 rows.size(), failed, ctx->info.name.c_str(), o.out.c_str());
     if (!calibration->available) // after the run: an error before it stays one line
         std::fprintf(stderr, "triptych: efficiency left out: %s\n", calibration->why.c_str());
+    noteEnergyLeftOut(*energy);
     if (int code = validationExit(validation)) return code;
     return failed == 0 ? 0 : 5;
 }

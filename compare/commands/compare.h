@@ -31,6 +31,7 @@ struct CompareOptions {
     std::string referenceCache;
     bool noReferenceCache = false;
     std::string calibration = "auto"; // --calibration (compare/cache/calibration_cache.h)
+    bool passStatistics = true;       // --pass-statistics (RenderSettings::passStatistics)
     // --camera-path / --light-motion (compare/measure/path_run.h): the path first, then the full report
     // at its worst view.
     PathOptions path;

@@ -33,6 +33,7 @@ struct SweepOptions {
     std::string referenceCache; // --reference-cache (compare/cache/reference_cache.h)
     bool noReferenceCache = false;
     std::string calibration = "auto"; // --calibration (compare/cache/calibration_cache.h)
+    bool passStatistics = true;       // --pass-statistics (RenderSettings::passStatistics)
     // --camera-path / --light-motion: every row's single view is the path's first; each
     // pipeline row also runs the path's timing pass (compare/measure/path_run.h): its percentiles.
     PathOptions path;

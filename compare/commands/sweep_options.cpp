@@ -64,6 +64,7 @@ void addSweepOptions(CLI::App& cmd, SweepOptions& o) {
     addFlipDistanceOption(cmd, o.flipDistance);
     addReferenceCacheOptions(cmd, o.referenceCache, o.noReferenceCache);
     cmd.add_option("--calibration", o.calibration, calibrationOptionHelp())->capture_default_str();
+    addPassStatisticsOption(cmd, o.passStatistics);
     cmd.add_option("--shard", o.shard,
                    "K/N: run only the runs whose index in the whole sweep's order is K modulo N "
                    "(0 <= K < N), for one of N processes, GPUs or cluster jobs; 'triptych merge' "

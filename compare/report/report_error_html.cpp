@@ -70,7 +70,7 @@ std::string summaryTable(const json& r) {
     std::string t =
         "<h2>Summary</h2>\n<table><tr><th class=\"l\">pipeline</th><th>frame median ms<br>(" +
         device +
-        ")</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>RMSE (HDR) "
+        ")</th><th>J / frame</th><th>memory MiB</th><th>bytes / pixel</th><th>RMSE (HDR)</th><th>RMSE (HDR) "
         "without the worst pixel</th><th>mean relative error (HDR)</th><th>PSNR dB "
         "(tonemapped)</th><th>share over threshold (tonemapped)</th><th>HDR-FLIP mean</th><th>FLIP "
         "mean "
@@ -79,11 +79,11 @@ std::string summaryTable(const json& r) {
     auto row = [&](const json& p, bool reference) {
         t += "<tr><td class=\"l\">" + esc(p["name"]) + "</td>";
         if (!ok(p)) {
-            t += "<td colspan=\"11\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
+            t += "<td colspan=\"12\" class=\"l\">failed: " + esc(p["error"]) + "</td></tr>\n";
             return;
         }
         const json& mem = p["run"]["memory"];
-        t += "<td>" + formatNumber(frameMedian(p)) + "</td><td>" +
+        t += "<td>" + formatNumber(frameMedian(p)) + "</td>" + joulesCell(p["run"]) + "<td>" +
              formatNumber(mem["total_bytes"].get<double>() / 1048576.0) + "</td>" +
              numberCell(mem["bytes_per_pixel"]);
         if (reference)

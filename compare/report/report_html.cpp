@@ -37,6 +37,47 @@ bool ok(const json& outcome) {
     return outcome["status"] == "ok";
 }
 
+std::string joulesCell(const json& run) {
+    const json& e = run.value("energy", json::object());
+    if (e.value("joules_per_frame", json()).is_number()) return numberCell(e["joules_per_frame"]);
+    return "<td title=\"" + esc(e.value("reason", "not measured")) + "\">&ndash;</td>";
+}
+
+// Each run's energy per frame beside its frame time, with the window it was measured over,
+// or why it is unknown (docs/efficiency.md, "Energy per frame").
+std::string energySection(const json& r) {
+    const json& source = r["energy_source"];
+    std::string h = "<h2>Energy per frame (" + esc(r["device"]["name"]) + ")</h2>\n";
+    if (!source.value("available", false))
+        return h + "<p>Not measured: " + esc(source.value("reason", "")) + ".</p>\n";
+    h += "<p>" + esc(source["source"]) + " counter of " + esc(source["device"]) +
+         ", read before the first timed frame and after the last; a window shorter than " +
+         formatNumber(source["min_window_ms"].get<double>()) +
+         " ms runs the same frames on (untimed). Idle power is in the count.</p>\n"
+         "<table><tr><th class=\"l\">pipeline</th><th>frame median ms</th><th>J / frame</th>"
+         "<th>mean W</th><th>window ms</th><th>frames</th><th class=\"l\">note</th></tr>\n";
+    auto row = [&](const json& p) {
+        if (!ok(p)) return;
+        const json& e = p["run"]["energy"];
+        const bool known = e["joules_per_frame"].is_number();
+        h += "<tr><td class=\"l\">" + esc(p["name"]) + "</td><td>" + formatNumber(frameMedian(p)) + "</td>" +
+             joulesCell(p["run"]) +
+             (e.contains("watts") ? numberCell(e["watts"]) + numberCell(e["window_ms"]) + "<td>" +
+                                        esc(e["frames"]) + "</td>"
+                                  : std::string("<td></td><td></td><td></td>")) +
+             "<td class=\"l\">" +
+             (known ? (e.value("extended_frames", 0) > 0 ? "window extended by " + esc(e["extended_frames"]) +
+                                                               " untimed frames"
+                                                         : std::string())
+                    : esc(e.value("reason", ""))) +
+             "</td></tr>\n";
+    };
+    row(r["reference"]);
+    for (const json& p : r["pipelines"])
+        row(p);
+    return h + "</table>\n";
+}
+
 Result<std::string> figure(const std::string& outDir, const std::string& file,
                            const std::string& caption, const std::string& attributes) {
     Result<std::string> bytes = readWholeFile(outDir + "/" + file);
@@ -351,7 +392,7 @@ Result<std::string> reportHtml(const json& r, const std::string& outDir) {
     Result<std::string> pairs = pairwiseSection(r, outDir);
     if (!pairs) return pairs;
     h +=
-        *images + flipSection(r) + *pairs + timingSection(r) + efficiencySection(r) + memorySection(r) +
+        *images + flipSection(r) + *pairs + timingSection(r) + energySection(r) + efficiencySection(r) + memorySection(r) +
         detailsSection(r);
     return h + "<p class=\"meta\">Schema " + esc(r["schema"]) +
            "; every number above is in report.json.</p>\n" + reportViewerScript() +

@@ -13,6 +13,8 @@ std::string esc(const nlohmann::json& j);        // XML-escaped text of a value
 std::string numberCell(const nlohmann::json& j); // <td>number</td>, "inf" for null
 double frameMedian(const nlohmann::json& outcome);
 bool ok(const nlohmann::json& outcome);
+// <td> of a run's joules per frame; "&ndash;" with the reason as its title when unknown.
+std::string joulesCell(const nlohmann::json& run);
 // A pooled FLIP value of a pipeline, null when FLIP was not measured.
 nlohmann::json flipValue(const nlohmann::json& p, const char* kind, const char* key);
 
@@ -29,6 +31,7 @@ std::string shadowReferences(const nlohmann::json& r);
 std::string errorPlot(const nlohmann::json& r);
 std::string flipSection(const nlohmann::json& r);
 std::string efficiencySection(const nlohmann::json& r); // report_efficiency_html.cpp
+std::string energySection(const nlohmann::json& r);     // report_html.cpp
 std::string pathSection(const nlohmann::json& r);       // report_path_html.cpp
 
 } // namespace tp::cli::html

@@ -152,6 +152,7 @@ nlohmann::json reportJson(const CompareRecord& r) {
     j["settings"]["lights_requested"] = o.lightsRequested;
     j["device"] = deviceJson(*r.ctx);
     j["calibration"] = calibrationUseJson(*r.calibration);
+    j["energy_source"] = energySourceJson(*r.energy);
     j["difference_scale"] = {
         {"value", r.diffScale},
         {"unit", "linear radiance, max over RGB of |pipeline - reference|"},

@@ -11,6 +11,7 @@
 #include "compare/measure/flip_measure.h"
 #include "compare/cache/reference_cache.h"
 #include "compare/cache/scene_hash.h"
+#include "core/energy/energy_meter.h"
 #include "core/gpu/context.h"
 #include "core/gpuscene/shadow_plan.h"
 #include "core/image/difference.h"
@@ -84,6 +85,7 @@ struct CompareRecord {
     std::vector<PairOutcome> pairs;
     std::vector<std::string> validationMessages;
     std::shared_ptr<const RunCalibration> calibration; // the ceilings passes are placed against
+    std::shared_ptr<EnergySource> energy; // the device's energy counter (every run reads it)
     nlohmann::json path; // with --camera-path or --light-motion: pathJson (compare/measure/path_run.h)
 };
 

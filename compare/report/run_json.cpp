@@ -1,8 +1,11 @@
 #include "compare/report/run_json.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "compare/report/efficiency_json.h"
+#include "core/energy/energy_json.h"
+#include "core/energy/energy_window.h"
 #include "core/renderer/renderer.h"
 
 namespace tp::cli {
@@ -29,7 +32,10 @@ nlohmann::json deviceJson(const GpuContext& ctx) {
 }
 
 nlohmann::json settingsJson(const RenderSettings& s) {
-    nlohmann::json j = {{"width", s.width}, {"height", s.height}, {"msaa", s.msaa}};
+    nlohmann::json j = {{"width", s.width},
+                        {"height", s.height},
+                        {"msaa", s.msaa},
+                        {"pass_statistics", s.passStatistics ? "on" : "off"}};
     // Every registered knob by its key, as the run had it (a knob nobody set: its default).
     for (const KnobReaders& k : allKnobs()) {
         j[k.knob.key()] = knobJson(k.knob, k.knob.valueIn(s.knobs));
@@ -106,6 +112,10 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
                            {"frames", t.frames},
                            {"device", ctx.info.name}});
     j["timings"] = timings;
+    j["energy"] = energyJson(run.energy);
+    j["pass_statistics"] = run.statisticsCollected
+                               ? nlohmann::json{{"collected", true}}
+                               : nlohmann::json{{"collected", false}, {"reason", run.statisticsWhy}};
     j["memory"] = ledgerJson(run.memory);
     const double pixels = double(run.hdr.pixelCount());
     j["memory"]["bytes_per_pixel"] =
@@ -120,9 +130,24 @@ nlohmann::json runJson(const RunResult& run, const GpuContext& ctx) {
     j["left_out"] = leftOut;
     j["passes"] = run.passes;
     j["culled_passes"] = run.culledPasses;
-    j["work"] = passWorkJson(run.work);
+    // Without the statistics a pass's fragment-based counts would read as zeros: left out.
+    j["work"] = run.statisticsCollected ? passWorkJson(run.work) : nlohmann::json(nullptr);
     if (run.efficiency) j["efficiency"] = efficiencyJson(*run.efficiency);
     return j;
+}
+
+nlohmann::json energySourceJson(const EnergySource& source) {
+    if (!source.meter) return {{"available", false}, {"reason", source.why}};
+    const EnergyMeter& m = *source.meter;
+    return {{"available", true},
+            {"source", m.source()},
+            {"device", m.device()},
+            {"update_period_ms", m.updatePeriodMs()},
+            {"min_window_ms", kPeriodsPerWindow * m.updatePeriodMs()}};
+}
+
+void noteEnergyLeftOut(const EnergySource& source) {
+    if (!source.meter) std::fprintf(stderr, "triptych: energy left out: %s\n", source.why.c_str());
 }
 
 nlohmann::json ledgerJson(const std::vector<LedgerEntry>& entries) {

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/cli/cli_common.h"
+#include "core/energy/energy_meter.h"
 #include "core/gpu/context.h"
 #include "core/image/metrics.h"
 #include "core/renderer/settings.h"
@@ -20,7 +21,14 @@ nlohmann::json sceneJson(const Scene& scene, const SceneFeatures& f);
 nlohmann::json cameraSourceJson(const CameraSource& source);
 // Timings carry the device's name beside every figure set.
 // Memory: {resources, total_bytes, bytes_per_pixel} (per output pixel).
+// With "energy" (the timed frames' joules per frame or why not, core/energy/energy_json.h) and
+// "pass_statistics" ({collected, reason}); without the statistics "work" is null.
 nlohmann::json runJson(const RunResult& run, const GpuContext& ctx);
+// The command's energy counter: {available, source, device, update_period_ms, min_window_ms}, or
+// {available: false, reason}.
+nlohmann::json energySourceJson(const EnergySource& source);
+// "triptych: energy left out: WHY" on stderr when the device has no counter (once per command).
+void noteEnergyLeftOut(const EnergySource& source);
 // Ledger entries as {resources: [...], total_bytes}; total is the sum of the entries' bytes.
 nlohmann::json ledgerJson(const std::vector<LedgerEntry>& entries);
 // Every metric of metricTable() by name, plus the location of the largest difference and

@@ -75,7 +75,7 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
     std::string t = "pipeline,lights,width,height,msaa,";
     for (const Knob& k : columns)
         t += k.key() + ",";
-    t += "status,frame_median_ms,frame_min_ms,frame_max_ms,memory_bytes,bytes_per_pixel,rmse_hdr,"
+    t += "status,frame_median_ms,frame_min_ms,frame_max_ms,joules_per_frame,memory_bytes,bytes_per_pixel,rmse_hdr,"
          "psnr_hdr,"
          "max_abs_hdr,rmse_tonemapped,psnr_tonemapped,max_abs_tonemapped,flip_hdr_mean,flip_"
          "tonemapped_mean,"
@@ -97,7 +97,9 @@ std::string sweepCsv(const std::vector<SweepRow>& rows, const std::string& devic
         for (const Knob& k : columns)
             t += csvField(k.valueIn(r.s.knobs)) + ",";
         t += r.status + "," + number(r.frame.medianMs) + "," + number(r.frame.minMs) + "," +
-             number(r.frame.maxMs) + "," + std::to_string(r.bytes) + "," + number(r.bytesPerPixel) +
+             number(r.frame.maxMs) + "," +
+             (r.energy.joulesPerFrame ? number(*r.energy.joulesPerFrame) : std::string()) + "," +
+             std::to_string(r.bytes) + "," + number(r.bytesPerPixel) +
              "," + errorFields(r.measured, r.hdr) + "," + errorFields(r.measured, r.display) + "," +
              flipFields(r) + "," + errorFields(r.measuredCenter, r.hdrCenter) + "," +
              errorFields(r.measuredCenter, r.displayCenter) + "," + number(r.dropped) + "," +

@@ -30,6 +30,7 @@ struct SweepRow {
     float exposureEv = 0, hdrPsnrPeak = 1;
     nlohmann::json run; // runJson(): every pass, the ledger, counters, left-out
     std::optional<FrameEfficiency> efficiency; // with a calibration (docs/efficiency.md)
+    FrameEnergy energy;                        // the timed frames' (sweep.csv: joules_per_frame)
     std::string lightsHash;
     nlohmann::json referenceCache; // reference rows: where the run came from (reference_cache.h)
     size_t runIndex = 0;           // in the unsharded sweep's order (sweep.json: run_index)

@@ -111,6 +111,18 @@ void addViewOptions(CLI::App& app, ViewOptions& o) {
         ->capture_default_str();
 }
 
+CLI::Option* addPassStatisticsOption(CLI::App& app, bool& on) {
+    return app
+        .add_option("--pass-statistics", on,
+                    "on: every pass is bracketed by a pipeline-statistics query (its primitives and "
+                    "fragments, which the work counts and the efficiency need); off: none is "
+                    "recorded, so the timings do not pay for the queries, and the report says the "
+                    "counts and the efficiency were not collected (docs/efficiency.md)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->type_name("on|off")
+        ->default_str("on");
+}
+
 std::unique_ptr<GpuContext> createContext(const DeviceOptions& o) {
     ContextOptions options;
     options.device = o.device;

@@ -58,6 +58,8 @@ CLI::Option* addStrictFlag(CLI::App& app, bool& strict);
 CLI::Option* addCameraOption(CLI::App& app, std::string& path);
 void addDeviceOptions(CLI::App& app, DeviceOptions& o);
 void addViewOptions(CLI::App& app, ViewOptions& o);
+// --pass-statistics on|off, for the commands that time frames (RenderSettings::passStatistics).
+CLI::Option* addPassStatisticsOption(CLI::App& app, bool& on);
 // One option per knob of the registered renderers (core/renderer/knobs.h), bound into
 // `values` (RenderSettings::knobs) and set to the knob's default; checked by checkKnobs.
 // sweep: a sweepable knob takes a comma-separated list.

@@ -101,7 +101,8 @@ std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
 }
 
 DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
-    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceIDProperties id{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES, &id};
     VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
     vkGetPhysicalDeviceProperties2(device, &props);
     DeviceInfo info;
@@ -110,6 +111,8 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
     info.type = deviceTypeName(props.properties.deviceType);
     info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
     info.apiVersion = props.properties.apiVersion;
+    info.vendorId = props.properties.vendorID;
+    std::copy(std::begin(id.deviceUUID), std::end(id.deviceUUID), info.uuid.begin());
     return info;
 }
 

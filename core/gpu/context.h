@@ -3,6 +3,7 @@
 // validation), one physical device, one graphics+compute queue, a command pool, and the
 // memory ledger every allocation goes through. No window of its own; the viewer asks for the
 // instance extensions and the swapchain extension it needs (ContextOptions).
+#include <array>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -22,6 +23,8 @@ struct DeviceInfo {
     std::string type; // "discrete", "integrated", "virtual", "cpu", "other"
     std::string driver;
     uint32_t apiVersion = 0;
+    uint32_t vendorId = 0;         // PCI vendor (0x10de: NVIDIA)
+    std::array<uint8_t, 16> uuid{}; // VkPhysicalDeviceIDProperties::deviceUUID: NVML's GPU UUID on NVIDIA
 };
 
 struct ContextOptions {

@@ -22,6 +22,10 @@ struct RenderSettings {
     // the one view, as a single render always was.
     bool manyViews = false;
     ShadowSettings shadows; // default: none (the images of a run without shadows)
+    // --pass-statistics: every recorded pass is bracketed by a pipeline-statistics query (its
+    // primitive and fragment counts: the work counts and the efficiency need them). false: none
+    // are recorded, so a timing run does not pay for them; the report says they are off.
+    bool passStatistics = true;
     // Needs a previous plan of the same renderer measured and outgrew (Renderer contract step
     // 7, RendererSession): by the renderer's own names; empty for a first plan.
     std::map<std::string, uint64_t> capacities;

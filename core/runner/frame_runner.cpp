@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/energy/energy_window.h"
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pass_statistics.h"
@@ -54,27 +55,42 @@ double spotShare(const std::vector<Light>& lights) {
     return local > 0 ? spots / local : 0.0;
 }
 
+// Whether the pipeline statistics were counted, and if not why: the report says so, never zeros.
+void noteStatistics(RunResult& result, const PassStatistics* statistics) {
+    result.statisticsCollected = statistics && statistics->available();
+    if (result.statisticsCollected) return;
+    result.statisticsWhy = statistics ? "the device has no pipelineStatisticsQuery"
+                                      : "--pass-statistics off: no pipeline-statistics query was recorded";
+    result.stats.leftOut.push_back({"pipeline statistics (each pass's primitive and fragment counts)",
+                                    result.statisticsWhy});
+    result.stats.leftOut.push_back({"efficiency (each pass against the device's ceilings)",
+                                    "it needs the pipeline statistics: " + result.statisticsWhy});
+}
+
 } // namespace
 
 namespace detail {
 
 void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
-                 PassStatistics& statistics) {
+                 PassStatistics* statistics) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
     profiler.beginFrame(cmd);
-    statistics.beginFrame(cmd);
-    graph.record(cmd, &profiler, &statistics);
+    if (statistics) statistics->beginFrame(cmd);
+    graph.record(cmd, &profiler, statistics);
     profiler.endFrame(cmd);
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
 
 uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
-                      const RunOptions& options) {
+                      const RunOptions& options, FrameEnergy& energy) {
     const double minWarmupMs = options.warmupFrames > 0 && !ctx.isCpuDevice() ? kGpuWarmupMs : 0.0;
     const auto begin = std::chrono::steady_clock::now();
+    EnergyWindow window(options.energy ? options.energy->meter.get() : nullptr,
+                        options.energy ? options.energy->why : "not measured in this run");
     uint32_t warmup = options.warmupFrames;
     for (uint32_t f = 0; f < warmup + options.timedFrames; ++f) {
+        if (f == warmup) window.begin(); // the first timed frame (warmup is final by now)
         auto start = std::chrono::steady_clock::now();
         ctx.submitAndWait(cmd);
         std::chrono::duration<double, std::milli> wall = std::chrono::steady_clock::now() - start;
@@ -84,12 +100,19 @@ uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profile
         else if (lastWarmup) profiler.discardSamples();
         if (options.onFrame) options.onFrame(f, warmup + options.timedFrames, wall.count());
     }
+    // The same frames again, untimed, while the window is too short for the counter.
+    uint32_t extended = 0;
+    while (options.extendEnergyWindow && options.timedFrames > 0 && window.wantsMore(extended)) {
+        ctx.submitAndWait(cmd);
+        ++extended;
+    }
+    energy = window.end(options.timedFrames + extended, extended);
     return warmup;
 }
 
 RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEntry& entry,
                         const RenderSettings& settings, PlannedRenderer& planned, GpuProfiler& profiler,
-                        const PassStatistics& statistics, const RunOptions& options) {
+                        const PassStatistics* statistics, const RunOptions& options) {
     FrameGraph& graph = *planned.graph;
     RunResult result;
     result.renderer = entry.name;
@@ -108,8 +131,9 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     result.stats = planned.renderer->stats();
     // The measure of the MSAA shading rate: --msaa-shading pixel runs about one invocation per
     // covered pixel and primitive, sample about one per covered sample.
-    const std::vector<PassCounts> counts = statistics.read();
-    if (statistics.available()) {
+    const std::vector<PassCounts> counts = statistics ? statistics->read() : std::vector<PassCounts>{};
+    noteStatistics(result, statistics);
+    if (result.statisticsCollected) {
         uint64_t n = 0;
         for (const PassCounts& c : counts)
             n += c.counts.fragmentInvocations;
@@ -121,7 +145,7 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     result.passes = graph.livePasses();
     result.culledPasses = graph.culledPasses();
     result.work = countWork(graph, counts, result);
-    if (options.ceilings)
+    if (options.ceilings && result.statisticsCollected)
         result.efficiency = placeFrame(result.work, result.timings, *options.ceilings,
                                        spotShare(scene.scene().lights));
     return result;

@@ -11,6 +11,8 @@
 
 #include "core/calibrate/efficiency.h"
 #include "core/calibrate/pass_work.h"
+#include "core/energy/energy_meter.h"
+#include "core/energy/frame_energy.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/ledger.h"
 #include "core/gpu/profiler.h"
@@ -30,6 +32,13 @@ struct RunOptions {
     // false: timings and counters only, no images (a camera path's timing pass: nothing on the
     // CPU between one view's frames and the next's); the work counts and placement need them.
     bool readback = true;
+    // The device's energy counter (core/runner/device_energy.h): read around the timed frames
+    // (RunResult::energy). Null: not measured (the result's reason says so).
+    std::shared_ptr<EnergySource> energy;
+    // A window shorter than the counter allows runs the same frames on until it is long enough
+    // (core/energy/energy_window.h); false (the viewer, which cannot wait): the energy is left
+    // out with that reason.
+    bool extendEnergyWindow = true;
 };
 
 struct RunResult {
@@ -47,6 +56,11 @@ struct RunResult {
     std::vector<DebugImage> debugImages;   // only with settings.debug
     std::vector<PassWork> work;            // per live pass, in recording order (docs/efficiency.md)
     std::optional<FrameEfficiency> efficiency; // with RunOptions::ceilings
+    FrameEnergy energy; // the timed frames' energy, or the reason it is unknown
+    // The per-pass pipeline statistics were counted; else `statisticsWhy` says why not
+    // (--pass-statistics off, or a device without the query).
+    bool statisticsCollected = false;
+    std::string statisticsWhy;
 };
 
 // A renderer built for the scene and planned, its frame graph compiled (resources exist), not

@@ -24,17 +24,19 @@ template <class Step> Status pipelineStep(const RendererEntry& entry, Step&& ste
     return {};
 }
 
+// `statistics` null: no pipeline-statistics query is recorded (--pass-statistics off).
 void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
-                 PassStatistics& statistics);
-// Warm-up then timed frames of the one recording; the profiler keeps the timed ones. Returns
-// how many warm-up frames ran.
+                 PassStatistics* statistics);
+// Warm-up then timed frames of the one recording; the profiler keeps the timed ones, `energy`
+// gets their energy (RunOptions::energy; frames added past them to lengthen its window are not
+// timed). Returns how many warm-up frames ran.
 uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
-                      const RunOptions& options);
+                      const RunOptions& options, FrameEnergy& energy);
 // What a report needs from the frames just run (without RunOptions::readback: no images, no
-// per-pass work).
+// per-pass work; `statistics` null: no counts, so no efficiency either).
 RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEntry& entry,
                         const RenderSettings& settings, PlannedRenderer& planned,
-                        GpuProfiler& profiler, const PassStatistics& statistics,
+                        GpuProfiler& profiler, const PassStatistics* statistics,
                         const RunOptions& options);
 
 } // namespace detail

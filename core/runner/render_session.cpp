@@ -68,7 +68,8 @@ Status RendererSession::plan() {
     // Query pools per plan: a new graph may have other passes (the profiler keeps their names);
     // an update in place records the same passes again into the same pools.
     profiler_ = std::make_unique<GpuProfiler>(ctx_, kMaxTimedScopes);
-    statistics_ = std::make_unique<PassStatistics>(ctx_, kMaxTimedScopes);
+    statistics_ = settings_.passStatistics ? std::make_unique<PassStatistics>(ctx_, kMaxTimedScopes)
+                                           : nullptr; // --pass-statistics off
     return record();
 }
 
@@ -76,7 +77,7 @@ Status RendererSession::record() {
     if (!cmd_) cmd_ = ctx_.allocateCommandBuffer();
     VK_CHECK(vkResetCommandBuffer(cmd_, 0));
     Status s = detail::pipelineStep(
-        entry_, [&] { detail::recordFrame(cmd_, *planned_.graph, *profiler_, *statistics_); });
+        entry_, [&] { detail::recordFrame(cmd_, *planned_.graph, *profiler_, statistics_.get()); });
     generation_ = scene_.viewGeneration();
     recorded_ = bool(s);
     return s;
@@ -110,9 +111,10 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
     // view's update time (a replan for this view), its count a replan. No frame: nothing to read.
     const bool framed = options.warmupFrames + options.timedFrames > 0;
     uint32_t warmup = 0;
+    FrameEnergy energy;
     for (uint32_t grown = 0;; ++grown) {
         profiler_->discardSamples();
-        warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options);
+        warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options, energy);
         if (!framed || grown == kMaxGrowths || !planned_.renderer->overflowed(*planned_.graph))
             break;
         const auto start = std::chrono::steady_clock::now();
@@ -123,7 +125,8 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
         updateMs = std::max(0.0, updateMs) + msSince(start);
     }
     RunResult result = detail::collectResult(ctx_, scene_, entry_, settings_, planned_, *profiler_,
-                                             *statistics_, options);
+                                             statistics_.get(), options);
+    result.energy = std::move(energy);
     // more warm-up frames than asked on a GPU: kGpuWarmupMs
     result.stats.counters.push_back({"warmup_frames", double(warmup)});
     if (updates_ + replans_ > 0) {

@@ -21,7 +21,7 @@ fail=0
 # other. Derived from the code (docs/architecture.md, "Layers", says what each one is).
 core_ranks=(
   "util"
-  "image scene"
+  "image scene energy"
   "gpu camera"
   "renderer gpuscene"
   "calibrate lightassign"
