@@ -125,10 +125,10 @@ void SceneGpu::buildMeshlets() {
     // Every mesh's meshlets, the meshes side by side on the machine's cores.
     const auto start = std::chrono::steady_clock::now();
     std::vector<MeshMeshlets> built(scene_.meshes.size());
-    forEachInParallel(built.size(), [&](size_t i) { built[i] = tp::buildMeshlets(scene_.meshes[i]); });
-    meshletBuildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                               start)
-                          .count();
+    forEachInParallel(built.size(),
+                      [&](size_t i) { built[i] = tp::buildMeshlets(scene_.meshes[i]); });
+    const auto elapsed = std::chrono::steady_clock::now() - start;
+    meshletBuildMs_ = std::chrono::duration<double, std::milli>(elapsed).count();
     std::vector<uint32_t> meshletIndices;
     std::vector<gpu::MeshletGpu> meshlets;
     meshletIndices.reserve(scene_.triangleCount() * 3);

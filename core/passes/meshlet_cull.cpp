@@ -44,8 +44,9 @@ void MeshletCull::plan(FrameGraph& graph) {
         "per kept meshlet: an indexed indirect draw (5 words), per draw a range");
     counts_ = graph.createBuffer("meshlet_draw_counts", slots * sizeof(uint32_t),
                                  "per draw: its indirect draws this frame");
-    stats_ = graph.createBuffer("meshlet_cull_stats", slots * sizeof(gpu::MeshletCullStats),
-                                "per draw: meshlets kept, culled by frustum and by cone; triangles");
+    stats_ =
+        graph.createBuffer("meshlet_cull_stats", slots * sizeof(gpu::MeshletCullStats),
+                           "per draw: meshlets kept, culled by frustum and by cone; triangles");
     graph.addPass("meshlet_cull",
                   {{commands_, Use::StorageWrite, TP_MC_BINDING_COMMANDS},
                    {counts_, Use::StorageWrite, TP_MC_BINDING_COUNTS},
@@ -70,9 +71,9 @@ void MeshletCull::prepare(FrameGraph& graph) {
                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                   {graph.owner(), "", "meshlet_cull_draws",
                                    "per culled draw: its meshlets, its range of commands"});
-    set_ = graph.createPassSet("meshlet_cull", VK_NULL_HANDLE,
-                               {{TP_MC_BINDING_MESHLETS, scene_.meshletBuffer()},
-                                {TP_MC_BINDING_DRAWS, table_.buffer}});
+    set_ = graph.createPassSet(
+        "meshlet_cull", VK_NULL_HANDLE,
+        {{TP_MC_BINDING_MESHLETS, scene_.meshletBuffer()}, {TP_MC_BINDING_DRAWS, table_.buffer}});
     layout_ = scene_.createPipelineLayout(set_.layout);
     pipeline_ = createComputePipeline(ctx_, "meshlet_cull_comp",
                                       scene_.specConstants(AlphaMode::Opaque), layout_, &set_);
@@ -112,10 +113,9 @@ void MeshletCull::recordDraw(PassContext& pc, VkPipelineLayout layout, const Dra
     vkCmdPushConstants(pc.cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdSetCullMode(pc.cmd, d.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
     constexpr uint32_t stride = TP_MC_COMMAND_WORDS * sizeof(uint32_t);
-    vkCmdDrawIndexedIndirectCount(pc.cmd, pc.buffer(commands_).buffer,
-                                  VkDeviceSize(firstCommand_[slot]) * stride,
-                                  pc.buffer(counts_).buffer, VkDeviceSize(slot) * sizeof(uint32_t),
-                                  d.meshletCount, stride);
+    vkCmdDrawIndexedIndirectCount(
+        pc.cmd, pc.buffer(commands_).buffer, VkDeviceSize(firstCommand_[slot]) * stride,
+        pc.buffer(counts_).buffer, VkDeviceSize(slot) * sizeof(uint32_t), d.meshletCount, stride);
 }
 
 void MeshletCull::collect(FrameGraph& graph) {

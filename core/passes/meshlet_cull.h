@@ -65,7 +65,7 @@ class MeshletCull {
     GpuContext& ctx_;
     const SceneGpu& scene_;
     std::vector<const DrawItem*> draws_;
-    std::vector<uint32_t> slotOf_;      // by DrawItem::index: its slot (~0u: not culled here)
+    std::vector<uint32_t> slotOf_;       // by DrawItem::index: its slot (~0u: not culled here)
     std::vector<uint32_t> firstCommand_; // by slot
     uint32_t meshlets_ = 0, triangles_ = 0;
     Buffer table_; // CullDraw[] (shaders/passes/meshlet_cull.h)

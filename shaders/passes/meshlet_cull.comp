@@ -40,8 +40,9 @@ vec4 matrixRow(mat4 m, int i) {
 void main() {
     // A 2D grid of groups (core/passes/meshlet_cull.cpp): more draws than 65,535.
     const uint slot = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-    // The table holds exactly the draws (no push constant: see meshlet_cull.cpp's record).
-    if (slot >= uint(cullDraws.length())) return; // the whole group: no barrier skipped by part of it
+    // The table holds exactly the draws (no push constant: see meshlet_cull.cpp's record). The
+    // whole group returns: no barrier is skipped by part of it.
+    if (slot >= uint(cullDraws.length())) return;
     const uint lane = gl_LocalInvocationID.x;
     const CullDraw d = cullDraws[slot];
     if (lane < 3u) totals[lane] = 0u;

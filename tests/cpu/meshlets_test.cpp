@@ -141,8 +141,8 @@ TEST(Meshlets, ConeTestIsConservativeOnASphere) {
             ++culled;
             for (uint32_t t = 0; t < ml.triangleCount; ++t)
                 ASSERT_TRUE(backFacing(sphere, &m.indices[ml.firstIndex + t * 3], eye))
-                    << "a culled meshlet has a front-facing triangle: eye " << eye.x << ","
-                    << eye.y << "," << eye.z << ", triangle " << t;
+                    << "a culled meshlet has a front-facing triangle: eye " << eye.x << "," << eye.y
+                    << "," << eye.z << ", triangle " << t;
         }
     }
     // From outside the sphere about half its triangles face away; a cluster goes only when all
@@ -185,8 +185,8 @@ TEST(Meshlets, ConeHandCases) {
         EXPECT_FALSE(culls(b.meshlets[0], eye));
 
     // The slack of a position far from the origin only ever keeps more.
-    EXPECT_FALSE(gpu::meshletConeCulls(ml.coneApex - glm::vec3(2, 2, -5), ml.coneAxis,
-                                       ml.coneCutoff, 1e3f));
+    EXPECT_FALSE(
+        gpu::meshletConeCulls(ml.coneApex - glm::vec3(2, 2, -5), ml.coneAxis, ml.coneCutoff, 1e3f));
 }
 
 TEST(Meshlets, FrustumPlaneTest) {
