@@ -10,6 +10,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_classes.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "forwardplus/forwardplus_shared.h"
 
@@ -36,6 +37,8 @@ std::vector<PassUse> ForwardShading::uses(bool transparent) const {
     if (msaa && lastPass) uses.push_back({t_.hdr, Use::ColorResolve});
     if (t_.shadows)
         for (const PassUse& u : t_.shadows->sampledUses()) uses.push_back(u);
+    if (t_.cull && !transparent)
+        for (const PassUse& u : t_.cull->drawUses()) uses.push_back(u);
     return uses;
 }
 
@@ -191,7 +194,11 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
     std::vector<AlphaMode> modes = transparent
                                        ? std::vector<AlphaMode>{AlphaMode::Blend}
                                        : std::vector<AlphaMode>{AlphaMode::Opaque, AlphaMode::Mask};
-    scene_.bindIndexBuffer(pc.cmd);
+    const bool culled = t_.cull && !transparent;
+    if (culled)
+        scene_.bindMeshletIndexBuffer(pc.cmd);
+    else
+        scene_.bindIndexBuffer(pc.cmd);
     for (AlphaMode mode : modes) {
         const std::vector<VkPipeline>& byMaterial = byMaterial_[uint32_t(mode)];
         VkPipeline bound = VK_NULL_HANDLE;
@@ -200,7 +207,10 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
             VkPipeline p = byMaterial[std::min<size_t>(item->material, byMaterial.size() - 1)];
             if (p != bound) vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
             bound = p;
-            recordDraw(pc.cmd, layout_, *item);
+            if (culled)
+                t_.cull->recordDraw(pc, layout_, *item);
+            else
+                recordDraw(pc.cmd, layout_, *item);
         }
     }
     endRendering(pc);

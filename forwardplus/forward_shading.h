@@ -21,7 +21,10 @@ class SceneGpu;
 
 namespace tp {
 class ShadowMaps;
+namespace passes {
+class MeshletCull;
 }
+} // namespace tp
 
 namespace tp::fp {
 
@@ -43,6 +46,9 @@ struct ShadingTargets {
     ResourceHandle hdr, hdrMsaa, depth, depthMsaa, tiles, indices, masks;
     VkFormat hdrFormat = VK_FORMAT_UNDEFINED;
     const ShadowMaps* shadows = nullptr; // the atlas, sampled by both passes when enabled
+    // --cull-geometry: forward_opaque draws the meshlets this pass kept (the prepass's);
+    // forward_transparent draws its meshes whole.
+    const passes::MeshletCull* cull = nullptr;
 };
 
 class ForwardShading {

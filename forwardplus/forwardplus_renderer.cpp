@@ -22,6 +22,7 @@
 #include "core/passes/blended_bounds.h"
 #include "core/passes/depth_prepass.h"
 #include "core/passes/light_binning.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "core/renderer/msaa_knob.h"
 #include "forwardplus/forward_shading.h"
@@ -89,9 +90,18 @@ class ForwardPlusRenderer final : public Renderer {
                 graph.createBuffer("cluster_masks", std::max<uint64_t>(cap_.maskWords * 4, 16),
                                    "per tile and depth slice: a bitmask over the tile's list");
 
-        prepass_.emplace(ctx_, scene_,
-                         passes::DepthPrepassParams{samples(), scene_.drawList(DrawFilter::Opaque),
-                                                    scene_.drawList(DrawFilter::Mask)});
+        passes::DepthPrepassParams prepass{samples(), scene_.drawList(DrawFilter::Opaque),
+                                           scene_.drawList(DrawFilter::Mask)};
+        if (fp_.cullGeometry == CullGeometry::Frustum) {
+            // The opaque and masked draws, culled once per frame for the prepass and
+            // forward_opaque alike (the EQUAL test needs the same triangles in both).
+            std::vector<const DrawItem*> culled = prepass.opaque;
+            culled.insert(culled.end(), prepass.masked.begin(), prepass.masked.end());
+            cull_.emplace(ctx_, scene_, std::move(culled));
+            cull_->plan(graph);
+            prepass.cull = &*cull_;
+        }
+        prepass_.emplace(ctx_, scene_, std::move(prepass));
         prepass_->plan(graph, {depthSrc, msaa ? depth_ : ResourceHandle{}});
 
         if (layout() == TP_FP_LAYOUT_LINKED)
@@ -125,7 +135,7 @@ class ForwardPlusRenderer final : public Renderer {
                                            fp_.assign.slices, r_.twoLists, clustered(), r_.blendPass,
                                            r_.subgroupLoop});
         shading_->plan(graph, {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_,
-                               hdrFormat_, &*shadows_});
+                               hdrFormat_, &*shadows_, cull_ ? &*cull_ : nullptr});
         graph.exportResource("hdr", hdr_);
         graph.exportResource("depth", depth_);
         // Read back after the frame for the statistics, debug images and tests.
@@ -138,6 +148,7 @@ class ForwardPlusRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         createParams();
+        if (cull_) cull_->prepare(graph);
         prepass_->prepare();
         if (blendBounds_) blendBounds_->prepare(graph);
         if (centreBounds_) centreBounds_->prepare(graph);
@@ -184,6 +195,7 @@ class ForwardPlusRenderer final : public Renderer {
             maskBits_.resize(m.size() / 4);
             std::memcpy(maskBits_.data(), m.data(), maskBits_.size() * 4);
         }
+        if (cull_) cull_->collect(graph);
         collected_ = true;
     }
 
@@ -215,6 +227,8 @@ class ForwardPlusRenderer final : public Renderer {
             double(culling_->dispatches())); // batches of candidates (lavapipe's loop limit)
         add("light_spheres_pass", r_.spherePass ? 1.0 : 0.0);    // --light-spheres, resolved
         add("culling_by_subgroup", r_.subgroupCull ? 1.0 : 0.0); // --cull-by, resolved
+        if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled
+            for (const auto& c : cull_->counters()) s.counters.push_back(c);
         if (binned())
             add("binned_candidates", double(r_.gpuBinning ? bins_.slots : bins_.candidates.size()));
         if (binned()) add("light_binning_on_gpu", r_.gpuBinning ? 1.0 : 0.0); // --light-bin, resolved
@@ -361,6 +375,7 @@ class ForwardPlusRenderer final : public Renderer {
         blendBounds_; // blended scenes: where each tile's blended fragments are
     std::optional<la::BlendedBounds>
         centreBounds_; // --msaa-shading pixel under MSAA: where the opaque fragments' centres are
+    std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     std::optional<passes::DepthPrepass> prepass_;
     std::optional<ShadowMaps> shadows_;         // the atlas (shadow_maps) with --shadows
     std::optional<fp::ForwardShading> shading_; // forward_opaque, forward_transparent

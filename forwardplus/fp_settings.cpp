@@ -55,7 +55,8 @@ KnobSchema knobs() {
     return {la::tileSizeKnob().knob(),    la::lightCullKnob().knob(), la::lightBinKnob().knob(),
             la::lightAssignKnob().knob(), la::slicesKnob().knob(),    la::lightLoopKnob().knob(),
             msaaShadingKnob().knob(),     listsKnob().knob(),         capacityKnob().knob(),
-            spheresKnob().knob(),         cullByKnob().knob(),        hdrKnob()};
+            spheresKnob().knob(),         cullByKnob().knob(),        hdrKnob(),
+            cullGeometryKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -71,6 +72,7 @@ Settings readSettings(const RenderSettings& s) {
     f.cullBy = cullByKnob().in(s);
     // --hdr auto: RGBA16F, Forward+'s storage before the knob existed (half the bytes).
     f.hdr = readHdr(s, HdrStorage::Fp16);
+    f.cullGeometry = cullGeometryKnob().in(s);
     return f;
 }
 

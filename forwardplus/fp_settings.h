@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/lightassign/knobs.h"
+#include "core/renderer/cull_geometry_knob.h"
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
@@ -30,6 +31,7 @@ struct Settings {
     Spheres spheres = Spheres::Auto;
     CullBy cullBy = CullBy::Auto;
     HdrStorage hdr = HdrStorage::Fp16; // --hdr, resolved: auto is Forward+'s RGBA16F
+    CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry
 };
 
 KnobSchema knobs();

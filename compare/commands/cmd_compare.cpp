@@ -246,6 +246,9 @@ int runCompare(const CompareOptions& o) {
 
     renderPipelines(r, o, *ctx, gpuScene, names);
     r.shadowPlan = gpuScene.shadowPlan(); // set up by the runs (a cached reference sets up nothing)
+    // Again after the runs: a pipeline that culls meshlets had the scene build them
+    // (SceneGpu::buildMeshlets, docs/geometry.md), and they are the scene's.
+    r.sharedMemory = ctx->ledger.entriesOf("scene");
     measureAgainstReference(r, o.out);
     measurePairs(r, o.out);
     measureAgainstCenterReference(r, o, *ctx, gpuScene);

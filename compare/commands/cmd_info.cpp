@@ -107,6 +107,13 @@ int run(InfoOptions& o) {
     SceneGpu gpuScene(*ctx, scene);
     std::printf("  shared scene data: %llu bytes\n",
                 (unsigned long long)ctx->ledger.totalBytes("scene"));
+    gpuScene.buildMeshlets(); // as --cull-geometry does before its first frame
+    std::printf("  meshlets: %u (at most 64 vertices, 124 triangles; %.1f triangles each on "
+                "average), built in %.1f ms when first used (--cull-geometry)\n",
+                gpuScene.meshletCount(),
+                gpuScene.meshletCount() ? double(scene.triangleCount()) / gpuScene.meshletCount()
+                                        : 0.0,
+                gpuScene.meshletBuildMs());
     for (const RendererEntry& e : registeredRenderers())
         printPlan(*ctx, gpuScene, e, f, settings);
     return 0;

@@ -77,6 +77,7 @@ UseBytes useBytes(Use use, double b) {
     case Use::Sampled:
     case Use::StorageRead:
     case Use::TransferSrc:
+    case Use::IndirectRead:
         return {b, 0};
     }
     return {};

@@ -157,7 +157,9 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &sub};
     vkGetPhysicalDeviceProperties2(device, &p2);
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f13};
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                         &f13};
+    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
     vkGetPhysicalDeviceFeatures2(device, &f2);
     DeviceCaps c;
     c.float64 = f.shaderFloat64;
@@ -180,6 +182,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
                              sub.subgroupSize <= p13.maxSubgroupSize;
     c.standardSampleLocations = p.limits.standardSampleLocations;
     c.geometryShader = f.geometryShader;
+    c.drawIndirectCount = f12.drawIndirectCount && f.multiDrawIndirect;
     return c;
 }
 
@@ -221,6 +224,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
                                          &f13};
     f12.hostQueryReset = VK_TRUE;
     f12.scalarBlockLayout = VK_FALSE;
+    f12.drawIndirectCount = caps.drawIndirectCount;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
     features.features.shaderFloat64 = caps.float64;
     features.features.sampleRateShading = caps.sampleRateShading;
@@ -229,6 +233,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     features.features.fragmentStoresAndAtomics = caps.fragmentStoresAndAtomics;
     features.features.independentBlend = VK_TRUE;
     features.features.geometryShader = caps.geometryShader;
+    features.features.multiDrawIndirect = caps.drawIndirectCount;
 
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;

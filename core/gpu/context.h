@@ -60,6 +60,9 @@ struct DeviceCaps {
     // The visibility buffer's raster pass writes gl_PrimitiveID from a fragment shader (SPIR-V
     // needs the Geometry capability for it).
     bool geometryShader = false;
+    // Culled meshlets are drawn with vkCmdDrawIndexedIndirectCount, many draws per call
+    // (Vulkan 1.2's drawIndirectCount, 1.0's multiDrawIndirect): core/passes/meshlet_cull.h.
+    bool drawIndirectCount = false;
 };
 
 class GpuContext {

@@ -28,6 +28,8 @@ VkImageUsageFlags imageUsage(Use use) {
         return VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     case Use::TransferDst:
         return VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    case Use::IndirectRead:
+        return 0; // buffers only (imageOnly)
     }
     return 0;
 }
@@ -38,6 +40,8 @@ VkBufferUsageFlags bufferUsage(Use use) {
         return VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     case Use::TransferDst:
         return VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    case Use::IndirectRead:
+        return VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
     default:
         return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     }
@@ -121,6 +125,8 @@ const char* useName(Use use) {
         return "transfer source";
     case Use::TransferDst:
         return "transfer destination";
+    case Use::IndirectRead:
+        return "indirect read";
     }
     return "unknown use";
 }
@@ -167,13 +173,16 @@ UseInfo useInfo(Use use) {
     case Use::TransferDst:
         return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, true, false};
+    case Use::IndirectRead:
+        return {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+                VK_IMAGE_LAYOUT_GENERAL, false, true};
     }
     throw GraphError("unknown Use");
 }
 
 bool imageOnly(Use use) {
     return use != Use::StorageRead && use != Use::StorageWrite && use != Use::TransferSrc &&
-           use != Use::TransferDst;
+           use != Use::TransferDst && use != Use::IndirectRead;
 }
 
 VkDescriptorType descriptorType(Use use, bool isImage) {

@@ -32,6 +32,7 @@ enum class Use {
     StorageWrite, // write-only or read-write storage access
     TransferSrc,
     TransferDst,
+    IndirectRead, // indirect draw commands or their count (vkCmdDrawIndexedIndirectCount)
 };
 
 const char* useName(Use use);

@@ -1,12 +1,16 @@
 #include "core/gpuscene/scene_gpu.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 
 #include "core/camera/camera.h"
 #include "core/gpu/context.h"
 #include "core/gpu/vk_check.h"
+#include "core/scene/meshlets.h"
+#include "core/util/parallel.h"
+#include "include/meshlets.h"
 
 namespace tp {
 
@@ -85,6 +89,7 @@ void SceneGpu::uploadGeometry() {
         const Material& mat = scene_.materials.at(mesh.material);
         DrawItem d;
         d.mesh = uint32_t(&mesh - scene_.meshes.data());
+        d.index = uint32_t(draws_.size());
         d.firstIndex = uint32_t(indices.size());
         d.indexCount = uint32_t(mesh.indices.size());
         d.vertexOffset = int32_t(vertices.size());
@@ -112,6 +117,50 @@ void SceneGpu::uploadGeometry() {
                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                     {"scene", "", "indices", "triangle indices"});
+}
+
+void SceneGpu::buildMeshlets() {
+    if (meshletsBuilt_) return;
+    meshletsBuilt_ = true;
+    // Every mesh's meshlets, the meshes side by side on the machine's cores.
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<MeshMeshlets> built(scene_.meshes.size());
+    forEachInParallel(built.size(),
+                      [&](size_t i) { built[i] = tp::buildMeshlets(scene_.meshes[i]); });
+    const auto elapsed = std::chrono::steady_clock::now() - start;
+    meshletBuildMs_ = std::chrono::duration<double, std::milli>(elapsed).count();
+    std::vector<uint32_t> meshletIndices;
+    std::vector<gpu::MeshletGpu> meshlets;
+    meshletIndices.reserve(scene_.triangleCount() * 3);
+    for (DrawItem& d : draws_) { // in place: drawList()'s pointers stay valid
+        const MeshMeshlets& ml = built[d.mesh];
+        d.firstMeshlet = uint32_t(meshlets.size());
+        d.meshletCount = uint32_t(ml.meshlets.size());
+        const uint32_t base = uint32_t(meshletIndices.size());
+        for (const Meshlet& m : ml.meshlets) {
+            gpu::MeshletGpu g{};
+            g.center = m.center;
+            g.radius = m.radius;
+            g.coneApex = m.coneApex;
+            g.coneCutoff = m.coneCutoff;
+            g.coneAxis = m.coneAxis;
+            g.triangleCount = m.triangleCount;
+            g.firstIndex = base + m.firstIndex;
+            meshlets.push_back(g);
+        }
+        meshletIndices.insert(meshletIndices.end(), ml.indices.begin(), ml.indices.end());
+    }
+    meshletCount_ = uint32_t(meshlets.size());
+    if (meshlets.empty()) meshlets.push_back({}); // a buffer of one: nothing draws it
+    if (meshletIndices.empty()) meshletIndices.push_back(0);
+    meshlets_ = createBufferWithData(
+        ctx_, meshlets.data(), meshlets.size() * sizeof(gpu::MeshletGpu),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+        {"scene", "", "meshlets", "per meshlet: bounding sphere, normal cone, its indices"});
+    meshletIndices_ = createBufferWithData(
+        ctx_, meshletIndices.data(), meshletIndices.size() * sizeof(uint32_t),
+        VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+        {"scene", "", "meshlet_indices", "triangle indices in meshlet order (culled draws)"});
 }
 
 void SceneGpu::uploadMaterials() {
@@ -283,6 +332,10 @@ std::vector<const DrawItem*> SceneGpu::drawList(DrawFilter filter) const {
 
 void SceneGpu::bindIndexBuffer(VkCommandBuffer cmd) const {
     vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+}
+
+void SceneGpu::bindMeshletIndexBuffer(VkCommandBuffer cmd) const {
+    vkCmdBindIndexBuffer(cmd, meshletIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
 }
 
 void SceneGpu::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout, DrawFilter filter,

@@ -23,6 +23,11 @@ struct DrawItem {
     int32_t vertexOffset = 0;
     uint32_t material = 0;
     uint32_t mesh = 0; // Scene::meshes index (the CPU copy of its geometry)
+    uint32_t index = 0; // its place among SceneGpu's draws (a cull pass's slot)
+    // Its meshlets (SceneGpu::buildMeshlets; 0 before): [firstMeshlet, + meshletCount) of the
+    // scene's, their indices in the meshlet index buffer relative to vertexOffset.
+    uint32_t firstMeshlet = 0;
+    uint32_t meshletCount = 0;
     AlphaMode alphaMode = AlphaMode::Opaque;
     bool doubleSided = false;
     Aabb bounds; // world space (SceneGpu::toShading for camera-relative)
@@ -81,6 +86,23 @@ class SceneGpu {
     // themselves (the visibility buffer's resolve: vertices from set 0, indices from this).
     VkBuffer indexBuffer() const { return indices_.buffer; }
 
+    // The meshlets of every draw (core/scene/meshlets.h): built from the scene's meshes and
+    // uploaded by the first buildMeshlets() (a pass that culls meshlets calls it when it is
+    // made; later calls do nothing), not with the rest of the scene: on the million-triangle
+    // scene the build doubles the load time of runs that never draw a meshlet (docs/geometry.md).
+    // Then MeshletGpu[] (include/meshlets.h; ledger: scene, meshlets), the index buffer in meshlet
+    // order (scene, meshlet_indices) that indirect draws of the culled meshlets read
+    // (core/passes/meshlet_cull.h), and each DrawItem's firstMeshlet/meshletCount, filled in
+    // place. Every draw's triangles are its meshlets', each once.
+    void buildMeshlets();
+    bool meshletsBuilt() const { return meshletsBuilt_; }
+    VkBuffer meshletBuffer() const { return meshlets_.buffer; }
+    void bindMeshletIndexBuffer(VkCommandBuffer cmd) const;
+    uint32_t meshletCount() const { return meshletCount_; }
+    double meshletBuildMs() const { return meshletBuildMs_; } // CPU time of the build
+    // Every draw in upload order (DrawItem::index is its place).
+    const std::vector<DrawItem>& draws() const { return draws_; }
+
     const Scene& scene() const { return scene_; }
     // What the GPU gets: camera-relative (shared.h, FrameUniforms; docs/shading.md). CPU code
     // that must agree with the shaders (culling bounds, light scissors) uses these.
@@ -107,6 +129,10 @@ class SceneGpu {
     GpuContext& ctx_;
     const Scene& scene_;
     Buffer vertices_, indices_, materials_, lights_, frameBuffer_;
+    Buffer meshlets_, meshletIndices_;
+    uint32_t meshletCount_ = 0;
+    double meshletBuildMs_ = 0.0;
+    bool meshletsBuilt_ = false;
     std::vector<Image> textures_;
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;

@@ -4,6 +4,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/passes/meshlet_cull.h"
 
 namespace tp::passes {
 
@@ -20,6 +21,9 @@ void DepthPrepass::plan(FrameGraph& graph, DepthPrepassTargets t) {
     t_ = t;
     std::vector<PassUse> uses = {{t.depth, Use::DepthAttachment}};
     if (t.resolve.valid()) uses.push_back({t.resolve, Use::DepthResolve});
+    if (params_.cull)
+        for (const PassUse& u : params_.cull->drawUses())
+            uses.push_back(u);
     graph.addPass("depth_prepass", uses, [this](PassContext& pc) { record(pc); });
 }
 
@@ -53,14 +57,20 @@ bool DepthPrepass::setDraws(std::vector<const DrawItem*> opaque,
 void DepthPrepass::record(PassContext& pc) {
     beginRendering(pc, {}, DepthTarget{t_.depth, t_.resolve});
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    scene_.bindIndexBuffer(pc.cmd);
+    if (params_.cull)
+        scene_.bindMeshletIndexBuffer(pc.cmd);
+    else
+        scene_.bindIndexBuffer(pc.cmd);
     draws_ = 0;
     for (auto [pipeline, list] :
          {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
         if (!pipeline) continue;
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         for (const DrawItem* d : *list)
-            recordDraw(pc.cmd, layout_, *d);
+            if (params_.cull)
+                params_.cull->recordDraw(pc, layout_, *d);
+            else
+                recordDraw(pc.cmd, layout_, *d);
         draws_ += uint32_t(list->size());
     }
     endRendering(pc);

@@ -22,6 +22,8 @@ struct DrawItem;
 
 namespace tp::passes {
 
+class MeshletCull;
+
 struct DepthPrepassParams {
     uint32_t samples = 1;
     std::vector<const DrawItem*> opaque, masked; // the draws it records, in this order
@@ -29,6 +31,9 @@ struct DepthPrepassParams {
     // renderer that follows many views (RenderSettings::manyViews) gets new lists per view.
     bool everyPipeline = false;
     VkFormat depthFormat = VK_FORMAT_D32_SFLOAT; // the depth target's (and resolve's) format
+    // --cull-geometry: the draws are recorded as the meshlets this pass kept (every draw of
+    // the lists must be among its draws); null: each draw whole, from the scene's indices.
+    const MeshletCull* cull = nullptr;
 };
 
 // depth: the attachment (per sample under MSAA); resolve: the single-sample depth it resolves

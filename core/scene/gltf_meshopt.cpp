@@ -1,6 +1,6 @@
 // EXT_meshopt_compression: bufferViews whose bytes are stored compressed in another buffer,
-// decoded by meshoptimizer before any accessor is read. The only file that includes
-// meshoptimizer (STYLE.md, lesson 15).
+// decoded by meshoptimizer before any accessor is read. One of the two files that include
+// meshoptimizer (STYLE.md, lesson 15: the other builds meshlets, core/scene/meshlets.cpp).
 #include <meshoptimizer.h>
 
 #include "core/scene/gltf_internal.h"

@@ -20,3 +20,6 @@ triptych_add_shader(SPVS ${SHADER_DIR}/blended_bounds.frag blended_bounds_pixel_
 triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_forward_frag)
 triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_forward_pixel_frag
   DEFINES TP_INPUTS_AT_PIXEL=1)
+# The meshlet cull pass (core/passes/meshlet_cull.h): frustum and normal cone per meshlet,
+# indirect draws of the rest.
+triptych_add_shader(SPVS ${SHADER_DIR}/meshlet_cull.comp meshlet_cull_comp)

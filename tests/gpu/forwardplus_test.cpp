@@ -214,6 +214,20 @@ TEST(ForwardPlusReference, Courtyard4096LightsTinyMsaa4) {
     expectMatchesReference(courtyardScene(4096), small(48, 27, 4), 4);
 }
 
+// --cull-geometry frustum (core/passes/meshlet_cull.h): the prepass and forward_opaque draw
+// the meshlets the cull pass kept; the same bound against the reference, depth bit for bit
+// (expectMatchesReference), so culling dropped nothing visible.
+TEST(ForwardPlusReference, CourtyardCullGeometryFrustum) {
+    RenderSettings s = small(96, 54, 1);
+    s.set("cull-geometry", "frustum");
+    expectMatchesReference(courtyardScene(256), s, 4);
+}
+TEST(ForwardPlusReference, CourtyardCullGeometryFrustumMsaa4) {
+    RenderSettings s = small(96, 54, 4);
+    s.set("cull-geometry", "frustum");
+    expectMatchesReference(courtyardScene(256), s, 4);
+}
+
 // 4x, --msaa-shading pixel (the default): one invocation per pixel and primitive with its
 // inputs at the pixel centre, its value stored to the samples that primitive covers and that
 // pass the EQUAL test against the per-sample prepass. The reference with --reference-msaa

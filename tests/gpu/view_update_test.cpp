@@ -39,6 +39,7 @@ const std::vector<std::pair<std::string, std::string>> kViewKnobs = {
     {"light-bin", "cpu"},           {"light-bin", "gpu"},          {"light-assign", "clustered"},
     {"light-lists", "linked"},      {"deferred-lighting", "volumes"},
     {"blended-lights", "one-pass"}, {"vis-blended", "forward"},
+    {"cull-geometry", "frustum"}, // the meshlets kept follow the camera on the GPU
 };
 
 bool reads(const RendererEntry& e, const std::string& knob) {

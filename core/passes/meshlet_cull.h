@@ -1,0 +1,80 @@
+#pragma once
+// Meshlet culling on the GPU (pass "meshlet_cull", compute; shaders/passes/meshlet_cull.comp):
+// for each of the draws it is given, every meshlet of the draw's mesh (SceneGpu, built at
+// load with meshoptimizer) is tested against the view frustum (bounding sphere against the
+// six planes) and, where the draw's material is single-sided, against its normal cone (the
+// whole cluster faces away from the eye); the kept meshlets become indirect draw commands of
+// the draw's range, in meshlet order, with their count. A geometry pass then records each of
+// those draws as one vkCmdDrawIndexedIndirectCount over the scene's meshlet index buffer,
+// with the draw's push constants and cull mode as before: its shaders do not change.
+//
+// It culls only what cannot produce a fragment: a sphere wholly outside a clip plane, a
+// cluster whose every triangle the rasterizer's back-face culling would drop (with margins
+// for rounding, include/meshlets.h). A double-sided material is never cone-culled. Mirrored
+// nodes need nothing: the loader flipped their winding, so the cones follow the front faces.
+// docs/geometry.md.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "core/gpu/descriptors.h"
+#include "core/gpu/frame_graph.h"
+#include "core/gpu/resources.h"
+
+namespace tp {
+class GpuContext;
+class SceneGpu;
+struct DrawItem;
+} // namespace tp
+
+namespace tp::passes {
+
+class MeshletCull {
+  public:
+    // draws: the draws it culls (each gets a slot; a geometry pass may record only these).
+    // Builds the scene's meshlets if nobody has (SceneGpu::buildMeshlets). Throws
+    // RendererError where the device lacks drawIndirectCount or multiDrawIndirect.
+    MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws);
+    ~MeshletCull();
+    MeshletCull(const MeshletCull&) = delete;
+    MeshletCull& operator=(const MeshletCull&) = delete;
+
+    // Declares the pass and its buffers: meshlet_draws (commands), meshlet_draw_counts,
+    // meshlet_cull_stats (exported: read back by collect()).
+    void plan(FrameGraph& graph);
+    void prepare(FrameGraph& graph);
+    // What a pass that records culled draws declares (the commands and their counts).
+    std::vector<PassUse> drawUses() const;
+    bool holds(const DrawItem& d) const;
+    // The culled draw of `d` (one of the draws given): DrawPush (material, pad0), cull mode,
+    // vkCmdDrawIndexedIndirectCount. The caller binds the pipeline, the scene set and the
+    // meshlet index buffer (SceneGpu::bindMeshletIndexBuffer).
+    void recordDraw(PassContext& pc, VkPipelineLayout layout, const DrawItem& d,
+                    uint32_t pad0 = 0) const;
+
+    // After a frame: the statistics read back. counters() then names, for the draws culled:
+    // meshlets (all of them), meshlets_submitted, meshlets_culled_frustum, meshlets_culled_cone,
+    // triangles (all), triangles_submitted.
+    void collect(FrameGraph& graph);
+    std::vector<std::pair<std::string, double>> counters() const;
+
+  private:
+    void record(PassContext& pc);
+    GpuContext& ctx_;
+    const SceneGpu& scene_;
+    std::vector<const DrawItem*> draws_;
+    std::vector<uint32_t> slotOf_;       // by DrawItem::index: its slot (~0u: not culled here)
+    std::vector<uint32_t> firstCommand_; // by slot
+    uint32_t meshlets_ = 0, triangles_ = 0;
+    Buffer table_; // CullDraw[] (shaders/passes/meshlet_cull.h)
+    ResourceHandle commands_, counts_, stats_;
+    PassSet set_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    bool collected_ = false;
+    uint64_t submitted_ = 0, frustum_ = 0, cone_ = 0, trianglesSubmitted_ = 0;
+};
+
+} // namespace tp::passes

@@ -1,0 +1,17 @@
+#include "core/renderer/cull_geometry_knob.h"
+
+namespace tp {
+
+const ChoiceKnob<CullGeometry>& cullGeometryKnob() {
+    static const ChoiceKnob<CullGeometry> k{
+        "cull-geometry",
+        {{CullGeometry::None, "none"}, {CullGeometry::Frustum, "frustum"}},
+        "Meshlet culling on the GPU before the geometry passes: none (every "
+        "mesh drawn whole) or frustum (meshlets of at most 64 vertices and 124 triangles culled "
+        "by bounding sphere against the view frustum and by normal cone when back-facing, the "
+        "rest drawn with vkCmdDrawIndexedIndirectCount); 'full' (occlusion against a depth "
+        "pyramid) is not built yet (docs/geometry.md)"};
+    return k;
+}
+
+} // namespace tp

@@ -1,0 +1,47 @@
+// The meshlet cull pass (core/passes/meshlet_cull.h, passes/meshlet_cull.comp): its bindings
+// in set TP_SET_PASS, its table of draws and the layout of what it writes. docs/geometry.md.
+#ifndef TP_MESHLET_CULL_H
+#define TP_MESHLET_CULL_H
+#include "include/glsl_cpp.h"
+
+#define TP_MC_BINDING_COMMANDS 0 // VkDrawIndexedIndirectCommand[] (5 words), per draw a range
+#define TP_MC_BINDING_COUNTS 1   // uint per draw: its commands written (the draw count)
+#define TP_MC_BINDING_STATS 2    // MeshletCullStats per draw
+#define TP_MC_BINDING_MESHLETS 3 // MeshletGpu[] (the scene's, include/meshlets.h)
+#define TP_MC_BINDING_DRAWS 4    // CullDraw[]: the draws culled, one workgroup each
+
+#define TP_MC_GROUP 64           // invocations per workgroup: meshlets tested at once
+#define TP_MC_COMMAND_WORDS 5    // sizeof(VkDrawIndexedIndirectCommand) / 4
+#define TP_MC_FLAG_CONE 1u       // the draw may be cone-culled (single-sided material)
+
+#ifndef TP_GLSL
+namespace tp::gpu {
+#endif
+
+TP_STRUCT(CullDraw) {
+    uint firstMeshlet;  // the draw's meshlets in the scene's MeshletGpu[]
+    uint meshletCount;
+    uint firstCommand;  // its range of commands (meshletCount long) in the commands buffer
+    int vertexOffset;   // DrawItem::vertexOffset, copied into each command
+    uint flags;         // TP_MC_FLAG_*
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+// Per draw and frame: meshlets kept (drawn), culled by the frustum, culled by the normal cone
+// (tested only where the frustum kept them), triangles of the kept meshlets.
+TP_STRUCT(MeshletCullStats) {
+    uint submitted;
+    uint frustumCulled;
+    uint coneCulled;
+    uint triangles;
+};
+
+#ifndef TP_GLSL
+static_assert(sizeof(CullDraw) == 32);
+static_assert(offsetof(CullDraw, vertexOffset) == 12);
+static_assert(sizeof(MeshletCullStats) == 16);
+} // namespace tp::gpu
+#endif
+#endif

@@ -1,0 +1,124 @@
+// --cull-geometry frustum (core/passes/meshlet_cull.h, docs/geometry.md) on Forward+, the
+// pipeline it is wired into: the culled frame against the unculled one (depth bit for bit,
+// colour the same but where a depth tie between coplanar triangles of one mesh resolves in
+// another order), the counters adding up, and mirrored node transforms (negative scales)
+// cone-culled correctly. Validation with synchronization validation on.
+#include <cmath>
+#include <filesystem>
+
+#include "core/scene/gltf_loader.h"
+#include "gpu_test_util.h"
+#include "transformed_scenes.h"
+
+namespace tp::test {
+namespace {
+
+struct Pair {
+    RunResult none, frustum;
+};
+
+Pair renderBoth(const Scene& scene, uint32_t w, uint32_t h, uint32_t msaa) {
+    auto ctx = makeValidatedContext();
+    EXPECT_TRUE(ctx);
+    if (!ctx) return {};
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s;
+    s.width = w;
+    s.height = h;
+    s.msaa = msaa;
+    Pair p;
+    p.none = runOrFail(*ctx, gpuScene, "forwardplus", s);
+    s.set("cull-geometry", "frustum");
+    p.frustum = runOrFail(*ctx, gpuScene, "forwardplus", s, 2); // the second frame too
+    expectNoValidationMessages(*ctx);
+    return p;
+}
+
+// Pixels whose colour differs at all.
+uint64_t differingPixels(const ImageRGBA& a, const ImageRGBA& b) {
+    uint64_t n = 0;
+    for (size_t i = 0; i < a.pixelCount(); ++i)
+        for (int c = 0; c < 4; ++c)
+            if (a.rgba[i * 4 + c] != b.rgba[i * 4 + c]) {
+                ++n;
+                break;
+            }
+    return n;
+}
+
+void expectSameFrame(const Pair& p, const std::string& what) {
+    ASSERT_EQ(p.none.depth.r.size(), p.frustum.depth.r.size());
+    EXPECT_EQ(p.none.depth.r, p.frustum.depth.r) << what << ": culling changed the depth";
+    const uint64_t differ = differingPixels(p.none.hdr, p.frustum.hdr);
+    std::printf("[ meshlet cull ] %s: %llu of %zu pixels differ in colour\n", what.c_str(),
+                (unsigned long long)differ, p.none.hdr.pixelCount());
+    EXPECT_EQ(differ, 0u) << what;
+}
+
+void expectCountersAddUp(const RunResult& r, const std::string& what) {
+    const double meshlets = r.stats.counter("meshlets", -1);
+    const double submitted = r.stats.counter("meshlets_submitted", -1);
+    const double frustum = r.stats.counter("meshlets_culled_frustum", -1);
+    const double cone = r.stats.counter("meshlets_culled_cone", -1);
+    const double triangles = r.stats.counter("triangles", -1);
+    const double trianglesSubmitted = r.stats.counter("triangles_submitted", -1);
+    std::printf("[ meshlet cull ] %s: %.0f meshlets: %.0f submitted, %.0f culled by the frustum, "
+                "%.0f by the cone; %.0f of %.0f triangles submitted\n",
+                what.c_str(), meshlets, submitted, frustum, cone, trianglesSubmitted, triangles);
+    EXPECT_GT(meshlets, 0) << what;
+    EXPECT_EQ(submitted + frustum + cone, meshlets) << what;
+    EXPECT_GT(submitted, 0) << what;
+    EXPECT_GT(trianglesSubmitted, 0) << what;
+    EXPECT_LE(trianglesSubmitted, triangles) << what;
+}
+
+TEST(MeshletCull, CourtyardSmallSameFrameAndCounters) {
+    Scene scene = courtyardSmallWithLights(64, 3);
+    Pair p = renderBoth(scene, 96, 54, 1);
+    expectSameFrame(p, "courtyard-small 1x");
+    expectCountersAddUp(p.frustum, "courtyard-small 1x");
+    // The default view sees part of the courtyard, and half of what it sees faces away.
+    EXPECT_GT(p.frustum.stats.counter("meshlets_culled_frustum"), 0);
+    EXPECT_GT(p.frustum.stats.counter("meshlets_culled_cone"), 0);
+    EXPECT_EQ(p.none.stats.counter("meshlets_submitted", -1), -1) << "none counts nothing";
+}
+
+TEST(MeshletCull, CourtyardSmallSameFrameMsaa4) {
+    Scene scene = courtyardSmallWithLights(64, 3);
+    Pair p = renderBoth(scene, 96, 54, 4);
+    expectSameFrame(p, "courtyard-small 4x");
+}
+
+// Views from inside the colonnade and from below the ground: more of the scene culled.
+TEST(MeshletCull, CourtyardSmallOtherViews) {
+    Scene scene = courtyardSmallWithLights(16, 5);
+    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
+    const glm::vec3 eyes[] = {c + e * glm::vec3(0.42f, -0.3f, 0.05f),
+                              c + e * glm::vec3(-0.1f, -0.45f, 0.3f)};
+    for (const glm::vec3& eye : eyes) {
+        scene.camera.position = eye;
+        scene.camera.target = c;
+        Pair p = renderBoth(scene, 64, 48, 1);
+        expectSameFrame(p, "courtyard-small, another view");
+        expectCountersAddUp(p.frustum, "courtyard-small, another view");
+    }
+}
+
+// Negative and non-uniform node scales (every mesh single-sided): the loader flips a mirrored
+// node's winding, so the cones built from world-space triangles follow the front faces.
+TEST(MeshletCull, MirroredNodesSameFrame) {
+    for (uint32_t seed : {2u, 5u}) {
+        const auto dir = std::filesystem::temp_directory_path() /
+                         ("triptych_meshlet_cull_" + std::to_string(seed));
+        Result<Scene> s = loadGltf(writeTransformedNodesScene(dir, seed).string());
+        ASSERT_TRUE(s.ok()) << s.error();
+        Scene scene = std::move(*s);
+        scene.lights = lightsGrazingSurfaces(scene, 16, seed);
+        Pair p = renderBoth(scene, 96, 72, 1);
+        expectSameFrame(p, "mirrored nodes, seed " + std::to_string(seed));
+        expectCountersAddUp(p.frustum, "mirrored nodes, seed " + std::to_string(seed));
+    }
+}
+
+} // namespace
+} // namespace tp::test
