@@ -1,12 +1,13 @@
 #pragma once
 // Meshlet culling on the GPU (pass "meshlet_cull", compute; shaders/passes/meshlet_cull.comp):
-// for each of the draws it is given, every meshlet of the draw's mesh (SceneGpu, built at
-// load with meshoptimizer) is tested against the view frustum (bounding sphere against the
-// six planes) and, where the draw's material is single-sided, against its normal cone (the
-// whole cluster faces away from the eye); the kept meshlets become indirect draw commands of
-// the draw's range, in meshlet order, with their count. A geometry pass then records each of
-// those draws as one vkCmdDrawIndexedIndirectCount over the scene's meshlet index buffer,
-// with the draw's push constants and cull mode as before: its shaders do not change.
+// for each of the draws it is given, every meshlet of the draw's mesh (SceneGpu, built with
+// meshoptimizer the first time a pass culls) is tested against the view frustum (bounding
+// sphere against the six planes) and, where the draw's material is single-sided, against its
+// normal cone (the whole cluster faces away from the eye); the kept meshlets become indirect
+// draw commands of the draw's range, in meshlet order, with their count. A geometry pass then
+// records each of those draws as one vkCmdDrawIndexedIndirectCount over the scene's meshlet
+// index buffer, with the draw's push constants and cull mode as before: its shaders do not
+// change.
 //
 // It culls only what cannot produce a fragment: a sphere wholly outside a clip plane, a
 // cluster whose every triangle the rasterizer's back-face culling would drop (with margins

@@ -113,7 +113,9 @@ TEST(ForwardPlusHdr, Fp32KeepsRadiancePastTheLargestHalf) {
         EXPECT_LE(w32.within, 1.0) << at << ": fp32 below 65,504";
         // Under MSAA a pixel whose mean is below 65,504 can hold a sample above it, which fp16
         // saturates: the fp16 check below it is at 1x.
-        if (msaa == 1) EXPECT_LE(w16.within, 1.0) << at << ": fp16 below 65,504";
+        if (msaa == 1) {
+            EXPECT_LE(w16.within, 1.0) << at << ": fp16 below 65,504";
+        }
         EXPECT_GT(w16.beyond, 1.0) << at << ": fp16 no longer saturates";
         for (size_t i = 0; i < f16.hdr.rgba.size(); ++i)
             ASSERT_LE(f16.hdr.rgba[i], kHalfMax) << at << ": fp16 channel " << i;
