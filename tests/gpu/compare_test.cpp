@@ -215,17 +215,21 @@ TEST(Compare, FailingPipelineIsRecordedAndTheOthersGoOn) {
 
 // report.json without what legitimately changes between two runs of one command: the
 // output directory in the command line, and the timings.
+// A report without what is measured: the timings and the energy (a device with a counter,
+// e.g. NVML on a GPU, gives other joules and another window every run).
 json withoutTimings(json r) {
     r.erase("command");
     r.erase("command_line");
-    r["reference"]["run"].erase("timings");
-    for (json& p : r["pipelines"])
-        p["run"].erase("timings");
+    for (const char* measured : {"timings", "energy"}) {
+        r["reference"]["run"].erase(measured);
+        for (json& p : r["pipelines"])
+            p["run"].erase(measured);
+    }
     return r;
 }
 
 // The same command on the same device: identical images (byte for byte) and an identical
-// report but for the timings; the report names the scene by hashes of its data. Both render
+// report but for the timings and the energy; the report names the scene by hashes of its data. Both render
 // their reference (--no-reference-cache): the second would otherwise read the first's.
 TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
     std::vector<std::string> dirs = {freshDir("repeat_a"), freshDir("repeat_b")};
