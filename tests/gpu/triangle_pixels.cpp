@@ -10,8 +10,8 @@ namespace tp::test {
 namespace {
 
 struct Front {
-    double depth = 0.0; // reverse-Z: larger is nearer; 0 is nothing
-    uint64_t triangle = 0; // 1 + mesh << 32 | triangle index
+    double depth = 0.0;        // reverse-Z: larger is nearer; 0 is nothing
+    uint64_t triangle = 0;     // 1 + mesh << 32 | triangle index
     double edgeDistance = 1e9; // pixels, from the sample to the nearest edge of its triangle
 };
 
@@ -30,11 +30,13 @@ bool depthAt(const ScreenTriangle& t, glm::dvec2 p, double& depth, double& edgeD
     }
     const double area = e[0] + e[1] + e[2];
     if (area == 0.0) return false;
-    const bool inside = (e[0] >= 0 && e[1] >= 0 && e[2] >= 0) || (e[0] <= 0 && e[1] <= 0 && e[2] <= 0);
+    const bool inside =
+        (e[0] >= 0 && e[1] >= 0 && e[2] >= 0) || (e[0] <= 0 && e[1] <= 0 && e[2] <= 0);
     if (!inside) return false;
     // e[k] is twice the area opposite vertex (k + 2) % 3.
     depth = (e[1] * t.v[0].z + e[2] * t.v[1].z + e[0] * t.v[2].z) / area;
-    edgeDistance = std::min({std::abs(e[0]) / len[0], std::abs(e[1]) / len[1], std::abs(e[2]) / len[2]});
+    edgeDistance =
+        std::min({std::abs(e[0]) / len[0], std::abs(e[1]) / len[1], std::abs(e[2]) / len[2]});
     return true;
 }
 
@@ -90,7 +92,8 @@ TrianglePixels findManyTrianglePixels(const Scene& scene, uint32_t width, uint32
             const uint64_t id = 1 + (uint64_t(m) << 32 | uint64_t(i / 3));
             glm::dvec4 clip[3];
             for (int k = 0; k < 3; ++k)
-                clip[k] = viewProj * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[i + k]]), 1.0);
+                clip[k] =
+                    viewProj * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[i + k]]), 1.0);
             const std::vector<glm::dvec4> polygon = clipToNearPlane(clip);
             for (size_t k = 1; k + 1 < polygon.size(); ++k) {
                 ScreenTriangle t;
@@ -109,7 +112,8 @@ TrianglePixels findManyTrianglePixels(const Scene& scene, uint32_t width, uint32
         const Front* f = &front[p * samples];
         bool many = false;
         for (uint32_t s = 0; s < samples && !many; ++s)
-            many = f[s].triangle != f[0].triangle || (f[s].depth > 0.0 && f[s].edgeDistance <= margin);
+            many =
+                f[s].triangle != f[0].triangle || (f[s].depth > 0.0 && f[s].edgeDistance <= margin);
         out.manyTriangles[p] = many;
         out.count += many;
     }

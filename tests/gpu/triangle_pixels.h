@@ -1,7 +1,8 @@
 #pragma once
 // Which pixels of an MSAA image hold more than one triangle (deferred_test.cpp, pixel-rate
 // shading): a CPU rasterization, in double, of which triangle is in front at each standard
-// sample location (opaque and masked surfaces: those that write depth).
+// sample location (opaque and masked surfaces: those that write depth). No back-face culling:
+// a scene with open single-sided meshes seen from behind would need it.
 #include <cstdint>
 #include <vector>
 
