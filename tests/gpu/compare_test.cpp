@@ -229,8 +229,9 @@ json withoutTimings(json r) {
 }
 
 // The same command on the same device: identical images (byte for byte) and an identical
-// report but for the timings and the energy; the report names the scene by hashes of its data. Both render
-// their reference (--no-reference-cache): the second would otherwise read the first's.
+// report but for the timings and the energy; the report names the scene by hashes of its data.
+// Both render their reference (--no-reference-cache): the second would otherwise read the
+// first's.
 TEST(Compare, SameCommandTwiceGivesIdenticalImagesAndMetrics) {
     std::vector<std::string> dirs = {freshDir("repeat_a"), freshDir("repeat_b")};
     for (const std::string& out : dirs)
@@ -333,7 +334,8 @@ TEST(Compare, ShardedAndMergedSweepEqualsTheWholeSweep) {
     ASSERT_EQ(cli::runMerge({base + "/s1", base + "/s2", base + "/s0"}, base + "/merged"), 0);
     auto withoutTimings = [](std::vector<std::map<std::string, std::string>> rows) {
         for (auto& r : rows)
-            for (const char* c : {"frame_median_ms", "frame_min_ms", "frame_max_ms", "joules_per_frame"})
+            for (const char* c :
+                 {"frame_median_ms", "frame_min_ms", "frame_max_ms", "joules_per_frame"})
                 r.erase(c);
         return rows;
     };

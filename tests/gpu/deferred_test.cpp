@@ -17,10 +17,10 @@
 #include "core/scene/gltf_loader.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
-#include "triangle_pixels.h"
 #include "gltf_test_scenes.h"
 #include "gpu_test_util.h"
 #include "include/light_assign.h"
+#include "triangle_pixels.h"
 
 namespace tp::test {
 namespace {
@@ -139,7 +139,8 @@ double expectWithinTheDepthReferenceBound(const ImageRGBA& d, const ImageRGBA& r
                                << worstRatio;
     std::printf("[ vs depth reference ] %s: worst difference = %.3g of the bound (%.3g relative) "
                 "at %zu,%zu\n",
-                what.c_str(), worstRatio, worstRelative, worstPixel % r.width, worstPixel / r.width);
+                what.c_str(), worstRatio, worstRelative, worstPixel % r.width,
+                worstPixel / r.width);
     return worstRatio;
 }
 
@@ -385,9 +386,9 @@ TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
             manyTriangles[i] = isOther[i] && triangles.manyTriangles[i];
             manyCount += manyTriangles[i];
         }
-        expectWithinTheDepthReferenceBound(deferred.hdr, centreDepth.hdr, lights, 4,
-                                           what + " on one triangle, against the centre-shaded reference",
-                                           &oneTriangle);
+        expectWithinTheDepthReferenceBound(
+            deferred.hdr, centreDepth.hdr, lights, 4,
+            what + " on one triangle, against the centre-shaded reference", &oneTriangle);
         const ErrorBound model = centreModelBound(*ctx, scene, "deferred", s, centre);
         ASSERT_TRUE(model.bounded) << model.why;
         const WorstRatio w = worstRatio(deferred.hdr, centre.hdr, model, &manyTriangles);

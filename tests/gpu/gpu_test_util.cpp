@@ -203,11 +203,10 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
             bool over = false;
             for (int c = 0; c < 3; ++c) {
                 const double g = got.at(x, y)[c], r = ref.at(x, y)[c];
-                const double ratio =
-                    std::isfinite(g) && std::isfinite(allowance)
-                        ? std::max(std::abs(g - r) - allowance, 0.0) /
-                              (b.relative() * std::abs(r) + b.absolute())
-                        : INFINITY;
+                const double ratio = std::isfinite(g) && std::isfinite(allowance)
+                                         ? std::max(std::abs(g - r) - allowance, 0.0) /
+                                               (b.relative() * std::abs(r) + b.absolute())
+                                         : INFINITY;
                 over = over || ratio > 1.0;
                 if (ratio > w.ratio) w = {ratio, g, r, x, y, w.pixelsOver};
             }
@@ -231,9 +230,9 @@ ErrorBound centreModelBound(const GpuContext& ctx, const Scene& scene, const std
     EXPECT_TRUE(resolveKnobs((*entry)->knobs, model).ok());
     stress::StressCase c;
     c.name = "centre";
-    return expectedBound((*entry)->errorModel,
-                         {c, scene, model, &centre.depth, ctx.properties.limits.subPixelPrecisionBits,
-                          &centre.hdr});
+    return expectedBound(
+        (*entry)->errorModel,
+        {c, scene, model, &centre.depth, ctx.properties.limits.subPixelPrecisionBits, &centre.hdr});
 }
 
 } // namespace tp::test

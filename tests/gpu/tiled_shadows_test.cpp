@@ -92,7 +92,8 @@ ShadowEffect compareEffects(const ImageRGBA& pAll, const ImageRGBA& pNone, const
             const double beyond = std::abs(dP - dF) - bound;
             beyondAny = beyondAny || beyond > 0;
             if (beyond > 0)
-                e.worstFlip = std::max(e.worstFlip, std::abs(dP - dF) / std::max(double(fNone.rgba[k]), 1e-6));
+                e.worstFlip = std::max(e.worstFlip,
+                                       std::abs(dP - dF) / std::max(double(fNone.rgba[k]), 1e-6));
             if (beyond > e.worstBeyond) {
                 e.worstBeyond = beyond;
                 e.worstPixel = i;
@@ -156,10 +157,10 @@ void expectShadowsAsForwardPlus(GpuContext& ctx, SceneGpu& scene, const std::str
         return std::to_string(r.hdr.rgba[w * 4]) + " " + std::to_string(r.hdr.rgba[w * 4 + 1]) +
                " " + std::to_string(r.hdr.rgba[w * 4 + 2]);
     };
-    EXPECT_LE(e.pixelsBeyond, e.shadowedPixels / 200) << "pixel (" << w % 160 << ", " << w / 160 << "), "
-                                  << e.pixelsBeyond << " pixels beyond: none " << rgb(pNone)
-                                  << ", all " << rgb(pAll) << "; Forward+ none " << rgb(fNone)
-                                  << ", all " << rgb(fAll);
+    EXPECT_LE(e.pixelsBeyond, e.shadowedPixels / 200)
+        << "pixel (" << w % 160 << ", " << w / 160 << "), " << e.pixelsBeyond
+        << " pixels beyond: none " << rgb(pNone) << ", all " << rgb(pAll) << "; Forward+ none "
+        << rgb(fNone) << ", all " << rgb(fAll);
     EXPECT_LE(e.worstFlip, 1.0) << "a flipped tap moves at most one light's whole term";
     // The atlas is cached (--shadow-cache on, the default): rendered once, outside the frames,
     // with no frame pass; its one-time cost is in the stats.

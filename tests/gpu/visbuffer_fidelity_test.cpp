@@ -53,7 +53,8 @@ FootprintErrors footprintErrors(GpuContext& ctx, const Scene& scene, uint32_t w,
     SceneGpu gpuScene(ctx, scene);
     const RunResult ref = runOrFail(ctx, gpuScene, "reference", fidelitySettings(w, h));
     FootprintErrors e;
-    e.forwardplus = computeError(runOrFail(ctx, gpuScene, "forwardplus", fidelitySettings(w, h)).hdr, ref.hdr);
+    e.forwardplus =
+        computeError(runOrFail(ctx, gpuScene, "forwardplus", fidelitySettings(w, h)).hdr, ref.hdr);
     const RunResult quad = runOrFail(ctx, gpuScene, "visbuffer", fidelitySettings(w, h, "quad"));
     EXPECT_EQ(fidelityCounter(quad, "uv_derivatives_mode"),
               double(vis::resolveDerivatives(vis::Derivatives::Quad)));
@@ -89,8 +90,8 @@ TEST(VisbufferFootprint, TheKnobIsDeclaredWithItsValues) {
 // the visibility buffer's position (not its footprint) decides (docs/visbuffer.md, "The
 // position's error"). On an H200 (2026-11-28), courtyard-small: mean relative Forward+ 3.01e-4,
 // quad 3.82e-4, analytic 2.6e-3; RMSE 1.43e-4, 1.91e-3 (pixel 78,26 holds 94 % of it),
-// 2.71e-3. On lavapipe the quad's both figures are 1/100 of Forward+'s (its RGBA16F target). The built-in courtyard: every material textured (base colour,
-// metal-rough, normal maps).
+// 2.71e-3. On lavapipe the quad's both figures are 1/100 of Forward+'s (its RGBA16F target). The
+// built-in courtyard: every material textured (base colour, metal-rough, normal maps).
 TEST(VisbufferFootprint, QuadDerivativesSampleTexturesAsTheRasterizer) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
