@@ -335,7 +335,9 @@ TEST(Deferred, PixelRateGBufferLightsEdgesPerSampleAndTheRestAtTheCentre) {
 // once at the centre: 8.9e4 times the bound at 0 lights (0.105 relative), 2.2e3 times at 256
 // (0.27 relative) on lavapipe; now 0 (bit-identical) and 0.10 of it. (b) The reconstruction
 // error of the centre-shaded reference on those pixels (edge pixels set to 0 in both), as a
-// mean relative error: the courtyard's 1e-4.
+// mean relative error: the courtyard's 1e-4. (a) holds on the pixels whose samples lie on one
+// triangle; (c) the others, held to deferred's registered model (the comment at (c) and
+// docs/deferred.md say why: a device that snaps vertices before its depth planes).
 // Masked materials made opaque: their coverage is a question of the G-buffer pass, not of this
 // one (PixelRateGBufferKeepsPerSampleAlphaCoverage).
 TEST(Deferred, PixelRateBlendedSurfacesAreShadedOnceAtTheCentre) {
