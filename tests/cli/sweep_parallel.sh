@@ -12,10 +12,13 @@ trap 'rm -rf "$work"' EXIT
 args=(builtin:courtyard-small --res 48x27 --lights 4,8 --msaa 1,4 --tile 8,16
       --pipelines forwardplus --frames 1 --warmup 0 --reference-cache "$work/cache")
 
-"$bin" sweep "${args[@]}" --out "$work/whole" >/dev/null 2>&1 || { echo "FAIL: the unsharded sweep"; exit 1; }
+# A failure prints the end of what the command said (a crash's signal and last progress line).
+fail() { echo "FAIL: $1"; tail -n 5 "$2"; exit 1; }
+"$bin" sweep "${args[@]}" --out "$work/whole" >"$work/whole.log" 2>&1 ||
+    fail "the unsharded sweep (exit $?)" "$work/whole.log"
 # The recipe itself: one shard per job slot.
 parallel --halt now,fail=1 -j 2 "$bin" sweep "${args[@]}" --shard {}/2 --out "$work/shard{}" \
-    ::: 0 1 >/dev/null 2>&1 || { echo "FAIL: a shard under GNU parallel"; exit 1; }
+    ::: 0 1 >"$work/shards.log" 2>&1 || fail "a shard under GNU parallel" "$work/shards.log"
 "$bin" merge "$work/shard0" "$work/shard1" --out "$work/merged" >/dev/null ||
     { echo "FAIL: merge"; exit 1; }
 
