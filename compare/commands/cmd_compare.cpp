@@ -278,9 +278,9 @@ CommandRunner addCompareCommand(CLI::App& app, std::vector<std::string> commandL
     CLI::App* cmd = app.add_subcommand(
         "compare",
         "Render the scene with the reference and each pipeline (same camera and lights); write "
-        "images, "
-        "difference maps against the reference and between pipelines, report.json and report.html. "
-        "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a pipeline failed");
+        "images, difference maps against the reference and between pipelines, report.json and "
+        "report.html. Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a "
+        "pipeline failed");
     addSceneOptions(*cmd, o->scene);
     addViewOptions(*cmd, o->view);
     addDeviceOptions(*cmd, o->device);

@@ -380,9 +380,9 @@ CommandRunner addSweepCommand(CLI::App& app, std::vector<std::string> commandLin
     CLI::App* cmd = app.add_subcommand(
         "sweep",
         "Every combination of lights, resolution, MSAA and pipeline knobs through the pipelines, "
-        "the "
-        "reference once per light count/resolution/MSAA: sweep.csv, sweep.json and sweep.html. "
-        "Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a run failed");
+        "the reference once per light count/resolution/MSAA: sweep.csv, sweep.json and "
+        "sweep.html. Exit 0 ok, 2 bad input, 3 validation messages, 4 Vulkan failure, 5 a run "
+        "failed");
     addSweepOptions(*cmd, *o);
     return [o, cmd]() {
         if (!cmd->parsed()) return -1;
