@@ -115,7 +115,6 @@ TrianglePixels findManyTrianglePixels(const Scene& scene, uint32_t width, uint32
             many =
                 f[s].triangle != f[0].triangle || (f[s].depth > 0.0 && f[s].edgeDistance <= margin);
         out.manyTriangles[p] = many;
-        out.count += many;
     }
     return out;
 }

@@ -13,7 +13,6 @@ namespace tp::test {
 struct TrianglePixels {
     std::vector<uint8_t> manyTriangles; // 1: the samples' front triangles differ, or a sample
                                         // is within `margin` pixels of its triangle's edge
-    uint32_t count = 0;
 };
 
 // `margin`: how far a device may move a triangle's edge, in pixels (2^-subPixelPrecisionBits:
