@@ -168,7 +168,7 @@ class ForwardPlusRenderer final : public Renderer {
             return false; // fp_params' light classes and the shading's loop are planned
         if (boundsLists()) {
             fp::ViewBins bins = fp::binView(scene_, viewBinning());
-            if (!cap_.holds(bins) || (binning_ && !binning_->bigListFits())) return false;
+            if (!cap_.holds(bins)) return false;
             bins_ = std::move(bins);
         }
         const fp::PackedParams packed = packParams();
@@ -277,7 +277,7 @@ class ForwardPlusRenderer final : public Renderer {
         // --light-bin gpu: the frame builds the candidates; a sizing run per view sizes them.
         if (r_.gpuBinning)
             binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local,
-                                                        "forwardplus", manyViews_);
+                                                        "forwardplus");
         bins_ = fp::binView(scene_, viewBinning());
         // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
         if (bins_.slots > fp::addressableSlots(viewBinning()))

@@ -39,9 +39,9 @@ uint32_t sortSize(uint32_t n) {
 } // namespace
 
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-                       const std::vector<uint32_t>& local, std::string owner, bool everyBigLight)
+                       const std::vector<uint32_t>& local, std::string owner)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
-      owner_(std::move(owner)), everyBigLight_(everyBigLight) {
+      owner_(std::move(owner)) {
     // Its largest buffer: the light list, bound whole.
     if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
@@ -56,7 +56,7 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
         ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
         {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
     std::vector<SetBinding> bindings;
-    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_BIG; ++b)
+    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_RECTS; ++b)
         bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     set_ = createPassSet(ctx_, bindings);
     set_.pass = "light_binning";
@@ -120,7 +120,7 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_OFFSETS, b.offsets);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_ROWS, b.rows);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_TARGET, target);
-    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_BIG, b.big);
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_RECTS, b.rects);
 }
 
 LightBins GpuBinning::sizes() {
@@ -136,13 +136,12 @@ LightBins GpuBinning::sizes() {
     const uint32_t tiles = grid_.count();
     Buffer counts = make(tiles, "light_bin_sizing_counts"),
            offsets = make(tiles + 1, "light_bin_sizing_offsets"),
-           rows = make(grid_.tilesY, "light_bin_sizing_rows"),
-           big = make(1, "light_bin_sizing_big");
-    bind({counts.buffer, offsets.buffer, rows.buffer, big.buffer},
-         rows.buffer); // target: unused here
+           rows = make(grid_.tilesY, "light_bin_sizing_rows");
+    bind({counts.buffer, offsets.buffer, rows.buffer, rows.buffer},
+         rows.buffer); // target and rectangles: unused here
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         begin(cmd);
-        recordSizing(cmd, 0); // large rectangles counted, not listed
+        recordSizing(cmd, false); // rectangles counted, not stored
         // readbackBuffer copies in a later submission.
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
@@ -162,7 +161,6 @@ LightBins GpuBinning::sizes() {
     if (!bins.bound.empty())
         bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
     maxBound_ = bins.maxBound;
-    bigLights_ = words(big, 1)[0];
     if (target_) bind(frame_, target_); // a later view's sizing: the frame's buffers again
     return bins;
 }
@@ -175,24 +173,22 @@ void GpuBinning::plan(FrameGraph& graph) {
                                   "GPU binning: each tile's first candidate (prefix sum)");
     rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4,
                                "GPU binning: per row, its scans' sum");
-    bigCapacity_ = everyBigLight_ ? locals_ : bigLights_;
-    big_ = graph.createBuffer(
-        "light_bin_big", (uint64_t(bigCapacity_) + 1) * 4,
-        "GPU binning: the lights of large rectangles, filled by a workgroup each");
+    rects_ = graph.createBuffer("light_bin_rects", uint64_t(std::max(locals_, 1u)) * 8,
+                                "GPU binning: each light's tile rectangle, for the fill");
     // Three timed passes, so the sweep reports each part: the counts and offsets, the fill,
     // the sort. Their runs go to a buffer outside the graph (ordered by hand-written barriers).
     graph.addPass("light_binning",
                   {{counts_, Use::StorageWrite},
                    {offsets_, Use::StorageWrite},
                    {rows_, Use::StorageWrite},
-                   {big_, Use::StorageWrite}},
+                   {rects_, Use::StorageWrite}},
                   [this](PassContext& pc) {
                       begin(pc.cmd);
-                      recordSizing(pc.cmd, bigCapacity_);
+                      recordSizing(pc.cmd, true);
                   });
     graph.addPass(
         "light_bin_fill",
-        {{counts_, Use::StorageWrite}, {offsets_, Use::StorageRead}, {big_, Use::StorageRead}},
+        {{counts_, Use::StorageWrite}, {offsets_, Use::StorageRead}, {rects_, Use::StorageRead}},
         [this](PassContext& pc) {
             begin(pc.cmd);
             recordFill(pc.cmd);
@@ -215,7 +211,7 @@ void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) 
         throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
     frame_ = {graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer,
-              graph.buffer(rows_).buffer, graph.buffer(big_).buffer};
+              graph.buffer(rows_).buffer, graph.buffer(rects_).buffer};
     target_ = target;
     bind(frame_, target_);
 }
@@ -242,13 +238,12 @@ void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32
     vkCmdDispatch(cmd, x, y, 1);
 }
 
-// Steps 1-4: counts and offsets; the big list, up to `bigCapacity` lights.
-void GpuBinning::recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity) {
+// Steps 1-4: counts and offsets; with storeRects, the rectangles for the fill.
+void GpuBinning::recordSizing(VkCommandBuffer cmd, bool storeRects) {
     const gpu::DrawPush push{0, base_, 0, 0};
-    dispatchFlat(cmd, pipelines_[kClear], std::max(grid_.count(), 1u),
-                 push); // 1: the big list's count
+    dispatchFlat(cmd, pipelines_[kClear], grid_.count(), push);
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kRects], locals_, {bigCapacity, base_, 0, 0});
+    dispatchFlat(cmd, pipelines_[kRects], locals_, {storeRects ? 1u : 0u, base_, 0, 0});
     stepBarrier(cmd);
     // A workgroup per row, then per column (bin_scan_columns.comp: counts and offsets).
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kRows]);
@@ -269,10 +264,8 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
     for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
         if (first > 0)
             stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
-        // The small rectangles' workgroups, then one per large rectangle (bin_fill.comp).
-        const uint32_t small = (locals_ + 63) / 64;
-        dispatchGroups(cmd, pipelines_[kFill], small + bigLights_,
-                       {small, base_, first, std::min(grid_.tilesY, first + rows)});
+        dispatchFlat(cmd, pipelines_[kFill], locals_,
+                     {0, base_, first, std::min(grid_.tilesY, first + rows)});
     }
 }
 

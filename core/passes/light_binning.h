@@ -3,27 +3,26 @@
 // runs la::binLights builds on the CPU (light_bins.h), built every frame by three timed
 // compute passes, exactly equal (include/light_binning.h says why):
 //   light_binning (counts and offsets, 4 dispatches)
-//     1. clear   the counts (a difference array) and the big list's count
+//     1. clear   the counts (a difference array)
 //     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
-//                corners in the difference array; lights of large rectangles to the big list
-//                (rectangles are computed again by the fill rather than stored: no memory per
-//                light)
+//                corners in the difference array; in the frame the rectangle, stored for the
+//                fill (8 bytes a light)
 //     3. rows    a workgroup per row of tiles: prefix sums along it
 //     4. columns a workgroup per column: the counts (the bound) and their row-major exclusive
 //                prefix sum (the offsets: the compact layout) in one pass down the column
 //   light_bin_fill
 //     5. fill    per light and covered tile, a slot from the tile's count counted down
-//                (atomic: scheduling order); an invocation per light, a workgroup per light
-//                of the big list (its tiles spread over the workgroup)
+//                (atomic: scheduling order); a workgroup per 64 lights, their (light, tile)
+//                pairs spread evenly over its invocations
 //   light_bin_sort
 //     6. sort    every tile's run ascending: a workgroup per tile in shared memory (by rank up
 //                to 256, else bitonic); longer runs than shared memory holds by blocks
 //                (bitonic steps within a block in shared memory, across blocks a dispatch each)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
-// steps 1-4 once, then readbacks of the counts, the offsets and the big list's length: the
-// numbers the CPU path gives. A renderer that follows a new view (Renderer::updateView) calls
-// sizes() again for it: the slab planes follow the projection, the sort and the fill follow the
-// new longest run and big list, and the frame's buffers are bound again afterwards.
+// steps 1-4 once, then readbacks of the counts and the offsets: the numbers the CPU path
+// gives. A renderer that follows a new view (Renderer::updateView) calls sizes() again for it:
+// the slab planes follow the projection, the sort follows the new longest run, and the frame's
+// buffers are bound again afterwards.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -45,10 +44,8 @@ class GpuBinning {
   public:
     // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
     // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
-    // everyBigLight: the big list holds every light (4 bytes each), so no view outgrows it
-    // (RenderSettings::manyViews); otherwise it holds the lights of the view sizes() first saw.
     GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-               const std::vector<uint32_t>& local, std::string owner, bool everyBigLight = false);
+               const std::vector<uint32_t>& local, std::string owner);
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
@@ -56,12 +53,6 @@ class GpuBinning {
     // For the scene's current view (plan time, and again per view): steps 1-4 on the GPU, read
     // back. bound, offsets, slots, maxBound; no candidates. Between frames (it waits).
     LightBins sizes();
-    // From sizes(): how many lights the fill gives a workgroup each (more than TP_BIN_BIG_RECT
-    // tiles).
-    uint32_t bigLights() const { return bigLights_; }
-    // Whether the big list plan() made holds the last sizes()'s lights; false: the view outgrew
-    // it (the renderer plans again).
-    bool bigListFits() const { return bigLights_ <= bigCapacity_; }
     // The frame: passes "light_binning" (steps 1-4), "light_bin_fill" (5), "light_bin_sort" (6),
     // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_counts).
     void plan(FrameGraph& graph);
@@ -71,12 +62,12 @@ class GpuBinning {
 
   private:
     struct Bufs {
-        VkBuffer counts, offsets, rows, big;
+        VkBuffer counts, offsets, rows, rects;
     };
     void destroyPipelines(); // and the layout and pass set
     void bind(const Bufs& b, VkBuffer target);
     void uploadInputs(); // the grid and the slab planes of the current projection
-    void recordSizing(VkCommandBuffer cmd, uint32_t bigCapacity);
+    void recordSizing(VkCommandBuffer cmd, bool storeRects);
     void recordFill(VkCommandBuffer cmd);
     void recordSort(VkCommandBuffer cmd);
     void dispatchFlat(VkCommandBuffer cmd, VkPipeline pipeline, uint32_t count,
@@ -92,15 +83,11 @@ class GpuBinning {
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
     uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
-    uint32_t bigLights_ =
-        0; // from sizes(): lights whose rectangle covers more than TP_BIN_BIG_RECT tiles
-    bool everyBigLight_ = false;
-    uint32_t bigCapacity_ = 0; // plan(): the big list's lights
     Buffer inputs_, localList_;
     std::vector<uint8_t> inputBytes_; // what inputs_ holds
     Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()
     VkBuffer target_ = VK_NULL_HANDLE;
-    ResourceHandle counts_, offsets_, rows_, big_;
+    ResourceHandle counts_, offsets_, rows_, rects_;
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::vector<VkPipeline> pipelines_; // one per step (kSteps in light_binning.cpp)

@@ -144,8 +144,7 @@ const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid,
         binnedOnce_ = true;
         if (gpuBinning_) { // sized now (one plan-time run); the frame's pass fills the runs
             const std::vector<uint32_t> local = la::classifyLights(scene_.shadingLights()).local;
-            binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid, local, owner,
-                                                       manyViews_);
+            binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid, local, owner);
             binnedProj_ = scene_.shadingFrame().proj;
         }
         t_.grid = grid; // plan() sets it again
@@ -231,7 +230,6 @@ bool TiledLighting::updateView(FrameGraph& graph) {
         // The sizing run rebinds the binning's set to its own buffers: back to the frame's.
         binning_->prepare(graph, candidates_.buffer,
                           TP_TL_CAND_HEADER + directional_.size() + t_.grid.count() + 1);
-        if (!binning_->bigListFits()) return false;
     }
     if (bins_.slots > slotCapacity_) return false;
     std::vector<uint32_t> words = candidateWords(classes);

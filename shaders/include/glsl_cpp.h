@@ -19,6 +19,7 @@ using glm::dot;
 using glm::dvec3;
 using glm::dvec4;
 using glm::ivec2;
+using glm::ivec4;
 using glm::max;
 using glm::min;
 using glm::mat4;

@@ -24,22 +24,16 @@ namespace tp::gpu {
                                  // layout past 2^32 - 1 is refused before any frame, from the counts)
 #define TP_BIN_BINDING_ROWS 4    // uint[tilesY]: per row of tiles, the sum of its row prefix sums (scans)
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
-#define TP_BIN_BINDING_BIG 6     // uint[]: how many lights have a large rectangle, then those lights (k)
+#define TP_BIN_BINDING_RECTS 6   // uvec2[local lights]: each light's rectangle (binPackRect), for the fill
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.
 #define TP_BIN_BASE pad0
 #define TP_BIN_FIRST pad1
 #define TP_BIN_END pad2
-// The rectangles step: how many large-rectangle lights the big list holds (0 at plan time:
-// they are only counted). The fill: how many of its workgroups take 64 lights each; the
-// workgroups after those take one large-rectangle light each.
-#define TP_BIN_BIG_CAPACITY materialIndex
-#define TP_BIN_SMALL_GROUPS materialIndex
-// A light whose rectangle covers more tiles than this is filled by a workgroup (its tiles
-// spread over 64 invocations), not by one invocation: a light over much of the screen would
-// otherwise be one long chain of dependent atomics while the rest of the GPU waits.
-#define TP_BIN_BIG_RECT 32u
+// The rectangles step: 1 when it stores the rectangles for the fill (the frame), 0 when it
+// only counts them (the plan-time sizing, which has no rectangle buffer).
+#define TP_BIN_STORE_RECTS materialIndex
 
 // Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32); longer ones
 // by blocks of this size: the bitonic steps within a block in shared memory
@@ -103,6 +97,16 @@ TP_INLINE bool binInFront(vec3 c, float r) {
 TP_INLINE bool binOutside(vec4 plane, vec3 c, float r) {
     TP_PRECISE float d = ((plane.x * c.x + plane.y * c.y) + plane.z * c.z) + plane.w;
     return d < -r;
+}
+
+// A tile rectangle in two words, (x0 | x1 << 16, y0 | y1 << 16): a grid is at most 65,535
+// tiles a side (maxImageDimension2D / the smallest tile). Empty: x0 > x1, as binRect gives it.
+TP_INLINE uvec2 binPackRect(ivec4 rect) {
+    if (rect.x > rect.y || rect.z > rect.w) return uvec2(1u, 0u);
+    return uvec2(uint(rect.x) | (uint(rect.y) << 16u), uint(rect.z) | (uint(rect.w) << 16u));
+}
+TP_INLINE ivec4 binUnpackRect(uvec2 p) {
+    return ivec4(int(p.x & 0xffffu), int(p.x >> 16u), int(p.y & 0xffffu), int(p.y >> 16u));
 }
 
 #ifndef TP_GLSL

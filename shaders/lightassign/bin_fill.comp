@@ -4,56 +4,56 @@
 // [TP_BIN_FIRST, TP_BIN_END) of tiles per dispatch (lavapipe's loop limit: at most
 // TP_BIN_FILL_BUDGET tiles per light and dispatch). Each tile's count, counted down
 // (atomic), is its cursor: the order inside a run depends on scheduling until the sort.
-// The first TP_BIN_SMALL_GROUPS workgroups take an invocation per light and fill the small
-// rectangles (at most TP_BIN_BIG_RECT tiles, a short loop); each workgroup after those takes
-// one light of the big list and spreads its tiles over its invocations, so that no
-// invocation walks a rectangle over much of the screen alone.
+// A workgroup takes 64 lights and spreads their (light, tile) pairs evenly over its 64
+// invocations: the exclusive prefix sum of the rectangles' areas numbers the pairs, and pair
+// i belongs to the last light whose sum is at most i. So a light over much of the screen is
+// not one invocation's long chain of dependent atomics, and a light of one tile does not
+// leave 63 invocations idle (an invocation per light, and a workgroup per light of over 32
+// tiles, took 0.08 ms more at 65,536 lights on the H200: docs/clustered.md).
 #include "lightassign/bin_common.glsl"
+#include "lightassign/bin_scan.glsl" // local_size_x = 64
 
-layout(local_size_x = 64) in;
+shared uint pairsBefore[64];
+shared uvec4 spans[64]; // per light of the workgroup: first column, width, first row, light
 
-// Rows [y0, y1) of the rectangle that this dispatch fills.
-uvec2 binRows(ivec4 rect) {
-    return uvec2(max(uint(rect.z), draw.TP_BIN_FIRST), min(uint(rect.w) + 1u, draw.TP_BIN_END));
-}
-
-void fillSmall(uint index) {
-    if (index >= bin.grid.w) return;
-    // Lights in descending order: a device that happens to run the workgroups in order (as
-    // lavapipe nearly does) would leave the runs ascending and hide a broken sort from the tests.
-    const uint k = bin.grid.w - 1u - index;
-    const ivec4 rect = binRect(k); // what the rectangles step counted, computed again
-    const uint area = binRectArea(rect);
-    if (area == 0u || area > TP_BIN_BIG_RECT) return;
-    const uint W = bin.grid.x, light = locals[k];
-    const uvec2 rows = binRows(rect);
-    for (uint y = rows.x; y < rows.y; ++y)
-        for (uint x = uint(rect.x); x <= uint(rect.y); ++x) binFillTile(y * W + x, light);
-}
-
-void fillBig(uint b) {
-    if (b >= bigCount) return; // uniform over the workgroup
-    const uint k = bigLights[b];
-    const ivec4 rect = binRect(k);
-    const uvec2 rows = binRows(rect);
-    if (rows.x >= rows.y) return;
-    const uint W = bin.grid.x, light = locals[k], width = uint(rect.y - rect.x + 1);
-    // Tile i of the rectangle's rows is (i / width, i % width); stepping i by 64 steps that
-    // by (64 / width, 64 % width) with a carry: no division per tile.
-    const uint lane = gl_LocalInvocationIndex, stepRows = 64u / width, stepCols = 64u % width;
-    uint y = rows.x + lane / width, x = lane % width;
-    for (; y < rows.y; y += stepRows) {
-        binFillTile(y * W + uint(rect.x) + x, light);
-        x += stepCols;
-        if (x >= width) {
-            x -= width;
-            ++y;
-        }
-    }
+// The workgroup's invocation whose light owns pair i: the last with pairsBefore <= i (a light
+// without pairs shares its sum with the next, which wins). Six fixed steps, no loop
+// (lavapipe counts loop iterations).
+uint binPairOwner(uint i) {
+    uint lo = 0u;
+    lo += pairsBefore[lo + 32u] <= i ? 32u : 0u;
+    lo += pairsBefore[lo + 16u] <= i ? 16u : 0u;
+    lo += pairsBefore[lo + 8u] <= i ? 8u : 0u;
+    lo += pairsBefore[lo + 4u] <= i ? 4u : 0u;
+    lo += pairsBefore[lo + 2u] <= i ? 2u : 0u;
+    lo += pairsBefore[lo + 1u] <= i ? 1u : 0u;
+    return lo;
 }
 
 void main() {
-    const uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-    if (group < draw.TP_BIN_SMALL_GROUPS) fillSmall(group * 64u + gl_LocalInvocationIndex);
-    else fillBig(group - draw.TP_BIN_SMALL_GROUPS);
+    const uint lane = gl_LocalInvocationIndex, index = binFlatIndex();
+    uint pairs = 0u;
+    uvec4 span = uvec4(0u);
+    if (index < bin.grid.w) {
+        // Lights in descending order: a device that happens to run the workgroups in order (as
+        // lavapipe nearly does) would leave the runs ascending and hide a broken sort from the
+        // tests.
+        const uint k = bin.grid.w - 1u - index;
+        const ivec4 rect = binUnpackRect(rects[k]);
+        const uint y0 = max(uint(rect.z), draw.TP_BIN_FIRST), y1 = min(uint(rect.w) + 1u, draw.TP_BIN_END);
+        if (rect.x <= rect.y && y0 < y1) {
+            span = uvec4(uint(rect.x), uint(rect.y - rect.x + 1), y0, locals[k]);
+            pairs = span.y * (y1 - y0);
+        }
+    }
+    uvec4 total;
+    pairsBefore[lane] = binScanExclusive(uvec4(pairs, 0u, 0u, 0u), total).x;
+    spans[lane] = span;
+    barrier();
+    const uint W = bin.grid.x;
+    for (uint i = lane; i < total.x; i += 64u) {
+        const uint owner = binPairOwner(i), j = i - pairsBefore[owner];
+        const uvec4 s = spans[owner];
+        binFillTile((s.z + j / s.y) * W + s.x + j % s.y, s.w);
+    }
 }

@@ -4,8 +4,7 @@
 // test, in the same float operations, as la::conservativeTileRects (include/light_binning.h)
 // - and its four corners in the tiles' difference array (integer atomics: the counts do not
 // depend on the order). Corners past the last column or row are left out: they would only
-// change sums outside the grid. A light whose rectangle covers more than TP_BIN_BIG_RECT
-// tiles goes to the big list, which the fill gives a workgroup per light.
+// change sums outside the grid. In the frame it also stores the rectangle for the fill.
 #include "lightassign/bin_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -14,11 +13,8 @@ void main() {
     const uint k = binFlatIndex();
     if (k >= bin.grid.w) return;
     const ivec4 rect = binRect(k);
+    if (draw.TP_BIN_STORE_RECTS != 0u) rects[k] = binPackRect(rect);
     if (rect.x > rect.y || rect.z > rect.w) return;
-    if (binRectArea(rect) > TP_BIN_BIG_RECT) {
-        const uint slot = atomicAdd(bigCount, 1u);
-        if (slot < draw.TP_BIN_BIG_CAPACITY) bigLights[slot] = k;
-    }
     const uint W = bin.grid.x, H = bin.grid.y;
     const uint x0 = uint(rect.x), x1 = uint(rect.y) + 1u, y0 = uint(rect.z), y1 = uint(rect.w) + 1u;
     atomicAdd(counts[y0 * W + x0], 1u);
