@@ -510,12 +510,21 @@ TEST(ViewerPath, MovingLightsChangeTheImageAtAStillCamera) {
     EXPECT_GT(sceneAreaDiffers(r.shot("l0.png"), r.shot("l2.png")), 0u);
 }
 
-// A script's path lines need a path, and a seek beyond it is refused with its line.
+// A script's path lines need a path, a seek beyond it and a file that does not read are refused
+// with the line; `path load` of a good file plays as --camera-path does.
 TEST(ViewerPath, PathLinesWithoutAPathOrOutOfRangeFail) {
     using namespace pathtest;
     EXPECT_EQ(runScript("path_none", "path play\n").code, 2);
     const std::vector<Camera> views = writePath(pathFile("range"), 3);
     EXPECT_EQ(runScript("path_range", "path seek 3\n", false, playing(views, false)).code, 2);
+    EXPECT_EQ(runScript("path_load_bad", "path load missing.json\n").code, 2);
+    // A good file loads at its view 0, paused, and plays.
+    ViewRun loaded = runScript("path_load", "path load " + pathFile("range") +
+                                                "\nstats loaded.json\npath seek 2\nwait\nstats seek.json\n");
+    ASSERT_EQ(loaded.code, 0);
+    EXPECT_EQ(loaded.stats("loaded.json")["path"]["frames"], 3);
+    EXPECT_FALSE(loaded.stats("loaded.json")["path"]["playing"].get<bool>());
+    expectCamera(loaded.stats("seek.json")["pipeline_a"]["camera"], views[2], "loaded, view 2");
 }
 
 // A bad path file or light motion: one line naming the problem, exit 2, before any window.
