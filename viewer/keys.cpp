@@ -16,6 +16,9 @@ bool applyKey(ViewerApp& app, int key) {
     case 'R':
         app.requestReference();
         return true;
+    case ' ': // GLFW_KEY_SPACE
+        app.togglePlay();
+        return true;
     case 'W':
         app.moveCamera(1, 0, 0);
         return true;

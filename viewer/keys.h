@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's keys, one table for the window (GLFW key codes of letters are their ASCII
 // upper case) and for scripts (`key F`): F flips A and B, W/A/S/D/Q/E fly, R renders the
-// reference now, 1/2/3 pick split / difference / overlay.
+// reference now, 1/2/3 pick split / difference / overlay, Space plays or pauses the path.
 namespace tp::view {
 
 class ViewerApp;

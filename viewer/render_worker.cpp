@@ -114,9 +114,35 @@ void RenderWorker::prepareScene(const RenderJob& job, RenderOutcome& out) {
         scene_->lights = std::move(lights);
         gpuScene_->setLights(scene_->lights);
         lightsKey_ = lightsKey(s);
+        startLights_ = scene_->lights;
+        motionPlan_.reset();
+        movedKey_.clear(); // the start lights are uploaded
         if (out.rebuilt.empty()) out.rebuilt = "lights";
     }
     out.sceneMs = out.rebuilt.empty() ? 0.0 : msSince(start);
+    moveLights(s);
+}
+
+// The lights of the state's frame under --light-motion, as compare's path run moves them
+// (core/scene/light_motion.h, seeded by the light seed): the same count, so the sessions
+// follow them without a new plan.
+void RenderWorker::moveLights(const ViewState& s) {
+    const std::string key = motionKey(s);
+    if (key == movedKey_) return;
+    if (s.lightMotion == "none") {
+        scene_->lights = startLights_;
+    } else {
+        if (!motionPlan_ || motionPlanFor_ != s.lightMotion) {
+            Result<LightMotion> motion = parseLightMotion(s.lightMotion);
+            if (!motion) throw cli::UsageError(motion.error());
+            motion->seed = s.scene.seed;
+            motionPlan_ = std::make_unique<LightMotionPlan>(startLights_, *motion, scene_->bounds);
+            motionPlanFor_ = s.lightMotion;
+        }
+        scene_->lights = motionPlan_->at(s.lightFrame);
+    }
+    gpuScene_->setLights(scene_->lights);
+    movedKey_ = key;
 }
 
 // One pipeline's image of the job: its kept session follows the view, or a new one is planned

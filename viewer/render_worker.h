@@ -6,9 +6,9 @@
 //
 // Rebuilds only what a job's state needs (view_state.h): a new scene key reloads and uploads
 // the scene, a new lights key regenerates and uploads only the lights, a new plan key (lights,
-// resolution, MSAA, knobs, overlays) plans the renderers again; a camera move only follows the
-// view: each pipeline's RendererSession (core/runner/render_session.h) is kept between jobs
-// and updates its per-view data in place.
+// resolution, MSAA, knobs, overlays) plans the renderers again; a camera move, or a frame of
+// moving lights (same count), only follows the view: each pipeline's RendererSession
+// (core/runner/render_session.h) is kept between jobs and updates its per-view data in place.
 #include <condition_variable>
 #include <map>
 #include <memory>
@@ -22,6 +22,7 @@
 #include "core/gpu/context.h"
 #include "core/runner/frame_runner.h"
 #include "core/runner/render_session.h"
+#include "core/scene/light_motion.h"
 #include "viewer/view_state.h"
 
 namespace tp::view {
@@ -82,6 +83,7 @@ class RenderWorker {
     void loop();
     RenderOutcome runJob(const RenderJob& job);
     void prepareScene(const RenderJob& job, RenderOutcome& out);
+    void moveLights(const ViewState& s);
     PipelineImage renderPipeline(const std::string& name, const RenderJob& job,
                                  const RenderSettings& settings, const RunOptions& options);
 
@@ -106,6 +108,11 @@ class RenderWorker {
     std::vector<Light> sceneLights_; // the scene file's own lights
     Camera sceneCamera_;             // and its own camera (the user's replaces it per job)
     std::string sceneKey_, lightsKey_;
+    // --light-motion: the lights before they move, the plan of their motion (kept while the
+    // start lights and the motion stay), and motionKey of the lights now uploaded.
+    std::vector<Light> startLights_;
+    std::unique_ptr<LightMotionPlan> motionPlan_;
+    std::string motionPlanFor_, movedKey_;
     struct Planned {
         std::string key; // planKey of the state it was planned for
         std::unique_ptr<RendererSession> session;

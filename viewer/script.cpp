@@ -39,12 +39,13 @@ const std::map<std::string, CommandSpec>& commands() {
          {1, 3,
           "camera move F R U | orbit YAW PITCH | turn YAW PITCH | reset | load FILE | save FILE | "
           "key | path FILE"}},
+        {"path", {1, 2, "path play | pause | seek VIEW | loop on|off | load FILE"}},
         {"split", {1, 1, "split SHARE (0 to 1)"}},
         {"flip", {0, 1, "flip [on|off]"}},
         {"mode", {1, 2, "mode split|difference|overlay [DEBUG_IMAGE]"}},
         {"hover", {2, 2, "hover X Y"}},
         {"drag", {4, 4, "drag X0 Y0 X1 Y1"}},
-        {"key", {1, 1, "key LETTER"}},
+        {"key", {1, 1, "key LETTER|space"}},
         {"reference", {1, 1, "reference on|off|now"}},
         {"scene", {1, 1, "scene FILE|builtin:NAME"}},
         {"wait", {0, 0, "wait"}},
@@ -212,6 +213,8 @@ void ScriptRunner::apply(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& l
         applyViewSetting(app, line);
     else if (cmd == "camera")
         applyCamera(app, line);
+    else if (cmd == "path")
+        applyPath(app, line);
     else if (cmd == "wait" || cmd == "frames" || cmd == "screenshot" || cmd == "stats" ||
              cmd == "export" || cmd == "bench" || cmd == "expect-error")
         applyWaitOrOutput(app, line);
@@ -308,6 +311,27 @@ void ScriptRunner::applyCamera(ViewerApp& app, const ScriptLine& line) {
     if (!app.lastError().empty()) fail(line, app.lastError());
 }
 
+// The play head of --camera-path / --light-motion (path_player.h).
+void ScriptRunner::applyPath(ViewerApp& app, const ScriptLine& line) {
+    const std::vector<std::string>& w = line.words;
+    const bool one = w.size() == 2, two = w.size() == 3;
+    if (two && w[1] == "load") {
+        app.loadPath(inOut(w[2]));
+        if (!app.lastError().empty()) fail(line, app.lastError());
+        return;
+    }
+    if (!app.path().loaded())
+        fail(line, "no path: give --camera-path FILE or --light-motion MODE, or 'path load FILE'");
+    if (one && (w[1] == "play" || w[1] == "pause"))
+        app.setPlaying(w[1] == "play");
+    else if (two && w[1] == "seek")
+        app.seekPath(uint32_t(integerAt(line, 2, 0, app.path().frames - 1)));
+    else if (two && w[1] == "loop" && (w[2] == "on" || w[2] == "off"))
+        app.setPathLoop(w[2] == "on");
+    else
+        fail(line, std::string("expected '") + commands().at("path").usage + "'");
+}
+
 // Display only (no render) and the user's hands: split, flip, mode, mouse, keys, the
 // reference switch, the scene.
 void ScriptRunner::applyDisplay(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line) {
@@ -340,7 +364,9 @@ void ScriptRunner::applyDisplay(ViewerApp& app, ScriptMouse& mouse, const Script
         dragTo_[0] = num(3), dragTo_[1] = num(4);
         wait_ = Wait::Drag, dragStage_ = 1;
     } else if (cmd == "key") {
-        if (w[1].size() != 1 || !applyKey(app, std::toupper(static_cast<unsigned char>(w[1][0]))))
+        // Space is spelled out: a script's words are split on spaces.
+        const int key = w[1] == "space" ? ' ' : std::toupper(static_cast<unsigned char>(w[1][0]));
+        if ((w[1].size() != 1 && w[1] != "space") || !applyKey(app, key))
             fail(line, "no such key '" + w[1] + "' (docs/viewer.md lists the keys)");
     } else if (cmd == "reference") {
         if (w[1] == "now")

@@ -61,6 +61,7 @@ class ScriptRunner {
     void applyViewSetting(ViewerApp& app, const ScriptLine& line);
     void applyLights(ViewerApp& app, const ScriptLine& line);
     void applyCamera(ViewerApp& app, const ScriptLine& line);
+    void applyPath(ViewerApp& app, const ScriptLine& line);
     void applyDisplay(ViewerApp& app, ScriptMouse& mouse, const ScriptLine& line);
     void applyWaitOrOutput(ViewerApp& app, const ScriptLine& line);
     // Word i of the line as a finite number, or an integer in [lo, hi]; fail() otherwise.

@@ -6,6 +6,7 @@
 #include "core/energy/energy_json.h"
 #include "core/reference/reference_renderer.h"
 #include "core/util/files.h"
+#include "viewer/live_numbers.h"
 #include "viewer/script.h"
 #include "viewer/viewer_app.h"
 
@@ -18,7 +19,25 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-nlohmann::json shownJson(const Shown* s) {
+nlohmann::json vec3Json(const glm::vec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+// What the numbers panel's live line shows: frames per second and GPU memory.
+void liveJson(const ViewerApp& app, const Shown& s, nlohmann::json& j) {
+    if (const TimingHistory* h = app.history(s.pipeline)) {
+        const LiveRate r = liveRate(*h);
+        j["fps"] = {{"shown", r.shownFps()},
+                    {"gpu", r.gpuFps()},
+                    {"render_ms_median", r.wallMs},
+                    {"gpu_frame_ms_median", r.gpuMs},
+                    {"renders", r.renders}};
+    }
+    const LiveMemory m = liveMemory(app, s);
+    j["gpu_memory_bytes"] = {{"pipeline", m.pipeline}, {"scene", m.scene}, {"total", m.total()}};
+}
+
+nlohmann::json shownJson(const ViewerApp& app, const Shown* s) {
     if (!s) return nullptr;
     nlohmann::json j;
     j["pipeline"] = s->pipeline;
@@ -26,6 +45,8 @@ nlohmann::json shownJson(const Shown* s) {
     j["build_ms"] = s->buildMs;
     j["planned"] = s->planned;
     j["view_update_ms"] = s->updateMs;
+    j["camera"] = {{"position", vec3Json(s->camera.position)},
+                   {"target", vec3Json(s->camera.target)}};
     if (s->run) {
         j["gpu_frame_ms"] = frameGpuMs(s);
         j["debug_images"] = nlohmann::json::array();
@@ -41,8 +62,30 @@ nlohmann::json shownJson(const Shown* s) {
                 if (!p.limits.empty())
                     j["efficiency"]["passes"][p.pass] = {{"ceiling", p.bound.ceiling}, {"percent", p.percent}};
         }
+        liveJson(app, *s, j);
     }
     return j;
+}
+
+nlohmann::json pathJson(const ViewerApp& app) {
+    const PathPlayer& p = app.path();
+    if (!p.loaded()) return nullptr;
+    return {{"source", p.source},
+            {"frames", p.frames},
+            {"frame", p.frame},
+            {"playing", p.playing},
+            {"loop", p.loop},
+            {"moves_camera", !p.views.empty()},
+            {"light_motion", app.const_state().lightMotion},
+            {"light_frame", app.const_state().lightFrame}};
+}
+
+nlohmann::json keptErrorJson(const ViewerApp& app) {
+    const std::optional<KeptError>& e = app.keptError();
+    if (!e) return nullptr;
+    return {{"rmse", e->hdr.rmse},           {"psnr", e->hdr.psnr},
+            {"max_abs", e->hdr.maxAbs},      {"display_psnr", e->display.psnr},
+            {"stale", app.keptErrorStale()}, {"view", e->view}};
 }
 
 } // namespace
@@ -53,8 +96,9 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
     nlohmann::json j;
     j["schema"] = "triptych.view-stats/1";
     j["device"] = app.deviceName();
-    j["pipeline_a"] = shownJson(app.shownA());
-    j["pipeline_b"] = shownJson(app.shownB());
+    j["pipeline_a"] = shownJson(app, app.shownA());
+    j["pipeline_b"] = shownJson(app, app.shownB());
+    j["path"] = pathJson(app);
     j["mode"] = s.mode == DisplayMode::Split        ? "split"
                 : s.mode == DisplayMode::Difference ? "difference"
                                                     : "overlay";
@@ -68,6 +112,8 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
     j["last_render_ms"] = app.lastRenderMs();
     if (const auto& e = app.errorVsReference(); e)
         j["a_vs_reference"] = {{"rmse", e->rmse}, {"psnr", e->psnr}, {"max_abs", e->maxAbs}};
+    // Kept after the view moves on, with "stale" and the view it is of (what the panel shows).
+    j["a_vs_reference_kept"] = keptErrorJson(app);
     const Inspection& i = app.inspection();
     if (i.valid)
         j["inspection"] = {{"x", i.x},
@@ -77,8 +123,7 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
                            {"surface", i.surface},
                            {"lights", i.lights}};
     const Camera& cam = app.state().camera;
-    j["camera"] = {{"position", {cam.position.x, cam.position.y, cam.position.z}},
-                   {"target", {cam.target.x, cam.target.y, cam.target.z}}};
+    j["camera"] = {{"position", vec3Json(cam.position)}, {"target", vec3Json(cam.target)}};
     if (Status st = writeTextFile(file, j.dump(2) + "\n"); !st) fail(*current_, st.error());
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/energy/energy_text.h"
 #include "core/reference/reference_renderer.h"
+#include "viewer/live_numbers.h"
 #include "viewer/ui_colour.h"
 #include "viewer/ui_panels.h"
 #include "viewer/viewer_app.h"
@@ -106,6 +107,41 @@ void errorLine(const char* what, const std::optional<ErrorReport>& e) {
     if (e) ImGui::Text("%s: RMSE %.4g, PSNR %.2f dB, max %.3g", what, e->rmse, e->psnr, e->maxAbs);
 }
 
+// The last error against a reference stays on screen while the view moves on, marked stale and
+// naming its view, so a user flying or playing a path still sees where the error stood.
+void errorAgainstReference(const ViewerApp& app) {
+    if (app.errorVsReference()) return; // fresh: shown by the caller
+    const std::optional<KeptError>& kept = app.keptError();
+    if (!kept) {
+        ImGui::TextDisabled(app.referenceStale() ? "A vs reference: no reference of this view yet"
+                                                 : "A vs reference: waiting for A of this view");
+        return;
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+    ImGui::TextWrapped("STALE: of %s (the reference of this view is not done)", kept->view.c_str());
+    errorLine("A vs reference, linear", kept->hdr);
+    errorLine("A vs reference, tonemapped", kept->display);
+    ImGui::PopStyleColor();
+}
+
+// Frames per second and GPU memory, live: what the user of an interactive tool watches.
+void liveLine(const ViewerApp& app, const Shown& s) {
+    const LiveMemory m = liveMemory(app, s);
+    pipelineSwatch(s.pipeline);
+    if (const TimingHistory* h = app.history(s.pipeline)) {
+        const LiveRate r = liveRate(*h);
+        ImGui::Text("%s: %.1f views/s shown (render %.1f ms), GPU %.1f frames/s (%.2f ms)",
+                    s.pipeline.c_str(), r.shownFps(), r.wallMs, r.gpuFps(), r.gpuMs);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("medians over the last %zu renders: a render's wall time (its "
+                              "update, frames and readback) and its GPU frame",
+                              r.renders);
+    }
+    ImGui::Text("  GPU memory %.2f MiB (its own %.2f + the shared scene %.2f)",
+                double(m.total()) / (1 << 20), double(m.pipeline) / (1 << 20),
+                double(m.scene) / (1 << 20));
+}
+
 } // namespace
 
 void Panels::numbers(ViewerApp& app) {
@@ -115,8 +151,7 @@ void Panels::numbers(ViewerApp& app) {
         errorLine("A vs reference, linear", app.errorVsReference_);
         errorLine("A vs reference, tonemapped", app.errorVsReferenceDisplay_);
     } else {
-        ImGui::TextDisabled(app.referenceStale() ? "A vs reference: no reference of this view yet"
-                                                 : "A vs reference: waiting for A of this view");
+        errorAgainstReference(app);
     }
     if (const auto& cal = app.options_.calibration; cal && !app.deviceName_.empty() && cal->device != app.deviceName_)
         ImGui::TextDisabled("--calibration %s is of %s, not %s: passes not placed", cal->path.c_str(),
@@ -126,6 +161,7 @@ void Panels::numbers(ViewerApp& app) {
                             cal->driver.c_str());
     for (const Shown* s : {a, app.shownB()}) {
         if (!s || !s->run) continue;
+        liveLine(app, *s);
         if (app.history_.count(s->pipeline))
             timingGraph(s->pipeline, app.history_.at(s->pipeline), app.deviceName_, *s->run);
         for (const auto& [name, value] : s->run->stats.counters)

@@ -62,6 +62,25 @@ void knobControl(const Knob& k, std::string& value) {
                           k.defaultValue.c_str());
 }
 
+// Play, pause and scrub the path (--camera-path / --light-motion, path_player.h).
+void pathControls(ViewerApp& app) {
+    const PathPlayer& p = app.path();
+    if (!p.loaded()) {
+        ImGui::TextDisabled("no path playing (--camera-path FILE, --light-motion, or load one)");
+        return;
+    }
+    if (ImGui::Button(p.playing ? "pause (space)" : "play (space)")) app.togglePlay();
+    ImGui::SameLine();
+    bool loop = p.loop;
+    if (ImGui::Checkbox("loop", &loop)) app.setPathLoop(loop);
+    int view = int(p.frame);
+    if (ImGui::SliderInt("view", &view, 0, int(p.frames) - 1)) app.seekPath(uint32_t(view));
+    const std::string& motion = app.const_state().lightMotion;
+    ImGui::TextDisabled(
+        "%s%s%s", p.views.empty() ? "the camera is yours" : p.source.c_str(),
+        motion == "none" ? "" : "; lights: ", motion == "none" ? "" : motion.c_str());
+}
+
 } // namespace
 
 void Panels::pipelines(ViewerApp& app) {
@@ -183,6 +202,7 @@ void Panels::scene(ViewerApp& app) {
 }
 
 void Panels::camera(ViewerApp& app) {
+    if (app.path().loaded()) ImGui::SetNextItemOpen(true, ImGuiCond_Once); // its play controls
     if (!ImGui::CollapsingHeader("Camera")) return;
     const Camera& c = app.state_.camera;
     ImGui::Text("eye %.3g %.3g %.3g", c.position.x, c.position.y, c.position.z);
@@ -199,6 +219,12 @@ void Panels::camera(ViewerApp& app) {
     ImGui::Text("%zu keys", app.pathKeys());
     ImGui::InputText("path", &app.pathFile_);
     if (ImGui::Button("save path")) app.savePath(app.pathFile_);
+    ImGui::SameLine();
+    if (ImGui::Button("load and play")) {
+        app.loadPath(app.pathFile_);
+        if (app.error_.empty()) app.setPlaying(true);
+    }
+    pathControls(app);
 }
 
 void Panels::status(ViewerApp& app) {
@@ -223,6 +249,8 @@ void Panels::status(ViewerApp& app) {
                             ? " (STALE: another view)"
                             : "");
         }
+    if (const PathPlayer& p = app.path(); p.loaded())
+        ImGui::Text("path: view %u of %u, %s", p.frame, p.frames, p.playing ? "playing" : "paused");
     if (!app.worker_->idle()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "rendering...");
     if (!app.referenceWorker_->idle())
         ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "reference rendering in the background...");

@@ -11,10 +11,12 @@
 #include "viewer/view_command.h"
 
 #include "core/calibrate/calibration_file.h"
+#include "core/camera/camera_path.h"
 #include "core/cli/options.h"
 #include "core/cli/scene_input.h"
 #include "core/reference/reference_renderer.h"
 #include "core/renderer/view_settings.h"
+#include "core/scene/light_motion.h"
 #include "viewer/view_loop.h"
 
 namespace tp::view {
@@ -66,12 +68,37 @@ struct ViewCommandOptions {
     bool noReference = false;
     std::string calibration; // empty: the passes are not placed
     bool passStatistics = true;
+    // As render's and compare's (their reader and parser); the viewer plays them.
+    std::string cameraPath;
+    uint32_t pathFrames = kDefaultGltfPathFrames;
+    std::string lightMotion = "none";
 };
 
 std::string firstPipeline() {
     for (const RendererEntry& e : registeredRenderers())
         if (e.name != kReferenceRenderer) return e.name;
     return kReferenceRenderer;
+}
+
+// --camera-path / --light-motion, read and checked before any window opens (a bad file is one
+// line and exit 2): the path plays from its first view.
+void loadPath(const ViewCommandOptions& o, view::LoopSetup& setup) {
+    Result<LightMotion> motion = parseLightMotion(o.lightMotion);
+    if (!motion) throw UsageError(motion.error());
+    setup.viewer.initial.lightMotion = lightMotionToString(*motion);
+    setup.viewer.pathFrames = o.pathFrames;
+    view::PathPlayer& p = setup.viewer.path;
+    if (!o.cameraPath.empty()) {
+        Result<std::vector<Camera>> views = readCameraPath(o.cameraPath, o.pathFrames);
+        if (!views) throw UsageError(views.error());
+        p.views = std::move(*views);
+        p.frames = uint32_t(p.views.size());
+        p.source = o.cameraPath;
+    } else if (motion->mode != LightMotion::Mode::None) {
+        p.frames = o.pathFrames; // the lights move at the user's camera
+        p.source = "--light-motion";
+    }
+    p.playing = p.loaded();
 }
 
 int runView(ViewCommandOptions& o, const std::string& exe) {
@@ -91,6 +118,7 @@ int runView(ViewCommandOptions& o, const std::string& exe) {
         ensureDirectory(o.out);
     }
     (void)generatorOptions(o.scene); // a bad light option is a usage error before any window opens
+    loadPath(o, setup);
     view::ViewState& s = setup.viewer.initial;
     s.scene = o.scene;
     if (!view::parseViewResolution(o.view.resolution, s.width, s.height))
@@ -148,6 +176,21 @@ CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine
                     "A calibration FILE from 'triptych calibrate' of this device: the numbers panel places every "
                     "pass against its ceilings (docs/efficiency.md)");
     addPassStatisticsOption(*cmd, o->passStatistics);
+    cmd->add_option("--camera-path", o->cameraPath,
+                    "Play a camera path: a triptych.camera_path/1 JSON file or a glTF file with an "
+                    "animated camera, as render and compare read it (docs/camera_paths.md). It "
+                    "plays from its first view, one view per render of the pipelines; Space or "
+                    "the Camera panel pauses, the slider scrubs")
+        ->type_name("FILE");
+    cmd->add_option("--path-frames", o->pathFrames,
+                    "Views sampled from a glTF camera path, or played at the user's camera when "
+                    "only --light-motion is given (a JSON path names its own count)")
+        ->check(CLI::Range(1u, kMaxPathFrames))
+        ->capture_default_str();
+    cmd->add_option("--light-motion", o->lightMotion,
+                    "Move the lights as the path plays, seeded by --seed: none, orbit or drift, "
+                    "optionally :SPEED in scene units per view (as render and compare)")
+        ->capture_default_str();
     cmd->add_option("--script", o->script, "Actions to run, one per line (docs/viewer.md)");
     cmd->add_option("--out", o->out, "Folder for the script's screenshots, stats and exports")
         ->capture_default_str();

@@ -34,11 +34,17 @@ std::string lightsKey(const ViewState& s) {
            o.lightIntensity + "|" + (o.dropSceneLights ? "drop" : "keep");
 }
 
+std::string motionKey(const ViewState& s) {
+    return s.lightMotion == "none"
+               ? std::string()
+               : "|motion=" + s.lightMotion + "@" + std::to_string(s.lightFrame);
+}
+
 std::string referenceKey(const ViewState& s) {
     // The scene's own camera until the user moves it (its values arrive with the scene).
     std::string camera = s.cameraFromScene ? std::string("scene camera") : cameraText(s.camera);
-    std::string key = lightsKey(s) + "|" + camera + "|" + std::to_string(s.width) + "x" +
-                      std::to_string(s.height) + "x" + std::to_string(s.msaa);
+    std::string key = lightsKey(s) + motionKey(s) + "|" + camera + "|" + std::to_string(s.width) +
+                      "x" + std::to_string(s.height) + "x" + std::to_string(s.msaa);
     // The reference's own knobs (e.g. the MSAA shading rate) change it too.
     if (Result<const RendererEntry*> ref = findRenderer(kReferenceRenderer); ref)
         for (const Knob& k : (*ref)->knobs)

@@ -4,7 +4,7 @@
 //   sceneKey   scene file or builtin name        -> reload the scene and upload it again
 //   lightsKey  light count/seed/types/range/...  -> regenerate lights, upload only them
 //   planKey    + resolution, MSAA, knobs         -> plan the renderer again and render
-//   renderKey  + camera                          -> the kept renderer follows the view, renders
+//   renderKey  + camera, moved lights' frame     -> the kept renderer follows the view, renders
 //   everything else (split, flip, difference, exposure, overlay) is display only: no render.
 #include <cstdint>
 #include <map>
@@ -31,10 +31,17 @@ struct ViewState {
     bool flip = false;     // A and B swapped (the flip key)
     std::string overlay;   // debug image name shown in Overlay mode
     bool reference = true; // keep a reference of the current view rendering in the background
+    // --light-motion as lightMotionToString writes it ("none", "orbit:0.05", ...; seeded by the
+    // light seed) and the frame whose lights are shown: moved lights keep their count, so the
+    // kept renderers follow them as they follow a camera move (no new plan).
+    std::string lightMotion = "none";
+    uint32_t lightFrame = 0;
 };
 
 std::string sceneKey(const ViewState& s);
 std::string lightsKey(const ViewState& s);
+// The moved lights' part of the view ("" when the lights do not move: the frame is then moot).
+std::string motionKey(const ViewState& s);
 // What a pipeline's image depends on (pipeline name excluded; debug: overlays requested).
 std::string renderKey(const ViewState& s, bool debug);
 // What a planned renderer depends on: renderKey without the camera (a camera move is followed

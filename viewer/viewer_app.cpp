@@ -23,7 +23,10 @@ std::string serialKey(const Shown* s) {
 
 } // namespace
 
-void TimingHistory::add(const std::vector<TimingStats>& timings) {
+void TimingHistory::add(const std::vector<TimingStats>& timings, double renderWallMs) {
+    wallMs.push_back(renderWallMs);
+    while (wallMs.size() > kHistory)
+        wallMs.pop_front();
     for (const TimingStats& t : timings) {
         if (!passes.count(t.name)) order.push_back(t.name);
         std::deque<double>& h = passes[t.name];
@@ -40,6 +43,8 @@ ViewerApp::ViewerApp(const GpuContext& uiContext, ViewerOptions options)
     sampleCounts_ = ui_.caps.colorSampleCounts;
     worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines");
     referenceWorker_ = std::make_unique<RenderWorker>(options_.context, "reference");
+    player_ = options_.path;
+    if (player_.loaded()) showPathView();
 }
 
 ViewerApp::~ViewerApp() {
@@ -71,6 +76,10 @@ const Shown* ViewerApp::shownFor(const std::string& pipeline) const {
     auto it = shown_.find(pipeline);
     return it == shown_.end() ? nullptr : &it->second;
 }
+const TimingHistory* ViewerApp::history(const std::string& pipeline) const {
+    auto it = history_.find(pipeline);
+    return it == history_.end() ? nullptr : &it->second;
+}
 const Shown* ViewerApp::shownA() const {
     return shownFor(state_.pipelineA);
 }
@@ -83,6 +92,8 @@ bool ViewerApp::referenceStale() const {
 }
 
 bool ViewerApp::settled() const {
+    // The next view is coming (unless a render failed: then the head waits on the error).
+    if (player_.playing && error_.empty()) return false;
     if (!worker_->idle() || !referenceWorker_->idle()) return false;
     // A finished outcome not yet taken, or a state change not yet submitted.
     bool debug = state_.mode == DisplayMode::Overlay;
@@ -113,7 +124,7 @@ void ViewerApp::takeOutcomes() {
                     image.buildMs,  nextSerial_++, o->lights,   o->camera,
                     image.planned,  image.updateMs};
             if (image.error.empty()) {
-                history_[image.pipeline].add(image.run.timings);
+                history_[image.pipeline].add(image.run.timings, image.buildMs);
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
             } else {
                 error_ = image.error;
@@ -128,8 +139,10 @@ void ViewerApp::takeOutcomes() {
             Shown s{image.pipeline, o->key,        image.error, nullptr,
                     image.buildMs,  nextSerial_++, o->lights,   o->camera,
                     image.planned,  image.updateMs};
-            if (image.error.empty())
+            if (image.error.empty()) {
+                history_[image.pipeline].add(image.run.timings, image.buildMs);
                 s.run = std::make_shared<const RunResult>(std::move(image.run));
+            }
             reference_ = std::move(s);
         }
         sceneInputsChanged_ = true;
@@ -226,6 +239,8 @@ void ViewerApp::measureAgainstReference() {
     errorVsReference_ = computeError(a->run->hdr, ref, hdr);
     errorVsReferenceDisplay_ =
         computeError(tonemapToDisplay(a->run->hdr, ev), tonemapToDisplay(ref, ev));
+    // The state is the reference's view here (its key is the current one).
+    keptError_ = KeptError{*errorVsReference_, *errorVsReferenceDisplay_, viewLabel()};
 }
 
 void ViewerApp::handleSceneMouse() {
@@ -263,6 +278,7 @@ void ViewerApp::handleSceneMouse() {
     else if (io.MouseDown[1] && (d.x != 0 || d.y != 0))
         turnCamera(d.x * 0.2f, d.y * 0.2f);
     if (io.MouseWheel != 0 && hasSceneCamera_) {
+        pauseForUserMove();
         userCamera();
         dolly(state_.camera, io.MouseWheel * 0.1f);
     }
@@ -295,23 +311,30 @@ Camera& ViewerApp::userCamera() {
 
 void ViewerApp::moveCamera(float forward, float right, float up) {
     if (!hasSceneCamera_) return;
+    pauseForUserMove();
     Camera& c = userCamera();
     float step = moveStep(c);
     flyMove(c, forward * step, right * step, up * step);
 }
 void ViewerApp::turnCamera(float yaw, float pitch) {
-    if (hasSceneCamera_) flyTurn(userCamera(), yaw, pitch);
+    if (!hasSceneCamera_) return;
+    pauseForUserMove();
+    flyTurn(userCamera(), yaw, pitch);
 }
 void ViewerApp::orbitCamera(float yaw, float pitch) {
-    if (hasSceneCamera_) orbit(userCamera(), yaw, pitch);
+    if (!hasSceneCamera_) return;
+    pauseForUserMove();
+    orbit(userCamera(), yaw, pitch);
 }
 void ViewerApp::resetCamera() {
+    pauseForUserMove();
     state_.cameraFromScene = true;
     state_.camera = sceneCamera_;
 }
 
 void ViewerApp::frame() {
     takeOutcomes();
+    advancePath();
     recompose();
     handleSceneMouse();
     drawPanels();

@@ -16,6 +16,7 @@
 #include "core/image/metrics.h"
 #include "viewer/composite.h"
 #include "viewer/exporter.h"
+#include "viewer/path_player.h"
 #include "viewer/render_worker.h"
 #include "viewer/view_state.h"
 
@@ -31,6 +32,10 @@ struct ViewerOptions {
     // (docs/efficiency.md); null: not placed.
     std::shared_ptr<const CeilingFile> calibration;
     bool passStatistics = true; // --pass-statistics: off records no pipeline-statistics query
+    // --camera-path / --light-motion: the path to play (initial.lightMotion moves the lights);
+    // not loaded: neither was given. --path-frames: the views of a glTF path the panel loads.
+    PathPlayer path;
+    uint32_t pathFrames = 120;
 };
 
 // A finished render of one pipeline, as the UI keeps it.
@@ -54,8 +59,16 @@ double frameGpuMs(const Shown* s);
 struct TimingHistory {
     std::map<std::string, std::deque<double>> passes; // name -> last kHistory times (ms)
     std::vector<std::string> order;                   // "frame" first, then passes
+    std::deque<double> wallMs; // the last kHistory renders' wall times (plan, frames, readback)
     static constexpr size_t kHistory = 64;
-    void add(const std::vector<TimingStats>& timings);
+    void add(const std::vector<TimingStats>& timings, double renderWallMs);
+};
+
+// A's error against the reference, kept after the view moves on (shown marked stale, with the
+// view it is of, until the reference of the new view is done).
+struct KeptError {
+    ErrorReport hdr, display;
+    std::string view; // which view: "path view 3 of 8", or the camera's eye and target
 };
 
 // The pixel inspector's readout for the pixel under the cursor.
@@ -100,6 +113,7 @@ class ViewerApp {
     void resetCamera();
     // A frame after a camera load or bookmark: the camera given, no longer the scene's.
     void setCamera(const Camera& c) {
+        pauseForUserMove();
         state_.camera = c;
         state_.cameraFromScene = false;
     }
@@ -113,6 +127,15 @@ class ViewerApp {
     void addPathKey();
     void savePath(const std::string& path, uint32_t frames = 0);
     size_t pathKeys() const { return pathKeys_.size(); }
+    // Playing a path (path_player.h; path_play.cpp): a camera path file (JSON or glTF, the
+    // reader of --camera-path) replaces the one playing, at its view 0, paused; errors go to
+    // the status line. A move of the camera by the user pauses a playing camera path.
+    void loadPath(const std::string& file);
+    void setPlaying(bool playing);
+    void togglePlay() { setPlaying(!player_.playing); }
+    void seekPath(uint32_t view);
+    const PathPlayer& path() const { return player_; }
+    void setPathLoop(bool loop) { player_.loop = loop; }
     // `render` of A and `compare` of A and B into DIR/render and DIR/compare (exporter.h).
     void startExport(const std::string& dir);
     std::string exportStatus() const { return exporter_.status(); }
@@ -126,6 +149,11 @@ class ViewerApp {
     const Shown* shownB() const;
     double lastRenderMs() const { return lastRenderMs_; }
     const std::optional<ErrorReport>& errorVsReference() const { return errorVsReference_; }
+    // The last error measured against a reference, of this view (fresh) or an earlier one.
+    const std::optional<KeptError>& keptError() const { return keptError_; }
+    bool keptErrorStale() const { return !errorVsReference_; }
+    const TimingHistory* history(const std::string& pipeline) const;
+    const std::vector<LedgerEntry>& sceneMemory() const { return sceneMemory_; }
     bool referenceStale() const;
     const std::string& deviceName() const { return deviceName_; }
     bool supportsMsaa(uint32_t samples) const { return (sampleCounts_ & samples) != 0; }
@@ -142,6 +170,11 @@ class ViewerApp {
     void inspectLights();
     void drawPanels(); // ui_panels.cpp
     const Shown* shownFor(const std::string& pipeline) const;
+    void showPathView(); // the state takes the play head's camera and lights frame
+    void advancePath();  // a playing head moves on once its view's images are shown
+    bool pathViewShown() const;
+    void pauseForUserMove();
+    std::string viewLabel() const;
 
     const GpuContext& ui_;
     ViewerOptions options_;
@@ -156,6 +189,8 @@ class ViewerApp {
     std::optional<Shown> reference_;
     std::map<std::string, TimingHistory> history_;
     std::optional<ErrorReport> errorVsReference_, errorVsReferenceDisplay_;
+    std::optional<KeptError> keptError_;
+    PathPlayer player_;
     std::string measuredFor_;
     std::string lastRebuilt_;
     double lastRenderMs_ = 0, lastSceneMs_ = 0;

@@ -39,7 +39,7 @@ int noDisplay(const std::string& why) {
 // frame, the others once per press.
 void pollKeys(GLFWwindow* window, ViewerApp& app, std::map<int, bool>& wasDown) {
     if (ImGui::GetIO().WantCaptureKeyboard) return;
-    for (int key : {'F', 'R', '1', '2', '3', 'W', 'A', 'S', 'D', 'Q', 'E'}) {
+    for (int key : {'F', 'R', ' ', '1', '2', '3', 'W', 'A', 'S', 'D', 'Q', 'E'}) {
         bool down = glfwGetKey(window, key) == GLFW_PRESS;
         if (down && (isHeldKey(key) || !wasDown[key])) applyKey(app, key);
         wasDown[key] = down;

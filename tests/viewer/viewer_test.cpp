@@ -1,18 +1,24 @@
 // triptych view --headless on the default device (lavapipe) with validation on: scripts drive
 // the same UI code a user sees, and the tests check what the screenshots and stats show.
 // Small: 160x90 of the small built-in scene, the reference only where a test needs it.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
+
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "core/camera/camera_path.h"
+#include "core/cli/scene_input.h"
 #include "core/gpu/context.h"
 #include "core/image/image_io.h"
 #include "core/reference/reference_renderer.h"
 #include "core/renderer/renderer.h"
+#include "viewer/camera_control.h"
 #include "viewer/composite.h"
 #include "viewer/view_loop.h"
 
@@ -43,7 +49,8 @@ struct ViewRun {
     }
 };
 
-ViewRun runScript(const std::string& name, const std::string& script, bool reference = false) {
+ViewRun runScript(const std::string& name, const std::string& script, bool reference = false,
+                  const std::function<void(LoopSetup&)>& more = {}) {
     ViewRun run;
     run.out = (std::filesystem::temp_directory_path() / ("triptych_view_" + name)).string();
     std::filesystem::remove_all(run.out);
@@ -67,6 +74,7 @@ ViewRun runScript(const std::string& name, const std::string& script, bool refer
     s.reference = reference;
     setup.viewer.context.validate = true;
     setup.viewer.exe = TP_TRIPTYCH_EXE;
+    if (more) more(setup);
     run.code = runHeadless(setup);
     return run;
 }
@@ -324,6 +332,235 @@ TEST(Viewer, MalformedScriptsSayPathAndLine) {
     Result<std::vector<ScriptLine>> folder = readScript(dir.string());
     ASSERT_FALSE(folder);
     EXPECT_EQ(folder.error(), dir.string() + ": is a directory, not a script");
+    std::filesystem::remove_all(dir);
+}
+
+// --- Playing a camera path and moving lights (docs/viewer.md, "Playing a path") ---
+
+namespace pathtest {
+
+// A path of `frames` views over courtyard-small, linear from the scene's camera to the camera
+// orbited 40 degrees and pitched: every view differs from the one before.
+std::vector<Camera> writePath(const std::string& file, uint32_t frames) {
+    cli::SceneOptions o;
+    o.scene = "builtin:courtyard-small";
+    o.lightCount = 0;
+    const Camera start = cli::loadScene(o).camera;
+    Camera end = start;
+    orbit(end, 40.0f, 10.0f);
+    Status written = writeCameraPath(file, {start, end}, frames, Interpolation::Linear);
+    EXPECT_TRUE(written) << (written ? "" : written.error());
+    Result<std::vector<Camera>> views = readCameraPath(file);
+    EXPECT_TRUE(views) << (views ? "" : views.error());
+    return views ? *views : std::vector<Camera>{};
+}
+
+// The setup --camera-path gives: the views, playing from view 0 (or paused).
+std::function<void(LoopSetup&)> playing(const std::vector<Camera>& views, bool play) {
+    return [views, play](LoopSetup& setup) {
+        setup.viewer.path.views = views;
+        setup.viewer.path.frames = uint32_t(views.size());
+        setup.viewer.path.source = "test path";
+        setup.viewer.path.playing = play;
+    };
+}
+
+std::string pathFile(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("triptych_view_" + name + ".json")).string();
+}
+
+void expectCamera(const nlohmann::json& camera, const Camera& c, const std::string& what) {
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_FLOAT_EQ(camera["position"][i].get<float>(), c.position[i]) << what;
+        EXPECT_FLOAT_EQ(camera["target"][i].get<float>(), c.target[i]) << what;
+    }
+}
+
+uint32_t sceneAreaDiffers(const ImageRGBA& x, const ImageRGBA& y) {
+    uint32_t n = 0;
+    for (uint32_t row = 0; row < kH; ++row)
+        for (uint32_t col = 0; col < kW; ++col)
+            for (int c = 0; c < 3; ++c)
+                n += x.at(col, row)[c] != y.at(col, row)[c];
+    return n;
+}
+
+} // namespace pathtest
+
+// Seeking lands on the view: the state's camera and the camera A rendered with are the path's
+// camera of that view, bit for bit, and the two views' images differ.
+TEST(ViewerPath, SeekLandsOnTheViewAndItsImage) {
+    using namespace pathtest;
+    const std::vector<Camera> views = writePath(pathFile("seek"), 4);
+    ASSERT_EQ(views.size(), 4u);
+    ViewRun r =
+        runScript("path_seek",
+                  "exposure 0\nsplit 1\npath seek 0\nwait\nstats v0.json\nscreenshot v0.png\n"
+                  "path seek 3\nwait\nstats v3.json\nscreenshot v3.png\n",
+                  false, playing(views, false));
+    ASSERT_EQ(r.code, 0);
+    for (auto [file, k] : {std::pair{"v0.json", 0u}, {"v3.json", 3u}}) {
+        nlohmann::json s = r.stats(file);
+        EXPECT_EQ(s["path"]["frame"], k) << file;
+        EXPECT_FALSE(s["path"]["playing"].get<bool>()) << file;
+        expectCamera(s["camera"], views[k], file);
+        expectCamera(s["pipeline_a"]["camera"], views[k], std::string(file) + " (A's image)");
+    }
+    EXPECT_GT(sceneAreaDiffers(r.shot("v0.png"), r.shot("v3.png")), 100u)
+        << "the camera of view 3 sees another image than view 0's";
+}
+
+// Played from view 0, the path runs to its last view and stops there; every view was rendered
+// (A's renders count at least the path's views), each followed by the kept renderer; the stats
+// carry each side's frames per second and GPU memory.
+TEST(ViewerPath, PlayRunsToTheLastViewWithLiveRateAndMemory) {
+    using namespace pathtest;
+    const std::vector<Camera> views = writePath(pathFile("play"), 5);
+    ASSERT_EQ(views.size(), 5u);
+    ViewRun r = runScript("path_play", "wait\nstats end.json\n", false, playing(views, true));
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json s = r.stats("end.json");
+    EXPECT_EQ(s["path"]["frame"], 4);
+    EXPECT_FALSE(s["path"]["playing"].get<bool>()) << "stopped at the end";
+    expectCamera(s["pipeline_a"]["camera"], views[4], "A's last image");
+    EXPECT_FALSE(s["pipeline_a"]["planned"].get<bool>()) << "a path view was planned again";
+    for (const char* side : {"pipeline_a", "pipeline_b"}) {
+        const nlohmann::json& p = s[side];
+        ASSERT_TRUE(p.contains("fps")) << side;
+        EXPECT_GE(p["fps"]["renders"].get<int>(), 5) << side << ": one render per view";
+        EXPECT_GT(p["fps"]["shown"].get<double>(), 0.0) << side;
+        EXPECT_GT(p["fps"]["gpu"].get<double>(), p["fps"]["shown"].get<double>())
+            << side << ": a render's wall time holds its GPU frame and more";
+        EXPECT_NEAR(p["fps"]["gpu"].get<double>() * p["fps"]["gpu_frame_ms_median"].get<double>(),
+                    1000.0, 1e-6);
+        const nlohmann::json& m = p["gpu_memory_bytes"];
+        EXPECT_GT(m["pipeline"].get<uint64_t>(), 0u) << side;
+        EXPECT_GT(m["scene"].get<uint64_t>(), 0u) << side;
+        EXPECT_EQ(m["total"].get<uint64_t>(),
+                  m["pipeline"].get<uint64_t>() + m["scene"].get<uint64_t>());
+    }
+}
+
+// Pause holds the view: many frames later the head and the camera have not moved.
+TEST(ViewerPath, PauseHoldsTheView) {
+    using namespace pathtest;
+    const std::vector<Camera> views = writePath(pathFile("pause"), 12);
+    ASSERT_EQ(views.size(), 12u);
+    ViewRun r = runScript("path_pause",
+                          "wait\npath play\nframes 4\npath pause\nwait\nstats p1.json\n"
+                          "frames 30\nwait\nstats p2.json\nkey space\nframes 1\nstats p3.json\n",
+                          false, playing(views, false));
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json p1 = r.stats("p1.json"), p2 = r.stats("p2.json"), p3 = r.stats("p3.json");
+    const uint32_t k = p1["path"]["frame"].get<uint32_t>();
+    EXPECT_GE(k, 1u) << "played on from view 0";
+    EXPECT_LT(k, 11u) << "paused before the end";
+    EXPECT_EQ(p2["path"]["frame"], k);
+    EXPECT_FALSE(p2["path"]["playing"].get<bool>());
+    expectCamera(p2["camera"], views[k], "paused");
+    expectCamera(p2["pipeline_a"]["camera"], views[k], "paused, A's image");
+    EXPECT_TRUE(p3["path"]["playing"].get<bool>()) << "Space plays again";
+}
+
+// The reference's error of a view stays after the path moves on, marked stale and naming its
+// view, until the reference of the new view is done.
+TEST(ViewerPath, TheReferenceErrorStaysMarkedStaleWhileTheViewMoves) {
+    using namespace pathtest;
+    const std::vector<Camera> views = writePath(pathFile("stale"), 3);
+    ASSERT_EQ(views.size(), 3u);
+    ViewRun r = runScript("path_stale",
+                          "wait\nstats fresh.json\npath seek 2\nframes 1\nstats moved.json\n"
+                          "wait\nstats again.json\n",
+                          /*reference=*/true, playing(views, false));
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json fresh = r.stats("fresh.json"), moved = r.stats("moved.json"),
+                   again = r.stats("again.json");
+    ASSERT_FALSE(fresh["a_vs_reference_kept"].is_null());
+    EXPECT_FALSE(fresh["a_vs_reference_kept"]["stale"].get<bool>());
+    EXPECT_EQ(fresh["a_vs_reference_kept"]["view"], "path view 0 of 3");
+    EXPECT_EQ(fresh["a_vs_reference_kept"]["rmse"], fresh["a_vs_reference"]["rmse"]);
+    EXPECT_FALSE(moved.contains("a_vs_reference")) << "no metric against another view's reference";
+    ASSERT_FALSE(moved["a_vs_reference_kept"].is_null())
+        << "the error vanished when the view moved";
+    EXPECT_TRUE(moved["a_vs_reference_kept"]["stale"].get<bool>());
+    EXPECT_EQ(moved["a_vs_reference_kept"]["view"], "path view 0 of 3");
+    EXPECT_EQ(moved["a_vs_reference_kept"]["rmse"], fresh["a_vs_reference"]["rmse"]);
+    EXPECT_FALSE(again["a_vs_reference_kept"]["stale"].get<bool>());
+    EXPECT_EQ(again["a_vs_reference_kept"]["view"], "path view 2 of 3");
+}
+
+// --light-motion alone: the camera stays, the lights move per view (the image changes) and the
+// kept renderers follow them without a new plan.
+TEST(ViewerPath, MovingLightsChangeTheImageAtAStillCamera) {
+    using namespace pathtest;
+    auto lightsOnly = [](LoopSetup& setup) {
+        setup.viewer.initial.lightMotion = "orbit:0.5";
+        setup.viewer.path.frames = 3;
+        setup.viewer.path.source = "--light-motion";
+    };
+    ViewRun r = runScript("light_motion",
+                          "exposure 0\nsplit 1\nwait\nstats l0.json\nscreenshot l0.png\n"
+                          "path seek 2\nwait\nstats l2.json\nscreenshot l2.png\n",
+                          false, lightsOnly);
+    ASSERT_EQ(r.code, 0);
+    nlohmann::json l0 = r.stats("l0.json"), l2 = r.stats("l2.json");
+    EXPECT_EQ(l2["path"]["light_frame"], 2);
+    EXPECT_EQ(l0["camera"], l2["camera"]);
+    EXPECT_FALSE(l2["pipeline_a"]["planned"].get<bool>()) << "moved lights planned again";
+    EXPECT_GT(sceneAreaDiffers(r.shot("l0.png"), r.shot("l2.png")), 0u);
+}
+
+// A script's path lines need a path, a seek beyond it and a file that does not read are refused
+// with the line; `path load` of a good file plays as --camera-path does.
+TEST(ViewerPath, PathLinesWithoutAPathOrOutOfRangeFail) {
+    using namespace pathtest;
+    EXPECT_EQ(runScript("path_none", "path play\n").code, 2);
+    const std::vector<Camera> views = writePath(pathFile("range"), 3);
+    EXPECT_EQ(runScript("path_range", "path seek 3\n", false, playing(views, false)).code, 2);
+    EXPECT_EQ(runScript("path_load_bad", "path load missing.json\n").code, 2);
+    // A good file loads at its view 0, paused, and plays.
+    ViewRun loaded = runScript("path_load", "path load " + pathFile("range") +
+                                                "\nstats loaded.json\npath seek 2\nwait\nstats seek.json\n");
+    ASSERT_EQ(loaded.code, 0);
+    EXPECT_EQ(loaded.stats("loaded.json")["path"]["frames"], 3);
+    EXPECT_FALSE(loaded.stats("loaded.json")["path"]["playing"].get<bool>());
+    expectCamera(loaded.stats("seek.json")["pipeline_a"]["camera"], views[2], "loaded, view 2");
+}
+
+// A bad path file or light motion: one line naming the problem, exit 2, before any window.
+TEST(ViewerPath, ABadPathFileIsOneLineAndExitTwo) {
+    const std::string dir =
+        (std::filesystem::temp_directory_path() / "triptych_view_badpath").string();
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "/script.txt") << "wait\n";
+    std::ofstream(dir + "/bad.json")
+        << R"({"schema": "triptych.camera_path/1", "frames": 0, "keys": []})";
+    auto run = [&](const std::string& args) {
+        const std::string err = dir + "/stderr.txt";
+        const std::string cmd = std::string(TP_TRIPTYCH_EXE) +
+                                " view builtin:courtyard-small --res 160x90 --headless --script " +
+                                dir + "/script.txt --out " + dir + "/out " + args + " 2>" + err +
+                                " >/dev/null";
+        const int status = std::system(cmd.c_str());
+        std::ifstream in(err);
+        std::vector<std::string> lines;
+        for (std::string l; std::getline(in, l);)
+            lines.push_back(l);
+        return std::pair{WIFEXITED(status) ? WEXITSTATUS(status) : -1, lines};
+    };
+    for (const std::string& args :
+         {"--camera-path " + dir + "/bad.json", "--camera-path " + dir + "/missing.json",
+          std::string("--light-motion spin")}) {
+        auto [code, lines] = run(args);
+        EXPECT_EQ(code, 2) << args;
+        ASSERT_EQ(lines.size(), 1u) << args;
+        EXPECT_EQ(lines[0].rfind("triptych: ", 0), 0u) << lines[0];
+        const std::string named = args.substr(args.find(' ') + 1);
+        EXPECT_NE(lines[0].find(named.find('/') != std::string::npos ? named : "spin"),
+                  std::string::npos)
+            << lines[0];
+    }
     std::filesystem::remove_all(dir);
 }
 
