@@ -61,6 +61,7 @@ void compactList(uint tileIndex) {
 void cullTransparentIndices(uvec2 tile) {
     const uint tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
     const TransparentRun t = transparentRun(tile);
+    const TileBox box = makeTileBox(tile, kTileSize, vec2(frame.viewport.xy), frame.invProj, t.frustum);
     const uint candidates = t.blended.any ? candidateCount(tileIndex) : 0u; // none where no blended fragment is
     uint placed = 0u; // the earlier chunks' survivors: the same in every invocation
     for (uint first = 0u; first < candidates; first += TP_TL_TILE_LIGHT_CAPACITY) {
@@ -68,7 +69,7 @@ void cullTransparentIndices(uvec2 tile) {
         for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) sBits[w] = 0u;
         barrier();
         for (uint i = gl_LocalInvocationIndex; i < n; i += TP_GROUP * TP_GROUP)
-            if (lightInTile(lights[candidateLight(tileIndex, first + i)], t.frustum, frame.view))
+            if (lightInTileAndBox(lights[candidateLight(tileIndex, first + i)], t.frustum, box, frame.view))
                 atomicOr(sBits[i >> 5u], 1u << (i & 31u));
         barrier();
         compactBits(tileIndex, first, words, placed, false, t.start, t.capacity);
