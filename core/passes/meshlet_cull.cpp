@@ -12,12 +12,23 @@
 
 namespace tp::passes {
 
-MeshletCull::MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws)
-    : ctx_(ctx), scene_(scene), draws_(std::move(draws)) {
+std::vector<const DrawItem*> opaqueAndMaskedDraws(const SceneGpu& scene) {
+    std::vector<const DrawItem*> draws = scene.drawList(DrawFilter::Opaque);
+    for (const DrawItem* d : scene.drawList(DrawFilter::Mask))
+        draws.push_back(d);
+    return draws;
+}
+
+MeshletCull::MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws,
+                         bool firstTriangle)
+    : ctx_(ctx), scene_(scene), draws_(std::move(draws)), firstTriangle_(firstTriangle) {
     if (!ctx_.caps.drawIndirectCount)
         throw RendererError("--cull-geometry: device '" + ctx_.info.name +
                             "' lacks drawIndirectCount or multiDrawIndirect; use "
                             "--cull-geometry none");
+    if (firstTriangle_ && !ctx_.caps.drawIndirectFirstInstance)
+        throw RendererError("--cull-geometry: device '" + ctx_.info.name +
+                            "' lacks drawIndirectFirstInstance; use --cull-geometry none");
     scene.buildMeshlets(); // fills the draws' meshlet ranges in place
     slotOf_.assign(scene_.draws().size(), ~0u);
     uint32_t commands = 0;
@@ -64,6 +75,7 @@ void MeshletCull::prepare(FrameGraph& graph) {
         r.firstCommand = firstCommand_[rows.size()];
         r.vertexOffset = d->vertexOffset;
         r.flags = d->doubleSided ? 0u : TP_MC_FLAG_CONE; // never cone-cull a double-sided one
+        if (firstTriangle_) r.flags |= TP_MC_FLAG_FIRST_TRIANGLE;
         rows.push_back(r);
     }
     if (rows.empty()) rows.push_back({}); // a buffer of one row: no group reads it
