@@ -176,9 +176,17 @@ RendererStats MultipassForwardRenderer::stats() const {
           plan_.localLights ? double(plan_.meshesPerLightSum) / double(plan_.localLights) : 0.0);
     count("meshes_per_light_max", plan_.meshesPerLightMax);
     count("accumulation_bits", accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT ? 16.0 : 32.0);
-    if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled
+    if (cull_) { // --cull-geometry frustum: meshlets and triangles, submitted and culled
         for (const auto& c : cull_->counters())
             s.counters.push_back(c);
+        // The indirect draws the light passes issue: each light's meshes' kept meshlets (a
+        // CPU device runs each as a draw of its own; docs/geometry.md).
+        double meshletDraws = 0;
+        for (const LightBatch& b : plan_.batches)
+            for (const DrawItem* d : b.draws)
+                meshletDraws += cull_->kept(*d);
+        if (cull_->collected()) count("light_passes_meshlet_draws", meshletDraws);
+    }
     if (plan_.batches.empty())
         s.leftOut.push_back({"light_passes", plan_.localLights
                                                  ? "no local light touches a mesh on screen"

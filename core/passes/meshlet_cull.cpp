@@ -135,13 +135,21 @@ void MeshletCull::collect(FrameGraph& graph) {
     std::vector<gpu::MeshletCullStats> stats(draws_.size());
     std::memcpy(stats.data(), bytes.data(), stats.size() * sizeof(gpu::MeshletCullStats));
     submitted_ = frustum_ = cone_ = trianglesSubmitted_ = 0;
+    keptBySlot_.clear();
     for (const gpu::MeshletCullStats& s : stats) {
+        keptBySlot_.push_back(s.submitted);
         submitted_ += s.submitted;
         frustum_ += s.frustumCulled;
         cone_ += s.coneCulled;
         trianglesSubmitted_ += s.triangles;
     }
     collected_ = true;
+}
+
+uint32_t MeshletCull::kept(const DrawItem& d) const {
+    if (!holds(d)) return 0;
+    const uint32_t slot = slotOf_[d.index];
+    return slot < keptBySlot_.size() ? keptBySlot_[slot] : 0;
 }
 
 std::vector<std::pair<std::string, double>> MeshletCull::counters() const {

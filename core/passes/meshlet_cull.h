@@ -64,6 +64,10 @@ class MeshletCull {
     // triangles (all), triangles_submitted.
     void collect(FrameGraph& graph);
     std::vector<std::pair<std::string, double>> counters() const;
+    bool collected() const { return collected_; }
+    // After collect(): the meshlets kept of one of its draws (the indirect draws recording it
+    // issues); 0 before.
+    uint32_t kept(const DrawItem& d) const;
 
   private:
     void record(PassContext& pc);
@@ -81,6 +85,7 @@ class MeshletCull {
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     bool collected_ = false;
     uint64_t submitted_ = 0, frustum_ = 0, cone_ = 0, trianglesSubmitted_ = 0;
+    std::vector<uint32_t> keptBySlot_;
 };
 
 // What every pipeline's geometry passes cull: the scene's opaque then masked draws, in

@@ -5,52 +5,45 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <unordered_map>
 
 #include <meshoptimizer.h>
 
 namespace tp {
 namespace {
 
-struct Corners {
-    uint32_t a, b, c;
-    bool operator==(const Corners&) const = default;
-};
-
-struct CornersHash {
-    size_t operator()(const Corners& t) const {
-        uint64_t h = t.a * 0x9E3779B97F4A7C15ull;
-        h ^= (h >> 29) + t.b * 0xBF58476D1CE4E5B9ull;
-        h ^= (h >> 31) + t.c * 0x94D049BB133111EBull;
-        return size_t(h ^ (h >> 32));
-    }
-};
-
 // Each triangle of `reordered` (the builder's output) found among the mesh's triangles by its
-// corners. Triangles with the same three corners (duplicated geometry) are handed out in the
-// mesh's order, each once, so the result is a permutation.
+// corners (`source`, the mesh's index list). The mesh's triangles are bucketed by their first
+// corner (a counting sort: flat arrays, no hashing, a few candidates per vertex); copies of one
+// triangle (the same corners) are handed out in the mesh's order, each once, so the result is a
+// permutation.
 std::vector<uint32_t> findSourceTriangles(const std::vector<uint32_t>& source,
                                           const std::vector<uint32_t>& reordered) {
     const uint32_t triangles = uint32_t(reordered.size() / 3);
-    std::unordered_map<Corners, uint32_t, CornersHash> first; // the next unclaimed of a key
-    std::vector<uint32_t> next(triangles, ~0u);               // the one after it, ~0u: none
-    first.reserve(triangles);
-    for (uint32_t t = triangles; t-- > 0;) {
-        const Corners key{source[t * 3], source[t * 3 + 1], source[t * 3 + 2]};
-        auto [it, fresh] = first.try_emplace(key, t);
-        if (!fresh) {
-            next[t] = it->second;
-            it->second = t;
-        }
-    }
-    std::vector<uint32_t> out(triangles);
+    uint32_t vertices = 0;
+    for (uint32_t t = 0; t < triangles; ++t)
+        vertices = std::max(vertices, source[t * 3] + 1);
+    std::vector<uint32_t> first(size_t(vertices) + 1, 0); // bucket starts, by first corner
+    for (uint32_t t = 0; t < triangles; ++t)
+        ++first[source[t * 3] + 1];
+    for (uint32_t v = 0; v < vertices; ++v)
+        first[v + 1] += first[v];
+    std::vector<uint32_t> bucket(triangles), fill(first.begin(), first.end() - 1);
+    for (uint32_t t = 0; t < triangles; ++t)
+        bucket[fill[source[t * 3]]++] = t; // ascending within a bucket
+    std::vector<bool> claimed(triangles, false);
+    std::vector<uint32_t> out(triangles, ~0u);
     for (uint32_t t = 0; t < triangles; ++t) {
-        auto it = first.find({reordered[t * 3], reordered[t * 3 + 1], reordered[t * 3 + 2]});
+        const uint32_t a = reordered[t * 3], b = reordered[t * 3 + 1], c = reordered[t * 3 + 2];
+        for (uint32_t k = a < vertices ? first[a] : 0; a < vertices && k < first[a + 1]; ++k) {
+            const uint32_t s = bucket[k];
+            if (claimed[s] || source[s * 3 + 1] != b || source[s * 3 + 2] != c) continue;
+            claimed[s] = true;
+            out[t] = s;
+            break;
+        }
         // meshoptimizer keeps each triangle's corners in order; anything else is a bug here.
-        if (it == first.end() || it->second == ~0u)
+        if (out[t] == ~0u)
             throw std::logic_error("buildMeshlets: a meshlet triangle is not the mesh's");
-        out[t] = it->second;
-        it->second = next[it->second];
     }
     return out;
 }
