@@ -26,7 +26,8 @@ KnobSchema knobs() {
             la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),   gbufferKnob().knob(),
             msaaShadingKnob().knob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
-            lightingKnob().knob(),     hdrKnob()};
+            lightingKnob().knob(),     hdrKnob(),
+            cullGeometryKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -40,6 +41,7 @@ Settings readSettings(const RenderSettings& s) {
     d.gbuffer = gbufferKnob().in(s);
     d.lighting = lightingKnob().in(s);
     d.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32
+    d.cullGeometry = cullGeometryKnob().in(s);
     return d;
 }
 

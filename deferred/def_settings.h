@@ -2,6 +2,7 @@
 // Deferred's knobs and the typed settings its passes read, turned from RenderSettings once in
 // the factory (register.cpp builds the schema from the same declarations).
 #include "core/lightassign/knobs.h"
+#include "core/renderer/cull_geometry_knob.h"
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
@@ -21,6 +22,7 @@ struct Settings {
     GBuffer gbuffer = GBuffer::Compact;
     Lighting lighting = Lighting::Tiled;
     Hdr hdr = Hdr::Fp32;
+    CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the G-buffer pass
 };
 
 KnobSchema knobs();

@@ -10,6 +10,7 @@
 #include "core/gpu/readback.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/hybrid_blended.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
 #include "deferred/def_settings.h"
@@ -68,7 +69,13 @@ class DeferredRenderer final : public Renderer {
             t_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
-        gbuffer_.plan(graph, t_);
+        if (def_.cullGeometry == CullGeometry::Frustum) {
+            // The opaque and masked draws' meshlets, culled for the G-buffer pass; the blended
+            // forward pass draws its meshes whole, back to front.
+            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_));
+            cull_->plan(graph);
+        }
+        gbuffer_.plan(graph, t_, cull_ ? &*cull_ : nullptr);
         // Blended depth bounds: the fragments of the blended pass at the rate it shades them
         // (per pixel or per sample under MSAA), before the transparent lists are culled against
         // them.
@@ -121,6 +128,7 @@ class DeferredRenderer final : public Renderer {
     }
 
     void prepare(FrameGraph& graph) override {
+        if (cull_) cull_->prepare(graph);
         gbuffer_.prepare();
         if (shadows_) shadows_->prepare(graph); // its set layout, before the passes sampling it
         if (t_.tileStats.valid()) lighting_.prepare(graph);
@@ -156,6 +164,7 @@ class DeferredRenderer final : public Renderer {
             for (size_t i = 0; i < mask.pixelCount(); ++i)
                 volumeEdges_ += mask.rgba[i * 4] > 0.5f ? 1 : 0;
         }
+        if (cull_) cull_->collect(graph);
     }
 
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;
@@ -199,6 +208,7 @@ class DeferredRenderer final : public Renderer {
     uint32_t slices() const { return def_.assign.slicesOrZero(); }
     DeferredTargets t_;
     bool hasBlended_ = false;
+    std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     uint64_t volumeEdges_ = 0; // edge pixels found by the volumes base pass (MSAA)
     GBufferPass gbuffer_;
     std::optional<ShadowMaps> shadows_; // tiled lighting: the atlas (shadow_maps) with --shadows
@@ -231,6 +241,9 @@ RendererStats DeferredRenderer::stats() const {
     s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});
     s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved
                           def_.hdr == def::Hdr::Fp16 ? 16.0 : 32.0});
+    if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled
+        for (const auto& c : cull_->counters())
+            s.counters.push_back(c);
     const TileStatTotals totals = sumTileStats(tileStats_);
     double edges = totals.edges;
     double pixels = double(def_.width) * def_.height;

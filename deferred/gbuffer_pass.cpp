@@ -4,6 +4,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/passes/meshlet_cull.h"
 #include "deferred/deferred_shared.h"
 
 namespace tp {
@@ -14,8 +15,9 @@ GBufferPass::~GBufferPass() {
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
 }
 
-void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t) {
+void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, const passes::MeshletCull* cull) {
     t_ = &t;
+    cull_ = cull;
     const auto samples = VkSampleCountFlagBits(t.layout.samples);
     for (const GBufferTarget& c : t.layout.colors)
         t.gbuffer.push_back(graph.createImage(c.name, {c.format, 0, 0, samples, c.purpose}));
@@ -31,6 +33,9 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t) {
         t.gbufferDepth = t.depth;
         uses.push_back({t.depth, Use::DepthAttachment});
     }
+    if (cull)
+        for (const PassUse& u : cull->drawUses())
+            uses.push_back(u);
     graph.addPass("gbuffer", uses, [this](PassContext& pc) { record(pc); });
 }
 
@@ -67,8 +72,19 @@ void GBufferPass::record(PassContext& pc) {
     DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}};
     beginRendering(pc, colors, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque, opaque_);
-    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Mask, masked_);
+    if (cull_) {
+        scene_.bindMeshletIndexBuffer(pc.cmd);
+        for (auto [mode, pipeline] :
+             {std::pair{DrawFilter::Opaque, opaque_}, std::pair{DrawFilter::Mask, masked_}}) {
+            if (!pipeline) continue;
+            vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            for (const DrawItem* d : scene_.drawList(mode))
+                cull_->recordDraw(pc, layout_, *d);
+        }
+    } else {
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque, opaque_);
+        scene_.recordDraws(pc.cmd, layout_, DrawFilter::Mask, masked_);
+    }
     endRendering(pc);
 }
 

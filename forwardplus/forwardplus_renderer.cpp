@@ -95,9 +95,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (fp_.cullGeometry == CullGeometry::Frustum) {
             // The opaque and masked draws, culled once per frame for the prepass and
             // forward_opaque alike (the EQUAL test needs the same triangles in both).
-            std::vector<const DrawItem*> culled = prepass.opaque;
-            culled.insert(culled.end(), prepass.masked.begin(), prepass.masked.end());
-            cull_.emplace(ctx_, scene_, std::move(culled));
+            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_));
             cull_->plan(graph);
             prepass.cull = &*cull_;
         }

@@ -40,7 +40,7 @@ void BasePass::record(PassContext& pc, const Targets& t, bool resolve) {
         bindSceneDraws(pc.cmd, env_, pipeline_);
         for (const auto* list : {&env_.plan.opaque, &env_.plan.masked}) {
             for (const DrawItem* d : *list)
-                recordDraw(pc.cmd, env_.layout, *d);
+                drawOpaque(pc, env_, *d);
             draws_ += uint32_t(list->size());
         }
     }

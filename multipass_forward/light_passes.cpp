@@ -75,7 +75,7 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
             vkCmdSetStencilReference(pc.cmd, VK_STENCIL_FACE_FRONT_AND_BACK, tag);
             setScissor(pc.cmd, batch.scissor);
             for (const DrawItem* d : batch.draws)
-                recordDraw(pc.cmd, env_.layout, *d, batch.light);
+                drawOpaque(pc, env_, *d, batch.light);
             draws_ += uint32_t(batch.draws.size());
         }
     }

@@ -28,11 +28,17 @@ const ChoiceKnob<BlendedLights>& blendedLightsKnob() {
 }
 
 KnobSchema knobs() {
-    return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob()};
+    return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob(),
+            cullGeometryKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
-    return {s.width, s.height, readSampling(s), accumKnob().in(s), blendedLightsKnob().in(s)};
+    return {s.width,
+            s.height,
+            readSampling(s),
+            accumKnob().in(s),
+            blendedLightsKnob().in(s),
+            cullGeometryKnob().in(s)};
 }
 
 } // namespace tp::mp

@@ -1,6 +1,7 @@
 #pragma once
 // Multipass forward's knobs and the typed settings its passes read (register.cpp builds the
 // schema from the same declarations).
+#include "core/renderer/cull_geometry_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
 
@@ -14,6 +15,7 @@ struct Settings {
     Sampling sampling;
     Accum accum = Accum::Fp32;
     BlendedLights blendedLights = BlendedLights::Under;
+    CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: prepass, base, light passes
 };
 
 KnobSchema knobs();

@@ -6,6 +6,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/depth_prepass.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "multipass_forward/passes.h"
 
@@ -23,6 +24,7 @@ class MultipassForwardRenderer final : public Renderer {
           manyViews_(info.settings.manyViews), plan_(planLights(info.scene, lightBlended())) {}
 
     ~MultipassForwardRenderer() override {
+        cull_.reset();
         prepass_.reset();
         base_.reset();
         lights_.reset();
@@ -41,18 +43,24 @@ class MultipassForwardRenderer final : public Renderer {
         hasLights_ = !plan_.batches.empty() || (manyViews_ && plan_.localLights > 0);
         hasBlended_ = !plan_.blended.empty() || (manyViews_ && scene_.hasDraws(DrawFilter::Blend));
         const bool hasLights = hasLights_, hasBlended = hasBlended_;
-        prepass_ = std::make_unique<passes::DepthPrepass>(
-            ctx_, scene_,
-            passes::DepthPrepassParams{mp_.sampling.samples, plan_.opaque, plan_.masked,
-                                       manyViews_, kDepthFormat});
+        passes::DepthPrepassParams prepass{mp_.sampling.samples, plan_.opaque, plan_.masked,
+                                           manyViews_, kDepthFormat};
+        if (mp_.cullGeometry == CullGeometry::Frustum) {
+            // Every opaque and masked draw of the scene, not only those on screen now: the
+            // passes record the on-screen ones of each view (updateView) from the same slots.
+            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_));
+            cull_->plan(graph);
+            prepass.cull = &*cull_;
+        }
+        prepass_ = std::make_unique<passes::DepthPrepass>(ctx_, scene_, std::move(prepass));
         prepass_->plan(graph,
                        {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;
-        graph.addPass("base_pass", shadingUses(t_, last),
+        graph.addPass("base_pass", withCullUses(shadingUses(t_, last)),
                       [this, last](PassContext& pc) { base_->record(pc, t_, last); });
         if (hasLights) {
             last = !hasBlended;
-            std::vector<PassUse> uses = shadingUses(t_, last, true);
+            std::vector<PassUse> uses = withCullUses(shadingUses(t_, last, true));
             addShadowUse(uses, &*shadows_);
             graph.addPass("light_passes", uses,
                           [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
@@ -70,7 +78,10 @@ class MultipassForwardRenderer final : public Renderer {
     void prepare(FrameGraph& graph) override {
         shadows_->prepare(graph);
         layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, shadows_->setLayout());
-        PassEnv env{ctx_, scene_, mp_, plan_, layout_, accumFormat_, manyViews_, &*shadows_};
+        PassEnv env{ctx_,       scene_,     mp_,
+                    plan_,      layout_,    accumFormat_,
+                    manyViews_, &*shadows_, cull_ ? &*cull_ : nullptr};
+        if (cull_) cull_->prepare(graph);
         prepass_->prepare();
         base_ = std::make_unique<BasePass>(env);
         lights_ = std::make_unique<LightPasses>(env);
@@ -93,9 +104,21 @@ class MultipassForwardRenderer final : public Renderer {
         return true;
     }
 
+    void collectStats(FrameGraph& graph) override {
+        if (cull_) cull_->collect(graph);
+    }
+
     RendererStats stats() const override;
 
   private:
+    // A pass that draws opaque and masked meshes (drawOpaque) reads the culled commands.
+    std::vector<PassUse> withCullUses(std::vector<PassUse> uses) const {
+        if (cull_)
+            for (const PassUse& u : cull_->drawUses())
+                uses.push_back(u);
+        return uses;
+    }
+
     void shadowStats(RendererStats& s) const;
     bool lightBlended() const { return mp_.blendedLights != BlendedLights::OnePass; }
 
@@ -125,6 +148,7 @@ class MultipassForwardRenderer final : public Renderer {
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::optional<ShadowMaps> shadows_; // one light's map (shadow_map) with --shadows
+    std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     std::unique_ptr<passes::DepthPrepass> prepass_;
     std::unique_ptr<BasePass> base_;
     std::unique_ptr<LightPasses> lights_;
@@ -152,6 +176,17 @@ RendererStats MultipassForwardRenderer::stats() const {
           plan_.localLights ? double(plan_.meshesPerLightSum) / double(plan_.localLights) : 0.0);
     count("meshes_per_light_max", plan_.meshesPerLightMax);
     count("accumulation_bits", accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT ? 16.0 : 32.0);
+    if (cull_) { // --cull-geometry frustum: meshlets and triangles, submitted and culled
+        for (const auto& c : cull_->counters())
+            s.counters.push_back(c);
+        // The indirect draws the light passes issue: each light's meshes' kept meshlets (a
+        // CPU device runs each as a draw of its own; docs/geometry.md).
+        double meshletDraws = 0;
+        for (const LightBatch& b : plan_.batches)
+            for (const DrawItem* d : b.draws)
+                meshletDraws += cull_->kept(*d);
+        if (cull_->collected()) count("light_passes_meshlet_draws", meshletDraws);
+    }
     if (plan_.batches.empty())
         s.leftOut.push_back({"light_passes", plan_.localLights
                                                  ? "no local light touches a mesh on screen"

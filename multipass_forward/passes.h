@@ -20,6 +20,9 @@
 namespace tp {
 class GpuContext;
 class ShadowMaps;
+namespace passes {
+class MeshletCull;
+}
 } // namespace tp
 
 namespace tp::mp {
@@ -52,6 +55,10 @@ struct PassEnv {
     // and blended passes before each shadowed light (ShadowedShading); null or not enabled():
     // the passes record exactly what they recorded before shadows existed.
     ShadowMaps* shadows = nullptr;
+    // --cull-geometry frustum: the prepass, base and light passes draw the meshlets this pass
+    // kept of their opaque and masked draws (drawOpaque); null: the meshes whole. The blended
+    // pass always draws whole meshes (its triangle order is its own).
+    const passes::MeshletCull* cull = nullptr;
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass
@@ -106,8 +113,11 @@ class ShadowedShading {
 GraphicsPipelineDesc shadingDesc(const PassEnv& env, AlphaMode mode);
 // Draws are recorded with recordDraw (core/gpuscene/scene_gpu.h); a light pass
 // gives its light as DrawPush.pad0 (TP_MP_LIGHT_INDEX), ignored by non-light shaders.
-// Binds `pipeline`, the scene set and the scene's index buffer: what every draw loop needs.
+// Binds `pipeline`, the scene set and the index buffer drawOpaque's draws read (the meshlet
+// index buffer when culled): what the base and light passes' draw loops need.
 void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline);
+// One opaque or masked draw: its culled meshlets (env.cull) or the whole mesh.
+void drawOpaque(PassContext& pc, const PassEnv& env, const DrawItem& d, uint32_t pad0 = 0);
 void setScissor(VkCommandBuffer cmd, const ScreenRect& r);
 void destroyPipeline(GpuContext& ctx, VkPipeline& pipeline);
 

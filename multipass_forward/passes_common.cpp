@@ -2,6 +2,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/renderer/msaa_knob.h"
 #include "multipass_forward/passes.h"
 
@@ -39,7 +40,17 @@ std::string fragmentShader(const PassEnv& env, const std::string& stem) {
 void bindSceneDraws(VkCommandBuffer cmd, const PassEnv& env, VkPipeline pipeline) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     env.scene.bindSceneSet(cmd, env.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    env.scene.bindIndexBuffer(cmd);
+    if (env.cull)
+        env.scene.bindMeshletIndexBuffer(cmd);
+    else
+        env.scene.bindIndexBuffer(cmd);
+}
+
+void drawOpaque(PassContext& pc, const PassEnv& env, const DrawItem& d, uint32_t pad0) {
+    if (env.cull)
+        env.cull->recordDraw(pc, env.layout, d, pad0);
+    else
+        recordDraw(pc.cmd, env.layout, d, pad0);
 }
 
 void setScissor(VkCommandBuffer cmd, const ScreenRect& r) {

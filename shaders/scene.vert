@@ -7,8 +7,14 @@
 //   source lines compute gl_Position and both outputs, so they are those of the full variant.
 //   On lavapipe every output costs per vertex and every interpolant per triangle and per
 //   fragment block (docs/clustered.md, "The blended depth bounds on lavapipe").
+//   TP_VERT_MESHLET_TRIANGLE (scene_meshlet_vert, scene_position_meshlet_vert): also the
+//   culled meshlet's first triangle, flat (the visibility pass's ids, include/meshlets.h).
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
+#ifdef TP_VERT_MESHLET_TRIANGLE
+#include "include/meshlets.h"
+layout(location = TP_LOCATION_MESHLET_TRIANGLE) flat out uint outMeshletTriangle;
+#endif
 
 layout(location = 0) out vec3 outPosition;
 #ifndef TP_VERT_POSITION_ONLY
@@ -43,6 +49,9 @@ void main() {
     outColor = v.color;
 #endif
     outOne = frame.projParams.z;
+#ifdef TP_VERT_MESHLET_TRIANGLE
+    outMeshletTriangle = uint(gl_InstanceIndex); // firstInstance: one instance per command
+#endif
     precise vec4 clip = frame.viewProj * vec4(relative, 1.0);
     gl_Position = clip;
 }

@@ -56,12 +56,17 @@ uint32_t Settings::evaluationsPerPixel(bool blendedBudget) const {
 }
 
 KnobSchema knobs() {
-    return {la::tileSizeKnob().knob(), la::lightCullKnob().knob(),
-            la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
+    return {la::tileSizeKnob().knob(),
+            la::lightCullKnob().knob(),
+            la::lightBinKnob().knob(),
+            la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),
             msaaShadingKnob().knob(), // pixel: once per pixel and triangle; sample: every sample
-            hdrKnob(), blendedKnob().knob(), blendedCapacityKnob().knob(),
-            derivativesKnob().knob()};
+            hdrKnob(),
+            blendedKnob().knob(),
+            blendedCapacityKnob().knob(),
+            derivativesKnob().knob(),
+            cullGeometryKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -76,6 +81,7 @@ Settings readSettings(const RenderSettings& s) {
     v.blended = blendedKnob().in(s);
     v.blendedCapacityPercent = blendedCapacityKnob().in(s);
     v.derivatives = derivativesKnob().in(s);
+    v.cullGeometry = cullGeometryKnob().in(s);
     if (auto seen = s.capacities.find(kSeenFragments); seen != s.capacities.end())
         v.blendedSeen = seen->second;
     return v;

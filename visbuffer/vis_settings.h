@@ -5,6 +5,7 @@
 // lighting's radiance precision) and its own three: where blended surfaces are shaded, the
 // size of the blended fragment lists and the texture footprint's derivatives.
 #include "core/lightassign/knobs.h"
+#include "core/renderer/cull_geometry_knob.h"
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
@@ -45,6 +46,7 @@ struct Settings {
     Blended blended = Blended::Compute;
     Derivatives derivatives = Derivatives::Quad;
     uint32_t blendedCapacityPercent = 0; // 0: the derived bound
+    CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the visibility pass
     // Many views: the blended fragments an earlier plan of this session overflowed with, times
     // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).
     uint64_t blendedSeen = 0;

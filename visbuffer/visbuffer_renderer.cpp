@@ -10,6 +10,7 @@
 #include "core/gpu/resources.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/hybrid_blended.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "core/passes/tiled_lighting.h"
 #include "visbuffer/blended_ids_pass.h"
@@ -67,7 +68,13 @@ class VisbufferRenderer final : public Renderer {
             lt_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
-        ids_ = visibility_.plan(graph, samples, depth_);
+        if (vis_.cullGeometry == CullGeometry::Frustum) {
+            // Every opaque and masked draw's meshlets, culled for the visibility pass; each
+            // command carries its meshlet's first triangle for the ids (visibility_pass.h).
+            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_), true);
+            cull_->plan(graph);
+        }
+        ids_ = visibility_.plan(graph, samples, depth_, cull_ ? &*cull_ : nullptr);
         if (blendInCompute_)
             lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
                                       vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,
@@ -105,7 +112,8 @@ class VisbufferRenderer final : public Renderer {
     }
 
     void prepare(FrameGraph& graph) override {
-        visibility_.prepare();
+        if (cull_) cull_->prepare(graph);
+        visibility_.prepare(graph);
         shadows_->prepare(graph); // its set layout, before the passes sampling it
         lighting_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
@@ -141,6 +149,7 @@ class VisbufferRenderer final : public Renderer {
             raw = readbackBuffer(ctx_, graph.buffer(lists_.counters));
             std::memcpy(blendCounters_, raw.data(), sizeof(blendCounters_));
         }
+        if (cull_) cull_->collect(graph);
     }
 
     // Many views, derived pool: a view that dropped blended fragments is rendered again with a
@@ -204,6 +213,7 @@ class VisbufferRenderer final : public Renderer {
     bool hasBlended_ = false;
     bool blendInCompute_ = false; // --vis-blended compute in a scene with blended draws
     vis::DrawTable table_;
+    std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     vis::VisibilityPass visibility_;
     vis::BlendedIdsPass blendedIds_; // --vis-blended compute
     vis::BlendedListTargets lists_;
@@ -263,6 +273,9 @@ RendererStats VisbufferRenderer::stats() const {
     s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // fp32 id, beside depth
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
+    if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled
+        for (const auto& c : cull_->counters())
+            s.counters.push_back(c);
     // --vis-derivatives, resolved: 0 analytic, 1 quad fine, 2 quad coarse.
     s.counters.push_back({"uv_derivatives_mode", double(derivativesMode())});
     s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved

@@ -4,6 +4,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/passes/meshlet_cull.h"
 #include "core/renderer/renderer.h"
 
 namespace tp::vis {
@@ -12,12 +13,15 @@ VisibilityPass::~VisibilityPass() {
     if (opaque_) vkDestroyPipeline(ctx_.device, opaque_, nullptr);
     if (masked_) vkDestroyPipeline(ctx_.device, masked_, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
 }
 
 VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
-                                       ResourceHandle resolvedDepth) {
+                                       ResourceHandle resolvedDepth,
+                                       const passes::MeshletCull* cull) {
     samples_ = samples;
     resolved_ = resolvedDepth;
+    cull_ = cull;
     const auto count = VkSampleCountFlagBits(samples);
     t_.ids = graph.createImage("visibility_ids",
                                {VK_FORMAT_R32_SFLOAT, 0, 0, count,
@@ -33,28 +37,39 @@ VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
         t_.depth = resolvedDepth;
         uses.push_back({resolvedDepth, Use::DepthAttachment});
     }
+    if (cull)
+        for (const PassUse& u : cull->drawUses())
+            uses.push_back(u);
     graph.addPass("visibility", uses, [this](PassContext& pc) { record(pc); });
     return t_;
 }
 
-void VisibilityPass::prepare() {
-    layout_ = scene_.createPipelineLayout();
+void VisibilityPass::prepare(FrameGraph& graph) {
     GraphicsPipelineDesc d;
+    // Culled: the map from meshlet order back to each draw's triangles, in set 1.
+    const std::string meshlets = cull_ ? "_meshlet" : "";
+    if (cull_) {
+        set_ = graph.createPassSet(
+            "visibility", VK_NULL_HANDLE,
+            {{TP_VIS_BINDING_SOURCE_TRIANGLES, scene_.meshletSourceTriangleBuffer()}});
+        d.passSet = &set_;
+    }
+    layout_ = scene_.createPipelineLayout(cull_ ? set_.layout : VK_NULL_HANDLE);
     d.colorFormats = {VK_FORMAT_R32_SFLOAT};
     d.samples = VkSampleCountFlagBits(samples_);
     d.layout = layout_;
     if (!table_.opaque.empty()) {
         // Opaque: no material, so scene.vert's position-only variant (the same gl_Position).
-        d.vertexShader = "scene_position_vert";
-        d.fragmentShader = "vis_visibility_frag";
+        d.vertexShader = "scene_position" + meshlets + "_vert";
+        d.fragmentShader = "vis_visibility" + meshlets + "_frag";
         d.specConstants = scene_.specConstants(AlphaMode::Opaque);
         d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
         opaque_ = createGraphicsPipeline(ctx_, d);
     }
     if (!table_.masked.empty()) {
         // Masked: the alpha test per sample (`sample` inputs), as prepass_mask.frag.
-        d.vertexShader = "scene_vert";
-        d.fragmentShader = "vis_visibility_masked_frag";
+        d.vertexShader = "scene" + meshlets + "_vert";
+        d.fragmentShader = "vis_visibility_masked" + meshlets + "_frag";
         d.sampleShading = samples_ > 1;
         d.specConstants = scene_.specConstants(AlphaMode::Mask);
         d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
@@ -68,12 +83,21 @@ void VisibilityPass::record(PassContext& pc) {
     DepthTarget depth{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}};
     beginRendering(pc, {ids}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    scene_.bindIndexBuffer(pc.cmd);
+    if (cull_) {
+        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
+                                &set_.set, 0, nullptr);
+        scene_.bindMeshletIndexBuffer(pc.cmd);
+    } else {
+        scene_.bindIndexBuffer(pc.cmd);
+    }
     auto drawAll = [&](VkPipeline pipeline, const std::vector<TableDraw>& draws) {
         if (!pipeline) return;
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         for (const TableDraw& t : draws)
-            recordDraw(pc.cmd, layout_, *t.item, t.row);
+            if (cull_)
+                cull_->recordDraw(pc, layout_, *t.item, t.row);
+            else
+                recordDraw(pc.cmd, layout_, *t.item, t.row);
     };
     drawAll(opaque_, table_.opaque);
     drawAll(masked_, table_.masked);

@@ -4,6 +4,12 @@
 // nothing else: 4 bytes of id per sample beside depth. Masked draws alpha-test per sample
 // under MSAA, as the depth prepass does. Under MSAA the depth is resolved (sample 0) into the
 // exported "depth"; blended draws are left to the hybrid forward pass.
+//
+// With a MeshletCull (--cull-geometry frustum) it draws the meshlets that pass kept, each
+// command's firstInstance its meshlet's first triangle: the shaders' meshlet variants map
+// gl_PrimitiveID back to the draw's triangle (SceneGpu::meshletSourceTriangleBuffer, bound in
+// its set 1), so every id is the one the whole draw writes (docs/geometry.md).
+#include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "visbuffer/draw_table.h"
 
@@ -11,6 +17,9 @@ namespace tp {
 
 class GpuContext;
 class SceneGpu;
+namespace passes {
+class MeshletCull;
+}
 
 namespace vis {
 
@@ -24,9 +33,11 @@ class VisibilityPass {
     VisibilityPass(GpuContext& ctx, SceneGpu& scene, const DrawTable& table)
         : ctx_(ctx), scene_(scene), table_(table) {}
     ~VisibilityPass();
-    // resolvedDepth: the single-sample "depth" output (written directly at 1x).
-    VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth);
-    void prepare();
+    // resolvedDepth: the single-sample "depth" output (written directly at 1x). cull: the
+    // meshlets to draw (made with firstTriangle), or null to draw the meshes whole.
+    VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth,
+                           const passes::MeshletCull* cull = nullptr);
+    void prepare(FrameGraph& graph);
 
   private:
     void record(PassContext& pc);
@@ -36,6 +47,8 @@ class VisibilityPass {
     uint32_t samples_ = 1;
     VisibilityTargets t_;
     ResourceHandle resolved_;
+    const passes::MeshletCull* cull_ = nullptr;
+    PassSet set_; // culled: the source triangles
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
 };

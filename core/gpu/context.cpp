@@ -183,6 +183,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.standardSampleLocations = p.limits.standardSampleLocations;
     c.geometryShader = f.geometryShader;
     c.drawIndirectCount = f12.drawIndirectCount && f.multiDrawIndirect;
+    c.drawIndirectFirstInstance = f.drawIndirectFirstInstance;
     return c;
 }
 
@@ -234,6 +235,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     features.features.independentBlend = VK_TRUE;
     features.features.geometryShader = caps.geometryShader;
     features.features.multiDrawIndirect = caps.drawIndirectCount;
+    features.features.drawIndirectFirstInstance = caps.drawIndirectFirstInstance;
 
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;

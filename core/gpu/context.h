@@ -63,6 +63,9 @@ struct DeviceCaps {
     // Culled meshlets are drawn with vkCmdDrawIndexedIndirectCount, many draws per call
     // (Vulkan 1.2's drawIndirectCount, 1.0's multiDrawIndirect): core/passes/meshlet_cull.h.
     bool drawIndirectCount = false;
+    // Indirect draws with a firstInstance other than 0 (1.0's drawIndirectFirstInstance): the
+    // visibility pass's culled draws carry each meshlet's first triangle in it.
+    bool drawIndirectFirstInstance = false;
 };
 
 class GpuContext {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "core/camera/camera.h"
 #include "core/gpu/context.h"
@@ -149,6 +150,8 @@ void SceneGpu::buildMeshlets() {
             meshlets.push_back(g);
         }
         meshletIndices.insert(meshletIndices.end(), ml.indices.begin(), ml.indices.end());
+        sourceTriangles_.insert(sourceTriangles_.end(), ml.sourceTriangles.begin(),
+                                ml.sourceTriangles.end());
     }
     meshletCount_ = uint32_t(meshlets.size());
     if (meshlets.empty()) meshlets.push_back({}); // a buffer of one: nothing draws it
@@ -161,6 +164,21 @@ void SceneGpu::buildMeshlets() {
         ctx_, meshletIndices.data(), meshletIndices.size() * sizeof(uint32_t),
         VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
         {"scene", "", "meshlet_indices", "triangle indices in meshlet order (culled draws)"});
+}
+
+VkBuffer SceneGpu::meshletSourceTriangleBuffer() {
+    if (!meshletsBuilt_)
+        throw std::logic_error("SceneGpu: meshlet source triangles asked before buildMeshlets()");
+    if (!meshletSourceTriangles_.buffer) {
+        if (sourceTriangles_.empty()) sourceTriangles_.push_back(0); // a buffer of one
+        meshletSourceTriangles_ = createBufferWithData(
+            ctx_, sourceTriangles_.data(), sourceTriangles_.size() * sizeof(uint32_t),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            {"scene", "", "meshlet_source_triangles",
+             "per meshlet triangle: its triangle in its draw (visibility ids of culled draws)"});
+        sourceTriangles_ = {};
+    }
+    return meshletSourceTriangles_.buffer;
 }
 
 void SceneGpu::uploadMaterials() {

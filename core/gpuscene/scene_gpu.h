@@ -98,6 +98,11 @@ class SceneGpu {
     bool meshletsBuilt() const { return meshletsBuilt_; }
     VkBuffer meshletBuffer() const { return meshlets_.buffer; }
     void bindMeshletIndexBuffer(VkCommandBuffer cmd) const;
+    // Per triangle of the meshlet index buffer: its triangle within its draw in the scene's
+    // index buffer (MeshMeshlets::sourceTriangles), for the visibility buffer's ids, which must
+    // name the triangles a whole draw names. Uploaded by the first call (ledger: scene,
+    // meshlet_source_triangles), after buildMeshlets(); other pipelines never spend it.
+    VkBuffer meshletSourceTriangleBuffer();
     uint32_t meshletCount() const { return meshletCount_; }
     double meshletBuildMs() const { return meshletBuildMs_; } // CPU time of the build
     // Every draw in upload order (DrawItem::index is its place).
@@ -129,7 +134,8 @@ class SceneGpu {
     GpuContext& ctx_;
     const Scene& scene_;
     Buffer vertices_, indices_, materials_, lights_, frameBuffer_;
-    Buffer meshlets_, meshletIndices_;
+    Buffer meshlets_, meshletIndices_, meshletSourceTriangles_;
+    std::vector<uint32_t> sourceTriangles_; // kept from buildMeshlets until uploaded
     uint32_t meshletCount_ = 0;
     double meshletBuildMs_ = 0.0;
     bool meshletsBuilt_ = false;

@@ -12,12 +12,23 @@
 
 namespace tp::passes {
 
-MeshletCull::MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws)
-    : ctx_(ctx), scene_(scene), draws_(std::move(draws)) {
+std::vector<const DrawItem*> opaqueAndMaskedDraws(const SceneGpu& scene) {
+    std::vector<const DrawItem*> draws = scene.drawList(DrawFilter::Opaque);
+    for (const DrawItem* d : scene.drawList(DrawFilter::Mask))
+        draws.push_back(d);
+    return draws;
+}
+
+MeshletCull::MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws,
+                         bool firstTriangle)
+    : ctx_(ctx), scene_(scene), draws_(std::move(draws)), firstTriangle_(firstTriangle) {
     if (!ctx_.caps.drawIndirectCount)
         throw RendererError("--cull-geometry: device '" + ctx_.info.name +
                             "' lacks drawIndirectCount or multiDrawIndirect; use "
                             "--cull-geometry none");
+    if (firstTriangle_ && !ctx_.caps.drawIndirectFirstInstance)
+        throw RendererError("--cull-geometry: device '" + ctx_.info.name +
+                            "' lacks drawIndirectFirstInstance; use --cull-geometry none");
     scene.buildMeshlets(); // fills the draws' meshlet ranges in place
     slotOf_.assign(scene_.draws().size(), ~0u);
     uint32_t commands = 0;
@@ -64,6 +75,7 @@ void MeshletCull::prepare(FrameGraph& graph) {
         r.firstCommand = firstCommand_[rows.size()];
         r.vertexOffset = d->vertexOffset;
         r.flags = d->doubleSided ? 0u : TP_MC_FLAG_CONE; // never cone-cull a double-sided one
+        if (firstTriangle_) r.flags |= TP_MC_FLAG_FIRST_TRIANGLE;
         rows.push_back(r);
     }
     if (rows.empty()) rows.push_back({}); // a buffer of one row: no group reads it
@@ -123,13 +135,21 @@ void MeshletCull::collect(FrameGraph& graph) {
     std::vector<gpu::MeshletCullStats> stats(draws_.size());
     std::memcpy(stats.data(), bytes.data(), stats.size() * sizeof(gpu::MeshletCullStats));
     submitted_ = frustum_ = cone_ = trianglesSubmitted_ = 0;
+    keptBySlot_.clear();
     for (const gpu::MeshletCullStats& s : stats) {
+        keptBySlot_.push_back(s.submitted);
         submitted_ += s.submitted;
         frustum_ += s.frustumCulled;
         cone_ += s.coneCulled;
         trianglesSubmitted_ += s.triangles;
     }
     collected_ = true;
+}
+
+uint32_t MeshletCull::kept(const DrawItem& d) const {
+    if (!holds(d)) return 0;
+    const uint32_t slot = slotOf_[d.index];
+    return slot < keptBySlot_.size() ? keptBySlot_[slot] : 0;
 }
 
 std::vector<std::pair<std::string, double>> MeshletCull::counters() const {

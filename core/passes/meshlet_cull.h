@@ -35,9 +35,13 @@ namespace tp::passes {
 class MeshletCull {
   public:
     // draws: the draws it culls (each gets a slot; a geometry pass may record only these).
+    // firstTriangle: each command's firstInstance is its meshlet's first triangle in the
+    // meshlet index buffer (TP_MC_FLAG_FIRST_TRIANGLE; the visibility pass's ids), else 0.
     // Builds the scene's meshlets if nobody has (SceneGpu::buildMeshlets). Throws
-    // RendererError where the device lacks drawIndirectCount or multiDrawIndirect.
-    MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws);
+    // RendererError where the device lacks drawIndirectCount or multiDrawIndirect (and, with
+    // firstTriangle, drawIndirectFirstInstance).
+    MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws,
+                bool firstTriangle = false);
     ~MeshletCull();
     MeshletCull(const MeshletCull&) = delete;
     MeshletCull& operator=(const MeshletCull&) = delete;
@@ -60,12 +64,17 @@ class MeshletCull {
     // triangles (all), triangles_submitted.
     void collect(FrameGraph& graph);
     std::vector<std::pair<std::string, double>> counters() const;
+    bool collected() const { return collected_; }
+    // After collect(): the meshlets kept of one of its draws (the indirect draws recording it
+    // issues); 0 before.
+    uint32_t kept(const DrawItem& d) const;
 
   private:
     void record(PassContext& pc);
     GpuContext& ctx_;
     const SceneGpu& scene_;
     std::vector<const DrawItem*> draws_;
+    bool firstTriangle_ = false;
     std::vector<uint32_t> slotOf_;       // by DrawItem::index: its slot (~0u: not culled here)
     std::vector<uint32_t> firstCommand_; // by slot
     uint32_t meshlets_ = 0, triangles_ = 0;
@@ -76,6 +85,11 @@ class MeshletCull {
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     bool collected_ = false;
     uint64_t submitted_ = 0, frustum_ = 0, cone_ = 0, trianglesSubmitted_ = 0;
+    std::vector<uint32_t> keptBySlot_;
 };
+
+// What every pipeline's geometry passes cull: the scene's opaque then masked draws, in
+// SceneGpu::drawList order (a pass may record a subset: multipass forward's on-screen meshes).
+std::vector<const DrawItem*> opaqueAndMaskedDraws(const SceneGpu& scene);
 
 } // namespace tp::passes

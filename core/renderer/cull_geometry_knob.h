@@ -3,9 +3,9 @@
 // whole (none, the default: the images of a build without meshlet culling, bit for bit) or
 // the meshlets a compute pass kept (frustum: bounding sphere against the view's planes and
 // the normal cone against the eye; core/passes/meshlet_cull.h, docs/geometry.md). Declared
-// here, once, for every pipeline that routes its geometry through the cull pass (today one:
-// its readers are listed in --help). `full` (occlusion against a depth pyramid) is a later
-// step.
+// here, once, for every pipeline that routes its geometry through the cull pass (Forward+,
+// deferred, the visibility buffer, multipass forward: each lists it in its schema; the
+// reference stays brute force). `full` (occlusion against a depth pyramid) is a later step.
 #include "core/renderer/knobs.h"
 
 namespace tp {

@@ -4,10 +4,51 @@
 #include "core/scene/meshlets.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <meshoptimizer.h>
 
 namespace tp {
+namespace {
+
+// Each triangle of `reordered` (the builder's output) found among the mesh's triangles by its
+// corners (`source`, the mesh's index list). The mesh's triangles are bucketed by their first
+// corner (a counting sort: flat arrays, no hashing, a few candidates per vertex); copies of one
+// triangle (the same corners) are handed out in the mesh's order, each once, so the result is a
+// permutation.
+std::vector<uint32_t> findSourceTriangles(const std::vector<uint32_t>& source,
+                                          const std::vector<uint32_t>& reordered) {
+    const uint32_t triangles = uint32_t(reordered.size() / 3);
+    uint32_t vertices = 0;
+    for (uint32_t t = 0; t < triangles; ++t)
+        vertices = std::max(vertices, source[t * 3] + 1);
+    std::vector<uint32_t> first(size_t(vertices) + 1, 0); // bucket starts, by first corner
+    for (uint32_t t = 0; t < triangles; ++t)
+        ++first[source[t * 3] + 1];
+    for (uint32_t v = 0; v < vertices; ++v)
+        first[v + 1] += first[v];
+    std::vector<uint32_t> bucket(triangles), fill(first.begin(), first.end() - 1);
+    for (uint32_t t = 0; t < triangles; ++t)
+        bucket[fill[source[t * 3]]++] = t; // ascending within a bucket
+    std::vector<bool> claimed(triangles, false);
+    std::vector<uint32_t> out(triangles, ~0u);
+    for (uint32_t t = 0; t < triangles; ++t) {
+        const uint32_t a = reordered[t * 3], b = reordered[t * 3 + 1], c = reordered[t * 3 + 2];
+        for (uint32_t k = a < vertices ? first[a] : 0; a < vertices && k < first[a + 1]; ++k) {
+            const uint32_t s = bucket[k];
+            if (claimed[s] || source[s * 3 + 1] != b || source[s * 3 + 2] != c) continue;
+            claimed[s] = true;
+            out[t] = s;
+            break;
+        }
+        // meshoptimizer keeps each triangle's corners in order; anything else is a bug here.
+        if (out[t] == ~0u)
+            throw std::logic_error("buildMeshlets: a meshlet triangle is not the mesh's");
+    }
+    return out;
+}
+
+} // namespace
 
 MeshMeshlets buildMeshlets(const Mesh& mesh) {
     MeshMeshlets out;
@@ -48,6 +89,7 @@ MeshMeshlets buildMeshlets(const Mesh& mesh) {
             out.indices.push_back(local[tris[k]]);
         out.meshlets.push_back(r);
     }
+    out.sourceTriangles = findSourceTriangles(mesh.indices, out.indices);
     return out;
 }
 

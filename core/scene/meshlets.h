@@ -41,6 +41,11 @@ struct Meshlet {
 struct MeshMeshlets {
     std::vector<Meshlet> meshlets;
     std::vector<uint32_t> indices; // mesh-local vertex indices, meshlet after meshlet
+    // Per triangle of `indices` (meshlet order): the triangle of the mesh's own index list it
+    // is (the same three corners, in order). The builder reorders triangles, and the visibility
+    // buffer's ids name a draw's triangles in the mesh's order: a culled draw maps its
+    // meshlet-order triangle back through this (docs/geometry.md).
+    std::vector<uint32_t> sourceTriangles;
 };
 
 // The mesh's meshlets (none for a mesh without triangles).

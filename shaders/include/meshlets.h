@@ -14,6 +14,10 @@
 // fp32 ulps of the larger magnitude): spheres grow and cones shrink by it (scenes far from
 // the origin, docs/shading.md "Camera-relative shading").
 #define TP_MESHLET_POSITION_EPS 4.8e-7f
+// scene.vert's flat output of a culled meshlet's first triangle (gl_InstanceIndex: the cull
+// pass's firstInstance, TP_MC_FLAG_FIRST_TRIANGLE), after its locations 0..5; the visibility
+// pass's fragment shader reads it (scene_meshlet_vert, scene_position_meshlet_vert).
+#define TP_LOCATION_MESHLET_TRIANGLE 6
 
 #ifndef TP_GLSL
 namespace tp::gpu {

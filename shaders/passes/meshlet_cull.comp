@@ -102,7 +102,9 @@ void main() {
             commands[c + 1u] = 1u;                    // instanceCount
             commands[c + 2u] = ml.firstIndex;         // firstIndex
             commands[c + 3u] = uint(d.vertexOffset);  // vertexOffset (int, as bits)
-            commands[c + 4u] = 0u;                    // firstInstance
+            commands[c + 4u] = (d.flags & TP_MC_FLAG_FIRST_TRIANGLE) != 0u // firstInstance
+                                   ? ml.firstIndex / 3u
+                                   : 0u;
         }
         kept += scan[TP_MC_GROUP - 1u];
         barrier(); // every lane has read scan[] before the next round writes it

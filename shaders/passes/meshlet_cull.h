@@ -13,6 +13,10 @@
 #define TP_MC_GROUP 64           // invocations per workgroup: meshlets tested at once
 #define TP_MC_COMMAND_WORDS 5    // sizeof(VkDrawIndexedIndirectCommand) / 4
 #define TP_MC_FLAG_CONE 1u       // the draw may be cone-culled (single-sided material)
+// Each command's firstInstance is its meshlet's first triangle in the meshlet index buffer
+// (gl_InstanceIndex in the vertex shader; 0 without): the visibility pass maps gl_PrimitiveID,
+// which restarts at 0 with every indirect draw, back to the draw's own triangle.
+#define TP_MC_FLAG_FIRST_TRIANGLE 2u
 
 #ifndef TP_GLSL
 namespace tp::gpu {

@@ -2,6 +2,10 @@
 # The visibility pass: opaque (no material) and alpha-masked (the alpha test per sample).
 triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_masked_frag DEFINES TP_VIS_MASKED=1)
+# Both drawing culled meshlets (--cull-geometry frustum): the ids mapped back to the draw's triangles.
+triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_meshlet_frag DEFINES TP_VIS_MESHLETS=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_masked_meshlet_frag
+  DEFINES TP_VIS_MASKED=1 TP_VIS_MESHLETS=1)
 # --vis-blended compute: the blended fragment lists.
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_frag)
 

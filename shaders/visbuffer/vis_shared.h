@@ -34,6 +34,9 @@ TP_STRUCT(VisDraw) {
 #define TP_VIS_BINDING_BLEND_NODES 17 // buffer uvec2[capacity]: the blended fragments' nodes
 #define TP_VIS_BINDING_BLEND_COUNTERS 18 // buffer uint[TP_VIS_BLEND_COUNTER_WORDS]
 
+// ---- set 1 of the visibility pass, drawing culled meshlets (--cull-geometry frustum) ----
+#define TP_VIS_BINDING_SOURCE_TRIANGLES 0 // buffer uint[]: SceneGpu::meshletSourceTriangleBuffer
+
 // ---- blended fragment lists (--vis-blended compute) ----
 // The blended_ids pass appends one node per blended fragment (a primitive covering a pixel
 // in front of the opaque depth) to its pixel's list: word 0 the fragment's id (the same

@@ -12,6 +12,18 @@
 #include "include/material.glsl"
 #include "include/scene_inputs.glsl"
 #endif
+#ifdef TP_VIS_MESHLETS
+// --cull-geometry frustum: drawn as meshlets, whose gl_PrimitiveID counts from 0 in each
+// indirect command and in meshlet order. The meshlet's first triangle (scene.vert, from
+// firstInstance) plus gl_PrimitiveID indexes the scene's map back to the draw's triangle, so
+// the id is the one the whole draw writes and the resolve reads the same triangle.
+#include "include/meshlets.h"
+layout(location = TP_LOCATION_MESHLET_TRIANGLE) flat in uint inMeshletTriangle;
+layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_SOURCE_TRIANGLES) readonly buffer
+    SourceTriangleBlock {
+    uint sourceTriangles[];
+};
+#endif
 
 layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
 layout(location = 0) out float outId; // the id's integer value, exact (vis_shared.h)
@@ -22,5 +34,10 @@ void main() {
     if (ms.alpha < materials[draw.materialIndex].alphaCutoff) discard;
 #endif
     // The draw's row in the VisDraw table comes in the push constant's pad0 (recordDraw).
-    outId = float(((draw.pad0 + 1u) << kTriangleBits) | uint(gl_PrimitiveID));
+#ifdef TP_VIS_MESHLETS
+    const uint triangle = sourceTriangles[inMeshletTriangle + uint(gl_PrimitiveID)];
+#else
+    const uint triangle = uint(gl_PrimitiveID);
+#endif
+    outId = float(((draw.pad0 + 1u) << kTriangleBits) | triangle);
 }

@@ -1,5 +1,6 @@
 // Meshlets (core/scene/meshlets.h) and the cull tests the GPU runs (include/meshlets.h):
-// every triangle of a mesh in exactly one meshlet with its winding, the limits held, each
+// every triangle of a mesh in exactly one meshlet with its winding (and mapped back to itself
+// by sourceTriangles), the limits held, each
 // bounding sphere holding its vertices, and the normal-cone test conservative: whenever it
 // culls, every triangle of the cluster faces away from the eye.
 #include <gtest/gtest.h>
@@ -28,6 +29,23 @@ Triangle canonical(uint32_t a, uint32_t b, uint32_t c) {
     if (b < a && b < c) return {b, c, a};
     if (c < a && c < b) return {c, a, b};
     return {a, b, c};
+}
+
+// sourceTriangles: a permutation of the mesh's triangles, each meshlet triangle mapped to one
+// with the same corners in the same order (the visibility buffer's ids name that one).
+void expectSourceTriangles(const Mesh& mesh, const MeshMeshlets& m, const std::string& what) {
+    const size_t triangles = m.indices.size() / 3;
+    ASSERT_EQ(m.sourceTriangles.size(), triangles) << what;
+    std::vector<bool> seen(triangles, false);
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t src = m.sourceTriangles[t];
+        ASSERT_LT(src, triangles) << what;
+        EXPECT_FALSE(seen[src]) << what << ": triangle " << src << " named twice";
+        seen[src] = true;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(m.indices[t * 3 + k], mesh.indices[src * 3 + k])
+                << what << ": meshlet triangle " << t << " is not its source " << src;
+    }
 }
 
 void expectMeshletsCoverMesh(const Mesh& mesh, const std::string& what) {
@@ -60,6 +78,7 @@ void expectMeshletsCoverMesh(const Mesh& mesh, const std::string& what) {
         next += ml.triangleCount * 3;
     }
     EXPECT_EQ(next, m.indices.size()) << what;
+    expectSourceTriangles(mesh, m, what);
     std::sort(want.begin(), want.end());
     std::sort(got.begin(), got.end());
     EXPECT_EQ(got, want) << what << ": every triangle once, with its winding";
@@ -92,6 +111,10 @@ TEST(Meshlets, EmptyAndDegenerateMeshes) {
     zeroArea.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
     zeroArea.indices = {0, 1, 2, 0, 0, 3, 0, 1, 3};
     expectMeshletsCoverMesh(zeroArea, "zero-area");
+    Mesh twice; // the same triangle three times: each copy named once (sourceTriangles)
+    twice.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    twice.indices = {0, 1, 2, 1, 3, 2, 0, 1, 2, 0, 1, 2};
+    expectMeshletsCoverMesh(twice, "duplicated triangles");
 }
 
 // A UV sphere of radius 1 at the origin, counter-clockwise seen from outside.

@@ -1,11 +1,16 @@
-// --cull-geometry frustum (core/passes/meshlet_cull.h, docs/geometry.md) on Forward+, the
-// pipeline it is wired into: the culled frame against the unculled one (depth bit for bit,
-// colour the same but where a depth tie between coplanar triangles of one mesh resolves in
-// another order), the counters adding up, and mirrored node transforms (negative scales)
-// cone-culled correctly. Validation with synchronization validation on.
+// --cull-geometry frustum (core/passes/meshlet_cull.h, docs/geometry.md) on every pipeline
+// that reads it (the registry's list: Forward+, deferred, the visibility buffer, multipass
+// forward): the culled frame against the unculled one (depth bit for bit, colour the same: a
+// depth tie between coplanar triangles of one mesh could resolve in another order, and none of
+// these scenes has one), the counters adding up, and mirrored node transforms (negative
+// scales) cone-culled correctly. The visibility buffer's ids of culled meshlets must be the
+// ones whole draws write, or its resolve would shade other triangles. Validation with
+// synchronization validation on.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
+#include "core/reference/reference_renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "gpu_test_util.h"
 #include "transformed_scenes.h"
@@ -17,7 +22,21 @@ struct Pair {
     RunResult none, frustum;
 };
 
-Pair renderBoth(const Scene& scene, uint32_t w, uint32_t h, uint32_t msaa) {
+bool readsCullGeometry(const RendererEntry& e) {
+    return std::any_of(e.knobs.begin(), e.knobs.end(),
+                       [](const Knob& k) { return k.name == "cull-geometry"; });
+}
+
+// Every registered renderer that reads --cull-geometry.
+std::vector<std::string> cullingPipelines() {
+    std::vector<std::string> out;
+    for (const RendererEntry& e : registeredRenderers())
+        if (readsCullGeometry(e)) out.push_back(e.name);
+    return out;
+}
+
+Pair renderBoth(const std::string& pipeline, const Scene& scene, uint32_t w, uint32_t h,
+                uint32_t msaa) {
     auto ctx = makeValidatedContext();
     EXPECT_TRUE(ctx);
     if (!ctx) return {};
@@ -27,9 +46,9 @@ Pair renderBoth(const Scene& scene, uint32_t w, uint32_t h, uint32_t msaa) {
     s.height = h;
     s.msaa = msaa;
     Pair p;
-    p.none = runOrFail(*ctx, gpuScene, "forwardplus", s);
+    p.none = runOrFail(*ctx, gpuScene, pipeline, s);
     s.set("cull-geometry", "frustum");
-    p.frustum = runOrFail(*ctx, gpuScene, "forwardplus", s, 2); // the second frame too
+    p.frustum = runOrFail(*ctx, gpuScene, pipeline, s, 2); // the second frame too
     expectNoValidationMessages(*ctx);
     return p;
 }
@@ -72,25 +91,30 @@ void expectCountersAddUp(const RunResult& r, const std::string& what) {
     EXPECT_LE(trianglesSubmitted, triangles) << what;
 }
 
-TEST(MeshletCull, CourtyardSmallSameFrameAndCounters) {
+class CulledFrame : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CulledFrame, CourtyardSmallSameFrameAndCounters) {
     Scene scene = courtyardSmallWithLights(64, 3);
-    Pair p = renderBoth(scene, 96, 54, 1);
-    expectSameFrame(p, "courtyard-small 1x");
-    expectCountersAddUp(p.frustum, "courtyard-small 1x");
+    const std::string what = GetParam() + ", courtyard-small 1x";
+    Pair p = renderBoth(GetParam(), scene, 96, 54, 1);
+    expectSameFrame(p, what);
+    expectCountersAddUp(p.frustum, what);
     // The default view sees part of the courtyard, and half of what it sees faces away.
     EXPECT_GT(p.frustum.stats.counter("meshlets_culled_frustum"), 0);
     EXPECT_GT(p.frustum.stats.counter("meshlets_culled_cone"), 0);
     EXPECT_EQ(p.none.stats.counter("meshlets_submitted", -1), -1) << "none counts nothing";
 }
 
-TEST(MeshletCull, CourtyardSmallSameFrameMsaa4) {
+TEST_P(CulledFrame, CourtyardSmallSameFrameMsaa4) {
     Scene scene = courtyardSmallWithLights(64, 3);
-    Pair p = renderBoth(scene, 96, 54, 4);
-    expectSameFrame(p, "courtyard-small 4x");
+    const std::string what = GetParam() + ", courtyard-small 4x";
+    Pair p = renderBoth(GetParam(), scene, 96, 54, 4);
+    expectSameFrame(p, what);
+    expectCountersAddUp(p.frustum, what);
 }
 
 // Views from inside the colonnade and from below the ground: more of the scene culled.
-TEST(MeshletCull, CourtyardSmallOtherViews) {
+TEST_P(CulledFrame, CourtyardSmallOtherViews) {
     Scene scene = courtyardSmallWithLights(16, 5);
     const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
     const glm::vec3 eyes[] = {c + e * glm::vec3(0.42f, -0.3f, 0.05f),
@@ -98,15 +122,16 @@ TEST(MeshletCull, CourtyardSmallOtherViews) {
     for (const glm::vec3& eye : eyes) {
         scene.camera.position = eye;
         scene.camera.target = c;
-        Pair p = renderBoth(scene, 64, 48, 1);
-        expectSameFrame(p, "courtyard-small, another view");
-        expectCountersAddUp(p.frustum, "courtyard-small, another view");
+        const std::string what = GetParam() + ", courtyard-small, another view";
+        Pair p = renderBoth(GetParam(), scene, 64, 48, 1);
+        expectSameFrame(p, what);
+        expectCountersAddUp(p.frustum, what);
     }
 }
 
 // Negative and non-uniform node scales (every mesh single-sided): the loader flips a mirrored
 // node's winding, so the cones built from world-space triangles follow the front faces.
-TEST(MeshletCull, MirroredNodesSameFrame) {
+TEST_P(CulledFrame, MirroredNodesSameFrame) {
     for (uint32_t seed : {2u, 5u}) {
         const auto dir = std::filesystem::temp_directory_path() /
                          ("triptych_meshlet_cull_" + std::to_string(seed));
@@ -114,10 +139,23 @@ TEST(MeshletCull, MirroredNodesSameFrame) {
         ASSERT_TRUE(s.ok()) << s.error();
         Scene scene = std::move(*s);
         scene.lights = lightsGrazingSurfaces(scene, 16, seed);
-        Pair p = renderBoth(scene, 96, 72, 1);
-        expectSameFrame(p, "mirrored nodes, seed " + std::to_string(seed));
-        expectCountersAddUp(p.frustum, "mirrored nodes, seed " + std::to_string(seed));
+        const std::string what = GetParam() + ", mirrored nodes, seed " + std::to_string(seed);
+        Pair p = renderBoth(GetParam(), scene, 96, 72, 1);
+        expectSameFrame(p, what);
+        expectCountersAddUp(p.frustum, what);
     }
+}
+
+INSTANTIATE_TEST_SUITE_P(MeshletCull, CulledFrame, ::testing::ValuesIn(cullingPipelines()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             return info.param;
+                         });
+
+// Every pipeline culls its geometry passes; the reference stays brute force (its image is
+// the ground truth the others' errors are measured against).
+TEST(MeshletCullKnob, ReadByEveryPipelineButTheReference) {
+    for (const RendererEntry& e : registeredRenderers())
+        EXPECT_EQ(readsCullGeometry(e), e.name != kReferenceRenderer) << e.name;
 }
 
 } // namespace
