@@ -5,6 +5,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/calibrate/material_fetches.h"
+#include "core/calibrate/tiled_work.h"
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
@@ -289,6 +291,9 @@ RendererStats DeferredRenderer::stats() const {
     if (samples > 1)
         s.counters.push_back({"gbuffer_material_per_sample", t_.sampleRateGBuffer ? 1.0 : 0.0});
     addLightWork(s);
+    if (!useVolumes()) // MSAA edge samples, shared atomics, light-vs-tile tests
+        addTiledWork(s, {"tiled_lighting", totals.lights, totals.edges, totals.meanLights(),
+                         double(lighting_.candidates()), samples});
     return s;
 }
 
@@ -304,6 +309,11 @@ void DeferredRenderer::addLightWork(RendererStats& s) const {
     if (useVolumes() && volumes_.shadowPass()) // masked shadow-map draws run fragments too
         s.lightWork.push_back({"volume_shadowed_lights", Base::Fragments, 1.0, false,
                                "one light per volume fragment (and per masked shadow-map fragment)"});
+    s.opWork.push_back(materialFetchWork(scene_, "gbuffer", {DrawFilter::Opaque, DrawFilter::Mask},
+                                         Base::Fragments));
+    if (hasBlended_)
+        s.opWork.push_back(
+            materialFetchWork(scene_, "transparent_forward", {DrawFilter::Blend}, Base::Fragments));
     if (hasBlended_)
         s.lightWork.push_back({"transparent_forward", Base::Fragments,
                                s.counter("transparent_lights_per_nonempty_tile_mean"), false,

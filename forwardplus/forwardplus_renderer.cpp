@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "core/calibrate/material_fetches.h"
 #include "core/gpu/context.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
@@ -26,9 +27,9 @@
 #include "core/passes/shadow_maps.h"
 #include "core/renderer/msaa_knob.h"
 #include "forwardplus/forward_shading.h"
-#include "forwardplus/fp_config.h"
 #include "forwardplus/forwardplus_debug.h"
 #include "forwardplus/forwardplus_shared.h"
+#include "forwardplus/fp_config.h"
 #include "forwardplus/fp_settings.h"
 #include "forwardplus/light_culling.h"
 #include "forwardplus/light_lists.h"
@@ -255,6 +256,12 @@ class ForwardPlusRenderer final : public Renderer {
             fp::addListCounters(s.counters, in);
             fp::addLightWork(s, r_, fp_, classes_.directional.size());
         }
+        s.opWork.push_back(materialFetchWork(scene_, "forward_opaque",
+                                             {DrawFilter::Opaque, DrawFilter::Mask},
+                                             PassLightWork::Base::Fragments));
+        if (r_.blendPass)
+            s.opWork.push_back(materialFetchWork(scene_, "forward_transparent", {DrawFilter::Blend},
+                                                 PassLightWork::Base::Fragments));
         fp::addLeftOut(s, r_, fp_, scene_, features_);
         return s;
     }

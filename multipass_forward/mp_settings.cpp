@@ -1,5 +1,7 @@
 #include "multipass_forward/mp_settings.h"
 
+#include <algorithm>
+
 namespace tp::mp {
 namespace {
 
@@ -30,6 +32,22 @@ const ChoiceKnob<BlendedLights>& blendedLightsKnob() {
 KnobSchema knobs() {
     return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob(),
             cullGeometryKnob().knob()};
+}
+
+double blendedLightsPerFragment(BlendedLights mode, double directional, double lights) {
+    switch (mode) {
+    case BlendedLights::OnePass:
+        return lights; // every light of the scene (one_pass.frag)
+    case BlendedLights::Additive:
+        return std::min(1.0, directional); // F = C + L
+    case BlendedLights::Under:
+        break;
+    }
+    return std::min(0.5, directional);
+}
+
+double blendedSamplingShare(BlendedLights mode) {
+    return mode == BlendedLights::Under ? 0.5 : 1.0;
 }
 
 Settings readSettings(const RenderSettings& s) {

@@ -22,4 +22,13 @@ KnobSchema knobs();
 Settings readSettings(const RenderSettings& s);
 const ChoiceKnob<BlendedLights>& blendedLightsKnob();
 
+// The blended pass's counted work per fragment, lower bounds (docs/efficiency.md): its fragments
+// are composites (C: the directional lights and the material), light draws (L: one light and the
+// material) and, compositing under, as many transmittance resets (R = L at the pixel rate, R <= L
+// per sample: the same triangles, scissor and depth test) that evaluate and sample nothing. With
+// F = C + L + R, L >= (F - C) / 2: at least min(1/2, directional) evaluations a fragment, and half
+// of the fragments sample the material. One-pass: every light, every fragment.
+double blendedLightsPerFragment(BlendedLights mode, double directional, double lights);
+double blendedSamplingShare(BlendedLights mode);
+
 } // namespace tp::mp

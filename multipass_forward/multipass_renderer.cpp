@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "core/calibrate/material_fetches.h"
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpuscene/scene_gpu.h"
@@ -120,6 +121,7 @@ class MultipassForwardRenderer final : public Renderer {
     }
 
     void shadowStats(RendererStats& s) const;
+    void addPassWork(RendererStats& s) const;
     bool lightBlended() const { return mp_.blendedLights != BlendedLights::OnePass; }
 
     void createTargets(FrameGraph& graph) {
@@ -205,14 +207,28 @@ RendererStats MultipassForwardRenderer::stats() const {
                              "--blended-lights one-pass: every light in the blended composite"});
     if (plan_.masked.empty())
         s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
-    // A light pass's fragment evaluates its one light; the blended pass's base draws are
-    // counted as if lit (an upper bound); the base pass evaluates the directional lights.
-    using Base = PassLightWork::Base;
-    s.lightWork.push_back({"light_passes", Base::Fragments, 1.0, true, "one light per fragment"});
-    s.lightWork.push_back({"blended", Base::Fragments, 1.0, false, "one light per fragment (base draws too)"});
-    s.lightWork.push_back({"base_pass", Base::Fragments, double(plan_.baseDirectional.size()), true,
-                           "the directional lights, per fragment"});
+    addPassWork(s);
     return s;
+}
+
+// Counted work per pass (docs/efficiency.md). A light pass's fragment evaluates its one light,
+// the base pass's the directional lights; the blended pass's: mp_settings.h says.
+void MultipassForwardRenderer::addPassWork(RendererStats& s) const {
+    using Base = PassLightWork::Base;
+    const double dir = double(plan_.baseDirectional.size());
+    const BlendedLights mode = mp_.blendedLights;
+    s.lightWork.push_back({"light_passes", Base::Fragments, 1.0, true, "one light per fragment"});
+    s.lightWork.push_back(
+        {"base_pass", Base::Fragments, dir, true, "the directional lights, per fragment"});
+    s.lightWork.push_back(
+        {"blended", Base::Fragments, blendedLightsPerFragment(mode, dir, scene_.lightCount()),
+         mode == BlendedLights::OnePass,
+         "at least: composites the directional lights, light draws one, resets none"});
+    for (const char* pass : {"base_pass", "light_passes"})
+        s.opWork.push_back(materialFetchWork(scene_, pass, {DrawFilter::Opaque, DrawFilter::Mask},
+                                             Base::Fragments));
+    s.opWork.push_back(materialFetchWork(scene_, "blended", {DrawFilter::Blend}, Base::Fragments,
+                                         blendedSamplingShare(mode)));
 }
 
 // ShadowMaps' counters, with the renders this pipeline made: one per shadowed light that lights

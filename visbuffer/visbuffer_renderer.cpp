@@ -4,6 +4,8 @@
 #include <cstring>
 #include <optional>
 
+#include "core/calibrate/material_fetches.h"
+#include "core/calibrate/tiled_work.h"
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
@@ -307,6 +309,11 @@ RendererStats VisbufferRenderer::stats() const {
     // blended layers composited in the same pass left out).
     s.lightWork.push_back({"tiled_lighting", PassLightWork::Base::CoveredPixels, s.counter("lights_per_tile_mean"),
                            false, "lights_per_tile_mean, per pixel with geometry"});
+    addTiledWork(s, {"tiled_lighting", t.lights, t.edges, t.meanLights(),
+                     double(lighting_.candidates()), samples});
+    s.opWork.push_back(materialFetchWork(scene_, "tiled_lighting",
+                                         {DrawFilter::Opaque, DrawFilter::Mask},
+                                         PassLightWork::Base::CoveredPixels));
     return s;
 }
 

@@ -12,9 +12,25 @@ const char* rasterName(RasterPath r) {
     case RasterPath::DepthOnly: return "depth_only";
     case RasterPath::Colour: return "colour";
     case RasterPath::Msaa: return "msaa";
+    case RasterPath::DepthOnlyMsaa:
+        return "depth_only_msaa";
     case RasterPath::None: break;
     }
     return "none";
+}
+
+const char* opName(PassOpWork::Kind k) {
+    switch (k) {
+    case PassOpWork::Kind::TextureFetches:
+        return "texture_fetches";
+    case PassOpWork::Kind::GlobalAtomics:
+        return "global_atomics";
+    case PassOpWork::Kind::SharedAtomics:
+        return "shared_atomics";
+    case PassOpWork::Kind::TileTests:
+        return "light_tile_tests";
+    }
+    return "ops";
 }
 
 nlohmann::json limitJson(const LimitTime& l) { return {{"limit", l.limit}, {"ceiling", l.ceiling}, {"ms", l.ms}}; }
@@ -33,6 +49,12 @@ nlohmann::json passWorkJson(const std::vector<PassWork>& work) {
         if (!w.lightHow.empty()) {
             j["light_evaluations_exact"] = w.lightExact;
             j["light_evaluations_how"] = w.lightHow;
+        }
+        for (const CountedOps& o : w.ops) { // e.g. texture_fetches, texture_fetches_exact, _how
+            const std::string name = opName(o.kind);
+            j[name] = o.count;
+            j[name + "_exact"] = o.exact;
+            j[name + "_how"] = o.how;
         }
         if (w.counted)
             j["pipeline_statistics"] = {{"input_primitives", w.counts.inputPrimitives},

@@ -52,7 +52,7 @@ Bench raster(const char* name, const char* unit, const char* what, bool quick, B
     b.draw.layered = true;
     b.draw.size = targetSize(quick);
     b.push = {cell ? b.draw.size / cell : 0u, quick ? 2u : 8u, 0u, 0u};
-    if (cell) b.draw.vertex = TP_CAL_VERTEX_GRID;
+    if (cell && b.draw.vertex == TP_CAL_VERTEX_LAYERS) b.draw.vertex = TP_CAL_VERTEX_GRID;
     const double perLayer = cell ? double(b.push.stride) * b.push.stride * 2 : double(b.draw.size) * b.draw.size;
     b.work = perLayer * b.push.iterations;
     return b;
@@ -75,18 +75,26 @@ std::vector<Bench> memoryBenches(uint64_t bytes, bool quick) {
 
 std::vector<Bench> computeBenches(bool quick) {
     return {
-        loop("fp32_fma", TP_CAL_FMA, "GFLOP/s", "8 independent vec4 FMA chains (2 FLOPs per FMA)", quick,
-             quick ? 64u : 1024u, kFmaFlopsPerStep),
-        loop("shared_atomic", TP_CAL_SHARED_ATOMIC, "Gatomic/s", "atomicAdd to shared memory, 256 words per workgroup",
-             quick, quick ? 32u : 256u, 1.0),
-        loop("global_atomic", TP_CAL_GLOBAL_ATOMIC, "Gatomic/s", "atomicAdd to 4 MiB of device memory, spread", quick,
-             quick ? 16u : 64u, 1.0, {0u, 0u, (1u << 20) - 1u, 0u}),
-        loop("texture_fetch", TP_CAL_TEXTURE, "Gfetch/s", "bilinear fetches of a 1024x1024 RGBA8 texture, neighbouring texels",
-             quick, quick ? 8u : 64u, 1.0),
-        loop("light_point", TP_CAL_LIGHT_POINT, "Geval/s", "one point light through the shared light model and BRDF",
-             quick, quick ? 4u : 64u, 1.0),
-        loop("light_spot", TP_CAL_LIGHT_SPOT, "Geval/s", "one spot light through the shared light model and BRDF",
-             quick, quick ? 4u : 64u, 1.0),
+        loop("fp32_fma", TP_CAL_FMA, "GFLOP/s", "8 independent vec4 FMA chains (2 FLOPs per FMA)",
+             quick, quick ? 64u : 1024u, kFmaFlopsPerStep),
+        loop("shared_atomic", TP_CAL_SHARED_ATOMIC, "Gatomic/s",
+             "atomicAdd to shared memory, 256 words per workgroup", quick, quick ? 32u : 256u, 1.0),
+        loop("global_atomic", TP_CAL_GLOBAL_ATOMIC, "Gatomic/s",
+             "atomicAdd to 4 MiB of device memory, spread", quick, quick ? 16u : 64u, 1.0,
+             {0u, 0u, (1u << 20) - 1u, 0u}),
+        loop("texture_fetch", TP_CAL_TEXTURE, "Gfetch/s",
+             "bilinear fetches of a 1024x1024 RGBA8 texture, neighbouring texels", quick,
+             quick ? 8u : 64u, 1.0),
+        // An image read as passes read depth and G-buffers: 4 bytes a texel (RGBA8).
+        loop("image_read", TP_CAL_IMAGE_READ, "GB/s",
+             "texelFetch of the 1024x1024 RGBA8 texture, neighbouring texels", quick,
+             quick ? 8u : 64u, 4.0),
+        loop("light_point", TP_CAL_LIGHT_POINT, "Geval/s",
+             "one point light through the shared light model and BRDF", quick, quick ? 4u : 64u,
+             1.0),
+        loop("light_spot", TP_CAL_LIGHT_SPOT, "Geval/s",
+             "one spot light through the shared light model and BRDF", quick, quick ? 4u : 64u,
+             1.0),
     };
 }
 
@@ -108,23 +116,54 @@ std::vector<Bench> rasterBenches(bool quick) {
     BenchDraw colour{.color = kHdrTarget};
     BenchDraw blend{.color = kHdrTarget, .blend = BlendMode::Additive};
     BenchDraw msaa{.color = kHdrTarget, .depth = true, .samples = VK_SAMPLE_COUNT_4_BIT};
-    BenchDraw culled{.color = kHdrTarget, .cullAll = true};
+    BenchDraw colourMsaa{.color = kHdrTarget, .samples = VK_SAMPLE_COUNT_4_BIT};
+    BenchDraw depthMsaa{.fragment = false, .depth = true, .samples = VK_SAMPLE_COUNT_4_BIT};
+    // Indexed: a mesh's vertices are shared by its triangles; the non-indexed grid shaded three
+    // vertices a triangle and measured less than an indexed pass's triangles can go.
+    BenchDraw culled{.vertex = TP_CAL_VERTEX_GRID_INDEXED, .color = kHdrTarget, .cullAll = true};
     return {
-        raster("raster_depth", "Gpixel/s", "full-screen layers into D32, depth test and write, no fragment shader", quick, depthOnly),
-        raster("rop_colour", "Gpixel/s", "full-screen layers of one colour into RGBA16F", quick, colour),
-        raster("rop_blend", "Gpixel/s", "the same, blended additively (multipass forward's light passes)", quick, blend),
-        raster("raster_msaa4", "Gpixel/s", "the same as rop_colour with D32, both 4x MSAA (pixels, 4 samples each)", quick, msaa),
-        raster("tri_small", "Gtri/s", "a grid of 2x2-pixel cells, 2 triangles each, one colour", quick, colour, kSmallCell),
-        raster("tri_large", "Gtri/s", "a grid of 32x32-pixel cells, 2 triangles each, one colour", quick, colour, kLargeCell),
+        raster("raster_depth", "Gpixel/s",
+               "full-screen layers into D32, depth test and write, no fragment shader", quick,
+               depthOnly),
+        raster("rop_colour", "Gpixel/s", "full-screen layers of one colour into RGBA16F", quick,
+               colour),
+        raster("rop_blend", "Gpixel/s",
+               "the same, blended additively (multipass forward's light passes)", quick, blend),
+        raster("raster_msaa4", "Gpixel/s",
+               "the same as rop_colour with D32, both 4x MSAA (pixels, 4 samples each)", quick,
+               msaa),
+        // What a pass at 4x does at the least: colour alone (a light pass tests depth, writes
+        // none), or depth alone (a prepass). Passes are placed against these, not raster_msaa4.
+        raster("rop_colour_msaa4", "Gpixel/s",
+               "rop_colour at 4x MSAA, no depth (pixels, 4 samples each)", quick, colourMsaa),
+        raster("raster_depth_msaa4", "Gpixel/s", "raster_depth at 4x MSAA (pixels, 4 samples each)",
+               quick, depthMsaa),
+        raster("tri_small", "Gtri/s", "a grid of 2x2-pixel cells, 2 triangles each, one colour",
+               quick, colour, kSmallCell),
+        raster("tri_large", "Gtri/s", "a grid of 32x32-pixel cells, 2 triangles each, one colour",
+               quick, colour, kLargeCell),
         // The fastest a triangle can go: every primitive a pass submits is placed against it.
-        raster("tri_culled", "Gtri/s", "tri_small's grid with every triangle culled: vertices and setup, no pixel", quick,
-               culled, kSmallCell),
+        raster("tri_culled", "Gtri/s",
+               "tri_small's grid, indexed (shared vertices), every triangle culled: no pixel",
+               quick, culled, kSmallCell),
     };
 }
 
 } // namespace
 
 uint32_t targetSize(bool quick) { return quick ? 128u : 1024u; }
+
+std::vector<uint32_t> gridIndices(uint32_t cells) {
+    std::vector<uint32_t> out;
+    out.reserve(size_t(cells) * cells * 6);
+    const uint32_t row = cells + 1;
+    for (uint32_t y = 0; y < cells; ++y)
+        for (uint32_t x = 0; x < cells; ++x) {
+            const uint32_t v = y * row + x; // corners (0,0) (1,0) (0,1), then (1,0) (1,1) (0,1)
+            out.insert(out.end(), {v, v + 1, v + row, v + 1, v + row + 1, v + row});
+        }
+    return out;
+}
 
 std::vector<Bench> benches(uint64_t bufferBytes, bool quick) {
     std::vector<Bench> all;

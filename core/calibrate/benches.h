@@ -40,7 +40,11 @@ struct Bench {
     // Not the streams: they would read again what the same invocation just read, from a cache.
     bool scalable = true;
 
-    uint32_t vertexCount() const { return draw.vertex == TP_CAL_VERTEX_GRID ? push.stride * push.stride * 6u : 3u; }
+    bool indexed() const { return draw.vertex == TP_CAL_VERTEX_GRID_INDEXED; }
+    // Vertices (non-indexed) or indices (indexed) of one instance.
+    uint32_t vertexCount() const {
+        return draw.vertex == TP_CAL_VERTEX_LAYERS ? 3u : push.stride * push.stride * 6u;
+    }
     uint32_t instanceCount() const { return draw.layered ? push.iterations : 1u; }
 };
 
@@ -50,5 +54,9 @@ std::vector<Bench> benches(uint64_t bufferBytes, bool quick);
 
 // The square render target's edge of the graphics benchmarks.
 uint32_t targetSize(bool quick);
+
+// TP_CAL_VERTEX_GRID_INDEXED's index buffer: `cells` x `cells` cells of two triangles over
+// (cells + 1)^2 shared vertices, row by row (the corners of TP_CAL_VERTEX_GRID, in its order).
+std::vector<uint32_t> gridIndices(uint32_t cells);
 
 } // namespace tp::calibrate

@@ -19,9 +19,16 @@ struct Placer {
     }
     double ms(double work, double perSecond) const { return perSecond > 0 ? work / perSecond * 1e3 : 0; }
 
+    // An image is read at the faster of the buffer stream and image_read (texel fetches of an
+    // image that fits a last-level cache, as one the previous pass wrote may; on lavapipe a path
+    // of its own): the stream alone is no upper bound on how fast a pass reads its depth.
     LimitTime memory(const PassWork& w) const {
-        return {"memory", "dram_read + dram_write",
-                ms(w.bytesRead, rate("dram_read")) + ms(w.bytesWritten, rate("dram_write"))};
+        const double images = w.imageBytesRead, buffers = w.bytesRead - images;
+        const double imageRate = images > 0 ? std::max(rate("dram_read"), rate("image_read")) : 0.0;
+        return {"memory",
+                images > 0 ? "dram_read, image_read + dram_write" : "dram_read + dram_write",
+                ms(buffers, rate("dram_read")) + ms(images, imageRate) +
+                    ms(w.bytesWritten, rate("dram_write"))};
     }
     // Light evaluations at the stage's light-model ceilings, point and spot in the scene's mix.
     LimitTime lightAlu(const PassWork& w) const {
@@ -30,11 +37,41 @@ struct Placer {
                          (spotShare > 0 ? ms(w.lightEvaluations * spotShare, rate(prefix + "spot")) : 0.0);
         return {"light_alu", prefix + "point, " + prefix + "spot", t};
     }
+    // The ceiling that does no more per pixel than the pass: colour alone or depth alone, at
+    // the pass's sample count. A pass that also tests or writes depth, or blends, does more.
+    static const char* rasterCeiling(RasterPath r) {
+        switch (r) {
+        case RasterPath::DepthOnly:
+            return "raster_depth";
+        case RasterPath::DepthOnlyMsaa:
+            return "raster_depth_msaa4";
+        case RasterPath::Msaa:
+            return "rop_colour_msaa4";
+        case RasterPath::Colour:
+        case RasterPath::None:
+            break;
+        }
+        return "rop_colour";
+    }
     LimitTime raster(const PassWork& w) const {
-        const char* c = w.raster == RasterPath::DepthOnly ? "raster_depth"
-                        : w.raster == RasterPath::Msaa    ? "raster_msaa4"
-                                                          : "rop_colour";
+        const char* c = rasterCeiling(w.raster);
         return {"raster", c, ms(w.rasterPixels, rate(c))};
+    }
+    // The materials' fetches at the stage's texture ceiling (bilinear, one mip level: a
+    // trilinear or anisotropic fetch costs at least one of them).
+    LimitTime texture(const PassWork& w) const {
+        const char* c = w.stage == PassStage::Compute ? "texture_fetch" : "fragment_texture_fetch";
+        return {"texture", c, ms(w.opCount(PassOpWork::Kind::TextureFetches), rate(c))};
+    }
+    // Atomics of both kinds, each at its own ceiling (one pass may make both).
+    LimitTime atomics(const PassWork& w) const {
+        const double global = w.opCount(PassOpWork::Kind::GlobalAtomics),
+                     shared = w.opCount(PassOpWork::Kind::SharedAtomics);
+        std::string c = global > 0 ? "global_atomic" : "";
+        if (shared > 0) c += std::string(c.empty() ? "" : " + ") + "shared_atomic";
+        const double t = (global > 0 ? ms(global, rate("global_atomic")) : 0.0) +
+                         (shared > 0 ? ms(shared, rate("shared_atomic")) : 0.0);
+        return {"atomics", c, t};
     }
     // Every primitive submitted at the rate of triangles that are all culled: the least any
     // triangle costs (those the pass rasterizes cost more; raster and ROPs place them).
@@ -51,6 +88,11 @@ struct Placer {
         if (w.lightEvaluations > 0) e.limits.push_back(lightAlu(w));
         if (w.counted && w.stage == PassStage::Graphics && w.rasterPixels > 0) e.limits.push_back(raster(w));
         if (w.counted && w.counts.inputPrimitives > 0) e.limits.push_back(triangles(w));
+        if (w.opCount(PassOpWork::Kind::TextureFetches) > 0) e.limits.push_back(texture(w));
+        if (w.opCount(PassOpWork::Kind::GlobalAtomics) +
+                w.opCount(PassOpWork::Kind::SharedAtomics) >
+            0)
+            e.limits.push_back(atomics(w));
         for (const LimitTime& l : e.limits)
             if (l.ms > e.bound.ms) e.bound = l;
         e.percent = measuredMs > 0 ? e.bound.ms / measuredMs * 100 : 0;

@@ -17,7 +17,7 @@ namespace tp {
 using CeilingRates = std::map<std::string, double>;
 
 struct LimitTime {
-    std::string limit;   // "memory", "light_alu", "raster", "triangles"
+    std::string limit;   // "memory", "light_alu", "raster", "triangles", "texture", "atomics"
     std::string ceiling; // the calibrate ceiling(s) it divides by
     double ms = 0;       // the pass's counted work at that ceiling
 };

@@ -19,7 +19,7 @@ RasterPath rasterPath(const GraphDecl::Pass& p, const PassWorkInput& in) {
         msaa |= in.resourceSamples(u.resource.index) > 1;
     }
     if (!colour && !depth) return RasterPath::None;
-    if (msaa) return RasterPath::Msaa;
+    if (msaa) return colour ? RasterPath::Msaa : RasterPath::DepthOnlyMsaa;
     return colour ? RasterPath::Colour : RasterPath::DepthOnly;
 }
 
@@ -49,15 +49,50 @@ const PassCounts* countsOf(const PassWorkInput& in, const std::string& pass) {
     return nullptr;
 }
 
+// Items of `base` for a pass; < 0 when they cannot be known (fragments without the statistics).
+double itemsOf(PassLightWork::Base base, double given, const PassWork& w, const PassWorkInput& in) {
+    switch (base) {
+    case PassLightWork::Base::Fragments:
+        return w.counted ? double(w.counts.fragmentInvocations) : -1.0;
+    case PassLightWork::Base::CoveredPixels:
+        return in.coveredPixels;
+    case PassLightWork::Base::Items:
+        return given;
+    }
+    return -1.0;
+}
+
+void joinHow(std::string& into, const std::string& how) {
+    if (how.empty()) return;
+    into += (into.empty() ? "" : "; ") + how;
+}
+
+// Entries of one pass add up (MSAA edge samples beside the pixels); exact only if all are.
 void addLightWork(PassWork& w, const PassWorkInput& in) {
+    bool any = false, exact = true;
     for (const PassLightWork& l : in.lightWork) {
         if (l.pass != w.pass) continue;
-        const bool byFragments = l.base == PassLightWork::Base::Fragments;
-        if (byFragments && !w.counted) continue; // nothing to multiply without the statistics
-        const double items = byFragments ? double(w.counts.fragmentInvocations) : in.coveredPixels;
-        w.lightEvaluations = items * l.perItem;
-        w.lightExact = l.exact;
-        w.lightHow = l.how;
+        const double items = itemsOf(l.base, l.items, w, in);
+        if (items < 0) continue; // nothing to multiply without the statistics
+        w.lightEvaluations += items * l.perItem;
+        exact = exact && l.exact;
+        any = true;
+        joinHow(w.lightHow, l.how);
+    }
+    w.lightExact = any && exact;
+}
+
+void addOpWork(PassWork& w, const PassWorkInput& in) {
+    for (const PassOpWork& o : in.opWork) {
+        if (o.pass != w.pass) continue;
+        const double items = itemsOf(o.base, o.items, w, in);
+        if (items < 0) continue;
+        auto it = std::find_if(w.ops.begin(), w.ops.end(),
+                               [&](const CountedOps& c) { return c.kind == o.kind; });
+        if (it == w.ops.end()) it = w.ops.insert(w.ops.end(), CountedOps{o.kind});
+        it->count += items * o.perItem;
+        it->exact = it->exact && o.exact;
+        joinHow(it->how, o.how);
     }
 }
 
@@ -97,6 +132,7 @@ std::vector<PassWork> countPassWork(const PassWorkInput& in) {
         for (const PassUse& u : p.uses) {
             const UseBytes b = useBytes(u.use, attachmentBytes(u, w, in));
             w.bytesRead += b.read;
+            if (in.decl->resources().at(u.resource.index).isImage) w.imageBytesRead += b.read;
             w.bytesWritten += b.written;
         }
         w.stage = stageOf(p, w);
@@ -105,6 +141,7 @@ std::vector<PassWork> countPassWork(const PassWorkInput& in) {
         w.rasterPixels = w.counts.fragmentInvocations > 0 ? double(w.counts.fragmentInvocations)
                          : w.counted && w.counts.clippingPrimitives > 0 ? in.coveredPixels : 0.0;
         addLightWork(w, in);
+        addOpWork(w, in);
         out.push_back(w);
     }
     return out;

@@ -14,21 +14,37 @@
 namespace tp {
 
 // Which ALU a pass's shading runs on, and which raster path its fragments take: what decides
-// the ceilings it is placed against.
+// the ceilings it is placed against. Msaa: colour at more than one sample (with or without
+// depth); DepthOnlyMsaa: depth alone at more than one sample.
 enum class PassStage { Compute, Graphics, Other };
-enum class RasterPath { None, DepthOnly, Colour, Msaa };
+enum class RasterPath { None, DepthOnly, Colour, Msaa, DepthOnlyMsaa };
+
+// One kind of a pass's other counted work (PassOpWork), summed over the renderer's entries.
+struct CountedOps {
+    PassOpWork::Kind kind;
+    double count = 0;
+    bool exact = true; // every entry exact
+    std::string how;   // the entries' lines, joined by "; "
+};
 
 struct PassWork {
     std::string pass;
     PassStage stage = PassStage::Other;
     RasterPath raster = RasterPath::None;
     double bytesRead = 0, bytesWritten = 0; // the frame graph's declared uses, each once
+    double imageBytesRead = 0;              // the part of bytesRead read from images
     bool counted = false;                   // pipeline statistics were available
     PipelineCounts counts;
     double rasterPixels = 0; // placed against the raster ceilings
     double lightEvaluations = 0;
     bool lightExact = false;
     std::string lightHow; // empty: the pass evaluates no light
+    std::vector<CountedOps> ops; // texture fetches, atomics, light-vs-tile tests: those counted
+    double opCount(PassOpWork::Kind kind) const {
+        for (const CountedOps& o : ops)
+            if (o.kind == kind) return o.count;
+        return 0;
+    }
 };
 
 // What one use moves of a resource of `bytes`: attachments are written (a depth attachment is
@@ -48,6 +64,7 @@ struct PassWorkInput {
     std::function<uint32_t(uint32_t)> resourceSamples;
     std::vector<PassCounts> counts;     // empty without pipeline statistics
     std::vector<PassLightWork> lightWork;
+    std::vector<PassOpWork> opWork;
     double coveredPixels = 0; // pixels whose depth is not the far plane
     double framePixels = 0;   // width x height: an attachment's bytes per pixel, from its size
 };

@@ -99,7 +99,12 @@ void recordDraw(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pipeli
     setViewportAndScissor(cmd, b.draw.size, b.draw.size);
     vkCmdSetCullMode(cmd, b.draw.cullAll ? VK_CULL_MODE_FRONT_AND_BACK : VK_CULL_MODE_NONE);
     vkCmdPushConstants(cmd, rig.layout, kPushStages, 0, sizeof(CalPush), &b.push);
-    vkCmdDraw(cmd, b.vertexCount(), b.instanceCount(), 0, 0);
+    if (b.indexed()) {
+        vkCmdBindIndexBuffer(cmd, t.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cmd, b.vertexCount(), b.instanceCount(), 0, 0, 0);
+    } else {
+        vkCmdDraw(cmd, b.vertexCount(), b.instanceCount(), 0, 0);
+    }
     vkCmdEndRendering(cmd);
 }
 
@@ -146,6 +151,13 @@ Targets createTargets(GpuContext& ctx, const Bench& b) {
         t.depth = createImage(ctx, {VK_FORMAT_D32_SFLOAT, d.size, d.size, 1, d.samples,
                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT},
                               {"calibrate", "calibrate", "depth", "the raster ceilings' depth attachment"});
+    if (b.indexed()) {
+        const std::vector<uint32_t> indices = gridIndices(b.push.stride);
+        t.indices = createBufferWithData(
+            ctx, indices.data(), indices.size() * sizeof(uint32_t),
+            VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+            {"calibrate", "calibrate", "grid_indices", "the indexed grid's triangles"});
+    }
     return t;
 }
 

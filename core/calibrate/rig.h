@@ -26,9 +26,10 @@ struct Rig {
     Rig& operator=(const Rig&) = delete;
 };
 
-// A graphics benchmark's attachments (none for compute).
+// A graphics benchmark's attachments (none for compute), and an indexed grid's indices.
 struct Targets {
     Image color, depth;
+    Buffer indices;
 };
 Targets createTargets(GpuContext& ctx, const Bench& b);
 

@@ -11,7 +11,7 @@ GpuProfiler::GpuProfiler(GpuContext& ctx, uint32_t maxScopes)
     : ctx_(ctx), capacity_(maxScopes + 1) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    info.queryCount = capacity_ * 2;
+    info.queryCount = capacity_ * 3; // a begin and an end per scope, and lavapipe's closer
     VK_CHECK(vkCreateQueryPool(ctx.device, &info, nullptr, &pool_));
 }
 
@@ -20,7 +20,7 @@ GpuProfiler::~GpuProfiler() {
 }
 
 void GpuProfiler::beginFrame(VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, pool_, 0, capacity_ * 2);
+    vkCmdResetQueryPool(cmd, pool_, 0, capacity_ * 3);
     used_ = 0;
     beginScope(cmd, "frame");
 }
@@ -33,7 +33,17 @@ uint32_t GpuProfiler::beginScope(VkCommandBuffer cmd, const std::string& name) {
         samples_.emplace_back();
     }
     names_[scope] = name;
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool_, scope * 2);
+    if (!ctx_.isCpuDevice()) {
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool_, scope * 2);
+        return scope;
+    }
+    // lavapipe bins a timestamp into every tile of the scene being drawn and returns the time
+    // the last tile reached it, and starts a new scene only for a stage other than TOP_OF_PIPE
+    // (Mesa: lp_rast.c, lp_query.c, lvp_execute.c): a TOP_OF_PIPE begin was the start of the
+    // pass's last tile, not of the pass. Here the begin gets a scene of its own, closed by a
+    // second timestamp (never read): it is when the work before the pass finished.
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, scope * 2);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, capacity_ * 2 + scope);
     return scope;
 }
 

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "core/calibrate/material_fetches.h"
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
@@ -117,6 +118,9 @@ class ReferenceRenderer final : public Renderer {
         if (rays_) rays_->addStats(s);
         s.lightWork.push_back({"reference_shading", PassLightWork::Base::Fragments, double(scene_.lightCount()),
                                true, "every light, per fragment (sample)"});
+        s.opWork.push_back(materialFetchWork(
+            scene_, "reference_shading", {DrawFilter::Opaque, DrawFilter::Mask, DrawFilter::Blend},
+            PassLightWork::Base::Fragments));
         return s;
     }
 

@@ -69,22 +69,40 @@ struct DebugImage {
     bool display = true;
 };
 
-// The light evaluations one pass makes (docs/efficiency.md, "Placing a pass: what is counted"): `perItem`
-// lights per item of `base`, its fragment-shader invocations (counted by the device) or the
-// pixels that hold geometry (from the depth image). Counted from the renderer's own counters.
+// The light evaluations one pass makes (docs/efficiency.md, "Placing a pass: what is counted"):
+// `perItem` lights per item of `base`, its fragment-shader invocations (counted by the device) or
+// the pixels that hold geometry (from the depth image). Counted from the renderer's own counters.
+// Base::Items: `items` given by the renderer itself (e.g. the MSAA edge samples a compute pass
+// shades beside its pixels). Several entries of one pass add up.
 struct PassLightWork {
-    enum class Base { Fragments, CoveredPixels };
+    enum class Base { Fragments, CoveredPixels, Items };
     std::string pass;
     Base base = Base::Fragments;
     double perItem = 0;
     bool exact = false; // false: an estimate (a mean over tiles or clusters, each weighted alike)
     std::string how;    // one line: where perItem comes from
+    double items = 0;   // Base::Items only
+};
+
+// A pass's other counted work (docs/efficiency.md, "Placing a pass: what is counted"), per item
+// of `base` as PassLightWork: texture fetches of its materials, atomics, light-vs-tile tests.
+// Counted as lower bounds: what the pass cannot avoid doing (exact = the count itself is exact).
+struct PassOpWork {
+    enum class Kind { TextureFetches, GlobalAtomics, SharedAtomics, TileTests };
+    std::string pass;
+    Kind kind = Kind::TextureFetches;
+    PassLightWork::Base base = PassLightWork::Base::Fragments;
+    double perItem = 0;
+    bool exact = false;
+    std::string how;
+    double items = 0; // Base::Items only
 };
 
 struct RendererStats {
     std::vector<std::pair<std::string, double>> counters; // e.g. lights_dropped, draws
     std::vector<LeftOut> leftOut;
     std::vector<PassLightWork> lightWork;
+    std::vector<PassOpWork> opWork;
     double counter(const std::string& name, double fallback = 0) const {
         for (const auto& [k, v] : counters)
             if (k == name) return v;

@@ -40,6 +40,7 @@ std::vector<PassWork> countWork(const FrameGraph& graph, const std::vector<PassC
     in.resourceSamples = [&](uint32_t r) { return uint32_t(graph.samples(r)); };
     in.counts = counts;
     in.lightWork = result.stats.lightWork;
+    in.opWork = result.stats.opWork;
     in.coveredPixels = coveredPixels(result.depth);
     in.framePixels = double(graph.width()) * graph.height();
     return countPassWork(in);

@@ -24,6 +24,7 @@
 #define TP_CAL_TEXTURE 8       // `iterations` bilinear fetches of the texture, neighbouring texels
 #define TP_CAL_LIGHT_POINT 9   // `iterations` evalLight of a point light (light_model.h)
 #define TP_CAL_LIGHT_SPOT 10   // ... of a spot light
+#define TP_CAL_IMAGE_READ 15   // `iterations` texelFetch of the texture (one texel, no filter)
 // Fragment kinds (calibrate.frag), drawn over TP_CAL_VERTEX's geometry.
 #define TP_CAL_FRAGMENT_TEXTURE 11 // TP_CAL_TEXTURE per pixel, with texture() (derivatives)
 #define TP_CAL_FRAGMENT_LIGHT_POINT 12
@@ -33,6 +34,9 @@
 // Vertex kinds (calibrate.vert, TP_CAL_VERTEX).
 #define TP_CAL_VERTEX_LAYERS 0 // one full-screen triangle per instance (`iterations` instances)
 #define TP_CAL_VERTEX_GRID 1   // `stride` x `stride` cells of two triangles each, per instance
+// The same grid drawn indexed: (stride + 1)^2 vertices, each shared by up to six triangles, so
+// a device that reuses shaded vertices shades about one per two triangles (a mesh's rate).
+#define TP_CAL_VERTEX_GRID_INDEXED 2
 
 #ifndef TP_GLSL
 namespace tp::gpu {

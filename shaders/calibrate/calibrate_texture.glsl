@@ -21,4 +21,16 @@ vec4 textureFetches(vec2 texel, uint steps) {
     }
     return sum;
 }
+
+// The texture read as an image: `steps` texelFetch (one texel, no filtering), neighbouring
+// invocations on neighbouring texels, the steps over a 16x16-texel window, as a culling pass
+// reads its tile's depth: the fastest way a pass reads an image (an upper bound; a far step
+// each time measured lavapipe 25 % slower than its light culling read). 4 MiB in all: it may
+// stay in a GPU's last-level cache, as an image the previous pass wrote may.
+vec4 texelReads(ivec2 texel, uint steps) {
+    vec4 sum = vec4(0.0);
+    for (uint k = 0u; k < steps; ++k)
+        sum += texelFetch(calTexture, (texel + ivec2(k & 15u, (k >> 4u) & 15u)) & (TP_CAL_TEXTURE_SIZE - 1), 0);
+    return sum;
+}
 #endif
