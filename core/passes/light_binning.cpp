@@ -261,11 +261,14 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     const uint32_t rows = std::max(1u, TP_BIN_FILL_BUDGET / std::max(1u, grid_.tilesX));
+    const uint32_t groups = (locals_ + 63) / 64;
+    const uint32_t target = ctx_.isCpuDevice() ? TP_BIN_FILL_GROUPS_CPU : TP_BIN_FILL_GROUPS_GPU;
+    const uint32_t split = groups == 0 ? 1 : std::max(1u, target / groups);
     for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
         if (first > 0)
             stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)
-        dispatchFlat(cmd, pipelines_[kFill], locals_,
-                     {0, base_, first, std::min(grid_.tilesY, first + rows)});
+        dispatchGroups(cmd, pipelines_[kFill], groups * split,
+                       {split, base_, first, std::min(grid_.tilesY, first + rows)});
     }
 }
 

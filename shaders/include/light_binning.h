@@ -34,6 +34,14 @@ namespace tp::gpu {
 // The rectangles step: 1 when it stores the rectangles for the fill (the frame), 0 when it
 // only counts them (the plan-time sizing, which has no rectangle buffer).
 #define TP_BIN_STORE_RECTS materialIndex
+// The fill: how many workgroups share each 64 lights' (light, tile) pairs.
+#define TP_BIN_SPLIT materialIndex
+// The fill's split is chosen so that at least this many workgroups run (or one per 64 lights):
+// on a GPU enough to fill it (H200, 1,024 lights of the default range: light_bin_fill 0.69 ms
+// with a workgroup per 64 lights); on a CPU device a few, each workgroup's scan costing
+// barriers there.
+#define TP_BIN_FILL_GROUPS_GPU 2048u
+#define TP_BIN_FILL_GROUPS_CPU 8u
 
 // Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32); longer ones
 // by blocks of this size: the bitonic steps within a block in shared memory

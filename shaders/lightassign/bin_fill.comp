@@ -31,7 +31,12 @@ uint binPairOwner(uint i) {
 }
 
 void main() {
-    const uint lane = gl_LocalInvocationIndex, index = binFlatIndex();
+    // TP_BIN_SPLIT workgroups share each 64 lights, pair i going to workgroup i / 64 modulo
+    // the split: so that a few lights of many tiles still fill the GPU (at 1,024 lights, 16
+    // workgroups of 64 would each walk thousands of pairs).
+    const uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    const uint split = draw.TP_BIN_SPLIT, part = group % split;
+    const uint lane = gl_LocalInvocationIndex, index = (group / split) * 64u + lane;
     uint pairs = 0u;
     uvec4 span = uvec4(0u);
     if (index < bin.grid.w) {
@@ -51,7 +56,7 @@ void main() {
     spans[lane] = span;
     barrier();
     const uint W = bin.grid.x;
-    for (uint i = lane; i < total.x; i += 64u) {
+    for (uint i = part * 64u + lane; i < total.x; i += 64u * split) {
         const uint owner = binPairOwner(i), j = i - pairsBefore[owner];
         const uvec4 s = spans[owner];
         binFillTile((s.z + j / s.y) * W + s.x + j % s.y, s.w);
