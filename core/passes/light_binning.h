@@ -12,8 +12,9 @@
 //                prefix sum (the offsets: the compact layout) in one pass down the column
 //   light_bin_fill
 //     5. fill    per light and covered tile, a slot from the tile's count counted down
-//                (atomic: scheduling order); a workgroup per 64 lights, their (light, tile)
-//                pairs spread evenly over its invocations
+//                (atomic: scheduling order); the (light, tile) pairs of each 64 lights
+//                spread evenly over the invocations of one or more workgroups (at least
+//                TP_BIN_FILL_GROUPS_GPU workgroups on a GPU)
 //   light_bin_sort
 //     6. sort    every tile's run ascending: a workgroup per tile in shared memory (by rank up
 //                to 256, else bitonic); longer runs than shared memory holds by blocks
