@@ -71,13 +71,10 @@ class DeferredRenderer final : public Renderer {
             t_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
-        if (def_.cullGeometry == CullGeometry::Frustum) {
-            // The opaque and masked draws' meshlets, culled for the G-buffer pass; the blended
-            // forward pass draws its meshes whole, back to front.
-            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_));
-            cull_->plan(graph);
-        }
-        gbuffer_.plan(graph, t_, cull_ ? &*cull_ : nullptr);
+        // The opaque and masked draws' meshlets, culled for the G-buffer pass; the blended
+        // forward pass draws its meshes whole, back to front.
+        gbuffer_.plan(graph, t_,
+                      passes::planOpaqueCull(cull_, ctx_, scene_, graph, def_.cullGeometry));
         // Blended depth bounds: the fragments of the blended pass at the rate it shades them
         // (per pixel or per sample under MSAA), before the transparent lists are culled against
         // them.

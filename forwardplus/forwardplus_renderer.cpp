@@ -93,13 +93,9 @@ class ForwardPlusRenderer final : public Renderer {
 
         passes::DepthPrepassParams prepass{samples(), scene_.drawList(DrawFilter::Opaque),
                                            scene_.drawList(DrawFilter::Mask)};
-        if (fp_.cullGeometry == CullGeometry::Frustum) {
-            // The opaque and masked draws, culled once per frame for the prepass and
-            // forward_opaque alike (the EQUAL test needs the same triangles in both).
-            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_));
-            cull_->plan(graph);
-            prepass.cull = &*cull_;
-        }
+        // The opaque and masked draws, culled once per frame for the prepass and
+        // forward_opaque alike (the EQUAL test needs the same triangles in both).
+        prepass.cull = passes::planOpaqueCull(cull_, ctx_, scene_, graph, fp_.cullGeometry);
         prepass_.emplace(ctx_, scene_, std::move(prepass));
         prepass_->plan(graph, {depthSrc, msaa ? depth_ : ResourceHandle{}});
 

@@ -46,13 +46,9 @@ class MultipassForwardRenderer final : public Renderer {
         const bool hasLights = hasLights_, hasBlended = hasBlended_;
         passes::DepthPrepassParams prepass{mp_.sampling.samples, plan_.opaque, plan_.masked,
                                            manyViews_, kDepthFormat};
-        if (mp_.cullGeometry == CullGeometry::Frustum) {
-            // Every opaque and masked draw of the scene, not only those on screen now: the
-            // passes record the on-screen ones of each view (updateView) from the same slots.
-            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_));
-            cull_->plan(graph);
-            prepass.cull = &*cull_;
-        }
+        // Every opaque and masked draw of the scene, not only those on screen now: the
+        // passes record the on-screen ones of each view (updateView) from the same slots.
+        prepass.cull = passes::planOpaqueCull(cull_, ctx_, scene_, graph, mp_.cullGeometry);
         prepass_ = std::make_unique<passes::DepthPrepass>(ctx_, scene_, std::move(prepass));
         prepass_->plan(graph,
                        {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});

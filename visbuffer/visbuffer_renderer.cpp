@@ -70,13 +70,11 @@ class VisbufferRenderer final : public Renderer {
             lt_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,
                                   "debug: edge mask, roughness, metallic"});
-        if (vis_.cullGeometry == CullGeometry::Frustum) {
-            // Every opaque and masked draw's meshlets, culled for the visibility pass; each
-            // command carries its meshlet's first triangle for the ids (visibility_pass.h).
-            cull_.emplace(ctx_, scene_, passes::opaqueAndMaskedDraws(scene_), true);
-            cull_->plan(graph);
-        }
-        ids_ = visibility_.plan(graph, samples, depth_, cull_ ? &*cull_ : nullptr);
+        // Every opaque and masked draw's meshlets, culled for the visibility pass; each
+        // command carries its meshlet's first triangle for the ids (visibility_pass.h).
+        passes::MeshletCull* cull =
+            passes::planOpaqueCull(cull_, ctx_, scene_, graph, vis_.cullGeometry, true);
+        ids_ = visibility_.plan(graph, samples, depth_, cull);
         if (blendInCompute_)
             lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
                                       vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,

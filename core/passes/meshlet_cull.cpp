@@ -19,6 +19,14 @@ std::vector<const DrawItem*> opaqueAndMaskedDraws(const SceneGpu& scene) {
     return draws;
 }
 
+MeshletCull* planOpaqueCull(std::optional<MeshletCull>& cull, GpuContext& ctx, SceneGpu& scene,
+                            FrameGraph& graph, CullGeometry mode, bool firstTriangle) {
+    if (mode != CullGeometry::Frustum) return nullptr;
+    cull.emplace(ctx, scene, opaqueAndMaskedDraws(scene), firstTriangle);
+    cull->plan(graph);
+    return &*cull;
+}
+
 MeshletCull::MeshletCull(GpuContext& ctx, SceneGpu& scene, std::vector<const DrawItem*> draws,
                          bool firstTriangle)
     : ctx_(ctx), scene_(scene), draws_(std::move(draws)), firstTriangle_(firstTriangle) {

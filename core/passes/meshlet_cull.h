@@ -14,6 +14,7 @@
 // for rounding, include/meshlets.h). A double-sided material is never cone-culled. Mirrored
 // nodes need nothing: the loader flipped their winding, so the cones follow the front faces.
 // docs/geometry.md.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/resources.h"
+#include "core/renderer/cull_geometry_knob.h"
 
 namespace tp {
 class GpuContext;
@@ -91,5 +93,11 @@ class MeshletCull {
 // What every pipeline's geometry passes cull: the scene's opaque then masked draws, in
 // SceneGpu::drawList order (a pass may record a subset: multipass forward's on-screen meshes).
 std::vector<const DrawItem*> opaqueAndMaskedDraws(const SceneGpu& scene);
+
+// A pipeline's --cull-geometry for its opaque and masked geometry: with `frustum`, the pass
+// over opaqueAndMaskedDraws made in `cull` (firstTriangle as the constructor's) and planned
+// into `graph`, returned for the geometry passes; with `none`, nothing and null.
+MeshletCull* planOpaqueCull(std::optional<MeshletCull>& cull, GpuContext& ctx, SceneGpu& scene,
+                            FrameGraph& graph, CullGeometry mode, bool firstTriangle = false);
 
 } // namespace tp::passes
