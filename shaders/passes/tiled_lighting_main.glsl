@@ -164,7 +164,12 @@ void buildLists(uvec2 tile) {
 }
 
 #ifndef TP_LISTS_ONLY
-// This invocation's pixels of the tile, shaded from the lists (and their debug texels).
+// Round 0 shades this invocation's pixels of the tile that are not edges and lists the edges;
+// round 1 shades the listed edges, one pixel an invocation. An edge is lit per sample (or per
+// distinct surface), up to kSamples times a pixel's work: shaded in place, an invocation with
+// one edge among its pixels held its whole subgroup for that long (Lauritzen 2010 compacts
+// them the same way). The same shade of the same pixel either way: the same image.
+// One shadePixel call site: lavapipe runs both sides of a divergent branch.
 void shadeTile(uvec2 tile) {
     uint pixelsPerInvocation = (kTileSize / TP_GROUP) * (kTileSize / TP_GROUP);
     // A later batch with no light in this tile adds nothing (sCount is uniform here), unless
@@ -174,15 +179,41 @@ void shadeTile(uvec2 tile) {
 #else
     uint shadedPixels = firstBatch() || sCount > 0u ? pixelsPerInvocation : 0u;
 #endif
-    for (uint k = 0u; k < shadedPixels; ++k) {
-        ivec2 p = pixelOf(tile, k);
-        if (!insideViewport(p)) continue;
-        bool edge = shadePixel(p);
-        if (edge) atomicAdd(sEdges, 1u);
+    const uint groupSize = TP_GROUP * TP_GROUP;
+    for (uint round = 0u; round < (kSamples > 1u && !kEverySample ? 2u : 1u); ++round) {
+        // sEdges is uniform after the barrier that ends round 0.
+        uint items = round == 0u ? shadedPixels : (sEdges + groupSize - 1u) / groupSize;
+        for (uint k = 0u; k < items; ++k) {
+            ivec2 p;
+            bool edge = round == 1u, shaded;
+            if (round == 0u) {
+                p = pixelOf(tile, k);
+                shaded = insideViewport(p);
+                edge = shaded && kSamples > 1u && isEdge(p);
+                if (edge) {
+                    uint e = atomicAdd(sEdges, 1u);
+                    // Per sample (kEverySample) every pixel with geometry is an edge: nothing
+                    // to compact, shaded in place.
+                    if (!kEverySample) {
+                        uvec2 local = uvec2(p) - tile * kTileSize;
+                        sEdgePixels[e] = local.y * kTileSize + local.x;
+                        shaded = false; // in round 1
+                    }
+                }
+            } else {
+                uint e = k * groupSize + gl_LocalInvocationIndex;
+                shaded = e < sEdges;
+                uint local = shaded ? sEdgePixels[e] : 0u;
+                p = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            }
+            if (!shaded) continue;
+            shadePixel(p, edge);
 #ifdef TP_DEBUG
-        vec2 rm = debugRoughMetal(p);
-        if (firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
+            vec2 rm = debugRoughMetal(p);
+            if (firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
+        }
+        barrier(); // round 0's list complete
     }
 }
 #endif

@@ -1,9 +1,9 @@
 // The tiled lighting pass, part 3 of 4 (passes/tiled_lighting_inputs.glsl lists the parts):
 // the pixel of a surface source that stores one surface per sample (deferred's G-buffer).
 #ifndef TP_LISTS_ONLY
-// Shades pixel p (all samples, once or per sample) and writes hdr; returns whether it was an edge.
-bool shadePixel(ivec2 p) {
-    bool edge = kSamples > 1u && isEdge(p);
+// Shades pixel p and writes hdr: once at the centre, or (edge: isEdge(p), which the caller
+// tested) every sample.
+void shadePixel(ivec2 p, bool edge) {
     if (!edge) {
         // One surface: shade once at the pixel centre with the mean sample depth.
         float d = meanDepth(p);
@@ -13,7 +13,7 @@ bool shadePixel(ivec2 p) {
 #else
         writeHdr(p, 0u, c);
 #endif
-        return false;
+        return;
     }
     vec3 sum = vec3(0.0);
     for (uint s = 0u; s < kSamples; ++s) {
@@ -27,6 +27,5 @@ bool shadePixel(ivec2 p) {
 #ifndef TP_HDR_MSAA
     writeHdr(p, 0u, sum / float(kSamples));
 #endif
-    return true;
 }
 #endif

@@ -86,7 +86,11 @@ layout(std430, set = TP_SET_PASS, binding = TP_TL_BINDING_TILE_STATS) buffer Til
 shared uint sCount;
 shared uint sTransparentCount;
 shared uint sMaskDropped; // binned: survivors past the tile's mask words (none while the runs match the bound)
-shared uint sEdges;
+shared uint sEdges; // the tile's edge pixels: the length of sEdgePixels
+// Under MSAA the tile's edge pixels (their index in the tile), shaded after the rest by the
+// whole group, one pixel an invocation (tiled_lighting_main.glsl: shadeTile). One word a
+// pixel of the tile; a single word without MSAA.
+shared uint sEdgePixels[kSamples > 1u && !kEverySample ? kTileSize * kTileSize : 1u];
 shared uint sLights[TP_TL_TILE_LIGHT_CAPACITY];
 // The culling's survivors of this batch as bits over its candidates (a batch holds at most
 // the shared capacity: core/passes/tiled_lighting.cpp), made into sLights by compactList.

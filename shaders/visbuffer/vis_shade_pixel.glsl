@@ -6,7 +6,7 @@
 // every sample of that triangle; at --msaa-shading sample, every sample at its own location.
 // TP_VIS_BLEND (--vis-blended compute): the pixel's blended fragments are composited over its
 // samples before they are averaged (vis_blend.glsl).
-// Returns whether the pixel was an edge.
+// edge: isEdge(p), which the caller tested.
 #ifdef TP_VIS_BLEND
 #include "visbuffer/vis_blend.glsl"
 #endif
@@ -32,8 +32,7 @@ void shadeSamples(ivec2 p, inout vec3 c[8]) {
 // SIMD lanes) would otherwise pay for a second inlined copy of the material and light loop
 // in every pixel (measured: 1280x720, 128 lights, --vis-blended compute, 3.44 s -> see
 // docs/visbuffer.md).
-bool shadePixel(ivec2 p) {
-    bool edge = kSamples > 1u && isEdge(p);
+void shadePixel(ivec2 p, bool edge) {
     vec3 c[8];
     if (edge) {
         shadeSamples(p, c);
@@ -60,5 +59,4 @@ bool shadePixel(ivec2 p) {
 #ifndef TP_HDR_MSAA
     writeHdr(p, 0u, oneValue ? c[0] : sum / float(kSamples));
 #endif
-    return edge;
 }
