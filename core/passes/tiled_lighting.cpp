@@ -34,6 +34,9 @@ void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source,
     transparentMasks_ = transparentMasks;
     if (binned_) bound(t.grid, graph.owner());
     if (binning_) binning_->plan(graph); // the frame's light_binning runs before this pass
+    // The tiles' depth bounds, reduced by a pass of their own before this one.
+    depthBounds_ = std::make_unique<TileDepthBounds>(ctx_, scene_);
+    const ResourceHandle tileDepth = depthBounds_->plan(graph, source.depth, source.samples, t.grid);
     // Each resource once, with the binding (set TP_SET_PASS) the shader reads it at.
     std::vector<PassUse> uses;
     if (!listsOnly) uses = source.attributes;
@@ -41,6 +44,7 @@ void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source,
     if (!listsOnly)
         uses.push_back(
             {t.hdrMsaa.valid() ? t.hdrMsaa : t.hdr, Use::StorageWrite, TP_TL_BINDING_HDR});
+    uses.push_back({tileDepth, Use::StorageRead, TP_TL_BINDING_TILE_DEPTH});
     uses.push_back({t.tileStats, Use::StorageWrite, TP_TL_BINDING_TILE_STATS});
     if (t.transparentLists.valid())
         uses.push_back({t.transparentLists, Use::StorageWrite, TP_TL_BINDING_TRANSPARENT_LISTS});
@@ -90,6 +94,7 @@ std::string TiledLighting::shaderName() const {
 }
 
 void TiledLighting::prepare(FrameGraph& graph) {
+    depthBounds_->prepare(graph);
     // texelFetch only: the sampler's filtering is never used.
     sampler_ = createNearestClampSampler(ctx_);
     std::vector<ExternalBuffer> externals;

@@ -18,6 +18,7 @@
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/light_binning.h"
+#include "core/passes/tile_depth_bounds.h"
 #include "passes/tiled_lighting.h"
 
 namespace tp {
@@ -161,6 +162,7 @@ class TiledLighting {
     std::vector<uint32_t> directional_;  // binned: the directional lights planned for
     glm::mat4 binnedProj_{1.0f};         // GPU binning: the projection its slabs are for
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
+    std::unique_ptr<TileDepthBounds> depthBounds_; // the tile_depth_bounds pass before this one
     la::LightBins bins_; // binned: the runs (CPU) or their sizes (GPU: no candidates)
     bool binnedOnce_ = false;
     bool listsOnly_ = false;

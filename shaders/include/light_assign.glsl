@@ -259,6 +259,14 @@ LaTileDepth laTileDepthSerial(uvec2 tile, uint tileSize, uvec2 viewport, uint sa
     return laTileDepthOf(lo, hi, sky);
 }
 
+// The tile's bounds as the tile depth bounds pass stores them (passes/tiled_lighting.h:
+// TP_TL_TILE_DEPTH_*), and back: the tiled lighting takes them from that pass.
+uvec4 laDepthBoundsWords() { return uvec4(laNearBits, laFarBits, laSkyBits, 0u); }
+void laDepthBoundsLoad(uvec4 words) {
+    laNearBits = words.x;
+    laFarBits = words.y;
+    laSkyBits = words.z;
+}
 bool laTileHasGeometry() { return laNearBits > 0u; }
 bool laTileSeesSky() { return laSkyBits != 0u; }
 float laTileNearDepth() { return uintBitsToFloat(laNearBits); } // 0 without geometry

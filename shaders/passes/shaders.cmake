@@ -23,3 +23,7 @@ triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_for
 # The meshlet cull pass (core/passes/meshlet_cull.h): frustum and normal cone per meshlet,
 # indirect draws of the rest.
 triptych_add_shader(SPVS ${SHADER_DIR}/meshlet_cull.comp meshlet_cull_comp)
+# The tile depth bounds pass (core/passes/tile_depth_bounds.h), before the tiled lighting:
+# single-sample and multisampled depth.
+triptych_add_shader(SPVS ${SHADER_DIR}/tile_depth_bounds.comp tile_depth_bounds_comp)
+triptych_add_shader(SPVS ${SHADER_DIR}/tile_depth_bounds.comp tile_depth_bounds_ms_comp DEFINES TP_MSAA=1)

@@ -12,7 +12,7 @@ namespace tp::gpu {
 #endif
 
 // ---- set 1 of the tiled lighting compute pass ----
-// Bindings 0-3, 9 and from 14 on are the surface source's (its reader declares them:
+// Bindings 0-3, 9 and 14-23 are the surface source's (its reader declares them:
 // deferred_shared.h, visbuffer/vis_shared.h).
 #define TP_TL_BINDING_DEPTH 4       // sampler: D32 depth (per sample under MSAA)
 #define TP_TL_BINDING_HDR 5         // storage image: lit radiance (RGBA32F)
@@ -23,6 +23,12 @@ namespace tp::gpu {
 #define TP_TL_BINDING_CANDIDATES 11   // buffer uint[]: binned culling's per-tile candidates (TP_TL_CAND_*)
 #define TP_TL_BINDING_TRANSPARENT_MASKS 12 // buffer uint[]: clustered blended scenes: slice rows over the transparent lists
 #define TP_TL_BINDING_BLEND_BOUNDS 13 // buffer uint[]: blended scenes: blended depth bounds (light_assign.h: TP_LA_BLEND_*)
+#define TP_TL_BINDING_TILE_DEPTH 24  // buffer uvec4 per tile: its depth bounds (the tile_depth_bounds pass writes them)
+
+// The tile depth bounds pass (its set 1: TP_TL_BINDING_DEPTH and TP_TL_BINDING_TILE_DEPTH)
+// writes a tile's record: the bit patterns of its nearest and farthest geometry depth
+// (reverse-Z: nearest is largest; near 0: no geometry), 1 when some sample sees the sky, 0
+// (include/light_assign.glsl: laDepthBoundsWords).
 
 // ---- set 1 of the hybrid forward pass (blended materials) ----
 #define TP_BF_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)

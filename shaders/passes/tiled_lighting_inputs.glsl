@@ -27,7 +27,8 @@
 // What the pass does, and its variant defines:
 
 // Tiled deferred lighting (Andersson 2009, Uncharted; Lauritzen 2010): one workgroup per
-// tile. (1) the tile's depth bounds from the surface's depth (every sample), (2) the lights
+// tile. (1) the tile's depth bounds over every sample of the surface's depth (reduced by the
+// tile_depth_bounds pass before this one, core/passes/tile_depth_bounds.h), (2) the lights
 // of this dispatch's batch (push constant: [first, end), at most the shared capacity) that
 // reach the tile's sub-frustum are culled into a shared list, in ascending candidate order
 // (compactList: the same list, and so the same opaque lighting, on every run), (3) every pixel of the tile

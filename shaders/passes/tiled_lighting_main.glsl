@@ -97,10 +97,10 @@ ivec2 pixelOf(uvec2 tile, uint k) {
 
 bool insideViewport(ivec2 p) { return all(lessThan(uvec2(p), frame.viewport.xy)); }
 
-// The tile's shared state cleared, its depth bounds reduced and (clustered) its slices set.
+// The tile's shared state cleared, its depth bounds read and (clustered) its slices set.
 void beginTile(uvec2 tile) {
-    laDepthBoundsBegin();
     if (gl_LocalInvocationIndex == 0u) {
+        laDepthBoundsLoad(tileDepth[tile.y * gl_NumWorkGroups.x + tile.x]);
         sCount = 0u;
         sTransparentCount = 0u;
         sMaskDropped = 0u;
@@ -109,8 +109,6 @@ void beginTile(uvec2 tile) {
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
         for (uint i = gl_LocalInvocationIndex; i < kMaskWords; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
     for (uint i = gl_LocalInvocationIndex; i < TP_TL_TILE_LIGHT_CAPACITY / 32u; i += TP_GROUP * TP_GROUP) sBits[i] = 0u;
-    barrier();
-    laDepthBoundsReduce(tile, kTileSize, frame.viewport.xy, kSamples);
     barrier();
     if (kSlices > 0u && gl_LocalInvocationIndex == 0u) {
         // Slices over the tile's opaque range (laSliceOf; nothing to slice without geometry).

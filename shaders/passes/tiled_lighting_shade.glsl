@@ -83,6 +83,11 @@ layout(std430, set = TP_SET_PASS, binding = TP_TL_BINDING_TILE_STATS) buffer Til
     uvec4 tileStats[]; // per tile: opaque lights, transparent lights, edge pixels, overflow
 };
 
+// Each tile's depth bounds, from the tile depth bounds pass.
+layout(std430, set = TP_SET_PASS, binding = TP_TL_BINDING_TILE_DEPTH) readonly buffer TileDepth {
+    uvec4 tileDepth[];
+};
+
 shared uint sCount;
 shared uint sTransparentCount;
 shared uint sMaskDropped; // binned: survivors past the tile's mask words (none while the runs match the bound)
