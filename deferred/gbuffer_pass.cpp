@@ -15,7 +15,7 @@ GBufferPass::~GBufferPass() {
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
 }
 
-void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, const passes::MeshletCull* cull) {
+void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull) {
     t_ = &t;
     cull_ = cull;
     const auto samples = VkSampleCountFlagBits(t.layout.samples);
@@ -33,10 +33,9 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, const passes::Mesh
         t.gbufferDepth = t.depth;
         uses.push_back({t.depth, Use::DepthAttachment});
     }
-    if (cull)
-        for (const PassUse& u : cull->drawUses())
-            uses.push_back(u);
-    graph.addPass("gbuffer", uses, [this](PassContext& pc) { record(pc); });
+    passes::planGeometryPass(
+        graph, cull, "gbuffer", uses, t.gbufferDepth,
+        [this](PassContext& pc, passes::CullPhase phase) { record(pc, phase); });
 }
 
 void GBufferPass::prepare() {
@@ -65,11 +64,12 @@ void GBufferPass::prepare() {
     }
 }
 
-void GBufferPass::record(PassContext& pc) {
+void GBufferPass::record(PassContext& pc, passes::CullPhase phase) {
+    const bool clear = phase != passes::CullPhase::Late; // the late phase adds to the early's
     std::vector<ColorTarget> colors;
     for (ResourceHandle h : t_->gbuffer)
-        colors.push_back({h, {}, true, {{0.0f, 0.0f, 0.0f, 0.0f}}});
-    DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}};
+        colors.push_back({h, {}, clear, {{0.0f, 0.0f, 0.0f, 0.0f}}});
+    DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}, clear};
     beginRendering(pc, colors, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     if (cull_) {
@@ -79,7 +79,7 @@ void GBufferPass::record(PassContext& pc) {
             if (!pipeline) continue;
             vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             for (const DrawItem* d : scene_.drawList(mode))
-                cull_->recordDraw(pc, layout_, *d);
+                cull_->recordDraw(pc, layout_, *d, 0, phase);
         }
     } else {
         scene_.recordDraws(pc.cmd, layout_, DrawFilter::Opaque, opaque_);

@@ -18,7 +18,7 @@ VisibilityPass::~VisibilityPass() {
 
 VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
                                        ResourceHandle resolvedDepth,
-                                       const passes::MeshletCull* cull) {
+                                       passes::MeshletCull* cull) {
     samples_ = samples;
     resolved_ = resolvedDepth;
     cull_ = cull;
@@ -37,10 +37,9 @@ VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
         t_.depth = resolvedDepth;
         uses.push_back({resolvedDepth, Use::DepthAttachment});
     }
-    if (cull)
-        for (const PassUse& u : cull->drawUses())
-            uses.push_back(u);
-    graph.addPass("visibility", uses, [this](PassContext& pc) { record(pc); });
+    passes::planGeometryPass(
+        graph, cull, "visibility", uses, t_.depth,
+        [this](PassContext& pc, passes::CullPhase phase) { record(pc, phase); });
     return t_;
 }
 
@@ -77,10 +76,11 @@ void VisibilityPass::prepare(FrameGraph& graph) {
     }
 }
 
-void VisibilityPass::record(PassContext& pc) {
-    ColorTarget ids{t_.ids, {}, true, {}};
+void VisibilityPass::record(PassContext& pc, passes::CullPhase phase) {
+    const bool clear = phase != passes::CullPhase::Late; // the late phase adds to the early's
+    ColorTarget ids{t_.ids, {}, clear, {}};
     ids.clearValue.uint32[0] = 0; // no geometry
-    DepthTarget depth{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}};
+    DepthTarget depth{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}, clear};
     beginRendering(pc, {ids}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     if (cull_) {
@@ -95,7 +95,7 @@ void VisibilityPass::record(PassContext& pc) {
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         for (const TableDraw& t : draws)
             if (cull_)
-                cull_->recordDraw(pc, layout_, *t.item, t.row);
+                cull_->recordDraw(pc, layout_, *t.item, t.row, phase);
             else
                 recordDraw(pc.cmd, layout_, *t.item, t.row);
     };

@@ -8,7 +8,9 @@
 // With a MeshletCull (--cull-geometry frustum) it draws the meshlets that pass kept, each
 // command's firstInstance its meshlet's first triangle: the shaders' meshlet variants map
 // gl_PrimitiveID back to the draw's triangle (SceneGpu::meshletSourceTriangleBuffer, bound in
-// its set 1), so every id is the one the whole draw writes (docs/geometry.md).
+// its set 1), so every id is the one the whole draw writes (docs/geometry.md). With occlusion
+// (--cull-geometry full) it is "visibility" (last frame's visible meshlets), the depth pyramid
+// and the late cull, then "visibility_late" (the rest, loading the ids and the depth).
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "visbuffer/draw_table.h"
@@ -19,7 +21,8 @@ class GpuContext;
 class SceneGpu;
 namespace passes {
 class MeshletCull;
-}
+enum class CullPhase;
+} // namespace passes
 
 namespace vis {
 
@@ -36,11 +39,11 @@ class VisibilityPass {
     // resolvedDepth: the single-sample "depth" output (written directly at 1x). cull: the
     // meshlets to draw (made with firstTriangle), or null to draw the meshes whole.
     VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth,
-                           const passes::MeshletCull* cull = nullptr);
+                           passes::MeshletCull* cull = nullptr);
     void prepare(FrameGraph& graph);
 
   private:
-    void record(PassContext& pc);
+    void record(PassContext& pc, passes::CullPhase phase);
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DrawTable& table_;

@@ -21,10 +21,8 @@ void DepthPrepass::plan(FrameGraph& graph, DepthPrepassTargets t) {
     t_ = t;
     std::vector<PassUse> uses = {{t.depth, Use::DepthAttachment}};
     if (t.resolve.valid()) uses.push_back({t.resolve, Use::DepthResolve});
-    if (params_.cull)
-        for (const PassUse& u : params_.cull->drawUses())
-            uses.push_back(u);
-    graph.addPass("depth_prepass", uses, [this](PassContext& pc) { record(pc); });
+    planGeometryPass(graph, params_.cull, "depth_prepass", uses, t.depth,
+                     [this](PassContext& pc, CullPhase phase) { record(pc, phase); });
 }
 
 void DepthPrepass::prepare() {
@@ -54,24 +52,25 @@ bool DepthPrepass::setDraws(std::vector<const DrawItem*> opaque,
     return true;
 }
 
-void DepthPrepass::record(PassContext& pc) {
-    beginRendering(pc, {}, DepthTarget{t_.depth, t_.resolve});
+void DepthPrepass::record(PassContext& pc, CullPhase phase) {
+    // The late phase adds to what the early one wrote.
+    beginRendering(pc, {}, DepthTarget{t_.depth, t_.resolve, phase != CullPhase::Late});
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     if (params_.cull)
         scene_.bindMeshletIndexBuffer(pc.cmd);
     else
         scene_.bindIndexBuffer(pc.cmd);
-    draws_ = 0;
+    if (phase != CullPhase::Late) draws_ = 0;
     for (auto [pipeline, list] :
          {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
         if (!pipeline) continue;
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         for (const DrawItem* d : *list)
             if (params_.cull)
-                params_.cull->recordDraw(pc, layout_, *d);
+                params_.cull->recordDraw(pc, layout_, *d, 0, phase);
             else
                 recordDraw(pc.cmd, layout_, *d);
-        draws_ += uint32_t(list->size());
+        if (phase != CullPhase::Late) draws_ += uint32_t(list->size());
     }
     endRendering(pc);
 }

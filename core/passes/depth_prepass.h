@@ -23,6 +23,7 @@ struct DrawItem;
 namespace tp::passes {
 
 class MeshletCull;
+enum class CullPhase;
 
 struct DepthPrepassParams {
     uint32_t samples = 1;
@@ -33,7 +34,9 @@ struct DepthPrepassParams {
     VkFormat depthFormat = VK_FORMAT_D32_SFLOAT; // the depth target's (and resolve's) format
     // --cull-geometry: the draws are recorded as the meshlets this pass kept (every draw of
     // the lists must be among its draws); null: each draw whole, from the scene's indices.
-    const MeshletCull* cull = nullptr;
+    // With occlusion (full) the prepass is two passes around the depth pyramid and the late
+    // cull: depth_prepass (last frame's visible meshlets) and depth_prepass_late (the rest).
+    MeshletCull* cull = nullptr;
 };
 
 // depth: the attachment (per sample under MSAA); resolve: the single-sample depth it resolves
@@ -48,7 +51,8 @@ class DepthPrepass {
     ~DepthPrepass();
     DepthPrepass(const DepthPrepass&) = delete;
     DepthPrepass& operator=(const DepthPrepass&) = delete;
-    // Declares pass "depth_prepass": writes `t.depth`, resolves into `t.resolve`.
+    // Declares pass "depth_prepass": writes `t.depth`, resolves into `t.resolve` (with
+    // occlusion culling also "depth_prepass_late", after the pyramid: planGeometryPass).
     void plan(FrameGraph& graph, DepthPrepassTargets t);
     // Pipelines (after the graph is compiled; they depend on no resource).
     void prepare();
@@ -58,7 +62,7 @@ class DepthPrepass {
     bool setDraws(std::vector<const DrawItem*> opaque, std::vector<const DrawItem*> masked);
 
   private:
-    void record(PassContext& pc);
+    void record(PassContext& pc, CullPhase phase);
     GpuContext& ctx_;
     const SceneGpu& scene_;
     DepthPrepassParams params_;

@@ -5,15 +5,19 @@ namespace tp {
 const ChoiceKnob<CullGeometry>& cullGeometryKnob() {
     static const ChoiceKnob<CullGeometry> k{
         "cull-geometry",
-        {{CullGeometry::None, "none"}, {CullGeometry::Frustum, "frustum"}},
+        {{CullGeometry::None, "none"},
+         {CullGeometry::Frustum, "frustum"},
+         {CullGeometry::Full, "full"}},
         "Meshlet culling on the GPU before the opaque and masked geometry passes: none (every "
-        "mesh drawn whole) or frustum (meshlets of at most 64 vertices and 124 triangles culled "
+        "mesh drawn whole), frustum (meshlets of at most 64 vertices and 124 triangles culled "
         "by bounding sphere against the view frustum and by normal cone when back-facing, the "
-        "rest drawn with vkCmdDrawIndexedIndirectCount). Culled: Forward+'s depth prepass and "
-        "opaque shading, deferred's G-buffer, the visibility buffer's visibility pass, "
-        "multipass forward's depth prepass, base and light passes; blended draws, shadow maps "
-        "and the reference are drawn whole. 'full' (occlusion against a depth pyramid) is not "
-        "built yet (docs/geometry.md)"};
+        "rest drawn with vkCmdDrawIndexedIndirectCount) or full (frustum and cone, then "
+        "occlusion in two phases: the meshlets visible last frame are drawn, a depth pyramid is "
+        "built from their depth, the rest are drawn where their bounding sphere is not wholly "
+        "behind it; the first frame treats every meshlet as visible). Culled: Forward+'s depth "
+        "prepass and opaque shading, deferred's G-buffer, the visibility buffer's visibility "
+        "pass, multipass forward's depth prepass, base and light passes; blended draws, shadow "
+        "maps and the reference are drawn whole (docs/geometry.md)"};
     return k;
 }
 

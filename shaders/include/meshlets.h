@@ -18,6 +18,15 @@
 // pass's firstInstance, TP_MC_FLAG_FIRST_TRIANGLE), after its locations 0..5; the visibility
 // pass's fragment shader reads it (scene_meshlet_vert, scene_position_meshlet_vert).
 #define TP_LOCATION_MESHLET_TRIANGLE 6
+// The occlusion test's margins (--cull-geometry full; docs/geometry.md, "What is conservative").
+// The relative error of rotating a camera-relative position into view space (a few fp32 ulps
+// of its length): the sphere grows by it.
+#define TP_MESHLET_ROTATION_EPS 1e-6f
+// The sphere's nearest depth grows by this much, relatively: the rounding of scene.vert's
+// clip position and of the rasterizer's depth interpolation (a few ulps each) stays far below.
+#define TP_MESHLET_OCCLUSION_DEPTH_EPS 1e-5f
+// The screen rectangle grows by this many pixels a side: the rounding of the projection.
+#define TP_MESHLET_OCCLUSION_PIXELS 1.0f
 
 #ifndef TP_GLSL
 namespace tp::gpu {
@@ -49,6 +58,40 @@ TP_INLINE bool meshletOutsidePlane(vec4 plane, vec3 center, float radius) {
 TP_INLINE bool meshletConeCulls(vec3 apexRelative, vec3 axis, float cutoff, float slack) {
     const float len = length(apexRelative);
     return dot(apexRelative, axis) - slack > (cutoff + TP_MESHLET_CONE_MARGIN) * (len + slack);
+}
+
+// The occlusion test's two measures of a sphere (view-space centre: FrameUniforms.view applied
+// to the camera-relative centre; looking down -z), under the symmetric reverse-Z perspective
+// `proj` that camera.cpp builds (only proj[0][0], [1][1], [2][2] and [3][2] are non-zero).
+
+// The largest depth (reverse-Z: the nearest) any point of the sphere can have, with
+// TP_MESHLET_OCCLUSION_DEPTH_EPS to spare; -1 when the sphere reaches the near plane `znear`
+// (or is not a number): such a sphere is never occluded.
+TP_INLINE float sphereNearestDepth(vec3 viewCentre, float radius, mat4 proj, float znear) {
+    const float nearest = -viewCentre.z - radius; // its nearest point's distance along the axis
+    if (!(nearest > znear)) return -1.0f;
+    // depth(z) = (proj[2][2] z + proj[3][2]) / -z, at z = -nearest; it falls with the distance.
+    return (proj[3][2] / nearest - proj[2][2]) * (1.0f + TP_MESHLET_OCCLUSION_DEPTH_EPS);
+}
+
+// The pixels of a `size` frame that a sphere wholly in front of the near plane can cover:
+// (x0, y0, x1, y1), continuous pixel coordinates (y down, as the viewport's negative height
+// gives), TP_MESHLET_OCCLUSION_PIXELS to spare, not clipped to the frame. It is the projection
+// of the view-space box around the sphere: every x/z and y/z of the box lies between the
+// ratios at its corners, since its nearest face is in front of the eye.
+TP_INLINE vec4 sphereScreenRect(vec3 viewCentre, float radius, mat4 proj, vec2 size) {
+    const float zNear = -viewCentre.z - radius, zFar = -viewCentre.z + radius;
+    const float xLo = min((viewCentre.x - radius) / zNear, (viewCentre.x - radius) / zFar);
+    const float xHi = max((viewCentre.x + radius) / zNear, (viewCentre.x + radius) / zFar);
+    const float yLo = min((viewCentre.y - radius) / zNear, (viewCentre.y - radius) / zFar);
+    const float yHi = max((viewCentre.y + radius) / zNear, (viewCentre.y + radius) / zFar);
+    // x_ndc = proj[0][0] x / -z, pixel (x_ndc + 1) w / 2; y_ndc = proj[1][1] y / -z, pixel
+    // row (1 - y_ndc) h / 2.
+    const float m = TP_MESHLET_OCCLUSION_PIXELS;
+    return vec4((proj[0][0] * xLo + 1.0f) * 0.5f * size.x - m,
+                (1.0f - proj[1][1] * yHi) * 0.5f * size.y - m,
+                (proj[0][0] * xHi + 1.0f) * 0.5f * size.x + m,
+                (1.0f - proj[1][1] * yLo) * 0.5f * size.y + m);
 }
 
 #ifndef TP_GLSL

@@ -27,3 +27,13 @@ triptych_add_shader(SPVS ${SHADER_DIR}/meshlet_cull.comp meshlet_cull_comp)
 # single-sample and multisampled depth.
 triptych_add_shader(SPVS ${SHADER_DIR}/tile_depth_bounds.comp tile_depth_bounds_comp)
 triptych_add_shader(SPVS ${SHADER_DIR}/tile_depth_bounds.comp tile_depth_bounds_ms_comp DEFINES TP_MSAA=1)
+# --cull-geometry full: the early phase (last frame's visible meshlets) and the late one (the
+# rest against the depth pyramid); each binds the visibility history, the late one the pyramid.
+triptych_add_shader(SPVS ${SHADER_DIR}/meshlet_cull.comp meshlet_cull_early_comp
+  DEFINES TP_MC_PHASE=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/meshlet_cull.comp meshlet_cull_late_comp
+  DEFINES TP_MC_PHASE=2)
+# The depth pyramid (core/passes/depth_pyramid.h) from a single-sample or an MSAA depth image.
+triptych_add_shader(SPVS ${SHADER_DIR}/depth_pyramid.comp depth_pyramid_comp)
+triptych_add_shader(SPVS ${SHADER_DIR}/depth_pyramid.comp depth_pyramid_msaa_comp
+  DEFINES TP_DP_MSAA=1)

@@ -11,10 +11,12 @@
 #include <filesystem>
 #include <random>
 
+#include "core/camera/camera.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/meshlets.h"
 #include "core/scene/procedural.h"
 #include "include/meshlets.h"
+#include "passes/depth_pyramid.h"
 #include "transformed_scenes.h"
 
 namespace tp {
@@ -217,6 +219,72 @@ TEST(Meshlets, FrustumPlaneTest) {
     EXPECT_TRUE(gpu::meshletOutsidePlane(plane, {0, 0, 0}, 1.9f));
     EXPECT_FALSE(gpu::meshletOutsidePlane(plane, {0, 0, 0}, 2.1f));
     EXPECT_FALSE(gpu::meshletOutsidePlane(plane, {5, 5, 3}, 0.0f));
+}
+
+} // namespace
+} // namespace tp
+
+namespace tp {
+namespace {
+
+// The occlusion test's footprint (include/meshlets.h): every point of a sphere in front of the
+// near plane projects (in double, through the same projection) inside its pixel rectangle, at
+// a depth no larger than its nearest depth; a sphere that reaches the near plane gets none.
+TEST(MeshletOcclusion, FootprintHoldsEveryPointOfTheSphere) {
+    const uint32_t w = 320, h = 180;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (float zfar : {0.0f, 200.0f}) {
+        const glm::mat4 proj = reverseZPerspective(1.0f, float(w) / float(h), 0.05f, zfar);
+        const glm::dmat4 projD(proj);
+        uint64_t spheres = 0, nearCrossing = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const glm::vec3 c(u(rng) * 20.0f, u(rng) * 12.0f, -(u(rng) + 1.0f) * 40.0f);
+            const float r = (u(rng) + 1.05f) * (i % 3 == 0 ? 8.0f : 0.5f);
+            const float depth = gpu::sphereNearestDepth(c, r, proj, 0.05f);
+            if (depth < 0.0f) {
+                EXPECT_LE(-c.z - r, 0.05f) << "a sphere in front of the near plane got no depth";
+                ++nearCrossing;
+                continue;
+            }
+            ++spheres;
+            const glm::vec4 rect = gpu::sphereScreenRect(c, r, proj, glm::vec2(w, h));
+            for (int k = 0; k < 200; ++k) {
+                glm::dvec3 d(u(rng), u(rng), u(rng));
+                if (glm::length(d) == 0.0) continue;
+                const glm::dvec3 p = glm::dvec3(c) + double(r) * glm::normalize(d);
+                const glm::dvec4 clip = projD * glm::dvec4(p, 1.0);
+                const double x = (clip.x / clip.w + 1.0) * 0.5 * w;
+                const double y = (1.0 - clip.y / clip.w) * 0.5 * h;
+                ASSERT_GE(x, rect.x) << i;
+                ASSERT_LE(x, rect.z) << i;
+                ASSERT_GE(y, rect.y) << i;
+                ASSERT_LE(y, rect.w) << i;
+                ASSERT_LE(clip.z / clip.w, double(depth)) << i;
+            }
+        }
+        EXPECT_GT(spheres, 1000u);
+        EXPECT_GT(nearCrossing, 10u);
+    }
+}
+
+// The pyramid's levels: each ceil(n / 2^(level+1)), down to exactly 1x1, packed one after another.
+TEST(MeshletOcclusion, PyramidLevels) {
+    for (auto [w, h] : std::vector<std::pair<uint32_t, uint32_t>>{
+             {1, 1}, {2, 2}, {3, 5}, {64, 48}, {96, 54}, {1280, 720}, {1920, 1080}}) {
+        const uint32_t levels = gpu::pyramidLevels(w, h);
+        uint32_t offset = 0;
+        for (uint32_t l = 0; l < levels; ++l) {
+            const glm::uvec2 s = gpu::pyramidLevelSize(w, h, l);
+            EXPECT_EQ(s.x, (w + (2u << l) - 1) / (2u << l)) << w << "x" << h << " level " << l;
+            EXPECT_EQ(s.y, (h + (2u << l) - 1) / (2u << l)) << w << "x" << h << " level " << l;
+            EXPECT_EQ(gpu::pyramidLevelOffset(w, h, l), offset);
+            offset += s.x * s.y;
+        }
+        EXPECT_EQ(gpu::pyramidLevelSize(w, h, levels - 1), glm::uvec2(1, 1)) << w << "x" << h;
+        if (levels > 1) EXPECT_NE(gpu::pyramidLevelSize(w, h, levels - 2), glm::uvec2(1, 1));
+    }
+    EXPECT_EQ(gpu::pyramidLevels(1920, 1080), 11u); // 960 x 540 down to 1 x 1
 }
 
 } // namespace

@@ -40,6 +40,9 @@ const std::vector<std::pair<std::string, std::string>> kViewKnobs = {
     {"light-lists", "linked"},      {"deferred-lighting", "volumes"},
     {"blended-lights", "one-pass"}, {"vis-blended", "forward"},
     {"cull-geometry", "frustum"}, // the meshlets kept follow the camera on the GPU
+    // Occlusion's history is the last view's visible set: the late phase draws what the new
+    // view uncovers (the first render at B and back at A start from a stale history).
+    {"cull-geometry", "full"},
 };
 
 bool reads(const RendererEntry& e, const std::string& knob) {
