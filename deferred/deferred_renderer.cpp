@@ -151,8 +151,16 @@ class DeferredRenderer final : public Renderer {
         return true;
     }
 
+    // GPU binning: the view needed more than the plan's candidates or transparent lists hold
+    // (counted on the GPU, read after the frames); the session plans again for it.
+    bool overflowed(FrameGraph& graph) override {
+        return t_.tileStats.valid() && lighting_.overflowed(graph);
+    }
+
     void collectStats(FrameGraph& graph) override {
         if (t_.tileStats.valid()) {
+            lighting_.collect(graph); // GPU binning: the frame's layout
+            if (hasBlended_ && lighting_.gpuBinning()) t_.listOffsets = lighting_.listOffsets();
             std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.tileStats));
             tileStats_.assign(raw.size() / 4, 0);
             std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
@@ -263,6 +271,8 @@ RendererStats DeferredRenderer::stats() const {
         s.counters.push_back({"light_candidates", double(lighting_.candidates())});
         if (binned()) // --light-bin, resolved
             s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
+        if (lighting_.gpuBinning()) // readbacks of a plan-time sizing run (views add none)
+            s.counters.push_back({"light_bin_sizing_runs", double(lighting_.sizingRuns())});
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)

@@ -152,15 +152,23 @@ class ForwardPlusRenderer final : public Renderer {
         shading_->prepare(graph, params_.buffer);
     }
 
-    // A new view (the camera or the lights' positions): its bins on the CPU (or the GPU
-    // binning's sizing run) laid out in the planned lists, fp_params and the shading's lights
-    // copy uploaded again; the frame's passes (spheres, binning, culling) recompute the rest.
-    // false when the view outgrew the lists' room or the light types changed.
+    // A new view (the camera or the lights' positions): its bins on the CPU (or, clustered,
+    // the GPU binning's sizing run) laid out in the planned lists, fp_params and the shading's
+    // lights copy uploaded again; the frame's passes (spheres, binning, culling) recompute the
+    // rest. false when the view outgrew the lists' room or the light types changed. Tiled with
+    // the GPU binning, nothing of fp_params follows the view: the frame's light_binning writes
+    // the offsets and the runs, and a view past the room is caught after its frames
+    // (overflowed): no readback here.
     bool updateView(FrameGraph&) override {
         if (shadows_->stale()) return false; // other shadowed lights or map sizes
         const la::LightClasses classes = la::classifyLights(scene_.lightsGpu());
         if (classes.directional != classes_.directional || classes.local != classes_.local)
             return false; // fp_params' light classes and the shading's loop are planned
+        if (viewOnGpu()) {
+            binning_->followView();
+            shading_->updateLights();
+            return true;
+        }
         if (boundsLists()) {
             fp::ViewBins bins = fp::binView(scene_, viewBinning());
             if (!cap_.holds(bins)) return false;
@@ -174,7 +182,21 @@ class ForwardPlusRenderer final : public Renderer {
         return true;
     }
 
+    // --light-bin gpu: the view's lists were cut (more slots than the room, or a run longer
+    // than the frame's batches and sort were recorded for); the session plans again, and the
+    // plan's sizing run sizes the lists for this view.
+    bool overflowed(FrameGraph& graph) override {
+        return binning_ && binning_->overflowed(graph, culling_->batchSize());
+    }
+
     void collectStats(FrameGraph& graph) override {
+        if (binning_) { // the frame's layout (updateView no longer reads it back)
+            la::LightBins frame = binning_->collect(graph);
+            bins_.bound = std::move(frame.bound);
+            bins_.offsets = std::move(frame.offsets);
+            bins_.slots = frame.slots;
+            bins_.maxBound = frame.maxBound;
+        }
         std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(tiles_));
         tileLists_.resize(grid_.count());
         std::memcpy(tileLists_.data(), bytes.data(), tileLists_.size() * sizeof(gpu::FpTileLists));
@@ -227,6 +249,9 @@ class ForwardPlusRenderer final : public Renderer {
         if (binned())
             add("binned_candidates", double(r_.gpuBinning ? bins_.slots : bins_.candidates.size()));
         if (binned()) add("light_binning_on_gpu", r_.gpuBinning ? 1.0 : 0.0); // --light-bin, resolved
+        if (binning_) // readbacks of a plan-time sizing run: 1 per plan where views follow on the
+                      // GPU
+            add("light_bin_sizing_runs", double(binning_->sizingRuns()));
         if (clustered()) {
             add("slices", double(fp_.assign.slices));
             add("cluster_mask_words", double(bins_.masks.words));
@@ -266,6 +291,9 @@ class ForwardPlusRenderer final : public Renderer {
     // Whether the lists' layout follows the view: the compact and linked layouts' bound, binned
     // culling's candidates (fixed, unbinned: nothing to bin).
     bool boundsLists() const { return layout() != TP_FP_LAYOUT_FIXED || binned(); }
+    // The GPU binning lays out every view itself (tiled: clustered's mask rows still follow
+    // the CPU's copy of the bound, from a sizing run per view).
+    bool viewOnGpu() const { return r_.gpuBinning && !clustered(); }
 
     fp::ViewBinning viewBinning() {
         return {grid_, &classes_, binned(), clustered(), fp_.assign.slices, binning_.get()};
@@ -278,7 +306,7 @@ class ForwardPlusRenderer final : public Renderer {
         // --light-bin gpu: the frame builds the candidates; a sizing run per view sizes them.
         if (r_.gpuBinning)
             binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid_, classes_.local,
-                                                        "forwardplus");
+                                                        "forwardplus", manyViews_);
         bins_ = fp::binView(scene_, viewBinning());
         // 32-bit offsets index data[] in fp_params: refuse what they cannot address.
         if (bins_.slots > fp::addressableSlots(viewBinning()))
@@ -311,13 +339,16 @@ class ForwardPlusRenderer final : public Renderer {
     void createParams() {
         fp::PackedParams packed = packParams();
         candidateWord_ = packed.candidateWord;
+        offsetWord_ = packed.offsetWord;
         params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(),
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        {"forwardplus", "", "fp_params", packed.purpose});
     }
 
-    // The most lights a tile tests: the culling's batches.
+    // The most lights a tile tests: the culling's batches (GPU binning: the longest run it
+    // plans, checked after each view).
     uint32_t mostTested() const {
+        if (binning_) return binning_->runBound();
         return binned() ? bins_.maxBound : uint32_t(classes_.local.size());
     }
 
@@ -342,7 +373,8 @@ class ForwardPlusRenderer final : public Renderer {
         if (r_.spherePass) spheres_.prepare(graph);
         // fp_params is uploaded in prepare() and updateView(), outside the graph.
         culling_->prepare(graph, params_.buffer);
-        if (binning_) binning_->prepare(graph, params_.buffer, candidateWord_);
+        if (binning_)
+            binning_->prepare(graph, params_.buffer, candidateWord_, offsetWord_, cap_.slots);
     }
 
     GpuContext& ctx_;
@@ -365,6 +397,7 @@ class ForwardPlusRenderer final : public Renderer {
     fp::ViewCapacity cap_;           // what the plan's buffers hold (fp::planCapacity)
     std::unique_ptr<la::GpuBinning> binning_; // r_.gpuBinning: the light_binning pass
     uint64_t candidateWord_ = 0;              // the candidates' first word in fp_params
+    uint64_t offsetWord_ = 0;                 // the tile offsets' first word in fp_params
     fp::ListSizes lists_;
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;

@@ -57,9 +57,10 @@ class LightCulling {
     // A new view's most tested lights (binned: its longest candidate run): the batches of the
     // next recording.
     void setMostTested(uint32_t mostTested) { config_.mostTested = mostTested; }
+    // Candidates per dispatch (a tile testing more takes several).
+    uint32_t batchSize() const;
 
   private:
-    uint32_t batchSize() const;
     void record(PassContext& pc);
 
     GpuContext& ctx_;

@@ -70,6 +70,7 @@ struct ParamsInput {
 struct PackedParams {
     std::vector<uint8_t> bytes;
     uint64_t candidateWord = 0; // the candidates' first word in the buffer
+    uint64_t offsetWord = 0;    // the per-tile offsets' first word (the GPU binning writes them)
     std::string purpose;        // the buffer's description in the ledger
 };
 

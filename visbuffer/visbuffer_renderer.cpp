@@ -142,6 +142,8 @@ class VisbufferRenderer final : public Renderer {
     }
 
     void collectStats(FrameGraph& graph) override {
+        lighting_.collect(graph); // GPU binning: the frame's layout
+        if (hasBlended_ && lighting_.gpuBinning()) lt_.listOffsets = lighting_.listOffsets();
         std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(lt_.tileStats));
         tileStats_.assign(raw.size() / 4, 0);
         std::memcpy(tileStats_.data(), raw.data(), tileStats_.size() * 4);
@@ -154,9 +156,13 @@ class VisbufferRenderer final : public Renderer {
 
     // Many views, derived pool: a view that dropped blended fragments is rendered again with a
     // pool twice what it met (RendererSession; docs/visbuffer.md, "Many views").
+    // GPU binning: the view needed more than the plan's candidates or transparent lists hold
+    // (TiledLighting::overflowed). Both read, so one replan grows both.
     bool overflowed(FrameGraph& graph) override {
-        return blendInCompute_ && vis_.manyViews && vis_.blendedCapacityPercent == 0 &&
-               blendedIds_.overflowed(graph);
+        const bool pool = blendInCompute_ && vis_.manyViews && vis_.blendedCapacityPercent == 0 &&
+                          blendedIds_.overflowed(graph);
+        const bool lists = lighting_.overflowed(graph);
+        return pool || lists;
     }
     std::map<std::string, uint64_t> capacityHints() const override {
         return {{vis::kSeenFragments, blendedIds_.grownNeed()}};
@@ -289,6 +295,8 @@ RendererStats VisbufferRenderer::stats() const {
     s.counters.push_back({"light_candidates", double(lighting_.candidates())});
     if (vis_.assign.binned())
         s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
+    if (lighting_.gpuBinning()) // readbacks of a plan-time sizing run (views add none)
+        s.counters.push_back({"light_bin_sizing_runs", double(lighting_.sizingRuns())});
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? t.edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)
         s.leftOut.push_back(

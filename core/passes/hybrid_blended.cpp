@@ -47,6 +47,8 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
 }
 
 bool HybridBlended::updateLists(TiledLighting& lighting, TiledLightingTargets& t) {
+    // GPU binning: the frame lays the lists out (prepare); overflow is checked after it.
+    if (masks_ && lighting.gpuBinning()) return true;
     const std::vector<uint32_t>* bound = masks_ ? &lighting.bound(t.grid, "") : nullptr;
     TransparentListPlan lists = transparentListNeed(t.grid, scene_, masks_, bound);
     if (lists.slots > capacity_) return false;
@@ -66,8 +68,9 @@ void HybridBlended::planForward(FrameGraph& graph, const BlendedForwardTargets& 
     forwardPlanned_ = true;
 }
 
-void HybridBlended::prepare(FrameGraph& graph, const TiledLighting& lighting) {
+void HybridBlended::prepare(FrameGraph& graph, TiledLighting& lighting) {
     bounds_.prepare(graph);
+    if (masks_ && lighting.gpuBinning()) lighting.publishListWords(capacity_);
     if (forwardPlanned_) forward_.prepare(graph, lighting.candidatesBuffer(), masks_);
 }
 

@@ -32,7 +32,8 @@ class HybridBlended {
     void planLists(FrameGraph& graph, TiledLighting& lighting, TiledLightingTargets& t, bool binned,
                    uint32_t slices, bool sliceRows, bool manyViews = false);
     // A new view, after lighting.updateView: the lists' offsets for it into t.listOffsets and
-    // tiled lighting's buffer. false when they need more slots than planned (a replan).
+    // tiled lighting's buffer. false when they need more slots than planned (a replan). GPU
+    // binning: nothing (the frame lays them out; TiledLighting::overflowed checks the room).
     bool updateLists(TiledLighting& lighting, TiledLightingTargets& t);
     // Then, after the pass that writes the opaque depth: the blended depth bounds.
     ResourceHandle planBounds(FrameGraph& graph, const la::BlendedBoundsConfig& config);
@@ -40,7 +41,9 @@ class HybridBlended {
     // Optional: a pipeline that composites blended surfaces itself (the visibility buffer's
     // --vis-blended compute) uses only the lists and the bounds.
     void planForward(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices);
-    void prepare(FrameGraph& graph, const TiledLighting& lighting);
+    // GPU binning: the frame lays out the lists' bitmasks (TiledLighting::publishListWords), in
+    // the planned capacity.
+    void prepare(FrameGraph& graph, TiledLighting& lighting);
 
     // Clustered: the slice rows tiled lighting writes (invalid otherwise).
     ResourceHandle sliceRows() const { return sliceRows_; }

@@ -16,10 +16,11 @@
 namespace tp::la {
 namespace {
 
-enum Step { kClear, kRects, kRows, kColumns, kFill, kSort, kSortStep, kSortLocal, kSteps };
+enum Step { kClear, kRects, kRows, kColumns, kWords, kFill, kSort, kSortStep, kSortLocal, kSteps };
 const char* const kShaders[kSteps] = {
-    "la_bin_clear_comp", "la_bin_rects_comp", "la_bin_scan_rows_comp", "la_bin_scan_columns_comp",
-    "la_bin_fill_comp",  "la_bin_sort_comp",  "la_bin_sort_step_comp", "la_bin_sort_local_comp"};
+    "la_bin_clear_comp",        "la_bin_rects_comp",      "la_bin_scan_rows_comp",
+    "la_bin_scan_columns_comp", "la_bin_scan_words_comp", "la_bin_fill_comp",
+    "la_bin_sort_comp",         "la_bin_sort_step_comp",  "la_bin_sort_local_comp"};
 
 // Between the steps of the pass: each reads what the one before wrote (hand-written: the
 // graph orders passes, not the dispatches within one).
@@ -39,9 +40,9 @@ uint32_t sortSize(uint32_t n) {
 } // namespace
 
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-                       const std::vector<uint32_t>& local, std::string owner)
+                       const std::vector<uint32_t>& local, std::string owner, bool manyViews)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
-      owner_(std::move(owner)) {
+      owner_(std::move(owner)), manyViews_(manyViews) {
     // Its largest buffer: the light list, bound whole.
     if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
@@ -56,7 +57,7 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
         ctx_, list.data(), list.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
         {owner_, "light_binning", "light_bin_lights", "GPU binning: point/spot lights"});
     std::vector<SetBinding> bindings;
-    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_RECTS; ++b)
+    for (uint32_t b = TP_BIN_BINDING_INPUTS; b <= TP_BIN_BINDING_WORDS; ++b)
         bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     set_ = createPassSet(ctx_, bindings);
     set_.pass = "light_binning";
@@ -121,6 +122,14 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_ROWS, b.rows);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_TARGET, target);
     writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_RECTS, b.rects);
+    // The word layout's buffer, or a stand-in the scan never runs on.
+    writeBufferDescriptor(ctx_, set_.set, TP_BIN_BINDING_WORDS,
+                          words_.buffer && b.rows == frame_.rows ? words_.buffer : b.rows);
+}
+
+void GpuBinning::publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room) {
+    words_ = {out, scale, add, uint32_t(std::min<uint64_t>(room, 0xffffffffull))};
+    if (target_) bind(frame_, target_);
 }
 
 LightBins GpuBinning::sizes() {
@@ -135,7 +144,7 @@ LightBins GpuBinning::sizes() {
     };
     const uint32_t tiles = grid_.count();
     Buffer counts = make(tiles, "light_bin_sizing_counts"),
-           offsets = make(tiles + 1, "light_bin_sizing_offsets"),
+           offsets = make(tiles + 1 + TP_BIN_NEEDS, "light_bin_sizing_offsets"),
            rows = make(grid_.tilesY, "light_bin_sizing_rows");
     bind({counts.buffer, offsets.buffer, rows.buffer, rows.buffer},
          rows.buffer); // target and rectangles: unused here
@@ -160,8 +169,40 @@ LightBins GpuBinning::sizes() {
     bins.slots = makeCompactLayout(bins.bound).slots;
     if (!bins.bound.empty())
         bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
-    maxBound_ = bins.maxBound;
+    if (sizingRuns_++ == 0) // the frame's longest run: planned once, checked after each view
+        runBound_ = manyViews_ ? std::min(locals_, std::max(1u, bins.maxBound) * kRunHeadroom)
+                               : bins.maxBound;
     if (target_) bind(frame_, target_); // a later view's sizing: the frame's buffers again
+    return bins;
+}
+
+bool GpuBinning::overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra) {
+    const std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(offsets_));
+    uint32_t need[TP_BIN_NEEDS];
+    std::memcpy(need, bytes.data() + (size_t(grid_.count()) + 1) * 4, sizeof(need));
+    const uint32_t run = need[TP_BIN_NEED_RUN];
+    // A longer run than planned matters only where the recording would differ: the long-run
+    // sort's steps (runs past shared memory, up to sortSize(runBound)) and the consumer's
+    // batches. So a single view's exact bound is not outgrown by a view one light longer.
+    const auto sorted = [](uint32_t n) { return n <= TP_BIN_SHARED_SORT ? 0u : sortSize(n); };
+    const auto batches = [&](uint64_t n) { return (extra + n + batch - 1) / std::max(batch, 1u); };
+    const bool longer = sorted(run) > sorted(runBound_) || batches(run) > batches(runBound_);
+    return need[TP_BIN_NEED_SLOTS] > room_ || longer ||
+           (words_.buffer && need[TP_BIN_NEED_WORDS] > words_.room);
+}
+
+LightBins GpuBinning::collect(FrameGraph& graph) {
+    const uint32_t tiles = grid_.count();
+    const std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(offsets_));
+    LightBins bins;
+    bins.offsets.resize(size_t(tiles) + 1);
+    std::memcpy(bins.offsets.data(), bytes.data(), bins.offsets.size() * 4);
+    bins.bound.resize(tiles);
+    for (uint32_t t = 0; t < tiles; ++t) {
+        bins.bound[t] = bins.offsets[t + 1] - bins.offsets[t];
+        bins.maxBound = std::max(bins.maxBound, bins.bound[t]);
+    }
+    bins.slots = bins.offsets[tiles];
     return bins;
 }
 
@@ -169,8 +210,9 @@ void GpuBinning::plan(FrameGraph& graph) {
     const uint32_t tiles = grid_.count();
     counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4,
                                  "GPU binning: lights covering each tile");
-    offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1) * 4,
-                                  "GPU binning: each tile's first candidate (prefix sum)");
+    offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1 + TP_BIN_NEEDS) * 4,
+                                  "GPU binning: each tile's first candidate (prefix sum), the "
+                                  "view's needs");
     rows_ = graph.createBuffer("light_bin_rows", uint64_t(grid_.tilesY) * 4,
                                "GPU binning: per row, its scans' sum");
     rects_ = graph.createBuffer("light_bin_rects", uint64_t(std::max(locals_, 1u)) * 8,
@@ -206,10 +248,13 @@ void GpuBinning::plan(FrameGraph& graph) {
     graph.exportResource("light_bin_counts", counts_);
 }
 
-void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord) {
-    if (baseWord > 0xffffffffull)
+void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord,
+                         uint64_t offsetsWord, uint64_t room) {
+    if (baseWord > 0xffffffffull || offsetsWord + grid_.count() > 0xffffffffull)
         throw std::logic_error("GpuBinning: the target's first word exceeds 32 bits");
     base_ = uint32_t(baseWord);
+    offsetsWord_ = uint32_t(offsetsWord);
+    room_ = uint32_t(std::min<uint64_t>(room, 0xffffffffull));
     frame_ = {graph.buffer(counts_).buffer, graph.buffer(offsets_).buffer,
               graph.buffer(rows_).buffer, graph.buffer(rects_).buffer};
     target_ = target;
@@ -238,19 +283,34 @@ void GpuBinning::dispatchGroups(VkCommandBuffer cmd, VkPipeline pipeline, uint32
     vkCmdDispatch(cmd, x, y, 1);
 }
 
-// Steps 1-4: counts and offsets; with storeRects, the rectangles for the fill.
-void GpuBinning::recordSizing(VkCommandBuffer cmd, bool storeRects) {
+// Steps 1-4: counts and offsets; the frame (`frame`) also stores the rectangles for the fill
+// and publishes the offsets, clamped to the room, into the target.
+void GpuBinning::recordSizing(VkCommandBuffer cmd, bool frame) {
+    if (frame) // the previous frame's culling and shading read the published offsets (WAR), and
+               // the target was uploaded outside the graph (WAW)
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                      VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     const gpu::DrawPush push{0, base_, 0, 0};
     dispatchFlat(cmd, pipelines_[kClear], grid_.count(), push);
     stepBarrier(cmd);
-    dispatchFlat(cmd, pipelines_[kRects], locals_, {storeRects ? 1u : 0u, base_, 0, 0});
+    dispatchFlat(cmd, pipelines_[kRects], locals_, {frame ? 1u : 0u, base_, 0, 0});
     stepBarrier(cmd);
     // A workgroup per row, then per column (bin_scan_columns.comp: counts and offsets).
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kRows]);
     vkCmdDispatch(cmd, grid_.tilesY, 1, 1);
     stepBarrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kColumns]);
-    vkCmdDispatch(cmd, grid_.tilesX, 1, 1);
+    const gpu::DrawPush columns =
+        frame ? gpu::DrawPush{1u, base_, offsetsWord_, room_} : gpu::DrawPush{0u, base_, 0u, ~0u};
+    dispatchGroups(cmd, pipelines_[kColumns], grid_.tilesX, columns);
+    if (frame && words_.buffer) { // the consumer's word layout over the counts
+        stepBarrier(cmd);
+        dispatchGroups(cmd, pipelines_[kWords], 1, {words_.scale, words_.add, words_.room, 0});
+    }
+    if (frame) // the published offsets: read by the culling and shading (any stage)
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                      VK_ACCESS_2_MEMORY_READ_BIT);
 }
 
 // Step 5: the runs, unsorted, into the target (pass light_bin_fill).
@@ -279,12 +339,12 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSort]);
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdDispatch(cmd, grid_.tilesX, grid_.tilesY, 1);
-    if (maxBound_ > TP_BIN_SHARED_SORT) {
+    if (runBound_ > TP_BIN_SHARED_SORT) {
         // Runs too long for shared memory: a bitonic sort over blocks of TP_BIN_SHARED_SORT.
         // Steps within a block in shared memory (bin_sort_local), one dispatch for all the
         // steps of a merge that stay in the block; a dispatch per step only for the distances
         // of a block or more (bin_sort_step): for a run of 16,384, 6 dispatches, not 105.
-        const uint32_t size = sortSize(maxBound_), blocks = size / TP_BIN_SHARED_SORT;
+        const uint32_t size = sortSize(runBound_), blocks = size / TP_BIN_SHARED_SORT;
         const uint32_t chunks = (size / 2 + 64 * TP_BIN_STEP_PAIRS - 1) / (64 * TP_BIN_STEP_PAIRS);
         auto local = [&](uint32_t kFrom, uint32_t kTo) {
             stepBarrier(cmd);

@@ -2,7 +2,7 @@
 // Light binning on the GPU (--light-bin gpu), shared by Forward+ and tiled deferred: the
 // runs la::binLights builds on the CPU (light_bins.h), built every frame by three timed
 // compute passes, exactly equal (include/light_binning.h says why):
-//   light_binning (counts and offsets, 4 dispatches)
+//   light_binning (counts and offsets, 4 dispatches; a 5th for a word layout, publishWords)
 //     1. clear   the counts (a difference array)
 //     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
 //                corners in the difference array; in the frame the rectangle, stored for the
@@ -21,9 +21,13 @@
 //                (bitonic steps within a block in shared memory, across blocks a dispatch each)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
 // steps 1-4 once, then readbacks of the counts and the offsets: the numbers the CPU path
-// gives. A renderer that follows a new view (Renderer::updateView) calls sizes() again for it:
-// the slab planes follow the projection, the sort follows the new longest run, and the frame's
-// buffers are bound again afterwards.
+// gives. A renderer that follows a new view (Renderer::updateView) needs no readback: the
+// frame's step 4 also publishes the offsets into the consumer's buffer (prepare's
+// offsetsWord), each clamped to the planned room, so the culling and shading read the GPU's
+// layout of that view; the fill and the sort stay inside the clamped runs. What the view
+// needed (the total and the longest run) is left after the offsets for overflowed(), read
+// after the view's frames: a view past the room or past the planned longest run is counted
+// there and the renderer is planned again (the contract's step 7), never shown cut.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -41,25 +45,55 @@ class SceneGpu;
 
 namespace tp::la {
 
+// Many views: the longest run planned, over the first view's (core/passes/light_binning.h).
+constexpr uint32_t kRunHeadroom = 2;
+
 class GpuBinning {
   public:
     // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
     // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
+    // manyViews: the longest run the frame plans for (runBound) gets kRunHeadroom over the
+    // first view's.
     GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-               const std::vector<uint32_t>& local, std::string owner);
+               const std::vector<uint32_t>& local, std::string owner, bool manyViews = false);
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
 
-    // For the scene's current view (plan time, and again per view): steps 1-4 on the GPU, read
-    // back. bound, offsets, slots, maxBound; no candidates. Between frames (it waits).
+    // For the scene's current view (plan time): steps 1-4 on the GPU, read back. bound,
+    // offsets, slots, maxBound; no candidates. Between frames (it waits). The first call also
+    // plans runBound().
     LightBins sizes();
+    // A new view followed without sizes(): the slab planes again where the projection moved
+    // (an upload only then). The frame bins the view itself.
+    void followView() { uploadInputs(); }
+    // The longest run the frame is recorded for (the sort's steps, the consumers' batches):
+    // the first sizes()'s maxBound, with kRunHeadroom under many views, at most every local
+    // light. A longer run is an overflow (overflowed()).
+    uint32_t runBound() const { return runBound_; }
+    // Plan-time sizing runs so far (a readback each): 1 per plan when views follow on the GPU.
+    uint32_t sizingRuns() const { return sizingRuns_; }
     // The frame: passes "light_binning" (steps 1-4), "light_bin_fill" (5), "light_bin_sort" (6),
     // timed apart (their own buffers in the graph; exports light_bin_offsets and light_bin_counts).
     void plan(FrameGraph& graph);
     // target: the buffer the culling reads its candidates from (uploaded outside the graph);
-    // tile t's run goes to its words [baseWord + offsets[t], baseWord + offsets[t + 1]).
-    void prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord);
+    // tile t's run goes to its words [baseWord + offsets[t], baseWord + offsets[t + 1]), and
+    // the frame writes offsets[0..tiles] to its words from offsetsWord, each clamped to `room`
+    // (the run slots the target holds from baseWord).
+    void prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord, uint64_t offsetsWord,
+                 uint64_t room);
+    // The frame also lays out, into `out` (tiles + 1 words), scale * ceil((add + count) / 32)
+    // words per tile (a bit per candidate: the transparent lists' masks), clamped to `room`;
+    // a view needing more is an overflow too. After prepare.
+    void publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room);
+    // After a view's frames: whether the view needed more than the plan holds: more slots than
+    // the room, more words than publishWords's room, or a run longer than runBound() where that
+    // changes what was recorded (the sort's steps, or the consumer's batches of `batch` lights
+    // over `extra` + the run: ceil((extra + run) / batch)). Its lists were then cut, and the
+    // caller plans again. Reads the view's needs back (a few words).
+    bool overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra = 0);
+    // After a frame: its layout (bound, offsets, slots, maxBound) read back, for statistics.
+    LightBins collect(FrameGraph& graph);
 
   private:
     struct Bufs {
@@ -83,10 +117,17 @@ class GpuBinning {
     uint32_t locals_ = 0;
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
-    uint32_t maxBound_ = 0; // from sizes(): whether long runs need bin_sort_step
+    uint32_t offsetsWord_ = 0, room_ = 0; // prepare(): where the frame publishes its offsets
+    uint32_t runBound_ = 0; // from the first sizes(): whether long runs need bin_sort_step
+    uint32_t sizingRuns_ = 0;
+    bool manyViews_ = false;
     Buffer inputs_, localList_;
     std::vector<uint8_t> inputBytes_; // what inputs_ holds
     Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()
+    struct Words {
+        VkBuffer buffer = VK_NULL_HANDLE;
+        uint32_t scale = 0, add = 0, room = 0;
+    } words_; // publishWords()
     VkBuffer target_ = VK_NULL_HANDLE;
     ResourceHandle counts_, offsets_, rows_, rects_;
     PassSet set_;

@@ -7,6 +7,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/readback.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/stand_ins.h"
 #include "core/gpu/vk_check.h"
@@ -100,11 +101,12 @@ void TiledLighting::prepare(FrameGraph& graph) {
     std::vector<ExternalBuffer> externals;
     if (t_.transparentLists.valid()) {
         // Uploaded once per configuration: the compact layout's runs (blended_lists.h plans them).
-        listOffsets_ =
-            createBufferWithData(ctx_, t_.listOffsets.data(), t_.listOffsets.size() * 4,
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                 {graph.owner(), "", "transparent_list_offsets",
-                                  "per tile: first slot of its transparent list (prefix sum)"});
+        // Transfer source: GPU binning reads the frame's layout back for statistics (collect).
+        listOffsets_ = createBufferWithData(
+            ctx_, t_.listOffsets.data(), t_.listOffsets.size() * 4,
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+            {graph.owner(), "", "transparent_list_offsets",
+             "per tile: first slot of its transparent list (prefix sum)"});
         externals.push_back({TP_TL_BINDING_LIST_OFFSETS, listOffsets_.buffer});
         if (!transparentMasks_.valid()) {
             // The shader declares the slice rows whenever it writes lists; only clustered uses
@@ -149,8 +151,8 @@ const std::vector<uint32_t>& TiledLighting::bound(const la::TileGrid& grid,
         binnedOnce_ = true;
         if (gpuBinning_) { // sized now (one plan-time run); the frame's pass fills the runs
             const std::vector<uint32_t> local = la::classifyLights(scene_.shadingLights()).local;
-            binning_ = std::make_unique<la::GpuBinning>(ctx_, scene_, grid, local, owner);
-            binnedProj_ = scene_.shadingFrame().proj;
+            binning_ =
+                std::make_unique<la::GpuBinning>(ctx_, scene_, grid, local, owner, manyViews_);
         }
         t_.grid = grid; // plan() sets it again
         bin();
@@ -178,7 +180,8 @@ std::vector<uint32_t> TiledLighting::candidateWords(const la::LightClasses& clas
     words.insert(words.end(), classes.directional.begin(), classes.directional.end());
     words.insert(words.end(), bins_.offsets.begin(), bins_.offsets.end());
     words.insert(words.end(), bins_.candidates.begin(), bins_.candidates.end());
-    maxCandidates_ = directional + bins_.maxBound;
+    // GPU binning: the longest run the frame is recorded for (a longer one is an overflow).
+    maxCandidates_ = directional + (binning_ ? binning_->runBound() : bins_.maxBound);
     candidateCount_ = uint64_t(directional) * tiles + bins_.slots;
     std::vector<uint32_t>().swap(bins_.candidates); // uploaded: the host copy is not needed again
     return words;
@@ -221,25 +224,60 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
          binned_ ? "binned culling: directional lights, per-tile offsets, candidates" +
                        std::string(slotCapacity_ > bins_.slots ? " (headroom for other views)" : "")
                  : "binned culling off (--light-cull all): header only"});
-    if (binning_) binning_->prepare(graph, candidates_.buffer, words[TP_TL_CAND_RUNS]);
+    if (binning_)
+        binning_->prepare(graph, candidates_.buffer, words[TP_TL_CAND_RUNS],
+                          words[TP_TL_CAND_OFFSETS], slotCapacity_);
 }
 
-bool TiledLighting::updateView(FrameGraph& graph) {
+bool TiledLighting::updateView(FrameGraph&) {
     if (!binned_) return true; // every tile tests every light: nothing depends on the view
     la::LightClasses classes = la::classifyLights(scene_.shadingLights());
     if (classes.directional != directional_) return false; // the header's layout would move
-    if (binning_ && std::memcmp(&binnedProj_, &scene_.shadingFrame().proj, sizeof(glm::mat4)) != 0)
-        return false; // its slab planes were uploaded for the planned projection
-    bin();
     if (binning_) {
-        // The sizing run rebinds the binning's set to its own buffers: back to the frame's.
-        binning_->prepare(graph, candidates_.buffer,
-                          TP_TL_CAND_HEADER + directional_.size() + t_.grid.count() + 1);
+        // The frame bins the view and writes the offsets and runs (light_binning.h); a view
+        // past the room is caught after its frames (overflowed): nothing read back here.
+        binning_->followView();
+        return true;
     }
+    bin();
     if (bins_.slots > slotCapacity_) return false;
     std::vector<uint32_t> words = candidateWords(classes);
     uploadBufferData(ctx_, candidates_, words.data(), words.size() * 4);
     return true;
+}
+
+void TiledLighting::publishListWords(uint64_t room) {
+    if (binning_)
+        binning_->publishWords(listOffsets_.buffer, 1, uint32_t(directional_.size()), room);
+}
+
+bool TiledLighting::overflowed(FrameGraph& graph) {
+    return binning_ && binning_->overflowed(graph, lightBatch(), uint32_t(directional_.size()));
+}
+
+// Lights per dispatch of the shading loop (record's batches).
+uint32_t TiledLighting::lightBatch() const {
+    const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();
+    // Lists only: no shading loop, one dispatch whatever the light count.
+    uint32_t batch = listsOnly_
+                         ? std::max(lights, 1u)
+                         : tiledLightBatch(t_.grid.tileSize,
+                                           std::max(source_.samples, source_.evaluationsPerPixel));
+    // Clustered: the slice bitmasks of a batch fit the shared array (passes/tiled_lighting.h).
+    if (slices_ > 0 && !listsOnly_)
+        batch = std::min(batch, TP_TL_CLUSTER_MASK_WORDS * 32 / slices_);
+    return batch;
+}
+
+void TiledLighting::collect(FrameGraph& graph) {
+    if (!binning_) return;
+    bins_ = binning_->collect(graph);
+    candidateCount_ = uint64_t(directional_.size()) * t_.grid.count() + bins_.slots;
+    if (listOffsets_.buffer) {
+        const std::vector<uint8_t> raw = readbackBuffer(ctx_, listOffsets_);
+        t_.listOffsets.resize(size_t(t_.grid.count()) + 1);
+        std::memcpy(t_.listOffsets.data(), raw.data(), t_.listOffsets.size() * 4);
+    }
 }
 
 void TiledLighting::setListOffsets(const std::vector<uint32_t>& offsets) {
@@ -292,14 +330,7 @@ void TiledLighting::record(PassContext& pc) {
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     // Binned: batches over each tile's candidates, up to the fullest tile's.
     const uint32_t lights = binned_ ? maxCandidates_ : scene_.lightCount();
-    // Lists only: no shading loop, one dispatch whatever the light count.
-    uint32_t batch =
-        listsOnly_ ? std::max(lights, 1u)
-                   : tiledLightBatch(t_.grid.tileSize,
-                                     std::max(source_.samples, source_.evaluationsPerPixel));
-    // Clustered: the slice bitmasks of a batch fit the shared array (passes/tiled_lighting.h).
-    if (slices_ > 0 && !listsOnly_)
-        batch = std::min(batch, TP_TL_CLUSTER_MASK_WORDS * 32 / slices_);
+    const uint32_t batch = lightBatch();
     batches_ = 0;
     for (uint32_t first = 0; first == 0 || first < lights; first += batch, ++batches_) {
         if (first > 0) {

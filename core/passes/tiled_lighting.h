@@ -120,18 +120,31 @@ class TiledLighting {
     // (gpuBinning) by the plan-time run of the GPU binning: first for the planned view (plan()
     // bins if nobody asked before), then for each new one by updateView.
     const std::vector<uint32_t>& bound(const la::TileGrid& grid, const std::string& owner);
-    // A new view (camera or lights moved; SceneGpu holds them): the lights binned again for it
-    // (CPU: la::binLights; GPU binning: its sizing run again) and the candidates' header,
-    // offsets and (CPU) runs uploaded into the planned buffer, so bound() and the next
-    // recording follow. false when the view does not fit the plan: more candidate slots than
-    // the buffer holds, other directional lights, or (GPU binning) another projection or more
-    // lights of large rectangles than its big list holds.
+    // A new view (camera or lights moved; SceneGpu holds them), CPU binning: the lights binned
+    // again for it and the candidates' header, offsets and runs uploaded into the planned
+    // buffer, so bound() and the next recording follow; false when the view does not fit the
+    // plan (more candidate slots than the buffer holds, other directional lights). GPU
+    // binning: only the slab planes (light_binning.h: followView); the frame writes the
+    // offsets and runs, and overflowed() checks the room after the view's frames (bound()
+    // stays the planned view's).
     bool updateView(FrameGraph& graph);
     // The transparent lists' offsets of a new view (HybridBlended::updateLists), uploaded.
     void setListOffsets(const std::vector<uint32_t>& offsets);
+    // GPU binning (after prepare): the frame lays out the transparent lists' bitmasks itself,
+    // in `room` words, instead of setListOffsets per view (light_binning.h: publishWords).
+    void publishListWords(uint64_t room);
+    // GPU binning, after a view's frames: whether it needed more than the plan holds (the
+    // candidates' room, the longest run, the transparent lists' words); the caller plans again.
+    bool overflowed(FrameGraph& graph);
+    // GPU binning, after a frame: its layout read back (candidates(), listOffsets()), for
+    // statistics.
+    void collect(FrameGraph& graph);
+    const std::vector<uint32_t>& listOffsets() const { return t_.listOffsets; }
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
     bool gpuBinning() const { return gpuBinning_; }
+    // GPU binning: plan-time sizing runs (readbacks) so far; views followed add none.
+    uint32_t sizingRuns() const { return binning_ ? binning_->sizingRuns() : 0; }
     // Dispatches the last recorded frame made (one per batch of lights).
     uint32_t batches() const { return batches_; }
     // The light_candidates buffer (after prepare): binned, the blended pass walks the
@@ -142,6 +155,7 @@ class TiledLighting {
   private:
     void record(PassContext& pc);
     void dispatch(VkCommandBuffer cmd, uint32_t first, uint32_t end);
+    uint32_t lightBatch() const;
     std::string passName() const;
     std::string shaderName() const;
     bool shadowed() const; // shading that samples the shadow atlas
@@ -160,7 +174,6 @@ class TiledLighting {
     bool manyViews_ = false;
     uint64_t slotCapacity_ = 0;          // binned: candidate run slots the buffer holds
     std::vector<uint32_t> directional_;  // binned: the directional lights planned for
-    glm::mat4 binnedProj_{1.0f};         // GPU binning: the projection its slabs are for
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass
     std::unique_ptr<TileDepthBounds> depthBounds_; // the tile_depth_bounds pass before this one
     la::LightBins bins_; // binned: the runs (CPU) or their sizes (GPU: no candidates)

@@ -20,17 +20,38 @@ namespace tp::gpu {
 #define TP_BIN_BINDING_LOCALS 1  // uint[]: the point/spot light indices, ascending (la::LightClasses::local)
 #define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles
                                  // cover it; the fill counts it down (its cursor)
-#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1]: exclusive prefix sum of the counts (modulo 2^32: a
-                                 // layout past 2^32 - 1 is refused before any frame, from the counts)
+#define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1 + TP_BIN_NEEDS]: exclusive prefix sum of the counts
+                                 // (modulo 2^32: a layout past 2^32 - 1 is refused before any frame,
+                                 // from the counts), in the frame clamped to the room; then the needs
 #define TP_BIN_BINDING_ROWS 4    // uint[tilesY]: per row of tiles, the sum of its row prefix sums (scans)
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
 #define TP_BIN_BINDING_RECTS 6   // uvec2[local lights]: each light's rectangle (binPackRect), for the fill
+#define TP_BIN_BINDING_WORDS 7   // uint[tiles + 1]: a word layout over the counts (bin_scan_words.comp)
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.
 #define TP_BIN_BASE pad0
 #define TP_BIN_FIRST pad1
 #define TP_BIN_END pad2
+// The columns step (the frame): 1 when it publishes the offsets, clamped to the room, into the
+// target's words from TP_BIN_OFFSETS_WORD (0: the plan-time sizing, unclamped, unpublished).
+#define TP_BIN_PUBLISH materialIndex
+#define TP_BIN_OFFSETS_WORD pad1
+#define TP_BIN_ROOM pad2
+// After the offsets (offsets[tiles + 1 + i]): what the view needed, read after its frames
+// (GpuBinning::overflowed): the slots unclamped (modulo 2^32), the longest run.
+#define TP_BIN_NEEDS 3u
+#define TP_BIN_NEED_SLOTS 0u
+#define TP_BIN_NEED_RUN 1u
+#define TP_BIN_NEED_WORDS 2u // the word layout's words (when one is published)
+// The word layout (bin_scan_words.comp, after the counts): tile t takes
+// TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD + counts[t]) / 32) words, a bit per candidate
+// (the transparent lists' bitmasks over the directional lights and the run), exclusive prefix
+// sum clamped to TP_BIN_WORDS_ROOM.
+#define TP_BIN_WORDS_SCALE materialIndex
+#define TP_BIN_WORDS_ADD pad0
+#define TP_BIN_WORDS_ROOM pad1
+
 // The rectangles step: 1 when it stores the rectangles for the fill (the frame), 0 when it
 // only counts them (the plan-time sizing, which has no rectangle buffer).
 #define TP_BIN_STORE_RECTS materialIndex

@@ -1,12 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 1: every tile's count (the difference array) to 0.
+// light_binning, step 1: every tile's count (the difference array) to 0, and the longest
+// run (bin_scan_columns.comp takes the maximum).
 #include "lightassign/bin_common.glsl"
 
 layout(local_size_x = 64) in;
 
 void main() {
     const uint t = binFlatIndex();
+    if (t == 0u) offsets[bin.grid.z + 1u + TP_BIN_NEED_RUN] = 0u; // the longest run, an atomicMax
     if (t >= bin.grid.z) return;
     counts[t] = 0u;
 }

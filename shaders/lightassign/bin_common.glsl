@@ -28,6 +28,9 @@ layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_TARGET) buffer BinTar
 layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_RECTS) buffer BinRectBlock {
     uvec2 rects[];
 };
+layout(std430, set = TP_SET_PASS, binding = TP_BIN_BINDING_WORDS) buffer BinWordBlock {
+    uint words[];
+};
 
 // A flat index (light or tile): 64 invocations per workgroup, workgroups in a 2D grid (a dispatch
 // dimension holds at most 65,535).
@@ -90,8 +93,11 @@ uint binRectArea(ivec4 rect) {
 
 // Light `light`'s slot in tile t's run: the tile's count, counted down (atomic: scheduling
 // order until the sort), is the cursor.
+// A view past the planned room has its offsets clamped (bin_scan_columns.comp): a slot past
+// the tile's clamped run is not written (counted there, not here).
 void binFillTile(uint t, uint light) {
-    target[draw.TP_BIN_BASE + offsets[t] + atomicAdd(counts[t], 0xffffffffu) - 1u] = light;
+    const uint slot = offsets[t] + atomicAdd(counts[t], 0xffffffffu) - 1u;
+    if (slot < offsets[t + 1u]) target[draw.TP_BIN_BASE + slot] = light;
 }
 
 // The padded power of two a run of n sorts as.

@@ -26,16 +26,29 @@ void main() {
     }
     uvec4 slots;
     uint above = binScanExclusive(uvec4(aboveSum, 0u, 0u, 0u), slots).x; // the rows above this share
-    uint count = before.x, left = before.y;
+    uint count = before.x, left = before.y, longest = 0u;
     rowTotal = before.z;
+    // The frame: each offset clamped to the room (published for the consumers, which read
+    // their runs as offset differences), so a view past it cuts its runs instead of writing
+    // past them; overflowed() reads the needs and has the view planned again.
+    const bool publish = draw.TP_BIN_PUBLISH != 0u;
+    const uint room = publish ? draw.TP_BIN_ROOM : 0xffffffffu;
     for (uint y = share.x; y < share.y; ++y) {
         const uint t = y * W + x;
         count += counts[t];
         left += offsets[t];
         counts[t] = count;
-        offsets[t] = above + left;
+        longest = max(longest, count);
+        const uint offset = min(above + left, room);
+        offsets[t] = offset;
+        if (publish) target[draw.TP_BIN_OFFSETS_WORD + t] = offset;
         rowTotal += rowSums[y];
         above += rowTotal;
     }
-    if (x == 0u && gl_LocalInvocationIndex == 0u) offsets[bin.grid.z] = slots.x;
+    atomicMax(offsets[bin.grid.z + 1u + TP_BIN_NEED_RUN], longest);
+    if (x == 0u && gl_LocalInvocationIndex == 0u) {
+        offsets[bin.grid.z] = min(slots.x, room);
+        offsets[bin.grid.z + 1u + TP_BIN_NEED_SLOTS] = slots.x;
+        if (publish) target[draw.TP_BIN_OFFSETS_WORD + bin.grid.z] = min(slots.x, room);
+    }
 }

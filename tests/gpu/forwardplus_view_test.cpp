@@ -1,6 +1,7 @@
 // Forward+ planned once, moved to other views (forwardplus/view_bins.h; the contract's step 6):
 // a view whose lists fit the planned room is followed in place; a view that needs more slots
-// than the plan holds is refused by updateView and planned again, counted (view_replans) -
+// than the plan holds is refused by updateView (CPU binning) or counted by the frame (GPU
+// binning: Renderer::overflowed, rendered again) and planned again, counted (view_replans) -
 // never silent, never a cut list - and renders what a renderer planned there renders.
 // view_update_test.cpp checks the ordinary views of every configuration with headroom; here
 // the lists are sized exactly (RenderSettings::manyViews off), so the room is the first view's.
@@ -59,7 +60,8 @@ bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
            std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
-// --light-bin cpu and gpu (its sizing run per view), clustered (the mask rows' room too).
+// --light-bin cpu and gpu (tiled: the frame lays the view out and counts an overflow, read after
+// the view's frames), clustered (the mask rows' room too).
 class ForwardPlusViews : public ::testing::TestWithParam<std::map<std::string, std::string>> {};
 
 // What a renderer planned at the scene's current view renders, bit for bit.
@@ -107,6 +109,13 @@ TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     EXPECT_EQ((*session)->updates(), 1u);
     EXPECT_EQ((*session)->replans(), 0u) << "a view within the room is followed in place";
     expectPlannedThere(*ctx, scene, **entry, settings, atFarInPlace, "in place");
+    // --light-bin gpu, tiled: the view followed with no sizing run (no readback): the frame
+    // laid it out (core/passes/light_binning.h).
+    const bool gpuTiled = GetParam().count("light-bin") && GetParam().at("light-bin") == "gpu" &&
+                          !GetParam().count("light-assign");
+    if (gpuTiled) {
+        EXPECT_EQ(atFarInPlace.stats.counter("light_bin_sizing_runs"), 1.0);
+    }
 
     gpu.setLights(close); // the lights come close to the eye: more tiles each
     scene.lights = close;
@@ -115,6 +124,10 @@ TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     EXPECT_EQ(moved.stats.counter("view_replans"), 1.0);
     EXPECT_EQ(moved.stats.counter("light_list_slots"), double(closeAtFar) * lists);
     EXPECT_EQ(moved.stats.counter("lights_dropped", -1.0), 0.0);
+    // GPU binning: the overflow was counted by the frame, then planned again (one sizing run).
+    if (gpuTiled) {
+        EXPECT_EQ(moved.stats.counter("light_bin_sizing_runs"), 1.0);
+    }
 
     expectPlannedThere(*ctx, scene, **entry, settings, moved, "planned again");
     expectNoValidationMessages(*ctx);

@@ -131,12 +131,21 @@ struct Binned {
     la::LightBins cpu;                   // la::binLights, with candidates
     la::LightBins sizes;                 // the GPU's plan-time run
     std::vector<uint32_t> offsets, runs; // the GPU's frame: its offsets, the target's runs
+    std::vector<uint32_t> published;     // the offsets the frame wrote into the target
+    std::vector<uint32_t> words;         // the word layout it wrote (publishWords)
+    uint32_t canary = 0;                 // the target's word past the room
+    bool overflowed = false;             // GpuBinning::overflowed after the frames
     uint32_t largestRect = 0;            // tiles of the largest rectangle, on the CPU
 };
 
-// One frame of the light_binning pass alone, writing its runs `base` words into a buffer.
+constexpr uint32_t kCanary = 0xC0FFEEu;
+constexpr uint32_t kWordsAdd = 3; // the word layout's extra candidates per tile (directional)
+
+// One frame of the light_binning pass alone, writing its runs `base` words into a buffer:
+// room for `room` slots (all it needs when ~0), then a canary word, then the published
+// offsets; `runBound` (when not ~0) the longest run the frame is recorded for.
 Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile,
-           uint32_t frames = 2) {
+           uint32_t frames = 2, uint32_t room = ~0u, bool manyViews = false) {
     Binned out;
     scene.setView(w, h, 1);
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
@@ -148,18 +157,27 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
         if (!r.empty())
             out.largestRect =
                 std::max(out.largestRect, uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1));
-    la::GpuBinning gpuBin(ctx, scene, grid, local, "test");
+    la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews);
     out.sizes = gpuBin.sizes();
     const uint32_t base = 7; // the runs need not start at word 0
+    if (room == ~0u) room = uint32_t(out.sizes.slots);
+    const uint32_t tiles = grid.count(), offsetsWord = base + room + 1;
+    std::vector<uint32_t> init(offsetsWord + tiles + 1, 0);
+    init[base + room] = kCanary;
     Buffer target =
-        createBuffer(ctx, (base + out.sizes.slots + 1) * 4,
-                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                     MemoryKind::Device, {"test", "", "runs", "the runs"});
+        createBufferWithData(ctx, init.data(), init.size() * 4,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             {"test", "", "runs", "the runs, a canary, the offsets"});
+    Buffer wordLayout = createBuffer(
+        ctx, (tiles + 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+        MemoryKind::Device, {"test", "", "words", "the word layout"});
     FrameGraph graph(ctx, "test", w, h);
     gpuBin.plan(graph);
     graph.compile();
-    gpuBin.prepare(graph, target.buffer, base);
+    gpuBin.prepare(graph, target.buffer, base, offsetsWord, room);
+    gpuBin.publishWords(wordLayout.buffer, 1, kWordsAdd, ~0u);
     recordAndSubmit(ctx, graph, frames); // a frame rebuilds what the last one left
+    out.overflowed = gpuBin.overflowed(graph, 1); // batches of one light: any longer run counts
     auto words = [](const std::vector<uint8_t>& bytes, size_t first, size_t n) {
         std::vector<uint32_t> w(n);
         std::memcpy(w.data(), bytes.data() + first * 4, n * 4);
@@ -167,7 +185,11 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     };
     out.offsets = words(readbackBuffer(ctx, graph.buffer(graph.exported("light_bin_offsets"))), 0,
                         grid.count() + 1);
-    out.runs = words(readbackBuffer(ctx, target), base, out.sizes.slots);
+    const std::vector<uint8_t> targetBytes = readbackBuffer(ctx, target);
+    out.runs = words(targetBytes, base, std::min<uint64_t>(room, out.sizes.slots));
+    out.canary = words(targetBytes, base + room, 1)[0];
+    out.published = words(targetBytes, offsetsWord, tiles + 1);
+    out.words = words(readbackBuffer(ctx, wordLayout), 0, tiles + 1);
     return out;
 }
 
@@ -184,6 +206,14 @@ uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t til
     EXPECT_EQ(b.sizes.slots, b.cpu.slots);
     EXPECT_EQ(b.sizes.maxBound, b.cpu.maxBound);
     EXPECT_EQ(b.offsets, b.cpu.offsets);
+    EXPECT_EQ(b.published, b.cpu.offsets) << "the offsets the consumers read";
+    EXPECT_FALSE(b.overflowed);
+    EXPECT_EQ(b.canary, kCanary);
+    // The word layout: a bit per candidate and kWordsAdd more per tile (HybridBlended's masks).
+    std::vector<uint32_t> wantWords(b.cpu.bound.size() + 1, 0);
+    for (size_t t = 0; t < b.cpu.bound.size(); ++t)
+        wantWords[t + 1] = wantWords[t] + (kWordsAdd + b.cpu.bound[t] + 31) / 32;
+    EXPECT_EQ(b.words, wantWords);
     EXPECT_EQ(b.runs.size(), b.cpu.candidates.size());
     if (b.runs.size() != b.cpu.candidates.size()) return 0;
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
@@ -244,6 +274,69 @@ TEST(GpuLightBinning, LargeAndSmallRectanglesShareAWorkgroup) {
 TEST(GpuLightBinning, LargeRectanglesOverSeveralFillDispatches) {
     // 2,048 x 24 tiles of 8: TP_BIN_FILL_BUDGET / 2,048 = 16 rows per dispatch, two dispatches.
     EXPECT_GT(expectSameRuns(aroundTheEye(64), 16384, 192, 8), TP_BIN_FILL_BUDGET);
+}
+
+// A view past the planned room: the frame cuts its runs at the room (nothing written past it,
+// the published offsets clamped) and overflowed() says so, so the renderer is planned again.
+TEST(GpuLightBinning, ViewPastTheRoomIsCutAndCounted) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Scene scene = courtyard(512); // SceneGpu keeps a reference
+    SceneGpu gpuScene(*ctx, scene);
+    const Binned whole = bin(*ctx, gpuScene, 128, 72, 16);
+    ASSERT_GT(whole.sizes.slots, 100u);
+    const uint32_t room = uint32_t(whole.sizes.slots / 2);
+    const Binned cut = bin(*ctx, gpuScene, 128, 72, 16, 2, room);
+    EXPECT_TRUE(cut.overflowed);
+    EXPECT_EQ(cut.canary, kCanary) << "a run written past the room";
+    ASSERT_EQ(cut.published.size(), whole.sizes.offsets.size());
+    for (size_t t = 0; t < cut.published.size(); ++t)
+        EXPECT_EQ(cut.published[t], std::min(whole.sizes.offsets[t], room)) << "tile " << t;
+    // Runs wholly inside the room are complete (and sorted).
+    for (size_t t = 0; t + 1 < whole.sizes.offsets.size() && whole.sizes.offsets[t + 1] <= room;
+         ++t)
+        for (uint32_t i = whole.sizes.offsets[t]; i < whole.sizes.offsets[t + 1]; ++i)
+            ASSERT_EQ(cut.runs[i], whole.cpu.candidates[i]) << "tile " << t;
+    expectNoValidationMessages(*ctx);
+}
+
+// A view whose longest run is past the one the frame was recorded for (the sort's steps, the
+// consumers' batches) is an overflow too: planned for the first view's, lights moved closer.
+TEST(GpuLightBinning, RunLongerThanPlannedIsCounted) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyard(512);
+    SceneGpu gpuScene(*ctx, scene);
+    gpuScene.setView(128, 72, 1);
+    const la::TileGrid grid = la::makeTileGrid(128, 72, 16);
+    const std::vector<uint32_t> local = la::classifyLights(gpuScene.shadingLights()).local;
+    la::GpuBinning gpuBin(*ctx, gpuScene, grid, local, "test");
+    const la::LightBins first = gpuBin.sizes();
+    EXPECT_EQ(gpuBin.runBound(), first.maxBound); // a single view: exactly its need
+    ASSERT_LT(first.maxBound, local.size());
+    // Every light at the eye's target: the tiles there hold every light.
+    for (Light& l : scene.lights)
+        l.position = scene.camera.target;
+    gpuScene.setLights(scene.lights);
+    gpuScene.setView(128, 72, 1);
+    const uint64_t room = uint64_t(local.size()) * grid.count();
+    std::vector<uint32_t> zeros(room + grid.count() + 1, 0);
+    Buffer target = createBufferWithData(*ctx, zeros.data(), zeros.size() * 4,
+                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                         {"test", "", "runs", "the runs, the offsets"});
+    FrameGraph graph(*ctx, "test", 128, 72);
+    gpuBin.plan(graph);
+    graph.compile();
+    gpuBin.prepare(graph, target.buffer, 0, room, room);
+    gpuBin.followView();
+    recordAndSubmit(*ctx, graph, 1);
+    EXPECT_TRUE(gpuBin.overflowed(graph, 1)); // a consumer taking a light per dispatch
+    // One taking every light in one dispatch records the same for the longer run (and the sort
+    // stays in shared memory): no replan for it.
+    EXPECT_FALSE(gpuBin.overflowed(graph, uint32_t(local.size())));
+    EXPECT_EQ(gpuBin.collect(graph).maxBound, uint32_t(local.size()));
+    EXPECT_EQ(gpuBin.sizingRuns(), 1u);
+    expectNoValidationMessages(*ctx);
 }
 
 TEST(GpuLightBinning, NoLocalLights) {

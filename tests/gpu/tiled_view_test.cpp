@@ -96,13 +96,59 @@ TEST_P(TiledView, BinsTheLightsAgainForEachViewWithoutAReplan) {
     EXPECT_TRUE(identicalBits(lightsMoved.hdr.rgba, freshMoved.hdr.rgba)) << "colour, lights moved";
     EXPECT_EQ((*session)->replans(), 0u);
     EXPECT_EQ((*session)->updates(), 2u);
+    if (c.bin == "gpu") { // the views laid out by the frame, none read back
+        EXPECT_EQ(lightsMoved.stats.counter("light_bin_sizing_runs", -1.0), 1.0);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// --light-bin gpu lays each view out on the GPU (core/passes/light_binning.h): planned with no
+// headroom (manyViews off), the lights brought close to the eye need more candidates and
+// transparent-list words than the plan holds; the frame counts it, the session plans again
+// (view_replans) and renders that view again - what a renderer planned there renders.
+TEST_P(TiledView, PlansAgainWhenTheFrameCountsAnOverflow) {
+    const TiledViewCase& c = GetParam();
+    if (c.bin != "gpu") GTEST_SKIP() << "CPU binning refuses the view in updateView";
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardWithSmallLights();
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 64;
+    settings.set("light-bin", c.bin);
+    const RendererEntry& entry = **findRenderer(c.pipeline);
+    SceneGpu gpu(*ctx, scene);
+    auto session = RendererSession::create(*ctx, gpu, entry, analyzeScene(scene, 1), settings);
+    ASSERT_TRUE(session.ok()) << session.error();
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    Result<RunResult> first = (*session)->render(once);
+    ASSERT_TRUE(first.ok()) << first.error();
+    std::vector<Light> close = scene.lights;
+    for (Light& l : close)
+        l.position += (scene.camera.position - l.position) * 0.6f;
+    gpu.setLights(close);
+    scene.lights = close;
+    Result<RunResult> moved = (*session)->render(once);
+    ASSERT_TRUE(moved.ok()) << moved.error();
+    SceneGpu planned(*ctx, scene);
+    const RunResult there = runOrFail(*ctx, planned, c.pipeline, settings);
+    EXPECT_GT(there.stats.counter("light_candidates"), first->stats.counter("light_candidates"));
+    EXPECT_EQ((*session)->updates(), 1u) << "followed in place first";
+    EXPECT_EQ((*session)->replans(), 1u) << "the overflow counted and planned again";
+    EXPECT_EQ(moved->stats.counter("view_replans"), 1.0);
+    EXPECT_EQ(moved->stats.counter("light_candidates"), there.stats.counter("light_candidates"));
+    EXPECT_TRUE(identicalBits(moved->hdr.rgba, there.hdr.rgba)) << "colour after the replan";
+    EXPECT_EQ(moved->stats.counter("light_bin_sizing_runs", -1.0), 1.0) << "one, at the replan";
     expectNoValidationMessages(*ctx);
 }
 
 INSTANTIATE_TEST_SUITE_P(DeferredAndVisbuffer, TiledView,
                          ::testing::Values(TiledViewCase{"deferred", "cpu"},
                                            TiledViewCase{"deferred", "gpu"},
-                                           TiledViewCase{"visbuffer", "cpu"}),
+                                           TiledViewCase{"visbuffer", "cpu"},
+                                           TiledViewCase{"visbuffer", "gpu"}),
                          [](const ::testing::TestParamInfo<TiledViewCase>& info) {
                              return info.param.pipeline + "_" + info.param.bin;
                          });
