@@ -55,6 +55,13 @@ class MeshletCull {
     // What a pass that records culled draws declares (the commands and their counts).
     std::vector<PassUse> drawUses() const;
     bool holds(const DrawItem& d) const;
+    // For a pass that reads the kept meshlets itself (the visibility buffer's compute
+    // rasterizer): the commands and counts (read as storage), the slot of a draw given, and the
+    // first of that slot's commands (meshletCount of them, the first counts[slot] written).
+    ResourceHandle commands() const { return commands_; }
+    ResourceHandle counts() const { return counts_; }
+    uint32_t slot(const DrawItem& d) const { return slotOf_.at(d.index); }
+    uint32_t firstCommand(uint32_t slot) const { return firstCommand_.at(slot); }
     // The culled draw of `d` (one of the draws given): DrawPush (material, pad0), cull mode,
     // vkCmdDrawIndexedIndirectCount. The caller binds the pipeline, the scene set and the
     // meshlet index buffer (SceneGpu::bindMeshletIndexBuffer).
