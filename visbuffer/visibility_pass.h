@@ -9,9 +9,16 @@
 // command's firstInstance its meshlet's first triangle: the shaders' meshlet variants map
 // gl_PrimitiveID back to the draw's triangle (SceneGpu::meshletSourceTriangleBuffer, bound in
 // its set 1), so every id is the one the whole draw writes (docs/geometry.md).
+//
+// With the compute rasterizer's targets (--vis-raster compute|hybrid, raster_pass.h) it draws
+// no scene draw in compute mode; in hybrid mode only the masked draws and the triangles the
+// rasterizer listed for the hardware. Then one triangle over the framebuffer merges the
+// compute samples in through the same depth test (vis_raster_merge.frag).
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
 #include "visbuffer/draw_table.h"
+#include "visbuffer/raster_pass.h"
 
 namespace tp {
 
@@ -36,11 +43,14 @@ class VisibilityPass {
     // resolvedDepth: the single-sample "depth" output (written directly at 1x). cull: the
     // meshlets to draw (made with firstTriangle), or null to draw the meshes whole.
     VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth,
-                           const passes::MeshletCull* cull = nullptr);
+                           const passes::MeshletCull* cull = nullptr,
+                           const RasterTargets& raster = {});
     void prepare(FrameGraph& graph);
 
   private:
     void record(PassContext& pc);
+    void recordRaster(PassContext& pc); // the listed triangles (hybrid), then the merge
+    void prepareRaster(GraphicsPipelineDesc d);
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DrawTable& table_;
@@ -51,6 +61,8 @@ class VisibilityPass {
     PassSet set_; // culled: the source triangles
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
+    RasterTargets raster_;                                      // invalid: hardware
+    VkPipeline merge_ = VK_NULL_HANDLE, listed_ = VK_NULL_HANDLE; // --vis-raster
 };
 
 } // namespace vis
