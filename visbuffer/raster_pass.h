@@ -7,9 +7,9 @@
 //                     within TP_VR_SMALL_PIXELS each way writes (depth bits << 32 | ~id) per
 //                     sample it covers with a 64-bit atomic max; a larger one is listed.
 //   vis_raster_big    (compute mode) a workgroup per listed triangle, dispatched indirectly.
-// The visibility pass then merges the samples into its id and depth targets (and in hybrid
-// mode first draws the listed triangles and the masked draws with the hardware): everything
-// downstream reads the targets it always read.
+// vis_raster_merge (raster_merge_pass.h) then merges the samples into the visibility pass's id
+// and depth targets (in hybrid mode after the hardware drew the masked draws and the listed
+// triangles into them): everything downstream reads the targets it always read.
 #include <string>
 #include <utility>
 #include <vector>

@@ -36,7 +36,7 @@ const ChoiceKnob<Raster>& rasterKnob() {
         "Who rasterizes visbuffer's opaque and masked triangles: hardware (the fixed-function "
         "visibility pass), compute (a compute rasterizer writes (depth, id) per sample with a "
         "64-bit atomic max: top-left rule, standard sample locations, near-plane clipping, the "
-        "alpha test) or hybrid (triangles within 16x16 pixels in compute, the larger ones, those "
+        "alpha test) or hybrid (triangles within 8x8 pixels in compute, the larger ones, those "
         "the near plane cuts and masked draws by the hardware, into the same visibility buffer). "
         "compute and hybrid need shaderInt64 and shaderBufferInt64Atomics (docs/visbuffer.md)"};
     return k;

@@ -18,6 +18,7 @@
 #include "visbuffer/blended_ids_pass.h"
 #include "visbuffer/draw_table.h"
 #include "visbuffer/fragment_bound.h"
+#include "visbuffer/raster_merge_pass.h"
 #include "visbuffer/raster_pass.h"
 #include "visbuffer/vis_settings.h"
 #include "visbuffer/visibility_pass.h"
@@ -77,12 +78,18 @@ class VisbufferRenderer final : public Renderer {
             passes::planOpaqueCull(cull_, ctx_, scene_, graph, vis_.cullGeometry, true);
         // --vis-raster compute|hybrid: the compute rasterizer's passes, merged into the
         // visibility pass's targets (raster_pass.h).
-        vis::RasterTargets raster;
-        if (vis_.raster != vis::Raster::Hardware) {
-            raster_.emplace(ctx_, scene_, table_, vis_.raster == vis::Raster::Hybrid);
-            raster = raster_->plan(graph, samples, cull);
+        using Draws = vis::VisibilityPass::Draws;
+        if (vis_.raster == vis::Raster::Hardware) {
+            ids_ = visibility_.plan(graph, samples, depth_, cull);
+        } else {
+            const bool hybrid = vis_.raster == vis::Raster::Hybrid;
+            raster_.emplace(ctx_, scene_, table_, hybrid);
+            const vis::RasterTargets raster = raster_->plan(graph, samples, cull);
+            ids_ = visibility_.plan(graph, samples, depth_, cull,
+                                    hybrid ? Draws::Masked : Draws::None);
+            merge_.emplace(ctx_, scene_);
+            merge_->plan(graph, samples, ids_, depth_, raster);
         }
-        ids_ = visibility_.plan(graph, samples, depth_, cull, raster);
         if (blendInCompute_)
             lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
                                       vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,
@@ -123,6 +130,7 @@ class VisbufferRenderer final : public Renderer {
         if (cull_) cull_->prepare(graph);
         if (raster_) raster_->prepare(graph);
         visibility_.prepare(graph);
+        if (merge_) merge_->prepare(graph);
         shadows_->prepare(graph); // its set layout, before the passes sampling it
         lighting_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
@@ -225,6 +233,7 @@ class VisbufferRenderer final : public Renderer {
     vis::DrawTable table_;
     std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     std::optional<vis::RasterPass> raster_;   // --vis-raster compute|hybrid
+    std::optional<vis::RasterMergePass> merge_; // its samples into the visibility targets
     vis::VisibilityPass visibility_;
     vis::BlendedIdsPass blendedIds_; // --vis-blended compute
     vis::BlendedListTargets lists_;

@@ -10,15 +10,13 @@
 // gl_PrimitiveID back to the draw's triangle (SceneGpu::meshletSourceTriangleBuffer, bound in
 // its set 1), so every id is the one the whole draw writes (docs/geometry.md).
 //
-// With the compute rasterizer's targets (--vis-raster compute|hybrid, raster_pass.h) it draws
-// no scene draw in compute mode; in hybrid mode only the masked draws and the triangles the
-// rasterizer listed for the hardware. Then one triangle over the framebuffer merges the
-// compute samples in through the same depth test (vis_raster_merge.frag).
+// With the compute rasterizer (--vis-raster compute|hybrid, raster_pass.h) it makes the same
+// targets, but draws only what the hardware keeps: nothing in compute mode (no pass is added),
+// the masked draws in hybrid mode, and leaves the MSAA depth resolve to the merge after it
+// (raster_merge_pass.h).
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
-#include "core/gpu/pipelines.h"
 #include "visbuffer/draw_table.h"
-#include "visbuffer/raster_pass.h"
 
 namespace tp {
 
@@ -41,16 +39,15 @@ class VisibilityPass {
         : ctx_(ctx), scene_(scene), table_(table) {}
     ~VisibilityPass();
     // resolvedDepth: the single-sample "depth" output (written directly at 1x). cull: the
-    // meshlets to draw (made with firstTriangle), or null to draw the meshes whole.
+    // meshlets to draw (made with firstTriangle), or null to draw the meshes whole. raster:
+    // what --vis-raster leaves to the hardware (Hardware: everything).
+    enum class Draws { All, Masked, None };
     VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth,
-                           const passes::MeshletCull* cull = nullptr,
-                           const RasterTargets& raster = {});
+                           const passes::MeshletCull* cull = nullptr, Draws draws = Draws::All);
     void prepare(FrameGraph& graph);
 
   private:
     void record(PassContext& pc);
-    void recordRaster(PassContext& pc); // the listed triangles (hybrid), then the merge
-    void prepareRaster(GraphicsPipelineDesc d);
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DrawTable& table_;
@@ -58,11 +55,10 @@ class VisibilityPass {
     VisibilityTargets t_;
     ResourceHandle resolved_;
     const passes::MeshletCull* cull_ = nullptr;
+    Draws draws_ = Draws::All;
     PassSet set_; // culled: the source triangles
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
-    RasterTargets raster_;                                      // invalid: hardware
-    VkPipeline merge_ = VK_NULL_HANDLE, listed_ = VK_NULL_HANDLE; // --vis-raster
 };
 
 } // namespace vis

@@ -36,7 +36,7 @@
 #define TP_VR_BINDING_COMMANDS 7 // culled: meshlet_cull's indexed indirect commands
 #define TP_VR_BINDING_COUNTS 8   // culled: meshlet_cull's commands per draw
 
-// ---- set 1 of the visibility pass reading it (beside TP_VIS_BINDING_SOURCE_TRIANGLES = 0) ----
+// ---- set 1 of vis_raster_merge and vis_raster_hw (visbuffer/raster_merge_pass.h) ----
 #define TP_VR_BINDING_VIS_SAMPLES 1 // the samples above, read by the merge
 #define TP_VR_BINDING_VIS_LIST 2    // hybrid: the listed triangles the hardware draws
 

@@ -2,11 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // The compute rasterizer's samples into the visibility pass's targets (--vis-raster compute and
-// hybrid; visbuffer/raster_pass.h): per sample (gl_SampleID makes the pass run per sample
+// hybrid; visbuffer/raster_merge_pass.h): per sample (gl_SampleID makes the pass run per sample
 // under MSAA), the 64-bit (depth bits, ~id) the atomic max left becomes the id and the depth
 // the resolve, the blended passes and the depth export read, through the depth test
 // (GREATER, as the visibility pass draws): in hybrid mode the hardware's triangles, drawn
-// before it in the same pass, keep the samples where they are in front (and at equal depth).
+// before it (the visibility pass, vis_raster_hw), keep the samples where they are in front
+// (and at equal depth).
 // A sample no triangle covered (0) writes nothing.
 #include "include/shared.h"
 #include "visbuffer/vis_shared.h"
