@@ -29,6 +29,19 @@ const ChoiceKnob<Derivatives>& derivativesKnob() {
     return k;
 }
 
+const ChoiceKnob<Raster>& rasterKnob() {
+    static const ChoiceKnob<Raster> k{
+        "vis-raster",
+        {{Raster::Hardware, "hardware"}, {Raster::Compute, "compute"}, {Raster::Hybrid, "hybrid"}},
+        "Who rasterizes visbuffer's opaque and masked triangles: hardware (the fixed-function "
+        "visibility pass), compute (a compute rasterizer writes (depth, id) per sample with a "
+        "64-bit atomic max: top-left rule, standard sample locations, near-plane clipping, the "
+        "alpha test) or hybrid (triangles within 8x8 pixels in compute, the larger ones, those "
+        "the near plane cuts and masked draws by the hardware, into the same visibility buffer). "
+        "compute and hybrid need shaderInt64 and shaderBufferInt64Atomics (docs/visbuffer.md)"};
+    return k;
+}
+
 uint32_t resolveDerivatives(Derivatives d) {
     switch (d) {
     case Derivatives::Analytic: return TP_VIS_DERIVATIVES_ANALYTIC;
@@ -66,7 +79,8 @@ KnobSchema knobs() {
             blendedKnob().knob(),
             blendedCapacityKnob().knob(),
             derivativesKnob().knob(),
-            cullGeometryKnob().knob()};
+            cullGeometryKnob().knob(),
+            rasterKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -82,6 +96,7 @@ Settings readSettings(const RenderSettings& s) {
     v.blendedCapacityPercent = blendedCapacityKnob().in(s);
     v.derivatives = derivativesKnob().in(s);
     v.cullGeometry = cullGeometryKnob().in(s);
+    v.raster = rasterKnob().in(s);
     if (auto seen = s.capacities.find(kSeenFragments); seen != s.capacities.end())
         v.blendedSeen = seen->second;
     return v;

@@ -27,6 +27,14 @@ const ChoiceKnob<Derivatives>& derivativesKnob();
 // derivatives (from the quad's top-left pixel, one level of detail per quad) and as measured
 // closest to the reference on an NVIDIA H200 (docs/visbuffer.md, "The texture footprint").
 uint32_t resolveDerivatives(Derivatives d);
+// --vis-raster: who rasterizes the opaque and masked triangles into the visibility buffer.
+// Hardware: the fixed-function visibility pass. Compute: every one in compute (vis_raster,
+// vis_raster_big: visbuffer/raster_pass.h), merged into the same targets. Hybrid: the small
+// opaque ones in compute, the large ones, those the near plane cuts and every masked draw by
+// the hardware, into the same targets (docs/visbuffer.md, "The compute rasterizer").
+enum class Raster { Hardware, Compute, Hybrid };
+const ChoiceKnob<Raster>& rasterKnob();
+
 // --vis-blended-capacity: the fragment pool in percent of the pixel count, 0: the derived
 // bound (fragment_bound.h).
 const IntegerKnob& blendedCapacityKnob();
@@ -47,6 +55,7 @@ struct Settings {
     Derivatives derivatives = Derivatives::Quad;
     uint32_t blendedCapacityPercent = 0; // 0: the derived bound
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the visibility pass
+    Raster raster = Raster::Hardware;               // --vis-raster
     // Many views: the blended fragments an earlier plan of this session overflowed with, times
     // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).
     uint64_t blendedSeen = 0;

@@ -18,6 +18,8 @@
 #include "visbuffer/blended_ids_pass.h"
 #include "visbuffer/draw_table.h"
 #include "visbuffer/fragment_bound.h"
+#include "visbuffer/raster_merge_pass.h"
+#include "visbuffer/raster_pass.h"
 #include "visbuffer/vis_settings.h"
 #include "visbuffer/visibility_pass.h"
 
@@ -74,7 +76,24 @@ class VisbufferRenderer final : public Renderer {
         // command carries its meshlet's first triangle for the ids (visibility_pass.h).
         passes::MeshletCull* cull =
             passes::planOpaqueCull(cull_, ctx_, scene_, graph, vis_.cullGeometry, true);
-        ids_ = visibility_.plan(graph, samples, depth_, cull);
+        // --vis-raster compute|hybrid: the compute rasterizer's passes, merged into the
+        // visibility pass's targets (raster_pass.h).
+        using Draws = vis::VisibilityPass::Draws;
+        if (vis_.raster == vis::Raster::Hardware) {
+            ids_ = visibility_.plan(graph, samples, depth_, cull);
+        } else {
+            const bool hybrid = vis_.raster == vis::Raster::Hybrid;
+            // It reads one phase's kept meshlets: occlusion's late phase is not wired to it.
+            if (cull && cull->occlusion())
+                throw RendererError("--vis-raster compute|hybrid does not take --cull-geometry "
+                                    "full yet; use --cull-geometry none or frustum");
+            raster_.emplace(ctx_, scene_, table_, hybrid);
+            const vis::RasterTargets raster = raster_->plan(graph, samples, cull);
+            ids_ = visibility_.plan(graph, samples, depth_, cull,
+                                    hybrid ? Draws::Masked : Draws::None);
+            merge_.emplace(ctx_, scene_);
+            merge_->plan(graph, samples, ids_, depth_, raster);
+        }
         if (blendInCompute_)
             lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
                                       vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,
@@ -113,7 +132,9 @@ class VisbufferRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         if (cull_) cull_->prepare(graph);
+        if (raster_) raster_->prepare(graph);
         visibility_.prepare(graph);
+        if (merge_) merge_->prepare(graph);
         shadows_->prepare(graph); // its set layout, before the passes sampling it
         lighting_.prepare(graph);
         if (hasBlended_) blended_.prepare(graph, lighting_);
@@ -152,6 +173,7 @@ class VisbufferRenderer final : public Renderer {
             std::memcpy(blendCounters_, raw.data(), sizeof(blendCounters_));
         }
         if (cull_) cull_->collect(graph);
+        if (raster_) raster_->collect(graph);
     }
 
     // Many views, derived pool: a view that dropped blended fragments is rendered again with a
@@ -220,6 +242,8 @@ class VisbufferRenderer final : public Renderer {
     bool blendInCompute_ = false; // --vis-blended compute in a scene with blended draws
     vis::DrawTable table_;
     std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
+    std::optional<vis::RasterPass> raster_;   // --vis-raster compute|hybrid
+    std::optional<vis::RasterMergePass> merge_; // its samples into the visibility targets
     vis::VisibilityPass visibility_;
     vis::BlendedIdsPass blendedIds_; // --vis-blended compute
     vis::BlendedListTargets lists_;
@@ -254,6 +278,10 @@ void VisbufferRenderer::checkDevice() const {
 std::vector<DebugImage> VisbufferRenderer::debugImages(FrameGraph& graph) {
     std::vector<DebugImage> out;
     appendTiledLightingDebug(ctx_, graph, lt_, tileStats_, hasBlended_ ? &blended_ : nullptr, out);
+    // The ids themselves (1x: exported with --debug), each pixel's id in r: what compares one
+    // rasterizer's ids with another's (--vis-raster; docs/visbuffer.md).
+    if (vis_.debug && vis_.sampling.samples == 1)
+        out.push_back({"visibility_ids", readbackColor(ctx_, graph.image(ids_.ids)), false});
     return out;
 }
 
@@ -282,6 +310,11 @@ RendererStats VisbufferRenderer::stats() const {
     if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled
         for (const auto& c : cull_->counters())
             s.counters.push_back(c);
+    if (raster_) { // --vis-raster compute|hybrid: triangles rasterized, listed, culled
+        for (const auto& c : raster_->counters())
+            s.counters.push_back(c);
+        raster_->addWork(s);
+    }
     // --vis-derivatives, resolved: 0 analytic, 1 quad fine, 2 quad coarse.
     s.counters.push_back({"uv_derivatives_mode", double(derivativesMode())});
     s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved

@@ -18,8 +18,9 @@ VisibilityPass::~VisibilityPass() {
 
 VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
                                        ResourceHandle resolvedDepth,
-                                       passes::MeshletCull* cull) {
+                                       passes::MeshletCull* cull, Draws draws) {
     samples_ = samples;
+    draws_ = draws;
     resolved_ = resolvedDepth;
     cull_ = cull;
     const auto count = VkSampleCountFlagBits(samples);
@@ -32,11 +33,13 @@ VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
         t_.depth = graph.createImage("visibility_depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, count,
                                                                "per-sample depth (reverse-Z)"});
         uses.push_back({t_.depth, Use::DepthAttachment});
-        uses.push_back({resolvedDepth, Use::DepthResolve});
+        // With the compute rasterizer the merge after this pass resolves.
+        if (draws == Draws::All) uses.push_back({resolvedDepth, Use::DepthResolve});
     } else {
         t_.depth = resolvedDepth;
         uses.push_back({resolvedDepth, Use::DepthAttachment});
     }
+    if (draws == Draws::None) return t_; // compute mode: the merge clears and writes them
     passes::planGeometryPass(
         graph, cull, "visibility", uses, t_.depth,
         [this](PassContext& pc, passes::CullPhase phase) { record(pc, phase); });
@@ -44,6 +47,7 @@ VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
 }
 
 void VisibilityPass::prepare(FrameGraph& graph) {
+    if (draws_ == Draws::None) return;
     GraphicsPipelineDesc d;
     // Culled: the map from meshlet order back to each draw's triangles, in set 1.
     const std::string meshlets = cull_ ? "_meshlet" : "";
@@ -57,7 +61,7 @@ void VisibilityPass::prepare(FrameGraph& graph) {
     d.colorFormats = {VK_FORMAT_R32_SFLOAT};
     d.samples = VkSampleCountFlagBits(samples_);
     d.layout = layout_;
-    if (!table_.opaque.empty()) {
+    if (!table_.opaque.empty() && draws_ == Draws::All) {
         // Opaque: no material, so scene.vert's position-only variant (the same gl_Position).
         d.vertexShader = "scene_position" + meshlets + "_vert";
         d.fragmentShader = "vis_visibility" + meshlets + "_frag";
@@ -80,7 +84,8 @@ void VisibilityPass::record(PassContext& pc, passes::CullPhase phase) {
     const bool clear = phase != passes::CullPhase::Late; // the late phase adds to the early's
     ColorTarget ids{t_.ids, {}, clear, {}};
     ids.clearValue.uint32[0] = 0; // no geometry
-    DepthTarget depth{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}, clear};
+    DepthTarget depth{t_.depth,
+                      samples_ > 1 && draws_ == Draws::All ? resolved_ : ResourceHandle{}, clear};
     beginRendering(pc, {ids}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     if (cull_) {

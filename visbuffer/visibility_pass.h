@@ -11,6 +11,11 @@
 // its set 1), so every id is the one the whole draw writes (docs/geometry.md). With occlusion
 // (--cull-geometry full) it is "visibility" (last frame's visible meshlets), the depth pyramid
 // and the late cull, then "visibility_late" (the rest, loading the ids and the depth).
+//
+// With the compute rasterizer (--vis-raster compute|hybrid, raster_pass.h) it makes the same
+// targets, but draws only what the hardware keeps: nothing in compute mode (no pass is added),
+// the masked draws in hybrid mode, and leaves the MSAA depth resolve to the merge after it
+// (raster_merge_pass.h).
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "visbuffer/draw_table.h"
@@ -37,9 +42,11 @@ class VisibilityPass {
         : ctx_(ctx), scene_(scene), table_(table) {}
     ~VisibilityPass();
     // resolvedDepth: the single-sample "depth" output (written directly at 1x). cull: the
-    // meshlets to draw (made with firstTriangle), or null to draw the meshes whole.
+    // meshlets to draw (made with firstTriangle), or null to draw the meshes whole. raster:
+    // what --vis-raster leaves to the hardware (Hardware: everything).
+    enum class Draws { All, Masked, None };
     VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth,
-                           passes::MeshletCull* cull = nullptr);
+                           passes::MeshletCull* cull = nullptr, Draws draws = Draws::All);
     void prepare(FrameGraph& graph);
 
   private:
@@ -51,6 +58,7 @@ class VisibilityPass {
     VisibilityTargets t_;
     ResourceHandle resolved_;
     const passes::MeshletCull* cull_ = nullptr;
+    Draws draws_ = Draws::All;
     PassSet set_; // culled: the source triangles
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;

@@ -29,6 +29,8 @@ const char* opName(PassOpWork::Kind k) {
         return "shared_atomics";
     case PassOpWork::Kind::TileTests:
         return "light_tile_tests";
+    case PassOpWork::Kind::Triangles:
+        return "triangles_rasterized";
     }
     return "ops";
 }

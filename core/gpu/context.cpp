@@ -184,6 +184,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.geometryShader = f.geometryShader;
     c.drawIndirectCount = f12.drawIndirectCount && f.multiDrawIndirect;
     c.drawIndirectFirstInstance = f.drawIndirectFirstInstance;
+    c.int64Atomics = f.shaderInt64 && f12.shaderBufferInt64Atomics;
     return c;
 }
 
@@ -226,6 +227,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     f12.hostQueryReset = VK_TRUE;
     f12.scalarBlockLayout = VK_FALSE;
     f12.drawIndirectCount = caps.drawIndirectCount;
+    f12.shaderBufferInt64Atomics = caps.int64Atomics;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
     features.features.shaderFloat64 = caps.float64;
     features.features.sampleRateShading = caps.sampleRateShading;
@@ -236,6 +238,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     features.features.geometryShader = caps.geometryShader;
     features.features.multiDrawIndirect = caps.drawIndirectCount;
     features.features.drawIndirectFirstInstance = caps.drawIndirectFirstInstance;
+    features.features.shaderInt64 = caps.int64Atomics;
 
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;

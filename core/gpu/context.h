@@ -66,6 +66,9 @@ struct DeviceCaps {
     // Indirect draws with a firstInstance other than 0 (1.0's drawIndirectFirstInstance): the
     // visibility pass's culled draws carry each meshlet's first triangle in it.
     bool drawIndirectFirstInstance = false;
+    // 64-bit integer atomics on storage buffers (shaderInt64 and Vulkan 1.2's
+    // shaderBufferInt64Atomics): the visibility buffer's compute rasterizer (--vis-raster).
+    bool int64Atomics = false;
 };
 
 class GpuContext {

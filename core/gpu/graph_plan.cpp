@@ -161,8 +161,10 @@ UseInfo useInfo(Use use) {
         return {kShaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                 VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, false, true};
     case Use::StorageRead:
-        return {kShaderStages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_GENERAL, false,
-                true};
+        // The vertex stage too: a vertex shader may pull from a buffer a compute pass wrote
+        // (the visibility buffer's hybrid rasterizer, vis_raster_hw.vert).
+        return {kShaderStages | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_GENERAL, false, true};
     case Use::StorageWrite:
         return {kShaderStages,
                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

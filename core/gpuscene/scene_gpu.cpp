@@ -162,7 +162,7 @@ void SceneGpu::buildMeshlets() {
         {"scene", "", "meshlets", "per meshlet: bounding sphere, normal cone, its indices"});
     meshletIndices_ = createBufferWithData(
         ctx_, meshletIndices.data(), meshletIndices.size() * sizeof(uint32_t),
-        VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+        VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
         {"scene", "", "meshlet_indices", "triangle indices in meshlet order (culled draws)"});
 }
 

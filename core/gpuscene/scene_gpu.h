@@ -98,6 +98,8 @@ class SceneGpu {
     bool meshletsBuilt() const { return meshletsBuilt_; }
     VkBuffer meshletBuffer() const { return meshlets_.buffer; }
     void bindMeshletIndexBuffer(VkCommandBuffer cmd) const;
+    // The same as a storage buffer (the visibility buffer's compute rasterizer reads it).
+    VkBuffer meshletIndexBuffer() const { return meshletIndices_.buffer; }
     // Per triangle of the meshlet index buffer: its triangle within its draw in the scene's
     // index buffer (MeshMeshlets::sourceTriangles), for the visibility buffer's ids, which must
     // name the triangles a whole draw names. Uploaded by the first call (ledger: scene,

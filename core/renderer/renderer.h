@@ -88,7 +88,9 @@ struct PassLightWork {
 // of `base` as PassLightWork: texture fetches of its materials, atomics, light-vs-tile tests.
 // Counted as lower bounds: what the pass cannot avoid doing (exact = the count itself is exact).
 struct PassOpWork {
-    enum class Kind { TextureFetches, GlobalAtomics, SharedAtomics, TileTests };
+    // Triangles: set up and rasterized in a compute pass (the visibility buffer's compute
+    // rasterizer).
+    enum class Kind { TextureFetches, GlobalAtomics, SharedAtomics, TileTests, Triangles };
     std::string pass;
     Kind kind = Kind::TextureFetches;
     PassLightWork::Base base = PassLightWork::Base::Fragments;

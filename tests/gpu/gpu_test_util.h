@@ -70,4 +70,10 @@ WorstRatio worstRatio(const ImageRGBA& got, const ImageRGBA& ref, const ErrorBou
 ErrorBound centreModelBound(const GpuContext& ctx, const Scene& scene, const std::string& pipeline,
                             const RenderSettings& run, const RunResult& centre);
 
+// The visibility buffer's run `run` within the bound its error model derives against `ref` for
+// `modelSettings` (the settings whose method the reference repeats), with the reference's depth
+// (visbuffer_test.cpp, visbuffer_raster_test.cpp).
+void expectVisbufferWithinBound(GpuContext& ctx, const Scene& scene, const RunResult& run,
+                                const RunResult& ref, const RenderSettings& modelSettings,
+                                const std::string& what);
 } // namespace tp::test

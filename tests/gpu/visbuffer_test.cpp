@@ -37,49 +37,10 @@ RenderSettings small(uint32_t msaa, const std::string& shading = "pixel") {
     return s;
 }
 
-// `run` within the visbuffer's bound of `ref`, the bound derived for `modelSettings` (the
-// settings whose method the reference repeats).
 void expectWithinBound(GpuContext& ctx, const Scene& scene, const RunResult& run,
                        const RunResult& ref, const RenderSettings& modelSettings,
                        const std::string& what) {
-    SCOPED_TRACE(what);
-    const RendererEntry& entry = **findRenderer("visbuffer");
-    RenderSettings resolved = modelSettings;
-    ASSERT_TRUE(resolveKnobs(entry.knobs, resolved).ok());
-    stress::StressCase c;
-    c.name = "visbuffer-test";
-    c.freeNormals = true;
-    const ErrorModelInput in{
-        c, scene, resolved, &ref.depth, ctx.properties.limits.subPixelPrecisionBits, &ref.hdr};
-    const ErrorBound bound = expectedBound(entry.errorModel, in);
-    ASSERT_TRUE(bound.bounded) << bound.why;
-    EXPECT_EQ(computeError(run.hdr, ref.hdr).nanInfCount, 0u);
-    const float ev = autoExposureEv(ref.hdr);
-    const AllowanceCheck checked = errorBeyondAllowance(bound, run.hdr, ref.hdr, ev);
-    // How wide the allowance is: its median over the pixels, relative to the reference there
-    // (printed, so a model that grew to cover everything shows).
-    std::vector<double> relative;
-    const std::vector<float>& allowance = bound.perPixel.radiance.r;
-    for (size_t i = 0; i < allowance.size() && i < ref.hdr.pixelCount(); ++i) {
-        const double r =
-            std::max({ref.hdr.rgba[i * 4], ref.hdr.rgba[i * 4 + 1], ref.hdr.rgba[i * 4 + 2]});
-        if (allowance[i] > 0.0f && r > 0.0) relative.push_back(allowance[i] / r);
-    }
-    std::sort(relative.begin(), relative.end());
-    std::printf("[ visbuffer ] %-30s beyond allowance %.3g <= %.3g (%llu pixels widened, median "
-                "allowance %.3g of the reference)\n",
-                what.c_str(), checked.worstBeyond, bound.tonemapped(ev),
-                (unsigned long long)checked.widenedPixels,
-                relative.empty() ? 0.0 : relative[relative.size() / 2]);
-    EXPECT_EQ(checked.unboundedPixels, 0u);
-    const size_t w = checked.worstPixel;
-    EXPECT_LE(checked.worstBeyond, bound.tonemapped(ev))
-        << "at pixel (" << w % ref.hdr.width << ", " << w / ref.hdr.width << "): visbuffer "
-        << run.hdr.rgba[w * 4] << " " << run.hdr.rgba[w * 4 + 1] << " " << run.hdr.rgba[w * 4 + 2]
-        << ", reference " << ref.hdr.rgba[w * 4] << " " << ref.hdr.rgba[w * 4 + 1] << " "
-        << ref.hdr.rgba[w * 4 + 2] << ", allowance "
-        << (bound.perPixel.radiance.r.size() > w ? bound.perPixel.radiance.r[w] : 0.0f)
-        << ", depth " << ref.depth.r[w];
+    expectVisbufferWithinBound(ctx, scene, run, ref, modelSettings, what);
 }
 
 // Runs the visbuffer with `s` and checks it against `ref` with the model of the same settings.

@@ -1,0 +1,146 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The compute rasterizer's first pass (pass "vis_raster", visbuffer/raster_pass.h): one
+// invocation per triangle of the opaque (and, in compute mode, masked) draws, or of the
+// meshlets meshlet_cull kept (TP_VR_MESHLETS). A triangle whose pixel bounds fit in
+// TP_VR_SMALL_PIXELS each way is rasterized here by its own invocation (vis_raster.glsl);
+// a larger one, or one the near plane or the guard band cuts, is listed: for vis_raster_big
+// (compute: its dispatch's group count) or for the hardware (hybrid: its draw's vertex count).
+#include "visbuffer/vis_raster.glsl"
+
+layout(local_size_x = TP_VR_GROUP) in;
+
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_LIST) buffer ListBlock {
+    uint list[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_ARGS) buffer ArgsBlock {
+    uint args[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_INDICES) readonly buffer IndexBlock {
+    uint rasterIndices[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_CHUNKS) readonly buffer ChunkBlock {
+    RasterChunk chunks[];
+};
+#ifdef TP_VR_MESHLETS
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_SOURCE_TRIANGLES) readonly buffer
+    SourceBlock {
+    uint sourceTriangles[];
+};
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_COMMANDS) readonly buffer CommandBlock {
+    uint commands[]; // VkDrawIndexedIndirectCommand, 5 words each
+};
+layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_COUNTS) readonly buffer CountBlock {
+    uint counts[];
+};
+#endif
+
+shared uint sCounts[TP_VR_COUNTERS];
+shared uint sAtomics;
+
+// Where this invocation's triangle is: its first index, the vertex offset and its triangle in
+// its draw (the id's). False: no triangle (past the chunk, or a meshlet the cull dropped).
+bool findTriangle(RasterChunk c, uint lane, out uint base, out int vertexOffset, out uint triangle) {
+#ifdef TP_VR_MESHLETS
+    if (c.count >= counts[c.firstIndex]) return false; // the cull kept fewer meshlets
+    uint cmd = 5u * c.firstTriangle;
+    if (lane >= commands[cmd] / 3u) return false;
+    base = commands[cmd + 2u] + 3u * lane;
+    vertexOffset = int(commands[cmd + 3u]);
+    triangle = sourceTriangles[commands[cmd + 4u] + lane];
+#else
+    if (lane >= c.count) return false;
+    triangle = c.firstTriangle + lane;
+    base = c.firstIndex + 3u * triangle;
+    vertexOffset = c.vertexOffset;
+#endif
+    return true;
+}
+
+// Whether a triangle the rasterizer must clip faces the viewer (or the draw is double-sided):
+// from the camera-relative vertices, which stay meaningful behind the eye (vis_read.glsl's
+// front-facing test), so a back face is not listed for the hardware to draw.
+bool clippedFacesViewer(uint i0, uint i1, uint i2, bool doubleSided) {
+    if (doubleSided) return true;
+    vec3 p0 = vertices[i0].positionU.xyz - frame.eyeWorld.xyz;
+    vec3 p1 = vertices[i1].positionU.xyz - frame.eyeWorld.xyz;
+    vec3 p2 = vertices[i2].positionU.xyz - frame.eyeWorld.xyz;
+    return dot(cross(p1 - p0, p2 - p0), p0) < 0.0;
+}
+
+// Appends the triangle to the list. Hybrid: three more vertices of the hardware's draw.
+// Compute: one more triangle for vis_raster_big, whose groups (at most the 65,535 a dispatch
+// may have) stride over the list.
+void listTriangle(uint i0, uint i1, uint i2, uint id) {
+    uint slot;
+    if (kHybrid != 0u) {
+        slot = atomicAdd(args[0], 3u) / 3u;
+    } else {
+        slot = atomicAdd(list[TP_VR_LIST_SLOTS], 1u);
+        atomicMax(args[0], min(slot + 1u, 65535u));
+    }
+    uint at = TP_VR_LIST_HEADER + 4u * slot;
+    list[at] = i0;
+    list[at + 1u] = i1;
+    list[at + 2u] = i2;
+    list[at + 3u] = id;
+}
+
+// One triangle: TP_VR_COUNT_SMALL, _BIG or _CULLED; `atomics`: the 64-bit atomics it issued.
+// Only an unclipped triangle within TP_VR_SMALL_PIXELS each way is rasterized here; one the
+// near plane or the guard band cuts is listed (compute: vis_raster_big clips it; hybrid: the
+// hardware), as is a larger one.
+uint triangleOutcome(uint i0, uint i1, uint i2, uint id, out bool clipped, out uint atomics) {
+    atomics = 0u;
+    vec4 c0 = clipPosition(i0), c1 = clipPosition(i1), c2 = clipPosition(i2);
+    bool outside;
+    clipped = needsClipping(c0, c1, c2, outside);
+    if (outside) return TP_VR_COUNT_CULLED;
+    RasterRow row = rasterRows[(id >> kTriangleBits) - 1u];
+    bool doubleSided = (row.flags & TP_VR_FLAG_DOUBLE_SIDED) != 0u;
+    if (clipped) {
+        if (!clippedFacesViewer(i0, i1, i2, doubleSided)) return TP_VR_COUNT_CULLED;
+        listTriangle(i0, i1, i2, id);
+        return TP_VR_COUNT_BIG;
+    }
+    RasterVertex v0 = project(c0), v1 = project(c1), v2 = project(c2);
+    ivec2 first, last;
+    pixelBounds(min(min(v0.p, v1.p), v2.p), max(max(v0.p, v1.p), v2.p), first, last);
+    if (any(greaterThan(first, last))) return TP_VR_COUNT_CULLED;
+    if (any(greaterThan(last - first, ivec2(TP_VR_SMALL_PIXELS - 1)))) {
+        // Large: listed unless its snapped area culls it (zero, or a single-sided back face).
+        int64_t area = int64_t(v1.p.x - v0.p.x) * int64_t(v2.p.y - v0.p.y) -
+                       int64_t(v2.p.x - v0.p.x) * int64_t(v1.p.y - v0.p.y);
+        if (area == 0l || (area > 0l && !doubleSided)) return TP_VR_COUNT_CULLED;
+        listTriangle(i0, i1, i2, id);
+        return TP_VR_COUNT_BIG;
+    }
+    bool drew;
+    atomics = rasterTriangle(v0, v1, v2, i0, i1, i2, id, false, 0u, drew);
+    return drew ? TP_VR_COUNT_SMALL : TP_VR_COUNT_CULLED;
+}
+
+void main() {
+    uint lane = gl_LocalInvocationIndex;
+    if (lane < TP_VR_COUNTERS) sCounts[lane] = 0u;
+    if (lane == 0u) sAtomics = 0u;
+    barrier();
+    uint chunk = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+    uint base, triangle;
+    int vertexOffset;
+    if (chunk < chunks.length() && findTriangle(chunks[chunk], lane, base, vertexOffset, triangle)) {
+        RasterChunk c = chunks[chunk];
+        uint id = ((c.row + 1u) << kTriangleBits) | triangle;
+        uint i0 = uint(int(rasterIndices[base]) + vertexOffset);
+        uint i1 = uint(int(rasterIndices[base + 1u]) + vertexOffset);
+        uint i2 = uint(int(rasterIndices[base + 2u]) + vertexOffset);
+        bool clipped;
+        uint atomics;
+        atomicAdd(sCounts[triangleOutcome(i0, i1, i2, id, clipped, atomics)], 1u);
+        if (clipped) atomicAdd(sCounts[TP_VR_COUNT_CLIPPED], 1u);
+        if (atomics != 0u) atomicAdd(sAtomics, atomics);
+    }
+    barrier();
+    if (lane < TP_VR_COUNTERS && sCounts[lane] != 0u) atomicAdd(list[lane], sCounts[lane]);
+    if (lane == 0u && sAtomics != 0u) atomicAdd(list[TP_VR_ATOMICS_SMALL], sAtomics);
+}

@@ -1,0 +1,92 @@
+// The visibility buffer's compute rasterizer (--vis-raster compute|hybrid; visbuffer/
+// raster_pass.h, docs/visbuffer.md "The compute rasterizer"): its bindings, its tables and the
+// layout of what it writes, for C++ and GLSL.
+#ifndef TP_VIS_RASTER_H
+#define TP_VIS_RASTER_H
+#include "include/glsl_cpp.h"
+
+// Triangles per chunk: one workgroup of vis_raster.comp, one invocation per triangle. A chunk
+// lies in one draw (or, culled, in one meshlet of at most 124 triangles).
+#define TP_VR_GROUP 128
+// Invocations of one listed (large) triangle's workgroup in vis_raster_big.comp.
+#define TP_VR_BIG_GROUP 64 // = 8 x 8: one pixel of each tile per invocation
+// A triangle whose pixel bounding box is wider or taller than this is not rasterized by its
+// own invocation: it is listed for vis_raster_big (compute) or the hardware (hybrid). The
+// invocations of a subgroup walk as many pixels as the largest box among them (8 lanes on
+// lavapipe, 32 on NVIDIA): 8 keeps that at 64; measured on lavapipe, 16 made vis_raster 40 ms
+// of a 96x64 courtyard-small frame, most of it lanes waiting for the largest box.
+#define TP_VR_SMALL_PIXELS 8
+// Vertices are snapped to this many fractional bits of a pixel before the edge functions,
+// as VkPhysicalDeviceLimits::subPixelPrecisionBits says the device does (8 on lavapipe and
+// NVIDIA); the specialization constant takes the device's value.
+#define TP_VR_SUBPIXEL_BITS 8
+// The guard band: polygons are clipped to [-G, size + G] pixels in x and y (besides the near
+// plane) so every snapped coordinate stays below 2^23 fixed-point units and every edge
+// function product below 2^47 (int64).
+#define TP_VR_GUARD_PIXELS 8192.0f
+
+// ---- set 1 of vis_raster and vis_raster_big ----
+#define TP_VR_BINDING_SAMPLES 0  // uint64_t[pixels * samples]: (depth bits << 32) | ~id
+#define TP_VR_BINDING_LIST 1     // uint[]: counters, then the listed triangles (uvec4 each)
+#define TP_VR_BINDING_ARGS 2     // uint[4]: the listed triangles' dispatch (compute) or draw (hybrid)
+#define TP_VR_BINDING_INDICES 3  // uint[]: the scene's index buffer (or the meshlet index buffer)
+#define TP_VR_BINDING_CHUNKS 4   // RasterChunk[]
+#define TP_VR_BINDING_ROWS 5     // RasterRow[]: per VisDraw row, its flags and material
+#define TP_VR_BINDING_SOURCE_TRIANGLES 6 // culled: SceneGpu::meshletSourceTriangleBuffer
+#define TP_VR_BINDING_COMMANDS 7 // culled: meshlet_cull's indexed indirect commands
+#define TP_VR_BINDING_COUNTS 8   // culled: meshlet_cull's commands per draw
+
+// ---- set 1 of vis_raster_merge and vis_raster_hw (visbuffer/raster_merge_pass.h) ----
+#define TP_VR_BINDING_VIS_SAMPLES 1 // the samples above, read by the merge
+#define TP_VR_BINDING_VIS_LIST 2    // hybrid: the listed triangles the hardware draws
+
+// ---- the list buffer: TP_VR_LIST_HEADER words of counters, then uvec4 per listed triangle:
+// its three vertex indices (vertexOffset added) and its id ----
+#define TP_VR_LIST_HEADER 8
+#define TP_VR_COUNTERS 4         // the words below, read back for the report
+#define TP_VR_COUNT_SMALL 0      // triangles rasterized by their own invocation
+#define TP_VR_COUNT_BIG 1        // triangles listed (vis_raster_big or the hardware)
+#define TP_VR_COUNT_CULLED 2     // back-facing, zero-area, outside the view or between samples
+#define TP_VR_COUNT_CLIPPED 3    // crossing the near plane or the guard band (clipped)
+#define TP_VR_LIST_SLOTS 4       // compute: the listed triangles' count (their slots)
+#define TP_VR_ATOMICS_SMALL 5    // 64-bit atomic max issued by vis_raster
+#define TP_VR_ATOMICS_BIG 6      // 64-bit atomic max issued by vis_raster_big
+
+// RasterRow.flags
+#define TP_VR_FLAG_DOUBLE_SIDED 1u
+#define TP_VR_FLAG_MASKED 2u // alpha-tested per sample (compute mode)
+
+// ---- specialization constants (after the visbuffer's 19, 20) ----
+#define TP_VR_SPEC_SUBPIXEL_BITS 21
+#define TP_VR_SPEC_HYBRID 22 // 1: listed triangles go to the hardware (draw args), 0: vis_raster_big
+
+#ifndef TP_GLSL
+namespace tp::gpu {
+#endif
+
+// One workgroup's triangles. Whole draws: triangles [firstTriangle, + count) of VisDraw row
+// `row`, their indices at firstIndex + 3 * triangle of the scene's index buffer. Culled
+// (--cull-geometry frustum): command `command` of the draw in meshlet_cull's slot `slot`, run
+// only if the cull kept that many meshlets.
+TP_STRUCT(RasterChunk) {
+    uint row;           // VisDraw row (the id's draw)
+    uint firstIndex;    // whole: the draw's first index; culled: meshlet_cull's slot
+    int vertexOffset;   // added to each index
+    uint firstTriangle; // whole: the chunk's first triangle in its draw; culled: command index
+    uint count;         // whole: triangles (<= TP_VR_GROUP); culled: the command's place in its range
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+TP_STRUCT(RasterRow) {
+    uint flags;    // TP_VR_FLAG_*
+    uint material; // MaterialGpu index (the alpha test)
+};
+
+#ifndef TP_GLSL
+static_assert(sizeof(RasterChunk) == 32);
+static_assert(sizeof(RasterRow) == 8);
+} // namespace tp::gpu
+#endif
+#endif

@@ -1,0 +1,98 @@
+#include "visbuffer/raster_merge_pass.h"
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "core/gpu/rendering.h"
+#include "core/gpuscene/scene_gpu.h"
+#include "visbuffer/vis_raster.h"
+
+namespace tp::vis {
+
+RasterMergePass::~RasterMergePass() {
+    for (VkPipeline p : {listed_, merge_})
+        if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
+    for (VkPipelineLayout l : {listedLayout_, mergeLayout_})
+        if (l) vkDestroyPipelineLayout(ctx_.device, l, nullptr);
+    destroyPassSet(ctx_, listedSet_);
+    destroyPassSet(ctx_, mergeSet_);
+}
+
+void RasterMergePass::plan(FrameGraph& graph, uint32_t samples, const VisibilityTargets& targets,
+                           ResourceHandle resolvedDepth, const RasterTargets& raster) {
+    samples_ = samples;
+    t_ = targets;
+    resolved_ = resolvedDepth;
+    raster_ = raster;
+    if (raster.hybrid)
+        graph.addPass("vis_raster_hw",
+                      {{t_.ids, Use::ColorAttachment},
+                       {t_.depth, Use::DepthAttachment},
+                       {raster.list, Use::StorageRead, TP_VR_BINDING_VIS_LIST},
+                       {raster.args, Use::IndirectRead}},
+                      [this](PassContext& pc) { recordListed(pc); });
+    std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment},
+                              {t_.depth, Use::DepthAttachment},
+                              {raster.samples, Use::StorageRead, TP_VR_BINDING_VIS_SAMPLES}};
+    if (samples > 1) uses.push_back({resolvedDepth, Use::DepthResolve});
+    graph.addPass("vis_raster_merge", uses, [this](PassContext& pc) { recordMerge(pc); });
+}
+
+// Neither draw is culled by the hardware: vis_raster culled back faces per draw already.
+void RasterMergePass::prepare(FrameGraph& graph) {
+    GraphicsPipelineDesc d;
+    d.colorFormats = {VK_FORMAT_R32_SFLOAT};
+    d.samples = VkSampleCountFlagBits(samples_);
+    if (raster_.hybrid) {
+        listedSet_ = graph.createPassSet("vis_raster_hw");
+        listedLayout_ = scene_.createPipelineLayout(listedSet_.layout);
+        d.layout = listedLayout_;
+        d.passSet = &listedSet_;
+        d.vertexShader = "vis_raster_hw_vert";
+        d.fragmentShader = "vis_raster_hw_frag";
+        d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+        listed_ = createGraphicsPipeline(ctx_, d);
+    }
+    mergeSet_ = graph.createPassSet("vis_raster_merge");
+    mergeLayout_ = scene_.createPipelineLayout(mergeSet_.layout);
+    d.layout = mergeLayout_;
+    d.passSet = &mergeSet_;
+    d.vertexShader = "vis_raster_merge_vert";
+    d.fragmentShader = "vis_raster_merge_frag";
+    d.sampleShading = samples_ > 1; // one invocation per sample: each its own (depth, id)
+    d.specConstants = scene_.specConstants(AlphaMode::Opaque);
+    d.specConstants.push_back({TP_SPEC_SAMPLES, samples_});
+    merge_ = createGraphicsPipeline(ctx_, d);
+}
+
+void RasterMergePass::recordListed(PassContext& pc) {
+    beginRendering(pc, {ColorTarget{t_.ids, {}, false, {}}}, DepthTarget{t_.depth, {}, false});
+    scene_.bindSceneSet(pc.cmd, listedLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, listedLayout_, TP_SET_PASS,
+                            1, &listedSet_.set, 0, nullptr);
+    const gpu::DrawPush push{};
+    vkCmdPushConstants(pc.cmd, listedLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, listed_);
+    vkCmdDrawIndirect(pc.cmd, pc.buffer(raster_.args).buffer, 0, 1, 16);
+    endRendering(pc);
+}
+
+void RasterMergePass::recordMerge(PassContext& pc) {
+    // Compute mode: nothing drew before, so this pass clears (ids 0: no geometry; depth 0).
+    const bool clear = !raster_.hybrid;
+    ColorTarget ids{t_.ids, {}, clear, {}};
+    ids.clearValue.uint32[0] = 0;
+    beginRendering(pc, {ids},
+                   DepthTarget{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}, clear});
+    scene_.bindSceneSet(pc.cmd, mergeLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mergeLayout_, TP_SET_PASS,
+                            1, &mergeSet_.set, 0, nullptr);
+    const gpu::DrawPush push{};
+    vkCmdPushConstants(pc.cmd, mergeLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, merge_);
+    vkCmdDraw(pc.cmd, 3, 1, 0, 0);
+    endRendering(pc);
+}
+
+} // namespace tp::vis
