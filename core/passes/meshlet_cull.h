@@ -87,8 +87,8 @@ class MeshletCull {
     // For a pass that reads the kept meshlets itself (the visibility buffer's compute
     // rasterizer; the early phase's only, so it refuses occlusion): the commands and counts (read as storage), the slot of a draw given, and the
     // first of that slot's commands (meshletCount of them, the first counts[slot] written).
-    ResourceHandle commands() const { return commands_; }
-    ResourceHandle counts() const { return counts_; }
+    ResourceHandle commands() const { return early_.commands; }
+    ResourceHandle counts() const { return early_.counts; }
     uint32_t slot(const DrawItem& d) const { return slotOf_.at(d.index); }
     uint32_t firstCommand(uint32_t slot) const { return firstCommand_.at(slot); }
     // The culled draw of `d` (one of the draws given) in `phase`: DrawPush (material, pad0),
