@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include <unistd.h>
@@ -127,6 +128,16 @@ std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms
         }
     }
     return layers;
+}
+
+size_t differingPixels(const ImageRGBA& a, const ImageRGBA& b, size_t* first) {
+    size_t n = 0;
+    if (first) *first = 0;
+    for (size_t i = 0; i < a.pixelCount(); ++i)
+        if (std::memcmp(&a.rgba[i * 4], &b.rgba[i * 4], 4 * sizeof(float)) != 0 && n++ == 0 &&
+            first)
+            *first = i;
+    return n;
 }
 
 const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name) {

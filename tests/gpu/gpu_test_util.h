@@ -39,6 +39,9 @@ RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipelin
 // plane). CPU only; the scenes of these tests have few blended triangles.
 std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms& f);
 
+// Pixels whose RGBA bytes differ (0: identical images); `first`, when given, the first of them.
+size_t differingPixels(const ImageRGBA& a, const ImageRGBA& b, size_t* first = nullptr);
+
 // The run's debug image of that name (settings.debug), or null.
 const ImageRGBA* debugImageOf(const RunResult& run, const std::string& name);
 

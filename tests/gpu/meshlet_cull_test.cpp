@@ -53,17 +53,6 @@ Pair renderBoth(const std::string& pipeline, const Scene& scene, uint32_t w, uin
     return p;
 }
 
-// Pixels whose colour differs at all.
-uint64_t differingPixels(const ImageRGBA& a, const ImageRGBA& b) {
-    uint64_t n = 0;
-    for (size_t i = 0; i < a.pixelCount(); ++i)
-        for (int c = 0; c < 4; ++c)
-            if (a.rgba[i * 4 + c] != b.rgba[i * 4 + c]) {
-                ++n;
-                break;
-            }
-    return n;
-}
 
 void expectSameFrame(const Pair& p, const std::string& what) {
     ASSERT_EQ(p.none.depth.r.size(), p.frustum.depth.r.size());

@@ -55,16 +55,6 @@ Runs renderRuns(const std::string& pipeline, const Scene& scene, uint32_t w, uin
     return r;
 }
 
-uint64_t differingPixels(const ImageRGBA& a, const ImageRGBA& b) {
-    uint64_t n = 0;
-    for (size_t i = 0; i < a.pixelCount(); ++i)
-        for (int c = 0; c < 4; ++c)
-            if (a.rgba[i * 4 + c] != b.rgba[i * 4 + c]) {
-                ++n;
-                break;
-            }
-    return n;
-}
 
 void expectSameFrame(const RunResult& none, const RunResult& full, const std::string& what) {
     ASSERT_EQ(none.depth.r.size(), full.depth.r.size()) << what;
