@@ -156,9 +156,16 @@ class VisbufferRenderer final : public Renderer {
         if (!vis_.manyViews && vis_.blendedCapacityPercent == 0 &&
             !blendedIds_.fits(fragmentBound()))
             return false;
-        table_ = vis::makeDrawTable(scene_, true); // the passes hold it by reference
-        uploadBufferData(ctx_, drawBuffer_, table_.rows.data(),
-                         table_.rows.size() * sizeof(gpu::VisDraw));
+        // The blended draws' rows follow their back-to-front order, which most new views keep:
+        // the buffer is written only when a row moved (a submission and a wait saved a view).
+        vis::DrawTable next = vis::makeDrawTable(scene_, true);
+        const bool moved = next.rows.size() != table_.rows.size() ||
+                           std::memcmp(next.rows.data(), table_.rows.data(),
+                                       next.rows.size() * sizeof(gpu::VisDraw)) != 0;
+        table_ = std::move(next); // the passes hold it by reference
+        if (moved)
+            uploadBufferData(ctx_, drawBuffer_, table_.rows.data(),
+                             table_.rows.size() * sizeof(gpu::VisDraw));
         return true;
     }
 
