@@ -64,15 +64,22 @@ void RasterMergePass::prepare(FrameGraph& graph) {
     merge_ = createGraphicsPipeline(ctx_, d);
 }
 
+// The scene set, the pass's set, zero push constants, no face culling and the pipeline: what
+// both of this file's draws need before they draw.
+void RasterMergePass::bind(PassContext& pc, VkPipelineLayout layout, const PassSet& set,
+                           VkPipeline pipeline) {
+    scene_.bindSceneSet(pc.cmd, layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, TP_SET_PASS, 1,
+                            &set.set, 0, nullptr);
+    const gpu::DrawPush push{};
+    vkCmdPushConstants(pc.cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+}
+
 void RasterMergePass::recordListed(PassContext& pc) {
     beginRendering(pc, {ColorTarget{t_.ids, {}, false, {}}}, DepthTarget{t_.depth, {}, false});
-    scene_.bindSceneSet(pc.cmd, listedLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, listedLayout_, TP_SET_PASS,
-                            1, &listedSet_.set, 0, nullptr);
-    const gpu::DrawPush push{};
-    vkCmdPushConstants(pc.cmd, listedLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
-    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, listed_);
+    bind(pc, listedLayout_, listedSet_, listed_);
     vkCmdDrawIndirect(pc.cmd, pc.buffer(raster_.args).buffer, 0, 1, 16);
     endRendering(pc);
 }
@@ -84,13 +91,7 @@ void RasterMergePass::recordMerge(PassContext& pc) {
     ids.clearValue.uint32[0] = 0;
     beginRendering(pc, {ids},
                    DepthTarget{t_.depth, samples_ > 1 ? resolved_ : ResourceHandle{}, clear});
-    scene_.bindSceneSet(pc.cmd, mergeLayout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mergeLayout_, TP_SET_PASS,
-                            1, &mergeSet_.set, 0, nullptr);
-    const gpu::DrawPush push{};
-    vkCmdPushConstants(pc.cmd, mergeLayout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-    vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
-    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, merge_);
+    bind(pc, mergeLayout_, mergeSet_, merge_);
     vkCmdDraw(pc.cmd, 3, 1, 0, 0);
     endRendering(pc);
 }

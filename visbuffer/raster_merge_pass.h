@@ -37,6 +37,7 @@ class RasterMergePass {
   private:
     void recordListed(PassContext& pc);
     void recordMerge(PassContext& pc);
+    void bind(PassContext& pc, VkPipelineLayout layout, const PassSet& set, VkPipeline pipeline);
     GpuContext& ctx_;
     SceneGpu& scene_;
     uint32_t samples_ = 1;

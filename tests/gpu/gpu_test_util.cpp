@@ -130,6 +130,34 @@ std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms
     return layers;
 }
 
+std::vector<std::string> cullingPipelines() {
+    std::vector<std::string> out;
+    for (const RendererEntry& e : registeredRenderers())
+        if (std::any_of(e.knobs.begin(), e.knobs.end(),
+                        [](const Knob& k) { return k.name == "cull-geometry"; }))
+            out.push_back(e.name);
+    return out;
+}
+
+std::vector<RunResult> renderCullModes(const std::string& pipeline, const Scene& scene, uint32_t w,
+                                       uint32_t h, uint32_t msaa, const std::string& mode,
+                                       const std::vector<uint32_t>& frames) {
+    auto ctx = makeValidatedContext();
+    EXPECT_TRUE(ctx);
+    if (!ctx) return {};
+    SceneGpu gpuScene(*ctx, scene);
+    RenderSettings s;
+    s.width = w;
+    s.height = h;
+    s.msaa = msaa;
+    std::vector<RunResult> out{runOrFail(*ctx, gpuScene, pipeline, s)};
+    s.set("cull-geometry", mode);
+    for (uint32_t n : frames)
+        out.push_back(runOrFail(*ctx, gpuScene, pipeline, s, n));
+    expectNoValidationMessages(*ctx);
+    return out;
+}
+
 size_t differingPixels(const ImageRGBA& a, const ImageRGBA& b, size_t* first) {
     size_t n = 0;
     if (first) *first = 0;

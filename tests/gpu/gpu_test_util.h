@@ -34,6 +34,14 @@ Scene makeFloorScene(const std::vector<Light>& lights);
 RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
                     const RenderSettings& settings, uint32_t frames = 1);
 
+// Every registered renderer that reads --cull-geometry.
+std::vector<std::string> cullingPipelines();
+// `pipeline` on a validated context: unculled (one frame), then with --cull-geometry `mode` for
+// each count of frames in `frames` (the last frame's result each); empty when no context.
+std::vector<RunResult> renderCullModes(const std::string& pipeline, const Scene& scene, uint32_t w,
+                                       uint32_t h, uint32_t msaa, const std::string& mode,
+                                       const std::vector<uint32_t>& frames);
+
 // Per pixel, an upper bound on the blended layers covering any of its samples: the blended
 // triangles whose screen bounding box touches it (all of them when one crosses the near
 // plane). CPU only; the scenes of these tests have few blended triangles.

@@ -19,18 +19,6 @@
 namespace tp::test {
 namespace {
 
-bool readsCullGeometry(const RendererEntry& e) {
-    return std::any_of(e.knobs.begin(), e.knobs.end(),
-                       [](const Knob& k) { return k.name == "cull-geometry"; });
-}
-
-std::vector<std::string> cullingPipelines() {
-    std::vector<std::string> out;
-    for (const RendererEntry& e : registeredRenderers())
-        if (readsCullGeometry(e)) out.push_back(e.name);
-    return out;
-}
-
 struct Runs {
     RunResult none, first, later; // later: the last of `frames` frames
 };
@@ -38,21 +26,9 @@ struct Runs {
 // `pipeline` unculled (one frame) and with --cull-geometry full, one frame and `frames`.
 Runs renderRuns(const std::string& pipeline, const Scene& scene, uint32_t w, uint32_t h,
                 uint32_t msaa, uint32_t frames = 3) {
-    auto ctx = makeValidatedContext();
-    EXPECT_TRUE(ctx);
-    if (!ctx) return {};
-    SceneGpu gpuScene(*ctx, scene);
-    RenderSettings s;
-    s.width = w;
-    s.height = h;
-    s.msaa = msaa;
-    Runs r;
-    r.none = runOrFail(*ctx, gpuScene, pipeline, s);
-    s.set("cull-geometry", "full");
-    r.first = runOrFail(*ctx, gpuScene, pipeline, s, 1);
-    r.later = runOrFail(*ctx, gpuScene, pipeline, s, frames);
-    expectNoValidationMessages(*ctx);
-    return r;
+    std::vector<RunResult> v = renderCullModes(pipeline, scene, w, h, msaa, "full", {1, frames});
+    if (v.size() < 3) return {};
+    return {std::move(v[0]), std::move(v[1]), std::move(v[2])};
 }
 
 
