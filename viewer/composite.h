@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <vulkan/vulkan.h>
+
 #include "core/image/image.h"
 #include "viewer/view_state.h"
 
@@ -33,6 +35,9 @@ struct Composite {
     std::vector<uint8_t> rgba;      // 8-bit display values, row 0 at the top
     float diffScale = 0;            // the heat map's upper end (Difference mode)
     std::string note;               // what is missing ("B not rendered yet")
+    // Composed on the GPU (gpu_composite.h): `rgba` is empty, the bytes are in this buffer on
+    // the UI's device, already in the target's channel order.
+    VkBuffer gpuBytes = VK_NULL_HANDLE;
 };
 
 Composite compose(const CompositeInput& in, uint32_t width, uint32_t height);

@@ -23,7 +23,7 @@ struct Target {
     VkExtent2D extent{0, 0};
     void resize(GpuContext& ctx, const UiRenderer& ui, uint32_t w, uint32_t h) {
         if (extent.width == w && extent.height == h) return;
-        vkDeviceWaitIdle(ctx.device);
+        ctx.waitIdle();
         if (framebuffer) vkDestroyFramebuffer(ctx.device, framebuffer, nullptr);
         ImageDesc d;
         d.format = VK_FORMAT_R8G8B8A8_UNORM;
@@ -44,6 +44,7 @@ struct Target {
 
 int runHeadless(const LoopSetup& setup) {
     ContextOptions co = setup.viewer.context;
+    co.queues = 2; // the renderers' own, where the device has one (--share-device)
     Result<std::unique_ptr<GpuContext>> created = GpuContext::create(co);
     if (!created) {
         std::fprintf(stderr, "triptych: %s\n", created.error().c_str());
@@ -56,6 +57,7 @@ int runHeadless(const LoopSetup& setup) {
     {
         UiRenderer ui(ctx, VK_FORMAT_R8G8B8A8_UNORM, 2, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
         ViewerApp app(ctx, setup.viewer);
+        app.setTargetBgra(ui.bgra());
         ScriptRunner runner(*setup.script, setup.scriptPath, setup.out, setup.waitLimitSeconds,
                             true);
         ScriptMouse mouse;
@@ -95,7 +97,7 @@ int runHeadless(const LoopSetup& setup) {
             scriptError = e.what();
         }
         ctx.freeCommandBuffer(cmd);
-        vkDeviceWaitIdle(ctx.device);
+        ctx.waitIdle();
         target.destroy(ctx);
         code = finish(app, ctx, scriptError);
     }

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "core/cli/scene_input.h"
+#include "core/gpu/barriers.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/runner/device_energy.h"
 #include "core/scene/lights.h"
@@ -11,8 +12,8 @@
 
 namespace tp::view {
 
-RenderWorker::RenderWorker(ContextOptions options, std::string label)
-    : options_(std::move(options)), label_(std::move(label)) {
+RenderWorker::RenderWorker(ContextOptions options, std::string label, GpuContext* share)
+    : options_(std::move(options)), label_(std::move(label)), share_(share) {
     thread_ = std::thread([this] { loop(); });
 }
 
@@ -40,23 +41,32 @@ void RenderWorker::submit(RenderJob job) {
 
 std::optional<RenderOutcome> RenderWorker::take() {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::optional<RenderOutcome> out = std::move(done_);
-    done_.reset();
+    if (done_.empty()) return std::nullopt;
+    std::optional<RenderOutcome> out = std::move(done_.front());
+    done_.pop_front();
     return out;
 }
 
 bool RenderWorker::idle() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return !pending_ && !running_ && !done_;
+    return !pending_ && !running_ && done_.empty();
+}
+
+void RenderWorker::publish(RenderOutcome outcome) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_.push_back(std::move(outcome));
 }
 
 void RenderWorker::loop() {
-    Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(options_);
-    if (ctx) {
+    if (share_) {
+        ctx_ = GpuContext::share(*share_, 1);
+        energy_ = openDeviceEnergy(*ctx_);
+    } else if (Result<std::unique_ptr<GpuContext>> ctx = GpuContext::create(options_)) {
         ctx_ = std::move(*ctx);
         energy_ = openDeviceEnergy(*ctx_);
-    } else
+    } else {
         contextError_ = ctx.error();
+    }
     for (;;) {
         RenderJob job;
         {
@@ -68,11 +78,19 @@ void RenderWorker::loop() {
             running_ = true;
         }
         RenderOutcome outcome = runJob(job);
+        std::optional<RenderOutcome> images;
+        const bool second = job.images && share_ && outcome.error.empty();
+        if (second) {
+            publish(outcome); // shown now; the images follow
+            images = readImages(job, outcome);
+        }
         std::lock_guard<std::mutex> lock(mutex_);
-        done_ = std::move(outcome);
+        if (!second) done_.push_back(std::move(outcome));
+        if (images) done_.push_back(std::move(*images));
         running_ = false;
     }
     // Everything on this device is released here, on its own thread, before its messages are read.
+    displays_.clear();
     sessions_.clear();
     gpuScene_.reset();
     if (ctx_) messages_ = ctx_->validationMessages();
@@ -171,6 +189,7 @@ PipelineImage RenderWorker::renderPipeline(const std::string& name, const Render
         Result<RunResult> run = p.session->render(options);
         if (run) {
             image.run = std::move(*run);
+            if (share_) image.display = displayCopy(p.session->hdrImage());
             image.updateMs = image.run.stats.counter("view_update_ms", 0.0);
         } else {
             image.error = run.error();
@@ -223,6 +242,7 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     runOptions.timedFrames = job.timedFrames;
     runOptions.energy = energy_;
     runOptions.extendEnergyWindow = false; // a render is not held up to lengthen the window
+    runOptions.images = !share_;           // shared: shown from the display copy, read after
     if (job.calibration && job.calibration->device == ctx_->info.name &&
         job.calibration->driver == ctx_->info.driver) // shares the file's lifetime
         runOptions.ceilings = std::shared_ptr<const CeilingRates>(job.calibration, &job.calibration->rates);
@@ -238,6 +258,78 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     if (out.rebuilt.empty()) out.rebuilt = planned ? "renderer" : "view";
     out.totalMs = msSince(start);
     return out;
+}
+
+// The hdr and depth of a shown outcome's pipelines, read back (the sessions still hold that
+// view: nothing ran between). Skipped when a newer job is already waiting: its images are the
+// ones that will be wanted.
+std::optional<RenderOutcome> RenderWorker::readImages(const RenderJob& job,
+                                                      const RenderOutcome& shown) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (pending_) return std::nullopt;
+    }
+    RenderOutcome out;
+    out.id = job.id;
+    out.key = job.key;
+    out.imagesOnly = true;
+    const auto start = std::chrono::steady_clock::now();
+    for (const PipelineImage& image : shown.images) {
+        PipelineImage read;
+        read.pipeline = image.pipeline;
+        auto it = sessions_.find(image.pipeline);
+        if (!image.error.empty() || it == sessions_.end() || !it->second.session) continue;
+        try {
+            it->second.session->readImages(read.run);
+        } catch (const std::exception& e) {
+            read.error = e.what();
+        }
+        out.images.push_back(std::move(read));
+    }
+    out.totalMs = msSince(start);
+    return out;
+}
+
+// A display image nobody else holds (the UI let go of it), or a new one, filled from `hdr`
+// (TRANSFER_SRC_OPTIMAL after the frame) and left for the UI's compute shader.
+std::shared_ptr<const DisplayImage> RenderWorker::displayCopy(const Image& hdr) {
+    std::shared_ptr<DisplayImage> target;
+    for (auto it = displays_.begin(); it != displays_.end();) {
+        const bool free = it->use_count() == 1;
+        const ImageDesc& d = (*it)->image.desc;
+        if (free && (d.width != hdr.desc.width || d.height != hdr.desc.height ||
+                     d.format != hdr.desc.format)) {
+            it = displays_.erase(it); // another size or format: not coming back
+            continue;
+        }
+        if (free && !target) target = *it;
+        ++it;
+    }
+    if (!target) {
+        ImageDesc d = hdr.desc;
+        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        target = std::make_shared<DisplayImage>();
+        target->image = createImage(*ctx_, d, {"viewer", "", "display_copy",
+                                               "a renderer's image as the UI shows it"});
+        displays_.push_back(target);
+    }
+    const Image& dst = target->image;
+    ctx_->submitAndWait([&](VkCommandBuffer cmd) {
+        imageBarrier(cmd, dst.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkImageCopy region{};
+        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.dstSubresource = region.srcSubresource;
+        region.extent = {hdr.desc.width, hdr.desc.height, 1};
+        vkCmdCopyImage(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst.image,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        imageBarrier(cmd, dst.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    });
+    return target;
 }
 
 } // namespace tp::view

@@ -10,6 +10,7 @@
 // moving lights (same count), only follows the view: each pipeline's RendererSession
 // (core/runner/render_session.h) is kept between jobs and updates its per-view data in place.
 #include <condition_variable>
+#include <deque>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -36,6 +37,18 @@ struct RenderJob {
     uint32_t timedFrames = 1;
     std::shared_ptr<const CeilingFile> calibration; // used when it is this device's
     bool passStatistics = true; // --pass-statistics (RenderSettings::passStatistics)
+    // The worker shares the UI's device (RenderWorker's `share`): each image is copied into a
+    // display image the UI composes from, and the outcome is given as soon as it is there.
+    // `images`: the hdr and depth are read back too (the reference's error, the inspector,
+    // overlays), after the display outcome, in a second one; without a shared device always.
+    bool images = true;
+};
+
+// A renderer's hdr image copied where the UI's composite samples it (SHADER_READ_ONLY_OPTIMAL,
+// on the shared device): the renderer's own is overwritten by its next view while the UI may
+// still show this one. Held by the outcome and the UI; the worker reuses one nobody else holds.
+struct DisplayImage {
+    Image image;
 };
 
 struct PipelineImage {
@@ -44,6 +57,7 @@ struct PipelineImage {
     RunResult run;
     double buildMs = 0;    // wall time of the whole run: plan (if any), frames, readback
     bool planned = false;  // this job planned the renderer (a new session or a replan)
+    std::shared_ptr<const DisplayImage> display; // the shared device's copy (else null)
     double updateMs = 0;   // CPU: following the new view (updateView + recording), if it moved
 };
 
@@ -62,17 +76,22 @@ struct RenderOutcome {
     std::shared_ptr<const std::vector<Light>> lights; // the job's lights (the inspector's)
     Camera camera;                                    // the camera it rendered with
     size_t triangleCount = 0;
+    // The second outcome of a job on a shared device that asked for images: `images` carry
+    // only their run's hdr and depth, for the first outcome's pipelines.
+    bool imagesOnly = false;
 };
 
 class RenderWorker {
   public:
-    RenderWorker(ContextOptions options, std::string label);
+    // share: the UI's context, whose device the worker renders on (its second queue where the
+    // device has one, GpuContext::share); null: a device of its own.
+    RenderWorker(ContextOptions options, std::string label, GpuContext* share = nullptr);
     ~RenderWorker();
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
 
     void submit(RenderJob job);
-    std::optional<RenderOutcome> take();
+    std::optional<RenderOutcome> take(); // the oldest outcome not yet taken
     bool idle() const; // nothing queued, running, or finished and not yet taken
     const std::string& label() const { return label_; }
     // After the destructor's join would be too late: stops the thread, returns its context's
@@ -82,6 +101,9 @@ class RenderWorker {
   private:
     void loop();
     RenderOutcome runJob(const RenderJob& job);
+    void publish(RenderOutcome outcome);
+    std::optional<RenderOutcome> readImages(const RenderJob& job, const RenderOutcome& shown);
+    std::shared_ptr<const DisplayImage> displayCopy(const Image& hdr);
     void prepareScene(const RenderJob& job, RenderOutcome& out);
     void moveLights(const ViewState& s);
     PipelineImage renderPipeline(const std::string& name, const RenderJob& job,
@@ -92,7 +114,9 @@ class RenderWorker {
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<RenderJob> pending_;
-    std::optional<RenderOutcome> done_;
+    std::deque<RenderOutcome> done_;
+    GpuContext* share_ = nullptr;
+    std::vector<std::shared_ptr<DisplayImage>> displays_; // the worker's, reused when free
     bool running_ = false, quit_ = false;
     std::vector<std::string> messages_;
     std::thread thread_;

@@ -110,6 +110,8 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
     j["error"] = app.lastError();
     j["reference_stale"] = app.referenceStale();
     j["last_render_ms"] = app.lastRenderMs();
+    j["shares_device"] = app.sharesDevice();
+    j["image_readbacks"] = app.imageReadbacks();
     if (const auto& e = app.errorVsReference(); e)
         j["a_vs_reference"] = {{"rmse", e->rmse}, {"psnr", e->psnr}, {"max_abs", e->maxAbs}};
     // Kept after the view moves on, with "stale" and the view it is of (what the panel shows).
@@ -153,8 +155,10 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
     j["renders"] = benchRenderMs_.size();
     j["what"] =
         "each render: a camera step, the kept renderer following the view (or planned again: "
-        "'planned' counts those), its frame on the GPU, readback; the UI frames draw the panels "
+        "'planned' counts those), its frame on the GPU, and the image made showable: copied "
+        "where the UI composes it (shares_device) or read back; the UI frames draw the panels "
         "and the scene area meanwhile";
+    j["shares_device"] = app.sharesDevice();
     j["planned"] = benchPlanned_;
     j["view_update_ms"] = benchUpdateMs_;
     j["view_update_ms_median"] = median(benchUpdateMs_);

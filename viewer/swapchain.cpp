@@ -29,7 +29,7 @@ Swapchain::Swapchain(GpuContext& ctx, VkSurfaceKHR surface, VkFormat format, con
 }
 
 Swapchain::~Swapchain() {
-    vkDeviceWaitIdle(ctx_.device);
+    ctx_.waitIdle();
     destroy();
     ctx_.freeCommandBuffer(cmd_);
     vkDestroyFence(ctx_.device, fence_, nullptr);
@@ -49,7 +49,7 @@ void Swapchain::destroy() {
 }
 
 void Swapchain::create(uint32_t width, uint32_t height) {
-    vkDeviceWaitIdle(ctx_.device);
+    ctx_.waitIdle();
     destroy();
     requested_ = {width, height};
     VkSurfaceCapabilitiesKHR caps;
@@ -129,6 +129,7 @@ void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t 
     submit.pCommandBufferInfos = &cmdInfo;
     submit.signalSemaphoreInfoCount = 1;
     submit.pSignalSemaphoreInfos = &signal;
+    std::unique_lock<std::mutex> queue = ctx_.lockQueue(); // shared with the renderers on lavapipe
     VK_CHECK(vkQueueSubmit2(ctx_.queue, 1, &submit, fence_));
     VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     present.waitSemaphoreCount = 1;
@@ -141,6 +142,7 @@ void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t 
         stale_ = true;
     else
         VK_CHECK(r);
+    queue.unlock();
     // One frame at a time: the command buffer, the acquire semaphore and ImGui's buffers are
     // reused.
     VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));

@@ -81,7 +81,7 @@ UiRenderer::UiRenderer(GpuContext& ctx, VkFormat format, uint32_t imageCount,
 }
 
 UiRenderer::~UiRenderer() {
-    vkDeviceWaitIdle(ctx_.device);
+    ctx_.waitIdle();
     ImGui_ImplVulkan_Shutdown();
     staging_.reset();
     vkDestroyDescriptorPool(ctx_.device, pool_, nullptr);
@@ -107,18 +107,23 @@ void UiRenderer::setScene(const Composite& scene) {
         sceneWidth_ = sceneHeight_ = 0;
         return;
     }
+    sceneWidth_ = scene.width;
+    sceneHeight_ = scene.height;
+    if (scene.gpuBytes) {
+        source_ = scene.gpuBytes;
+        return;
+    }
     if (staging_.size < size)
         staging_ = createBuffer(
             ctx_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
             {"viewer", "", "scene_area", "the composed scene area, copied into each UI frame"});
     std::memcpy(staging_.mapped, scene.rgba.data(), size);
-    if (format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB) {
+    if (bgra()) {
         auto* p = static_cast<uint8_t*>(staging_.mapped);
         for (VkDeviceSize i = 0; i < size; i += 4)
             std::swap(p[i], p[i + 2]);
     }
-    sceneWidth_ = scene.width;
-    sceneHeight_ = scene.height;
+    source_ = staging_.buffer;
 }
 
 void UiRenderer::record(VkCommandBuffer cmd, VkImage image, VkFramebuffer framebuffer,
@@ -141,7 +146,7 @@ void UiRenderer::record(VkCommandBuffer cmd, VkImage image, VkFramebuffer frameb
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {std::min(sceneWidth_, extent.width),
                               std::min(sceneHeight_, extent.height), 1};
-        vkCmdCopyBufferToImage(cmd, staging_.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+        vkCmdCopyBufferToImage(cmd, source_, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                                &region);
     }
     imageBarrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,

@@ -27,8 +27,13 @@ class UiRenderer {
 
     VkRenderPass renderPass() const { return renderPass_; }
     VkFramebuffer createFramebuffer(VkImageView view, VkExtent2D extent) const;
-    // Stages the scene area's bytes for the next record() (converted to the target's order).
+    // Stages the scene area's bytes for the next record() (converted to the target's order),
+    // or, composed on the GPU, copies them from scene.gpuBytes in each record().
     void setScene(const Composite& scene);
+    // The target's channel order is BGRA (what a GPU composite must write).
+    bool bgra() const {
+        return format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
+    }
     // The image may hold anything (UNDEFINED): it is cleared first. Leaves it in finalLayout.
     void record(VkCommandBuffer cmd, VkImage image, VkFramebuffer framebuffer, VkExtent2D extent,
                 ImDrawData* drawData);
@@ -40,6 +45,7 @@ class UiRenderer {
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     Buffer staging_;
+    VkBuffer source_ = VK_NULL_HANDLE; // staging_ or the GPU composite's bytes
     uint32_t sceneWidth_ = 0, sceneHeight_ = 0;
 };
 

@@ -68,6 +68,7 @@ struct ViewCommandOptions {
     bool noReference = false;
     std::string calibration; // empty: the passes are not placed
     bool passStatistics = true;
+    std::string shareDevice = "auto";
     // As render's and compare's (their reader and parser); the viewer plays them.
     std::string cameraPath;
     uint32_t pathFrames = kDefaultGltfPathFrames;
@@ -137,6 +138,7 @@ int runView(ViewCommandOptions& o, const std::string& exe) {
     setup.viewer.timedFrames = uint32_t(o.frames);
     setup.viewer.exe = exe;
     setup.viewer.passStatistics = o.passStatistics;
+    setup.viewer.shareDevice = o.shareDevice;
     if (!o.calibration.empty()) {
         Result<CeilingFile> cal = readCeilingFile(o.calibration);
         if (!cal) throw UsageError("--calibration: " + cal.error());
@@ -176,6 +178,14 @@ CommandRunner addViewCommand(CLI::App& app, std::vector<std::string> commandLine
                     "A calibration FILE from 'triptych calibrate' of this device: the numbers panel places every "
                     "pass against its ceilings (docs/efficiency.md)");
     addPassStatisticsOption(*cmd, o->passStatistics);
+    cmd->add_option("--share-device", o->shareDevice,
+                    "Render on the window's own Vulkan device and compose the images where they are "
+                    "(no readback to show a view; the hdr and depth are read back only for the "
+                    "reference's error, the inspector and the overlays): on, off, or auto = on where "
+                    "the device has a second queue for the renderers (a GPU; not lavapipe, whose one "
+                    "queue would hold the UI's frames behind each render)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
     cmd->add_option("--camera-path", o->cameraPath,
                     "Play a camera path: a triptych.camera_path/1 JSON file or a glTF file with an "
                     "animated camera, as render and compare read it (docs/camera_paths.md). It "

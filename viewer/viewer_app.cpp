@@ -36,12 +36,15 @@ void TimingHistory::add(const std::vector<TimingStats>& timings, double renderWa
     }
 }
 
-ViewerApp::ViewerApp(const GpuContext& uiContext, ViewerOptions options)
+ViewerApp::ViewerApp(GpuContext& uiContext, ViewerOptions options)
     : ui_(uiContext), options_(std::move(options)), state_(options_.initial),
       draft_(options_.initial) {
     deviceName_ = ui_.info.name;
     sampleCounts_ = ui_.caps.colorSampleCounts;
-    worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines");
+    shared_ = options_.shareDevice == "on" || (options_.shareDevice == "auto" && ui_.queueCount > 1);
+    gpuComposite_ = std::make_unique<GpuComposite>(ui_);
+    // The reference keeps a device of its own: its image is wanted on the CPU (the error).
+    worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines", shared_ ? &ui_ : nullptr);
     referenceWorker_ = std::make_unique<RenderWorker>(options_.context, "reference");
     player_ = options_.path;
     if (player_.loaded()) showPathView();
@@ -53,6 +56,12 @@ ViewerApp::~ViewerApp() {
 
 std::vector<std::string> ViewerApp::stop() {
     std::vector<std::string> messages;
+    // The display images are the worker's: let go of them (and of any UI frame reading one)
+    // before its device context goes.
+    ui_.waitIdle();
+    shown_.clear();
+    reference_.reset();
+    composedFor_.clear();
     for (auto* w : {&worker_, &referenceWorker_}) {
         if (!*w) continue;
         std::vector<std::string> m = (*w)->stop();
@@ -105,33 +114,60 @@ bool ViewerApp::settled() const {
     return (shownA() != nullptr || !error_.empty()) && !sceneDirty_;
 }
 
+void ViewerApp::takeOutcome(RenderOutcome& o) {
+    error_ = o.error;
+    lastRebuilt_ = o.rebuilt;
+    lastRenderMs_ = o.totalMs;
+    lastSceneMs_ = o.sceneMs;
+    if (o.error.empty()) {
+        sceneMemory_ = o.sceneMemory;
+        lightCount_ = o.lightCount;
+        triangleCount_ = o.triangleCount;
+        sceneCamera_ = o.sceneCamera;
+        hasSceneCamera_ = true;
+        if (state_.cameraFromScene) state_.camera = sceneCamera_;
+    }
+    for (PipelineImage& image : o.images) {
+        Shown s{image.pipeline, o.key,        image.error, nullptr,
+                image.buildMs,  nextSerial_++, o.lights,   o.camera,
+                image.planned,  image.updateMs, image.display};
+        if (image.error.empty()) {
+            history_[image.pipeline].add(image.run.timings, image.buildMs);
+            s.run = std::make_shared<const RunResult>(std::move(image.run));
+        } else {
+            error_ = image.error;
+        }
+        shown_[image.pipeline] = std::move(s);
+    }
+}
+
+// The hdr and depth of images already shown (a shared device's second outcome): the same run
+// with them, as a new image for what reads them (the error, the inspector).
+void ViewerApp::takeImages(const RenderOutcome& o) {
+    for (const PipelineImage& image : o.images) {
+        auto it = shown_.find(image.pipeline);
+        if (it == shown_.end() || it->second.key != o.key || !it->second.run) continue;
+        if (!image.error.empty()) {
+            error_ = image.error;
+            continue;
+        }
+        auto run = std::make_shared<RunResult>(*it->second.run);
+        run->hdr = image.run.hdr;
+        run->depth = image.run.depth;
+        it->second.run = std::move(run);
+        it->second.serial = nextSerial_++;
+        ++imageReadbacks_;
+    }
+}
+
 void ViewerApp::takeOutcomes() {
-    if (std::optional<RenderOutcome> o = worker_->take()) {
-        error_ = o->error;
-        lastRebuilt_ = o->rebuilt;
-        lastRenderMs_ = o->totalMs;
-        lastSceneMs_ = o->sceneMs;
-        if (o->error.empty()) {
-            sceneMemory_ = o->sceneMemory;
-            lightCount_ = o->lightCount;
-            triangleCount_ = o->triangleCount;
-            sceneCamera_ = o->sceneCamera;
-            hasSceneCamera_ = true;
-            if (state_.cameraFromScene) state_.camera = sceneCamera_;
-        }
-        for (PipelineImage& image : o->images) {
-            Shown s{image.pipeline, o->key,        image.error, nullptr,
-                    image.buildMs,  nextSerial_++, o->lights,   o->camera,
-                    image.planned,  image.updateMs};
-            if (image.error.empty()) {
-                history_[image.pipeline].add(image.run.timings, image.buildMs);
-                s.run = std::make_shared<const RunResult>(std::move(image.run));
-            } else {
-                error_ = image.error;
-            }
-            shown_[image.pipeline] = std::move(s);
-        }
-        sceneInputsChanged_ = true;
+    bool taken = false;
+    while (std::optional<RenderOutcome> o = worker_->take()) {
+        if (o->imagesOnly)
+            takeImages(*o);
+        else
+            takeOutcome(*o);
+        taken = true;
     }
     if (std::optional<RenderOutcome> o = referenceWorker_->take()) {
         if (!o->error.empty() && error_.empty()) error_ = o->error;
@@ -145,8 +181,15 @@ void ViewerApp::takeOutcomes() {
             }
             reference_ = std::move(s);
         }
-        sceneInputsChanged_ = true;
+        taken = true;
     }
+    if (taken) sceneInputsChanged_ = true;
+}
+
+// What needs A's and B's pixels on the CPU: the error against the reference, the debug
+// overlays, the inspector; and every image when the renderers have a device of their own.
+bool ViewerApp::wantImages() const {
+    return !shared_ || state_.reference || state_.mode == DisplayMode::Overlay || inspecting_;
 }
 
 void ViewerApp::submitJobs() {
@@ -157,9 +200,14 @@ void ViewerApp::submitJobs() {
             std::find(pipelines.begin(), pipelines.end(), p) == pipelines.end())
             pipelines.push_back(p);
     const std::string key = renderKey(state_, debug);
-    if (key != submittedKey_ || pipelines != submittedPipelines_) {
+    const bool images = wantImages();
+    // The same view again when its pixels are now wanted on the CPU (the renderers follow no
+    // view change: a frame and the readback).
+    if (key != submittedKey_ || pipelines != submittedPipelines_ ||
+        (images && !submittedImages_)) {
         RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames, options_.calibration,
-                      options_.passStatistics};
+                      options_.passStatistics, images};
+        submittedImages_ = images;
         // Debug images of a pipeline only when an overlay is shown: they cost readbacks.
         worker_->submit(std::move(job));
         submittedKey_ = key;
@@ -177,13 +225,31 @@ void ViewerApp::submitJobs() {
     referenceRequested_ = false;
 }
 
+// A side of the GPU composite: the display copy where the renderer shares the UI's device,
+// else its image on the CPU (uploaded once per serial).
+namespace {
+CompositeSide sideOf(const Shown* s) {
+    if (!s || !s->run) return {};
+    if (s->display) return {&s->display->image, nullptr, s->serial};
+    if (s->hasImages()) return {nullptr, &s->run->hdr, s->serial};
+    return {};
+}
+} // namespace
+
+Composite ViewerApp::composeOnGpu(const CompositeInput& in, const Shown* a, const Shown* b,
+                                  uint32_t w, uint32_t h) {
+    Composite c = gpuComposite_->compose(in, sideOf(a), sideOf(b), w, h, targetBgra_);
+    c.gpuBytes = gpuComposite_->bytes().buffer;
+    return c;
+}
+
 void ViewerApp::recompose() {
     const Shown* a = shownA();
     const Shown* b = shownB();
     const RunResult* runA = a && a->run ? a->run.get() : nullptr;
-    const RunResult* runB = b && b->run ? b->run.get() : nullptr;
     if (runA && a->serial != autoEvFor_) { // once per image, not per UI frame
-        autoEv_ = autoExposureEv(runA->hdr);
+        autoEv_ = a->hasImages() ? autoExposureEv(runA->hdr)
+                                 : gpuComposite_->autoExposureEv(sideOf(a));
         autoEvFor_ = a->serial;
     }
     const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
@@ -197,8 +263,9 @@ void ViewerApp::recompose() {
     std::string key =
         serialKey(a) + serialKey(b) + (overlay ? state_.overlay : std::string("-")) + buf;
     if (key == composedFor_) return;
-    CompositeInput in{runA ? &runA->hdr : nullptr,
-                      runB ? &runB->hdr : nullptr,
+    const RunResult* runB = b && b->run ? b->run.get() : nullptr;
+    CompositeInput in{runA && a->hasImages() ? &runA->hdr : nullptr,
+                      runB && b->hasImages() ? &runB->hdr : nullptr,
                       overlay,
                       state_.mode,
                       state_.split,
@@ -206,8 +273,12 @@ void ViewerApp::recompose() {
                       ev};
     // The images' own size: a render of the previous resolution stays shown until the new one
     // lands.
-    uint32_t w = runA ? runA->hdr.width : state_.width, h = runA ? runA->hdr.height : state_.height;
-    composite_ = compose(in, w, h);
+    const CompositeSide sideA = sideOf(a);
+    uint32_t w = sideA.present() ? sideA.width() : state_.width;
+    uint32_t h = sideA.present() ? sideA.height() : state_.height;
+    // The debug overlays are images read back with the render: composed on the CPU.
+    composite_ = state_.mode == DisplayMode::Overlay ? compose(in, w, h)
+                                                     : composeOnGpu(in, a, b, w, h);
     composedFor_ = key;
     sceneDirty_ = true;
 }
@@ -220,8 +291,8 @@ bool ViewerApp::takeSceneDirty() {
 
 void ViewerApp::measureAgainstReference() {
     const Shown* a = shownA();
-    const bool valid =
-        a && a->run && !referenceStale() && reference_->run && a->key == submittedKey_;
+    const bool valid = a && a->hasImages() && !referenceStale() && reference_->run &&
+                       a->key == submittedKey_;
     const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
     // Measured once per pair of images (and exposure), not per UI frame.
     char evText[32];
@@ -249,6 +320,8 @@ void ViewerApp::handleSceneMouse() {
     const ImVec2 m = io.MousePos;
     const bool inside = m.x >= 0 && m.y >= 0 && m.x < w && m.y < h && !io.WantCaptureMouse;
     inspection_.valid = false;
+    // Resting on the scene (no drag): the inspector wants the pixels, read back on request.
+    inspecting_ = inside && m.y < float(state_.height) && !io.MouseDown[0] && !io.MouseDown[1];
     if (inside && m.y < float(state_.height)) {
         inspection_.valid = true;
         inspection_.x = uint32_t(m.x);
@@ -294,7 +367,7 @@ void ViewerApp::inspectLights() {
     inspectedFor_ = key;
     inspection_.surface = false;
     inspection_.lights.clear();
-    if (!a || !a->run || !a->lights) return;
+    if (!a || !a->hasImages() || !a->lights) return;
     std::optional<glm::dvec3> p = surfaceAt(a->camera, a->run->depth, inspection_.x, inspection_.y);
     if (!p) return;
     inspection_.surface = true;

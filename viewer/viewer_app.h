@@ -16,6 +16,7 @@
 #include "core/image/metrics.h"
 #include "viewer/composite.h"
 #include "viewer/exporter.h"
+#include "viewer/gpu_composite.h"
 #include "viewer/path_player.h"
 #include "viewer/render_worker.h"
 #include "viewer/view_state.h"
@@ -36,6 +37,10 @@ struct ViewerOptions {
     // not loaded: neither was given. --path-frames: the views of a glTF path the panel loads.
     PathPlayer path;
     uint32_t pathFrames = 120;
+    // --share-device: the renderers on the UI's device, their images composed where they are
+    // (gpu_composite.h). "auto": where the device has a second queue for them (a GPU; lavapipe
+    // has one queue, which the UI's frames would wait behind a render on); "on", "off".
+    std::string shareDevice = "auto";
 };
 
 // A finished render of one pipeline, as the UI keeps it.
@@ -50,6 +55,10 @@ struct Shown {
     Camera camera;
     bool planned = false; // the renderer was planned for it (else it followed a camera move)
     double updateMs = 0;  // CPU: following the camera move (RendererSession), when it moved
+    // Shared device: the image where the UI composes it from; the run's hdr and depth are
+    // then empty until read back (hasImages).
+    std::shared_ptr<const DisplayImage> display;
+    bool hasImages() const { return run && run->hdr.width > 0; }
 };
 
 // The median GPU time of its frame (0: none).
@@ -82,7 +91,7 @@ struct Inspection {
 
 class ViewerApp {
   public:
-    ViewerApp(const GpuContext& uiContext, ViewerOptions options);
+    ViewerApp(GpuContext& uiContext, ViewerOptions options);
     ~ViewerApp();
 
     // One UI frame, between ImGui::NewFrame() and ImGui::Render(): takes finished renders,
@@ -90,6 +99,12 @@ class ViewerApp {
     void frame();
     // The scene area, recomposed when its inputs changed; sceneDirty() until taken.
     const Composite& scene() const { return composite_; }
+    // The UI's target is BGRA (a swapchain): a GPU composite writes that order.
+    void setTargetBgra(bool bgra) { targetBgra_ = bgra; }
+    // The renderers share the UI's device (--share-device), and the images read back so far
+    // (each a hdr and depth of a shared-device render; 0 without one).
+    bool sharesDevice() const { return shared_; }
+    uint64_t imageReadbacks() const { return imageReadbacks_; }
     bool takeSceneDirty();
     uint32_t panelWidth() const { return options_.panelWidth; }
 
@@ -176,7 +191,19 @@ class ViewerApp {
     void pauseForUserMove();
     std::string viewLabel() const;
 
-    const GpuContext& ui_;
+    void takeOutcome(RenderOutcome& o);
+    void takeImages(const RenderOutcome& o);
+    bool wantImages() const;
+    Composite composeOnGpu(const CompositeInput& in, const Shown* a, const Shown* b, uint32_t w,
+                           uint32_t h);
+
+    GpuContext& ui_;
+    bool shared_ = false;
+    bool targetBgra_ = false;
+    std::unique_ptr<GpuComposite> gpuComposite_;
+    bool submittedImages_ = false;
+    bool inspecting_ = false; // the cursor rests on the scene area: the inspector reads pixels
+    uint64_t imageReadbacks_ = 0;
     ViewerOptions options_;
     ViewState state_;
     std::string deviceName_;

@@ -93,6 +93,7 @@ int runInWindow(GLFWwindow* window, GpuContext& ctx, VkSurfaceKHR surface, const
     UiRenderer ui(ctx, format, 3, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
     Swapchain swapchain(ctx, surface, format, ui);
     ViewerApp app(ctx, setup.viewer);
+    app.setTargetBgra(ui.bgra());
     uint32_t w0 = 0, h0 = 0;
     surfaceSize(app, w0, h0);
     glfwSetWindowSize(window, int(w0), int(h0));
@@ -110,6 +111,7 @@ int runWindow(const LoopSetup& setup) {
         return noDisplay("GLFW finds no Vulkan loader");
     }
     ContextOptions co = setup.viewer.context;
+    co.queues = 2; // the renderers' own, where the device has one (--share-device)
     uint32_t n = 0;
     const char** extensions = glfwGetRequiredInstanceExtensions(&n);
     for (uint32_t i = 0; i < n; ++i)

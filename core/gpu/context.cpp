@@ -205,14 +205,22 @@ int findQueueFamily(VkPhysicalDevice physical, uint32_t& timestampBits) {
     return -1;
 }
 
-// One queue of `family`; the features the renderers use where `caps` has them.
+uint32_t familyQueues(VkPhysicalDevice physical, uint32_t family) {
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+    return family < count ? families[family].queueCount : 1;
+}
+
+// `queues` (1 or 2) queues of `family`; the features the renderers use where `caps` has them.
 VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const DeviceCaps& caps,
-                             bool swapchain, VkDevice& device) {
-    float priority = 1.0f;
+                             bool swapchain, uint32_t queues, VkDevice& device) {
+    const float priorities[2] = {1.0f, 1.0f};
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queueInfo.queueFamilyIndex = family;
-    queueInfo.queueCount = 1;
-    queueInfo.pQueuePriorities = &priority;
+    queueInfo.queueCount = std::min(queues, 2u);
+    queueInfo.pQueuePriorities = priorities;
 
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.dynamicRendering = VK_TRUE;
@@ -318,23 +326,62 @@ Result<std::unique_ptr<GpuContext>> GpuContext::create(const ContextOptions& opt
                      "' has no graphics+compute queue with timestamps"};
     ctx->queueFamily = uint32_t(family);
 
+    ctx->queueCount =
+        std::clamp(options.queues, 1u, std::min(2u, familyQueues(ctx->physical, ctx->queueFamily)));
     VkResult r = createLogicalDevice(ctx->physical, ctx->queueFamily, ctx->caps, options.swapchain,
-                                     ctx->device);
+                                     ctx->queueCount, ctx->device);
     if (r != VK_SUCCESS)
         return Error{"cannot create a Vulkan device on '" + ctx->info.name +
                      "': " + vkResultName(r)};
     vkGetDeviceQueue(ctx->device, ctx->queueFamily, 0, &ctx->queue);
-
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = ctx->queueFamily;
-    VK_CHECK(vkCreateCommandPool(ctx->device, &poolInfo, nullptr, &ctx->commandPool));
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(ctx->device, &fenceInfo, nullptr, &ctx->fence_));
+    ctx->createPoolAndFence();
     return ctx;
 }
 
+std::unique_ptr<GpuContext> GpuContext::share(GpuContext& owner, uint32_t queueIndex) {
+    std::unique_ptr<GpuContext> ctx(new GpuContext());
+    ctx->ownsDevice_ = false;
+    ctx->instance = owner.instance;
+    ctx->physical = owner.physical;
+    ctx->device = owner.device;
+    ctx->queueFamily = owner.queueFamily;
+    ctx->queueCount = owner.queueCount;
+    ctx->properties = owner.properties;
+    ctx->memoryProperties = owner.memoryProperties;
+    ctx->caps = owner.caps;
+    ctx->info = owner.info;
+    if (queueIndex < owner.queueCount) {
+        vkGetDeviceQueue(ctx->device, ctx->queueFamily, queueIndex, &ctx->queue);
+        if (ctx->queue == owner.queue) ctx->queueMutex_ = owner.queueMutex_;
+    } else {
+        ctx->queue = owner.queue;
+        ctx->queueMutex_ = owner.queueMutex_;
+    }
+    ctx->createPoolAndFence();
+    return ctx;
+}
+
+void GpuContext::createPoolAndFence() {
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = queueFamily;
+    VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool));
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence_));
+}
+
+void GpuContext::waitIdle() {
+    std::unique_lock<std::mutex> lock = lockQueue();
+    VK_CHECK(vkQueueWaitIdle(queue));
+}
+
 GpuContext::~GpuContext() {
+    if (device && !ownsDevice_) {
+        waitIdle();
+        vkDestroyFence(device, fence_, nullptr);
+        vkDestroyCommandPool(device, commandPool, nullptr);
+        return; // the owner's device, instance and messenger
+    }
     if (device) {
         vkDeviceWaitIdle(device);
         vkDestroyFence(device, fence_, nullptr);
@@ -369,7 +416,10 @@ void GpuContext::submitAndWait(VkCommandBuffer cmd) {
     VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmdInfo;
-    VK_CHECK(vkQueueSubmit2(queue, 1, &submit, fence_));
+    {
+        std::unique_lock<std::mutex> lock = lockQueue();
+        VK_CHECK(vkQueueSubmit2(queue, 1, &submit, fence_));
+    }
     VK_CHECK(vkWaitForFences(device, 1, &fence_, VK_TRUE, UINT64_MAX));
     VK_CHECK(vkResetFences(device, 1, &fence_));
 }

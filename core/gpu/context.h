@@ -35,6 +35,9 @@ struct ContextOptions {
     // on the device. Empty/false: a headless context, as every other command uses.
     std::vector<std::string> instanceExtensions;
     bool swapchain = false;
+    // Queues to create in the chosen family, as many as it has up to this (the viewer asks for
+    // 2: its UI and its renderers, each submitting on its own queue of one device; share()).
+    uint32_t queues = 1;
 };
 
 struct DeviceCaps {
@@ -75,6 +78,11 @@ class GpuContext {
   public:
     static Result<std::unique_ptr<GpuContext>> create(const ContextOptions& options);
     static Result<std::vector<DeviceInfo>> listDevices();
+    // A second context on `owner`'s device (the viewer's renderers beside its UI): the same
+    // instance, device, caps and info, its own command pool, fence and ledger, and the owner's
+    // queue `queueIndex` when the owner created that many, else the owner's queue shared under
+    // one lock. The owner must outlive it; its validation messages reach the owner.
+    static std::unique_ptr<GpuContext> share(GpuContext& owner, uint32_t queueIndex);
     ~GpuContext();
     GpuContext(const GpuContext&) = delete;
     GpuContext& operator=(const GpuContext&) = delete;
@@ -97,17 +105,29 @@ class GpuContext {
     void submitAndWait(VkCommandBuffer cmd);
     VkCommandBuffer allocateCommandBuffer();
     void freeCommandBuffer(VkCommandBuffer cmd);
+    // Holds this context's queue for a submission or present of one's own (vkQueueSubmit and
+    // vkQueuePresentKHR need the queue externally synchronized: a shared queue's other context
+    // may submit from its thread).
+    std::unique_lock<std::mutex> lockQueue() const { return std::unique_lock<std::mutex>(*queueMutex_); }
+    // Waits for this context's queue (a shared device: not the device, whose other queue
+    // another thread submits to; vkDeviceWaitIdle would race that thread's submissions).
+    void waitIdle();
+    uint32_t queueCount = 1;      // queues the device was created with in queueFamily
+    bool sharesDevice() const { return !ownsDevice_; }
 
     // Validation messages (warnings and errors) seen since creation; tests assert none.
     std::vector<std::string> validationMessages() const;
 
   private:
     GpuContext() = default;
+    void createPoolAndFence();
     friend VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                   VkDebugUtilsMessageTypeFlagsEXT,
                                   const VkDebugUtilsMessengerCallbackDataEXT*, void*);
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
+    bool ownsDevice_ = true;
+    std::shared_ptr<std::mutex> queueMutex_ = std::make_shared<std::mutex>();
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;
 };

@@ -197,6 +197,10 @@ ImageRGBA heatMap(const ImageRGBA& signedDiff, float scaleMax, uint32_t legendHe
     return out;
 }
 
+std::vector<std::array<float, 3>> heatRamp() {
+    return std::vector<std::array<float, 3>>(kInferno.begin(), kInferno.end());
+}
+
 float differencePercentile99(const ImageRGBA& signedDiff) {
     std::vector<float> values;
     values.reserve(signedDiff.pixelCount());

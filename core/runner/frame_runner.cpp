@@ -125,8 +125,10 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     // A path's timing pass: nothing between one view's frames and the next's but the update
     // (no images, no counters read back; the session adds its own).
     if (!options.readback) return result;
-    result.hdr = readbackColor(ctx, graph.image(planned.hdr));
-    result.depth = readbackDepth(ctx, graph.image(planned.depth));
+    if (options.images) {
+        result.hdr = readbackColor(ctx, graph.image(planned.hdr));
+        result.depth = readbackDepth(ctx, graph.image(planned.depth));
+    }
     planned.renderer->collectStats(graph);
     if (settings.debug) result.debugImages = planned.renderer->debugImages(graph);
     result.stats = planned.renderer->stats();

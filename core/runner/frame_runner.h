@@ -32,6 +32,9 @@ struct RunOptions {
     // false: timings and counters only, no images (a camera path's timing pass: nothing on the
     // CPU between one view's frames and the next's); the work counts and placement need them.
     bool readback = true;
+    // With readback: false reads everything but the hdr and depth images (the viewer shows its
+    // renderers' images where they are: RendererSession::readImages reads them later if asked).
+    bool images = true;
     // The device's energy counter (core/runner/device_energy.h): read around the timed frames
     // (RunResult::energy). Null: not measured (the result's reason says so).
     std::shared_ptr<EnergySource> energy;

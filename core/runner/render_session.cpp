@@ -6,6 +6,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pass_statistics.h"
 #include "core/gpu/profiler.h"
+#include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/runner/frame_steps.h"
@@ -135,6 +136,15 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
         result.stats.counters.push_back({"view_replans", double(replans_)});
     }
     return result;
+}
+
+const Image& RendererSession::hdrImage() const {
+    return planned_.graph->image(planned_.hdr);
+}
+
+void RendererSession::readImages(RunResult& result) const {
+    result.hdr = readbackColor(ctx_, planned_.graph->image(planned_.hdr));
+    result.depth = readbackDepth(ctx_, planned_.graph->image(planned_.depth));
 }
 
 } // namespace tp

@@ -35,6 +35,10 @@ class RendererSession {
     Result<RunResult> render(const RunOptions& options);
 
     const std::string& name() const;
+    // The last render's hdr image, on the device (TRANSFER_SRC_OPTIMAL until the next render),
+    // and its hdr and depth read back into `result` (a render with RunOptions::images false).
+    const Image& hdrImage() const;
+    void readImages(RunResult& result) const;
     uint32_t updates() const { return updates_; }
     uint32_t replans() const { return replans_; }
 

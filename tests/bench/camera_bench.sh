@@ -11,10 +11,10 @@ here=$(dirname "$0")
 for which in base new; do
     bin=${!which}
     [ -z "$bin" ] && continue
-    "$bin" view "$scene" --res "$res" --headless --script "$here/view_bench.txt" \
+    "$bin" view "$scene" --res "$res" --headless --script "$here/view_bench.txt" ${VIEW_ARGS:-} \
         --out "$out/view_$which" >"$out/view_$which.log" 2>&1
     echo "== view_bench $which ($bin): exit $?"
-    for p in forwardplus deferred multipass_forward; do
+    for p in forwardplus deferred visbuffer multipass_forward; do
         python3 - "$out/view_$which/$p.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))

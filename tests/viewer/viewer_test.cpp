@@ -164,6 +164,42 @@ TEST(Viewer, FlipShowsBWhereAWas) {
     EXPECT_GT(sceneDiffers(a, flipped), 0u) << "the two pipelines' images differ somewhere";
 }
 
+// --share-device on renders on the UI's device and composes the images where they are
+// (lavapipe: its one queue, shared); off renders on a device of its own and uploads the
+// read-back images. The same GPU composite of the same floats: the same bytes, split and
+// difference, and with sharing no image is read back until the inspector asks for pixels.
+TEST(Viewer, ASharedDeviceShowsTheSameImagesWithoutReadingThemBack) {
+    const std::string script = "exposure 0\nwait\nscreenshot split.png\nstats split.json\n"
+                               "mode difference\nwait\nscreenshot diff.png\nstats diff.json\n"
+                               "mode split\nhover 100 50\nwait\nstats hover.json\n";
+    auto shared = [](const char* mode) {
+        return [mode](LoopSetup& s) { s.viewer.shareDevice = mode; };
+    };
+    ViewRun on = runScript("share_on", script, false, shared("on"));
+    ViewRun off = runScript("share_off", script, false, shared("off"));
+    ASSERT_EQ(on.code, 0);
+    ASSERT_EQ(off.code, 0);
+    EXPECT_TRUE(on.stats("split.json")["shares_device"].get<bool>());
+    EXPECT_FALSE(off.stats("split.json")["shares_device"].get<bool>());
+    EXPECT_EQ(on.stats("diff.json")["image_readbacks"], 0) << "shown without a readback";
+    EXPECT_EQ(on.stats("diff.json")["difference_scale"], off.stats("diff.json")["difference_scale"]);
+    for (const char* shot : {"split.png", "diff.png"}) {
+        ImageRGBA x = on.shot(shot), y = off.shot(shot);
+        ASSERT_EQ(x.width, y.width);
+        uint32_t differing = 0;
+        for (uint32_t row = 0; row < kH; ++row)
+            for (uint32_t col = 0; col < kW; ++col)
+                for (int c = 0; c < 3; ++c)
+                    differing += x.at(col, row)[c] != y.at(col, row)[c];
+        EXPECT_EQ(differing, 0u) << shot;
+    }
+    // The inspector reads pixels: they come back for it, the same values as without sharing.
+    nlohmann::json hover = on.stats("hover.json");
+    EXPECT_GE(hover["image_readbacks"].get<int>(), 1);
+    ASSERT_TRUE(hover.contains("inspection"));
+    EXPECT_EQ(hover["inspection"]["a"], off.stats("hover.json")["inspection"]["a"]);
+}
+
 TEST(Viewer, InspectorReadsThePixelUnderTheCursor) {
     ViewRun r = runScript("hover", "pipeline b " + pipeline(0) +
                                        "\nwait\nhover 100 50\nstats hover.json\n"
