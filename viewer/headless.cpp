@@ -90,8 +90,10 @@ int runHeadless(const LoopSetup& setup) {
                 if (runner.wantsScreenshot()) shot = readbackColor(ctx, target.image);
                 double frameMs = msSince(start);
                 runner.afterFrame(app, shot ? &*shot : nullptr, frameMs);
-                // While the workers render, leave the CPU to them (lavapipe renders on the CPU).
-                if (!app.settled()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+                // While the workers render on the CPU (lavapipe), leave it to them; a GPU's UI
+                // frames go on at their own rate, as the window's do (window_loop.cpp).
+                if (ctx.isCpuDevice() && !app.settled())
+                    std::this_thread::sleep_for(std::chrono::milliseconds(10));
             }
         } catch (const ScriptError& e) {
             scriptError = e.what();

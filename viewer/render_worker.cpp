@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "core/cli/scene_input.h"
+#include "core/energy/energy_window.h"
 #include "core/gpu/barriers.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/runner/device_energy.h"
@@ -78,15 +79,15 @@ void RenderWorker::loop() {
             running_ = true;
         }
         RenderOutcome outcome = runJob(job);
-        std::optional<RenderOutcome> images;
-        const bool second = job.images && share_ && outcome.error.empty();
-        if (second) {
-            publish(outcome); // shown now; the images follow
-            images = readImages(job, outcome);
+        std::optional<RenderOutcome> collected;
+        const bool shown = share_ && outcome.error.empty();
+        if (shown) {
+            publish(outcome); // on the screen now; what the CPU reads of it follows
+            collected = collectLater(job, outcome);
         }
         std::lock_guard<std::mutex> lock(mutex_);
-        if (!second) done_.push_back(std::move(outcome));
-        if (images) done_.push_back(std::move(*images));
+        if (!shown) done_.push_back(std::move(outcome));
+        if (collected) done_.push_back(std::move(*collected));
         running_ = false;
     }
     // Everything on this device is released here, on its own thread, before its messages are read.
@@ -186,10 +187,16 @@ PipelineImage RenderWorker::renderPipeline(const std::string& name, const Render
             image.planned = true;
         }
         const uint32_t replans = p.session->replans();
-        Result<RunResult> run = p.session->render(options);
+        const auto rendering = std::chrono::steady_clock::now();
+        Result<RunResult> run = p.session->render(withEnergy(name, job, options));
+        image.framesMs = msSince(rendering);
+        image.steps = p.session->lastSteps();
         if (run) {
             image.run = std::move(*run);
+            lastFrameMs_[name] = frameMedianMs(image.run);
+            const auto copying = std::chrono::steady_clock::now();
             if (share_) image.display = displayCopy(p.session->hdrImage());
+            image.displayMs = msSince(copying);
             image.updateMs = image.run.stats.counter("view_update_ms", 0.0);
         } else {
             image.error = run.error();
@@ -203,6 +210,36 @@ PipelineImage RenderWorker::renderPipeline(const std::string& name, const Render
     if (!image.error.empty()) sessions_.erase(name);
     image.buildMs = msSince(start);
     return image;
+}
+
+// The energy counter is read only where the frames can fill its window: on an NVIDIA GPU a read
+// takes about 3 ms, two a render, for a window a 2 ms frame never fills (the result said so
+// anyway). The last frame of the pipeline tells; the first render reads.
+RunOptions RenderWorker::withEnergy(const std::string& pipeline, const RenderJob& job,
+                                    RunOptions options) const {
+    auto last = lastFrameMs_.find(pipeline);
+    if (!options.energy || !options.energy->meter || last == lastFrameMs_.end()) return options;
+    const double period = options.energy->meter->updatePeriodMs();
+    const double window = last->second * double(job.timedFrames);
+    if (window >= kPeriodsPerWindow * period) return options;
+    auto skipped = std::make_shared<EnergySource>();
+    skipped->why = shortWindowReason(window, kPeriodsPerWindow * period, period) +
+                   ": not read in the viewer";
+    options.energy = std::move(skipped);
+    return options;
+}
+
+RunOptions RenderWorker::runOptionsFor(const RenderJob& job) const {
+    RunOptions runOptions;
+    runOptions.warmupFrames = 0;
+    runOptions.timedFrames = job.timedFrames;
+    runOptions.energy = energy_;
+    runOptions.extendEnergyWindow = false; // a render is not held up to lengthen the window
+    runOptions.images = job.images;
+    if (job.calibration && job.calibration->device == ctx_->info.name &&
+        job.calibration->driver == ctx_->info.driver) // shares the file's lifetime
+        runOptions.ceilings = std::shared_ptr<const CeilingRates>(job.calibration, &job.calibration->rates);
+    return runOptions;
 }
 
 RenderOutcome RenderWorker::runJob(const RenderJob& job) {
@@ -237,15 +274,8 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     settings.knobs = job.state.knobs;
     settings.manyViews = true; // the next job is likely another view
     settings.passStatistics = job.passStatistics;
-    RunOptions runOptions;
-    runOptions.warmupFrames = 0;
-    runOptions.timedFrames = job.timedFrames;
-    runOptions.energy = energy_;
-    runOptions.extendEnergyWindow = false; // a render is not held up to lengthen the window
-    runOptions.images = !share_;           // shared: shown from the display copy, read after
-    if (job.calibration && job.calibration->device == ctx_->info.name &&
-        job.calibration->driver == ctx_->info.driver) // shares the file's lifetime
-        runOptions.ceilings = std::shared_ptr<const CeilingRates>(job.calibration, &job.calibration->rates);
+    RunOptions runOptions = runOptionsFor(job);
+    runOptions.readback = !share_; // shared: the frames only; collectLater reads the rest
     for (auto it = sessions_.begin(); it != sessions_.end();) // only this job's pipelines stay
         it = std::find(job.pipelines.begin(), job.pipelines.end(), it->first) == job.pipelines.end()
                  ? sessions_.erase(it)
@@ -260,27 +290,33 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     return out;
 }
 
-// The hdr and depth of a shown outcome's pipelines, read back (the sessions still hold that
-// view: nothing ran between). Skipped when a newer job is already waiting: its images are the
-// ones that will be wanted.
-std::optional<RenderOutcome> RenderWorker::readImages(const RenderJob& job,
-                                                      const RenderOutcome& shown) {
+// The rest of a shown view's runs (RendererSession::collect: counters, memory, work, the images
+// when the job asked), read once the UI has had kStatsGraceMs to ask for another view: a
+// camera in motion gets its views shown without them (the panel keeps the last ones read).
+std::optional<RenderOutcome> RenderWorker::collectLater(const RenderJob& job,
+                                                        const RenderOutcome& shown) {
     {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (pending_) return std::nullopt;
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (wake_.wait_for(lock, std::chrono::milliseconds(kStatsGraceMs),
+                           [this] { return quit_ || pending_; }))
+            return std::nullopt;
     }
     RenderOutcome out;
     out.id = job.id;
     out.key = job.key;
-    out.imagesOnly = true;
+    out.collected = true;
     const auto start = std::chrono::steady_clock::now();
+    const RunOptions options = runOptionsFor(job);
     for (const PipelineImage& image : shown.images) {
-        PipelineImage read;
-        read.pipeline = image.pipeline;
         auto it = sessions_.find(image.pipeline);
         if (!image.error.empty() || it == sessions_.end() || !it->second.session) continue;
+        PipelineImage read = image; // the display, timings and the frames' counters
         try {
-            it->second.session->readImages(read.run);
+            RunResult full = it->second.session->collect(options);
+            full.energy = image.run.energy;
+            for (const auto& counter : image.run.stats.counters) // the session's view counters
+                full.stats.counters.push_back(counter);
+            read.run = std::move(full);
         } catch (const std::exception& e) {
             read.error = e.what();
         }

@@ -38,9 +38,9 @@ struct RenderJob {
     std::shared_ptr<const CeilingFile> calibration; // used when it is this device's
     bool passStatistics = true; // --pass-statistics (RenderSettings::passStatistics)
     // The worker shares the UI's device (RenderWorker's `share`): each image is copied into a
-    // display image the UI composes from, and the outcome is given as soon as it is there.
-    // `images`: the hdr and depth are read back too (the reference's error, the inspector,
-    // overlays), after the display outcome, in a second one; without a shared device always.
+    // display image the UI composes from, and the outcome is given as soon as it is there;
+    // the counters follow in a second one. `images`: the hdr and depth are read back in it
+    // too (the reference's error, the inspector, overlays); without a shared device always.
     bool images = true;
 };
 
@@ -58,6 +58,9 @@ struct PipelineImage {
     double buildMs = 0;    // wall time of the whole run: plan (if any), frames, readback
     bool planned = false;  // this job planned the renderer (a new session or a replan)
     std::shared_ptr<const DisplayImage> display; // the shared device's copy (else null)
+    double framesMs = 0;  // wall time of the session's render (update, frames, what it read)
+    RendererSession::Steps steps; // how that split
+    double displayMs = 0; // wall time of the display copy
     double updateMs = 0;   // CPU: following the new view (updateView + recording), if it moved
 };
 
@@ -76,10 +79,14 @@ struct RenderOutcome {
     std::shared_ptr<const std::vector<Light>> lights; // the job's lights (the inspector's)
     Camera camera;                                    // the camera it rendered with
     size_t triangleCount = 0;
-    // The second outcome of a job on a shared device that asked for images: `images` carry
-    // only their run's hdr and depth, for the first outcome's pipelines.
-    bool imagesOnly = false;
+    // The second outcome of a job on a shared device (RenderWorker::collectLater): the same
+    // images with their whole runs (the first carries the timings and the frames' counters).
+    bool collected = false;
 };
+
+// How long a shared-device worker waits, after showing a view, for the next one before it reads
+// the view's counters (and images) back: a camera in motion is not slowed by them.
+constexpr int kStatsGraceMs = 20;
 
 class RenderWorker {
   public:
@@ -102,7 +109,9 @@ class RenderWorker {
     void loop();
     RenderOutcome runJob(const RenderJob& job);
     void publish(RenderOutcome outcome);
-    std::optional<RenderOutcome> readImages(const RenderJob& job, const RenderOutcome& shown);
+    RunOptions runOptionsFor(const RenderJob& job) const;
+    RunOptions withEnergy(const std::string& pipeline, const RenderJob& job, RunOptions options) const;
+    std::optional<RenderOutcome> collectLater(const RenderJob& job, const RenderOutcome& shown);
     std::shared_ptr<const DisplayImage> displayCopy(const Image& hdr);
     void prepareScene(const RenderJob& job, RenderOutcome& out);
     void moveLights(const ViewState& s);
@@ -117,6 +126,7 @@ class RenderWorker {
     std::deque<RenderOutcome> done_;
     GpuContext* share_ = nullptr;
     std::vector<std::shared_ptr<DisplayImage>> displays_; // the worker's, reused when free
+    std::map<std::string, double> lastFrameMs_;           // by pipeline: its last frame's GPU time
     bool running_ = false, quit_ = false;
     std::vector<std::string> messages_;
     std::thread thread_;

@@ -132,9 +132,17 @@ void ScriptRunner::writeStats(ViewerApp& app, const std::string& file) const {
 bool ScriptRunner::benchStep(ViewerApp& app) {
     if (benchRecordDue_) {
         benchRenderMs_.push_back(app.lastRenderMs());
+        benchLatencyMs_.push_back(app.lastViewLatencyMs());
         benchGpuMs_.push_back(frameGpuMs(app.shownA()));
         if (const Shown* a = app.shownA()) {
             benchUpdateMs_.push_back(a->updateMs);
+            benchFramesMs_.push_back(a->framesMs);
+            benchDisplayMs_.push_back(a->displayMs);
+            benchSteps_["follow"].push_back(a->steps.followMs);
+            benchSteps_["frames"].push_back(a->steps.framesMs);
+            benchSteps_["energy_reads"].push_back(a->steps.energyMs);
+            benchSteps_["overflow_check"].push_back(a->steps.overflowMs);
+            benchSteps_["collect"].push_back(a->steps.collectMs);
             benchPlanned_ += a->planned ? 1 : 0;
         }
         benchRecordDue_ = false;
@@ -168,6 +176,12 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
     j["gpu_frame_ms"] = benchGpuMs_;
     j["gpu_frame_ms_median"] = median(benchGpuMs_);
     j["overhead_ms_median"] = median(benchRenderMs_) - median(benchGpuMs_);
+    j["session_render_ms_median"] = median(benchFramesMs_); // update, frames, what it read
+    j["display_copy_ms_median"] = median(benchDisplayMs_);
+    for (const auto& [step, ms] : benchSteps_) // RendererSession::Steps
+        j["session_steps_ms_median"][step] = median(ms);
+    j["view_latency_ms"] = benchLatencyMs_;
+    j["view_latency_ms_median"] = median(benchLatencyMs_);
     j["ui_frames"] = benchUiMs_.size();
     j["ui_frame_ms_median"] = median(benchUiMs_);
     j["ui_frames_per_second"] = median(benchUiMs_) > 0 ? 1000.0 / median(benchUiMs_) : 0.0;

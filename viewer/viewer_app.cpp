@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "core/image/tonemap.h"
+#include "core/util/clock.h"
 #include "core/reference/reference_renderer.h"
 #include "viewer/camera_control.h"
 #include "viewer/pixel_lights.h"
@@ -115,6 +116,10 @@ bool ViewerApp::settled() const {
 }
 
 void ViewerApp::takeOutcome(RenderOutcome& o) {
+    if (auto it = submittedAt_.find(o.id); it != submittedAt_.end()) {
+        lastLatencyMs_ = msSince(it->second);
+        submittedAt_.erase(submittedAt_.begin(), std::next(it)); // and older, replaced ones
+    }
     error_ = o.error;
     lastRebuilt_ = o.rebuilt;
     lastRenderMs_ = o.totalMs;
@@ -131,6 +136,9 @@ void ViewerApp::takeOutcome(RenderOutcome& o) {
         Shown s{image.pipeline, o.key,        image.error, nullptr,
                 image.buildMs,  nextSerial_++, o.lights,   o.camera,
                 image.planned,  image.updateMs, image.display};
+        s.framesMs = image.framesMs;
+        s.displayMs = image.displayMs;
+        s.steps = image.steps;
         if (image.error.empty()) {
             history_[image.pipeline].add(image.run.timings, image.buildMs);
             s.run = std::make_shared<const RunResult>(std::move(image.run));
@@ -141,30 +149,27 @@ void ViewerApp::takeOutcome(RenderOutcome& o) {
     }
 }
 
-// The hdr and depth of images already shown (a shared device's second outcome): the same run
-// with them, as a new image for what reads them (the error, the inspector).
-void ViewerApp::takeImages(const RenderOutcome& o) {
-    for (const PipelineImage& image : o.images) {
+// The whole runs of images already shown (a shared device's second outcome): counters,
+// memory, and the hdr and depth when asked, as a new image for what reads them.
+void ViewerApp::takeCollected(RenderOutcome& o) {
+    for (PipelineImage& image : o.images) {
         auto it = shown_.find(image.pipeline);
         if (it == shown_.end() || it->second.key != o.key || !it->second.run) continue;
         if (!image.error.empty()) {
             error_ = image.error;
             continue;
         }
-        auto run = std::make_shared<RunResult>(*it->second.run);
-        run->hdr = image.run.hdr;
-        run->depth = image.run.depth;
-        it->second.run = std::move(run);
+        imageReadbacks_ += image.run.hdr.width > 0 ? 1 : 0;
+        it->second.run = std::make_shared<const RunResult>(std::move(image.run));
         it->second.serial = nextSerial_++;
-        ++imageReadbacks_;
     }
 }
 
 void ViewerApp::takeOutcomes() {
     bool taken = false;
     while (std::optional<RenderOutcome> o = worker_->take()) {
-        if (o->imagesOnly)
-            takeImages(*o);
+        if (o->collected)
+            takeCollected(*o);
         else
             takeOutcome(*o);
         taken = true;
@@ -208,6 +213,7 @@ void ViewerApp::submitJobs() {
         RenderJob job{nextJob_++, state_, pipelines, debug, key, options_.timedFrames, options_.calibration,
                       options_.passStatistics, images};
         submittedImages_ = images;
+        submittedAt_[job.id] = std::chrono::steady_clock::now();
         // Debug images of a pipeline only when an overlay is shown: they cost readbacks.
         worker_->submit(std::move(job));
         submittedKey_ = key;

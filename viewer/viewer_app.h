@@ -4,6 +4,7 @@
 // must rebuild, the composed scene area, and the ImGui panels drawn from the registry and
 // the knob schema. The window and the headless script runner both drive this one class, so
 // the tests exercise the code a user sees.
+#include <chrono>
 #include <deque>
 #include <map>
 #include <memory>
@@ -58,6 +59,8 @@ struct Shown {
     // Shared device: the image where the UI composes it from; the run's hdr and depth are
     // then empty until read back (hasImages).
     std::shared_ptr<const DisplayImage> display;
+    double framesMs = 0, displayMs = 0; // PipelineImage's
+    RendererSession::Steps steps;
     bool hasImages() const { return run && run->hdr.width > 0; }
 };
 
@@ -163,6 +166,9 @@ class ViewerApp {
     const Shown* shownA() const;
     const Shown* shownB() const;
     double lastRenderMs() const { return lastRenderMs_; }
+    // From the UI's submission of the view's job to the UI taking its image (what the user waits
+    // for: the worker's time, a wait behind its previous job, the hand-over).
+    double lastViewLatencyMs() const { return lastLatencyMs_; }
     const std::optional<ErrorReport>& errorVsReference() const { return errorVsReference_; }
     // The last error measured against a reference, of this view (fresh) or an earlier one.
     const std::optional<KeptError>& keptError() const { return keptError_; }
@@ -192,7 +198,7 @@ class ViewerApp {
     std::string viewLabel() const;
 
     void takeOutcome(RenderOutcome& o);
-    void takeImages(const RenderOutcome& o);
+    void takeCollected(RenderOutcome& o);
     bool wantImages() const;
     Composite composeOnGpu(const CompositeInput& in, const Shown* a, const Shown* b, uint32_t w,
                            uint32_t h);
@@ -220,7 +226,8 @@ class ViewerApp {
     PathPlayer player_;
     std::string measuredFor_;
     std::string lastRebuilt_;
-    double lastRenderMs_ = 0, lastSceneMs_ = 0;
+    double lastRenderMs_ = 0, lastSceneMs_ = 0, lastLatencyMs_ = 0;
+    std::map<uint64_t, std::chrono::steady_clock::time_point> submittedAt_; // by job id
     std::vector<LedgerEntry> sceneMemory_;
     size_t lightCount_ = 0, triangleCount_ = 0;
     Camera sceneCamera_;

@@ -14,7 +14,9 @@ double EnergyWindow::minWindowMs() const {
 
 void EnergyWindow::begin() {
     if (!meter_) return;
+    const auto reading = std::chrono::steady_clock::now();
     Result<double> j = meter_->joules();
+    readMs_ = msSince(reading);
     if (!j) {
         why_ = j.error();
         return;
@@ -49,7 +51,9 @@ FrameEnergy EnergyWindow::end(uint32_t frames, uint32_t extended) {
     e.source = meter_->source();
     e.device = meter_->device();
     e.minWindowMs = minWindowMs();
+    const auto reading = std::chrono::steady_clock::now();
     Result<double> j = meter_->joules();
+    e.readMs = readMs_ + msSince(reading);
     if (!j) {
         e.reason = j.error();
         return e;

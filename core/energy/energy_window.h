@@ -37,6 +37,7 @@ class EnergyWindow {
     std::string why_;
     bool started_ = false;
     double startJoules_ = 0;
+    double readMs_ = 0; // the first read's wall time
     std::chrono::steady_clock::time_point start_;
 };
 

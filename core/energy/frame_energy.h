@@ -15,6 +15,7 @@ struct FrameEnergy {
     uint32_t frames = 0;        // frames in the window: the timed ones and any added (extended)
     uint32_t extendedFrames = 0; // added past the timed frames to reach minWindowMs
     double minWindowMs = 0;     // the window the counter's update period asks for
+    double readMs = 0;          // wall time spent reading the counter (its two reads)
 };
 
 } // namespace tp

@@ -6,7 +6,6 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pass_statistics.h"
 #include "core/gpu/profiler.h"
-#include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/runner/frame_steps.h"
@@ -101,12 +100,16 @@ Status RendererSession::follow(double& updateMs) {
 }
 
 Result<RunResult> RendererSession::render(const RunOptions& options) {
+    auto mark = std::chrono::steady_clock::now();
+    auto lap = [&mark](double& ms) { ms += msSince(mark), mark = std::chrono::steady_clock::now(); };
+    steps_ = {};
     scene_.setView(settings_.width, settings_.height, settings_.msaa);
     planSceneShadows(ctx_, scene_, settings_.shadows);
     double updateMs = -1;
     // A view change, or a plan or recording that failed last time (tried again).
     if (scene_.viewGeneration() != generation_ || !planned_.renderer || !recorded_)
         if (Status s = follow(updateMs); !s) return Error{s.error()};
+    lap(steps_.followMs);
     // Frames until no capacity sized from measured needs overflowed (contract step 7): each
     // overflow plans again with the needs measured, so this ends once they fit. Its time is the
     // view's update time (a replan for this view), its count a replan. No frame: nothing to read.
@@ -116,8 +119,12 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
     for (uint32_t grown = 0;; ++grown) {
         profiler_->discardSamples();
         warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options, energy);
-        if (!framed || grown == kMaxGrowths || !planned_.renderer->overflowed(*planned_.graph))
-            break;
+        lap(steps_.framesMs);
+        steps_.energyMs += energy.readMs;
+        const bool overflowed = framed && grown < kMaxGrowths &&
+                                planned_.renderer->overflowed(*planned_.graph);
+        lap(steps_.overflowMs);
+        if (!overflowed) break;
         const auto start = std::chrono::steady_clock::now();
         for (const auto& [name, need] : planned_.renderer->capacityHints())
             settings_.capacities[name] = std::max(settings_.capacities[name], need);
@@ -127,6 +134,7 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
     }
     RunResult result = detail::collectResult(ctx_, scene_, entry_, settings_, planned_, *profiler_,
                                              statistics_.get(), options);
+    lap(steps_.collectMs);
     result.energy = std::move(energy);
     // more warm-up frames than asked on a GPU: kGpuWarmupMs
     result.stats.counters.push_back({"warmup_frames", double(warmup)});
@@ -142,9 +150,9 @@ const Image& RendererSession::hdrImage() const {
     return planned_.graph->image(planned_.hdr);
 }
 
-void RendererSession::readImages(RunResult& result) const {
-    result.hdr = readbackColor(ctx_, planned_.graph->image(planned_.hdr));
-    result.depth = readbackDepth(ctx_, planned_.graph->image(planned_.depth));
+RunResult RendererSession::collect(const RunOptions& options) {
+    return detail::collectResult(ctx_, scene_, entry_, settings_, planned_, *profiler_,
+                                 statistics_.get(), options);
 }
 
 } // namespace tp

@@ -35,10 +35,24 @@ class RendererSession {
     Result<RunResult> render(const RunOptions& options);
 
     const std::string& name() const;
+    // Where the last render's wall time went (the viewer's benchmark: what a new view costs
+    // beyond its GPU frame).
+    struct Steps {
+        double followMs = 0;   // the view update and the new recording (or a plan)
+        double framesMs = 0;   // submitting the frames and waiting for them, the timestamps, energy
+        double energyMs = 0;   // of which reading the energy counter (FrameEnergy::readMs)
+        double overflowMs = 0; // reading whether a capacity overflowed (and any replan's frames)
+        double collectMs = 0;  // what collectResult read (nothing but timings without readback)
+    };
+    const Steps& lastSteps() const { return steps_; }
     // The last render's hdr image, on the device (TRANSFER_SRC_OPTIMAL until the next render),
     // and its hdr and depth read back into `result` (a render with RunOptions::images false).
     const Image& hdrImage() const;
-    void readImages(RunResult& result) const;
+    // What a render with RunOptions::readback false left out (the counters, memory, work,
+    // placement; the images with options.images), read from its frames now, while nothing
+    // has run since: the viewer shows a view first and reads this after (or not at all when
+    // the next view is already waiting).
+    RunResult collect(const RunOptions& options);
     uint32_t updates() const { return updates_; }
     uint32_t replans() const { return replans_; }
 
@@ -63,6 +77,7 @@ class RendererSession {
     uint32_t lightCount_ = 0;   // planned for: a change needs a new plan
     std::vector<SpecConstant> sceneConstants_; // spot presence and texture count, planned for
     uint32_t updates_ = 0, replans_ = 0;
+    Steps steps_;
 };
 
 } // namespace tp
