@@ -54,7 +54,8 @@ MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, 
 // light_binning fills under --light-bin gpu) in room for `candidateSlots`, the clusters'
 // mask-row offsets - uploaded when planned and again for every view (the same size: the
 // candidates' room is a capacity); under --light-bin gpu only when planned (the frame writes
-// the offsets, the candidates and the mask-row offsets of each view itself). Refuses, in one line, what maxStorageBufferRange cannot hold.
+// the offsets, the candidates and the mask-row offsets of each view itself). Refuses, in one
+// line, what maxStorageBufferRange cannot hold.
 struct ParamsInput {
     la::TileGrid grid;
     const la::LightClasses* classes = nullptr;

@@ -38,7 +38,7 @@ struct ViewBins {
     std::vector<uint32_t> candidates; // CPU binning, binned culling: each tile's run
     uint64_t slots = 0;               // the bound's total (unclamped)
     uint32_t maxBound = 0;            // the longest run
-    MaskLayout masks; // clustered: the slice rows' word offsets (GPU binning: the frame's, after it)
+    MaskLayout masks;                 // clustered: the slice rows' word offsets
 };
 
 struct ViewBinning {

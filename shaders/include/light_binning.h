@@ -26,7 +26,7 @@ namespace tp::gpu {
 #define TP_BIN_BINDING_ROWS 4    // uint[tilesY]: per row of tiles, the sum of its row prefix sums (scans)
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
 #define TP_BIN_BINDING_RECTS 6   // uvec2[local lights]: each light's rectangle (binPackRect), for the fill
-#define TP_BIN_BINDING_WORDS 7   // uint[]: a word layout over the counts, tiles + 1 words from TP_BIN_WORDS_FIRST (bin_scan_words.comp)
+#define TP_BIN_BINDING_WORDS 7   // uint[]: a word layout over the counts (bin_scan_words.comp)
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.

@@ -135,20 +135,20 @@ TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     expectNoValidationMessages(*ctx);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Binning, ForwardPlusViews,
-    ::testing::Values(std::map<std::string, std::string>{{"light-bin", "cpu"}},
-                      std::map<std::string, std::string>{{"light-bin", "gpu"}},
-                      std::map<std::string, std::string>{{"light-assign", "clustered"},
-                                                         {"light-bin", "cpu"}},
-                      std::map<std::string, std::string>{{"light-assign", "clustered"},
-                                                         {"light-bin", "gpu"}}),
-    [](const auto& info) {
-        std::string n;
-        for (const auto& [k, v] : info.param)
-            n += (n.empty() ? "" : "_") + v;
-        return n;
-    });
+INSTANTIATE_TEST_SUITE_P(Binning, ForwardPlusViews,
+                         ::testing::Values(std::map<std::string, std::string>{{"light-bin", "cpu"}},
+                                           std::map<std::string, std::string>{{"light-bin", "gpu"}},
+                                           std::map<std::string, std::string>{
+                                               {"light-assign", "clustered"}, {"light-bin", "cpu"}},
+                                           std::map<std::string, std::string>{
+                                               {"light-assign", "clustered"},
+                                               {"light-bin", "gpu"}}),
+                         [](const auto& info) {
+                             std::string n;
+                             for (const auto& [k, v] : info.param)
+                                 n += (n.empty() ? "" : "_") + v;
+                             return n;
+                         });
 
 // ---- clustered, --light-bin gpu: the mask rows outgrow their room while the runs fit ----
 
@@ -180,8 +180,9 @@ std::vector<Light> floorLights(const Camera& cam, bool packed) {
         lights[i].position = at[i % at.size()];
         lights[i].range = 0.3f;
         lights[i].intensity = 2.0f;
-        lights[i].color = glm::vec3(0.2f + 0.8f * float(i % 3 == 0), 0.2f + 0.8f * float(i % 3 == 1),
-                                    0.2f + 0.8f * float(i % 3 == 2));
+        lights[i].color =
+            glm::vec3(0.2f + 0.8f * float(i % 3 == 0), 0.2f + 0.8f * float(i % 3 == 1),
+                      0.2f + 0.8f * float(i % 3 == 2));
     }
     return lights;
 }
@@ -236,7 +237,8 @@ TEST(ForwardPlusClusteredViews, MaskRowsPastTheRoomArePlannedAgain) {
     {
         SceneGpu gpu(*ctx, scene);
         gpu.setView(kW, kH, 1);
-        Result<PlannedRenderer> p = planRenderer(*ctx, gpu, entry, analyzeScene(scene, 1), settings);
+        Result<PlannedRenderer> p =
+            planRenderer(*ctx, gpu, entry, analyzeScene(scene, 1), settings);
         ASSERT_TRUE(p.ok()) << p.error();
         p->renderer->prepare(*p->graph);
         recordAndSubmit(*ctx, *p->graph);

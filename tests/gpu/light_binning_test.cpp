@@ -18,8 +18,8 @@
 #include "core/lightassign/tile_bound.h"
 #include "core/passes/light_binning.h"
 #include "core/scene/lights.h"
-#include "forwardplus/light_lists.h"
 #include "core/scene/procedural.h"
+#include "forwardplus/light_lists.h"
 #include "gpu_test_util.h"
 #include "include/light_binning.h"
 
@@ -182,10 +182,10 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     const uint32_t wordsFirst = layout.first + 1; // a canary before
     std::vector<uint32_t> wordInit(wordsFirst + tiles + 2, 0);
     wordInit[wordsFirst - 1] = wordInit[wordsFirst + tiles + 1] = kCanary;
-    Buffer wordLayout = createBufferWithData(
-        ctx, wordInit.data(), wordInit.size() * 4,
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-        {"test", "", "words", "a canary, the word layout, a canary"});
+    Buffer wordLayout =
+        createBufferWithData(ctx, wordInit.data(), wordInit.size() * 4,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             {"test", "", "words", "a canary, the word layout, a canary"});
     FrameGraph graph(ctx, "test", w, h);
     gpuBin.plan(graph);
     graph.compile();

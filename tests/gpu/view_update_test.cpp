@@ -66,7 +66,8 @@ std::vector<Config> configs() {
         for (const auto& [knob, value] : kViewKnobs)
             if (reads(e, knob)) out.push_back({e.name, {{knob, value}}});
         for (const auto& set : kViewKnobSets)
-            if (std::all_of(set.begin(), set.end(), [&](const auto& kv) { return reads(e, kv.first); }))
+            if (std::all_of(set.begin(), set.end(),
+                            [&](const auto& kv) { return reads(e, kv.first); }))
                 out.push_back({e.name, set});
     }
     return out;
