@@ -152,12 +152,12 @@ class ForwardPlusRenderer final : public Renderer {
         shading_->prepare(graph, params_.buffer);
     }
 
-    // A new view (the camera or the lights' positions): its bins on the CPU (or, clustered,
-    // the GPU binning's sizing run) laid out in the planned lists, fp_params and the shading's
-    // lights copy uploaded again; the frame's passes (spheres, binning, culling) recompute the
-    // rest. false when the view outgrew the lists' room or the light types changed. Tiled with
-    // the GPU binning, nothing of fp_params follows the view: the frame's light_binning writes
-    // the offsets and the runs, and a view past the room is caught after its frames
+    // A new view (the camera or the lights' positions): its bins on the CPU laid out in the
+    // planned lists, fp_params and the shading's lights copy uploaded again; the frame's passes
+    // (spheres, binning, culling) recompute the rest. false when the view outgrew the lists'
+    // room or the light types changed. With the GPU binning, tiled or clustered, nothing of
+    // fp_params follows the view: the frame's light_binning writes the offsets, the runs and
+    // the mask rows' offsets, and a view past the room is caught after its frames
     // (overflowed): no readback here.
     bool updateView(FrameGraph&) override {
         if (shadows_->stale()) return false; // other shadowed lights or map sizes
@@ -182,9 +182,9 @@ class ForwardPlusRenderer final : public Renderer {
         return true;
     }
 
-    // --light-bin gpu: the view's lists were cut (more slots than the room, or a run longer
-    // than the frame's batches and sort were recorded for); the session plans again, and the
-    // plan's sizing run sizes the lists for this view.
+    // --light-bin gpu: the view's lists were cut (more slots than the room, more mask words
+    // than the clusters' room, or a run longer than the frame's batches and sort were recorded
+    // for); the session plans again, and the plan's sizing run sizes the lists for this view.
     bool overflowed(FrameGraph& graph) override {
         return binning_ && binning_->overflowed(graph, culling_->batchSize());
     }
@@ -196,6 +196,9 @@ class ForwardPlusRenderer final : public Renderer {
             bins_.offsets = std::move(frame.offsets);
             bins_.slots = frame.slots;
             bins_.maxBound = frame.maxBound;
+            // The rows the frame laid out (bin_scan_words.comp: the same layout, from the same
+            // counts), for the clusters' statistics.
+            if (clustered()) bins_.masks = fp::layoutMasks(bins_.bound, fp_.assign.slices);
         }
         std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(tiles_));
         tileLists_.resize(grid_.count());
@@ -291,9 +294,9 @@ class ForwardPlusRenderer final : public Renderer {
     // Whether the lists' layout follows the view: the compact and linked layouts' bound, binned
     // culling's candidates (fixed, unbinned: nothing to bin).
     bool boundsLists() const { return layout() != TP_FP_LAYOUT_FIXED || binned(); }
-    // The GPU binning lays out every view itself (tiled: clustered's mask rows still follow
-    // the CPU's copy of the bound, from a sizing run per view).
-    bool viewOnGpu() const { return r_.gpuBinning && !clustered(); }
+    // The GPU binning lays out every view itself: the runs' offsets and, clustered, the mask
+    // rows' offsets (GpuBinning::publishWords).
+    bool viewOnGpu() const { return r_.gpuBinning; }
 
     fp::ViewBinning viewBinning() {
         return {grid_, &classes_, binned(), clustered(), fp_.assign.slices, binning_.get()};
@@ -340,6 +343,7 @@ class ForwardPlusRenderer final : public Renderer {
         fp::PackedParams packed = packParams();
         candidateWord_ = packed.candidateWord;
         offsetWord_ = packed.offsetWord;
+        maskOffsetWord_ = packed.maskOffsetWord;
         params_ = createBufferWithData(ctx_, packed.bytes.data(), packed.bytes.size(),
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        {"forwardplus", "", "fp_params", packed.purpose});
@@ -373,8 +377,14 @@ class ForwardPlusRenderer final : public Renderer {
         if (r_.spherePass) spheres_.prepare(graph);
         // fp_params is uploaded in prepare() and updateView(), outside the graph.
         culling_->prepare(graph, params_.buffer);
-        if (binning_)
+        if (binning_) {
             binning_->prepare(graph, params_.buffer, candidateWord_, offsetWord_, cap_.slots);
+            // Clustered: each tile's slice rows, ceil(run / 32) words each, laid out by the
+            // frame in the planned mask words (fp::layoutMasks's layout, on the GPU).
+            if (clustered())
+                binning_->publishWords(params_.buffer, fp_.assign.slices, 0, cap_.maskWords,
+                                       maskOffsetWord_);
+        }
     }
 
     GpuContext& ctx_;
@@ -398,6 +408,7 @@ class ForwardPlusRenderer final : public Renderer {
     std::unique_ptr<la::GpuBinning> binning_; // r_.gpuBinning: the light_binning pass
     uint64_t candidateWord_ = 0;              // the candidates' first word in fp_params
     uint64_t offsetWord_ = 0;                 // the tile offsets' first word in fp_params
+    uint64_t maskOffsetWord_ = 0;             // clustered: the mask rows' offsets' first word
     fp::ListSizes lists_;
 
     ResourceHandle hdr_, depth_, hdrMsaa_, depthMsaa_, tiles_, indices_, counter_;

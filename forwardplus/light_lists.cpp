@@ -95,6 +95,7 @@ PackedParams packParams(const GpuContext& ctx, const ParamsInput& in) {
     PackedParams out;
     out.candidateWord = sizeof(p) / 4 + candidateBase;
     out.offsetWord = sizeof(p) / 4 + offsetBase;
+    out.maskOffsetWord = sizeof(p) / 4 + maskOffsetBase;
     out.bytes.resize(sizeof(p) + data.size() * 4);
     std::memcpy(out.bytes.data(), &p, sizeof(p));
     std::memcpy(out.bytes.data() + sizeof(p), data.data(), data.size() * 4);

@@ -53,7 +53,9 @@ MaskLayout sizeMasks(const GpuContext& ctx, const std::vector<uint32_t>& bound, 
 // per-tile offsets (compact layout or binned culling), the binned candidates (zeros that
 // light_binning fills under --light-bin gpu) in room for `candidateSlots`, the clusters'
 // mask-row offsets - uploaded when planned and again for every view (the same size: the
-// candidates' room is a capacity). Refuses, in one line, what maxStorageBufferRange cannot hold.
+// candidates' room is a capacity); under --light-bin gpu only when planned (the frame writes
+// the offsets, the candidates and the mask-row offsets of each view itself). Refuses, in one
+// line, what maxStorageBufferRange cannot hold.
 struct ParamsInput {
     la::TileGrid grid;
     const la::LightClasses* classes = nullptr;
@@ -71,6 +73,7 @@ struct PackedParams {
     std::vector<uint8_t> bytes;
     uint64_t candidateWord = 0; // the candidates' first word in the buffer
     uint64_t offsetWord = 0;    // the per-tile offsets' first word (the GPU binning writes them)
+    uint64_t maskOffsetWord = 0; // clustered: the mask rows' offsets' first word (GPU binning too)
     std::string purpose;        // the buffer's description in the ledger
 };
 

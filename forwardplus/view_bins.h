@@ -2,7 +2,8 @@
 // What Forward+ derives from the camera and the lights on the CPU, per view (plan once, render
 // many views: Renderer::updateView): every local light's conservative tile rectangle counted
 // per tile (the compact layout's bound and offsets), the binned candidates (--light-bin cpu)
-// or the GPU binning's sizing run (--light-bin gpu), and the clusters' mask rows. A plan sizes
+// or the GPU binning's sizing run (--light-bin gpu: at plan time only; later views are laid
+// out by the frame, tiled and clustered alike), and the clusters' mask rows. A plan sizes
 // its buffers from the first view: exactly, or with RenderSettings::manyViews kViewHeadroom
 // times it, so that ordinary camera moves and light motion lay out inside the same buffers; a
 // view that needs more is refused (ViewCapacity::holds) and the renderer is planned again,
@@ -46,7 +47,7 @@ struct ViewBinning {
     bool binned = false;    // --light-cull binned: the candidates too
     bool clustered = false; // mask rows
     uint32_t slices = 0;
-    la::GpuBinning* gpu = nullptr; // --light-bin gpu: its sizing run (no candidates)
+    la::GpuBinning* gpu = nullptr; // --light-bin gpu: its sizing run (plan time; no candidates)
 };
 
 // The scene's current (uploaded, camera-relative) view and lights, binned.

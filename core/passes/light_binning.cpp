@@ -127,8 +127,12 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
                           words_.buffer && b.rows == frame_.rows ? words_.buffer : b.rows);
 }
 
-void GpuBinning::publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room) {
-    words_ = {out, scale, add, uint32_t(std::min<uint64_t>(room, 0xffffffffull))};
+void GpuBinning::publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room,
+                              uint64_t firstWord) {
+    if (firstWord + grid_.count() > 0xffffffffull)
+        throw std::logic_error("GpuBinning: the word layout's first word exceeds 32 bits");
+    words_ = {out, scale, add, uint32_t(std::min<uint64_t>(room, 0xffffffffull)),
+              uint32_t(firstWord)};
     if (target_) bind(frame_, target_);
 }
 
@@ -305,7 +309,8 @@ void GpuBinning::recordSizing(VkCommandBuffer cmd, bool frame) {
     dispatchGroups(cmd, pipelines_[kColumns], grid_.tilesX, columns);
     if (frame && words_.buffer) { // the consumer's word layout over the counts
         stepBarrier(cmd);
-        dispatchGroups(cmd, pipelines_[kWords], 1, {words_.scale, words_.add, words_.room, 0});
+        dispatchGroups(cmd, pipelines_[kWords], 1,
+                       {words_.scale, words_.add, words_.room, words_.first});
     }
     if (frame) // the published offsets: read by the culling and shading (any stage)
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

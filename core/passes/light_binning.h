@@ -2,7 +2,8 @@
 // Light binning on the GPU (--light-bin gpu), shared by Forward+ and tiled deferred: the
 // runs la::binLights builds on the CPU (light_bins.h), built every frame by three timed
 // compute passes, exactly equal (include/light_binning.h says why):
-//   light_binning (counts and offsets, 4 dispatches; a 5th for a word layout, publishWords)
+//   light_binning (counts and offsets, 4 dispatches; a 5th for a word layout, publishWords:
+//                the transparent lists' masks, clustered Forward+'s slice rows)
 //     1. clear   the counts (a difference array)
 //     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
 //                corners in the difference array; in the frame the rectangle, stored for the
@@ -82,10 +83,12 @@ class GpuBinning {
     // (the run slots the target holds from baseWord).
     void prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord, uint64_t offsetsWord,
                  uint64_t room);
-    // The frame also lays out, into `out` (tiles + 1 words), scale * ceil((add + count) / 32)
-    // words per tile (a bit per candidate: the transparent lists' masks), clamped to `room`;
-    // a view needing more is an overflow too. After prepare.
-    void publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room);
+    // The frame also lays out, into `out` (tiles + 1 words from its word `firstWord`),
+    // scale * ceil((add + count) / 32) words per tile (a bit per candidate: the transparent
+    // lists' masks, scale 1; clustered Forward+'s slice rows, scale = slices), clamped to
+    // `room`; a view needing more is an overflow too. After prepare. `out` may be the target.
+    void publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room,
+                      uint64_t firstWord = 0);
     // After a view's frames: whether the view needed more than the plan holds: more slots than
     // the room, more words than publishWords's room, or a run longer than runBound() where that
     // changes what was recorded (the sort's steps, or the consumer's batches of `batch` lights
@@ -126,7 +129,7 @@ class GpuBinning {
     Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()
     struct Words {
         VkBuffer buffer = VK_NULL_HANDLE;
-        uint32_t scale = 0, add = 0, room = 0;
+        uint32_t scale = 0, add = 0, room = 0, first = 0;
     } words_; // publishWords()
     VkBuffer target_ = VK_NULL_HANDLE;
     ResourceHandle counts_, offsets_, rows_, rects_;

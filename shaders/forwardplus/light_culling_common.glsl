@@ -289,6 +289,13 @@ ListSlots arraySlots(CullTile c, uint list) {
     const uint offset = data[params.lights.z + c.index];
     s.capacity = data[params.lights.z + c.index + 1u] - offset;
     s.start = (list == 0u ? 0u : params.lists.x) + offset;
+#ifdef TP_FP_CLUSTERED
+    // No more lights than the tile's slice rows hold bits: a view past the mask rows' room
+    // (--light-bin gpu: bin_scan_words.comp clamps their offsets, and the view is planned
+    // again) gets shorter rows, and then neither this pass nor the shading touches a word past
+    // them. Otherwise the rows hold ceil(run / 32) words and this never binds.
+    if (c.maskStride < (1u << 27u)) s.capacity = min(s.capacity, c.maskStride << 5u);
+#endif
 #else
     s.capacity = params.lights.w;
     s.start = (list == 0u ? 0u : params.lists.x) + c.index * s.capacity;

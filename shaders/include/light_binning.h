@@ -26,7 +26,7 @@ namespace tp::gpu {
 #define TP_BIN_BINDING_ROWS 4    // uint[tilesY]: per row of tiles, the sum of its row prefix sums (scans)
 #define TP_BIN_BINDING_TARGET 5  // uint[]: tile t's run at words [base + offsets[t], base + offsets[t + 1])
 #define TP_BIN_BINDING_RECTS 6   // uvec2[local lights]: each light's rectangle (binPackRect), for the fill
-#define TP_BIN_BINDING_WORDS 7   // uint[tiles + 1]: a word layout over the counts (bin_scan_words.comp)
+#define TP_BIN_BINDING_WORDS 7   // uint[]: a word layout over the counts (bin_scan_words.comp)
 
 // Push constants (the scene's DrawPush): the target's first word, and per dispatch a range:
 // the fill's rows [first, end) of tiles; the long-run sort step's block size k and distance j.
@@ -46,11 +46,14 @@ namespace tp::gpu {
 #define TP_BIN_NEED_WORDS 2u // the word layout's words (when one is published)
 // The word layout (bin_scan_words.comp, after the counts): tile t takes
 // TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD + counts[t]) / 32) words, a bit per candidate
-// (the transparent lists' bitmasks over the directional lights and the run), exclusive prefix
-// sum clamped to TP_BIN_WORDS_ROOM.
+// (the transparent lists' bitmasks over the directional lights and the run: scale 1; clustered
+// Forward+'s slice rows over the run: scale = slices), exclusive prefix sum clamped to
+// TP_BIN_WORDS_ROOM, written to the words buffer from its word TP_BIN_WORDS_FIRST (Forward+
+// keeps its mask-row offsets inside fp_params).
 #define TP_BIN_WORDS_SCALE materialIndex
 #define TP_BIN_WORDS_ADD pad0
 #define TP_BIN_WORDS_ROOM pad1
+#define TP_BIN_WORDS_FIRST pad2
 
 // The rectangles step: 1 when it stores the rectangles for the fill (the frame), 0 when it
 // only counts them (the plan-time sizing, which has no rectangle buffer).

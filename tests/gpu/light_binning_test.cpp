@@ -19,6 +19,7 @@
 #include "core/passes/light_binning.h"
 #include "core/scene/lights.h"
 #include "core/scene/procedural.h"
+#include "forwardplus/light_lists.h"
 #include "gpu_test_util.h"
 #include "include/light_binning.h"
 
@@ -134,6 +135,7 @@ struct Binned {
     std::vector<uint32_t> published;     // the offsets the frame wrote into the target
     std::vector<uint32_t> words;         // the word layout it wrote (publishWords)
     uint32_t canary = 0;                 // the target's word past the room
+    uint32_t wordCanaries[2] = {};       // the words buffer's words before and after the layout
     bool overflowed = false;             // GpuBinning::overflowed after the frames
     uint32_t largestRect = 0;            // tiles of the largest rectangle, on the CPU
 };
@@ -141,11 +143,20 @@ struct Binned {
 constexpr uint32_t kCanary = 0xC0FFEEu;
 constexpr uint32_t kWordsAdd = 3; // the word layout's extra candidates per tile (directional)
 
+// The word layout a frame publishes (GpuBinning::publishWords): by default the transparent
+// lists' (a bit per candidate and kWordsAdd more a tile) from the buffer's first word.
+struct WordLayout {
+    uint32_t scale = 1, add = kWordsAdd, first = 0;
+    uint64_t room = ~0ull;
+};
+
 // One frame of the light_binning pass alone, writing its runs `base` words into a buffer:
 // room for `room` slots (all it needs when ~0), then a canary word, then the published
-// offsets; `runBound` (when not ~0) the longest run the frame is recorded for.
+// offsets; `runBound` (when not ~0) the longest run the frame is recorded for. The word
+// layout goes to its own buffer, between two canaries.
 Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile,
-           uint32_t frames = 2, uint32_t room = ~0u, bool manyViews = false) {
+           uint32_t frames = 2, uint32_t room = ~0u, bool manyViews = false,
+           const WordLayout& layout = {}) {
     Binned out;
     scene.setView(w, h, 1);
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
@@ -168,14 +179,18 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
         createBufferWithData(ctx, init.data(), init.size() * 4,
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              {"test", "", "runs", "the runs, a canary, the offsets"});
-    Buffer wordLayout = createBuffer(
-        ctx, (tiles + 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-        MemoryKind::Device, {"test", "", "words", "the word layout"});
+    const uint32_t wordsFirst = layout.first + 1; // a canary before
+    std::vector<uint32_t> wordInit(wordsFirst + tiles + 2, 0);
+    wordInit[wordsFirst - 1] = wordInit[wordsFirst + tiles + 1] = kCanary;
+    Buffer wordLayout =
+        createBufferWithData(ctx, wordInit.data(), wordInit.size() * 4,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             {"test", "", "words", "a canary, the word layout, a canary"});
     FrameGraph graph(ctx, "test", w, h);
     gpuBin.plan(graph);
     graph.compile();
     gpuBin.prepare(graph, target.buffer, base, offsetsWord, room);
-    gpuBin.publishWords(wordLayout.buffer, 1, kWordsAdd, ~0u);
+    gpuBin.publishWords(wordLayout.buffer, layout.scale, layout.add, layout.room, wordsFirst);
     recordAndSubmit(ctx, graph, frames); // a frame rebuilds what the last one left
     out.overflowed = gpuBin.overflowed(graph, 1); // batches of one light: any longer run counts
     auto words = [](const std::vector<uint8_t>& bytes, size_t first, size_t n) {
@@ -189,7 +204,10 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     out.runs = words(targetBytes, base, std::min<uint64_t>(room, out.sizes.slots));
     out.canary = words(targetBytes, base + room, 1)[0];
     out.published = words(targetBytes, offsetsWord, tiles + 1);
-    out.words = words(readbackBuffer(ctx, wordLayout), 0, tiles + 1);
+    const std::vector<uint8_t> wordBytes = readbackBuffer(ctx, wordLayout);
+    out.words = words(wordBytes, wordsFirst, tiles + 1);
+    out.wordCanaries[0] = words(wordBytes, wordsFirst - 1, 1)[0];
+    out.wordCanaries[1] = words(wordBytes, wordsFirst + tiles + 1, 1)[0];
     return out;
 }
 
@@ -214,6 +232,8 @@ uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t til
     for (size_t t = 0; t < b.cpu.bound.size(); ++t)
         wantWords[t + 1] = wantWords[t] + (kWordsAdd + b.cpu.bound[t] + 31) / 32;
     EXPECT_EQ(b.words, wantWords);
+    EXPECT_EQ(b.wordCanaries[0], kCanary);
+    EXPECT_EQ(b.wordCanaries[1], kCanary);
     EXPECT_EQ(b.runs.size(), b.cpu.candidates.size());
     if (b.runs.size() != b.cpu.candidates.size()) return 0;
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
@@ -336,6 +356,54 @@ TEST(GpuLightBinning, RunLongerThanPlannedIsCounted) {
     EXPECT_FALSE(gpuBin.overflowed(graph, uint32_t(local.size())));
     EXPECT_EQ(gpuBin.collect(graph).maxBound, uint32_t(local.size()));
     EXPECT_EQ(gpuBin.sizingRuns(), 1u);
+    expectNoValidationMessages(*ctx);
+}
+
+// Clustered Forward+'s slice rows (ceil(run / 32) words a slice, `slices` rows a tile), laid
+// out by the frame (publishWords, scale = slices) from a word inside a larger buffer (Forward+
+// keeps them in fp_params): fp::layoutMasks's offsets, the layout the CPU made per view.
+void expectCpuMaskRows(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile, uint32_t slices) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    SceneGpu gpuScene(*ctx, scene);
+    const Binned b = bin(*ctx, gpuScene, w, h, tile, 2, ~0u, false, {slices, 0, 37});
+    const fp::MaskLayout want = fp::layoutMasks(b.cpu.bound, slices);
+    EXPECT_EQ(b.words, want.offsets);
+    EXPECT_GT(b.cpu.maxBound, 32u) << "rows of more than one word";
+    EXPECT_EQ(b.wordCanaries[0], kCanary);
+    EXPECT_EQ(b.wordCanaries[1], kCanary);
+    EXPECT_FALSE(b.overflowed);
+    expectNoValidationMessages(*ctx);
+}
+
+TEST(GpuLightBinning, ClusterMaskRowsEqualTheCpuLayoutCourtyard) {
+    expectCpuMaskRows(courtyard(512), 128, 72, 8, 16);
+}
+TEST(GpuLightBinning, ClusterMaskRowsEqualTheCpuLayoutFloor64Slices) {
+    expectCpuMaskRows(floorWith(2048), 160, 96, 16, 64);
+}
+
+// A view whose slice rows need more words than the plan holds (its runs fit): the row offsets
+// are clamped to the room (the culling keeps no more lights than a clamped row holds bits:
+// light_culling_common.glsl, arraySlots) and overflowed() says so.
+TEST(GpuLightBinning, MaskRowsPastTheRoomAreClampedAndCounted) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Scene scene = courtyard(512);
+    SceneGpu gpuScene(*ctx, scene);
+    const uint32_t slices = 16;
+    const Binned whole = bin(*ctx, gpuScene, 128, 72, 16, 2, ~0u, false, {slices, 0, 5});
+    const fp::MaskLayout want = fp::layoutMasks(whole.cpu.bound, slices);
+    ASSERT_GT(want.words, 100u);
+    EXPECT_FALSE(whole.overflowed);
+    const uint32_t room = uint32_t(want.words / 2);
+    const Binned cut = bin(*ctx, gpuScene, 128, 72, 16, 2, ~0u, false, {slices, 0, 5, room});
+    EXPECT_TRUE(cut.overflowed) << "more words than the room";
+    ASSERT_EQ(cut.words.size(), want.offsets.size());
+    for (size_t t = 0; t < cut.words.size(); ++t)
+        EXPECT_EQ(cut.words[t], std::min(want.offsets[t], room)) << "tile " << t;
+    EXPECT_EQ(cut.published, whole.published) << "the runs fit: unchanged";
+    EXPECT_EQ(cut.wordCanaries[1], kCanary);
     expectNoValidationMessages(*ctx);
 }
 

@@ -6,6 +6,7 @@
 // planning again; a pipeline not in kMayReplan must never need the second way on these views.
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <set>
 #include <string>
 
@@ -45,6 +46,12 @@ const std::vector<std::pair<std::string, std::string>> kViewKnobs = {
     {"cull-geometry", "full"},
 };
 
+// Combinations whose per-view work differs from each knob's alone: clustered under the GPU
+// binning (the frame lays out the mask rows too: docs/forwardplus.md, "Many views").
+const std::vector<std::map<std::string, std::string>> kViewKnobSets = {
+    {{"light-assign", "clustered"}, {"light-bin", "gpu"}},
+};
+
 bool reads(const RendererEntry& e, const std::string& knob) {
     return std::any_of(e.knobs.begin(), e.knobs.end(),
                        [&](const Knob& k) { return k.name == knob; });
@@ -58,6 +65,10 @@ std::vector<Config> configs() {
         out.push_back({e.name, {}, 4});
         for (const auto& [knob, value] : kViewKnobs)
             if (reads(e, knob)) out.push_back({e.name, {{knob, value}}});
+        for (const auto& set : kViewKnobSets)
+            if (std::all_of(set.begin(), set.end(),
+                            [&](const auto& kv) { return reads(e, kv.first); }))
+                out.push_back({e.name, set});
     }
     return out;
 }
@@ -163,6 +174,14 @@ TEST(ViewUpdateKnobs, EveryViewKnobIsReadBySomeRenderer) {
         EXPECT_TRUE(std::any_of(registeredRenderers().begin(), registeredRenderers().end(),
                                 [&](const RendererEntry& e) { return reads(e, knob); }))
             << "no renderer reads --" << knob;
+    for (const auto& set : kViewKnobSets)
+        EXPECT_TRUE(std::any_of(registeredRenderers().begin(), registeredRenderers().end(),
+                                [&](const RendererEntry& e) {
+                                    return std::all_of(set.begin(), set.end(), [&](const auto& kv) {
+                                        return reads(e, kv.first);
+                                    });
+                                }))
+            << "no renderer reads the whole set";
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryPipeline, ViewUpdate, ::testing::ValuesIn(configs()),

@@ -4,6 +4,8 @@
 # diff the two outputs: every pipeline and the reference on the built-in scene, 1x and 4x
 # at both shading rates, tiled and clustered, every light-list layout and culling mode.
 #   tests/tools/image_fingerprints.sh BUILD/triptych > before.txt
+# ONLY=REGEX (an extended regular expression) keeps the configurations it matches, e.g.
+#   ONLY='forwardplus.*clustered|light-bin gpu' tests/tools/image_fingerprints.sh BUILD/triptych
 # The EXR holds only pixels and fixed attributes, so identical pixels hash identically.
 set -euo pipefail
 exe=${1:?usage: image_fingerprints.sh PATH/TO/triptych}
@@ -49,6 +51,7 @@ done
 
 i=0
 for c in "${configs[@]}"; do
+    [[ -n ${ONLY:-} ]] && ! grep -Eq -- "$ONLY" <<<"$c" && continue
     out="$work/$i"
     # shellcheck disable=SC2086
     "$exe" render "$scene" "${common[@]}" $c --out "$out" >"$work/log" 2>&1 || { echo "FAILED: $c"; cat "$work/log"; exit 1; }
