@@ -14,7 +14,7 @@ namespace tp::mp {
 namespace {
 
 // The commands are lights x draws (a region per light holds every draw): past this the lists
-// stay on the CPU (1,024 lights x 6,500 draws; the courtyard has 341).
+// stay on the CPU (1,024 lights x 6,553 draws; the courtyard has 17).
 constexpr VkDeviceSize kMaxCommandBytes = VkDeviceSize(128) << 20;
 constexpr VkDeviceSize kCommandBytes = TP_MPLD_COMMAND_WORDS * sizeof(uint32_t);
 

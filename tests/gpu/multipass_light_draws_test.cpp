@@ -31,8 +31,8 @@ void PrintTo(const Config& c, std::ostream* os) {
     *os << c.name;
 }
 
-// The courtyard with point and spot lights and six directional ones (two beyond the base pass's
-// four: full-screen light passes, TP_MPLD_FLAG_ALL).
+// The courtyard with point lights, six directional ones (two beyond the base pass's four:
+// full-screen light passes, TP_MPLD_FLAG_ALL) and one light behind the camera.
 Scene sceneWithLights() {
     Scene s = courtyardSmallWithLights(40, 11);
     for (int i = 0; i < 6; ++i) {
@@ -43,6 +43,11 @@ Scene sceneWithLights() {
         d.intensity = 0.2f;
         s.lights.push_back(d);
     }
+    // And one behind the camera, which every list skips.
+    Light behind;
+    behind.position = s.camera.position + 3.0f * glm::normalize(s.camera.position - s.camera.target);
+    behind.range = 0.5f;
+    s.lights.push_back(behind);
     return s;
 }
 
@@ -123,7 +128,6 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
     RunOptions once;
     once.warmupFrames = 0;
     once.timedFrames = 1;
-    once.readback = false;
     const int views = 4;
     for (int v = 0; v < views; ++v) {
         scene.camera = a;
