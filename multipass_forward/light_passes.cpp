@@ -13,6 +13,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
+#include "multipass_forward/light_draw_pass.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -38,6 +39,10 @@ LightPasses::LightPasses(const PassEnv& env) : env_(env) {
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.blend = BlendMode::Additive;
     d.stencilOnce = true;
+    if (env.lightDraws) { // GPU lists: the material from each command's firstInstance
+        d.vertexShader = "scene_material_vert";
+        d.fragmentShader = fragmentShader(env, "light_inst");
+    }
     pipeline_ = createGraphicsPipeline(env.ctx, d);
     shadowed_ = createShadowedTwin(env, d);
 }
@@ -58,12 +63,12 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
     uint32_t tag = 0; // the stencil starts at 0 (cleared by each rendering's begin)
     if (pipeline_) {
         VkPipeline bound = pipeline_;
-        bindSceneDraws(pc.cmd, env_, pipeline_);
+        bind(pc, pipeline_);
         for (const LightBatch& batch : env_.plan.batches) {
             const bool restarted = shading.hold(batch.light);
             const VkPipeline p = shading.shadowed(batch.light) ? shadowed_ : pipeline_;
             if (restarted || p != bound) {
-                bindSceneDraws(pc.cmd, env_, bound = p);
+                bind(pc, bound = p);
                 if (p == shadowed_)
                     env_.shadows->bind(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
             }
@@ -74,13 +79,33 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
             }
             vkCmdSetStencilReference(pc.cmd, VK_STENCIL_FACE_FRONT_AND_BACK, tag);
             setScissor(pc.cmd, batch.scissor);
-            for (const DrawItem* d : batch.draws)
-                drawOpaque(pc, env_, *d, batch.light);
-            draws_ += uint32_t(batch.draws.size());
+            recordDraws(pc, batch);
         }
     }
     shading.end();
     mapRenders_ = shading.mapRenders();
+}
+
+// The scene set and index buffer the light's draws read: with GPU lists the scene's own (the
+// commands are whole meshes), else drawOpaque's.
+void LightPasses::bind(PassContext& pc, VkPipeline pipeline) const {
+    if (!env_.lightDraws) return bindSceneDraws(pc.cmd, env_, pipeline);
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    env_.scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    env_.scene.bindIndexBuffer(pc.cmd);
+}
+
+void LightPasses::recordDraws(PassContext& pc, const LightBatch& batch) {
+    if (!env_.lightDraws) {
+        for (const DrawItem* d : batch.draws)
+            drawOpaque(pc, env_, *d, batch.light);
+        draws_ += uint32_t(batch.draws.size());
+        return;
+    }
+    // The light in DrawPush (its materials come with the commands), then its runs' calls.
+    const gpu::DrawPush push{0, batch.light, 0, 0};
+    vkCmdPushConstants(pc.cmd, env_.layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+    draws_ += env_.lightDraws->record(pc, batch.slot);
 }
 
 } // namespace tp::mp

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "multipass_forward/light_draws.h"
+
 namespace tp::mp {
 namespace {
 
@@ -82,9 +84,7 @@ ScreenRect boxScreenRect(const gpu::FrameUniforms& f, const Aabb& box) {
 }
 
 bool sphereTouchesBox(glm::vec3 center, float radius, const Aabb& box) {
-    glm::vec3 closest = glm::clamp(center, box.min, box.max);
-    glm::vec3 d = center - closest;
-    return glm::dot(d, d) <= radius * radius;
+    return gpu::mpSphereTouchesBox(center, radius, box.min, box.max); // the GPU's rule
 }
 
 namespace {
@@ -132,8 +132,9 @@ bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleD
 
 } // namespace
 
-LightPlan planLights(const SceneGpu& scene, bool lightBlended) {
+LightPlan planLights(const SceneGpu& scene, bool lightBlended, LightLists lists) {
     LightPlan plan;
+    plan.lists = lists;
     const gpu::FrameUniforms& f = scene.shadingFrame();
     auto opaque = visibleDraws(scene, DrawFilter::Opaque);
     auto masked = visibleDraws(scene, DrawFilter::Mask);
@@ -159,24 +160,44 @@ LightPlan planLights(const SceneGpu& scene, bool lightBlended) {
                          l.type == TP_LIGHT_DIRECTIONAL ? fullScreen(f)
                                                         : sphereScreenRect(f, l.position, l.range),
                          {}};
-        uint32_t meshes = 0;
+        batch.slot = uint32_t(plan.localIndex.size());
+        plan.localIndex.push_back(i);
+        plan.localRect.push_back(batch.scissor);
+        uint32_t meshes = 0, blendedMeshes = 0;
         if (!batch.scissor.empty()) {
             for (auto* list : {&opaque, &masked})
                 for (const VisibleDraw& v : *list)
-                    if (touches(l, batch.scissor, v, boxTest)) batch.draws.push_back(v.draw);
+                    if (lists == LightLists::Cpu && touches(l, batch.scissor, v, boxTest))
+                        batch.draws.push_back(v.draw);
             meshes = uint32_t(batch.draws.size());
             for (size_t b = 0; lightBlended && b < blended.size(); ++b)
                 if (touches(l, batch.scissor, blended[b], boxTest)) {
                     plan.blended[b].lights.push_back({i, batch.scissor});
-                    ++meshes;
+                    ++blendedMeshes;
                 }
+            meshes += blendedMeshes;
         }
+        plan.blendedMeshes.push_back(blendedMeshes);
         if (meshes == 0) ++plan.lightsSkipped;
-        if (!batch.draws.empty()) plan.batches.push_back(std::move(batch));
+        // Gpu: every light on screen gets its pass; the GPU's lists may leave it empty.
+        if (!batch.draws.empty() || (lists == LightLists::Gpu && !batch.scissor.empty()))
+            plan.batches.push_back(std::move(batch));
         plan.meshesPerLightSum += meshes;
         plan.meshesPerLightMax = std::max(plan.meshesPerLightMax, meshes);
     }
     return plan;
+}
+
+void mergeGpuMeshes(LightPlan& plan, const std::vector<uint32_t>& gpuMeshes) {
+    plan.lightsSkipped = 0;
+    plan.meshesPerLightMax = 0;
+    plan.meshesPerLightSum = 0;
+    for (size_t s = 0; s < plan.localIndex.size(); ++s) {
+        const uint32_t meshes = (s < gpuMeshes.size() ? gpuMeshes[s] : 0) + plan.blendedMeshes[s];
+        if (meshes == 0) ++plan.lightsSkipped;
+        plan.meshesPerLightSum += meshes;
+        plan.meshesPerLightMax = std::max(plan.meshesPerLightMax, meshes);
+    }
 }
 
 } // namespace tp::mp

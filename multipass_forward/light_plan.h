@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "core/gpuscene/scene_gpu.h"
+#include "multipass_forward/mp_settings.h"
 #include "multipass_forward/multipass_shared.h"
 
 namespace tp::mp {
@@ -32,11 +33,14 @@ ScreenRect sphereScreenRect(const gpu::FrameUniforms& frame, glm::vec3 center, f
 ScreenRect boxScreenRect(const gpu::FrameUniforms& frame, const Aabb& box);
 bool sphereTouchesBox(glm::vec3 center, float radius, const Aabb& box);
 
-// One light's pass: its scissor and the opaque/masked draws it touches.
+// One light's pass: its scissor and the opaque/masked draws it touches (with GPU lists,
+// LightLists::Gpu: none here, the light-draws pass writes them), and its place among the local
+// lights (the region of the light-draws pass it reads).
 struct LightBatch {
     uint32_t light = 0;
     ScreenRect scissor;
     std::vector<const DrawItem*> draws;
+    uint32_t slot = 0;
 };
 
 // A blended draw and the lights that touch it, in light order.
@@ -45,19 +49,34 @@ struct BlendedDraw {
     std::vector<std::pair<uint32_t, ScreenRect>> lights;
 };
 
+// lists: who builds each light's opaque and masked draw list: the CPU here (Cpu), or the GPU's
+// light-draws pass every frame (Gpu: the plan then holds every local light with a scissor on
+// screen, whether or not it touches a draw, and only the blended draws' light lists).
 struct LightPlan {
+    LightLists lists = LightLists::Cpu;
     std::vector<uint32_t> baseDirectional;       // evaluated in the base pass
     std::vector<LightBatch> batches;             // light passes over opaque + masked draws
+    // Every local light in light order (a slot each): its index and scissor (empty: off-screen).
+    std::vector<uint32_t> localIndex;
+    std::vector<ScreenRect> localRect;
+    std::vector<uint32_t> blendedMeshes; // per slot: the blended draws it lights
     std::vector<BlendedDraw> blended;            // back to front, as the reference draws them
     std::vector<const DrawItem*> opaque, masked; // draws on screen (prepass and base pass)
     uint32_t localLights = 0;   // point/spot lights (and directional ones beyond the base's)
-    uint32_t lightsSkipped = 0; // of those: off-screen or touching no draw on screen
+    // Of those: off-screen or touching no draw on screen. Gpu: counted with the blended draws
+    // only (the renderer adds the GPU's counts after the frame: mergeGpuMeshes).
+    uint32_t lightsSkipped = 0;
     uint32_t meshesPerLightMax = 0;
     uint64_t meshesPerLightSum = 0; // over every local light (skipped ones count 0)
 };
 
+// The counters over every local light, from each slot's opaque and masked draws counted by the
+// GPU (LightLists::Gpu) and the plan's blended ones.
+void mergeGpuMeshes(LightPlan& plan, const std::vector<uint32_t>& gpuMeshes);
+
 // `lightBlended` false: blended draws get no light passes (they are lit in one pass, so no
 // light counts them among its meshes).
-LightPlan planLights(const SceneGpu& scene, bool lightBlended = true);
+LightPlan planLights(const SceneGpu& scene, bool lightBlended = true,
+                     LightLists lists = LightLists::Cpu);
 
 } // namespace tp::mp

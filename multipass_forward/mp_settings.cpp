@@ -12,6 +12,16 @@ const ChoiceKnob<Accum>& accumKnob() {
     return k;
 }
 
+const ChoiceKnob<LightLists>& lightListsKnob() {
+    static const ChoiceKnob<LightLists> k{
+        "light-draws",
+        {{LightLists::Gpu, "gpu"}, {LightLists::Cpu, "cpu"}},
+        "Multipass forward per-light draw lists of opaque and masked meshes: gpu (a compute pass "
+        "writes each light's indirect draws every frame; a new view re-plans nothing per light) "
+        "or cpu (built on the CPU for each view, one recorded draw per light and mesh)"};
+    return k;
+}
+
 } // namespace
 
 const ChoiceKnob<BlendedLights>& blendedLightsKnob() {
@@ -31,7 +41,7 @@ const ChoiceKnob<BlendedLights>& blendedLightsKnob() {
 
 KnobSchema knobs() {
     return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob(),
-            cullGeometryKnob().knob()};
+            cullGeometryKnob().knob(), lightListsKnob().knob()};
 }
 
 double blendedLightsPerFragment(BlendedLights mode, double directional, double lights) {
@@ -56,7 +66,8 @@ Settings readSettings(const RenderSettings& s) {
             readSampling(s),
             accumKnob().in(s),
             blendedLightsKnob().in(s),
-            cullGeometryKnob().in(s)};
+            cullGeometryKnob().in(s),
+            lightListsKnob().in(s)};
 }
 
 } // namespace tp::mp

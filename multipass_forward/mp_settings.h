@@ -9,6 +9,7 @@ namespace tp::mp {
 
 enum class Accum { Fp32, Fp16 };                       // --accum
 enum class BlendedLights { Under, Additive, OnePass }; // --blended-lights
+enum class LightLists { Gpu, Cpu };                    // --light-draws
 
 struct Settings {
     uint32_t width = 0, height = 0;
@@ -16,6 +17,7 @@ struct Settings {
     Accum accum = Accum::Fp32;
     BlendedLights blendedLights = BlendedLights::Under;
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: prepass, base, light passes
+    LightLists lightLists = LightLists::Gpu; // who selects each light's opaque and masked draws
 };
 
 KnobSchema knobs();

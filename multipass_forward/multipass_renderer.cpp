@@ -9,6 +9,7 @@
 #include "core/passes/depth_prepass.h"
 #include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
+#include "multipass_forward/light_draw_pass.h"
 #include "multipass_forward/passes.h"
 
 namespace tp {
@@ -16,16 +17,34 @@ namespace {
 
 using namespace mp;
 
+uint32_t localLightCount(const SceneGpu& scene) {
+    uint32_t directional = 0, local = 0;
+    for (const gpu::LightGpu& l : scene.shadingLights())
+        ++(l.type == TP_LIGHT_DIRECTIONAL ? directional : local);
+    return local + (directional > TP_MP_MAX_BASE_DIRECTIONAL
+                        ? directional - TP_MP_MAX_BASE_DIRECTIONAL
+                        : 0);
+}
+
+// --light-draws gpu where the device and the size allow it (why not: `why`), else cpu.
+LightLists chooseLists(const RendererCreateInfo& info, const Settings& s, std::string& why) {
+    if (s.lightLists == LightLists::Cpu) return LightLists::Cpu;
+    why = LightDrawPass::unavailable(info.ctx, info.scene, localLightCount(info.scene));
+    return why.empty() ? LightLists::Gpu : LightLists::Cpu;
+}
+
 class MultipassForwardRenderer final : public Renderer {
   public:
     explicit MultipassForwardRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), mp_(readSettings(info.settings)),
           accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                 : VK_FORMAT_R32G32B32A32_SFLOAT),
-          manyViews_(info.settings.manyViews), plan_(planLights(info.scene, lightBlended())) {}
+          manyViews_(info.settings.manyViews), lists_(chooseLists(info, mp_, listsWhy_)),
+          plan_(newPlan()) {}
 
     ~MultipassForwardRenderer() override {
         cull_.reset();
+        lightDraws_.reset();
         prepass_.reset();
         base_.reset();
         lights_.reset();
@@ -58,6 +77,13 @@ class MultipassForwardRenderer final : public Renderer {
         if (hasLights) {
             last = !hasBlended;
             std::vector<PassUse> uses = withCullUses(shadingUses(t_, last, true));
+            if (lists_ == LightLists::Gpu && !passes::opaqueAndMaskedDraws(scene_).empty()) {
+                // Each light's draws, written on the GPU every frame (light_draw_pass.h).
+                lightDraws_.emplace(ctx_, scene_, plan_.localLights);
+                lightDraws_->plan(graph);
+                for (const PassUse& u : lightDraws_->drawUses())
+                    uses.push_back(u);
+            }
             addShadowUse(uses, &*shadows_);
             graph.addPass("light_passes", uses,
                           [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
@@ -77,19 +103,26 @@ class MultipassForwardRenderer final : public Renderer {
         layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, shadows_->setLayout());
         PassEnv env{ctx_,       scene_,     mp_,
                     plan_,      layout_,    accumFormat_,
-                    manyViews_, &*shadows_, cull_ ? &*cull_ : nullptr};
+                    manyViews_, &*shadows_, cull_ ? &*cull_ : nullptr,
+                    lightDraws_ ? &*lightDraws_ : nullptr};
         if (cull_) cull_->prepare(graph);
+        if (lightDraws_) {
+            lightDraws_->prepare(graph);
+            lightDraws_->update(plan_);
+        }
         prepass_->prepare();
         base_ = std::make_unique<BasePass>(env);
         lights_ = std::make_unique<LightPasses>(env);
         blended_ = std::make_unique<BlendedPass>(env);
     }
 
-    // The light plan again for the new view (CPU: scissors and per-light mesh lists), kept
-    // where the planned passes and pipelines can record it.
+    // The light plan again for the new view, kept where the planned passes and pipelines can
+    // record it: with GPU lists the scissors, the draws on screen and the blended draws' lights
+    // (the per-light lists of opaque and masked draws are the light-draws pass's, every frame);
+    // with CPU lists those lists too.
     bool updateView(FrameGraph&) override {
         if (shadows_->stale()) return false; // other shadowed lights or map sizes
-        LightPlan next = planLights(scene_, lightBlended());
+        LightPlan next = newPlan();
         const bool fits = next.baseDirectional == plan_.baseDirectional && // spec constants
                           (next.batches.empty() || hasLights_) &&
                           (next.blended.empty() || (hasBlended_ && blended_->hasPipelines())) &&
@@ -97,12 +130,19 @@ class MultipassForwardRenderer final : public Renderer {
                           (next.batches.empty() || lights_->hasPipeline());
         if (!fits || !prepass_->setDraws(next.opaque, next.masked)) return false;
         plan_ = std::move(next);
+        if (lightDraws_) lightDraws_->update(plan_);
         blended_->follow();
         return true;
     }
 
+    // With GPU lists each light's meshes come from the frame: the counters over every light
+    // (lights_skipped, meshes_per_light_*) are complete only after it.
     void collectStats(FrameGraph& graph) override {
         if (cull_) cull_->collect(graph);
+        if (lightDraws_) {
+            lightDraws_->collect(graph);
+            mergeGpuMeshes(plan_, lightDraws_->meshes());
+        }
     }
 
     RendererStats stats() const override;
@@ -119,6 +159,12 @@ class MultipassForwardRenderer final : public Renderer {
     void shadowStats(RendererStats& s) const;
     void addPassWork(RendererStats& s) const;
     bool lightBlended() const { return mp_.blendedLights != BlendedLights::OnePass; }
+    LightPlan newPlan() {
+        if (lists_ == LightLists::Cpu) ++cpuListBuilds_;
+        return planLights(scene_, lightBlended(), lists_);
+    }
+    // The light passes' draws: with GPU lists those the frame issued (0 before a frame).
+    uint32_t lightPassDraws() const;
 
     void createTargets(FrameGraph& graph) {
         const bool fp16 = accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -142,22 +188,34 @@ class MultipassForwardRenderer final : public Renderer {
     VkFormat accumFormat_;
     bool manyViews_;
     bool hasLights_ = false, hasBlended_ = false; // the passes planned
+    std::string listsWhy_; // why --light-draws gpu fell back to the CPU (empty: it did not)
+    LightLists lists_;
+    uint32_t cpuListBuilds_ = 0; // per-light lists of opaque and masked draws built on the CPU
     LightPlan plan_;
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::optional<ShadowMaps> shadows_; // one light's map (shadow_map) with --shadows
     std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
+    std::optional<LightDrawPass> lightDraws_; // --light-draws gpu: light_draws
     std::unique_ptr<passes::DepthPrepass> prepass_;
     std::unique_ptr<BasePass> base_;
     std::unique_ptr<LightPasses> lights_;
     std::unique_ptr<BlendedPass> blended_;
 };
 
+uint32_t MultipassForwardRenderer::lightPassDraws() const {
+    if (!lightDraws_) return lights_ ? lights_->draws() : 0;
+    uint32_t draws = 0;
+    for (const LightBatch& b : plan_.batches) // the lights recorded (off-screen ones are not)
+        draws += lightDraws_->meshes().empty() ? 0 : lightDraws_->meshes()[b.slot];
+    return draws;
+}
+
 RendererStats MultipassForwardRenderer::stats() const {
     RendererStats s;
     auto count = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
     shadowStats(s);
-    const uint32_t lightDraws = lights_ ? lights_->draws() : 0,
+    const uint32_t lightDraws = lightPassDraws(),
                    blendDraws = blended_ ? blended_->draws() : 0;
     const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0,
                    baseDraws = base_ ? base_->draws() : 0;
@@ -174,6 +232,11 @@ RendererStats MultipassForwardRenderer::stats() const {
           plan_.localLights ? double(plan_.meshesPerLightSum) / double(plan_.localLights) : 0.0);
     count("meshes_per_light_max", plan_.meshesPerLightMax);
     count("accumulation_bits", accumFormat_ == VK_FORMAT_R16G16B16A16_SFLOAT ? 16.0 : 32.0);
+    // --light-draws: 1 where the GPU selects each light's draws; the indirect calls recorded
+    // for them; how often the CPU built per-light lists (with gpu: never, on any view).
+    count("light_draws_gpu", lightDraws_ ? 1.0 : 0.0);
+    if (lightDraws_) count("light_passes_indirect_calls", lights_ ? lights_->draws() : 0);
+    count("light_lists_cpu_builds", cpuListBuilds_);
     if (cull_) { // --cull-geometry frustum: meshlets and triangles, submitted and culled
         for (const auto& c : cull_->counters())
             s.counters.push_back(c);
@@ -183,8 +246,14 @@ RendererStats MultipassForwardRenderer::stats() const {
         for (const LightBatch& b : plan_.batches)
             for (const DrawItem* d : b.draws)
                 meshletDraws += cull_->kept(*d);
-        if (cull_->collected()) count("light_passes_meshlet_draws", meshletDraws);
+        if (cull_->collected() && !lightDraws_) count("light_passes_meshlet_draws", meshletDraws);
+        if (lightDraws_)
+            s.leftOut.push_back({"meshlet culling in light_passes",
+                                 "--light-draws gpu draws each lit mesh whole (the prepass and "
+                                 "base pass keep their culled meshlets)"});
     }
+    if (!listsWhy_.empty())
+        s.leftOut.push_back({"light_draws (--light-draws gpu)", listsWhy_ + ": lists on the CPU"});
     if (plan_.batches.empty())
         s.leftOut.push_back({"light_passes", plan_.localLights
                                                  ? "no local light touches a mesh on screen"

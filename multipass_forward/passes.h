@@ -27,6 +27,8 @@ class MeshletCull;
 
 namespace tp::mp {
 
+class LightDrawPass;
+
 // The accumulation target and depth every pass renders into: the single-sample exported
 // images at 1x, the per-sample ones under MSAA (resolved by the last pass into hdr).
 // Depth with a stencil: the light passes mark each sample they lit, so that coincident surfaces
@@ -59,6 +61,9 @@ struct PassEnv {
     // kept of their opaque and masked draws (drawOpaque); null: the meshes whole. The blended
     // pass always draws whole meshes (its triangle order is its own).
     const passes::MeshletCull* cull = nullptr;
+    // --light-draws gpu: the light passes draw each light's indirect draws written by this pass
+    // (whole meshes, also under --cull-geometry); null: the plan's CPU lists.
+    const LightDrawPass* lightDraws = nullptr;
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass
@@ -143,11 +148,16 @@ class LightPasses {
     explicit LightPasses(const PassEnv& env);
     ~LightPasses();
     void record(PassContext& pc, const Targets& t, bool resolve);
+    // Draws recorded: with CPU lists one per light and mesh; with GPU lists (env.lightDraws)
+    // the indirect calls (the draws they issue are the GPU's light_draw_meshes).
     uint32_t draws() const { return draws_; }
     uint32_t mapRenders() const { return mapRenders_; } // shadow maps rendered (--shadows)
     bool hasPipeline() const { return pipeline_ != VK_NULL_HANDLE; }
 
   private:
+    void bind(PassContext& pc, VkPipeline pipeline) const;
+    void recordDraws(PassContext& pc, const LightBatch& batch);
+
     const PassEnv env_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipeline shadowed_ = VK_NULL_HANDLE; // --shadows: the twin, for the shadowed lights

@@ -9,11 +9,17 @@
 //   fragment block (docs/clustered.md, "The blended depth bounds on lavapipe").
 //   TP_VERT_MESHLET_TRIANGLE (scene_meshlet_vert, scene_position_meshlet_vert): also the
 //   culled meshlet's first triangle, flat (the visibility pass's ids, include/meshlets.h).
+//   TP_VERT_MATERIAL_INSTANCE (scene_material_vert): the material index from firstInstance,
+//   flat (multipass forward's indirect light draws: many materials in one call).
 #include "include/shared.h"
 #include "include/scene_bindings.glsl"
 #ifdef TP_VERT_MESHLET_TRIANGLE
 #include "include/meshlets.h"
 layout(location = TP_LOCATION_MESHLET_TRIANGLE) flat out uint outMeshletTriangle;
+#endif
+
+#ifdef TP_VERT_MATERIAL_INSTANCE
+layout(location = TP_LOCATION_MATERIAL) flat out uint outMaterial;
 #endif
 
 layout(location = 0) out vec3 outPosition;
@@ -49,6 +55,9 @@ void main() {
     outColor = v.color;
 #endif
     outOne = frame.projParams.z;
+#ifdef TP_VERT_MATERIAL_INSTANCE
+    outMaterial = uint(gl_InstanceIndex); // firstInstance: one instance per command
+#endif
 #ifdef TP_VERT_MESHLET_TRIANGLE
     outMeshletTriangle = uint(gl_InstanceIndex); // firstInstance: one instance per command
 #endif

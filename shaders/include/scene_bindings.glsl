@@ -22,4 +22,8 @@ layout(set = TP_SET_SCENE, binding = TP_BINDING_TEXTURES) uniform sampler2D text
 layout(push_constant) uniform DrawBlock {
     DrawPush draw;
 };
+
+// scene.vert's flat material output (TP_VERT_MATERIAL_INSTANCE) and scene_inputs.glsl's input
+// (TP_MATERIAL_FROM_INSTANCE); 6 is the meshlet triangle (include/meshlets.h).
+#define TP_LOCATION_MATERIAL 7
 #endif

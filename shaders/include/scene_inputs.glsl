@@ -31,6 +31,15 @@
 layout(location = 0) TP_IN vec3 inPosition; // camera-relative: world minus the eye (scene.vert)
 layout(location = 5) TP_IN float inOne; // 1, interpolated: see scene.vert
 #ifndef TP_INPUTS_POSITION_ONLY
+// TP_MATERIAL_FROM_INSTANCE: the material from scene_material_vert (the draw's firstInstance),
+// not from DrawPush: an indirect call draws meshes of many materials (multipass forward's
+// light passes with --light-lists gpu).
+#ifdef TP_MATERIAL_FROM_INSTANCE
+layout(location = TP_LOCATION_MATERIAL) flat in uint inMaterial;
+#define TP_DRAW_MATERIAL inMaterial
+#else
+#define TP_DRAW_MATERIAL draw.materialIndex
+#endif
 layout(location = 1) TP_IN vec3 inNormal;
 layout(location = 2) TP_IN vec2 inUv;
 layout(location = 3) TP_IN vec4 inTangent;
@@ -42,7 +51,7 @@ layout(location = 4) TP_IN vec4 inColor;
 // pixel centre for a sample ((a/w)_s / (1/w)_centre), it restores (a/w)_s / (1/w)_s.
 #define TP_EVAL_MATERIAL_READ(READ)                                                                    \
     float k = 1.0 / READ(inOne);                                                                      \
-    return evalMaterial(materials[draw.materialIndex], READ(inPosition) * k, READ(inNormal) * k,       \
+    return evalMaterial(materials[TP_DRAW_MATERIAL], READ(inPosition) * k, READ(inNormal) * k,       \
                         READ(inUv) * k, READ(inTangent) * k, READ(inColor) * k, gl_FrontFacing)
 
 MaterialSample evalFragmentMaterial() { TP_EVAL_MATERIAL_READ(TP_INPUT); }

@@ -10,3 +10,10 @@ triptych_add_shader(SPVS ${SHADER_DIR}/alpha_reset.frag mp_alpha_reset_frag)
 # --blended-lights one-pass: blended surfaces lit by every light in one pass.
 triptych_add_shader(SPVS ${SHADER_DIR}/one_pass.frag mp_one_pass_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/one_pass.frag mp_one_pass_pixel_frag DEFINES TP_INPUTS_AT_PIXEL=1)
+# --light-draws gpu: the light passes' draws are indirect (light_draws.comp writes them), each
+# command's material in its firstInstance (scene_material_vert passes it on, flat).
+triptych_add_shader(SPVS ${SHADER_DIR}/light_draws.comp mp_light_draws_comp)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_frag
+  DEFINES TP_MATERIAL_FROM_INSTANCE=1)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_pixel_frag
+  DEFINES TP_MATERIAL_FROM_INSTANCE=1 TP_INPUTS_AT_PIXEL=1)

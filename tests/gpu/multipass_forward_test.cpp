@@ -238,7 +238,14 @@ TEST(MultipassForward, LightsTouchingNoMeshIssueNoDraw) {
     EXPECT_EQ(statOf(none, "lights_skipped"), 2.0);
     EXPECT_EQ(statOf(none, "light_passes_draws"), 0.0);
     EXPECT_EQ(statOf(none, "meshes_per_light_max"), 0.0);
+    // Both lights' scissors are off-screen: no light pass, with the GPU's lists (the default)
+    // as with the CPU's.
     EXPECT_EQ(std::count(none.passes.begin(), none.passes.end(), "light_passes"), 0);
+    RenderSettings cpuLists = s;
+    cpuLists.set("light-draws", "cpu");
+    RunResult noneCpu = runOrFail(*ctx, gpu, "multipass_forward", cpuLists);
+    EXPECT_EQ(statOf(noneCpu, "lights_skipped"), 2.0);
+    EXPECT_EQ(std::count(noneCpu.passes.begin(), noneCpu.passes.end(), "light_passes"), 0);
 
     scene.lights.push_back(point({0, 1.6f, 0}, 0.8f, 5.0f)); // above the box, off the floor
     gpu.setLights(scene.lights);

@@ -39,6 +39,7 @@ const std::set<std::string> kMayReplan = {};
 const std::vector<std::pair<std::string, std::string>> kViewKnobs = {
     {"light-bin", "cpu"},           {"light-bin", "gpu"},          {"light-assign", "clustered"},
     {"light-lists", "linked"},      {"deferred-lighting", "volumes"},
+    {"light-draws", "cpu"}, // multipass forward: its per-light lists rebuilt on the CPU per view
     {"blended-lights", "one-pass"}, {"vis-blended", "forward"},
     {"cull-geometry", "frustum"}, // the meshlets kept follow the camera on the GPU
     // Occlusion's history is the last view's visible set: the late phase draws what the new

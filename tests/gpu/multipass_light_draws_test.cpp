@@ -1,0 +1,150 @@
+// Multipass forward's per-light draw lists on the GPU (--light-draws gpu, the default;
+// multipass_forward/light_draw_pass.h) against the CPU's lists (--light-draws cpu, the light plan
+// as it was built before): the same images bit for bit and the same counters, at 1x and 4x at both
+// shading rates, with meshlet culling, shadows, fp16 and every --blended-lights; and, over several
+// views of one planned renderer, no per-light list built on the CPU while the counters stay those
+// of a CPU plan of each view.
+#include <cstring>
+
+#include "core/cli/shadow_option.h"
+#include "core/runner/render_session.h"
+#include "gpu_test_util.h"
+
+// Named: the GPU tests build as unity files, where other tests' anonymous helpers are visible.
+namespace tp::test::mp_light_draws {
+namespace {
+
+// The counters the light plan gives, which the GPU lists must give alike (after the frame).
+const char* const kPlanCounters[] = {"lights_skipped",      "meshes_per_light_mean",
+                                     "meshes_per_light_max", "light_passes_draws",
+                                     "blended_light_draws",  "blended_draws",
+                                     "local_lights",         "draws"};
+
+struct Config {
+    std::string name;
+    uint32_t msaa = 1;
+    std::map<std::string, std::string> knobs;
+    const char* shadows = nullptr;
+};
+
+void PrintTo(const Config& c, std::ostream* os) {
+    *os << c.name;
+}
+
+// The courtyard with point lights, six directional ones (two beyond the base pass's four:
+// full-screen light passes, TP_MPLD_FLAG_ALL) and one light behind the camera.
+Scene sceneWithLights() {
+    Scene s = courtyardSmallWithLights(40, 11);
+    for (int i = 0; i < 6; ++i) {
+        Light d;
+        d.type = LightType::Directional;
+        d.direction = glm::normalize(glm::vec3(0.3f * float(i) - 0.7f, -1.0f, 0.2f * float(i)));
+        d.color = glm::vec3(1.0f, 0.9f, 0.8f);
+        d.intensity = 0.2f;
+        s.lights.push_back(d);
+    }
+    // And one behind the camera, which every list skips.
+    Light behind;
+    behind.position = s.camera.position + 3.0f * glm::normalize(s.camera.position - s.camera.target);
+    behind.range = 0.5f;
+    s.lights.push_back(behind);
+    return s;
+}
+
+RunResult render(GpuContext& ctx, const Scene& scene, const Config& c, const char* lists) {
+    RenderSettings s;
+    s.width = 96;
+    s.height = 64;
+    s.msaa = c.msaa;
+    s.knobs = c.knobs;
+    s.knobs["light-draws"] = lists;
+    if (c.shadows) s.shadows = parseShadowCount(c.shadows);
+    SceneGpu gpu(ctx, scene);
+    return runOrFail(ctx, gpu, "multipass_forward", s);
+}
+
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && !a.empty() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+class MultipassLightDraws : public ::testing::TestWithParam<Config> {};
+
+TEST_P(MultipassLightDraws, GpuListsRenderTheCpuListsImageWithTheirCounters) {
+    const Config& c = GetParam();
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Scene scene = sceneWithLights();
+    const RunResult cpu = render(*ctx, scene, c, "cpu");
+    const RunResult gpu = render(*ctx, scene, c, "gpu");
+    EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0) << "fell back to the CPU";
+    EXPECT_EQ(cpu.stats.counter("light_draws_gpu"), 0.0);
+    EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba))
+        << c.name << ": colour differs in " << differingPixels(gpu.hdr, cpu.hdr) << " pixels";
+    EXPECT_TRUE(sameBits(gpu.depth.r, cpu.depth.r)) << c.name << ": depth differs";
+    for (const char* name : kPlanCounters)
+        EXPECT_EQ(gpu.stats.counter(name, -1), cpu.stats.counter(name, -2)) << c.name << ": " << name;
+    EXPECT_GT(cpu.stats.counter("light_passes_draws"), 0.0);
+    EXPECT_GT(cpu.stats.counter("lights_skipped"), 0.0) << "no light is skipped: a weak check";
+    expectNoValidationMessages(*ctx);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Configs, MultipassLightDraws,
+    ::testing::Values(Config{"1x"}, Config{"4x_pixel", 4, {{"msaa-shading", "pixel"}}},
+                      Config{"4x_sample", 4, {{"msaa-shading", "sample"}}},
+                      Config{"1x_additive", 1, {{"blended-lights", "additive"}}},
+                      Config{"1x_one_pass", 1, {{"blended-lights", "one-pass"}}},
+                      Config{"1x_fp16", 1, {{"accum", "fp16"}}},
+                      Config{"1x_cull_frustum", 1, {{"cull-geometry", "frustum"}}},
+                      Config{"4x_cull_full", 4, {{"cull-geometry", "full"}}},
+                      Config{"1x_shadows", 1, {}, "3"},
+                      Config{"4x_shadows_cull", 4, {{"cull-geometry", "frustum"}}, "all"}),
+    [](const ::testing::TestParamInfo<Config>& info) { return info.param.name; });
+
+// A renderer planned once and moved through an orbit: with GPU lists no view builds a per-light
+// list on the CPU (light_lists_cpu_builds stays 0; with cpu it counts every view), and each
+// view's counters are those of a CPU plan made at that view.
+TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = sceneWithLights();
+    const Camera a = scene.camera;
+    RenderSettings settings;
+    settings.width = 96;
+    settings.height = 64;
+    settings.manyViews = true;
+    std::map<std::string, std::unique_ptr<RendererSession>> sessions;
+    Result<const RendererEntry*> entry = findRenderer("multipass_forward");
+    ASSERT_TRUE(entry.ok());
+    SceneGpu gpu(*ctx, scene);
+    for (const char* lists : {"gpu", "cpu"}) {
+        RenderSettings s = settings;
+        s.knobs["light-draws"] = lists;
+        auto session = RendererSession::create(*ctx, gpu, **entry, analyzeScene(scene, 1), s);
+        ASSERT_TRUE(session.ok()) << session.error();
+        sessions[lists] = std::move(*session);
+    }
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    const int views = 4;
+    for (int v = 0; v < views; ++v) {
+        scene.camera = a;
+        scene.camera.position += glm::vec3(-0.8f * float(v), -0.2f * float(v), 0.5f * float(v));
+        Result<RunResult> g = sessions["gpu"]->render(once);
+        Result<RunResult> c = sessions["cpu"]->render(once);
+        ASSERT_TRUE(g.ok() && c.ok());
+        EXPECT_EQ(g->stats.counter("light_lists_cpu_builds", -1), 0.0) << "view " << v;
+        EXPECT_EQ(c->stats.counter("light_lists_cpu_builds", -1), double(v + 1)) << "view " << v;
+        for (const char* name : kPlanCounters)
+            EXPECT_EQ(g->stats.counter(name, -1), c->stats.counter(name, -2))
+                << "view " << v << ": " << name;
+    }
+    EXPECT_EQ(sessions["gpu"]->replans(), 0u);
+    EXPECT_EQ(sessions["gpu"]->updates(), uint32_t(views - 1));
+    expectNoValidationMessages(*ctx);
+}
+
+} // namespace
+} // namespace tp::test::mp_light_draws
