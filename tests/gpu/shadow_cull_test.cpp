@@ -18,6 +18,7 @@
 
 #include "core/gpu/readback.h"
 #include "core/passes/shadow_maps.h"
+#include "core/runner/render_session.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {
@@ -214,6 +215,55 @@ TEST(ShadowCull, DeferredVolumesSameImageMsaa4) {
     expectSameShadowedImage({"deferred", {{"deferred-lighting", "volumes"}}, true, 4});
 }
 TEST(ShadowCull, MultipassForwardSameImage) { expectSameShadowedImage({"multipass_forward", {}, true, 1}); }
+
+// Lights that move between the views of a planned renderer (RendererSession): the faces' rows
+// follow (ShadowMaps::stale: uploaded again, the kept atlas rendered again, or a new plan when
+// they outgrow what was planned), and the image is what an unculled renderer planned there
+// renders, bit for bit.
+void expectMovedLightsAsUnculled(const std::string& pipeline, bool cache) {
+    SCOPED_TRACE(pipeline + (cache ? "" : " --shadow-cache off"));
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = shadowCourtyard();
+    RenderSettings s;
+    s.width = 96;
+    s.height = 54;
+    s.shadows.count = kShadowedLights;
+    s.shadows.cache = cache;
+    s.manyViews = true;
+    std::vector<Light> moved = scene.lights;
+    for (size_t i = 0; i < moved.size(); ++i)
+        moved[i].position += glm::vec3(0.02f * std::sin(float(i)), 0.01f, 0.02f * std::cos(float(i)));
+    SceneGpu gpu(*ctx, scene);
+    RenderSettings culled = s;
+    culled.set("cull-geometry", "frustum");
+    Result<const RendererEntry*> entry = findRenderer(pipeline);
+    ASSERT_TRUE(entry.ok());
+    auto session =
+        RendererSession::create(*ctx, gpu, **entry, analyzeScene(scene, 1), culled);
+    ASSERT_TRUE(session.ok()) << session.error();
+    RunOptions once;
+    once.warmupFrames = 0;
+    once.timedFrames = 1;
+    ASSERT_TRUE((*session)->render(once).ok());
+    gpu.setLights(moved);
+    Result<RunResult> after = (*session)->render(once);
+    ASSERT_TRUE(after.ok()) << after.error();
+    const RunResult fresh = runOrFail(*ctx, gpu, pipeline, s);
+    expectNoValidationMessages(*ctx);
+    std::printf("[ shadow cull ] %s, lights moved: %u updates, %u replans, %zu pixels differ\n",
+                pipeline.c_str(), (*session)->updates(), (*session)->replans(),
+                differingPixels(after->hdr, fresh.hdr));
+    EXPECT_EQ((*session)->updates(), 1u) << "moved 2 cm: the same plan, followed in place";
+    EXPECT_EQ(differingPixels(after->hdr, fresh.hdr), 0u);
+    EXPECT_EQ(after->depth.r, fresh.depth.r);
+}
+
+TEST(ShadowCull, MovedLightsAsUnculled) {
+    expectMovedLightsAsUnculled("forwardplus", true);
+    expectMovedLightsAsUnculled("forwardplus", false);
+    expectMovedLightsAsUnculled("multipass_forward", true);
+}
 
 } // namespace
 } // namespace tp::test
