@@ -103,21 +103,21 @@ void ShadowCull::allocate(const std::string& owner) {
                                  "per (face, draw) a range (kept for the kept atlas's renders)"});
     ownCounts_ = createBuffer(ctx_, rowCapacity_ * sizeof(uint32_t), usage, MemoryKind::Device,
                               {owner, pass, "shadow_draw_counts", "per (face, draw): its draws"});
-    ownStats_ = createBuffer(ctx_, rowCapacity_ * sizeof(gpu::ShadowCullStats), usage,
-                             MemoryKind::Device,
-                             {owner, pass, "shadow_cull_stats",
-                              "per (face, draw): meshlets kept, culled by frustum and range"});
+    ownStats_ =
+        createBuffer(ctx_, rowCapacity_ * sizeof(gpu::ShadowCullStats), usage, MemoryKind::Device,
+                     {owner, pass, "shadow_cull_stats",
+                      "per (face, draw): meshlets kept, culled by frustum and range"});
 }
 
 void ShadowCull::prepare(FrameGraph* graph, const std::string& owner) {
     std::vector<gpu::ShadowCullRow> padded = rows_;
     padded.resize(rowCapacity_);
-    table_ = createBufferWithData(ctx_, padded.data(), padded.size() * sizeof(gpu::ShadowCullRow),
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  {owner, "", "shadow_cull_rows",
-                                   "per (face, draw) a shadow face may see: its meshlets, its "
-                                   "range of commands"});
+    table_ =
+        createBufferWithData(ctx_, padded.data(), padded.size() * sizeof(gpu::ShadowCullRow),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             {owner, "", "shadow_cull_rows",
+                              "per (face, draw) a shadow face may see: its meshlets, its "
+                              "range of commands"});
     const std::vector<ExternalBuffer> externals = {{TP_SC_BINDING_MESHLETS, scene_.meshletBuffer()},
                                                    {TP_SC_BINDING_ROWS, table_.buffer},
                                                    {TP_SC_BINDING_FACES, scene_.shadowFaces()}};
@@ -164,9 +164,9 @@ void ShadowCull::record(VkCommandBuffer cmd) const {
 
 void ShadowCull::recordDraw(VkCommandBuffer cmd, uint32_t row) const {
     if (rowMeshlets_.at(row) == 0) return;
-    vkCmdDrawIndexedIndirectCount(cmd, commandBuffer_, VkDeviceSize(rows_[row].firstCommand) * kCommandBytes,
-                                  countBuffer_, VkDeviceSize(row) * sizeof(uint32_t),
-                                  rowMeshlets_[row], uint32_t(kCommandBytes));
+    vkCmdDrawIndexedIndirectCount(
+        cmd, commandBuffer_, VkDeviceSize(rows_[row].firstCommand) * kCommandBytes, countBuffer_,
+        VkDeviceSize(row) * sizeof(uint32_t), rowMeshlets_[row], uint32_t(kCommandBytes));
 }
 
 void ShadowCull::collect(FrameGraph* graph) {

@@ -78,12 +78,12 @@ class ShadowCull {
     GpuContext& ctx_;
     SceneGpu& scene_;
     std::vector<gpu::ShadowCullRow> rows_;
-    std::vector<uint32_t> rowFirst_;         // by face: its first row
-    std::vector<uint32_t> rowMeshlets_;      // by row: the draw's meshlets (the command range)
+    std::vector<uint32_t> rowFirst_;    // by face: its first row
+    std::vector<uint32_t> rowMeshlets_; // by row: the draw's meshlets (the command range)
     uint32_t rowCapacity_ = 0, commandCapacity_ = 0;
     uint64_t meshlets_ = 0;
     bool inFrame_ = false;
-    ResourceHandle commands_, counts_, stats_; // in a frame
+    ResourceHandle commands_, counts_, stats_;  // in a frame
     Buffer ownCommands_, ownCounts_, ownStats_; // outside the frames
     Buffer table_;
     std::string owner_;

@@ -26,10 +26,12 @@ namespace {
 
 constexpr uint32_t kShadowedLights = 16;
 
-Scene shadowCourtyard() { return courtyardSmallWithLights(64, 3); }
+Scene shadowCourtyard() {
+    return courtyardSmallWithLights(64, 3);
+}
 
 void expectShadowCountersAddUp(const std::vector<std::pair<std::string, double>>& counters,
-                         const std::string& what) {
+                               const std::string& what) {
     auto get = [&](const std::string& name) {
         for (const auto& [n, v] : counters)
             if (n == name) return v;
@@ -117,8 +119,8 @@ TEST(ShadowCull, AtlasTheSameWhereverTheLightReaches) {
                 if (a > 0.0f) ++covered;
                 const double u = ((x + 0.5) / edge * 2.0 - 1.0) * halfTan;
                 const double v = ((y + 0.5) / edge * 2.0 - 1.0) * halfTan;
-                const double dist = a > 0.0f ? f.params.y / a * std::sqrt(1.0 + u * u + v * v)
-                                             : INFINITY;
+                const double dist =
+                    a > 0.0f ? f.params.y / a * std::sqrt(1.0 + u * u + v * v) : INFINITY;
                 const bool differ = std::memcmp(&a, &b, sizeof(float)) != 0;
                 nearer += b > a; // culling may only take fragments away
                 if (dist <= reach) {
@@ -145,7 +147,8 @@ struct ShadowCullCase {
     uint32_t msaa = 1;
     std::string name() const {
         std::string n = pipeline;
-        for (const auto& [k, v] : knobs) n += " --" + k + " " + v;
+        for (const auto& [k, v] : knobs)
+            n += " --" + k + " " + v;
         return n + (cache ? "" : " --shadow-cache off") + " " + std::to_string(msaa) + "x";
     }
 };
@@ -161,7 +164,8 @@ void expectSameShadowedImage(const ShadowCullCase& c) {
     s.msaa = c.msaa;
     s.shadows.count = kShadowedLights;
     s.shadows.cache = c.cache;
-    for (const auto& [k, v] : c.knobs) s.set(k, v);
+    for (const auto& [k, v] : c.knobs)
+        s.set(k, v);
     const RunResult none = runOrFail(*ctx, gpu, c.pipeline, s);
     s.set("cull-geometry", "frustum");
     const RunResult culled = runOrFail(*ctx, gpu, c.pipeline, s, 2);
@@ -169,7 +173,8 @@ void expectSameShadowedImage(const ShadowCullCase& c) {
     const std::string what = c.name();
     EXPECT_EQ(none.stats.counter("shadow_meshlets_submitted", -1), -1) << "none counts nothing";
     EXPECT_EQ(none.stats.counter("shadow_triangles", -1),
-              culled.stats.counter("shadow_triangles", -2)) << what;
+              culled.stats.counter("shadow_triangles", -2))
+        << what;
     expectShadowCountersAddUp(culled.stats.counters, what);
     ASSERT_EQ(none.depth.r, culled.depth.r) << what << ": culling changed the depth";
     const size_t differ = differingPixels(none.hdr, culled.hdr);
@@ -197,7 +202,9 @@ TEST(ShadowCull, ShadowsShowInTheImage) {
 }
 
 // The kept atlas (rendered once, outside the frames) and the atlas of every frame.
-TEST(ShadowCull, ForwardPlusKeptAtlasSameImage) { expectSameShadowedImage({"forwardplus", {}, true, 1}); }
+TEST(ShadowCull, ForwardPlusKeptAtlasSameImage) {
+    expectSameShadowedImage({"forwardplus", {}, true, 1});
+}
 TEST(ShadowCull, ForwardPlusKeptAtlasSameImageMsaa4) {
     expectSameShadowedImage({"forwardplus", {}, true, 4});
 }
@@ -214,7 +221,9 @@ TEST(ShadowCull, DeferredVolumesSameImage) {
 TEST(ShadowCull, DeferredVolumesSameImageMsaa4) {
     expectSameShadowedImage({"deferred", {{"deferred-lighting", "volumes"}}, true, 4});
 }
-TEST(ShadowCull, MultipassForwardSameImage) { expectSameShadowedImage({"multipass_forward", {}, true, 1}); }
+TEST(ShadowCull, MultipassForwardSameImage) {
+    expectSameShadowedImage({"multipass_forward", {}, true, 1});
+}
 
 // Lights that move between the views of a planned renderer (RendererSession): the faces' rows
 // follow (ShadowMaps::stale: uploaded again, the kept atlas rendered again, or a new plan when
@@ -233,14 +242,14 @@ void expectMovedLightsAsUnculled(const std::string& pipeline, bool cache) {
     s.manyViews = true;
     std::vector<Light> moved = scene.lights;
     for (size_t i = 0; i < moved.size(); ++i)
-        moved[i].position += glm::vec3(0.02f * std::sin(float(i)), 0.01f, 0.02f * std::cos(float(i)));
+        moved[i].position +=
+            glm::vec3(0.02f * std::sin(float(i)), 0.01f, 0.02f * std::cos(float(i)));
     SceneGpu gpu(*ctx, scene);
     RenderSettings culled = s;
     culled.set("cull-geometry", "frustum");
     Result<const RendererEntry*> entry = findRenderer(pipeline);
     ASSERT_TRUE(entry.ok());
-    auto session =
-        RendererSession::create(*ctx, gpu, **entry, analyzeScene(scene, 1), culled);
+    auto session = RendererSession::create(*ctx, gpu, **entry, analyzeScene(scene, 1), culled);
     ASSERT_TRUE(session.ok()) << session.error();
     RunOptions once;
     once.warmupFrames = 0;
