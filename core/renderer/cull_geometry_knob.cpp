@@ -18,8 +18,8 @@ const ChoiceKnob<CullGeometry>& cullGeometryKnob() {
         "prepass and opaque shading, deferred's G-buffer, the visibility buffer's visibility "
         "pass, multipass forward's depth prepass, base and light passes; with --shadows, frustum "
         "and full also cull every shadow face's meshlets by the face's frustum and the light's "
-        "range (no occlusion, no cone: the maps see both sides), one compute dispatch per map "
-        "render; blended draws and the reference are drawn whole (docs/geometry.md, "
+        "range (no occlusion, no cone: the maps see both sides), one compute dispatch per atlas "
+        "render or per frame for the per-light maps; blended draws and the reference are drawn whole (docs/geometry.md, "
         "docs/shadows.md)"};
     return k;
 }
