@@ -30,7 +30,7 @@ class DeferredRenderer final : public Renderer {
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
                     def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin),
                     def_.manyViews),
-          volumes_(info.ctx, info.scene), blended_(info.ctx, info.scene) {}
+          volumes_(info.ctx, info.scene, def_.cullGeometry), blended_(info.ctx, info.scene) {}
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, def_.gbuffer, def_.sampling.samples);
@@ -84,7 +84,7 @@ class DeferredRenderer final : public Renderer {
                                                  t_.msaa() && !t_.blendedPerPixel(),
                                                  t_.blendedPerPixel()});
         if (!useVolumes()) { // tiled lighting samples every shadowed light's map: the atlas
-            shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas);
+            shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, def_.cullGeometry);
             shadows_->plan(graph); // shadow_maps, with --shadows
         }
         if (tilePass)
@@ -172,6 +172,8 @@ class DeferredRenderer final : public Renderer {
                 volumeEdges_ += mask.rgba[i * 4] > 0.5f ? 1 : 0;
         }
         if (cull_) cull_->collect(graph);
+        if (shadows_) shadows_->collect(graph);
+        if (useVolumes()) volumes_.collectShadows(graph);
     }
 
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;

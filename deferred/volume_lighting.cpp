@@ -92,7 +92,7 @@ void VolumeLighting::plan(FrameGraph& graph, DeferredTargets& t) {
     // time (the map renders and these volumes) is apart from the unshadowed lights'. Nothing
     // new is declared without shadows.
     if (shadows_.plan(graph).valid()) {
-        lights.push_back({shadows_.map(), Use::DepthAttachment});
+        for (const PassUse& u : shadows_.perLightUses()) lights.push_back(u); // map, culled draws
         graph.addPass("volume_shadowed_lights", lights,
                       [this](PassContext& pc) { recordShadowedLights(pc); });
     }

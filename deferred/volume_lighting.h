@@ -38,8 +38,9 @@ bool drawsCone(const gpu::LightGpu& light);
 
 class VolumeLighting {
   public:
-    VolumeLighting(GpuContext& ctx, SceneGpu& scene)
-        : ctx_(ctx), scene_(scene), shadows_(ctx, scene, ShadowMaps::Residency::PerLight) {}
+    // cull: --cull-geometry, for the shadowed lights' maps (ShadowMaps).
+    VolumeLighting(GpuContext& ctx, SceneGpu& scene, CullGeometry cull)
+        : ctx_(ctx), scene_(scene), shadows_(ctx, scene, ShadowMaps::Residency::PerLight, cull) {}
     ~VolumeLighting();
     void plan(FrameGraph& graph, DeferredTargets& t);
     void prepare(FrameGraph& graph);
@@ -49,6 +50,7 @@ class VolumeLighting {
     bool shadowPass() const { return shadows_.map().valid(); }
     // The shadow map's counters for the renderer's stats (none without --shadows).
     std::vector<std::pair<std::string, double>> shadowCounters() const { return shadows_.counters(); }
+    void collectShadows(FrameGraph& graph) { shadows_.collect(graph); } // after the frames
 
   private:
     struct Stage {

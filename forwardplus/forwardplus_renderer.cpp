@@ -123,7 +123,8 @@ class ForwardPlusRenderer final : public Renderer {
         culling_->plan(graph, {depthSrc, tiles_, indices_, counter_, masks_, blendBounds, spheres,
                                centreBounds});
 
-        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas); // shadow_maps, if any
+        // shadow_maps, if any (its faces culled with --cull-geometry)
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, fp_.cullGeometry);
         shadows_->plan(graph);
         shading_.emplace(ctx_, scene_,
                          fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),
@@ -216,6 +217,7 @@ class ForwardPlusRenderer final : public Renderer {
             std::memcpy(maskBits_.data(), m.data(), maskBits_.size() * 4);
         }
         if (cull_) cull_->collect(graph);
+        if (shadows_) shadows_->collect(graph);
         collected_ = true;
     }
 

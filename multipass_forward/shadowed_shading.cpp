@@ -11,7 +11,8 @@
 namespace tp::mp {
 
 void addShadowUse(std::vector<PassUse>& uses, const ShadowMaps* shadows) {
-    if (shadows && shadows->enabled()) uses.push_back({shadows->map(), Use::DepthAttachment});
+    if (shadows)
+        for (const PassUse& u : shadows->perLightUses()) uses.push_back(u); // map, culled draws
 }
 
 VkPipeline createShadowedTwin(const PassEnv& env, GraphicsPipelineDesc d) {

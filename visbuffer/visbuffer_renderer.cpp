@@ -111,7 +111,7 @@ class VisbufferRenderer final : public Renderer {
                                          {lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
                                           vis_.sampling.perPixelUnderMsaa()});
         // The resolve samples every shadowed light's map: the atlas, rendered before it.
-        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas);
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, vis_.cullGeometry);
         shadows_->plan(graph); // shadow_maps, with --shadows
         lt_.shadows = &*shadows_;
         lighting_.plan(graph, surfaceSource(), lt_, false, blended_.sliceRows(), bounds);
@@ -181,6 +181,7 @@ class VisbufferRenderer final : public Renderer {
         }
         if (cull_) cull_->collect(graph);
         if (raster_) raster_->collect(graph);
+        if (shadows_) shadows_->collect(graph);
     }
 
     // Many views, derived pool: a view that dropped blended fragments is rendered again with a

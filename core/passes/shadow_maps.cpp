@@ -7,6 +7,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpu/vk_check.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/passes/shadow_cull.h"
 
 namespace tp {
 namespace {
@@ -33,10 +34,11 @@ bool faceSees(const gpu::ShadowFace& f, glm::vec3 light, float range, const Aabb
 
 } // namespace
 
-ShadowMaps::ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency)
-    : ctx_(ctx), scene_(scene), residency_(residency) {}
+ShadowMaps::ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency, CullGeometry cull)
+    : ctx_(ctx), scene_(scene), residency_(residency), cullMode_(cull) {}
 
 ShadowMaps::~ShadowMaps() {
+    cull_.reset();
     for (VkPipeline p : {opaque_, mask_})
         if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
@@ -55,6 +57,14 @@ std::vector<PassUse> ShadowMaps::sampledUses() const {
     return {{map_, Use::Sampled}};
 }
 
+std::vector<PassUse> ShadowMaps::perLightUses() const {
+    if (!enabled()) return {};
+    std::vector<PassUse> uses = {{map_, Use::DepthAttachment}};
+    if (cull_)
+        for (const PassUse& u : cull_->drawUses()) uses.push_back(u);
+    return uses;
+}
+
 bool ShadowMaps::stale() {
     if (scene_.shadowGeneration() != generation_) return true; // other lights or sizes, or none
     if (!enabled()) return false;
@@ -62,7 +72,9 @@ bool ShadowMaps::stale() {
     if (now.size() == culledLights_.size() &&
         std::memcmp(now.data(), culledLights_.data(), now.size() * sizeof(gpu::LightGpu)) == 0)
         return false;
-    cullFaces(); // a shadowed light moved: its faces see other draws, the kept maps are stale
+    // A shadowed light moved: its faces see other draws, the kept maps are stale. Culled in the
+    // frame, rows beyond the planned buffers need a new plan.
+    if (!cullFaces()) return true;
     if (cached()) renderCached();
     return false;
 }
@@ -80,6 +92,15 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
     const ShadowPlan& p = scene_.shadowPlan();
     const std::string lights = std::to_string(p.lights.size()) + " lights";
     kept_ = Image();
+    cull_.reset();
+    if (cullMode_ != CullGeometry::None) {
+        cull_ = std::make_unique<ShadowCull>(ctx_, scene_);
+        cullFaces(); // sizes its rows
+        if (cached())
+            cull_->allocate(graph.owner());
+        else
+            cull_->plan(graph); // "shadow_cull", before the passes that draw the faces
+    }
     if (cached()) {
         kept_ = createImage(ctx_, {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight, 1, VK_SAMPLE_COUNT_1_BIT,
                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
@@ -90,8 +111,10 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
         map_ = graph.createImage("shadow_atlas", {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight,
                                                   VK_SAMPLE_COUNT_1_BIT,
                                                   "shadow maps of " + lights + ", all resident"});
-        graph.addPass("shadow_maps", {{map_, Use::DepthAttachment}},
-                      [this](PassContext& pc) { recordAtlas(pc); });
+        std::vector<PassUse> uses = {{map_, Use::DepthAttachment}};
+        if (cull_)
+            for (const PassUse& u : cull_->drawUses()) uses.push_back(u);
+        graph.addPass("shadow_maps", uses, [this](PassContext& pc) { recordAtlas(pc); });
     } else {
         // Declared as the consumer's DepthAttachment, sampled between recordLight and endLight.
         map_ = graph.createImage("shadow_map", {VK_FORMAT_D32_SFLOAT, p.localWidth, p.localHeight,
@@ -107,6 +130,8 @@ SpecConstant ShadowMaps::specConstant() const {
 }
 
 void ShadowMaps::prepare(FrameGraph& graph) {
+    // Its pass is live whatever samples the map (it exports its statistics).
+    if (cull_) cull_->prepare(cached() ? nullptr : &graph, graph.owner());
     // Not enabled, or a per-frame atlas no live pass samples (the graph culled it): no set.
     if (!enabled() || (!cached() && !graph.isAllocated(map_))) return;
     set_ = createPassSet(ctx_, {{TP_BINDING_SHADOW_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -148,20 +173,40 @@ void ShadowMaps::bind(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBi
     vkCmdBindDescriptorSets(cmd, point, layout, TP_SET_SHADOW, 1, &set_.set, 0, nullptr);
 }
 
-void ShadowMaps::cullFaces() {
+bool ShadowMaps::cullFaces() {
     const ShadowPlan& plan = scene_.shadowPlan();
     faceDraws_.assign(plan.faces.size(), {});
-    faceDrawCount_ = 0;
+    faceDrawCount_ = faceTriangles_ = 0;
     std::vector<const DrawItem*> draws = scene_.drawList(DrawFilter::Opaque);
     for (const DrawItem* d : scene_.drawList(DrawFilter::Mask)) draws.push_back(d);
     for (uint32_t face = 0; face < plan.faces.size(); ++face) {
         const gpu::ShadowFace& f = plan.faces[face];
         const gpu::LightGpu& light = scene_.lightsGpu()[f.atlas.w]; // world space, as the boxes
         for (const DrawItem* d : draws)
-            if (faceSees(f, light.position, light.range, d->bounds)) faceDraws_[face].push_back(d);
+            if (faceSees(f, light.position, light.range, d->bounds)) {
+                faceDraws_[face].push_back(d);
+                faceTriangles_ += double(d->indexCount / 3);
+            }
         faceDrawCount_ += double(faceDraws_[face].size());
     }
     culledLights_ = shadowedLights();
+    return !cull_ || cull_->setRows(faceDraws_);
+}
+
+// One face's draws: whole, or (culled) each as the indirect draws of its kept meshlets.
+void ShadowMaps::recordFaceDraws(VkCommandBuffer cmd, uint32_t face, VkPipeline& bound) {
+    const std::vector<const DrawItem*>& draws = faceDraws_[face];
+    for (uint32_t k = 0; k < draws.size(); ++k) {
+        const DrawItem* d = draws[k];
+        const VkPipeline p = d->alphaMode == AlphaMode::Mask ? mask_ : opaque_;
+        if (p != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = p);
+        const gpu::DrawPush push{d->material, face, 0, 0};
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
+        if (cull_)
+            cull_->recordDraw(cmd, cull_->firstRowOf(face) + k);
+        else
+            vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, d->vertexOffset, 0);
+    }
 }
 
 // The faces as squares of the map (positive-height viewports: texel = origin + (ndc * 0.5 +
@@ -169,7 +214,10 @@ void ShadowMaps::cullFaces() {
 void ShadowMaps::recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t faceCount, bool local) {
     scene_.bindSceneSet(cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     bind(cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    scene_.bindIndexBuffer(cmd);
+    if (cull_)
+        scene_.bindMeshletIndexBuffer(cmd);
+    else
+        scene_.bindIndexBuffer(cmd);
     vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE); // a map sees both sides of every surface
     VkPipeline bound = VK_NULL_HANDLE;
     for (uint32_t face = firstFace; face < firstFace + faceCount; ++face) {
@@ -179,13 +227,7 @@ void ShadowMaps::recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t f
         const VkRect2D sc{{int32_t(origin.x), int32_t(origin.y)}, {f.atlas.z, f.atlas.z}};
         vkCmdSetViewport(cmd, 0, 1, &vp);
         vkCmdSetScissor(cmd, 0, 1, &sc);
-        for (const DrawItem* d : faceDraws_[face]) {
-            const VkPipeline p = d->alphaMode == AlphaMode::Mask ? mask_ : opaque_;
-            if (p != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = p);
-            const gpu::DrawPush push{d->material, face, 0, 0};
-            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
-            vkCmdDrawIndexed(cmd, d->indexCount, 1, d->firstIndex, d->vertexOffset, 0);
-        }
+        recordFaceDraws(cmd, face, bound);
     }
 }
 
@@ -251,6 +293,19 @@ void ShadowMaps::renderCached() {
         vkCmdResetQueryPool(cmd, pool, 0, 2);
         depthBarrier(cmd, kept_.image, false, true); // the old maps are discarded
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool, 0);
+        if (cull_) {
+            // Outside the graph: the last render's indirect reads before this one's writes, and
+            // the writes before this render's draws read them.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                          VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            cull_->record(cmd);
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                          VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+        }
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = kept_.view;
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -273,6 +328,11 @@ void ShadowMaps::renderCached() {
     vkDestroyQueryPool(ctx_.device, pool, nullptr);
     keptRenderMs_ = double(ticks[1] - ticks[0]) * ctx_.caps.timestampPeriodNs * 1e-6;
     ++keptRenders_;
+    if (cull_) cull_->collect(nullptr);
+}
+
+void ShadowMaps::collect(FrameGraph& graph) {
+    if (cull_ && !cached()) cull_->collect(&graph);
 }
 
 void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc.cmd, pc.image(map_).image, false); }
@@ -287,7 +347,10 @@ std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
         {"shadow_map_bytes", double(atlas ? p.atlasBytes() : p.localBytes())},
         {"shadow_map_renders_per_frame", cached() ? 0.0 : atlas ? 1.0 : double(p.lights.size())},
         {"shadow_face_draws", faceDrawCount_},
+        {"shadow_triangles", faceTriangles_},
         {"shadow_maps_cached", cached() ? 1.0 : 0.0}};
+    if (cull_)
+        for (const auto& kv : cull_->counters()) c.push_back(kv);
     if (cached()) {
         c.push_back({"shadow_maps_render_ms", keptRenderMs_});
         c.push_back({"shadow_maps_renders", double(keptRenders_)});

@@ -20,8 +20,17 @@
 // A consuming pipeline: plan() in its plan, declares `map()` as Sampled (Atlas) or as its
 // pass's DepthAttachment (PerLight) in the passes that read it, prepare() after compile, lays
 // out its pipelines with setLayout() as set 2 and specConstant(), bind()s the set before
-// shading. PerLight: recordLight() between renderings, then endLight() after shading with it.
+// shading. PerLight: recordLight() between renderings, then endLight() after shading with it;
+// the passes that call it declare perLightUses().
+//
+// --cull-geometry frustum|full: the faces' meshlets are culled on the GPU first
+// (core/passes/shadow_cull.h: the face's frustum and the light's range), one dispatch for
+// every face of a render ("shadow_cull" in the frame before "shadow_maps", or before the
+// per-light passes for all their lights; inside the kept atlas's one-time render), and each
+// (face, draw) is drawn as an indirect count draw of its kept meshlets. The maps are the same
+// wherever a receiver the light reaches reads them, the images bit for bit.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,19 +41,24 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
+#include "core/renderer/cull_geometry_knob.h"
 #include "include/shadows.h"
 
 namespace tp {
 
 class GpuContext;
 class SceneGpu;
+class ShadowCull;
 struct DrawItem;
 
 class ShadowMaps {
   public:
     enum class Residency { Atlas, PerLight };
 
-    ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency);
+    // cull: the pipeline's --cull-geometry (frustum and full cull the faces' meshlets alike:
+    // no occlusion for the maps).
+    ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency,
+               CullGeometry cull = CullGeometry::None);
     ~ShadowMaps();
     ShadowMaps(const ShadowMaps&) = delete;
     ShadowMaps& operator=(const ShadowMaps&) = delete;
@@ -68,12 +82,18 @@ class ShadowMaps {
     // What a pass that samples the atlas declares (Atlas only): nothing when not enabled() or
     // cached (the kept image is outside the graph, readable before any frame starts).
     std::vector<PassUse> sampledUses() const;
+    // What a pass that calls recordLight declares (PerLight): the map as its DepthAttachment
+    // and, when culled, the culled draws; nothing when not enabled().
+    std::vector<PassUse> perLightUses() const;
     // Binds the set (nothing when not enabled()).
     void bind(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const;
     // For Renderer::updateView: true when the plan changed its layout (other lights, other
     // sizes) since plan(): plan again. Cached: re-renders the kept atlas when a shadowed light
     // moved (or turned), between frames.
     bool stale();
+    // After the frames (a renderer's collectStats): the faces' cull statistics of the frame
+    // (nothing unless culled in the frame; the kept atlas reads its own after each render).
+    void collect(FrameGraph& graph);
 
     // PerLight, inside a pass that declared map() as its DepthAttachment and has no rendering
     // open: renders light `light`'s faces and leaves the map readable by fragment and compute
@@ -92,11 +112,16 @@ class ShadowMaps {
     void renderCached();
     std::vector<gpu::LightGpu> shadowedLights() const; // world space, as rendered
     void recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t faceCount, bool local);
-    void cullFaces(); // faceDraws_ from the plan and the lights as they are now
+    // faceDraws_ from the plan and the lights as they are now; false when culled in the frame
+    // and the rows outgrew the planned buffers.
+    bool cullFaces();
+    void recordFaceDraws(VkCommandBuffer cmd, uint32_t face, VkPipeline& bound);
 
     GpuContext& ctx_;
     SceneGpu& scene_;
     Residency residency_;
+    CullGeometry cullMode_;
+    std::unique_ptr<ShadowCull> cull_; // with --cull-geometry frustum|full and shadows
     ResourceHandle map_;
     FrameGraph* graph_ = nullptr;
     Image kept_;                              // the cached atlas
@@ -104,7 +129,7 @@ class ShadowMaps {
     // Per face, the draws that may reach it: culled once per plan and again when a shadowed
     // light moves, not at every recording.
     std::vector<std::vector<const DrawItem*>> faceDraws_;
-    double faceDrawCount_ = 0;
+    double faceDrawCount_ = 0, faceTriangles_ = 0; // one render of every face
     double keptRenderMs_ = 0;                 // its last one-time render, GPU time
     uint32_t keptRenders_ = 0;
     uint64_t generation_ = 0;

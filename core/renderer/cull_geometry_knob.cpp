@@ -16,8 +16,11 @@ const ChoiceKnob<CullGeometry>& cullGeometryKnob() {
         "built from their depth, the rest are drawn where their bounding sphere is not wholly "
         "behind it; the first frame treats every meshlet as visible). Culled: Forward+'s depth "
         "prepass and opaque shading, deferred's G-buffer, the visibility buffer's visibility "
-        "pass, multipass forward's depth prepass, base and light passes; blended draws, shadow "
-        "maps and the reference are drawn whole (docs/geometry.md)"};
+        "pass, multipass forward's depth prepass, base and light passes; with --shadows, frustum "
+        "and full also cull every shadow face's meshlets by the face's frustum and the light's "
+        "range (no occlusion, no cone: the maps see both sides), one compute dispatch per atlas "
+        "render or per frame for the per-light maps; blended draws and the reference are drawn whole (docs/geometry.md, "
+        "docs/shadows.md)"};
     return k;
 }
 

@@ -2,3 +2,6 @@
 # scene.vert's interface for prepass_mask.frag's alpha test.
 triptych_add_shader(SPVS ${SHADER_DIR}/shadow.vert shadow_vert)
 triptych_add_shader(SPVS ${SHADER_DIR}/shadow.vert shadow_mask_vert DEFINES TP_SHADOW_MASK=1)
+# The faces' meshlet cull (core/passes/shadow_cull.h, --cull-geometry frustum|full): each face's
+# frustum and its light's range per meshlet, indirect draws of the rest.
+triptych_add_shader(SPVS ${SHADER_DIR}/shadow_cull.comp shadow_cull_comp)
