@@ -12,7 +12,9 @@ COUNTERS = ["meshlets_submitted_early", "meshlets_submitted_late", "meshlets_cul
             "meshlets_culled_cone", "meshlets_culled_occlusion", "triangles_submitted", "triangles"]
 
 
-def main(out):
+def table(out, passes, counters, name):
+    """One row per run folder under `out` with a render.json: the frame, the median GPU time of
+    each of `passes` it has, and each of `counters` it has, labelled by name(counter)."""
     rows = []
     for d in sorted(pathlib.Path(out).iterdir()):
         f = d / "render.json"
@@ -23,11 +25,15 @@ def main(out):
         t = {x["pass"]: x["median_ms"] for x in run["timings"]}
         c = run["counters"]
         frame = t.get("frame", sum(t.values()))
-        passes = " ".join(f"{p} {t[p]:.3f}" for p in GEOMETRY if p in t)
-        counts = " ".join(f"{k.replace('meshlets_', 'm_').replace('triangles', 'tri')}={c[k]:.0f}"
-                          for k in COUNTERS if k in c)
-        rows.append(f"{d.name:40} frame {frame:9.3f} | {passes} | {counts} [{j['device']['name']}]")
-    print("\n".join(rows))
+        times = " ".join(f"{p} {t[p]:.3f}" for p in passes if p in t)
+        counts = " ".join(f"{name(k)}={c[k]:.4g}" for k in counters if k in c)
+        rows.append(f"{d.name:40} frame {frame:9.3f} | {times} | {counts} [{j['device']['name']}]")
+    return "\n".join(rows)
+
+
+def main(out):
+    print(table(out, GEOMETRY, COUNTERS,
+                lambda k: k.replace("meshlets_", "m_").replace("triangles", "tri")))
 
 
 if __name__ == "__main__":
