@@ -182,9 +182,10 @@ float GpuComposite::autoExposureEv(const CompositeSide& side) {
     push.width = side.width(), push.height = side.height();
     const uint32_t groupsX = (push.width + TP_VC_GROUP - 1) / TP_VC_GROUP;
     const uint32_t groups = groupsX * ((push.height + TP_VC_GROUP - 1) / TP_VC_GROUP);
-    if (uint64_t(groups) * 8 > stats_.size) // a frame past 65,536 / 2 workgroups (over 16 K x 8 K)
-        stats_ = storage(ctx_, uint64_t(groups) * 8, MemoryKind::Readback, "composite_stats"),
+    if (uint64_t(groups) * 8 > stats_.size) { // past 32,768 workgroups (8.4 M pixels: over 4K UHD)
+        stats_ = storage(ctx_, uint64_t(groups) * 8, MemoryKind::Readback, "composite_stats");
         writeBufferDescriptor(ctx_, statsSet_.set, TP_VC_BINDING_STATS, stats_.buffer);
+    }
     dispatch(logLuminance_, push, push.width, push.height, true);
     // The CPU rule's sums are in double: the partial sums (float, 256 pixels each) are added so.
     const auto* words = static_cast<const uint32_t*>(stats_.mapped);

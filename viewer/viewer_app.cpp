@@ -254,8 +254,10 @@ void ViewerApp::recompose() {
     const Shown* b = shownB();
     const RunResult* runA = a && a->run ? a->run.get() : nullptr;
     if (runA && a->serial != autoEvFor_) { // once per image, not per UI frame
-        autoEv_ = a->hasImages() ? autoExposureEv(runA->hdr)
-                                 : gpuComposite_->autoExposureEv(sideOf(a));
+        // From where the composite reads the image: a shared view keeps one exposure when its
+        // pixels arrive on the CPU later (the GPU's float logs may differ in the last bits).
+        autoEv_ = a->display || !a->hasImages() ? gpuComposite_->autoExposureEv(sideOf(a))
+                                                : autoExposureEv(runA->hdr);
         autoEvFor_ = a->serial;
     }
     const float ev = state_.autoExposure ? autoEv_ : state_.exposureEv;
