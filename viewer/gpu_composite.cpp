@@ -238,8 +238,8 @@ Composite GpuComposite::compose(const CompositeInput& in, const CompositeSide& a
     out.width = width;
     const bool difference = in.mode == DisplayMode::Difference;
     out.height = height + (difference ? kLegendHeight : 0);
-    if (out_.size < uint64_t(out.width) * out.height * 4)
-        out_ = storage(ctx_, uint64_t(out.width) * out.height * 4, MemoryKind::Device, "composite");
+    const uint64_t bytes = std::max<uint64_t>(4, uint64_t(out.width) * out.height * 4);
+    if (out_.size < bytes) out_ = storage(ctx_, bytes, MemoryKind::Device, "composite");
     writeBufferDescriptor(ctx_, composeSet_.set, TP_VC_BINDING_OUT, out_.buffer);
     gpu::CompositePush push{};
     push.width = width, push.height = height;

@@ -90,7 +90,13 @@ void RenderWorker::loop() {
         if (collected) done_.push_back(std::move(*collected));
         running_ = false;
     }
-    // Everything on this device is released here, on its own thread, before its messages are read.
+    // Everything on this device is released here, on its own thread, before its messages are read:
+    // first the outcomes nobody took (they hold display images of this context).
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_.clear();
+        pending_.reset();
+    }
     displays_.clear();
     sessions_.clear();
     gpuScene_.reset();

@@ -125,13 +125,14 @@ class RenderWorker {
     std::optional<RenderJob> pending_;
     std::deque<RenderOutcome> done_;
     GpuContext* share_ = nullptr;
-    std::vector<std::shared_ptr<DisplayImage>> displays_; // the worker's, reused when free
-    std::map<std::string, double> lastFrameMs_;           // by pipeline: its last frame's GPU time
+
     bool running_ = false, quit_ = false;
     std::vector<std::string> messages_;
     std::thread thread_;
 
     // Owned by the worker thread only.
+    std::vector<std::shared_ptr<DisplayImage>> displays_; // the worker's, reused when free
+    std::map<std::string, double> lastFrameMs_;           // by pipeline: its last frame's GPU time
     std::unique_ptr<GpuContext> ctx_;
     std::string contextError_;
     // The device's energy counter (core/runner/device_energy.h): a render's window is its timed

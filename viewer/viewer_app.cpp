@@ -139,6 +139,8 @@ void ViewerApp::takeOutcome(RenderOutcome& o) {
         s.framesMs = image.framesMs;
         s.displayMs = image.displayMs;
         s.steps = image.steps;
+        if (image.error.empty() && image.display && !image.planned)
+            keepLastCollected(image.run, image.pipeline);
         if (image.error.empty()) {
             history_[image.pipeline].add(image.run.timings, image.buildMs);
             s.run = std::make_shared<const RunResult>(std::move(image.run));
@@ -147,6 +149,31 @@ void ViewerApp::takeOutcome(RenderOutcome& o) {
         }
         shown_[image.pipeline] = std::move(s);
     }
+}
+
+// A shared view's run holds its timings and view counters only until its second outcome (which
+// a moving camera skips): the counters, memory, work and overlays shown meanwhile are the last
+// ones read, of an earlier view of the same plan; this view's own counters replace theirs.
+void ViewerApp::keepLastCollected(RunResult& run, const std::string& pipeline) const {
+    auto it = shown_.find(pipeline);
+    if (it == shown_.end() || !it->second.run) return;
+    const RunResult& last = *it->second.run;
+    const auto fresh = run.stats.counters;
+    run.stats = last.stats;
+    for (const auto& [name, value] : fresh) {
+        auto same = std::find_if(run.stats.counters.begin(), run.stats.counters.end(),
+                                 [&](const auto& c) { return c.first == name; });
+        if (same != run.stats.counters.end()) same->second = value;
+        else run.stats.counters.push_back({name, value});
+    }
+    run.memory = last.memory;
+    run.work = last.work;
+    run.efficiency = last.efficiency;
+    run.debugImages = last.debugImages;
+    run.passes = last.passes;
+    run.culledPasses = last.culledPasses;
+    run.statisticsCollected = last.statisticsCollected;
+    run.statisticsWhy = last.statisticsWhy;
 }
 
 // The whole runs of images already shown (a shared device's second outcome): counters,

@@ -199,6 +199,7 @@ class ViewerApp {
 
     void takeOutcome(RenderOutcome& o);
     void takeCollected(RenderOutcome& o);
+    void keepLastCollected(RunResult& run, const std::string& pipeline) const;
     bool wantImages() const;
     Composite composeOnGpu(const CompositeInput& in, const Shown* a, const Shown* b, uint32_t w,
                            uint32_t h);

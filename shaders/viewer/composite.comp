@@ -31,13 +31,21 @@ vec3 heat(float t) {
     return ramp[i].rgb + f * (ramp[i + 1u].rgb - ramp[i].rgb);
 }
 
+// The side's texel for output pixel p, nearest-scaled as composite.cpp's blit (a side of another
+// size: the reference of the previous resolution while the new one renders).
+vec3 fetchScaled(sampler2D image, ivec2 p) {
+    const uvec2 size = uvec2(textureSize(image, 0));
+    return texelFetch(image, ivec2(uvec2(p) * size / uvec2(pc.width, pc.height)), 0).rgb;
+}
+
 void main() {
     const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (p.x >= int(pc.width) || p.y >= int(pc.height)) return;
     vec3 colour = vec3(0.0);
     if (pc.mode == TP_VC_DIFFERENCE) {
-        float v;
-        if (!differenceAt(p, v))
+        bool allFinite;
+        const float v = differenceAt(p, allFinite);
+        if (!allFinite)
             colour = vec3(1.0, 0.0, 1.0); // magenta: not on the ramp
         else
             colour = heat(pc.diffScale > 0.0 ? v / pc.diffScale : (v > 0.0 ? 1.0 : 0.0));
@@ -46,7 +54,7 @@ void main() {
     } else {
         const bool right = uint(p.x) >= pc.boundary;
         if ((pc.sides & (right ? 2u : 1u)) != 0u) {
-            const vec3 linear = right ? texelFetch(rightImage, p, 0).rgb : texelFetch(leftImage, p, 0).rgb;
+            const vec3 linear = right ? fetchScaled(rightImage, p) : fetchScaled(leftImage, p);
             colour = tonemap(linear, pc.exposureEv);
         }
     }

@@ -52,8 +52,10 @@ void main() {
         words[group * 2u + 1u] = sCount[0];
     }
 #else
-    float v;
-    if (!inside || !differenceAt(p, v)) return;
+    if (!inside) return;
+    bool allFinite;
+    const float v = differenceAt(p, allFinite);
+    if (isnan(v) || isinf(v)) return; // the CPU's rule: the value, not each channel
     const uint bits = floatBitsToUint(v);
 #if TP_VC_STATS == TP_VC_HIGH_HISTOGRAM
     atomicAdd(words[bits >> 16], 1u);

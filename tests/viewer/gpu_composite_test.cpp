@@ -22,10 +22,10 @@ constexpr uint32_t kCompW = 67, kCompH = 41; // not a multiple of the 16 x 16 wo
 
 // Values over the tonemap's range (dark to far past white), a few NaNs and infinities, and a
 // copy with some pixels moved: the heat map has a spread to rank.
-ImageRGBA randomImage(uint32_t seed, bool specials) {
+ImageRGBA randomImage(uint32_t seed, bool specials, uint32_t w = kCompW, uint32_t h = kCompH) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> exponent(-8.0f, 4.0f);
-    ImageRGBA img(kCompW, kCompH);
+    ImageRGBA img(w, h);
     for (size_t i = 0; i < img.pixelCount(); ++i) {
         for (int c = 0; c < 3; ++c)
             img.rgba[i * 4 + c] = std::exp2(exponent(rng));
@@ -35,6 +35,7 @@ ImageRGBA randomImage(uint32_t seed, bool specials) {
         img.rgba[5 * 4] = std::numeric_limits<float>::quiet_NaN();
         img.rgba[77 * 4 + 1] = std::numeric_limits<float>::infinity();
         img.rgba[300 * 4 + 2] = -1.0f;
+        img.rgba[400 * 4 + 1] = std::numeric_limits<float>::quiet_NaN(); // passed over by std::max
     }
     return img;
 }
@@ -85,6 +86,14 @@ TEST(GpuComposite, SplitMatchesTheCpuRulesWithinOneStep) {
         EXPECT_LE(worst, 1) << "flip " << flip;
         EXPECT_LT(differing, cpu.rgba.size() / 100) << "flip " << flip;
     }
+    // A side of another size (the reference of the previous resolution): nearest-scaled, as
+    // composite.cpp's blit.
+    const ImageRGBA small = randomImage(6, false, 31, 17);
+    CompositeInput scaled{&a, &small, nullptr, DisplayMode::Split, 0.5f, false, 0.0f};
+    const Composite cpuScaled = compose(scaled, kCompW, kCompH);
+    const Composite gpuScaled =
+        f.gpu->compose(scaled, {nullptr, &a, 1}, {nullptr, &small, 3}, kCompW, kCompH, false);
+    EXPECT_LE(compareBytes(cpuScaled, f.gpu->readBytes(gpuScaled)).first, 1) << "scaled B";
     // One side missing: black there, and the note says so.
     CompositeInput in{&a, nullptr, nullptr, DisplayMode::Split, 0.5f, false, 0.0f};
     const Composite gpu = f.gpu->compose(in, {nullptr, &a, 1}, {}, kCompW, kCompH, false);
