@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/stand_ins.h"
@@ -33,20 +32,7 @@ void upload(GpuContext& ctx, const Image& image, const float* rgba, uint32_t w, 
     Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
                                   {"viewer", "", "staging", "upload"});
     std::memcpy(staging.mapped, rgba, size);
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     0, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {w, h, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer, image.image,
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        imageBarrier(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    });
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordImageUpload(cmd, image, staging.buffer, 0); });
 }
 
 Buffer storage(GpuContext& ctx, VkDeviceSize size, MemoryKind kind, const char* name) {

@@ -1,8 +1,10 @@
 #include "core/gpu/resources.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
+#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/vk_check.h"
 
@@ -255,5 +257,52 @@ void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDe
                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
     });
 }
+
+namespace {
+
+// Mips [mip, mip + mips) of a colour image's one layer.
+VkImageSubresourceRange mipRange(uint32_t mip, uint32_t mips) {
+    return {VK_IMAGE_ASPECT_COLOR_BIT, mip, mips, 0, 1};
+}
+
+} // namespace
+
+void recordImageUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging,
+                         VkDeviceSize offset) {
+    const uint32_t mips = img.desc.mipLevels;
+    const VkPipelineStageFlags2 T = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_NONE, 0, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, mipRange(0, mips));
+    VkBufferImageCopy region{};
+    region.bufferOffset = offset;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {img.desc.width, img.desc.height, 1};
+    vkCmdCopyBufferToImage(cmd, staging, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region);
+    int32_t w = int32_t(img.desc.width), h = int32_t(img.desc.height);
+    for (uint32_t m = 1; m < mips; ++m) {
+        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, T,
+                     VK_ACCESS_2_TRANSFER_READ_BIT, mipRange(m - 1, 1));
+        VkImageBlit blit{};
+        blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m - 1, 0, 1};
+        blit.srcOffsets[1] = {w, h, 1};
+        w = std::max(1, w / 2);
+        h = std::max(1, h / 2);
+        blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, 0, 1};
+        blit.dstOffsets[1] = {w, h, 1};
+        vkCmdBlitImage(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img.image,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+    }
+    const VkPipelineStageFlags2 S = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    if (mips > 1)
+        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, 0, S,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(0, mips - 1));
+    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, S,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(mips - 1, 1));
+}
+
 
 } // namespace tp

@@ -73,6 +73,11 @@ Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size
 // staging buffer, between frames (waits for the copy): per-view data of a planned renderer.
 void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDeviceSize size);
 
+// Records the copy of `img`'s mip 0 from `staging` at `offset` and blits its mip chain down.
+// Hand-written barriers: uploads happen outside the frame graph (textures, the viewer's images
+// from the CPU). Ends in SHADER_READ_ONLY_OPTIMAL for every later submission.
+void recordImageUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging, VkDeviceSize offset);
+
 bool isDepthFormat(VkFormat format);
 // A depth format with a stencil aspect too: its views and barriers name both aspects, its
 // attachment layout is DEPTH_STENCIL_ATTACHMENT_OPTIMAL (attachmentLayout), a copy names depth.

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/vk_check.h"
@@ -14,50 +13,6 @@ namespace {
 
 uint32_t mipCount(uint32_t w, uint32_t h) {
     return 1 + uint32_t(std::floor(std::log2(double(std::max(w, h)))));
-}
-
-// Mips [mip, mip + mips) of a colour texture's one layer.
-VkImageSubresourceRange mipRange(uint32_t mip, uint32_t mips) {
-    return {VK_IMAGE_ASPECT_COLOR_BIT, mip, mips, 0, 1};
-}
-
-// Copies mip 0 from `staging` and blits the chain down. Hand-written barriers: uploads
-// happen once, outside the frame graph. Ends in SHADER_READ_ONLY for every later submission.
-void recordTextureUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging,
-                         VkDeviceSize offset) {
-    const uint32_t mips = img.desc.mipLevels;
-    const VkPipelineStageFlags2 T = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_PIPELINE_STAGE_2_NONE, 0, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, mipRange(0, mips));
-    VkBufferImageCopy region{};
-    region.bufferOffset = offset;
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {img.desc.width, img.desc.height, 1};
-    vkCmdCopyBufferToImage(cmd, staging, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &region);
-    int32_t w = int32_t(img.desc.width), h = int32_t(img.desc.height);
-    for (uint32_t m = 1; m < mips; ++m) {
-        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, T,
-                     VK_ACCESS_2_TRANSFER_READ_BIT, mipRange(m - 1, 1));
-        VkImageBlit blit{};
-        blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m - 1, 0, 1};
-        blit.srcOffsets[1] = {w, h, 1};
-        w = std::max(1, w / 2);
-        h = std::max(1, h / 2);
-        blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, 0, 1};
-        blit.dstOffsets[1] = {w, h, 1};
-        vkCmdBlitImage(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img.image,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
-    }
-    const VkPipelineStageFlags2 S = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    if (mips > 1)
-        imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, 0, S,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(0, mips - 1));
-    imageBarrier(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, T, VK_ACCESS_2_TRANSFER_WRITE_BIT, S,
-                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, mipRange(mips - 1, 1));
 }
 
 } // namespace
@@ -87,7 +42,7 @@ void SceneGpu::uploadTextures() {
         for (size_t i = 0; i < textures.size(); ++i) {
             std::memcpy(static_cast<uint8_t*>(staging.mapped) + offset, textures[i].rgba8.data(),
                         textures[i].rgba8.size());
-            recordTextureUpload(cmd, textures_[i], staging.buffer, offset);
+            recordImageUpload(cmd, textures_[i], staging.buffer, offset);
             offset += textures[i].rgba8.size();
         }
     });
