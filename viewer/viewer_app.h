@@ -197,6 +197,7 @@ class ViewerApp {
     void pauseForUserMove();
     std::string viewLabel() const;
 
+    Shown makeShown(PipelineImage& image, const RenderOutcome& o); // outcomes.cpp
     void takeOutcome(RenderOutcome& o);
     void takeCollected(RenderOutcome& o);
     void keepLastCollected(RunResult& run, const std::string& pipeline) const;
