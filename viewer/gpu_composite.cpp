@@ -59,8 +59,10 @@ GpuComposite::GpuComposite(GpuContext& ctx) : ctx_(ctx) {
     composeSet_.pass = statsSet_.pass = "viewer_composite";
     VkDescriptorSetLayoutCreateInfo empty{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &empty, nullptr, &emptySet_));
-    composeLayout_ = createLayout(composeSet_.layout);
-    statsLayout_ = createLayout(statsSet_.layout);
+    composeLayout_ = createPassPipelineLayout(ctx_, emptySet_, composeSet_.layout,
+                                              VK_SHADER_STAGE_COMPUTE_BIT, sizeof(gpu::CompositePush));
+    statsLayout_ = createPassPipelineLayout(ctx_, emptySet_, statsSet_.layout,
+                                            VK_SHADER_STAGE_COMPUTE_BIT, sizeof(gpu::CompositePush));
     compose_ = createComputePipeline(ctx_, "viewer_composite_comp", {}, composeLayout_, &composeSet_);
     logLuminance_ =
         createComputePipeline(ctx_, "viewer_composite_stats_0_comp", {}, statsLayout_, &statsSet_);
@@ -81,20 +83,6 @@ GpuComposite::GpuComposite(GpuContext& ctx) : ctx_(ctx) {
     upload(ctx_, placeholder_, black, 1, 1);
     writeBufferDescriptor(ctx_, composeSet_.set, TP_VC_BINDING_STATS, ramp_.buffer);
     writeBufferDescriptor(ctx_, statsSet_.set, TP_VC_BINDING_STATS, stats_.buffer);
-}
-
-// Set 0 empty, the pass set as set 1 (TP_SET_PASS), the push constants.
-VkPipelineLayout GpuComposite::createLayout(VkDescriptorSetLayout passSet) {
-    const VkDescriptorSetLayout sets[] = {emptySet_, passSet};
-    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::CompositePush)};
-    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = 2;
-    info.pSetLayouts = sets;
-    info.pushConstantRangeCount = 1;
-    info.pPushConstantRanges = &range;
-    VkPipelineLayout layout;
-    VK_CHECK(vkCreatePipelineLayout(ctx_.device, &info, nullptr, &layout));
-    return layout;
 }
 
 GpuComposite::~GpuComposite() {

@@ -51,7 +51,6 @@ class GpuComposite {
     std::vector<uint8_t> readBytes(const Composite& c);
 
   private:
-    VkPipelineLayout createLayout(VkDescriptorSetLayout passSet);
     const Image& resolve(const CompositeSide& side, int slot);
     void bindSides(const Image& left, const Image& right);
     void dispatch(VkPipeline pipeline, const gpu::CompositePush& push, uint32_t width,

@@ -2,6 +2,7 @@
 
 #include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
 #include "core/gpu/vk_check.h"
 
 namespace tp::calibrate {
@@ -47,14 +48,8 @@ void fill(GpuContext& ctx, Rig& rig) {
 void createLayout(Rig& rig) {
     VkDescriptorSetLayoutCreateInfo empty{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     VK_CHECK(vkCreateDescriptorSetLayout(rig.ctx.device, &empty, nullptr, &rig.emptySet));
-    const VkDescriptorSetLayout sets[] = {rig.emptySet, rig.set.layout}; // set 1: TP_SET_PASS
-    VkPushConstantRange range{kPushStages, 0, sizeof(CalPush)};
-    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = 2;
-    info.pSetLayouts = sets;
-    info.pushConstantRangeCount = 1;
-    info.pPushConstantRanges = &range;
-    VK_CHECK(vkCreatePipelineLayout(rig.ctx.device, &info, nullptr, &rig.layout));
+    rig.layout = createPassPipelineLayout(rig.ctx, rig.emptySet, rig.set.layout, kPushStages,
+                                          sizeof(CalPush));
 }
 
 void beginRendering(VkCommandBuffer cmd, const Targets& t, uint32_t size) {

@@ -211,4 +211,19 @@ void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height)
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
+VkPipelineLayout createPassPipelineLayout(GpuContext& ctx, VkDescriptorSetLayout emptySet,
+                                          VkDescriptorSetLayout passSet,
+                                          VkShaderStageFlags pushStages, uint32_t pushBytes) {
+    const VkDescriptorSetLayout sets[] = {emptySet, passSet};
+    VkPushConstantRange range{pushStages, 0, pushBytes};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = 2;
+    info.pSetLayouts = sets;
+    info.pushConstantRangeCount = 1;
+    info.pPushConstantRanges = &range;
+    VkPipelineLayout layout;
+    VK_CHECK(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout));
+    return layout;
+}
+
 } // namespace tp

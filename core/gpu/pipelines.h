@@ -58,6 +58,13 @@ VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
                                  VkPipelineLayout layout, const PassSet* passSet = nullptr,
                                  uint32_t fullSubgroups = 0);
 
+// A layout for a pipeline outside the scene's sets (calibrate, the viewer's composite): set 0
+// `emptySet` (an empty set layout, so the pass set sits at TP_SET_PASS as in every shader), set 1
+// `passSet`, and one push-constant range of `pushBytes` for `pushStages`.
+VkPipelineLayout createPassPipelineLayout(GpuContext& ctx, VkDescriptorSetLayout emptySet,
+                                          VkDescriptorSetLayout passSet,
+                                          VkShaderStageFlags pushStages, uint32_t pushBytes);
+
 // Viewport (negative height, depth 0..1) and scissor covering width x height.
 void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height);
 
