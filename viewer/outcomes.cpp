@@ -13,7 +13,6 @@ Shown ViewerApp::makeShown(PipelineImage& image, const RenderOutcome& o) {
             image.buildMs,  nextSerial_++, o.lights,   o.camera,
             image.planned,  image.updateMs, image.display};
     s.framesMs = image.framesMs;
-    s.displayMs = image.displayMs;
     s.steps = image.steps;
     if (image.error.empty()) {
         history_[image.pipeline].add(image.run.timings, image.buildMs);
@@ -40,7 +39,7 @@ void ViewerApp::takeOutcome(RenderOutcome& o) {
         if (state_.cameraFromScene) state_.camera = sceneCamera_;
     }
     for (PipelineImage& image : o.images) {
-        if (image.error.empty() && image.display && !image.planned)
+        if (image.error.empty() && image.partial && !image.planned)
             keepLastCollected(image.run, image.pipeline);
         if (!image.error.empty()) error_ = image.error;
         shown_[image.pipeline] = makeShown(image, o);

@@ -6,6 +6,7 @@
 #include "core/cli/scene_input.h"
 #include "core/energy/energy_window.h"
 #include "core/gpu/barriers.h"
+#include "core/gpu/readback.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/runner/device_energy.h"
 #include "core/scene/lights.h"
@@ -13,8 +14,10 @@
 
 namespace tp::view {
 
-RenderWorker::RenderWorker(ContextOptions options, std::string label, GpuContext* share)
-    : options_(std::move(options)), label_(std::move(label)), share_(share) {
+RenderWorker::RenderWorker(ContextOptions options, std::string label, GpuContext* share,
+                           bool showFirst)
+    : options_(std::move(options)), label_(std::move(label)), share_(share),
+      showFirst_(showFirst || share) {
     thread_ = std::thread([this] { loop(); });
 }
 
@@ -80,7 +83,7 @@ void RenderWorker::loop() {
         }
         RenderOutcome outcome = runJob(job);
         std::optional<RenderOutcome> collected;
-        const bool shown = share_ && outcome.error.empty();
+        const bool shown = showFirst_ && outcome.error.empty();
         if (shown) {
             publish(outcome); // on the screen now; what the CPU reads of it follows
             collected = collectLater(job, outcome);
@@ -193,16 +196,25 @@ PipelineImage RenderWorker::renderPipeline(const std::string& name, const Render
             image.planned = true;
         }
         const uint32_t replans = p.session->replans();
+        RunOptions runOptions = withEnergy(name, job, options);
+        std::shared_ptr<DisplayImage> display; // shared: filled in the last frame's batch
+        if (share_) {
+            display = freeDisplay(p.session->hdrImage().desc);
+            runOptions.afterLastFrame = [&display](VkCommandBuffer cmd, const Image& hdr) {
+                recordDisplayCopy(cmd, hdr, display->image);
+            };
+        }
         const auto rendering = std::chrono::steady_clock::now();
-        Result<RunResult> run = p.session->render(withEnergy(name, job, options));
+        Result<RunResult> run = p.session->render(runOptions);
         image.framesMs = msSince(rendering);
         image.steps = p.session->lastSteps();
         if (run) {
             image.run = std::move(*run);
             lastFrameMs_[name] = frameMedianMs(image.run);
-            const auto copying = std::chrono::steady_clock::now();
-            if (share_) image.display = displayCopy(p.session->hdrImage());
-            image.displayMs = msSince(copying);
+            image.display = std::move(display);
+            image.partial = !runOptions.readback;
+            if (image.partial && !share_) // on a device of its own: the image to show, alone
+                image.run.hdr = readbackColor(*ctx_, p.session->hdrImage());
             image.updateMs = image.run.stats.counter("view_update_ms", 0.0);
         } else {
             image.error = run.error();
@@ -281,7 +293,7 @@ RenderOutcome RenderWorker::runJob(const RenderJob& job) {
     settings.manyViews = true; // the next job is likely another view
     settings.passStatistics = job.passStatistics;
     RunOptions runOptions = runOptionsFor(job);
-    runOptions.readback = !share_; // shared: the frames only; collectLater reads the rest
+    runOptions.readback = !showFirst_; // the frames only (and the image); collectLater reads the rest
     for (auto it = sessions_.begin(); it != sessions_.end();) // only this job's pipelines stay
         it = std::find(job.pipelines.begin(), job.pipelines.end(), it->first) == job.pipelines.end()
                  ? sessions_.erase(it)
@@ -332,15 +344,14 @@ std::optional<RenderOutcome> RenderWorker::collectLater(const RenderJob& job,
     return out;
 }
 
-// A display image nobody else holds (the UI let go of it), or a new one, filled from `hdr`
-// (TRANSFER_SRC_OPTIMAL after the frame) and left for the UI's compute shader.
-std::shared_ptr<const DisplayImage> RenderWorker::displayCopy(const Image& hdr) {
+// A display image nobody else holds (the UI let go of it), or a new one, of `hdr`'s size and
+// format.
+std::shared_ptr<DisplayImage> RenderWorker::freeDisplay(const ImageDesc& hdr) {
     std::shared_ptr<DisplayImage> target;
     for (auto it = displays_.begin(); it != displays_.end();) {
         const bool free = it->use_count() == 1;
         const ImageDesc& d = (*it)->image.desc;
-        if (free && (d.width != hdr.desc.width || d.height != hdr.desc.height ||
-                     d.format != hdr.desc.format)) {
+        if (free && (d.width != hdr.width || d.height != hdr.height || d.format != hdr.format)) {
             it = displays_.erase(it); // another size or format: not coming back
             continue;
         }
@@ -348,30 +359,32 @@ std::shared_ptr<const DisplayImage> RenderWorker::displayCopy(const Image& hdr) 
         ++it;
     }
     if (!target) {
-        ImageDesc d = hdr.desc;
+        ImageDesc d = hdr;
         d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
         target = std::make_shared<DisplayImage>();
         target->image = createImage(*ctx_, d, {"viewer", "", "display_copy",
                                                "a renderer's image as the UI shows it"});
         displays_.push_back(target);
     }
-    const Image& dst = target->image;
-    ctx_->submitAndWait([&](VkCommandBuffer cmd) {
-        imageBarrier(cmd, dst.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
-                     VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkImageCopy region{};
-        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.dstSubresource = region.srcSubresource;
-        region.extent = {hdr.desc.width, hdr.desc.height, 1};
-        vkCmdCopyImage(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst.image,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        imageBarrier(cmd, dst.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    });
     return target;
+}
+
+// Fills `dst` from `hdr` (TRANSFER_SRC_OPTIMAL after the frame) and leaves it for the UI's
+// compute shader; recorded into the batch of the view's last frame (RunOptions::afterLastFrame).
+void RenderWorker::recordDisplayCopy(VkCommandBuffer cmd, const Image& hdr, const Image& dst) {
+    imageBarrier(cmd, dst.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    VkImageCopy region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstSubresource = region.srcSubresource;
+    region.extent = {hdr.desc.width, hdr.desc.height, 1};
+    vkCmdCopyImage(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(cmd, dst.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 } // namespace tp::view

@@ -60,8 +60,10 @@ struct PipelineImage {
     std::shared_ptr<const DisplayImage> display; // the shared device's copy (else null)
     double framesMs = 0;  // wall time of the session's render (update, frames, what it read)
     RendererSession::Steps steps; // how that split
-    double displayMs = 0; // wall time of the display copy
     double updateMs = 0;   // CPU: following the new view (updateView + recording), if it moved
+    // The first of two outcomes (RenderWorker's showFirst): `run` holds the timings, the view's
+    // counters and (without `display`) the hdr; the rest follows in the collected outcome.
+    bool partial = false;
 };
 
 struct RenderOutcome {
@@ -91,8 +93,12 @@ constexpr int kStatsGraceMs = 20;
 class RenderWorker {
   public:
     // share: the UI's context, whose device the worker renders on (its second queue where the
-    // device has one, GpuContext::share); null: a device of its own.
-    RenderWorker(ContextOptions options, std::string label, GpuContext* share = nullptr);
+    // device has one, GpuContext::share); null: a device of its own. showFirst: each view's
+    // outcome goes as soon as its image is there (the display copy, or on a device of its own
+    // the hdr read back alone), its counters and the rest in a second outcome (always so with
+    // `share`; the reference's worker reads everything at once).
+    RenderWorker(ContextOptions options, std::string label, GpuContext* share = nullptr,
+                 bool showFirst = false);
     ~RenderWorker();
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
@@ -112,7 +118,8 @@ class RenderWorker {
     RunOptions runOptionsFor(const RenderJob& job) const;
     RunOptions withEnergy(const std::string& pipeline, const RenderJob& job, RunOptions options) const;
     std::optional<RenderOutcome> collectLater(const RenderJob& job, const RenderOutcome& shown);
-    std::shared_ptr<const DisplayImage> displayCopy(const Image& hdr);
+    std::shared_ptr<DisplayImage> freeDisplay(const ImageDesc& hdr);
+    static void recordDisplayCopy(VkCommandBuffer cmd, const Image& hdr, const Image& dst);
     void prepareScene(const RenderJob& job, RenderOutcome& out);
     void moveLights(const ViewState& s);
     PipelineImage renderPipeline(const std::string& name, const RenderJob& job,
@@ -125,6 +132,7 @@ class RenderWorker {
     std::optional<RenderJob> pending_;
     std::deque<RenderOutcome> done_;
     GpuContext* share_ = nullptr;
+    bool showFirst_ = false;
 
     bool running_ = false, quit_ = false;
     std::vector<std::string> messages_;

@@ -400,7 +400,7 @@ void ScriptRunner::applyWaitOrOutput(ViewerApp& app, const ScriptLine& line) {
         benchTotal_ = benchLeft_ = int(integerAt(line, 1, 1, 100000));
         benchFile_ = inOut(w[2]);
         benchRenderMs_.clear(), benchGpuMs_.clear(), benchUiMs_.clear(), benchUpdateMs_.clear();
-        benchLatencyMs_.clear(), benchFramesMs_.clear(), benchDisplayMs_.clear();
+        benchLatencyMs_.clear(), benchFramesMs_.clear();
         benchSteps_.clear();
         benchPlanned_ = 0;
         benchRecordDue_ = false;

@@ -92,7 +92,7 @@ class ScriptRunner {
     bool benchRecordDue_ = false;
     std::string benchFile_;
     std::vector<double> benchRenderMs_, benchGpuMs_, benchUiMs_, benchUpdateMs_, benchLatencyMs_,
-        benchFramesMs_, benchDisplayMs_;
+        benchFramesMs_;
     std::map<std::string, std::vector<double>> benchSteps_;
     uint32_t benchPlanned_ = 0; // renders that planned the renderer (not a followed camera move)
 };

@@ -137,7 +137,6 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
         if (const Shown* a = app.shownA()) {
             benchUpdateMs_.push_back(a->updateMs);
             benchFramesMs_.push_back(a->framesMs);
-            benchDisplayMs_.push_back(a->displayMs);
             benchSteps_["follow"].push_back(a->steps.followMs);
             benchSteps_["frames"].push_back(a->steps.framesMs);
             benchSteps_["energy_reads"].push_back(a->steps.energyMs);
@@ -177,7 +176,6 @@ bool ScriptRunner::benchStep(ViewerApp& app) {
     j["gpu_frame_ms_median"] = median(benchGpuMs_);
     j["overhead_ms_median"] = median(benchRenderMs_) - median(benchGpuMs_);
     j["session_render_ms_median"] = median(benchFramesMs_); // update, frames, what it read
-    j["display_copy_ms_median"] = median(benchDisplayMs_);
     for (const auto& [step, ms] : benchSteps_) // RendererSession::Steps
         j["session_steps_ms_median"][step] = median(ms);
     j["view_latency_ms"] = benchLatencyMs_;

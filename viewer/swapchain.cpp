@@ -129,6 +129,7 @@ void Swapchain::draw(UiRenderer& ui, ImDrawData* data, uint32_t width, uint32_t 
     submit.pCommandBufferInfos = &cmdInfo;
     submit.signalSemaphoreInfoCount = 1;
     submit.pSignalSemaphoreInfos = &signal;
+    ctx_.flushUploads(); // this submission is not the context's: what it queued goes first
     std::unique_lock<std::mutex> queue = ctx_.lockQueue(); // shared with the renderers on lavapipe
     VK_CHECK(vkQueueSubmit2(ctx_.queue, 1, &submit, fence_));
     VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};

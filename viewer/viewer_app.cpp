@@ -45,7 +45,8 @@ ViewerApp::ViewerApp(GpuContext& uiContext, ViewerOptions options)
     shared_ = options_.shareDevice == "on" || (options_.shareDevice == "auto" && ui_.queueCount > 1);
     gpuComposite_ = std::make_unique<GpuComposite>(ui_);
     // The reference keeps a device of its own: its image is wanted on the CPU (the error).
-    worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines", shared_ ? &ui_ : nullptr);
+    worker_ = std::make_unique<RenderWorker>(options_.context, "pipelines", shared_ ? &ui_ : nullptr,
+                                             true);
     referenceWorker_ = std::make_unique<RenderWorker>(options_.context, "reference");
     player_ = options_.path;
     if (player_.loaded()) showPathView();

@@ -59,7 +59,7 @@ struct Shown {
     // Shared device: the image where the UI composes it from; the run's hdr and depth are
     // then empty until read back (hasImages).
     std::shared_ptr<const DisplayImage> display;
-    double framesMs = 0, displayMs = 0; // PipelineImage's
+    double framesMs = 0; // PipelineImage's
     RendererSession::Steps steps;
     bool hasImages() const { return run && run->hdr.width > 0; }
 };

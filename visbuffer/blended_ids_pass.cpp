@@ -79,6 +79,7 @@ BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, Res
                           vkCmdFillBuffer(pc.cmd, c, w * 4, 4,
                                           w == TP_VIS_BLEND_CAPACITY ? t_.capacity : 0u);
                   });
+    graph.watchAfterFrame(t_.counters, 0, TP_VIS_BLEND_COUNTER_WORDS * 4); // overflowed() reads it
     // The nodes need no clear: a node is read only through a head or a node written before it.
     graph.addPass("blended_ids",
                   {{depth, Use::DepthTest},
@@ -90,8 +91,9 @@ BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, Res
 }
 
 bool BlendedIdsPass::overflowed(FrameGraph& graph) {
-    const std::vector<uint8_t> raw = readbackBuffer(ctx_, graph.buffer(t_.counters));
+    const std::vector<uint8_t> raw = graph.watched(t_.counters); // copied at the frame's end
     uint32_t counters[TP_VIS_BLEND_COUNTER_WORDS];
+    if (raw.size() != sizeof(counters)) return false; // no frame has run
     std::memcpy(counters, raw.data(), sizeof(counters));
     if (counters[TP_VIS_BLEND_DROPPED] == 0 || t_.capacity == most_) return false;
     grownNeed_ = 2 * uint64_t(counters[TP_VIS_BLEND_APPENDED]); // met: held and dropped

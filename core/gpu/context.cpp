@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/gpu/upload_queue.h"
 #include "core/gpu/vk_check.h"
 
 namespace tp {
@@ -368,6 +369,7 @@ void GpuContext::createPoolAndFence() {
     VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool));
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence_));
+    uploads_ = std::make_unique<UploadQueue>(*this);
 }
 
 void GpuContext::waitIdle() {
@@ -376,6 +378,7 @@ void GpuContext::waitIdle() {
 }
 
 GpuContext::~GpuContext() {
+    uploads_.reset(); // what is queued is for a submission that will not come
     if (device && !ownsDevice_) {
         waitIdle();
         vkDestroyFence(device, fence_, nullptr);
@@ -410,18 +413,36 @@ void GpuContext::freeCommandBuffer(VkCommandBuffer cmd) {
     vkFreeCommandBuffers(device, commandPool, 1, &cmd);
 }
 
-void GpuContext::submitAndWait(VkCommandBuffer cmd) {
-    VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cmdInfo.commandBuffer = cmd;
+void GpuContext::submitAndWait(VkCommandBuffer cmd, VkCommandBuffer after) {
+    VkCommandBufferSubmitInfo infos[3];
+    uint32_t count = 0;
+    for (VkCommandBuffer c : {uploads_ ? uploads_->take() : VK_NULL_HANDLE, cmd, after}) {
+        if (!c) continue;
+        infos[count] = {VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+        infos[count++].commandBuffer = c;
+    }
     VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    submit.commandBufferInfoCount = 1;
-    submit.pCommandBufferInfos = &cmdInfo;
+    submit.commandBufferInfoCount = count;
+    submit.pCommandBufferInfos = infos;
     {
         std::unique_lock<std::mutex> lock = lockQueue();
         VK_CHECK(vkQueueSubmit2(queue, 1, &submit, fence_));
     }
     VK_CHECK(vkWaitForFences(device, 1, &fence_, VK_TRUE, UINT64_MAX));
     VK_CHECK(vkResetFences(device, 1, &fence_));
+    if (uploads_) uploads_->completed();
+}
+
+bool GpuContext::queueUpload(const Buffer& dst, const void* data, VkDeviceSize size) {
+    return uploads_ && uploads_->queue(dst, data, size);
+}
+
+void GpuContext::flushUploads() {
+    if (uploads_ && !uploads_->empty()) submitAndWait(VK_NULL_HANDLE);
+}
+
+bool GpuContext::uploadsWrite(VkBuffer buffer) const {
+    return uploads_ && uploads_->writes(buffer);
 }
 
 void GpuContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {

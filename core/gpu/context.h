@@ -17,6 +17,9 @@
 
 namespace tp {
 
+class UploadQueue;
+struct Buffer;
+
 struct DeviceInfo {
     uint32_t index = 0;
     std::string name;
@@ -100,9 +103,18 @@ class GpuContext {
     bool isCpuDevice() const { return properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
     MemoryLedger ledger;
 
-    // Records with `record`, submits, waits. For uploads, readbacks and timed frames.
+    // Records with `record`, submits, waits. For uploads, readbacks and timed frames. Every
+    // submission carries the uploads queued since the last one first (queueUpload); `after`
+    // goes in the same batch after `cmd` (the viewer's display copy after a view's last frame).
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
-    void submitAndWait(VkCommandBuffer cmd);
+    void submitAndWait(VkCommandBuffer cmd, VkCommandBuffer after = VK_NULL_HANDLE);
+    // A buffer upload ordered before the next submission, without one of its own
+    // (core/gpu/upload_queue.h); false when it is too large to hold (upload it directly).
+    bool queueUpload(const Buffer& dst, const void* data, VkDeviceSize size);
+    // Submits the queued uploads now and waits (a submission not made through this context,
+    // or a buffer they write about to be destroyed).
+    void flushUploads();
+    bool uploadsWrite(VkBuffer buffer) const;
     VkCommandBuffer allocateCommandBuffer();
     void freeCommandBuffer(VkCommandBuffer cmd);
     // Holds this context's queue for a submission or present of one's own (vkQueueSubmit and
@@ -126,6 +138,7 @@ class GpuContext {
                                   const VkDebugUtilsMessengerCallbackDataEXT*, void*);
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
+    std::unique_ptr<UploadQueue> uploads_;
     bool ownsDevice_ = true;
     std::shared_ptr<std::mutex> queueMutex_ = std::make_shared<std::mutex>();
     mutable std::mutex messagesMutex_;

@@ -1,5 +1,7 @@
 #include "core/gpu/frame_graph.h"
 
+#include <cstring>
+
 #include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/ledger.h"
@@ -57,6 +59,22 @@ void FrameGraph::exportResource(const std::string& publicName, ResourceHandle h)
     decl_.exportResource(publicName, h);
 }
 
+void FrameGraph::watchAfterFrame(ResourceHandle h, VkDeviceSize offset, VkDeviceSize size) {
+    const std::string& name = decl_.resources().at(h.index).name;
+    checkOpen("watch of '" + name + "' added");
+    if (!decl_.resources()[h.index].exported) decl_.exportResource(name, h);
+    watches_.push_back({h, offset, size, 0});
+}
+
+std::vector<uint8_t> FrameGraph::watched(ResourceHandle h) const {
+    for (const Watch& w : watches_) {
+        if (w.buffer.index != h.index || !isAllocated(h)) continue;
+        const uint8_t* at = static_cast<const uint8_t*>(watchBuffer_.mapped) + w.at;
+        return std::vector<uint8_t>(at, at + w.size);
+    }
+    return {};
+}
+
 void FrameGraph::compile() {
     plan_ = decl_.plan();
     checkImagesSupported();
@@ -103,6 +121,34 @@ void FrameGraph::allocate() {
             r.buffer = tp::createBuffer(ctx_, r.bufferSize, p.bufferUsage, MemoryKind::Device, tag);
         }
     }
+    VkDeviceSize total = 0;
+    for (Watch& w : watches_) {
+        if (!isAllocated(w.buffer)) continue;
+        if (w.offset + w.size > resources_[w.buffer.index].bufferSize)
+            throw GraphError("watch of '" + decl_.resources()[w.buffer.index].name +
+                             "' reaches past the buffer");
+        w.at = total;
+        total += (w.size + 15) / 16 * 16;
+    }
+    if (total == 0) return;
+    watchBuffer_ = tp::createBuffer(ctx_, total, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    MemoryKind::Readback,
+                                    {owner_, "", "frame_watch",
+                                     "what the host reads after each frame (overflow counts)"});
+    std::memset(watchBuffer_.mapped, 0, total);
+}
+
+// After the export barriers (the watched buffers are exported: TRANSFER_SRC by now).
+void FrameGraph::recordWatches(VkCommandBuffer cmd) const {
+    if (!watchBuffer_.buffer) return;
+    for (const Watch& w : watches_) {
+        if (!isAllocated(w.buffer)) continue;
+        VkBufferCopy copy{w.offset, w.at, w.size};
+        vkCmdCopyBuffer(cmd, resources_[w.buffer.index].buffer.buffer, watchBuffer_.buffer, 1, &copy);
+    }
+    // The copies' writes become visible to the host's read after the frame's wait.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 PassSet FrameGraph::createPassSet(const std::string& pass, VkSampler sampler,
@@ -190,6 +236,7 @@ void FrameGraph::record(VkCommandBuffer cmd, GpuProfiler* profiler, PassStatisti
     }
     for (const PlanBarrier& b : plan_.exportBarriers)
         recordBarrier(cmd, b);
+    recordWatches(cmd);
 }
 
 const Image& FrameGraph::image(ResourceHandle h) const {

@@ -70,6 +70,13 @@ class FrameGraph {
                  std::function<void(PassContext&)> execute);
     // An output read after the frame (readback, report): left in TRANSFER_SRC layout/access.
     void exportResource(const std::string& publicName, ResourceHandle h);
+    // A buffer range the host reads after every frame (a capacity's overflow count): exported,
+    // and copied at the end of the recording into a host-visible buffer of the graph's, so the
+    // read after a view's frames needs no submission and wait of its own (issue 42).
+    void watchAfterFrame(ResourceHandle buffer, VkDeviceSize offset, VkDeviceSize size);
+    // The watched range as the last completed frame left it; empty when the buffer is not
+    // allocated (its passes culled) or was not watched.
+    std::vector<uint8_t> watched(ResourceHandle buffer) const;
 
     // The pass's descriptor set (set TP_SET_PASS) from its uses that carry a binding: layout,
     // descriptor types and writes (images in the layout of their use, sampled ones with
@@ -111,6 +118,13 @@ class FrameGraph {
     void checkImagesSupported() const;
     void allocate();
     void recordBarrier(VkCommandBuffer cmd, const PlanBarrier& b) const;
+    void recordWatches(VkCommandBuffer cmd) const;
+
+    struct Watch {
+        ResourceHandle buffer;
+        VkDeviceSize offset = 0, size = 0;
+        VkDeviceSize at = 0; // where in watchBuffer_
+    };
 
     GpuContext& ctx_;
     std::string owner_;
@@ -119,6 +133,8 @@ class FrameGraph {
     GraphPlan plan_;
     std::vector<ResourceNode> resources_;
     std::vector<std::function<void(PassContext&)>> executes_;
+    std::vector<Watch> watches_;
+    Buffer watchBuffer_; // host-visible: the watches' bytes after each frame
     bool compiled_ = false;
 };
 

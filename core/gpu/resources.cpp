@@ -85,6 +85,7 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
 
 void Buffer::reset() {
     if (!ctx) return;
+    if (ctx->uploadsWrite(buffer)) ctx->flushUploads(); // a queued copy still writes it
     vkDestroyBuffer(ctx->device, buffer, nullptr);
     vkFreeMemory(ctx->device, memory, nullptr);
     ctx->ledger.remove(ledgerId);
@@ -243,7 +244,7 @@ Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size
 }
 
 void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDeviceSize size) {
-    if (size == 0) return;
+    if (size == 0 || ctx.queueUpload(dst, data, size)) return;
     Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload,
                                   {"staging", "", "staging", "upload"});
     std::memcpy(staging.mapped, data, size);

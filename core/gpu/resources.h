@@ -69,8 +69,10 @@ Status checkImageSupported(const GpuContext& ctx, const ImageDesc& desc);
 // kept, so it is not in the ledger).
 Buffer createBufferWithData(GpuContext& ctx, const void* data, VkDeviceSize size,
                             VkBufferUsageFlags usage, const LedgerTag& tag);
-// Overwrites the first `size` bytes of a device-local buffer (made with TRANSFER_DST) through a
-// staging buffer, between frames (waits for the copy): per-view data of a planned renderer.
+// Overwrites the first `size` bytes of a device-local buffer (made with TRANSFER_DST) between
+// frames: per-view data of a planned renderer. The copy is queued for the context's next
+// submission (GpuContext::queueUpload, no wait of its own) unless it is large, when it goes
+// through a staging buffer of its own and a wait. Either way every later submission sees it.
 void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDeviceSize size);
 
 // Records the copy of `img`'s mip 0 from `staging` at `offset` and blits its mip chain down.

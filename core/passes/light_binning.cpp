@@ -181,9 +181,10 @@ LightBins GpuBinning::sizes() {
 }
 
 bool GpuBinning::overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra) {
-    const std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(offsets_));
+    const std::vector<uint8_t> bytes = graph.watched(offsets_); // copied at the frame's end
     uint32_t need[TP_BIN_NEEDS];
-    std::memcpy(need, bytes.data() + (size_t(grid_.count()) + 1) * 4, sizeof(need));
+    if (bytes.size() != sizeof(need)) return false; // no frame has run
+    std::memcpy(need, bytes.data(), sizeof(need));
     const uint32_t run = need[TP_BIN_NEED_RUN];
     // A longer run than planned matters only where the recording would differ: the long-run
     // sort's steps (runs past shared memory, up to sortSize(runBound)) and the consumer's
@@ -250,6 +251,8 @@ void GpuBinning::plan(FrameGraph& graph) {
     // Read after the frame by the tests; also what keeps the passes live.
     graph.exportResource("light_bin_offsets", offsets_);
     graph.exportResource("light_bin_counts", counts_);
+    // The view's needs, which overflowed() reads after every view's frames.
+    graph.watchAfterFrame(offsets_, (uint64_t(tiles) + 1) * 4, TP_BIN_NEEDS * 4);
 }
 
 void GpuBinning::prepare(FrameGraph& graph, VkBuffer target, uint64_t baseWord,

@@ -84,7 +84,7 @@ void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
 }
 
 uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
-                      const RunOptions& options, FrameEnergy& energy) {
+                      const RunOptions& options, FrameEnergy& energy, VkCommandBuffer after) {
     const double minWarmupMs = options.warmupFrames > 0 && !ctx.isCpuDevice() ? kGpuWarmupMs : 0.0;
     const auto begin = std::chrono::steady_clock::now();
     EnergyWindow window(options.energy ? options.energy->meter.get() : nullptr,
@@ -93,7 +93,8 @@ uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profile
     for (uint32_t f = 0; f < warmup + options.timedFrames; ++f) {
         if (f == warmup) window.begin(); // the first timed frame (warmup is final by now)
         auto start = std::chrono::steady_clock::now();
-        ctx.submitAndWait(cmd);
+        const bool last = f + 1 == warmup + options.timedFrames; // warmup is final by then
+        ctx.submitAndWait(cmd, last ? after : VK_NULL_HANDLE);
         std::chrono::duration<double, std::milli> wall = std::chrono::steady_clock::now() - start;
         profiler.collect();
         const bool lastWarmup = f + 1 == warmup;

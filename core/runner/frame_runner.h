@@ -42,6 +42,10 @@ struct RunOptions {
     // (core/energy/energy_window.h); false (the viewer, which cannot wait): the energy is left
     // out with that reason.
     bool extendEnergyWindow = true;
+    // Recorded (RendererSession::render) into a command buffer submitted in the batch of the
+    // last frame, with the frame's hdr image (TRANSFER_SRC_OPTIMAL by then): the viewer's copy
+    // of a view for its display, without a submission and a wait of its own (issue 42).
+    std::function<void(VkCommandBuffer, const Image& hdr)> afterLastFrame;
 };
 
 struct RunResult {

@@ -29,9 +29,11 @@ void recordFrame(VkCommandBuffer cmd, FrameGraph& graph, GpuProfiler& profiler,
                  PassStatistics* statistics);
 // Warm-up then timed frames of the one recording; the profiler keeps the timed ones, `energy`
 // gets their energy (RunOptions::energy; frames added past them to lengthen its window are not
-// timed). Returns how many warm-up frames ran.
+// timed). `after` (may be null) is submitted in the last frame's batch, after it. Returns how
+// many warm-up frames ran.
 uint32_t submitFrames(GpuContext& ctx, VkCommandBuffer cmd, GpuProfiler& profiler,
-                      const RunOptions& options, FrameEnergy& energy);
+                      const RunOptions& options, FrameEnergy& energy,
+                      VkCommandBuffer after = VK_NULL_HANDLE);
 // What a report needs from the frames just run (without RunOptions::readback: no images, no
 // per-pass work; `statistics` null: no counts, so no efficiency either).
 RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEntry& entry,

@@ -34,6 +34,7 @@ RendererSession::RendererSession(GpuContext& ctx, SceneGpu& scene, const Rendere
 
 RendererSession::~RendererSession() {
     if (cmd_) ctx_.freeCommandBuffer(cmd_);
+    if (afterCmd_) ctx_.freeCommandBuffer(afterCmd_);
 }
 
 const std::string& RendererSession::name() const {
@@ -99,6 +100,18 @@ Status RendererSession::follow(double& updateMs) {
     return s;
 }
 
+// RunOptions::afterLastFrame for the plan's hdr as it is now (a replan makes another image).
+VkCommandBuffer RendererSession::recordAfter(const RunOptions& options) {
+    if (!options.afterLastFrame) return VK_NULL_HANDLE;
+    if (!afterCmd_) afterCmd_ = ctx_.allocateCommandBuffer();
+    VK_CHECK(vkResetCommandBuffer(afterCmd_, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO}; // may go twice
+    VK_CHECK(vkBeginCommandBuffer(afterCmd_, &begin));
+    options.afterLastFrame(afterCmd_, hdrImage());
+    VK_CHECK(vkEndCommandBuffer(afterCmd_));
+    return afterCmd_;
+}
+
 Result<RunResult> RendererSession::render(const RunOptions& options) {
     auto mark = std::chrono::steady_clock::now();
     auto lap = [&mark](double& ms) { ms += msSince(mark), mark = std::chrono::steady_clock::now(); };
@@ -118,7 +131,7 @@ Result<RunResult> RendererSession::render(const RunOptions& options) {
     FrameEnergy energy;
     for (uint32_t grown = 0;; ++grown) {
         profiler_->discardSamples();
-        warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options, energy);
+        warmup = detail::submitFrames(ctx_, cmd_, *profiler_, options, energy, recordAfter(options));
         lap(steps_.framesMs);
         steps_.energyMs += energy.readMs;
         const bool overflowed = framed && grown < kMaxGrowths &&

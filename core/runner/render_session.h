@@ -62,6 +62,7 @@ class RendererSession {
     Status plan();
     Status record();
     Status follow(double& updateMs); // the view changed since the last recording
+    VkCommandBuffer recordAfter(const RunOptions& options);
 
     GpuContext& ctx_;
     SceneGpu& scene_;
@@ -72,6 +73,7 @@ class RendererSession {
     std::unique_ptr<GpuProfiler> profiler_;
     std::unique_ptr<PassStatistics> statistics_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    VkCommandBuffer afterCmd_ = VK_NULL_HANDLE; // RunOptions::afterLastFrame's recording
     uint64_t generation_ = 0;   // SceneGpu::viewGeneration() the recording is for
     bool recorded_ = false;     // cmd_ holds a complete recording
     uint32_t lightCount_ = 0;   // planned for: a change needs a new plan
