@@ -1,9 +1,10 @@
 // Multipass forward's per-light draw lists on the GPU (--light-draws gpu, the default;
-// multipass_forward/light_draw_pass.h) against the CPU's lists (--light-draws cpu, the light plan
-// as it was built before): the same images bit for bit and the same counters, at 1x and 4x at both
-// shading rates, with meshlet culling, shadows, fp16 and every --blended-lights; and, over several
-// views of one planned renderer, no per-light list built on the CPU while the counters stay those
-// of a CPU plan of each view.
+// multipass_forward/light_draw_pass.h, and for the blended draws' lights
+// blended_light_draw_pass.h) against the CPU's lists (--light-draws cpu, the light plan as it was
+// built before): the same images bit for bit and the same counters, at 1x and 4x at both shading
+// rates, with meshlet culling, shadows, fp16 and every --blended-lights; and, over several views
+// of one planned renderer, no per-light list (opaque or blended) built on the CPU while the
+// counters stay those of a CPU plan of each view.
 #include <cstring>
 
 #include "core/cli/shadow_option.h"
@@ -25,6 +26,12 @@ struct Config {
     uint32_t msaa = 1;
     std::map<std::string, std::string> knobs;
     const char* shadows = nullptr;
+    // The blended draws' lights on the GPU too: --blended-lights under (the default) without
+    // shadows (additive and shadows keep them on the CPU; one-pass has none).
+    bool blendedOnGpu() const {
+        auto b = knobs.find("blended-lights");
+        return !shadows && (b == knobs.end() || b->second == "under");
+    }
 };
 
 void PrintTo(const Config& c, std::ostream* os) {
@@ -79,6 +86,14 @@ TEST_P(MultipassLightDraws, GpuListsRenderTheCpuListsImageWithTheirCounters) {
     const RunResult gpu = render(*ctx, scene, c, "gpu");
     EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0) << "fell back to the CPU";
     EXPECT_EQ(cpu.stats.counter("light_draws_gpu"), 0.0);
+    EXPECT_EQ(gpu.stats.counter("blended_light_draws_gpu", -1), c.blendedOnGpu() ? 1.0 : 0.0);
+    EXPECT_EQ(cpu.stats.counter("blended_light_draws_gpu", -1), 0.0);
+    // GPU blended lists: the plan tested no blended draw against a light on the CPU.
+    const bool onePass = c.knobs.count("blended-lights") && c.knobs.at("blended-lights") == "one-pass";
+    EXPECT_EQ(gpu.stats.counter("blended_light_lists_cpu_builds", -1),
+              c.blendedOnGpu() || onePass ? 0.0 : 1.0);
+    if (c.blendedOnGpu())
+        EXPECT_GT(cpu.stats.counter("blended_light_draws"), 0.0) << "no blended light: weak";
     EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba))
         << c.name << ": colour differs in " << differingPixels(gpu.hdr, cpu.hdr) << " pixels";
     EXPECT_TRUE(sameBits(gpu.depth.r, cpu.depth.r)) << c.name << ": depth differs";
@@ -137,6 +152,13 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
         ASSERT_TRUE(g.ok() && c.ok());
         EXPECT_EQ(g->stats.counter("light_lists_cpu_builds", -1), 0.0) << "view " << v;
         EXPECT_EQ(c->stats.counter("light_lists_cpu_builds", -1), double(v + 1)) << "view " << v;
+        EXPECT_EQ(g->stats.counter("blended_light_lists_cpu_builds", -1), 0.0) << "view " << v;
+        EXPECT_EQ(c->stats.counter("blended_light_lists_cpu_builds", -1), double(v + 1))
+            << "view " << v;
+        EXPECT_EQ(g->stats.counter("blended_light_draws_gpu", -1), 1.0) << "view " << v;
+        EXPECT_TRUE(sameBits(g->hdr.rgba, c->hdr.rgba))
+            << "view " << v << ": colour differs in " << differingPixels(g->hdr, c->hdr)
+            << " pixels";
         for (const char* name : kPlanCounters)
             EXPECT_EQ(g->stats.counter(name, -1), c->stats.counter(name, -2))
                 << "view " << v << ": " << name;
