@@ -3,8 +3,9 @@
 // The passes of multipass forward, one file each: base_pass.cpp, light_passes.cpp,
 // blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each
 // creates its pipelines in its constructor (after the graph allocated resources) and records into
-// the targets below. They share the scene's pipeline layout (set 0 + DrawPush); nothing has a
-// set 1; with --shadows, set 2 is the one light's shadow map (shadowed_shading.cpp).
+// the targets below. They share the scene's pipeline layout (set 0 + DrawPush); set 1 is the
+// blended light draws' light table with GPU blended lists (blended_light_draw_pass.h), else
+// empty; with --shadows, set 2 is the one light's shadow map (shadowed_shading.cpp).
 #include <string>
 #include <vector>
 
