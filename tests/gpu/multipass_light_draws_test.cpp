@@ -117,6 +117,29 @@ INSTANTIATE_TEST_SUITE_P(
                       Config{"4x_shadows_cull", 4, {{"cull-geometry", "frustum"}}, "all"}),
     [](const ::testing::TestParamInfo<Config>& info) { return info.param.name; });
 
+// A device without dual-source blending keeps the blended draws' lights on the CPU, says so in
+// left_out, and renders the same image (the opaque lists stay on the GPU).
+TEST(MultipassLightDrawsFallback, WithoutDualSourceBlendingBlendedLightsStayOnTheCpu) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Scene scene = sceneWithLights();
+    const RunResult cpu = render(*ctx, scene, Config{"1x"}, "cpu");
+    ctx->caps.dualSrcBlend = false; // as a device without the feature reports it
+    const RunResult gpu = render(*ctx, scene, Config{"1x"}, "gpu");
+    EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0);
+    EXPECT_EQ(gpu.stats.counter("blended_light_draws_gpu", -1), 0.0);
+    EXPECT_EQ(gpu.stats.counter("blended_light_lists_cpu_builds", -1), 1.0);
+    bool said = false;
+    for (const LeftOut& l : gpu.stats.leftOut)
+        said |= l.what.find("blended_light_draws") != std::string::npos &&
+                l.why.find("dualSrcBlend") != std::string::npos;
+    EXPECT_TRUE(said) << "left_out does not say why the blended lights stay on the CPU";
+    EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba));
+    for (const char* name : kPlanCounters)
+        EXPECT_EQ(gpu.stats.counter(name, -1), cpu.stats.counter(name, -2)) << name;
+    expectNoValidationMessages(*ctx);
+}
+
 // A renderer planned once and moved through an orbit: with GPU lists no view builds a per-light
 // list on the CPU (light_lists_cpu_builds stays 0; with cpu it counts every view), and each
 // view's counters are those of a CPU plan made at that view.
