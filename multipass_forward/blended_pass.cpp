@@ -13,11 +13,15 @@
 // --blended-lights additive keeps that textbook pass, to measure the difference;
 // --blended-lights one-pass draws only the composite, with every light in it
 // (one_pass.frag), as engines light transparent objects.
+// With GPU lists (--light-draws gpu, blended_light_draw_pass.h) step 2 is one indirect call per
+// draw: the GPU wrote the light draws and resets, and one dual-source pipeline draws both.
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
 #include "core/renderer/renderer.h"
+#include "multipass_forward/blended_light_draw_pass.h"
+#include "multipass_forward/blended_light_draws.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -38,6 +42,17 @@ VkPipelineColorBlendAttachmentState underBlend() {
     a.alphaBlendOp = VK_BLEND_OP_ADD;
     a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                        VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    return a;
+}
+
+// One blend state for a light draw and its reset (light.frag, TP_MP_BLENDED_GPU): colour
+// src0 * T + dst as underBlend(); alpha src0.a + T * (1 - src1.a), with src0.a = 0 for a light
+// draw (T * (1 - alpha), as underBlend's 0 + T * (1 - alpha)) and src0.a = src1.a = 1 for a reset
+// (1 + T * 0 = 1, as alphaOnly's 1).
+VkPipelineColorBlendAttachmentState dualSourceUnderBlend() {
+    VkPipelineColorBlendAttachmentState a = underBlend();
+    a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA;
     return a;
 }
 
@@ -71,6 +86,10 @@ BlendedPass::BlendedPass(const PassEnv& env)
         return;
     }
     d.blend = BlendMode::Custom;
+    if (env.blendedLightDraws) {
+        createGpuLightPipeline(d);
+        return;
+    }
     d.customBlend = underBlend();
     light_ = createGraphicsPipeline(env.ctx, d);
     lightShadowed_ = createShadowedTwin(env, d);
@@ -81,7 +100,23 @@ BlendedPass::BlendedPass(const PassEnv& env)
     createReversedIndices();
 }
 
+// GPU lists: the light draws and resets of every blended draw of the scene (the plan no longer
+// says which are lit), read from the GPU's commands with each light's slot in firstInstance.
+void BlendedPass::createGpuLightPipeline(GraphicsPipelineDesc d) {
+    PassSet lightSet; // what the shader's set TP_SET_PASS is checked against (reflection)
+    lightSet.pass = "blended";
+    lightSet.bindings = {{TP_MPBL_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    lightSet.layout = env_.blendedLightDraws->lightSetLayout();
+    d.vertexShader = "scene_material_vert";
+    d.fragmentShader = fragmentShader(env_, "light_blend");
+    d.customBlend = dualSourceUnderBlend();
+    d.passSet = &lightSet;
+    lightGpu_ = createGraphicsPipeline(env_.ctx, d);
+    createReversedIndices();
+}
+
 BlendedPass::~BlendedPass() {
+    destroyPipeline(env_.ctx, lightGpu_);
     destroyPipeline(env_.ctx, base_);
     destroyPipeline(env_.ctx, light_);
     destroyPipeline(env_.ctx, lightShadowed_);
@@ -93,7 +128,7 @@ BlendedPass::~BlendedPass() {
 // allDraws every blended draw of the scene, so no view needs a new buffer.
 void BlendedPass::createReversedIndices() {
     std::vector<const DrawItem*> lit;
-    if (env_.allDraws)
+    if (env_.allDraws || env_.blendedLightDraws)
         lit = env_.scene.drawList(DrawFilter::Blend);
     else
         for (const BlendedDraw& bd : env_.plan.blended)
@@ -127,7 +162,7 @@ void BlendedPass::createReversedIndices() {
 }
 
 void BlendedPass::follow() {
-    if (!light_ || additive_ || onePass_) return;
+    if (!light_ || additive_ || onePass_) return; // also GPU lists: every draw has its range
     for (const BlendedDraw& bd : env_.plan.blended)
         if (!bd.lights.empty() && !reversedFirst_.count(bd.draw)) {
             createReversedIndices();
@@ -186,6 +221,14 @@ void BlendedPass::recordAdditiveLights(PassContext& pc, const BlendedDraw& bd,
     }
 }
 
+// GPU lists: the composite's push constant (the draw's material) and cull mode hold for the
+// light draws and resets (same layout); the GPU's commands name the light and the reset.
+void BlendedPass::recordGpuLights(PassContext& pc, uint32_t b) {
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lightGpu_);
+    vkCmdBindIndexBuffer(pc.cmd, reversedIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+    env_.blendedLightDraws->record(pc, b);
+}
+
 void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
     std::vector<uint32_t> order; // the lights in the order their passes run
     if (light_)
@@ -196,13 +239,16 @@ void BlendedPass::record(PassContext& pc, const Targets& t, bool resolve) {
     scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
     const ScreenRect full{0, 0, int32_t(env_.settings.width), int32_t(env_.settings.height)};
     draws_ = lightDraws_ = 0;
+    if (lightGpu_) env_.blendedLightDraws->bindLightSet(pc.cmd, env_.layout);
     for (size_t b = 0; b < env_.plan.blended.size(); ++b) {
         const BlendedDraw& bd = env_.plan.blended[b];
         vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, base_);
         scene.bindIndexBuffer(pc.cmd);
         setScissor(pc.cmd, full);
         recordDraw(pc.cmd, env_.layout, *bd.draw);
-        if (additive_)
+        if (lightGpu_)
+            recordGpuLights(pc, uint32_t(b));
+        else if (additive_)
             recordAdditiveLights(pc, bd, shading);
         else
             recordUnderLights(pc, bd, shading);

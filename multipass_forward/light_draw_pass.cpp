@@ -29,6 +29,20 @@ Buffer mappedStorage(GpuContext& ctx, VkDeviceSize size, const char* name, const
 
 } // namespace
 
+void writeLightRows(const SceneGpu& scene, const LightPlan& plan, uint32_t lights, void* rows) {
+    const std::vector<gpu::LightGpu>& sceneLights = scene.shadingLights();
+    auto* out = static_cast<gpu::LightDrawLight*>(rows);
+    for (size_t s = 0; s < plan.localIndex.size() && s < lights; ++s) {
+        const gpu::LightGpu& l = sceneLights[plan.localIndex[s]];
+        gpu::LightDrawLight row{};
+        row.rect = toIvec(plan.localRect[s]);
+        row.sphere = glm::vec4(l.position, l.range);
+        row.flags = l.type == TP_LIGHT_DIRECTIONAL ? TP_MPLD_FLAG_ALL : 0u;
+        row.light = plan.localIndex[s];
+        out[s] = row;
+    }
+}
+
 std::string LightDrawPass::unavailable(const GpuContext& ctx, const SceneGpu& scene,
                                        uint32_t localLights) {
     if (!ctx.caps.drawIndirectCount || !ctx.caps.drawIndirectFirstInstance)
@@ -103,16 +117,7 @@ void LightDrawPass::update(const LightPlan& plan) {
     gpu::LightDrawParams params{lights_, uint32_t(draws_.size()), runs(),
                                 f.viewport.w <= 1 ? 1u : 0u}; // as light_plan's shadedInsideBox
     std::memcpy(params_.mapped, &params, sizeof(params));
-    const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
-    auto* lightRows = static_cast<gpu::LightDrawLight*>(lightRows_.mapped);
-    for (size_t s = 0; s < plan.localIndex.size() && s < lights_; ++s) {
-        const gpu::LightGpu& l = lights[plan.localIndex[s]];
-        gpu::LightDrawLight row{};
-        row.rect = toIvec(plan.localRect[s]);
-        row.sphere = glm::vec4(l.position, l.range);
-        row.flags = l.type == TP_LIGHT_DIRECTIONAL ? TP_MPLD_FLAG_ALL : 0u;
-        lightRows[s] = row;
-    }
+    writeLightRows(scene_, plan, lights_, lightRows_.mapped);
     auto* drawRows = static_cast<gpu::LightDrawDraw*>(drawRows_.mapped);
     uint32_t run = 0;
     for (size_t i = 0; i < draws_.size(); ++i) {

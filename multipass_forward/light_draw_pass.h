@@ -31,6 +31,10 @@ struct DrawItem;
 
 namespace tp::mp {
 
+// Each local light's row (rectangle, camera-relative sphere, flags, scene index) in light order,
+// for the light-draws passes (this one and blended_light_draw_pass.h): `rows` holds `lights`.
+void writeLightRows(const SceneGpu& scene, const LightPlan& plan, uint32_t lights, void* rows);
+
 class LightDrawPass {
   public:
     // Empty when this device or size cannot take it: why not (the renderer then builds the

@@ -132,7 +132,8 @@ bool touches(const gpu::LightGpu& l, const ScreenRect& lightRect, const VisibleD
 
 } // namespace
 
-LightPlan planLights(const SceneGpu& scene, bool lightBlended, LightLists lists) {
+LightPlan planLights(const SceneGpu& scene, bool lightBlended, LightLists lists,
+                     LightLists blendedLists) {
     LightPlan plan;
     plan.lists = lists;
     const gpu::FrameUniforms& f = scene.shadingFrame();
@@ -170,7 +171,8 @@ LightPlan planLights(const SceneGpu& scene, bool lightBlended, LightLists lists)
                     if (lists == LightLists::Cpu && touches(l, batch.scissor, v, boxTest))
                         batch.draws.push_back(v.draw);
             meshes = uint32_t(batch.draws.size());
-            for (size_t b = 0; lightBlended && b < blended.size(); ++b)
+            const bool blendedHere = lightBlended && blendedLists == LightLists::Cpu;
+            for (size_t b = 0; blendedHere && b < blended.size(); ++b)
                 if (touches(l, batch.scissor, blended[b], boxTest)) {
                     plan.blended[b].lights.push_back({i, batch.scissor});
                     ++blendedMeshes;
@@ -188,7 +190,10 @@ LightPlan planLights(const SceneGpu& scene, bool lightBlended, LightLists lists)
     return plan;
 }
 
-void mergeGpuMeshes(LightPlan& plan, const std::vector<uint32_t>& gpuMeshes) {
+void mergeGpuMeshes(LightPlan& plan, const std::vector<uint32_t>& gpuMeshes,
+                    const std::vector<uint32_t>& gpuBlended) {
+    for (size_t s = 0; s < gpuBlended.size() && s < plan.blendedMeshes.size(); ++s)
+        plan.blendedMeshes[s] = gpuBlended[s];
     plan.lightsSkipped = 0;
     plan.meshesPerLightMax = 0;
     plan.meshesPerLightSum = 0;

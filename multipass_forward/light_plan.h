@@ -71,12 +71,15 @@ struct LightPlan {
 };
 
 // The counters over every local light, from each slot's opaque and masked draws counted by the
-// GPU (LightLists::Gpu) and the plan's blended ones.
-void mergeGpuMeshes(LightPlan& plan, const std::vector<uint32_t>& gpuMeshes);
+// GPU (LightLists::Gpu) and its blended ones: the plan's, or (non-empty `gpuBlended`) the GPU's.
+void mergeGpuMeshes(LightPlan& plan, const std::vector<uint32_t>& gpuMeshes,
+                    const std::vector<uint32_t>& gpuBlended = {});
 
 // `lightBlended` false: blended draws get no light passes (they are lit in one pass, so no
-// light counts them among its meshes).
+// light counts them among its meshes). `blendedLists` Gpu: the blended draws' lights are the
+// blended-light-draws pass's (blended_light_draw_pass.h): each BlendedDraw's `lights` and
+// `blendedMeshes` stay empty and no light is tested against a blended draw here.
 LightPlan planLights(const SceneGpu& scene, bool lightBlended = true,
-                     LightLists lists = LightLists::Cpu);
+                     LightLists lists = LightLists::Cpu, LightLists blendedLists = LightLists::Cpu);
 
 } // namespace tp::mp

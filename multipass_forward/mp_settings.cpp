@@ -16,9 +16,11 @@ const ChoiceKnob<LightLists>& lightListsKnob() {
     static const ChoiceKnob<LightLists> k{
         "light-draws",
         {{LightLists::Gpu, "gpu"}, {LightLists::Cpu, "cpu"}},
-        "Multipass forward per-light draw lists of opaque and masked meshes: gpu (a compute pass "
-        "writes each light's indirect draws every frame; a new view re-plans nothing per light) "
-        "or cpu (built on the CPU for each view, one recorded draw per light and mesh)"};
+        "Multipass forward per-light draw lists: gpu (compute passes write each light's "
+        "indirect draws of opaque and masked meshes, and with --blended-lights under each "
+        "blended draw's light draws and resets, every frame; a new view re-plans nothing per "
+        "light; blended lights stay on the CPU with --shadows or without dualSrcBlend) or cpu "
+        "(built on the CPU for each view, one recorded draw per light and mesh)"};
     return k;
 }
 

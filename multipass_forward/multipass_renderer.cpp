@@ -9,6 +9,7 @@
 #include "core/passes/depth_prepass.h"
 #include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
+#include "multipass_forward/blended_light_draw_pass.h"
 #include "multipass_forward/light_draw_pass.h"
 #include "multipass_forward/passes.h"
 
@@ -33,6 +34,21 @@ LightLists chooseLists(const RendererCreateInfo& info, const Settings& s, std::s
     return why.empty() ? LightLists::Gpu : LightLists::Cpu;
 }
 
+// The blended draws' lights on the GPU too where the opaque lists are, the blended draws are lit
+// by light draws composited under (not additive, not one-pass), no light is shadowed (a map is
+// rendered between two lights' draws) and the device blends dual-source; `why` says why not
+// where it matters (a scene with blended draws lit by light draws).
+LightLists chooseBlendedLists(const RendererCreateInfo& info, const Settings& s, LightLists lists,
+                              std::string& why) {
+    if (lists == LightLists::Cpu || s.blendedLights == BlendedLights::OnePass ||
+        !info.scene.hasDraws(DrawFilter::Blend))
+        return LightLists::Cpu;
+    why = BlendedLightDrawPass::unavailable(info.ctx, info.scene, localLightCount(info.scene),
+                                            !info.scene.shadowPlan().empty(),
+                                            s.blendedLights == BlendedLights::Additive);
+    return why.empty() ? LightLists::Gpu : LightLists::Cpu;
+}
+
 class MultipassForwardRenderer final : public Renderer {
   public:
     explicit MultipassForwardRenderer(const RendererCreateInfo& info)
@@ -40,11 +56,12 @@ class MultipassForwardRenderer final : public Renderer {
           accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                 : VK_FORMAT_R32G32B32A32_SFLOAT),
           manyViews_(info.settings.manyViews), lists_(chooseLists(info, mp_, listsWhy_)),
-          plan_(newPlan()) {}
+          blendedLists_(chooseBlendedLists(info, mp_, lists_, blendedWhy_)), plan_(newPlan()) {}
 
     ~MultipassForwardRenderer() override {
         cull_.reset();
         lightDraws_.reset();
+        blendedDraws_.reset();
         prepass_.reset();
         base_.reset();
         lights_.reset();
@@ -90,6 +107,13 @@ class MultipassForwardRenderer final : public Renderer {
         }
         if (hasBlended) {
             std::vector<PassUse> uses = shadingUses(t_, true);
+            if (blendedLists_ == LightLists::Gpu) {
+                // Each blended draw's light draws and resets, written on the GPU every frame.
+                blendedDraws_.emplace(ctx_, scene_, plan_.localLights);
+                blendedDraws_->plan(graph);
+                for (const PassUse& u : blendedDraws_->drawUses())
+                    uses.push_back(u);
+            }
             if (lightBlended()) addShadowUse(uses, &*shadows_); // one-pass: no light passes
             graph.addPass("blended", uses,
                           [this](PassContext& pc) { blended_->record(pc, t_, true); });
@@ -100,11 +124,16 @@ class MultipassForwardRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         shadows_->prepare(graph);
-        layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, shadows_->setLayout());
+        if (blendedDraws_) blendedDraws_->prepare(graph);
+        // Set TP_SET_PASS: the blended light draws' light table (GPU lists; no shadows then).
+        layout_ = scene_.createPipelineLayout(
+            blendedDraws_ ? blendedDraws_->lightSetLayout() : VK_NULL_HANDLE,
+            shadows_->setLayout());
         PassEnv env{ctx_,       scene_,     mp_,
                     plan_,      layout_,    accumFormat_,
                     manyViews_, &*shadows_, cull_ ? &*cull_ : nullptr,
-                    lightDraws_ ? &*lightDraws_ : nullptr};
+                    lightDraws_ ? &*lightDraws_ : nullptr,
+                    blendedDraws_ ? &*blendedDraws_ : nullptr};
         if (cull_) cull_->prepare(graph);
         if (lightDraws_) {
             lightDraws_->prepare(graph);
@@ -114,6 +143,7 @@ class MultipassForwardRenderer final : public Renderer {
         base_ = std::make_unique<BasePass>(env);
         lights_ = std::make_unique<LightPasses>(env);
         blended_ = std::make_unique<BlendedPass>(env);
+        updateBlendedDraws();
     }
 
     // The light plan again for the new view, kept where the planned passes and pipelines can
@@ -132,6 +162,7 @@ class MultipassForwardRenderer final : public Renderer {
         plan_ = std::move(next);
         if (lightDraws_) lightDraws_->update(plan_);
         blended_->follow();
+        updateBlendedDraws();
         return true;
     }
 
@@ -139,10 +170,11 @@ class MultipassForwardRenderer final : public Renderer {
     // (lights_skipped, meshes_per_light_*) are complete only after it.
     void collectStats(FrameGraph& graph) override {
         if (cull_) cull_->collect(graph);
-        if (lightDraws_) {
-            lightDraws_->collect(graph);
-            mergeGpuMeshes(plan_, lightDraws_->meshes());
-        }
+        if (lightDraws_) lightDraws_->collect(graph);
+        if (blendedDraws_) blendedDraws_->collect(graph);
+        if (lightDraws_ || blendedDraws_)
+            mergeGpuMeshes(plan_, lightDraws_ ? lightDraws_->meshes() : std::vector<uint32_t>{},
+                           blendedDraws_ ? blendedDraws_->meshes() : std::vector<uint32_t>{});
         if (shadows_) shadows_->collect(graph);
     }
 
@@ -162,8 +194,18 @@ class MultipassForwardRenderer final : public Renderer {
     bool lightBlended() const { return mp_.blendedLights != BlendedLights::OnePass; }
     LightPlan newPlan() {
         if (lists_ == LightLists::Cpu) ++cpuListBuilds_;
-        return planLights(scene_, lightBlended(), lists_);
+        if (blendedLists_ == LightLists::Cpu && lightBlended()) ++cpuBlendedBuilds_;
+        return planLights(scene_, lightBlended(), lists_, blendedLists_);
     }
+    // The blended draws on screen, with their reversed index ranges, for the GPU's lists.
+    void updateBlendedDraws() {
+        if (blendedDraws_)
+            blendedDraws_->update(plan_,
+                                  [this](const DrawItem* d) { return blended_->reversedFirst(d); });
+    }
+    // The blended light draws (of blended_draws; under: each has a reset too): with GPU lists
+    // those the frame issued (0 before a frame).
+    uint32_t blendedLightDraws() const;
     // The light passes' draws: with GPU lists those the frame issued (0 before a frame).
     uint32_t lightPassDraws() const;
 
@@ -191,13 +233,17 @@ class MultipassForwardRenderer final : public Renderer {
     bool hasLights_ = false, hasBlended_ = false; // the passes planned
     std::string listsWhy_; // why --light-draws gpu fell back to the CPU (empty: it did not)
     LightLists lists_;
+    std::string blendedWhy_;    // why the blended draws' lights stay on the CPU with gpu lists
+    LightLists blendedLists_;   // who selects each blended draw's lights
     uint32_t cpuListBuilds_ = 0; // per-light lists of opaque and masked draws built on the CPU
+    uint32_t cpuBlendedBuilds_ = 0; // views whose blended draws' lights the CPU planned
     LightPlan plan_;
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::optional<ShadowMaps> shadows_; // one light's map (shadow_map) with --shadows
     std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     std::optional<LightDrawPass> lightDraws_; // --light-draws gpu: light_draws
+    std::optional<BlendedLightDrawPass> blendedDraws_; // and blended_light_draws
     std::unique_ptr<passes::DepthPrepass> prepass_;
     std::unique_ptr<BasePass> base_;
     std::unique_ptr<LightPasses> lights_;
@@ -212,12 +258,21 @@ uint32_t MultipassForwardRenderer::lightPassDraws() const {
     return draws;
 }
 
+uint32_t MultipassForwardRenderer::blendedLightDraws() const {
+    if (!blendedDraws_) return blended_ ? blended_->lightDraws() : 0;
+    uint32_t draws = 0;
+    for (uint32_t m : blendedDraws_->meshes()) draws += m;
+    return draws;
+}
+
 RendererStats MultipassForwardRenderer::stats() const {
     RendererStats s;
     auto count = [&](const std::string& name, double v) { s.counters.push_back({name, v}); };
     shadowStats(s);
-    const uint32_t lightDraws = lightPassDraws(),
-                   blendDraws = blended_ ? blended_->draws() : 0;
+    // With GPU blended lists the pass records the composites; each light draw has its reset.
+    const uint32_t lightDraws = lightPassDraws(), blendLightDraws = blendedLightDraws(),
+                   blendDraws = (blended_ ? blended_->draws() : 0) +
+                                (blendedDraws_ ? 2 * blendLightDraws : 0);
     const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0,
                    baseDraws = base_ ? base_->draws() : 0;
     count("draws", double(prepassDraws + baseDraws + lightDraws + blendDraws));
@@ -225,7 +280,7 @@ RendererStats MultipassForwardRenderer::stats() const {
     count("base_pass_draws", baseDraws);
     count("light_passes_draws", lightDraws);
     count("blended_draws", blendDraws);
-    count("blended_light_draws", blended_ ? blended_->lightDraws() : 0);
+    count("blended_light_draws", blendLightDraws);
     count("local_lights", plan_.localLights);
     count("lights_skipped", plan_.lightsSkipped);
     count("base_pass_directional_lights", double(plan_.baseDirectional.size()));
@@ -238,6 +293,9 @@ RendererStats MultipassForwardRenderer::stats() const {
     count("light_draws_gpu", lightDraws_ ? 1.0 : 0.0);
     if (lightDraws_) count("light_passes_indirect_calls", lights_ ? lights_->draws() : 0);
     count("light_lists_cpu_builds", cpuListBuilds_);
+    // The same for the blended draws' lights (blended draws x lights tests on the CPU per view).
+    count("blended_light_draws_gpu", blendedDraws_ ? 1.0 : 0.0);
+    count("blended_light_lists_cpu_builds", cpuBlendedBuilds_);
     if (cull_) { // --cull-geometry frustum: meshlets and triangles, submitted and culled
         for (const auto& c : cull_->counters())
             s.counters.push_back(c);
@@ -255,6 +313,9 @@ RendererStats MultipassForwardRenderer::stats() const {
     }
     if (!listsWhy_.empty())
         s.leftOut.push_back({"light_draws (--light-draws gpu)", listsWhy_ + ": lists on the CPU"});
+    if (!blendedWhy_.empty())
+        s.leftOut.push_back({"blended_light_draws (--light-draws gpu)",
+                             blendedWhy_ + ": the blended draws' lights on the CPU"});
     if (plan_.batches.empty())
         s.leftOut.push_back({"light_passes", plan_.localLights
                                                  ? "no local light touches a mesh on screen"

@@ -3,8 +3,9 @@
 // The passes of multipass forward, one file each: base_pass.cpp, light_passes.cpp,
 // blended_pass.cpp, after the pass library's depth prepass (core/passes/depth_prepass.h). Each
 // creates its pipelines in its constructor (after the graph allocated resources) and records into
-// the targets below. They share the scene's pipeline layout (set 0 + DrawPush); nothing has a
-// set 1; with --shadows, set 2 is the one light's shadow map (shadowed_shading.cpp).
+// the targets below. They share the scene's pipeline layout (set 0 + DrawPush); set 1 is the
+// blended light draws' light table with GPU blended lists (blended_light_draw_pass.h), else
+// empty; with --shadows, set 2 is the one light's shadow map (shadowed_shading.cpp).
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ class MeshletCull;
 namespace tp::mp {
 
 class LightDrawPass;
+class BlendedLightDrawPass;
 
 // The accumulation target and depth every pass renders into: the single-sample exported
 // images at 1x, the per-sample ones under MSAA (resolved by the last pass into hdr).
@@ -64,6 +66,10 @@ struct PassEnv {
     // --light-draws gpu: the light passes draw each light's indirect draws written by this pass
     // (whole meshes, also under --cull-geometry); null: the plan's CPU lists.
     const LightDrawPass* lightDraws = nullptr;
+    // --light-draws gpu with --blended-lights under (no shadows, dualSrcBlend): each blended
+    // draw's light draws and resets are this pass's indirect draws (one dual-source pipeline, the
+    // light's slot in firstInstance, set TP_SET_PASS its light table); null: the plan's lists.
+    const BlendedLightDrawPass* blendedLightDraws = nullptr;
 };
 
 // Frame-graph uses of a pass that blends into the accumulation target with the prepass
@@ -172,17 +178,23 @@ class BlendedPass {
     explicit BlendedPass(const PassEnv& env);
     ~BlendedPass();
     void record(PassContext& pc, const Targets& t, bool resolve);
+    // With GPU lists (env.blendedLightDraws) the composites alone: the light draws and resets
+    // are the GPU's (blended_light_draw_meshes), counted after the frame by the renderer.
     uint32_t draws() const { return draws_; }
     uint32_t lightDraws() const { return lightDraws_; } // of draws(); under: each has a reset too
     uint32_t mapRenders() const { return mapRenders_; } // shadow maps rendered (--shadows)
     bool hasPipelines() const { return base_ != VK_NULL_HANDLE; }
     // After the plan changed (a new view): the reversed triangles of every draw lit now.
     void follow();
+    // A blended draw's first index in blended_indices_reversed (it has lights, or GPU lists).
+    uint32_t reversedFirst(const DrawItem* draw) const { return reversedFirst_.at(draw); }
 
   private:
     void createReversedIndices();
     void recordUnderLights(PassContext& pc, const BlendedDraw& bd, ShadowedShading& shading);
     void recordAdditiveLights(PassContext& pc, const BlendedDraw& bd, ShadowedShading& shading);
+    void recordGpuLights(PassContext& pc, uint32_t b);
+    void createGpuLightPipeline(GraphicsPipelineDesc d);
     // Before a light's draws: the map (ShadowedShading::hold) and this light's pipeline.
     void bindLight(PassContext& pc, ShadowedShading& shading, uint32_t light, VkBuffer indices);
 
@@ -191,6 +203,7 @@ class BlendedPass {
     const bool onePass_;  // --blended-lights one-pass: every light in the composite, no light draws
     VkPipeline base_ = VK_NULL_HANDLE, light_ = VK_NULL_HANDLE, reset_ = VK_NULL_HANDLE;
     VkPipeline lightShadowed_ = VK_NULL_HANDLE; // --shadows: light_'s twin
+    VkPipeline lightGpu_ = VK_NULL_HANDLE; // GPU lists: light draws and resets (dual source)
     VkPipeline bound_ = VK_NULL_HANDLE;         // while recording
     Buffer reversedIndices_;              // lit blended draws, triangles in reverse order
     std::map<const DrawItem*, uint32_t> reversedFirst_; // a lit draw's first index there

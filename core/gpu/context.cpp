@@ -186,6 +186,7 @@ DeviceCaps readCaps(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p
     c.drawIndirectCount = f12.drawIndirectCount && f.multiDrawIndirect;
     c.drawIndirectFirstInstance = f.drawIndirectFirstInstance;
     c.int64Atomics = f.shaderInt64 && f12.shaderBufferInt64Atomics;
+    c.dualSrcBlend = f.dualSrcBlend;
     return c;
 }
 
@@ -248,6 +249,7 @@ VkResult createLogicalDevice(VkPhysicalDevice physical, uint32_t family, const D
     features.features.multiDrawIndirect = caps.drawIndirectCount;
     features.features.drawIndirectFirstInstance = caps.drawIndirectFirstInstance;
     features.features.shaderInt64 = caps.int64Atomics;
+    features.features.dualSrcBlend = caps.dualSrcBlend;
 
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
     deviceInfo.queueCreateInfoCount = 1;

@@ -72,6 +72,9 @@ struct DeviceCaps {
     // Indirect draws with a firstInstance other than 0 (1.0's drawIndirectFirstInstance): the
     // visibility pass's culled draws carry each meshlet's first triangle in it.
     bool drawIndirectFirstInstance = false;
+    // Dual-source blending (1.0's dualSrcBlend): multipass forward's blended light draws and
+    // their transmittance resets as one pipeline (--light-draws gpu; blended_light_draw_pass.h).
+    bool dualSrcBlend = false;
     // 64-bit integer atomics on storage buffers (shaderInt64 and Vulkan 1.2's
     // shaderBufferInt64Atomics): the visibility buffer's compute rasterizer (--vis-raster).
     bool int64Atomics = false;

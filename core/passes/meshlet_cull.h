@@ -38,7 +38,7 @@
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/resources.h"
-#include "core/gpuscene/scene_gpu.h"
+#include "core/gpuscene/scene_gpu.h" // DrawItem: slot() reads it inline
 #include "core/renderer/cull_geometry_knob.h"
 
 namespace tp {

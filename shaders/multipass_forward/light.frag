@@ -6,6 +6,16 @@
 // in reverse order: the target's alpha carries the transmittance of the nearer layers of
 // the same draw, so after all passes a blended draw holds exactly what shading all lights
 // at once and blending once gives (blended_pass.cpp, docs/multipass_forward.md).
+//
+// TP_MP_BLENDED_GPU (mp_light_blend_frag): the blended light draws and their transmittance
+// resets as one pipeline, drawn by indirect commands that blended_light_draws.comp wrote. The
+// command's firstInstance (scene_material_vert, flat) names the light's slot and whether this is
+// the reset; the material is the draw's own (DrawPush). Dual-source blending, colour
+// src0 * DST_ALPHA + dst and alpha src0.a + dst.a * (1 - src1.a): a light draw gives src0 =
+// (a * light, 0) and src1.a = a, the same sums as the "under" blend above; a reset gives
+// src0 = (-0, -0, -0, 1) and src1.a = 1: alpha 1 + T * 0 = 1, colour dst + (-0) * T = dst
+// exactly (-0, not +0, so that a -0 stays -0), what the alpha-only reset draw wrote. The light's
+// scissor, which a command cannot set, is a discard outside the light's rectangle (its row).
 #include "include/shared.h"
 #include "multipass_forward/multipass_shared.h"
 #include "include/scene_bindings.glsl"
@@ -13,15 +23,54 @@
 #include "include/scene_inputs.glsl"
 #include "include/shadow_light.glsl"
 
+#ifdef TP_MP_BLENDED_GPU
+#include "multipass_forward/blended_light_draws.h"
+layout(location = TP_LOCATION_MATERIAL) flat in uint inLightWord; // firstInstance
+layout(std430, set = TP_SET_PASS, binding = TP_MPBL_BINDING_LIGHTS) readonly buffer LightRowBlock {
+    LightDrawLight lightRows[];
+};
+layout(location = 0, index = 0) out vec4 outColor;
+layout(location = 0, index = 1) out vec4 outWeight; // src1: its alpha is the layer's alpha
+
+bool inRect(ivec2 lo, ivec2 hi, ivec4 r) {
+    return lo.x < r.z && r.x < hi.x && lo.y < r.w && r.y < hi.y;
+}
+#else
 layout(location = 0) out vec4 outColor;
+#endif
 
 void main() {
+#ifdef TP_MP_BLENDED_GPU
+    const LightDrawLight row = lightRows[inLightWord & TP_MPBL_SLOT_MASK];
+    // The scissor's pixels (framebuffer coordinates, as the scissor). A 2x2 quad with no pixel
+    // in the rectangle leaves at once (no pixel of it needs another's derivatives); any other
+    // fragment outside it shades first, so its quad's derivatives are those a scissored draw's
+    // helper invocations give, and is discarded after.
+    const ivec2 pixel = ivec2(floor(gl_FragCoord.xy)), quad = pixel & ~1;
+    if (!inRect(quad, quad + 2, row.rect)) discard;
+    const bool inside = inRect(pixel, pixel + 1, row.rect);
+    if ((inLightWord & TP_MPBL_RESET) != 0u) {
+        if (!inside) discard;
+        outColor = vec4(-0.0, -0.0, -0.0, 1.0);
+        outWeight = vec4(1.0);
+        return;
+    }
+    const uint light = row.light;
+#else
+    const uint light = draw.TP_MP_LIGHT_INDEX;
+#endif
     MaterialSample ms = evalFragmentMaterial();
     // The _shadow twin (--shadows) multiplies by the map this pass rendered for the light
     // (one light's map: TP_SPEC_SHADOW_LOCAL); the plain shader is evalLight() itself.
-    vec3 c = evalLightShadowed(lights[draw.TP_MP_LIGHT_INDEX], ms.surface);
+    vec3 c = evalLightShadowed(lights[light], ms.surface);
+#ifdef TP_MP_BLENDED_GPU
+    outColor = vec4(c * ms.alpha, 0.0);
+    outWeight = vec4(ms.alpha);
+    if (!inside) discard;
+#else
     if (kAlphaMode == TP_ALPHA_BLEND)
         outColor = vec4(c * ms.alpha, ms.alpha);
     else
         outColor = vec4(c, 0.0); // the blend state keeps the destination's alpha
+#endif
 }

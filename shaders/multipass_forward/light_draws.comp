@@ -30,19 +30,10 @@ layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_MESHES) writeonly bu
     uint meshes[];
 };
 
-bool touches(LightDrawLight l, LightDrawDraw d) {
-    if (mpRectEmpty(d.rect)) return false; // off-screen: in no pass
-    if ((l.flags & TP_MPLD_FLAG_ALL) != 0u) return true;
-    return mpRectsOverlap(l.rect, d.rect) &&
-           (params.boxTest == 0u ||
-            mpSphereTouchesBox(l.sphere.xyz, l.sphere.w, d.boxMin.xyz, d.boxMax.xyz));
-}
-
 void main() {
     const uint slot = gl_GlobalInvocationID.x;
     if (slot >= params.lightCount || params.drawCount == 0u) return;
     const LightDrawLight l = lightRows[slot];
-    const bool lit = !mpRectEmpty(l.rect);
     const uint region = slot * params.drawCount, countBase = slot * params.runCount;
     uint run = 0u, n = 0u, total = 0u;
     for (uint i = 0u; i < params.drawCount; ++i) { // an explicit count (docs: LAVAPIPE.md)
@@ -52,7 +43,7 @@ void main() {
             run = d.run;
             n = 0u;
         }
-        if (!lit || !touches(l, d)) continue;
+        if (!mpLightTouchesDraw(l, d, params.boxTest != 0u)) continue;
         const uint w = (region + d.runFirst + n) * TP_MPLD_COMMAND_WORDS;
         commands[w + 0u] = d.indexCount;
         commands[w + 1u] = 1u;

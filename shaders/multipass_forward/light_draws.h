@@ -33,7 +33,7 @@ TP_STRUCT(LightDrawLight) {
     ivec4 rect;  // the light's scissor (empty: off-screen or behind, touches nothing)
     vec4 sphere; // camera-relative centre, range
     uint flags;  // TP_MPLD_FLAG_*
-    uint pad0;
+    uint light;  // its index in the scene's lights (the blended light draws read it)
     uint pad1;
     uint pad2;
 };
@@ -56,6 +56,7 @@ TP_STRUCT(LightDrawDraw) {
 static_assert(sizeof(LightDrawParams) == 16);
 static_assert(sizeof(LightDrawLight) == 48);
 static_assert(offsetof(LightDrawLight, flags) == 32);
+static_assert(offsetof(LightDrawLight, light) == 36);
 static_assert(sizeof(LightDrawDraw) == 80);
 static_assert(offsetof(LightDrawDraw, firstIndex) == 48);
 static_assert(offsetof(LightDrawDraw, run) == 64);
@@ -83,6 +84,17 @@ TP_INLINE bool mpSphereTouchesBox(vec3 centre, float radius, vec3 lo, vec3 hi) {
     TP_MPLD_PRECISE float r2 = radius * radius;
     return d2 <= r2;
 }
+
+#ifdef TP_GLSL
+// Whether light `l` lights draw `d` this view: the light plan's `touches` (light_plan.cpp), for
+// the opaque and masked draws (light_draws.comp) and the blended ones (blended_light_draws.comp).
+bool mpLightTouchesDraw(LightDrawLight l, LightDrawDraw d, bool boxTest) {
+    if (mpRectEmpty(l.rect) || mpRectEmpty(d.rect)) return false; // off-screen: in no pass
+    if ((l.flags & TP_MPLD_FLAG_ALL) != 0u) return true;
+    return mpRectsOverlap(l.rect, d.rect) &&
+           (!boxTest || mpSphereTouchesBox(l.sphere.xyz, l.sphere.w, d.boxMin.xyz, d.boxMax.xyz));
+}
+#endif
 
 #ifndef TP_GLSL
 } // namespace tp::gpu

@@ -1,8 +1,9 @@
 // multipass forward: structs, set-1 bindings and constants shared by C++ and GLSL.
 // Included by this pipeline's C++ and GLSL only (never by shared.h); same rules as
 // shared.h (TP_STRUCT, static_asserts on the C++ side).
-// The pipeline has no set-1 resources: everything per light travels in the scene's
-// DrawPush push constant and in specialization constants.
+// Everything per light travels in the scene's DrawPush push constant and in specialization
+// constants, but for the blended light draws of the GPU's lists, which read their light from
+// set 1 (blended_light_draws.h).
 #ifndef TP_MULTIPASS_SHARED_H
 #define TP_MULTIPASS_SHARED_H
 #include "include/shared.h"

@@ -17,3 +17,9 @@ triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_frag
   DEFINES TP_MATERIAL_FROM_INSTANCE=1)
 triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_pixel_frag
   DEFINES TP_MATERIAL_FROM_INSTANCE=1 TP_INPUTS_AT_PIXEL=1)
+# Blended light draws and resets from the GPU's lists (blended_light_draws.comp writes them): one
+# dual-source pipeline, the light's slot in each command's firstInstance.
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_light_draws.comp mp_blended_light_draws_comp)
+triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_blend_frag DEFINES TP_MP_BLENDED_GPU=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/light.frag mp_light_blend_pixel_frag
+  DEFINES TP_MP_BLENDED_GPU=1 TP_INPUTS_AT_PIXEL=1)

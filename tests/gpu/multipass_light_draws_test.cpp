@@ -1,9 +1,10 @@
 // Multipass forward's per-light draw lists on the GPU (--light-draws gpu, the default;
-// multipass_forward/light_draw_pass.h) against the CPU's lists (--light-draws cpu, the light plan
-// as it was built before): the same images bit for bit and the same counters, at 1x and 4x at both
-// shading rates, with meshlet culling, shadows, fp16 and every --blended-lights; and, over several
-// views of one planned renderer, no per-light list built on the CPU while the counters stay those
-// of a CPU plan of each view.
+// multipass_forward/light_draw_pass.h, and for the blended draws' lights
+// blended_light_draw_pass.h) against the CPU's lists (--light-draws cpu, the light plan as it was
+// built before): the same images bit for bit and the same counters, at 1x and 4x at both shading
+// rates, with meshlet culling, shadows, fp16 and every --blended-lights; and, over several views
+// of one planned renderer, no per-light list (opaque or blended) built on the CPU while the
+// counters stay those of a CPU plan of each view.
 #include <cstring>
 
 #include "core/cli/shadow_option.h"
@@ -25,6 +26,12 @@ struct Config {
     uint32_t msaa = 1;
     std::map<std::string, std::string> knobs;
     const char* shadows = nullptr;
+    // The blended draws' lights on the GPU too: --blended-lights under (the default) without
+    // shadows (additive and shadows keep them on the CPU; one-pass has none).
+    bool blendedOnGpu() const {
+        auto b = knobs.find("blended-lights");
+        return !shadows && (b == knobs.end() || b->second == "under");
+    }
 };
 
 void PrintTo(const Config& c, std::ostream* os) {
@@ -79,6 +86,14 @@ TEST_P(MultipassLightDraws, GpuListsRenderTheCpuListsImageWithTheirCounters) {
     const RunResult gpu = render(*ctx, scene, c, "gpu");
     EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0) << "fell back to the CPU";
     EXPECT_EQ(cpu.stats.counter("light_draws_gpu"), 0.0);
+    EXPECT_EQ(gpu.stats.counter("blended_light_draws_gpu", -1), c.blendedOnGpu() ? 1.0 : 0.0);
+    EXPECT_EQ(cpu.stats.counter("blended_light_draws_gpu", -1), 0.0);
+    // GPU blended lists: the plan tested no blended draw against a light on the CPU.
+    const bool onePass = c.knobs.count("blended-lights") && c.knobs.at("blended-lights") == "one-pass";
+    EXPECT_EQ(gpu.stats.counter("blended_light_lists_cpu_builds", -1),
+              c.blendedOnGpu() || onePass ? 0.0 : 1.0);
+    if (c.blendedOnGpu())
+        EXPECT_GT(cpu.stats.counter("blended_light_draws"), 0.0) << "no blended light: weak";
     EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba))
         << c.name << ": colour differs in " << differingPixels(gpu.hdr, cpu.hdr) << " pixels";
     EXPECT_TRUE(sameBits(gpu.depth.r, cpu.depth.r)) << c.name << ": depth differs";
@@ -101,6 +116,29 @@ INSTANTIATE_TEST_SUITE_P(
                       Config{"1x_shadows", 1, {}, "3"},
                       Config{"4x_shadows_cull", 4, {{"cull-geometry", "frustum"}}, "all"}),
     [](const ::testing::TestParamInfo<Config>& info) { return info.param.name; });
+
+// A device without dual-source blending keeps the blended draws' lights on the CPU, says so in
+// left_out, and renders the same image (the opaque lists stay on the GPU).
+TEST(MultipassLightDrawsFallback, WithoutDualSourceBlendingBlendedLightsStayOnTheCpu) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Scene scene = sceneWithLights();
+    const RunResult cpu = render(*ctx, scene, Config{"1x"}, "cpu");
+    ctx->caps.dualSrcBlend = false; // as a device without the feature reports it
+    const RunResult gpu = render(*ctx, scene, Config{"1x"}, "gpu");
+    EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0);
+    EXPECT_EQ(gpu.stats.counter("blended_light_draws_gpu", -1), 0.0);
+    EXPECT_EQ(gpu.stats.counter("blended_light_lists_cpu_builds", -1), 1.0);
+    bool said = false;
+    for (const LeftOut& l : gpu.stats.leftOut)
+        said |= l.what.find("blended_light_draws") != std::string::npos &&
+                l.why.find("dualSrcBlend") != std::string::npos;
+    EXPECT_TRUE(said) << "left_out does not say why the blended lights stay on the CPU";
+    EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba));
+    for (const char* name : kPlanCounters)
+        EXPECT_EQ(gpu.stats.counter(name, -1), cpu.stats.counter(name, -2)) << name;
+    expectNoValidationMessages(*ctx);
+}
 
 // A renderer planned once and moved through an orbit: with GPU lists no view builds a per-light
 // list on the CPU (light_lists_cpu_builds stays 0; with cpu it counts every view), and each
@@ -137,6 +175,13 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
         ASSERT_TRUE(g.ok() && c.ok());
         EXPECT_EQ(g->stats.counter("light_lists_cpu_builds", -1), 0.0) << "view " << v;
         EXPECT_EQ(c->stats.counter("light_lists_cpu_builds", -1), double(v + 1)) << "view " << v;
+        EXPECT_EQ(g->stats.counter("blended_light_lists_cpu_builds", -1), 0.0) << "view " << v;
+        EXPECT_EQ(c->stats.counter("blended_light_lists_cpu_builds", -1), double(v + 1))
+            << "view " << v;
+        EXPECT_EQ(g->stats.counter("blended_light_draws_gpu", -1), 1.0) << "view " << v;
+        EXPECT_TRUE(sameBits(g->hdr.rgba, c->hdr.rgba))
+            << "view " << v << ": colour differs in " << differingPixels(g->hdr, c->hdr)
+            << " pixels";
         for (const char* name : kPlanCounters)
             EXPECT_EQ(g->stats.counter(name, -1), c->stats.counter(name, -2))
                 << "view " << v << ": " << name;
