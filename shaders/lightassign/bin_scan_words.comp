@@ -1,10 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // light_binning, step 4b (the frame, when a consumer sizes its own runs from the counts: the
-// transparent lists' bitmasks of deferred and the visibility buffer, clustered Forward+'s
-// slice rows): one workgroup lays out TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD +
-// counts[t]) / 32) words per tile (with TP_BIN_WORDS_INDICES: scale * (add + counts[t])), row-major, the offsets clamped to the room (as
-// bin_scan_columns.comp clamps the runs), the unclamped total left for GpuBinning::overflowed.
+// transparent lists of deferred and the visibility buffer, clustered Forward+'s slice rows):
+// one workgroup lays out TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD + counts[t]) / 32) words
+// per tile (with TP_BIN_WORDS_INDICES, a word per candidate: scale * (add + counts[t])),
+// row-major, the offsets clamped to the room (as bin_scan_columns.comp clamps the runs), the
+// unclamped total left for GpuBinning::overflowed.
 // What HybridBlended (blended_lists.cpp: transparentListNeed, masks) and Forward+
 // (light_lists.cpp: layoutMasks) laid out on the CPU from a readback per view.
 #include "lightassign/bin_common.glsl"

@@ -2,8 +2,9 @@
 # The blended pass against Forward+'s (docs/deferred.md, "The blended pass on the H200"):
 # interleaved rounds of a baseline build and this one, each rendering deferred (binned and
 # --light-cull all), the visibility buffer's --vis-blended forward and Forward+, printing each
-# run's blended pass (deferred's transparent_forward, Forward+'s forward_transparent) and frame,
-# medians over the timed frames, from render.json.
+# run's blended pass (deferred's transparent_forward, Forward+'s forward_transparent), the tiled
+# lighting (which writes the transparent lists) and the frame, medians over the timed frames,
+# from render.json.
 # Usage: blended_lists.sh BASE_BIN NEW_BIN OUT [ROUNDS]
 #   ARGS (default: the H200's figure) is what every render gets, e.g. for lavapipe
 #   ARGS='builtin:courtyard-small --frames 3' tests/bench/blended_lists.sh ...
@@ -33,7 +34,9 @@ import json, sys
 path, r, which, config = sys.argv[1:]
 t = {x['pass']: x['median_ms'] for x in json.load(open(path))['run']['timings']}
 blended = t.get('transparent_forward', t.get('forward_transparent', float('nan')))
-print(f"round {r} {which:4} {config:45} blended {blended:9.3f} ms  frame {t['frame']:9.3f} ms")
+lists = t.get('tiled_lighting', float('nan'))  # binned now builds index lists there too
+print(f"round {r} {which:4} {config:45} blended {blended:9.3f} ms  tiled_lighting {lists:9.3f} ms"
+      f"  frame {t['frame']:9.3f} ms")
 PY
         done
     done <<<"$configs"
