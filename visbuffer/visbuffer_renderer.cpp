@@ -67,7 +67,7 @@ class VisbufferRenderer final : public Renderer {
         if (hasBlended_)
             blended_.planLists(graph, lighting_, lt_, vis_.assign.binned(), slices(),
                                !blendInCompute_, // slice rows: the forward pass's only
-                               vis_.manyViews);
+                               vis_.manyViews, blendInCompute_);
         if (vis_.debug)
             lt_.debug = graph.createImage(
                 "debug_edge_rm", {VK_FORMAT_R32G32B32A32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT,

@@ -40,9 +40,10 @@ class BlendedForwardPass {
     // blendBounds: the blended depth bounds (clustered: where each tile's front slices start).
     void plan(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices = 0,
               ResourceHandle masks = {});
-    // candidates: the tiled pass's light_candidates; binned: the transparent lists are
-    // bitmasks over them (passes/tiled_lighting.h).
-    void prepare(FrameGraph& graph, VkBuffer candidates, bool binned);
+    // After the plan: the pass set and the pipeline. The transparent lists are light indices
+    // whatever --light-cull says (hybrid_blended.h), so it reads no candidates; binned only
+    // says where the ambient term joins the sum (blended_forward.frag: kAmbientLast).
+    void prepare(FrameGraph& graph, bool binned);
 
   private:
     void record(PassContext& pc);

@@ -12,16 +12,21 @@
 namespace tp {
 
 void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledLightingTargets& t,
-                              bool binned, uint32_t slices, bool sliceRows, bool manyViews) {
+                              bool binned, uint32_t slices, bool sliceRows, bool manyViews,
+                              bool composited) {
     const uint32_t tiles = t.grid.count();
     // Compact: each tile's run is sized by a conservative bound, so nothing can drop (a drop
-    // would be counted in the tile's header, never silent). Binned: bitmasks over each tile's
-    // candidates instead of light indices, the lights binned once (tiled lighting's
-    // candidates) and the lists sized from the same bound.
+    // would be counted in the tile's header, never silent). Binned: the lights binned once
+    // (tiled lighting's candidates) and the lists sized from the same bound, a slot per
+    // candidate: light indices, read by the blended pass as Forward+ reads its lists (a
+    // bitmask over the candidates, a bit each, cost that pass 3.34 against 2.88 ms on the
+    // H200: docs/deferred.md). Composited in the tiled pass, binned: the bitmasks, which it
+    // walks one batch of candidates at a time.
     const std::vector<uint32_t>* bound = binned ? &lighting.bound(t.grid, graph.owner()) : nullptr;
     TransparentListPlan lists =
         planTransparentLists(t.grid, scene_, ctx_.caps.maxStorageBufferRange, ctx_.info.name,
-                             binned, bound, graph.owner(), manyViews);
+                             binned && composited, bound, graph.owner(), manyViews);
+    binned_ = binned;
     t.transparentLists = graph.createBuffer(
         "transparent_lists", lists.bytes(),
         lists.masks ? "per tile: list header, then a bitmask over its binned candidates"
@@ -48,8 +53,8 @@ void HybridBlended::planLists(FrameGraph& graph, TiledLighting& lighting, TiledL
 
 bool HybridBlended::updateLists(TiledLighting& lighting, TiledLightingTargets& t) {
     // GPU binning: the frame lays the lists out (prepare); overflow is checked after it.
-    if (masks_ && lighting.gpuBinning()) return true;
-    const std::vector<uint32_t>* bound = masks_ ? &lighting.bound(t.grid, "") : nullptr;
+    if (binned_ && lighting.gpuBinning()) return true;
+    const std::vector<uint32_t>* bound = binned_ ? &lighting.bound(t.grid, "") : nullptr;
     TransparentListPlan lists = transparentListNeed(t.grid, scene_, masks_, bound);
     if (lists.slots > capacity_) return false;
     slots_ = lists.slots;
@@ -70,8 +75,8 @@ void HybridBlended::planForward(FrameGraph& graph, const BlendedForwardTargets& 
 
 void HybridBlended::prepare(FrameGraph& graph, TiledLighting& lighting) {
     bounds_.prepare(graph);
-    if (masks_ && lighting.gpuBinning()) lighting.publishListWords(capacity_);
-    if (forwardPlanned_) forward_.prepare(graph, lighting.candidatesBuffer(), masks_);
+    if (binned_ && lighting.gpuBinning()) lighting.publishListWords(capacity_, masks_);
+    if (forwardPlanned_) forward_.prepare(graph, binned_);
 }
 
 namespace {

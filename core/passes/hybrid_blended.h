@@ -26,11 +26,15 @@ class HybridBlended {
         : ctx_(ctx), scene_(scene), bounds_(ctx, scene), forward_(ctx, scene) {}
 
     // First (before tiled lighting plans): the transparent lists into t.transparentLists and
-    // t.listOffsets. binned: bitmasks over the tiled pass's candidates (their bound comes from
-    // `lighting`). slices > 0 with sliceRows: the clustered slice rows over the lists too.
-    // manyViews: the lists (and slice rows) get headroom for later views (blended_lists.h).
+    // t.listOffsets: light indices, each tile's run sized from its candidates (binned: their
+    // bound comes from `lighting`), 4 bytes a candidate. composited (the tiled pass composites
+    // the blended fragments, batch by batch of candidates: the visibility buffer's
+    // --vis-blended compute) and binned: bitmasks over the candidates instead, a bit each.
+    // slices > 0 with sliceRows: the clustered slice rows over the lists too. manyViews: the
+    // lists (and slice rows) get headroom for later views (blended_lists.h).
     void planLists(FrameGraph& graph, TiledLighting& lighting, TiledLightingTargets& t, bool binned,
-                   uint32_t slices, bool sliceRows, bool manyViews = false);
+                   uint32_t slices, bool sliceRows, bool manyViews = false,
+                   bool composited = false);
     // A new view, after lighting.updateView: the lists' offsets for it into t.listOffsets and
     // tiled lighting's buffer. false when they need more slots than planned (a replan). GPU
     // binning: nothing (the frame lays them out; TiledLighting::overflowed checks the room).
@@ -41,8 +45,8 @@ class HybridBlended {
     // Optional: a pipeline that composites blended surfaces itself (the visibility buffer's
     // --vis-blended compute) uses only the lists and the bounds.
     void planForward(FrameGraph& graph, const BlendedForwardTargets& t, uint32_t slices);
-    // GPU binning: the frame lays out the lists' bitmasks (TiledLighting::publishListWords), in
-    // the planned capacity.
+    // GPU binning: the frame lays out the lists (TiledLighting::publishListWords), in the
+    // planned capacity.
     void prepare(FrameGraph& graph, TiledLighting& lighting);
 
     // Clustered: the slice rows tiled lighting writes (invalid otherwise).
@@ -63,7 +67,8 @@ class HybridBlended {
     ResourceHandle sliceRows_;
     uint64_t slots_ = 0;    // the current view's
     uint64_t capacity_ = 0; // planned
-    bool masks_ = false; // binned: the lists are bitmasks over the candidates
+    bool binned_ = false; // the lists' runs are sized from the tiled pass's candidates
+    bool masks_ = false;  // binned and composited: the lists are bitmasks over the candidates
     bool forwardPlanned_ = false;
 };
 

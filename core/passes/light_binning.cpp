@@ -128,11 +128,13 @@ void GpuBinning::bind(const Bufs& b, VkBuffer target) {
 }
 
 void GpuBinning::publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room,
-                              uint64_t firstWord) {
+                              uint64_t firstWord, bool indices) {
     if (firstWord + grid_.count() > 0xffffffffull)
         throw std::logic_error("GpuBinning: the word layout's first word exceeds 32 bits");
-    words_ = {out, scale, add, uint32_t(std::min<uint64_t>(room, 0xffffffffull)),
-              uint32_t(firstWord)};
+    if (scale & TP_BIN_WORDS_INDICES)
+        throw std::logic_error("GpuBinning: the word layout's scale exceeds 31 bits");
+    words_ = {out, scale | (indices ? TP_BIN_WORDS_INDICES : 0u), add,
+              uint32_t(std::min<uint64_t>(room, 0xffffffffull)), uint32_t(firstWord)};
     if (target_) bind(frame_, target_);
 }
 

@@ -87,8 +87,10 @@ class GpuBinning {
     // scale * ceil((add + count) / 32) words per tile (a bit per candidate: the transparent
     // lists' masks, scale 1; clustered Forward+'s slice rows, scale = slices), clamped to
     // `room`; a view needing more is an overflow too. After prepare. `out` may be the target.
+    // indices: a word per candidate instead of a bit, scale * (add + count) words a tile (the
+    // transparent lists as light indices).
     void publishWords(VkBuffer out, uint32_t scale, uint32_t add, uint64_t room,
-                      uint64_t firstWord = 0);
+                      uint64_t firstWord = 0, bool indices = false);
     // After a view's frames: whether the view needed more than the plan holds: more slots than
     // the room, more words than publishWords's room, or a run longer than runBound() where that
     // changes what was recorded (the sort's steps, or the consumer's batches of `batch` lights

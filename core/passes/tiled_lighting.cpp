@@ -246,9 +246,10 @@ bool TiledLighting::updateView(FrameGraph&) {
     return true;
 }
 
-void TiledLighting::publishListWords(uint64_t room) {
+void TiledLighting::publishListWords(uint64_t room, bool masks) {
     if (binning_)
-        binning_->publishWords(listOffsets_.buffer, 1, uint32_t(directional_.size()), room);
+        binning_->publishWords(listOffsets_.buffer, 1, uint32_t(directional_.size()), room, 0,
+                               !masks);
 }
 
 bool TiledLighting::overflowed(FrameGraph& graph) {

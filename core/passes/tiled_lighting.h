@@ -130,9 +130,10 @@ class TiledLighting {
     bool updateView(FrameGraph& graph);
     // The transparent lists' offsets of a new view (HybridBlended::updateLists), uploaded.
     void setListOffsets(const std::vector<uint32_t>& offsets);
-    // GPU binning (after prepare): the frame lays out the transparent lists' bitmasks itself,
-    // in `room` words, instead of setListOffsets per view (light_binning.h: publishWords).
-    void publishListWords(uint64_t room);
+    // GPU binning (after prepare): the frame lays out the transparent lists itself, in `room`
+    // words, instead of setListOffsets per view (light_binning.h: publishWords): a word per
+    // candidate (light indices), or (masks) a bit per candidate.
+    void publishListWords(uint64_t room, bool masks);
     // GPU binning, after a view's frames: whether it needed more than the plan holds (the
     // candidates' room, the longest run, the transparent lists' words); the caller plans again.
     bool overflowed(FrameGraph& graph);
@@ -147,10 +148,6 @@ class TiledLighting {
     uint32_t sizingRuns() const { return binning_ ? binning_->sizingRuns() : 0; }
     // Dispatches the last recorded frame made (one per batch of lights).
     uint32_t batches() const { return batches_; }
-    // The light_candidates buffer (after prepare): binned, the blended pass walks the
-    // transparent bitmasks over it (with GPU binning, light_binning's closing barrier makes
-    // its runs visible to every later stage).
-    VkBuffer candidatesBuffer() const { return candidates_.buffer; }
 
   private:
     void record(PassContext& pc);

@@ -54,6 +54,9 @@ namespace tp::gpu {
 #define TP_BIN_WORDS_ADD pad0
 #define TP_BIN_WORDS_ROOM pad1
 #define TP_BIN_WORDS_FIRST pad2
+// Set in TP_BIN_WORDS_SCALE: a word per candidate instead of a bit, scale * (TP_BIN_WORDS_ADD
+// + counts[t]) words a tile (the transparent lists as light indices: HybridBlended).
+#define TP_BIN_WORDS_INDICES 0x80000000u
 
 // The rectangles step: 1 when it stores the rectangles for the fill (the frame), 0 when it
 // only counts them (the plan-time sizing, which has no rectangle buffer).

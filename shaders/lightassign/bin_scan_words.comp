@@ -1,17 +1,19 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // light_binning, step 4b (the frame, when a consumer sizes its own runs from the counts: the
-// transparent lists' bitmasks of deferred and the visibility buffer, clustered Forward+'s
-// slice rows): one workgroup lays out TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD +
-// counts[t]) / 32) words per tile, row-major, the offsets clamped to the room (as
-// bin_scan_columns.comp clamps the runs), the unclamped total left for GpuBinning::overflowed.
+// transparent lists of deferred and the visibility buffer, clustered Forward+'s slice rows):
+// one workgroup lays out TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD + counts[t]) / 32) words
+// per tile (with TP_BIN_WORDS_INDICES, a word per candidate: scale * (add + counts[t])),
+// row-major, the offsets clamped to the room (as bin_scan_columns.comp clamps the runs), the
+// unclamped total left for GpuBinning::overflowed.
 // What HybridBlended (blended_lists.cpp: transparentListNeed, masks) and Forward+
 // (light_lists.cpp: layoutMasks) laid out on the CPU from a readback per view.
 #include "lightassign/bin_common.glsl"
 #include "lightassign/bin_scan.glsl" // local_size_x = 64
 
 uint tileWords(uint t) {
-    return draw.TP_BIN_WORDS_SCALE * ((draw.TP_BIN_WORDS_ADD + counts[t] + 31u) / 32u);
+    const uint scale = draw.TP_BIN_WORDS_SCALE & ~TP_BIN_WORDS_INDICES, n = draw.TP_BIN_WORDS_ADD + counts[t];
+    return scale * ((draw.TP_BIN_WORDS_SCALE & TP_BIN_WORDS_INDICES) != 0u ? n : (n + 31u) / 32u);
 }
 
 void main() {

@@ -3,11 +3,12 @@
 // The hybrid forward pass: blended materials cannot live in a G-buffer (one surface per
 // sample), so they are drawn after the lighting, back to front, alpha-blended into hdr,
 // each fragment lit by its tile's transparent light list (culled by the tiled lighting
-// pass against the tile's blended depth bounds; compact layout, include/light_assign.h).
+// pass against the tile's blended depth bounds; compact layout, include/light_assign.h): light
+// indices, under --light-cull binned too, read as Forward+ reads its lists (a bitmask over
+// the tile's candidates cost a walk of ceil(candidates / 32) words and a candidate load per
+// light: 3.34 against 2.88 ms on the H200, docs/deferred.md).
 // Clustered (kSlices > 0): only the lights of the fragment's cluster, through the slice rows
-// the tiled pass wrote over the list (passes/tiled_lighting.h: tlClusterRowsBase; under
-// --light-cull binned the rows and the list are bitmasks over the tile's candidate run:
-// tlMaskRowsBase, candidates.glsl).
+// the tiled pass wrote over the list (passes/tiled_lighting.h: tlClusterRowsBase).
 // Rate: per sample (`sample` inputs, sample shading; 1x and --msaa-shading sample) or, built
 // with TP_INPUTS_AT_PIXEL (--msaa-shading pixel under MSAA), once per pixel and primitive at
 // the pixel centre, the value blended into every covered sample (scene_inputs.glsl).
@@ -37,27 +38,14 @@ layout(std430, set = TP_SET_PASS, binding = TP_BF_BINDING_BLEND_BOUNDS) readonly
     uint blendBounds[]; // light_assign.h: TP_LA_BLEND_*
 };
 
-// Binned (--light-cull binned): the lists and rows are bitmasks over the tile's candidates
-// (passes/tiled_lighting.h: tlMaskRowsBase), walked in ascending candidate order.
-layout(constant_id = TP_TL_SPEC_BINNED) const bool kBinned = false;
-layout(std430, set = TP_SET_PASS, binding = TP_BF_BINDING_CANDIDATES) readonly buffer Candidates {
-    uint cand[]; // deferred_shared.h: TP_TL_CAND_*
-};
-#include "passes/candidates.glsl"
+// Where the ambient and emissive term joins the lights' sum: after them (summed from zero)
+// under --light-cull binned, as when its lists were bitmasks walked in a function of their
+// own; before them (each light added to it) under --light-cull all. The same lights in the
+// same order either way: only the association differs, and each keeps its image to the bit
+// (one ulp on 2.3 % of courtyard-small's pixels, the blended cloth, between the two).
+layout(constant_id = TP_TL_SPEC_BINNED) const bool kAmbientLast = false;
 
 layout(location = 0) out vec4 outColor;
-
-// Light k of the tile's list: word w, bit b of its bitmask (binned: candidate 32 w + b), or
-// index slot 32 w + b.
-uint listLight(TlCandidates c, uint start, uint w, uint b) {
-    return kBinned ? tlCandidateLight(c, w * 32u + b) : tLists[start + w * 32u + b];
-}
-
-// Words of the tile's list bitmask (binned) or of its slice rows (index lists); none for an
-// empty list.
-uint listWords(TlCandidates c, uint count) {
-    return count == 0u ? 0u : kBinned ? (c.count + 31u) / 32u : (count + 31u) / 32u;
-}
 
 // The lights of the list whose bit is set in the slice of the shading point, one 32-light
 // word at a time, in list order.
@@ -67,29 +55,13 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
     LaSlicing s = laSlicing(laFrontNear(b, sliceNear), sliceNear, uintBitsToFloat(tMasks[2u * tile + 1u]), kSlices,
                             laFrontSlices(kSlices, true));
     float dist = -(frame.view * vec4(surface.position, 1.0)).z;
-    TlCandidates c = TlCandidates(0u, 0u, 0u);
-    if (kBinned) c = tlCandidates(tile);
-    uint words = listWords(c, count);
-    uint offset = start - tileCount * TP_LA_HEADER_WORDS;
-    uint base = kBinned ? tlMaskRowsBase(tileCount, offset, kSlices) : tlClusterRowsBase(tileCount, offset, tile, kSlices);
-    uint row = base + laSliceOf(dist, s) * words;
+    uint words = (count + 31u) / 32u;
+    uint row = tlClusterRowsBase(tileCount, start - tileCount * TP_LA_HEADER_WORDS, tile, kSlices) +
+               laSliceOf(dist, s) * words;
     vec3 sum = vec3(0.0);
     for (uint w = 0u; w < words; ++w) {
         uint bits = tMasks[row + w];
-        TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(lights[listLight(c, start, w, uint(lsb))], surface);)
-    }
-    return sum;
-}
-
-// Binned, tiled: the list's bitmask, one 32-candidate word at a time.
-vec3 maskLights(uint tile, uint count, uint start, SurfaceSample surface) {
-    vec3 sum = vec3(0.0);
-    if (count == 0u) return sum;
-    TlCandidates c = tlCandidates(tile);
-    uint words = listWords(c, count);
-    for (uint w = 0u; w < words; ++w) {
-        uint bits = tLists[start + w];
-        TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(lights[tlCandidateLight(c, w * 32u + uint(lsb))], surface);)
+        TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(lights[tLists[start + w * 32u + uint(lsb)]], surface);)
     }
     return sum;
 }
@@ -100,16 +72,13 @@ void main() {
     uint tile = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, tiles);
     uint count = tLists[laHeaderWord(tile, TP_LA_COUNT)]; // explicit count: bounded loop
     uint start = tLists[laHeaderWord(tile, TP_LA_START)];
-    vec3 sum = ambientAndEmissive(ms);
+    vec3 ambient = ambientAndEmissive(ms);
     if (kSlices > 0u) {
-        outColor = vec4(sum + clusterLights(tile, tiles.x * tiles.y, count, start, ms.surface), ms.alpha);
+        outColor = vec4(ambient + clusterLights(tile, tiles.x * tiles.y, count, start, ms.surface), ms.alpha);
         return;
     }
-    if (kBinned) {
-        outColor = vec4(sum + maskLights(tile, count, start, ms.surface), ms.alpha);
-        return;
-    }
+    vec3 sum = kAmbientLast ? vec3(0.0) : ambient;
     for (uint i = 0u; i < count; ++i)
         sum += evalLightShadowed(lights[tLists[start + i]], ms.surface);
-    outColor = vec4(sum, ms.alpha);
+    outColor = vec4(kAmbientLast ? ambient + sum : sum, ms.alpha);
 }

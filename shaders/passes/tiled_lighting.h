@@ -34,7 +34,6 @@ namespace tp::gpu {
 #define TP_BF_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
 #define TP_BF_BINDING_MASKS 1   // buffer: clustered: slice rows over the transparent lists (a dummy when tiled)
 #define TP_BF_BINDING_BLEND_BOUNDS 2 // buffer: blended depth bounds (clustered: where the front slices start)
-#define TP_BF_BINDING_CANDIDATES 3   // buffer: binned culling's candidates (binned: the lists are bitmasks over them)
 
 // Clustered blended scenes (--light-assign clustered): the transparent list of a tile is its
 // span list (its blended depth bounds, light_assign.glsl: LaBlendedBounds) and a buffer of
@@ -48,12 +47,11 @@ namespace tp::gpu {
 TP_INLINE uint tlClusterRowsBase(uint tileCount, uint offset, uint tile, uint slices) {
     return 2u * tileCount + slices * (offset / 32u + tile);
 }
-// Binned culling (--light-cull binned): a tile's transparent list is a bitmask over its
-// candidates (bit p: candidate p, directional lights first, then its run), and its slice
-// rows are bitmasks over the candidates too, of as many words as the list's mask (`offset`:
-// the mask's first word, the exact prefix sum of ceil(candidates / 32)): 2 * tiles + slices *
-// (mask words) in all.
-TP_INLINE uint tlMaskRowsBase(uint tileCount, uint offset, uint slices) { return 2u * tileCount + slices * offset; }
+// The transparent lists and their slice rows are the same under --light-cull binned (light
+// indices, in candidate order), except where the tiled pass composites the blended fragments
+// itself (the visibility buffer's --vis-blended compute): there, binned, a tile's list is a
+// bitmask over its candidates (bit p: candidate p, directional lights first, then its run),
+// ceil(candidates / 32) words, and it has no slice rows.
 
 // ---- specialization constants of the pass library's tiled shaders (ids after the scene's 0..2;
 // 11 to 14 are the surface sources') ----

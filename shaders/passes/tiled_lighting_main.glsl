@@ -26,10 +26,10 @@ void cull(uvec2 tile, bool hasGeometry) {
     }
 #endif
 #ifdef TP_TRANSPARENT
-    // Binned: every candidate, once (first batch), sets its bit in the tile's mask (atomicOr:
-    // the same mask whatever the order); a loop of candidates / 64 iterations per invocation,
-    // none where no blended fragment is shaded. Index lists: cullTransparentIndices.
-    for (uint i = gl_LocalInvocationIndex; kBinned && firstBatch() && t.blended.any && i < candidates; i += groupSize) {
+    // kTransparentMasks: every candidate, once (first batch), sets its bit in the tile's mask
+    // (atomicOr: the same mask whatever the order); a loop of candidates / 64 iterations per
+    // invocation, none where no blended fragment is shaded. Index lists: cullTransparentIndices.
+    for (uint i = gl_LocalInvocationIndex; kTransparentMasks && firstBatch() && t.blended.any && i < candidates; i += groupSize) {
         if (lightInTileAndBox(lights[candidateLight(tileIndex, i)], t.frustum, tBox, frame.view)) {
             atomicAdd(sTransparentCount, 1u);
             if ((i >> 5u) < t.capacity) atomicOr(tLists[t.start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
@@ -57,23 +57,18 @@ void writeTransparentSlices(uint tileIndex) {
     const uint offset = tOffsets[tileIndex];
     const uint kept = min(sTransparentCount, tOffsets[tileIndex + 1u] - offset);
     const uint start = laListStart(tileCount, offset);
-    // Binned: rows over the candidates, as the list's mask (bit p: candidate p); a row bit
-    // is set only where the mask's is.
-    const uint words = kBinned ? tOffsets[tileIndex + 1u] - offset : (kept + 31u) / 32u;
+    const uint words = (kept + 31u) / 32u;
     const bool geometry = laTileHasGeometry();
     const float sliceNear = geometry ? max(-viewZFromDepth(laTileNearDepth(), frame.invProj), 1e-30) : 1e30;
     const float sliceFar = geometry ? -viewZFromDepth(laTileFarDepth(), frame.invProj) : 1e30;
     const uint front = laFrontSlices(kSlices, true);
     const LaSlicing s = laSlicing(laFrontNear(tileBlendedBounds(tileIndex), sliceNear), sliceNear,
                                   laSliceScale(sliceNear, sliceFar, kSlices, front), kSlices, front);
-    const uint base = kBinned ? tlMaskRowsBase(tileCount, offset, kSlices)
-                              : tlClusterRowsBase(tileCount, offset, tileIndex, kSlices);
+    const uint base = tlClusterRowsBase(tileCount, offset, tileIndex, kSlices);
     for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
         for (uint sl = 0u; sl < kSlices; ++sl) gWordBits[sl] = 0u;
-        uint mask = kBinned ? tLists[start + w] : 0u;
-        for (uint b = 0u; b < 32u && (kBinned ? mask >> b != 0u : w * 32u + b < kept); ++b) {
-            if (kBinned && (mask & (1u << b)) == 0u) continue;
-            LightGpu light = lights[kBinned ? candidateLight(tileIndex, w * 32u + b) : tLists[start + w * 32u + b]];
+        for (uint b = 0u; b < 32u && w * 32u + b < kept; ++b) {
+            LightGpu light = lights[tLists[start + w * 32u + b]];
             vec4 sphere = lightSphereView(light, frame.view);
             uvec2 range = light.type == TP_LIGHT_DIRECTIONAL ? uvec2(0u, kSlices - 1u)
                                                              : laLightSlices(sphere.xyz, sphere.w, s);
@@ -118,7 +113,7 @@ void beginTile(uvec2 tile) {
         sSliceScale = laSliceScale(sSliceNear, far, kSlices, 0u);
     }
 #ifdef TP_TRANSPARENT
-    if (kBinned && firstBatch()) {
+    if (kTransparentMasks && firstBatch()) {
         // The tile's candidate bitmask starts empty (cull sets its bits with atomicOr).
         uint t = tile.y * gl_NumWorkGroups.x + tile.x;
         uint start = laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[t]);
@@ -139,7 +134,7 @@ void buildLists(uvec2 tile) {
     compactList(tile.y * gl_NumWorkGroups.x + tile.x);
 #endif
 #ifdef TP_TRANSPARENT
-    if (!kBinned && firstBatch()) { // uniform over the group
+    if (!kTransparentMasks && firstBatch()) { // uniform over the group
         barrier(); // compactList has read sBits
         cullTransparentIndices(tile);
     }
@@ -223,8 +218,8 @@ void writeTileStats(uvec2 tile) {
         tileStats[tileIndex] = uvec4(sCount, sTransparentCount, sEdges, 0u);
 #ifdef TP_TRANSPARENT
         uint capacity = tOffsets[tileIndex + 1u] - tOffsets[tileIndex];
-        // Binned: every survivor has its bit (the mask covers every candidate).
-        uint kept = kBinned ? sTransparentCount - sMaskDropped : min(sTransparentCount, capacity);
+        // Masks: every survivor has its bit (the mask covers every candidate).
+        uint kept = kTransparentMasks ? sTransparentCount - sMaskDropped : min(sTransparentCount, capacity);
         tLists[laHeaderWord(tileIndex, TP_LA_COUNT)] = kept;
         tLists[laHeaderWord(tileIndex, TP_LA_START)] =
             laListStart(gl_NumWorkGroups.x * gl_NumWorkGroups.y, tOffsets[tileIndex]);

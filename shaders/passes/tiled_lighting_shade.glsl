@@ -28,11 +28,13 @@ layout(set = TP_SET_PASS, binding = TP_TL_BINDING_HDR, TP_HDR_FORMAT) uniform im
 #ifdef TP_TRANSPARENT
 // coherent: clustered, the invocations of a tile read each other's list entries (after
 // memoryBarrierBuffer and barrier) to build the slice rows.
-// Binned (kBinned), the runs are bitmasks over the tile's candidates (bit p: candidate p,
-// passes/candidates.glsl), ceil(candidates / 32) words: a transparent list is a subset of
-// the candidates, so this takes a bit where an index took 32; every light, index runs.
+// The runs hold light indices in candidate order (cullTransparentIndices), binned or not, so
+// the blended pass reads them as Forward+ reads its lists. kTransparentMasks (binned, the
+// blended fragments composited here: the visibility buffer's --vis-blended compute): bitmasks
+// over the tile's candidates (bit p: candidate p, passes/candidates.glsl), ceil(candidates /
+// 32) words, since each batch composites the lights of its own candidates.
 layout(std430, set = TP_SET_PASS, binding = TP_TL_BINDING_TRANSPARENT_LISTS) coherent buffer TransparentLists {
-    uint tLists[]; // LaListHeader per tile, then the tiles' runs (light indices, or candidate bitmasks)
+    uint tLists[]; // LaListHeader per tile, then the tiles' runs (light indices; kTransparentMasks: bitmasks)
 };
 // Clustered: per-slice bitmask rows over the transparent lists (deferred_shared.h:
 // tlClusterRowsBase); a 16-byte dummy otherwise.
@@ -53,7 +55,7 @@ LaBlendedBounds tileBlendedBounds(uint tileIndex) {
 struct TransparentRun {
     LaBlendedBounds blended;
     TileFrustum frustum;
-    uint start, capacity; // the run's first word and its length (index slots or mask words)
+    uint start, capacity; // the run's first word and its length (index slots, or mask words)
 };
 TransparentRun transparentRun(uvec2 tile) {
     const uint tileCount = gl_NumWorkGroups.x * gl_NumWorkGroups.y, tileIndex = tile.y * gl_NumWorkGroups.x + tile.x;
@@ -73,6 +75,11 @@ layout(set = TP_SET_PASS, binding = TP_TL_BINDING_DEBUG, rgba32f) uniform writeo
 // lights, then the point/spot lights whose conservative tile rectangle covers it);
 // otherwise every light of the scene.
 layout(constant_id = TP_TL_SPEC_BINNED) const bool kBinned = false;
+#ifdef TP_TL_COMPOSITES_BLENDED
+const bool kTransparentMasks = kBinned;
+#else
+const bool kTransparentMasks = false;
+#endif
 layout(std430, set = TP_SET_PASS, binding = TP_TL_BINDING_CANDIDATES) readonly buffer Candidates {
     uint cand[]; // deferred_shared.h: TP_TL_CAND_*
 };

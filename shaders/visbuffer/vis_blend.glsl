@@ -93,7 +93,7 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
     const uint capacity = tOffsets[tileIndex + 1u] - offset;
     const uint first = draw.TP_TL_LIGHT_FIRST, end = draw.TP_TL_LIGHT_END;
     vec3 sum = vec3(0.0);
-    if (kBinned) {
+    if (kTransparentMasks) {
         const TlCandidates c = tlCandidates(tileIndex); // read once, as blended_forward.frag does
         for (uint w = first / 32u; w < min((end + 31u) / 32u, capacity); ++w) {
             uint bits = tLists[start + w];

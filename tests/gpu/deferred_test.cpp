@@ -754,18 +754,21 @@ TEST(Deferred, TransparentListsAreCompactAndDropNothing) {
         EXPECT_LT(slots, double(tiles * lights)) << lighting;
         EXPECT_GT(counter(r, "transparent_lights_stored"), 0.0) << lighting;
         EXPECT_EQ(counter(r, "transparent_lights_dropped"), 0.0) << lighting;
-        // Binned (the default): a bitmask over each tile's candidates, ceil(candidates / 32)
-        // words, the same lights.
+        // Binned (the default): the same index lists (BinnedTransparentListsAreTheListsOf
+        // EveryLight), each run sized from the tiled pass's candidates (the same conservative
+        // bound: the same slots). The blended pass adds the ambient term after the lights
+        // there (blended_forward.frag: kAmbientLast), so the images agree within the
+        // summation bound.
         RunResult b = runOrFail(*ctx, yardGpu, "deferred", withLighting(s, lighting));
-        const double words = counter(b, "transparent_list_mask_words");
-        EXPECT_EQ(entryBytes(b, "transparent_lists"), tiles * 16 + uint64_t(words) * 4) << lighting;
-        EXPECT_LE(words, slots / 32 + double(tiles)) << lighting;
+        const double binnedSlots = counter(b, "transparent_list_slots");
+        EXPECT_EQ(binnedSlots, slots) << lighting;
+        EXPECT_EQ(entryBytes(b, "transparent_lists"), tiles * 16 + uint64_t(binnedSlots) * 4)
+            << lighting;
         EXPECT_EQ(counter(b, "transparent_lights_stored"), counter(r, "transparent_lights_stored"))
             << lighting;
         EXPECT_EQ(counter(b, "transparent_lights_dropped"), 0.0) << lighting;
         expectAgreeWithinSummationBound(b.hdr, r.hdr, lights, 1,
-                                        std::string("transparent bitmasks vs index lists, ") +
-                                            lighting);
+                                        std::string("binned vs all, ") + lighting);
     }
     expectNoValidationMessages(*ctx);
 }
@@ -792,9 +795,11 @@ TEST(Deferred, ClusteredBlendedSurfacesMatchTheReferenceOnTheCourtyard) {
         s.set("light-assign", "clustered");
         s.set("slices", 16);
         RunResult clustered = runOrFail(*ctx, yardGpu, "deferred", s);
-        // Binned (the default): rows over the candidates, as many words as the list's bitmask.
-        const uint64_t words = uint64_t(counter(clustered, "transparent_list_mask_words"));
-        EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"), 4 * (2 * tiles + 16 * words));
+        // Rows over the index lists (binned too): ceil(count / 32) words a row, from
+        // tlClusterRowsBase, so floor(slots / 32) + tiles words a slice.
+        const uint64_t slots = uint64_t(counter(clustered, "transparent_list_slots"));
+        EXPECT_EQ(entryBytes(clustered, "transparent_cluster_masks"),
+                  4 * (2 * tiles + 16 * (slots / 32 + tiles)));
         expectAgreeWithinSummationBound(clustered.hdr, tiled.hdr, lights, 1,
                                         "courtyard clustered vs tiled, " + std::to_string(lights) +
                                             " lights");
@@ -964,6 +969,75 @@ TEST(Deferred, TransparentIndexListsHoldTheirLightsInAscendingOrder) {
             << what << ": no list with lights of both chunks";
         std::printf("[ transparent lists ] %s: longest %zu, %zu pairs out of order\n", what.c_str(),
                     longest, unordered);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// Each tile's transparent list (its header's count, then its run), from the exported buffer.
+std::vector<std::vector<uint32_t>> transparentListsOf(const std::vector<uint8_t>& bytes,
+                                                      uint32_t tiles, const std::string& what) {
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    std::vector<std::vector<uint32_t>> lists(tiles);
+    if (words.size() < size_t(tiles) * TP_LA_HEADER_WORDS) {
+        ADD_FAILURE() << what << ": no headers";
+        return lists;
+    }
+    for (uint32_t t = 0; t < tiles; ++t) {
+        gpu::LaListHeader h;
+        std::memcpy(&h, &words[t * TP_LA_HEADER_WORDS], sizeof h);
+        const uint32_t count = h.count, start = h.start;
+        if (size_t(start) + count > words.size()) {
+            ADD_FAILURE() << what << " tile " << t << ": run past the buffer";
+            continue;
+        }
+        lists[t].assign(words.begin() + start, words.begin() + start + count);
+    }
+    return lists;
+}
+
+// Under --light-cull binned the transparent lists are light indices too (the blended pass
+// reads them as Forward+ reads its lists; they were bitmasks over the candidates), culled
+// from each tile's candidates in candidate order. With no directional light that order is
+// ascending light order, so they must be --light-cull all's lists, light for light, whether
+// the candidates are binned on the CPU or on the GPU (which also lays the runs out itself:
+// GpuBinning::publishWords, a word per candidate). Tiled, volumes (its lists-only pass) and
+// clustered, 1x and 4x; 4,500 lights for long candidate runs.
+TEST(Deferred, BinnedTransparentListsAreTheListsOfEveryLight) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    struct Case {
+        uint32_t lights, msaa;
+        const char* lighting;
+        bool clustered;
+    };
+    const uint32_t tiles = (96 / 16) * (64 / 16);
+    for (Case k : {Case{256, 1, "tiled", false}, Case{256, 4, "tiled", false},
+                   Case{256, 4, "volumes", false}, Case{256, 1, "tiled", true},
+                   Case{4500, 1, "tiled", false}}) {
+        Scene yard = courtyardWithLights(k.lights);
+        SceneGpu yardGpu(*ctx, yard);
+        RenderSettings s = withLighting(small(k.msaa, "compact"), k.lighting);
+        if (k.clustered) {
+            s.set("light-assign", "clustered");
+            s.set("slices", 16);
+        }
+        const std::string what = std::to_string(k.lights) + " lights " + std::to_string(k.msaa) +
+                                 "x " + k.lighting + (k.clustered ? " clustered" : "");
+        s.set("light-cull", "all");
+        const std::vector<std::vector<uint32_t>> all = transparentListsOf(
+            exportedBuffer(*ctx, yardGpu, "deferred", s, "transparent_lists"), tiles, what);
+        size_t stored = 0;
+        for (const std::vector<uint32_t>& l : all) stored += l.size();
+        EXPECT_GT(stored, 0u) << what << ": no list to compare";
+        s.set("light-cull", "binned");
+        for (const char* bin : {"cpu", "gpu"}) {
+            s.set("light-bin", bin);
+            const std::vector<std::vector<uint32_t>> binned = transparentListsOf(
+                exportedBuffer(*ctx, yardGpu, "deferred", s, "transparent_lists"), tiles, what);
+            for (uint32_t t = 0; t < tiles; ++t)
+                EXPECT_EQ(binned[t], all[t]) << what << ", binned on the " << bin << ", tile " << t;
+        }
     }
     expectNoValidationMessages(*ctx);
 }
