@@ -78,7 +78,23 @@ done
 sinfo -h -o %t 2>/dev/null | grep -q idle || skip "the node did not become idle in 30 s"
 # A job that does nothing must run before the recipe is judged: where this Slurm cannot launch
 # a task (a container without what slurmd needs), that is a skip with the reason, not a failure.
-(cd "$work" && timeout 60 sbatch --wait --quiet -o "$work/probe.log" --wrap true) ||
+# Submitted, then waited for by wait_job: `sbatch --wait` polls every 10 s, which was 20 of this
+# test's 34 s on 2 cores.
+# wait_job ID SECONDS: polls the controller every 0.2 s until every task of job ID has ended;
+# succeeds only if each ended COMPLETED (exit 0), as `sbatch --wait` would.
+wait_job() {
+    local id=$1 states
+    for _ in $(seq $(($2 * 5))); do
+        states=$(scontrol -o show job "$id" 2>/dev/null | grep -o 'JobState=[A-Z_]*')
+        if [ -n "$states" ] && ! grep -qE '=(PENDING|CONFIGURING|RUNNING|COMPLETING|SUSPENDED)$' <<<"$states"; then
+            ! grep -qv '=COMPLETED$' <<<"$states"
+            return
+        fi
+        sleep 0.2
+    done
+    return 1
+}
+probe=$(cd "$work" && sbatch --parsable -o "$work/probe.log" --wrap true) && wait_job "$probe" 60 ||
     skip "this Slurm cannot run a job here ($(tail -n 1 "$work/log/slurmd.log" 2>/dev/null))"
 
 args=(builtin:courtyard-small --res 48x27 --lights 4,8 --msaa 1,4 --tile 8,16
@@ -86,8 +102,8 @@ args=(builtin:courtyard-small --res 48x27 --lights 4,8 --msaa 1,4 --tile 8,16
 "$bin" sweep "${args[@]}" --out "$work/whole" >/dev/null 2>&1 || { echo "FAIL: the unsharded sweep"; exit 1; }
 out=$work/study
 mkdir -p "$out"
-(cd "$work" && TRIPTYCH=$bin timeout 240 sbatch --array=0-1 --wait --quiet \
-    "$src/docs/recipes/sweep_array.sbatch" "$out" "${args[@]}") ||
+array=$(cd "$work" && TRIPTYCH=$bin sbatch --parsable --array=0-1 \
+    "$src/docs/recipes/sweep_array.sbatch" "$out" "${args[@]}") && wait_job "$array" 240 ||
     { echo "FAIL: the job array"; cat "$work"/*.log 2>/dev/null | tail -5; exit 1; }
 "$bin" merge "$out"/shard-* --out "$out/merged" >/dev/null || { echo "FAIL: merge"; exit 1; }
 

@@ -410,7 +410,8 @@ TEST(GpuLightBinning, MaskRowsPastTheRoomAreClampedAndCounted) {
 TEST(GpuLightBinning, NoLocalLights) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    SceneGpu gpuScene(*ctx, floorWith(0));
+    const Scene scene = floorWith(0); // SceneGpu keeps a reference: not a temporary
+    SceneGpu gpuScene(*ctx, scene);
     Binned b = bin(*ctx, gpuScene, 40, 24, 8);
     EXPECT_EQ(b.offsets, std::vector<uint32_t>(5 * 3 + 1, 0));
     EXPECT_EQ(b.sizes.slots, 0u);
@@ -478,7 +479,8 @@ TEST(GpuLightBinning, ImagesEqualCpuBinningFloorTile32Clustered) {
 TEST(GpuLightBinning, AutoResolvesByDeviceType) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    SceneGpu gpuScene(*ctx, courtyard(16));
+    const Scene scene = courtyard(16); // SceneGpu keeps a reference: not a temporary
+    SceneGpu gpuScene(*ctx, scene);
     RunResult r = runOrFail(*ctx, gpuScene, "forwardplus", settings(48, 27, 1, 16));
     EXPECT_EQ(counter(r, "light_binning_on_gpu"), ctx->isCpuDevice() ? 0.0 : 1.0);
     expectNoValidationMessages(*ctx);

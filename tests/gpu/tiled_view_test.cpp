@@ -6,6 +6,7 @@
 // (ViewUpdate, tests/gpu/view_update_test.cpp, uses lights that reach every tile of its
 // 96x64 views, so there the candidates are the same at every view.)
 #include <cstring>
+#include <ostream>
 
 #include "core/runner/render_session.h"
 #include "core/scene/lights.h"
@@ -18,6 +19,13 @@ namespace {
 struct TiledViewCase {
     std::string pipeline, bin; // --light-bin
 };
+
+// The ctest name carries the printed parameter ("# GetParam() = ..."); unprinted, gtest wrote
+// the struct's raw bytes, string addresses included, so the name changed with every build and
+// ctest's cost data (the order it starts tests in) never matched it.
+void PrintTo(const TiledViewCase& c, std::ostream* os) {
+    *os << c.pipeline << " --light-bin " << c.bin;
+}
 
 Scene courtyardWithSmallLights() {
     Result<Scene> s = makeBuiltinScene("courtyard-small");
