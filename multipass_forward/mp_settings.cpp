@@ -15,12 +15,15 @@ const ChoiceKnob<Accum>& accumKnob() {
 const ChoiceKnob<LightLists>& lightListsKnob() {
     static const ChoiceKnob<LightLists> k{
         "light-draws",
-        {{LightLists::Gpu, "gpu"}, {LightLists::Cpu, "cpu"}},
-        "Multipass forward per-light draw lists: gpu (compute passes write each light's "
-        "indirect draws of opaque and masked meshes, and with --blended-lights under each "
-        "blended draw's light draws and resets, every frame; a new view re-plans nothing per "
-        "light; blended lights stay on the CPU with --shadows or without dualSrcBlend) or cpu "
-        "(built on the CPU for each view, one recorded draw per light and mesh)"};
+        {{LightLists::Gpu, "gpu"}, {LightLists::GpuBlended, "gpu-blended"}, {LightLists::Cpu, "cpu"}},
+        "Multipass forward per-light draw lists: gpu (a compute pass writes each light's "
+        "indirect draws of opaque and masked meshes every frame; the blended draws' lights are "
+        "planned and recorded per view, each scissored to its light), gpu-blended (with "
+        "--blended-lights under the blended draws' light draws and resets too: a new view "
+        "re-plans nothing per light, but each light draw rasterizes its whole mesh and discards "
+        "outside the light's rectangle, a slower frame: docs/multipass_forward.md; blended "
+        "lights stay on the CPU with --shadows or without dualSrcBlend) or cpu (built on the "
+        "CPU for each view, one recorded draw per light and mesh)"};
     return k;
 }
 

@@ -9,7 +9,7 @@ namespace tp::mp {
 
 enum class Accum { Fp32, Fp16 };                       // --accum
 enum class BlendedLights { Under, Additive, OnePass }; // --blended-lights
-enum class LightLists { Gpu, Cpu };                    // --light-draws
+enum class LightLists { Gpu, GpuBlended, Cpu };        // --light-draws
 
 struct Settings {
     uint32_t width = 0, height = 0;

@@ -34,13 +34,16 @@ LightLists chooseLists(const RendererCreateInfo& info, const Settings& s, std::s
     return why.empty() ? LightLists::Gpu : LightLists::Cpu;
 }
 
-// The blended draws' lights on the GPU too where the opaque lists are, the blended draws are lit
-// by light draws composited under (not additive, not one-pass), no light is shadowed (a map is
-// rendered between two lights' draws) and the device blends dual-source; `why` says why not
-// where it matters (a scene with blended draws lit by light draws).
+// The blended draws' lights on the GPU too (--light-draws gpu-blended) where the opaque lists
+// are, the blended draws are lit by light draws composited under (not additive, not one-pass),
+// no light is shadowed (a map is rendered between two lights' draws) and the device blends
+// dual-source; `why` says why not where it matters (a scene with blended draws lit by light
+// draws). Not under plain gpu: without a scissor each light draw rasterizes its whole mesh, which
+// cost the H200's frame 18 % at 1,024 lights (docs/multipass_forward.md).
 LightLists chooseBlendedLists(const RendererCreateInfo& info, const Settings& s, LightLists lists,
                               std::string& why) {
-    if (lists == LightLists::Cpu || s.blendedLights == BlendedLights::OnePass ||
+    if (s.lightLists != LightLists::GpuBlended || lists == LightLists::Cpu ||
+        s.blendedLights == BlendedLights::OnePass ||
         !info.scene.hasDraws(DrawFilter::Blend))
         return LightLists::Cpu;
     why = BlendedLightDrawPass::unavailable(info.ctx, info.scene, localLightCount(info.scene),

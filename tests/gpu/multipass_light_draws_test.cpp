@@ -1,5 +1,5 @@
-// Multipass forward's per-light draw lists on the GPU (--light-draws gpu, the default;
-// multipass_forward/light_draw_pass.h, and for the blended draws' lights
+// Multipass forward's per-light draw lists on the GPU (--light-draws gpu, the default:
+// multipass_forward/light_draw_pass.h; gpu-blended, the blended draws' lights too:
 // blended_light_draw_pass.h) against the CPU's lists (--light-draws cpu, the light plan as it was
 // built before): the same images bit for bit and the same counters, at 1x and 4x at both shading
 // rates, with meshlet culling, shadows, fp16 and every --blended-lights; and, over several views
@@ -83,7 +83,15 @@ TEST_P(MultipassLightDraws, GpuListsRenderTheCpuListsImageWithTheirCounters) {
     ASSERT_TRUE(ctx);
     const Scene scene = sceneWithLights();
     const RunResult cpu = render(*ctx, scene, c, "cpu");
-    const RunResult gpu = render(*ctx, scene, c, "gpu");
+    // gpu: the opaque lists on the GPU, the blended lights recorded per view as on the CPU.
+    const RunResult opaque = render(*ctx, scene, c, "gpu");
+    EXPECT_EQ(opaque.stats.counter("light_draws_gpu"), 1.0) << "fell back to the CPU";
+    EXPECT_EQ(opaque.stats.counter("blended_light_draws_gpu", -1), 0.0);
+    EXPECT_TRUE(sameBits(opaque.hdr.rgba, cpu.hdr.rgba))
+        << c.name << ": gpu's colour differs in " << differingPixels(opaque.hdr, cpu.hdr) << " pixels";
+    for (const char* name : kPlanCounters)
+        EXPECT_EQ(opaque.stats.counter(name, -1), cpu.stats.counter(name, -2)) << c.name << ": " << name;
+    const RunResult gpu = render(*ctx, scene, c, "gpu-blended");
     EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0) << "fell back to the CPU";
     EXPECT_EQ(cpu.stats.counter("light_draws_gpu"), 0.0);
     EXPECT_EQ(gpu.stats.counter("blended_light_draws_gpu", -1), c.blendedOnGpu() ? 1.0 : 0.0);
@@ -125,7 +133,7 @@ TEST(MultipassLightDrawsFallback, WithoutDualSourceBlendingBlendedLightsStayOnTh
     const Scene scene = sceneWithLights();
     const RunResult cpu = render(*ctx, scene, Config{"1x"}, "cpu");
     ctx->caps.dualSrcBlend = false; // as a device without the feature reports it
-    const RunResult gpu = render(*ctx, scene, Config{"1x"}, "gpu");
+    const RunResult gpu = render(*ctx, scene, Config{"1x"}, "gpu-blended");
     EXPECT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0);
     EXPECT_EQ(gpu.stats.counter("blended_light_draws_gpu", -1), 0.0);
     EXPECT_EQ(gpu.stats.counter("blended_light_lists_cpu_builds", -1), 1.0);
@@ -156,7 +164,7 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
     Result<const RendererEntry*> entry = findRenderer("multipass_forward");
     ASSERT_TRUE(entry.ok());
     SceneGpu gpu(*ctx, scene);
-    for (const char* lists : {"gpu", "cpu"}) {
+    for (const char* lists : {"gpu-blended", "cpu"}) {
         RenderSettings s = settings;
         s.knobs["light-draws"] = lists;
         auto session = RendererSession::create(*ctx, gpu, **entry, analyzeScene(scene, 1), s);
@@ -170,7 +178,7 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
     for (int v = 0; v < views; ++v) {
         scene.camera = a;
         scene.camera.position += glm::vec3(-0.8f * float(v), -0.2f * float(v), 0.5f * float(v));
-        Result<RunResult> g = sessions["gpu"]->render(once);
+        Result<RunResult> g = sessions["gpu-blended"]->render(once);
         Result<RunResult> c = sessions["cpu"]->render(once);
         ASSERT_TRUE(g.ok() && c.ok());
         EXPECT_EQ(g->stats.counter("light_lists_cpu_builds", -1), 0.0) << "view " << v;
@@ -186,8 +194,8 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
             EXPECT_EQ(g->stats.counter(name, -1), c->stats.counter(name, -2))
                 << "view " << v << ": " << name;
     }
-    EXPECT_EQ(sessions["gpu"]->replans(), 0u);
-    EXPECT_EQ(sessions["gpu"]->updates(), uint32_t(views - 1));
+    EXPECT_EQ(sessions["gpu-blended"]->replans(), 0u);
+    EXPECT_EQ(sessions["gpu-blended"]->updates(), uint32_t(views - 1));
     expectNoValidationMessages(*ctx);
 }
 
