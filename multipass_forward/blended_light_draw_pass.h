@@ -1,7 +1,8 @@
 #pragma once
 // Multipass forward's blended draws' light lists on the GPU (pass "blended_light_draws", compute;
-// shaders/multipass_forward/blended_light_draws.comp; --light-draws gpu, the default, where the
-// device has dual-source blending and no light is shadowed). Every frame, per blended draw on
+// shaders/multipass_forward/blended_light_draws.comp; --light-draws gpu-blended, where the
+// device has dual-source blending and no light is shadowed; not the default: the discard costs
+// the frame more than the per-view recording it saves, docs/multipass_forward.md). Every frame, per blended draw on
 // screen (back to front, the blended pass's order), the lights that touch it by the light plan's
 // rule, in light order, each as two indexed indirect draws of the draw's reversed triangles: the
 // light's draw and its transmittance reset, which the blended pass draws with one dual-source
