@@ -324,13 +324,15 @@ std::optional<RenderOutcome> RenderWorker::collectLater(const RenderJob& job,
     out.key = job.key;
     out.collected = true;
     const auto start = std::chrono::steady_clock::now();
-    const RunOptions options = runOptionsFor(job);
+    RunOptions options = runOptionsFor(job);
+    options.hdr = share_ != nullptr; // on a device of its own the shown outcome read it already
     for (const PipelineImage& image : shown.images) {
         auto it = sessions_.find(image.pipeline);
         if (!image.error.empty() || it == sessions_.end() || !it->second.session) continue;
         PipelineImage read = image; // the display, timings and the frames' counters
         try {
             RunResult full = it->second.session->collect(options);
+            if (!options.hdr) full.hdr = std::move(read.run.hdr); // the frame's, read to show it
             full.energy = image.run.energy;
             for (const auto& counter : image.run.stats.counters) // the session's view counters
                 full.stats.counters.push_back(counter);

@@ -127,7 +127,7 @@ RunResult collectResult(GpuContext& ctx, const SceneGpu& scene, const RendererEn
     // (no images, no counters read back; the session adds its own).
     if (!options.readback) return result;
     if (options.images) {
-        result.hdr = readbackColor(ctx, graph.image(planned.hdr));
+        if (options.hdr) result.hdr = readbackColor(ctx, graph.image(planned.hdr));
         result.depth = readbackDepth(ctx, graph.image(planned.depth));
     }
     planned.renderer->collectStats(graph);

@@ -35,6 +35,9 @@ struct RunOptions {
     // With readback: false reads everything but the hdr and depth images (the viewer shows its
     // renderers' images where they are: RendererSession::readImages reads them later if asked).
     bool images = true;
+    // With images: false reads the depth alone (the caller holds this frame's hdr already: the
+    // viewer's worker on a device of its own read it to show the view first).
+    bool hdr = true;
     // The device's energy counter (core/runner/device_energy.h): read around the timed frames
     // (RunResult::energy). Null: not measured (the result's reason says so).
     std::shared_ptr<EnergySource> energy;
