@@ -136,6 +136,9 @@ void RasterPass::prepare(FrameGraph& graph) {
     spec.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
     spec.push_back({TP_VR_SPEC_SUBPIXEL_BITS, ctx_.properties.limits.subPixelPrecisionBits});
     spec.push_back({TP_VR_SPEC_HYBRID, hybrid_ ? 1u : 0u});
+    // The depth plane as the device's rasterizer sets it up (vis_raster.h): llvmpipe from the
+    // float positions, a GPU from the snapped ones.
+    spec.push_back({TP_VR_SPEC_SNAPPED_PLANE, ctx_.isCpuDevice() ? 0u : 1u});
     pipeline_ = createComputePipeline(ctx_, cull_ ? "vis_raster_meshlet_comp" : "vis_raster_comp",
                                       spec, layout_, &set_);
     if (hybrid_) return;

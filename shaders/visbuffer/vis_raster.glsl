@@ -16,8 +16,10 @@
 //   5. Exact integer edge functions (int64) at the standard sample locations with the top-left
 //      rule in framebuffer coordinates (y down): a sample on an edge is covered only when the
 //      edge is a top edge (horizontal, the triangle below it) or a left edge.
-//   6. Depth: the plane through the three snapped vertices' z = z_clip / w_clip, evaluated at
-//      the sample; a sample with depth <= 0 (the clear value, the far plane) is not written.
+//   6. Depth: the plane of z = z_clip / w_clip through the three vertices, evaluated at the
+//      sample: through their snapped positions on a GPU (kSnappedPlane), the unsnapped ones on
+//      llvmpipe, as each rasterizer sets its plane up; a sample with depth <= 0 (the clear
+//      value, the far plane) is not written.
 //   7. Masked draws: the alpha test at the sample (material.glsl's base colour alpha), the
 //      texture sampled with the differences of the uv over one pixel on the triangle's plane.
 // Ties at equal depth go to the smaller id (~id in the low word): the draw and the triangle
@@ -34,6 +36,7 @@ layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
 layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
 layout(constant_id = TP_VR_SPEC_SUBPIXEL_BITS) const uint kSubpixelBits = TP_VR_SUBPIXEL_BITS;
 layout(constant_id = TP_VR_SPEC_HYBRID) const uint kHybrid = 0u;
+layout(constant_id = TP_VR_SPEC_SNAPPED_PLANE) const uint kSnappedPlane = 0u;
 #include "include/sample_locations.glsl"
 
 layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_SAMPLES) buffer SampleBlock {
@@ -66,7 +69,7 @@ vec4 clipPlane(uint i) {
 // A point of the polygon on the framebuffer's fixed-point grid, with its depth.
 struct RasterVertex {
     ivec2 p; // framebuffer coordinates * 2^kSubpixelBits, y down
-    vec2 f;  // the same unsnapped (the depth plane's)
+    vec2 f;  // the depth plane's position: p itself (kSnappedPlane) or unsnapped
     float z; // z_clip / w_clip
 };
 
@@ -76,7 +79,7 @@ RasterVertex project(vec4 clip) {
     precise vec2 fb = ndc.xy * vec2(halfSize.x, -halfSize.y) + halfSize;
     RasterVertex r;
     r.p = ivec2(roundEven(fb * float(1u << kSubpixelBits)));
-    r.f = fb;
+    r.f = kSnappedPlane != 0u ? vec2(r.p) / float(1u << kSubpixelBits) : fb;
     r.z = ndc.z;
     return r;
 }
@@ -155,9 +158,9 @@ void pixelBounds(ivec2 lo, ivec2 hi, out ivec2 first, out ivec2 last) {
 }
 
 // One triangle of the fan, set up: edge functions E = A x + B y + C >= 0 inside (C biased by
-// the fill rule), its pixel bounds, and its depth plane per pixel from vertex 0's unsnapped
-// position (as llvmpipe sets the plane up from the float positions: the snapped ones moved the
-// depth by up to 6,000 ulps on courtyard-small where the ids agree).
+// the fill rule), its pixel bounds, and its depth plane per pixel from vertex 0's position (f:
+// llvmpipe sets the plane up from the float positions, where the snapped ones moved the depth by
+// up to 6,000 ulps on courtyard-small; the H200 from the snapped ones, by as much the other way).
 struct RasterSetup {
     i64vec3 A, B, C;
     ivec2 first, last;
@@ -235,14 +238,24 @@ vec3 planeBarycentrics(MaskTriangle t, vec2 fc) {
 
 vec2 maskUv(MaskTriangle t, vec3 b) { return t.uv0 * b.x + t.uv1 * b.y + t.uv2 * b.z; }
 
+// The uv at framebuffer location fc.
+vec2 maskUvAt(MaskTriangle t, vec2 fc) { return maskUv(t, planeBarycentrics(t, fc)); }
+
 // material.glsl's alpha (base colour factor x vertex colour x base colour texture) at fc.
-// The texture index differs between invocations: the array is walked with a uniform counter
-// (vis_read.glsl's visTexture: lavapipe lacks non-uniform sampler indexing).
+// The texture's derivatives are the hardware's fine ones: the differences across the 2x2 quad
+// the pixel belongs to (its row for x, its column for y), at the same offset in each pixel, so
+// the level of detail is the fragment shader's. (A forward difference from the pixel itself,
+// as this took before, is the other neighbour's for odd pixels: on the courtyard at 1080p it
+// flipped the alpha test of leaf cards at 4 pixels, a leaf in front of the floor, 0.84 off the
+// reference.) The texture index differs between invocations: the array is walked with a
+// uniform counter (vis_read.glsl's visTexture: lavapipe lacks non-uniform sampler indexing).
 float maskAlpha(MaskTriangle t, vec2 fc) {
     vec3 b = planeBarycentrics(t, fc);
     vec2 uv = maskUv(t, b);
-    vec2 dx = maskUv(t, planeBarycentrics(t, fc + vec2(1.0, 0.0))) - uv;
-    vec2 dy = maskUv(t, planeBarycentrics(t, fc + vec2(0.0, 1.0))) - uv;
+    vec2 pixel = floor(fc), quad = pixel - mod(pixel, 2.0), offset = fc - pixel;
+    vec2 left = vec2(quad.x, pixel.y) + offset, top = vec2(pixel.x, quad.y) + offset;
+    vec2 dx = maskUvAt(t, left + vec2(1.0, 0.0)) - maskUvAt(t, left);
+    vec2 dy = maskUvAt(t, top + vec2(0.0, 1.0)) - maskUvAt(t, top);
     if (any(isnan(vec4(dx, dy))) || any(isinf(vec4(dx, dy)))) dx = dy = vec2(0.0);
     MaterialGpu m = materials[t.material];
     float texel = 1.0;

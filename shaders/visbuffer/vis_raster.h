@@ -59,6 +59,9 @@
 // ---- specialization constants (after the visbuffer's 19, 20) ----
 #define TP_VR_SPEC_SUBPIXEL_BITS 21
 #define TP_VR_SPEC_HYBRID 22 // 1: listed triangles go to the hardware (draw args), 0: vis_raster_big
+// 1: the depth plane through the snapped vertices (a GPU's rasterizer: the H200 measured 6,039
+// ulps off with the unsnapped ones), 0: through the unsnapped ones (llvmpipe's setup)
+#define TP_VR_SPEC_SNAPPED_PLANE 23
 
 #ifndef TP_GLSL
 namespace tp::gpu {
