@@ -7,8 +7,13 @@
 // A fixed 8 x 8 group covers a tile of 8, 16 or 32 pixels, each invocation taking
 // (tileSize / 8)^2 pixels: a spec-constant workgroup size (LocalSizeId) would need
 // maintenance4, which the context does not enable.
-#define TP_GROUP 8u
-layout(local_size_x = 8, local_size_y = 8) in;
+// TP_GROUP x TP_GROUP invocations a tile, each shading (kTileSize / TP_GROUP)^2 of its pixels:
+// 16 x 16 on a GPU (a 16-pixel tile's pixels one an invocation: the H200 hid the surface reads'
+// latency poorly with 64 invocations of 4 pixels each beside a 16 KiB shared list), 8 x 8 on
+// lavapipe (tiled_lighting.h: TP_TL_SPEC_GROUP_X). The image is the same either way: each
+// pixel's shade, and its list, do not depend on which invocation computes it.
+layout(local_size_x = 8, local_size_y = 8, local_size_x_id = TP_TL_SPEC_GROUP_X, local_size_y_id = TP_TL_SPEC_GROUP_Y) in;
+#define TP_GROUP gl_WorkGroupSize.x
 layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
 #ifndef TP_LISTS_ONLY
