@@ -24,7 +24,7 @@ const ChoiceKnob<Lighting>& lightingKnob() {
 KnobSchema knobs() {
     return {la::tileSizeKnob().knob(), la::lightCullKnob().knob(),
             la::lightBinKnob().knob(), la::lightAssignKnob().knob(),
-            la::slicesKnob().knob(),   gbufferKnob().knob(),
+            la::slicesKnob().knob(),   la::tileGroupKnob().knob(), gbufferKnob().knob(),
             msaaShadingKnob().knob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
             lightingKnob().knob(),     hdrKnob(),
             cullGeometryKnob().knob()};
@@ -38,6 +38,7 @@ Settings readSettings(const RenderSettings& s) {
     d.debug = s.debug;
     d.manyViews = s.manyViews;
     d.assign = la::readAssignSettings(s);
+    d.tileGroup = la::tileGroupKnob().in(s);
     d.gbuffer = gbufferKnob().in(s);
     d.lighting = lightingKnob().in(s);
     d.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32

@@ -19,6 +19,7 @@ struct Settings {
     bool debug = false;
     bool manyViews = false; // RenderSettings::manyViews: per-view lists get headroom
     la::AssignSettings assign;
+    la::TileGroup tileGroup = la::TileGroup::Auto; // --tile-group
     GBuffer gbuffer = GBuffer::Compact;
     Lighting lighting = Lighting::Tiled;
     Hdr hdr = Hdr::Fp32;

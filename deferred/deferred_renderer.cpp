@@ -30,13 +30,16 @@ class DeferredRenderer final : public Renderer {
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
                     def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin),
                     def_.manyViews),
-          volumes_(info.ctx, info.scene, def_.cullGeometry), blended_(info.ctx, info.scene) {}
+          volumes_(info.ctx, info.scene, def_.cullGeometry), blended_(info.ctx, info.scene) {
+        lighting_.setGroup(def_.tileGroup);
+    }
 
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, def_.gbuffer, def_.sampling.samples);
         t_.sampleRateGBuffer = def_.sampling.shading == MsaaShading::Sample;
-        // The lighting group is 8 x 8 invocations, each covering (tileSize / 8)^2 pixels:
-        // the tile knob's values (8, 16, 32) are all multiples of 8.
+        // The lighting group is 8 x 8 or 16 x 16 invocations (--tile-group, at most the tile),
+        // each covering (tileSize / edge)^2 pixels: the tile knob's values (8, 16, 32) are all
+        // multiples of the edge.
         t_.grid = la::makeTileGrid(graph.width(), graph.height(), def_.assign.tile);
         const uint32_t tiles = t_.grid.count();
         // --hdr: fp32 keeps the light sum exact to readback; fp16 halves the bytes (Forward+'s

@@ -74,6 +74,7 @@ KnobSchema knobs() {
             la::lightBinKnob().knob(),
             la::lightAssignKnob().knob(),
             la::slicesKnob().knob(),
+            la::tileGroupKnob().knob(),
             msaaShadingKnob().knob(), // pixel: once per pixel and triangle; sample: every sample
             hdrKnob(),
             blendedKnob().knob(),
@@ -91,6 +92,7 @@ Settings readSettings(const RenderSettings& s) {
     v.debug = s.debug;
     v.manyViews = s.manyViews;
     v.assign = la::readAssignSettings(s);
+    v.tileGroup = la::tileGroupKnob().in(s);
     v.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32
     v.blended = blendedKnob().in(s);
     v.blendedCapacityPercent = blendedCapacityKnob().in(s);

@@ -50,6 +50,7 @@ struct Settings {
     bool debug = false;
     bool manyViews = false; // RenderSettings::manyViews: per-view lists get headroom
     la::AssignSettings assign;
+    la::TileGroup tileGroup = la::TileGroup::Auto; // --tile-group
     HdrStorage hdr = HdrStorage::Fp32;
     Blended blended = Blended::Compute;
     Derivatives derivatives = Derivatives::Quad;

@@ -42,7 +42,9 @@ class VisbufferRenderer final : public Renderer {
           lighting_(info.ctx, info.scene, vis_.debug, vis_.assign.binned(),
                     vis_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, vis_.assign.bin),
                     vis_.manyViews),
-          blended_(info.ctx, info.scene) {}
+          blended_(info.ctx, info.scene) {
+        lighting_.setGroup(vis_.tileGroup);
+    }
 
     void plan(FrameGraph& graph) override {
         checkDevice();

@@ -1,5 +1,7 @@
 #include "core/lightassign/knobs.h"
 
+#include <algorithm>
+
 #include "core/gpu/context.h"
 
 namespace tp::la {
@@ -60,6 +62,25 @@ const ChoiceKnob<Loop>& lightLoopKnob() {
         "(lanes of one tile walk the OR of their bits together, light loads uniform; the same "
         "image); changes nothing under --light-assign tiled"};
     return k;
+}
+
+const ChoiceKnob<TileGroup>& tileGroupKnob() {
+    static const ChoiceKnob<TileGroup> k{
+        "tile-group",
+        {{TileGroup::Auto, "auto"}, {TileGroup::Eight, "8"}, {TileGroup::Sixteen, "16"}},
+        "Workgroup edge of the tiled lighting (invocations per tile edge, at most the tile): 8 "
+        "(each invocation shades (tile/8)^2 pixels), 16 (a 16-pixel tile's pixels one an "
+        "invocation: on a GPU it hides the surface reads' latency, 2.2x faster on an H200) or "
+        "auto (16 on a GPU, 8 on a CPU device such as lavapipe); the same image whichever"};
+    return k;
+}
+
+uint32_t tileGroupEdge(const GpuContext& ctx, TileGroup group, uint32_t tile) {
+    uint32_t edge = group == TileGroup::Sixteen ? 16u
+                    : group == TileGroup::Eight  ? 8u
+                    : ctx.isCpuDevice()          ? 8u
+                                                 : 16u;
+    return std::min(edge, tile);
 }
 
 AssignSettings readAssignSettings(const RenderSettings& s) {

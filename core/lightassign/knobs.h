@@ -34,6 +34,10 @@ enum class Bin { Auto, Cpu, Gpu };
 // own bit is set, so the light loads are uniform; other subgroups keep the lane loop. The
 // same lights in the same order per fragment either way: identical images.
 enum class Loop { Lane, Subgroup };
+// --tile-group auto|8|16: the tiled lighting's workgroup edge (deferred's and the visibility
+// buffer's, passes/tiled_lighting.h). auto: 16 on a GPU with 16- and 32-pixel tiles, 8 on a CPU
+// device; never more than the tile. The same image whichever (docs/efficiency.md).
+enum class TileGroup { Auto, Eight, Sixteen };
 
 const IntegerKnob& tileSizeKnob(); // --tile 8|16|32
 const ChoiceKnob<Assign>& lightAssignKnob();
@@ -41,6 +45,9 @@ const IntegerKnob& slicesKnob(); // --slices N: depth slices per tile (clustered
 const ChoiceKnob<Cull>& lightCullKnob();
 const ChoiceKnob<Bin>& lightBinKnob();
 const ChoiceKnob<Loop>& lightLoopKnob();
+const ChoiceKnob<TileGroup>& tileGroupKnob();
+// --tile-group resolved on `ctx` for `tile`-pixel tiles: the workgroup's edge in invocations.
+uint32_t tileGroupEdge(const GpuContext& ctx, TileGroup group, uint32_t tile);
 
 // The assignment knobs every tiled pipeline declares (tile, cull, bin, assign, slices), typed.
 struct AssignSettings {

@@ -131,10 +131,9 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_SPEC_SAMPLES, source_.samples});
     spec.push_back({TP_TL_SPEC_EVERY_SAMPLE, source_.everySample ? 1u : 0u});
     spec.push_back({TP_TL_SPEC_BINNED, binned_ ? 1u : 0u});
-    // The workgroup (tiled_lighting.h): a GPU's latency wants a tile's pixels one an invocation.
-    const uint32_t group = ctx_.isCpuDevice() || t_.grid.tileSize < TP_TL_GROUP_GPU
-                               ? TP_TL_GROUP_CPU
-                               : TP_TL_GROUP_GPU;
+    // The workgroup (--tile-group; tiled_lighting.h): a GPU's latency wants a tile's pixels one
+    // an invocation.
+    const uint32_t group = la::tileGroupEdge(ctx_, group_, t_.grid.tileSize);
     spec.push_back({TP_TL_SPEC_GROUP_X, group});
     spec.push_back({TP_TL_SPEC_GROUP_Y, group});
     spec.push_back({TP_TL_SPEC_SLICES, listsOnly_ ? 0u : slices_}); // lists only: no shading

@@ -15,6 +15,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/image/image.h"
+#include "core/lightassign/knobs.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/light_binning.h"
@@ -105,6 +106,8 @@ class TiledLighting {
         : ctx_(ctx), scene_(scene), debug_(debug), binned_(binned), slices_(slices),
           gpuBinning_(binned && gpuBinning), manyViews_(manyViews) {}
     ~TiledLighting();
+    // --tile-group (core/lightassign/knobs.h), before plan: the workgroup's edge.
+    void setGroup(la::TileGroup group) { group_ = group; }
     // listsOnly: volumes lighting shades the opaque surfaces; only the transparent lists
     // (and the tile statistics) are built here.
     // transparentMasks (clustered blended scenes, else invalid): the slice rows over the
@@ -169,6 +172,7 @@ class TiledLighting {
     uint32_t slices_ = 0;
     bool gpuBinning_ = false;
     bool manyViews_ = false;
+    la::TileGroup group_ = la::TileGroup::Auto;
     uint64_t slotCapacity_ = 0;          // binned: candidate run slots the buffer holds
     std::vector<uint32_t> directional_;  // binned: the directional lights planned for
     std::unique_ptr<la::GpuBinning> binning_; // gpuBinning_: the light_binning pass

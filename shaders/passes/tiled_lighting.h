@@ -59,12 +59,10 @@ TP_INLINE uint tlClusterRowsBase(uint tileCount, uint offset, uint tile, uint sl
 #define TP_TL_SPEC_BINNED 16        // 1: a tile tests only its candidates (--light-cull binned), 0: every light
 #define TP_TL_SPEC_SLICES 17        // clustered: depth slices per tile; 0: tiled (--light-assign tiled)
 #define TP_TL_SPEC_MASK_WORDS 18    // words of the shared slice masks: TP_TL_CLUSTER_MASK_WORDS clustered, 1 tiled
-// The workgroup's edge, x and y the same: TP_TL_GROUP_GPU on a GPU with 16- and 32-pixel tiles,
-// TP_TL_GROUP_CPU on a CPU device and for 8-pixel tiles (core/passes/tiled_lighting.cpp).
+// The workgroup's edge, x and y the same (--tile-group, core/lightassign/knobs.h: 16 on a GPU
+// with 16- and 32-pixel tiles, 8 on a CPU device and for 8-pixel tiles).
 #define TP_TL_SPEC_GROUP_X 24
 #define TP_TL_SPEC_GROUP_Y 25
-#define TP_TL_GROUP_CPU 8u
-#define TP_TL_GROUP_GPU 16u
 
 // Clustered deferred: per slice, a bitmask over the tile's shared list of this batch, in
 // shared memory (8 KiB beside the 16 KiB list): slices * ceil(lights / 32) words, so a
