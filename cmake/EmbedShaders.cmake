@@ -37,6 +37,8 @@ function(triptych_embed_shaders target)
   # leaves it unchanged, so its object depends on the SPIR-V itself.
   set_source_files_properties(${out} PROPERTIES OBJECT_DEPENDS "${ARGN}")
   add_library(${target} STATIC ${out})
+  # Compiled as itself, not through a unity file, so OBJECT_DEPENDS above is its object's.
+  set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
   target_include_directories(${target} PUBLIC ${CMAKE_SOURCE_DIR})
 endfunction()
 
