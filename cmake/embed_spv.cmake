@@ -4,7 +4,7 @@
 # copies the bytes, so neither this script nor the compiler reads them as text. (It wrote every
 # byte as a `0xNN,` initializer before: 325 shaders, 17 MB of SPIR-V, an 85 MB source that this
 # script took 58 s of CPU to write and g++ 43 s and 2 GB to compile; docs/build.md.) The file names only
-# paths, so it changes when a shader is added or removed, not when one is recompiled:
+# paths, so its text changes when a shader is added or removed, not when one is recompiled:
 # EmbedShaders.cmake makes the object depend on every .spv (OBJECT_DEPENDS) for that. ccache
 # does not cache a source with `.incbin` (it cannot hash what it includes): always compiled,
 # in a fraction of a second.
@@ -41,4 +41,5 @@ ${table}  };
 
 } // namespace tp
 ")
-file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)
+# Replaced even when unchanged, so the step is up to date after it ran (newer than the .spv).
+file(RENAME ${OUT}.tmp ${OUT})
