@@ -23,7 +23,8 @@ function(triptych_add_shader out_var source name)
   set(${out_var} ${${out_var}} ${spv} PARENT_SCOPE)
 endfunction()
 
-# Writes one .cpp defining every shader as a named span, looked up by core/gpu/shaders.
+# Writes one .cpp defining every shader as a named span, looked up by core/gpu/shaders: the
+# bytes come in through the assembler's `.incbin` (embed_spv.cmake says why).
 function(triptych_embed_shaders target)
   set(out ${CMAKE_BINARY_DIR}/embedded_shaders.cpp)
   add_custom_command(OUTPUT ${out}
@@ -32,7 +33,12 @@ function(triptych_embed_shaders target)
     DEPENDS ${ARGN} ${CMAKE_SOURCE_DIR}/cmake/embed_spv.cmake
     COMMENT "embedding SPIR-V"
     VERBATIM)
+  # The file names the .spv files and `.incbin`s them (embed_spv.cmake): a recompiled shader
+  # leaves it unchanged, so its object depends on the SPIR-V itself.
+  set_source_files_properties(${out} PROPERTIES OBJECT_DEPENDS "${ARGN}")
   add_library(${target} STATIC ${out})
+  # Compiled as itself, not through a unity file, so OBJECT_DEPENDS above is its object's.
+  set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
   target_include_directories(${target} PUBLIC ${CMAKE_SOURCE_DIR})
 endfunction()
 
