@@ -29,6 +29,9 @@
 //                                    of rasterRayDir's rays)
 //   vec3 rasterRayDir(vec2 fc)       a direction of the ray through framebuffer point fc
 //   ivec2 rasterViewOrigin(), rasterViewSize(); bool rasterFlipY()   the viewport
+//   bool rasterExactClippedPlane()   a clipped polygon's depth plane from the triangle's own
+//                                    clip positions (homogeneousPlane) rather than from its
+//                                    largest fan triangle
 //   uint rasterSample(ivec2 px, uint k, vec2 fc, float z, uint id, bool masked, MaskTriangle mt)
 //                                    writes sample k of pixel px (fc: its location) at depth z
 //                                    if it wins; returns the atomics issued
@@ -80,6 +83,7 @@ vec3 rasterRayDir(vec2 fc);
 ivec2 rasterViewOrigin();
 ivec2 rasterViewSize();
 bool rasterFlipY();
+bool rasterExactClippedPlane();
 uint rasterSample(ivec2 px, uint k, vec2 fc, float z, uint id, bool masked, MaskTriangle mt);
 
 // The clip planes as vec4 p with dot(p, clip) >= 0 inside.
@@ -195,8 +199,9 @@ bool setupTriangle(RasterVertex v0, RasterVertex v1, RasterVertex v2, bool doubl
     bvec3 topLeft = bvec3(uvec3(greaterThan(s.A, i64vec3(0))) |
                           (uvec3(equal(s.A, i64vec3(0))) & uvec3(greaterThan(s.B, i64vec3(0)))));
     s.C = C - i64vec3(not(topLeft));
-    pixelBounds(min(min(v0.p, v1.p), v2.p), max(max(v0.p, v1.p), v2.p), s.first, s.last);
-    if (any(greaterThan(s.first, s.last))) return false;
+    // The depth plane first: a clipped polygon takes its largest fan triangle's for every fan
+    // triangle (rasterPolygonAs), and that one may itself lie wholly beside the viewport (a
+    // polygon cut by a guard band far larger than a small shadow face).
     vec2 d1 = v1.f - v0.f, d2 = v2.f - v0.f;
     float dz1 = v1.z - v0.z, dz2 = v2.z - v0.z, fa = d1.x * d2.y - d2.x * d1.y;
     if (fa == 0.0) fa = float(area) / float(1 << (2 * int(kSubpixelBits))); // a sliver
@@ -204,7 +209,8 @@ bool setupTriangle(RasterVertex v0, RasterVertex v1, RasterVertex v2, bool doubl
     s.z0 = v0.z;
     s.dzdx = (dz1 * d2.y - dz2 * d1.y) / fa;
     s.dzdy = (d1.x * dz2 - d2.x * dz1) / fa;
-    return true;
+    pixelBounds(min(min(v0.p, v1.p), v2.p), max(max(v0.p, v1.p), v2.p), s.first, s.last);
+    return all(lessThanEqual(s.first, s.last));
 }
 
 // What becomes of the triangle with clip positions c0..c2 (TP_RT_*): culled; listed (clipped,
@@ -370,11 +376,28 @@ uint rasterTriangleAs(RasterVertex v0, RasterVertex v1, RasterVertex v2, uint i0
     return big ? rasterTiles(s, id, masked, mt, lane) : rasterPixels(s, id, masked, mt);
 }
 
+// The depth plane z / w of the triangle with clip positions c0..c2, exact whatever clipping
+// makes of it (homogeneous rasterization, Olano and Greer 1997): at NDC (X, Y) the point of the
+// triangle's plane has weights k = M^-1 (X, Y, 1), M's columns the vertices' (x, y, w), and
+// z / w = z . k, affine in (X, Y). Anchored at the viewport's centre, so it is well conditioned
+// over the viewport however far the clipped polygon's vertices lie in the guard band.
+void homogeneousPlane(vec4 c0, vec4 c1, vec4 c2, inout RasterSetup s) {
+    mat3 inv = inverse(mat3(c0.xyw, c1.xyw, c2.xyw));
+    vec3 g = vec3(c0.z, c1.z, c2.z) * inv; // z / w = g.x X + g.y Y + g.z
+    vec2 halfSize = vec2(rasterViewSize()) * 0.5;
+    vec2 scale = rasterFlipY() ? vec2(halfSize.x, -halfSize.y) : halfSize;
+    s.origin = vec2(rasterViewOrigin()) + halfSize;
+    s.z0 = g.z;
+    s.dzdx = g.x / scale.x;
+    s.dzdy = g.y / scale.y;
+}
+
 // The polygon's fan rasterized: by this invocation alone (`big` false) or in tiles by the 64
-// of a big group. `drew`: whether a triangle of it was set up (false: culled); returns the
-// atomics this invocation issued.
-uint rasterPolygonAs(RasterPolygon poly, uint i0, uint i1, uint i2, uint id, bool doubleSided,
-                     bool masked, uint material, bool big, uint lane, out bool drew) {
+// of a big group; c0..c2: the triangle's clip positions. `drew`: whether a triangle of it was
+// set up (false: culled); returns the atomics this invocation issued.
+uint rasterPolygonAs(RasterPolygon poly, vec4 c0, vec4 c1, vec4 c2, uint i0, uint i1, uint i2,
+                     uint id, bool doubleSided, bool masked, uint material, bool big, uint lane,
+                     out bool drew) {
     MaskTriangle mt;
     if (masked) mt = maskTriangle(i0, i1, i2, material);
     drew = false;
@@ -394,6 +417,7 @@ uint rasterPolygonAs(RasterPolygon poly, uint i0, uint i1, uint i2, uint id, boo
     }
     RasterSetup plane;
     setupTriangle(poly.v[0], poly.v[best], poly.v[best + 1u], true, plane);
+    if (rasterExactClippedPlane()) homogeneousPlane(c0, c1, c2, plane);
     for (uint k = 1u; k + 1u < poly.n; ++k) {
         RasterSetup s;
         if (!setupTriangle(poly.v[0], poly.v[k], poly.v[k + 1u], doubleSided, s)) continue;
@@ -415,8 +439,8 @@ uint rasterListed(uint i0, uint i1, uint i2, uint id, bool doubleSided, bool mas
     bool outside;
     // Clipped: the polygon's fan (local arrays, rare); else the triangle itself.
     if (needsClipping(c0, c1, c2, outside))
-        return rasterPolygonAs(buildPolygon(i0, i1, i2), i0, i1, i2, id, doubleSided, masked,
-                               material, big, lane, drew);
+        return rasterPolygonAs(buildPolygon(i0, i1, i2), c0, c1, c2, i0, i1, i2, id, doubleSided,
+                               masked, material, big, lane, drew);
     return rasterTriangleAs(project(c0), project(c1), project(c2), i0, i1, i2, id, doubleSided,
                             masked, material, big, lane, drew);
 }

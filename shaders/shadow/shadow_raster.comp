@@ -82,6 +82,6 @@ void main() {
         atomicAdd(list[TP_SR_OVERFLOW], sOverflow);
         uint at = atomicAdd(list[TP_SR_OVERFLOW_MESHLETS], 1u);
         overflowSlots[at] = slot;
-        atomicMax(args[0], min(at + 1u, 65535u));
+        atomicMax(args[0], min((at + 1u) * TP_SR_GROUP, 65535u)); // a group per triangle
     }
 }

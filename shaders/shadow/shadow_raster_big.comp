@@ -10,24 +10,22 @@
 
 layout(local_size_x = TP_RT_BIG_GROUP) in;
 
-// The large triangles of the meshlets whose triangles overflowed the list (all of them again:
-// those that were listed too change nothing, the atomic max being idempotent).
-uint rasterOverflowed(uint slot, uint lane) {
-    uint atomics = 0u;
-    for (uint t = 0u; t < TP_SR_GROUP; ++t) {
-        uint i0, i1, i2, r;
-        if (!slotTriangle(slot, t, i0, i1, i2, r)) break; // the same for the whole group
-        ShadowCullRow row = rows[r];
-        bool masked = (row.flags & TP_SR_FLAG_MASKED) != 0u;
-        useFace(row.face, masked);
-        RasterVertex v0, v1, v2;
-        bool clipped, drew;
-        if (rasterTriage(clipPosition(i0), clipPosition(i1), clipPosition(i2), true, clipped, v0,
-                         v1, v2) != TP_RT_LIST)
-            continue;
-        atomics += rasterListed(i0, i1, i2, r, true, masked, row.material, true, lane, drew);
-    }
-    return atomics;
+// Triangle t of a meshlet whose triangles overflowed the list, if it is large (all of them
+// again: those that were listed too change nothing, the atomic max being idempotent). One
+// triangle per item, not a meshlet's loop: lavapipe ends an invocation after 65,535 loop
+// iterations (docs/shading.md), and a meshlet's large triangles would pass that.
+uint rasterOverflowed(uint slot, uint t, uint lane) {
+    uint i0, i1, i2, r;
+    if (!slotTriangle(slot, t, i0, i1, i2, r)) return 0u; // the same for the whole group
+    ShadowCullRow row = rows[r];
+    bool masked = (row.flags & TP_SR_FLAG_MASKED) != 0u;
+    useFace(row.face, masked);
+    RasterVertex v0, v1, v2;
+    bool clipped, drew;
+    if (rasterTriage(clipPosition(i0), clipPosition(i1), clipPosition(i2), true, clipped, v0, v1,
+                     v2) != TP_RT_LIST)
+        return 0u;
+    return rasterListed(i0, i1, i2, r, true, masked, row.material, true, lane, drew);
 }
 
 void main() {
@@ -44,8 +42,9 @@ void main() {
         atomics += rasterListed(list[at], list[at + 1u], list[at + 2u], r, true, masked,
                                 row.material, true, gl_LocalInvocationIndex, drew);
     }
-    uint overflowed = list[TP_SR_OVERFLOW_MESHLETS];
-    for (uint m = gl_WorkGroupID.x; m < overflowed; m += gl_NumWorkGroups.x)
-        atomics += rasterOverflowed(overflowSlots[m], gl_LocalInvocationIndex);
+    uint items = list[TP_SR_OVERFLOW_MESHLETS] * TP_SR_GROUP; // (meshlet, triangle)
+    for (uint m = gl_WorkGroupID.x; m < items; m += gl_NumWorkGroups.x)
+        atomics += rasterOverflowed(overflowSlots[m / TP_SR_GROUP], m % TP_SR_GROUP,
+                                    gl_LocalInvocationIndex);
     if (atomics != 0u) atomicAdd(list[TP_SR_ATOMICS_BIG], atomics); // the work counts
 }
