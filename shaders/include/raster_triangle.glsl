@@ -29,9 +29,6 @@
 //                                    of rasterRayDir's rays)
 //   vec3 rasterRayDir(vec2 fc)       a direction of the ray through framebuffer point fc
 //   ivec2 rasterViewOrigin(), rasterViewSize(); bool rasterFlipY()   the viewport
-//   bool rasterExactClippedPlane()   a clipped polygon's depth plane from the triangle's own
-//                                    clip positions (homogeneousPlane) rather than from its
-//                                    largest fan triangle
 //   uint rasterSample(ivec2 px, uint k, vec2 fc, float z, uint id, bool masked, MaskTriangle mt)
 //                                    writes sample k of pixel px (fc: its location) at depth z
 //                                    if it wins; returns the atomics issued
@@ -83,7 +80,6 @@ vec3 rasterRayDir(vec2 fc);
 ivec2 rasterViewOrigin();
 ivec2 rasterViewSize();
 bool rasterFlipY();
-bool rasterExactClippedPlane();
 uint rasterSample(ivec2 px, uint k, vec2 fc, float z, uint id, bool masked, MaskTriangle mt);
 
 // The clip planes as vec4 p with dot(p, clip) >= 0 inside.
@@ -376,28 +372,11 @@ uint rasterTriangleAs(RasterVertex v0, RasterVertex v1, RasterVertex v2, uint i0
     return big ? rasterTiles(s, id, masked, mt, lane) : rasterPixels(s, id, masked, mt);
 }
 
-// The depth plane z / w of the triangle with clip positions c0..c2, exact whatever clipping
-// makes of it (homogeneous rasterization, Olano and Greer 1997): at NDC (X, Y) the point of the
-// triangle's plane has weights k = M^-1 (X, Y, 1), M's columns the vertices' (x, y, w), and
-// z / w = z . k, affine in (X, Y). Anchored at the viewport's centre, so it is well conditioned
-// over the viewport however far the clipped polygon's vertices lie in the guard band.
-void homogeneousPlane(vec4 c0, vec4 c1, vec4 c2, inout RasterSetup s) {
-    mat3 inv = inverse(mat3(c0.xyw, c1.xyw, c2.xyw));
-    vec3 g = vec3(c0.z, c1.z, c2.z) * inv; // z / w = g.x X + g.y Y + g.z
-    vec2 halfSize = vec2(rasterViewSize()) * 0.5;
-    vec2 scale = rasterFlipY() ? vec2(halfSize.x, -halfSize.y) : halfSize;
-    s.origin = vec2(rasterViewOrigin()) + halfSize;
-    s.z0 = g.z;
-    s.dzdx = g.x / scale.x;
-    s.dzdy = g.y / scale.y;
-}
-
 // The polygon's fan rasterized: by this invocation alone (`big` false) or in tiles by the 64
-// of a big group; c0..c2: the triangle's clip positions. `drew`: whether a triangle of it was
-// set up (false: culled); returns the atomics this invocation issued.
-uint rasterPolygonAs(RasterPolygon poly, vec4 c0, vec4 c1, vec4 c2, uint i0, uint i1, uint i2,
-                     uint id, bool doubleSided, bool masked, uint material, bool big, uint lane,
-                     out bool drew) {
+// of a big group. `drew`: whether a triangle of it was set up (false: culled); returns the
+// atomics this invocation issued.
+uint rasterPolygonAs(RasterPolygon poly, uint i0, uint i1, uint i2, uint id, bool doubleSided,
+                     bool masked, uint material, bool big, uint lane, out bool drew) {
     MaskTriangle mt;
     if (masked) mt = maskTriangle(i0, i1, i2, material);
     drew = false;
@@ -417,7 +396,6 @@ uint rasterPolygonAs(RasterPolygon poly, vec4 c0, vec4 c1, vec4 c2, uint i0, uin
     }
     RasterSetup plane;
     setupTriangle(poly.v[0], poly.v[best], poly.v[best + 1u], true, plane);
-    if (rasterExactClippedPlane()) homogeneousPlane(c0, c1, c2, plane);
     for (uint k = 1u; k + 1u < poly.n; ++k) {
         RasterSetup s;
         if (!setupTriangle(poly.v[0], poly.v[k], poly.v[k + 1u], doubleSided, s)) continue;
@@ -439,8 +417,8 @@ uint rasterListed(uint i0, uint i1, uint i2, uint id, bool doubleSided, bool mas
     bool outside;
     // Clipped: the polygon's fan (local arrays, rare); else the triangle itself.
     if (needsClipping(c0, c1, c2, outside))
-        return rasterPolygonAs(buildPolygon(i0, i1, i2), c0, c1, c2, i0, i1, i2, id, doubleSided,
-                               masked, material, big, lane, drew);
+        return rasterPolygonAs(buildPolygon(i0, i1, i2), i0, i1, i2, id, doubleSided, masked,
+                               material, big, lane, drew);
     return rasterTriangleAs(project(c0), project(c1), project(c2), i0, i1, i2, id, doubleSided,
                             masked, material, big, lane, drew);
 }

@@ -85,10 +85,6 @@ vec3 rasterRayDir(vec2 fc) {
 ivec2 rasterViewOrigin() { return gOrigin; }
 ivec2 rasterViewSize() { return gEdge; }
 bool rasterFlipY() { return false; }
-// A triangle cut by the near plane or by the guard band, 8,192 texels around a face of 16 to
-// 2,048: its polygon's vertices lie far outside the face, where a fan triangle's plane
-// evaluated inside the face loses its digits (measured: up to 5,154 ulps off the hardware's).
-bool rasterExactClippedPlane() { return true; }
 
 uint rasterSample(ivec2 px, uint k, vec2 fc, float z, uint id, bool masked, MaskTriangle mt) {
     uint slot = uint(px.y) * kMapWidth + uint(px.x);

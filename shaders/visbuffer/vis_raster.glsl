@@ -41,7 +41,6 @@ vec3 rasterRayDir(vec2 fc) { return unprojectPosition(fc, 1.0); }
 ivec2 rasterViewOrigin() { return ivec2(0); }
 ivec2 rasterViewSize() { return ivec2(frame.viewport.xy); }
 bool rasterFlipY() { return true; }
-bool rasterExactClippedPlane() { return false; } // the largest fan triangle's (docs/visbuffer.md)
 
 uint64_t packSample(float depth, uint id) {
     return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(~id);
