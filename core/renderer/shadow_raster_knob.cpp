@@ -11,8 +11,8 @@ const ChoiceKnob<ShadowRaster>& shadowRasterKnob() {
         "the face cull kept, small triangles an invocation each, large ones a workgroup each, "
         "the depth as a 32-bit atomic max per texel copied into the same map; needs "
         "--cull-geometry frustum or full and the atlas: not deferred's volumes nor multipass "
-        "forward; the depth within 4 ulps of the hardware's where both cover a texel, "
-        "docs/shadows.md)"};
+        "forward; the depth within 2^-10 relative of the hardware's where both show the same "
+        "surface, edge texels aside, docs/shadows.md)"};
     return k;
 }
 

@@ -5,7 +5,7 @@
 # meshlets culled (--cull-geometry frustum), --shadow-raster hardware then compute, then one
 # table (tests/bench/shadow_raster_table.py): the frame's median, the shadow work's (every
 # shadow_* pass summed: the cull, the clear, the rasterizer's two passes and the copy, or the
-XX
+# hardware's shadow_maps) and each pass's, and the rasterizer's counters.
 # Usage: shadow_raster.sh TRIPTYCH OUT_DIR [RES] [LIGHTS] [SHADOWED] [FRAMES] [WARMUP] [PIPELINES...]
 #   H200:     tests/bench/shadow_raster.sh build/triptych /tmp/shraster   (1920x1080, 1,024 lights,
 #             256 shadowed, 5 frames after 1, visbuffer and forwardplus)
