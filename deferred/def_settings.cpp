@@ -27,7 +27,7 @@ KnobSchema knobs() {
             la::slicesKnob().knob(),   la::tileGroupKnob().knob(), gbufferKnob().knob(),
             msaaShadingKnob().knob(), // pixel: Lauritzen 2010 edges; sample: supersampled deferred
             lightingKnob().knob(),     hdrKnob(),
-            cullGeometryKnob().knob()};
+            cullGeometryKnob().knob(), shadowRasterKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -43,6 +43,7 @@ Settings readSettings(const RenderSettings& s) {
     d.lighting = lightingKnob().in(s);
     d.hdr = readHdr(s, HdrStorage::Fp32); // --hdr auto: fp32
     d.cullGeometry = cullGeometryKnob().in(s);
+    d.shadowRaster = shadowRasterKnob().in(s);
     return d;
 }
 

@@ -6,6 +6,7 @@
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
+#include "core/renderer/shadow_raster_knob.h"
 
 namespace tp::def {
 
@@ -24,6 +25,7 @@ struct Settings {
     Lighting lighting = Lighting::Tiled;
     Hdr hdr = Hdr::Fp32;
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the G-buffer pass
+    ShadowRaster shadowRaster = ShadowRaster::Hardware; // --shadow-raster: the atlas's faces
 };
 
 KnobSchema knobs();

@@ -30,7 +30,8 @@ class DeferredRenderer final : public Renderer {
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
                     def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin),
                     def_.manyViews),
-          volumes_(info.ctx, info.scene, def_.cullGeometry), blended_(info.ctx, info.scene) {
+          volumes_(info.ctx, info.scene, def_.cullGeometry, def_.shadowRaster),
+          blended_(info.ctx, info.scene) {
         lighting_.setGroup(def_.tileGroup);
     }
 
@@ -87,7 +88,8 @@ class DeferredRenderer final : public Renderer {
                                                  t_.msaa() && !t_.blendedPerPixel(),
                                                  t_.blendedPerPixel()});
         if (!useVolumes()) { // tiled lighting samples every shadowed light's map: the atlas
-            shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, def_.cullGeometry);
+            shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, def_.cullGeometry,
+                             def_.shadowRaster);
             shadows_->plan(graph); // shadow_maps, with --shadows
         }
         if (tilePass)

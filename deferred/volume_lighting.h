@@ -38,9 +38,11 @@ bool drawsCone(const gpu::LightGpu& light);
 
 class VolumeLighting {
   public:
-    // cull: --cull-geometry, for the shadowed lights' maps (ShadowMaps).
-    VolumeLighting(GpuContext& ctx, SceneGpu& scene, CullGeometry cull)
-        : ctx_(ctx), scene_(scene), shadows_(ctx, scene, ShadowMaps::Residency::PerLight, cull) {}
+    // cull, raster: --cull-geometry and --shadow-raster, for the shadowed lights' maps
+    // (ShadowMaps: compute is refused for one light's map).
+    VolumeLighting(GpuContext& ctx, SceneGpu& scene, CullGeometry cull, ShadowRaster raster)
+        : ctx_(ctx), scene_(scene),
+          shadows_(ctx, scene, ShadowMaps::Residency::PerLight, cull, raster) {}
     ~VolumeLighting();
     void plan(FrameGraph& graph, DeferredTargets& t);
     void prepare(FrameGraph& graph);

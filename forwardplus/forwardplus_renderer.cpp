@@ -124,7 +124,8 @@ class ForwardPlusRenderer final : public Renderer {
                                centreBounds});
 
         // shadow_maps, if any (its faces culled with --cull-geometry)
-        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, fp_.cullGeometry);
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, fp_.cullGeometry,
+                         fp_.shadowRaster);
         shadows_->plan(graph);
         shading_.emplace(ctx_, scene_,
                          fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),

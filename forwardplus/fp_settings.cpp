@@ -56,7 +56,7 @@ KnobSchema knobs() {
             la::lightAssignKnob().knob(), la::slicesKnob().knob(),    la::lightLoopKnob().knob(),
             msaaShadingKnob().knob(),     listsKnob().knob(),         capacityKnob().knob(),
             spheresKnob().knob(),         cullByKnob().knob(),        hdrKnob(),
-            cullGeometryKnob().knob()};
+            cullGeometryKnob().knob(),    shadowRasterKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -73,6 +73,7 @@ Settings readSettings(const RenderSettings& s) {
     // --hdr auto: RGBA16F, Forward+'s storage before the knob existed (half the bytes).
     f.hdr = readHdr(s, HdrStorage::Fp16);
     f.cullGeometry = cullGeometryKnob().in(s);
+    f.shadowRaster = shadowRasterKnob().in(s);
     return f;
 }
 

@@ -8,6 +8,7 @@
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
+#include "core/renderer/shadow_raster_knob.h"
 #include "forwardplus/forwardplus_shared.h"
 
 namespace tp::fp {
@@ -32,6 +33,7 @@ struct Settings {
     CullBy cullBy = CullBy::Auto;
     HdrStorage hdr = HdrStorage::Fp16; // --hdr, resolved: auto is Forward+'s RGBA16F
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry
+    ShadowRaster shadowRaster = ShadowRaster::Hardware; // --shadow-raster: the atlas's faces
 };
 
 KnobSchema knobs();

@@ -46,7 +46,7 @@ const ChoiceKnob<BlendedLights>& blendedLightsKnob() {
 
 KnobSchema knobs() {
     return {msaaShadingKnob().knob(), accumKnob().knob(), blendedLightsKnob().knob(),
-            cullGeometryKnob().knob(), lightListsKnob().knob()};
+            cullGeometryKnob().knob(), lightListsKnob().knob(), shadowRasterKnob().knob()};
 }
 
 double blendedLightsPerFragment(BlendedLights mode, double directional, double lights) {
@@ -72,7 +72,8 @@ Settings readSettings(const RenderSettings& s) {
             accumKnob().in(s),
             blendedLightsKnob().in(s),
             cullGeometryKnob().in(s),
-            lightListsKnob().in(s)};
+            lightListsKnob().in(s),
+            shadowRasterKnob().in(s)};
 }
 
 } // namespace tp::mp

@@ -4,6 +4,7 @@
 #include "core/renderer/cull_geometry_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
+#include "core/renderer/shadow_raster_knob.h"
 
 namespace tp::mp {
 
@@ -18,6 +19,7 @@ struct Settings {
     BlendedLights blendedLights = BlendedLights::Under;
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: prepass, base, light passes
     LightLists lightLists = LightLists::Gpu; // who selects each light's opaque and masked draws
+    ShadowRaster shadowRaster = ShadowRaster::Hardware; // --shadow-raster (one light's map: hardware)
 };
 
 KnobSchema knobs();

@@ -76,7 +76,8 @@ class MultipassForwardRenderer final : public Renderer {
     void plan(FrameGraph& graph) override {
         createTargets(graph);
         // --shadows: one light's map ("shadow_map"), rendered by the light and blended passes.
-        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::PerLight, mp_.cullGeometry);
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::PerLight, mp_.cullGeometry,
+                         mp_.shadowRaster);
         shadows_->plan(graph);
         // The last pass that shades resolves the per-sample target into hdr.
         // Many views: the passes every view may need, whether or not this one does.

@@ -1,6 +1,7 @@
 #pragma once
 // The visibility buffer's compute rasterizer (--vis-raster compute|hybrid; docs/visbuffer.md,
-// "The compute rasterizer"; shaders/visbuffer/vis_raster.glsl says what it does to a triangle).
+// "The compute rasterizer"; shaders/include/raster_triangle.glsl says what it does to a triangle,
+// shaders/visbuffer/vis_raster.glsl what is the visibility buffer's).
 //   vis_raster_clear  zeroes the samples (0: no geometry) and the list's counters.
 //   vis_raster        (compute) one invocation per triangle of the opaque draws and, in compute
 //                     mode, the masked ones (or of the meshlets meshlet_cull kept): a triangle

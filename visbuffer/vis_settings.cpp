@@ -81,7 +81,8 @@ KnobSchema knobs() {
             blendedCapacityKnob().knob(),
             derivativesKnob().knob(),
             cullGeometryKnob().knob(),
-            rasterKnob().knob()};
+            rasterKnob().knob(),
+            shadowRasterKnob().knob()};
 }
 
 Settings readSettings(const RenderSettings& s) {
@@ -99,6 +100,7 @@ Settings readSettings(const RenderSettings& s) {
     v.derivatives = derivativesKnob().in(s);
     v.cullGeometry = cullGeometryKnob().in(s);
     v.raster = rasterKnob().in(s);
+    v.shadowRaster = shadowRasterKnob().in(s);
     if (auto seen = s.capacities.find(kSeenFragments); seen != s.capacities.end())
         v.blendedSeen = seen->second;
     return v;

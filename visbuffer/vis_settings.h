@@ -9,6 +9,7 @@
 #include "core/renderer/hdr_knob.h"
 #include "core/renderer/knobs.h"
 #include "core/renderer/msaa_knob.h"
+#include "core/renderer/shadow_raster_knob.h"
 
 namespace tp::vis {
 
@@ -57,6 +58,7 @@ struct Settings {
     uint32_t blendedCapacityPercent = 0; // 0: the derived bound
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the visibility pass
     Raster raster = Raster::Hardware;               // --vis-raster
+    ShadowRaster shadowRaster = ShadowRaster::Hardware; // --shadow-raster: the atlas's faces
     // Many views: the blended fragments an earlier plan of this session overflowed with, times
     // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).
     uint64_t blendedSeen = 0;

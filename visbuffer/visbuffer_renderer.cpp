@@ -113,7 +113,8 @@ class VisbufferRenderer final : public Renderer {
                                          {lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
                                           vis_.sampling.perPixelUnderMsaa()});
         // The resolve samples every shadowed light's map: the atlas, rendered before it.
-        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, vis_.cullGeometry);
+        shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, vis_.cullGeometry,
+                         vis_.shadowRaster);
         shadows_->plan(graph); // shadow_maps, with --shadows
         lt_.shadows = &*shadows_;
         lighting_.plan(graph, surfaceSource(), lt_, false, blended_.sliceRows(), bounds);

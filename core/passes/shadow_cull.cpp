@@ -8,10 +8,22 @@
 #include "core/gpu/readback.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/renderer/renderer.h"
+#include "shadow/shadow_raster.h"
 
 namespace tp {
 namespace {
 constexpr VkDeviceSize kCommandBytes = TP_SC_COMMAND_WORDS * sizeof(uint32_t);
+
+// The rows padded to `capacity` with rows of no meshlets that start where the last real one
+// ends, so the table stays sorted by firstCommand (shadow_raster.comp bisects it).
+std::vector<gpu::ShadowCullRow> paddedRows(const std::vector<gpu::ShadowCullRow>& rows,
+                                           uint32_t capacity, uint64_t commands) {
+    std::vector<gpu::ShadowCullRow> padded = rows;
+    gpu::ShadowCullRow pad{};
+    pad.firstCommand = uint32_t(commands);
+    padded.resize(capacity, pad);
+    return padded;
+}
 } // namespace
 
 ShadowCull::ShadowCull(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {
@@ -43,6 +55,8 @@ bool ShadowCull::setRows(const std::vector<std::vector<const DrawItem*>>& faceDr
             r.firstCommand = commands;
             r.vertexOffset = d->vertexOffset;
             r.face = face;
+            r.material = d->material;
+            r.flags = d->alphaMode == AlphaMode::Mask ? TP_SR_FLAG_MASKED : 0u;
             rows_.push_back(r);
             rowMeshlets_.push_back(d->meshletCount);
             commands += d->meshletCount;
@@ -59,8 +73,8 @@ bool ShadowCull::setRows(const std::vector<std::vector<const DrawItem*>>& faceDr
         prepare(nullptr, owner_);
         return true;
     }
-    std::vector<gpu::ShadowCullRow> padded = rows_;
-    padded.resize(rowCapacity_); // rows of no meshlets: a count of 0, never drawn
+    // Rows of no meshlets: a count of 0, never drawn.
+    const std::vector<gpu::ShadowCullRow> padded = paddedRows(rows_, rowCapacity_, meshlets_);
     uploadBufferData(ctx_, table_, padded.data(), padded.size() * sizeof(gpu::ShadowCullRow));
     return true;
 }
@@ -110,8 +124,7 @@ void ShadowCull::allocate(const std::string& owner) {
 }
 
 void ShadowCull::prepare(FrameGraph* graph, const std::string& owner) {
-    std::vector<gpu::ShadowCullRow> padded = rows_;
-    padded.resize(rowCapacity_);
+    const std::vector<gpu::ShadowCullRow> padded = paddedRows(rows_, rowCapacity_, meshlets_);
     table_ =
         createBufferWithData(ctx_, padded.data(), padded.size() * sizeof(gpu::ShadowCullRow),
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,

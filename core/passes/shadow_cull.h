@@ -65,6 +65,16 @@ class ShadowCull {
     void recordDraw(VkCommandBuffer cmd, uint32_t row) const;
     uint32_t firstRowOf(uint32_t face) const { return rowFirst_.at(face); }
 
+    // What the compute rasterizer (shadow_raster.h) reads: the commands and counts (in a frame
+    // the graph's, declared by its pass as storage reads; outside, the own buffers, valid after
+    // prepare() and replaced when they grow), the rows' table and the command slots.
+    ResourceHandle commands() const { return commands_; }
+    ResourceHandle counts() const { return counts_; }
+    VkBuffer commandBuffer() const { return commandBuffer_; }
+    VkBuffer countBuffer() const { return countBuffer_; }
+    VkBuffer rowBuffer() const { return table_.buffer; }
+    uint32_t commandCapacity() const { return commandCapacity_; }
+
     // The statistics of the last render read back (in a frame: from the graph's buffer, after
     // the frames; outside: from its own). counters(): shadow_meshlets (of the rows: what an
     // unculled render draws; ShadowMaps counts their triangles), and once read

@@ -8,6 +8,8 @@
 #include "core/gpu/vk_check.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_cull.h"
+#include "core/passes/shadow_raster.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 namespace {
@@ -34,10 +36,12 @@ bool faceSees(const gpu::ShadowFace& f, glm::vec3 light, float range, const Aabb
 
 } // namespace
 
-ShadowMaps::ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency, CullGeometry cull)
-    : ctx_(ctx), scene_(scene), residency_(residency), cullMode_(cull) {}
+ShadowMaps::ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency, CullGeometry cull,
+                       ShadowRaster raster)
+    : ctx_(ctx), scene_(scene), residency_(residency), cullMode_(cull), rasterMode_(raster) {}
 
 ShadowMaps::~ShadowMaps() {
+    raster_.reset();
     cull_.reset();
     for (VkPipeline p : {opaque_, mask_})
         if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
@@ -92,7 +96,16 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
     const ShadowPlan& p = scene_.shadowPlan();
     const std::string lights = std::to_string(p.lights.size()) + " lights";
     kept_ = Image();
+    raster_.reset();
     cull_.reset();
+    const bool compute = rasterMode_ == ShadowRaster::Compute;
+    if (compute && residency_ == Residency::PerLight)
+        throw RendererError("--shadow-raster compute renders the atlas only; one light's map "
+                            "(deferred --deferred-lighting volumes, multipass forward) is drawn "
+                            "by the hardware: use --shadow-raster hardware");
+    if (compute && cullMode_ == CullGeometry::None)
+        throw RendererError("--shadow-raster compute rasterizes the meshlets the shadow faces' "
+                            "cull keeps: add --cull-geometry frustum (or full)");
     if (cullMode_ != CullGeometry::None) {
         cull_ = std::make_unique<ShadowCull>(ctx_, scene_);
         cullFaces(); // sizes its rows
@@ -101,16 +114,28 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
         else
             cull_->plan(graph); // "shadow_cull", before the passes that draw the faces
     }
+    if (compute) {
+        raster_ = std::make_unique<ShadowComputeRaster>(ctx_, scene_, *cull_);
+        raster_->size(p.atlasWidth, p.atlasHeight, faceTriangles_, listCapacity_);
+    }
     if (cached()) {
+        // Compute: written by a copy, never a depth attachment.
+        const VkImageUsageFlags target = compute ? VK_IMAGE_USAGE_TRANSFER_DST_BIT
+                                                 : VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
         kept_ = createImage(ctx_, {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight, 1, VK_SAMPLE_COUNT_1_BIT,
-                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
+                                   target | VK_IMAGE_USAGE_SAMPLED_BIT},
                             {graph.owner(), "shadow_maps (once)", "shadow_atlas",
                              "shadow maps of " + lights + ", all resident, rendered once and kept"});
         map_ = {};
+        if (raster_) raster_->allocate(graph.owner());
     } else if (residency_ == Residency::Atlas) {
         map_ = graph.createImage("shadow_atlas", {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight,
                                                   VK_SAMPLE_COUNT_1_BIT,
                                                   "shadow maps of " + lights + ", all resident"});
+        if (raster_) {
+            raster_->plan(graph, map_); // its passes, the last "shadow_maps"
+            return map_;
+        }
         std::vector<PassUse> uses = {{map_, Use::DepthAttachment}};
         if (cull_)
             for (const PassUse& u : cull_->drawUses()) uses.push_back(u);
@@ -132,6 +157,7 @@ SpecConstant ShadowMaps::specConstant() const {
 void ShadowMaps::prepare(FrameGraph& graph) {
     // Its pass is live whatever samples the map (it exports its statistics).
     if (cull_) cull_->prepare(cached() ? nullptr : &graph, graph.owner());
+    if (raster_) raster_->prepare(cached() ? nullptr : &graph);
     // Not enabled, or a per-frame atlas no live pass samples (the graph culled it): no set.
     if (!enabled() || (!cached() && !graph.isAllocated(map_))) return;
     set_ = createPassSet(ctx_, {{TP_BINDING_SHADOW_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -146,6 +172,11 @@ void ShadowMaps::prepare(FrameGraph& graph) {
                          cached() ? kept_.view : graph.image(map_).view,
                          VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
     layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, set_.layout);
+    if (raster_) { // no graphics pipelines: the faces are rasterized in compute
+        cullFaces();
+        if (cached()) renderCached();
+        return;
+    }
     GraphicsPipelineDesc d;
     d.layout = layout_;
     d.vertexShader = "shadow_vert";
@@ -291,6 +322,12 @@ void ShadowMaps::renderCached() {
     VK_CHECK(vkCreateQueryPool(ctx_.device, &qi, nullptr, &pool));
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         vkCmdResetQueryPool(cmd, pool, 0, 2);
+        if (raster_) {
+            vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool, 0);
+            renderCachedCompute(cmd);
+            vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, pool, 1);
+            return;
+        }
         depthBarrier(cmd, kept_.image, false, true); // the old maps are discarded
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool, 0);
         if (cull_) {
@@ -329,10 +366,24 @@ void ShadowMaps::renderCached() {
     keptRenderMs_ = double(ticks[1] - ticks[0]) * ctx_.caps.timestampPeriodNs * 1e-6;
     ++keptRenders_;
     if (cull_) cull_->collect(nullptr);
+    if (raster_) raster_->collect(nullptr);
+}
+
+// The kept atlas in compute: the cull (the last render's reads of its commands before its
+// writes), its writes before the rasterizer reads them, then the rasterizer's passes and the
+// copy (shadow_raster.h), which leave the atlas readable.
+void ShadowMaps::renderCachedCompute(VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    cull_->record(cmd);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    raster_->recordOwn(cmd, kept_.image);
 }
 
 void ShadowMaps::collect(FrameGraph& graph) {
     if (cull_ && !cached()) cull_->collect(&graph);
+    if (raster_ && !cached()) raster_->collect(&graph);
 }
 
 void ShadowMaps::endLight(PassContext& pc) { depthBarrier(pc.cmd, pc.image(map_).image, false); }
@@ -351,6 +402,8 @@ std::vector<std::pair<std::string, double>> ShadowMaps::counters() const {
         {"shadow_maps_cached", cached() ? 1.0 : 0.0}};
     if (cull_)
         for (const auto& kv : cull_->counters()) c.push_back(kv);
+    if (raster_)
+        for (const auto& kv : raster_->counters()) c.push_back(kv);
     if (cached()) {
         c.push_back({"shadow_maps_render_ms", keptRenderMs_});
         c.push_back({"shadow_maps_renders", double(keptRenders_)});

@@ -29,6 +29,12 @@
 // per-light passes for all their lights; inside the kept atlas's one-time render), and each
 // (face, draw) is drawn as an indirect count draw of its kept meshlets. The maps are the same
 // wherever a receiver the light reaches reads them, the images bit for bit.
+//
+// --shadow-raster compute (Atlas only; needs the cull): the faces' depth is rasterized by
+// compute shaders from the cull's kept meshlets into a buffer and copied into the same D32
+// atlas (core/passes/shadow_raster.h): "shadow_raster_clear", "shadow_raster",
+// "shadow_raster_big" and "shadow_maps" (the copy) in the frame, or inside the kept atlas's
+// one-time render. The depth is within a few ulps of the hardware's (docs/shadows.md).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -42,12 +48,14 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/renderer/cull_geometry_knob.h"
+#include "core/renderer/shadow_raster_knob.h"
 #include "include/shadows.h"
 
 namespace tp {
 
 class GpuContext;
 class SceneGpu;
+class ShadowComputeRaster;
 class ShadowCull;
 struct DrawItem;
 
@@ -56,9 +64,10 @@ class ShadowMaps {
     enum class Residency { Atlas, PerLight };
 
     // cull: the pipeline's --cull-geometry (frustum and full cull the faces' meshlets alike:
-    // no occlusion for the maps).
+    // no occlusion for the maps); raster: its --shadow-raster (compute: plan() throws
+    // RendererError, one line, for the PerLight residency or without the cull).
     ShadowMaps(GpuContext& ctx, SceneGpu& scene, Residency residency,
-               CullGeometry cull = CullGeometry::None);
+               CullGeometry cull = CullGeometry::None, ShadowRaster raster = ShadowRaster::Hardware);
     ~ShadowMaps();
     ShadowMaps(const ShadowMaps&) = delete;
     ShadowMaps& operator=(const ShadowMaps&) = delete;
@@ -103,6 +112,10 @@ class ShadowMaps {
     void endLight(PassContext& pc);
     bool shadowed(uint32_t light) const;
 
+    // Tests: the compute rasterizer's list of large triangles holds `n` (0: its default), so
+    // that its overflow can be seen. Before plan().
+    void setRasterListCapacity(uint32_t n) { listCapacity_ = n; }
+
     // Counters for a renderer's stats: shadowed lights, faces, map bytes, the draws of one
     // render of every face (shadow_face_draws), whether cached and its one-time render.
     std::vector<std::pair<std::string, double>> counters() const;
@@ -110,6 +123,7 @@ class ShadowMaps {
   private:
     void recordAtlas(PassContext& pc);
     void renderCached();
+    void renderCachedCompute(VkCommandBuffer cmd);
     std::vector<gpu::LightGpu> shadowedLights() const; // world space, as rendered
     void recordFaces(VkCommandBuffer cmd, uint32_t firstFace, uint32_t faceCount, bool local);
     // faceDraws_ from the plan and the lights as they are now; false when culled in the frame
@@ -121,7 +135,10 @@ class ShadowMaps {
     SceneGpu& scene_;
     Residency residency_;
     CullGeometry cullMode_;
+    ShadowRaster rasterMode_;
+    uint32_t listCapacity_ = 0;
     std::unique_ptr<ShadowCull> cull_; // with --cull-geometry frustum|full and shadows
+    std::unique_ptr<ShadowComputeRaster> raster_; // with --shadow-raster compute
     ResourceHandle map_;
     FrameGraph* graph_ = nullptr;
     Image kept_;                              // the cached atlas

@@ -30,16 +30,17 @@ namespace tp::gpu {
 
 // One (face, draw) pair the CPU's per-draw test kept (ShadowMaps::cullFaces): its meshlets are
 // culled against the face. A row of meshletCount 0 (padding to the planned capacity) writes a
-// count of 0 and is never drawn.
+// count of 0 and is never drawn; its firstCommand is the end of the last real row's, so the
+// rows stay sorted by firstCommand (the compute rasterizer finds a command's row by bisection).
 TP_STRUCT(ShadowCullRow) {
     uint firstMeshlet; // the draw's meshlets in the scene's MeshletGpu[]
     uint meshletCount;
     uint firstCommand; // its range of commands (meshletCount long)
     int vertexOffset;  // DrawItem::vertexOffset, copied into each command
     uint face;         // in ShadowFace[]
+    uint material;     // MaterialGpu index (the compute rasterizer's alpha test)
+    uint flags;        // TP_SR_FLAG_* (shadow/shadow_raster.h): masked
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 
 // Per row and render: meshlets kept, culled by the face's frustum, culled by the light's range

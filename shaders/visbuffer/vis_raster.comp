@@ -86,32 +86,19 @@ void listTriangle(uint i0, uint i1, uint i2, uint id) {
     list[at + 3u] = id;
 }
 
-// One triangle: TP_VR_COUNT_SMALL, _BIG or _CULLED; `atomics`: the 64-bit atomics it issued.
-// Only an unclipped triangle within TP_VR_SMALL_PIXELS each way is rasterized here; one the
-// near plane or the guard band cuts is listed (compute: vis_raster_big clips it; hybrid: the
-// hardware), as is a larger one.
+// One triangle: TP_VR_COUNT_SMALL, _BIG or _CULLED (include/raster_triangle.glsl's triage);
+// `atomics`: the 64-bit atomics it issued. Only an unclipped triangle within
+// TP_VR_SMALL_PIXELS each way is rasterized here; one the near plane or the guard band cuts is
+// listed (compute: vis_raster_big clips it; hybrid: the hardware), as is a larger one.
 uint triangleOutcome(uint i0, uint i1, uint i2, uint id, out bool clipped, out uint atomics) {
     atomics = 0u;
-    vec4 c0 = clipPosition(i0), c1 = clipPosition(i1), c2 = clipPosition(i2);
-    bool outside;
-    clipped = needsClipping(c0, c1, c2, outside);
-    if (outside) return TP_VR_COUNT_CULLED;
-    RasterRow row = rasterRows[(id >> kTriangleBits) - 1u];
-    bool doubleSided = (row.flags & TP_VR_FLAG_DOUBLE_SIDED) != 0u;
-    if (clipped) {
-        if (!clippedFacesViewer(i0, i1, i2, doubleSided)) return TP_VR_COUNT_CULLED;
-        listTriangle(i0, i1, i2, id);
-        return TP_VR_COUNT_BIG;
-    }
-    RasterVertex v0 = project(c0), v1 = project(c1), v2 = project(c2);
-    ivec2 first, last;
-    pixelBounds(min(min(v0.p, v1.p), v2.p), max(max(v0.p, v1.p), v2.p), first, last);
-    if (any(greaterThan(first, last))) return TP_VR_COUNT_CULLED;
-    if (any(greaterThan(last - first, ivec2(TP_VR_SMALL_PIXELS - 1)))) {
-        // Large: listed unless its snapped area culls it (zero, or a single-sided back face).
-        int64_t area = int64_t(v1.p.x - v0.p.x) * int64_t(v2.p.y - v0.p.y) -
-                       int64_t(v2.p.x - v0.p.x) * int64_t(v1.p.y - v0.p.y);
-        if (area == 0l || (area > 0l && !doubleSided)) return TP_VR_COUNT_CULLED;
+    bool doubleSided = (rowOf(id).flags & TP_VR_FLAG_DOUBLE_SIDED) != 0u;
+    RasterVertex v0, v1, v2;
+    uint triage = rasterTriage(clipPosition(i0), clipPosition(i1), clipPosition(i2), doubleSided,
+                               clipped, v0, v1, v2);
+    if (triage == TP_RT_CULLED) return TP_VR_COUNT_CULLED;
+    if (triage == TP_RT_LIST) {
+        if (clipped && !clippedFacesViewer(i0, i1, i2, doubleSided)) return TP_VR_COUNT_CULLED;
         listTriangle(i0, i1, i2, id);
         return TP_VR_COUNT_BIG;
     }

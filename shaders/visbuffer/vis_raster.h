@@ -4,26 +4,17 @@
 #ifndef TP_VIS_RASTER_H
 #define TP_VIS_RASTER_H
 #include "include/glsl_cpp.h"
+#include "include/raster_triangle.h"
 
 // Triangles per chunk: one workgroup of vis_raster.comp, one invocation per triangle. A chunk
 // lies in one draw (or, culled, in one meshlet of at most 124 triangles).
 #define TP_VR_GROUP 128
-// Invocations of one listed (large) triangle's workgroup in vis_raster_big.comp.
-#define TP_VR_BIG_GROUP 64 // = 8 x 8: one pixel of each tile per invocation
-// A triangle whose pixel bounding box is wider or taller than this is not rasterized by its
-// own invocation: it is listed for vis_raster_big (compute) or the hardware (hybrid). The
-// invocations of a subgroup walk as many pixels as the largest box among them (8 lanes on
-// lavapipe, 32 on NVIDIA): 8 keeps that at 64; measured on lavapipe, 16 made vis_raster 40 ms
-// of a 96x64 courtyard-small frame, most of it lanes waiting for the largest box.
-#define TP_VR_SMALL_PIXELS 8
-// Vertices are snapped to this many fractional bits of a pixel before the edge functions,
-// as VkPhysicalDeviceLimits::subPixelPrecisionBits says the device does (8 on lavapipe and
-// NVIDIA); the specialization constant takes the device's value.
-#define TP_VR_SUBPIXEL_BITS 8
-// The guard band: polygons are clipped to [-G, size + G] pixels in x and y (besides the near
-// plane) so every snapped coordinate stays below 2^23 fixed-point units and every edge
-// function product below 2^47 (int64).
-#define TP_VR_GUARD_PIXELS 8192.0f
+// The triangle's constants are the shared rasterizer's (include/raster_triangle.h: the large
+// triangles' group, the small triangles' size, the subpixel bits, the guard band).
+#define TP_VR_BIG_GROUP TP_RT_BIG_GROUP
+#define TP_VR_SMALL_PIXELS TP_RT_SMALL_PIXELS
+#define TP_VR_SUBPIXEL_BITS TP_RT_SUBPIXEL_BITS
+#define TP_VR_GUARD_PIXELS TP_RT_GUARD_PIXELS
 
 // ---- set 1 of vis_raster and vis_raster_big ----
 #define TP_VR_BINDING_SAMPLES 0  // uint64_t[pixels * samples]: (depth bits << 32) | ~id

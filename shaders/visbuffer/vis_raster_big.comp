@@ -14,19 +14,10 @@ layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_LIST) buffer ListBlock
 
 void main() {
     uint atomics = 0u;
-    bool drew;
     for (uint t = gl_WorkGroupID.x; t < list[TP_VR_LIST_SLOTS]; t += gl_NumWorkGroups.x) {
         uint at = TP_VR_LIST_HEADER + 4u * t;
-        uint i0 = list[at], i1 = list[at + 1u], i2 = list[at + 2u], id = list[at + 3u];
-        vec4 c0 = clipPosition(i0), c1 = clipPosition(i1), c2 = clipPosition(i2);
-        bool outside;
-        // Clipped: the polygon's fan (local arrays, rare); else the triangle itself.
-        if (needsClipping(c0, c1, c2, outside))
-            atomics += rasterPolygon(buildPolygon(i0, i1, i2), i0, i1, i2, id, true,
-                                     gl_LocalInvocationIndex, drew);
-        else
-            atomics += rasterTriangle(project(c0), project(c1), project(c2), i0, i1, i2, id,
-                                      true, gl_LocalInvocationIndex, drew);
+        atomics += rasterListedTriangle(list[at], list[at + 1u], list[at + 2u], list[at + 3u],
+                                        gl_LocalInvocationIndex);
     }
     if (atomics != 0u) atomicAdd(list[TP_VR_ATOMICS_BIG], atomics); // the work counts
 }

@@ -12,9 +12,10 @@ COUNTERS = ["meshlets_submitted_early", "meshlets_submitted_late", "meshlets_cul
             "meshlets_culled_cone", "meshlets_culled_occlusion", "triangles_submitted", "triangles"]
 
 
-def table(out, passes, counters, name):
+def table(out, passes, counters, name, total=None):
     """One row per run folder under `out` with a render.json: the frame, the median GPU time of
-    each of `passes` it has, and each of `counters` it has, labelled by name(counter)."""
+    each of `passes` it has (with `total`, a label: their sum first), and each of `counters` it
+    has, labelled by name(counter)."""
     rows = []
     for d in sorted(pathlib.Path(out).iterdir()):
         f = d / "render.json"
@@ -26,6 +27,8 @@ def table(out, passes, counters, name):
         c = run["counters"]
         frame = t.get("frame", sum(t.values()))
         times = " ".join(f"{p} {t[p]:.3f}" for p in passes if p in t)
+        if total:
+            times = f"{total} {sum(t[p] for p in passes if p in t):.3f} : {times}"
         counts = " ".join(f"{name(k)}={c[k]:.4g}" for k in counters if k in c)
         rows.append(f"{d.name:40} frame {frame:9.3f} | {times} | {counts} [{j['device']['name']}]")
     return "\n".join(rows)

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/gpu/vk_check.h"
+#include "core/passes/shadow_maps.h"
 #include "core/renderer/error_model.h"
 #include "core/image/tonemap.h"
 #include "core/image/metrics.h"
@@ -320,6 +321,30 @@ void expectVisbufferWithinBound(GpuContext& ctx, const Scene& scene, const RunRe
         << ref.hdr.rgba[w * 4 + 2] << ", allowance "
         << (bound.perPixel.radiance.r.size() > w ? bound.perPixel.radiance.r[w] : 0.0f)
         << ", depth " << ref.depth.r[w];
+}
+
+ShadowAtlasRun renderShadowAtlas(GpuContext& ctx, SceneGpu& scene, CullGeometry cull,
+                                 ShadowRaster raster, uint32_t listCapacity) {
+    FrameGraph graph(ctx, "shadow_atlas_test", 96, 54);
+    ShadowMaps maps(ctx, scene, ShadowMaps::Residency::Atlas, cull, raster);
+    maps.setRasterListCapacity(listCapacity);
+    const ResourceHandle atlas = maps.plan(graph);
+    // A pipeline's shading samples it (its set's descriptor needs the usage): a pass that
+    // declares so and writes a word (exported, so that the graph keeps it). The atlas is
+    // exported for the readback.
+    const ResourceHandle word = graph.createBuffer("word", 4, "keeps sample_atlas live");
+    std::vector<PassUse> uses = maps.sampledUses();
+    uses.push_back({word, Use::TransferDst});
+    graph.addPass("sample_atlas", uses, [word](PassContext& pc) {
+        vkCmdFillBuffer(pc.cmd, pc.buffer(word).buffer, 0, 4, 0);
+    });
+    graph.exportResource("word", word);
+    graph.exportResource("shadow_atlas", atlas);
+    graph.compile();
+    maps.prepare(graph);
+    recordAndSubmit(ctx, graph);
+    maps.collect(graph);
+    return {readbackDepth(ctx, graph.image(atlas)), maps.counters()};
 }
 
 } // namespace tp::test

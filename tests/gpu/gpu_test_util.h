@@ -7,7 +7,10 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/readback.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/renderer/cull_geometry_knob.h"
+#include "core/renderer/shadow_raster_knob.h"
 #include "core/renderer/error_model.h"
 #include "core/runner/frame_runner.h"
 #include "core/scene/scene.h"
@@ -60,6 +63,17 @@ void expectAgreeWithinSummationBound(const ImageRGBA& a, const ImageRGBA& b, uin
 
 // Records the compiled graph once and submits it `frames` times, waiting for each.
 void recordAndSubmit(GpuContext& ctx, FrameGraph& graph, uint32_t frames = 1);
+
+// The shadow atlas of the scene's plan rendered in a 96x54 frame (--shadow-cache off) by
+// ShadowMaps with `cull` and `raster` (listCapacity: its setRasterListCapacity), exported and
+// read back, with its counters after the frame.
+struct ShadowAtlasRun {
+    ImageR32 depth;
+    std::vector<std::pair<std::string, double>> counters;
+};
+ShadowAtlasRun renderShadowAtlas(GpuContext& ctx, SceneGpu& scene, CullGeometry cull,
+                                 ShadowRaster raster = ShadowRaster::Hardware,
+                                 uint32_t listCapacity = 0);
 
 // The built-in courtyard-small with `count` generated lights of `seed`.
 Scene courtyardSmallWithLights(uint32_t count, uint64_t seed);

@@ -100,8 +100,9 @@ TEST_P(MultipassLightDraws, GpuListsRenderTheCpuListsImageWithTheirCounters) {
     const bool onePass = c.knobs.count("blended-lights") && c.knobs.at("blended-lights") == "one-pass";
     EXPECT_EQ(gpu.stats.counter("blended_light_lists_cpu_builds", -1),
               c.blendedOnGpu() || onePass ? 0.0 : 1.0);
-    if (c.blendedOnGpu())
+    if (c.blendedOnGpu()) {
         EXPECT_GT(cpu.stats.counter("blended_light_draws"), 0.0) << "no blended light: weak";
+    }
     EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba))
         << c.name << ": colour differs in " << differingPixels(gpu.hdr, cpu.hdr) << " pixels";
     EXPECT_TRUE(sameBits(gpu.depth.r, cpu.depth.r)) << c.name << ": depth differs";

@@ -54,35 +54,6 @@ void expectShadowCountersAddUp(const std::vector<std::pair<std::string, double>>
     EXPECT_LT(trianglesSubmitted, triangles) << what;
 }
 
-struct CulledAtlas {
-    ImageR32 depth;
-    std::vector<std::pair<std::string, double>> counters;
-};
-
-// The atlas of the scene's plan rendered in a frame (--shadow-cache off), exported and read
-// back.
-CulledAtlas renderShadowAtlas(GpuContext& ctx, SceneGpu& scene, CullGeometry cull) {
-    FrameGraph graph(ctx, "shadow_cull_test", 96, 54);
-    ShadowMaps maps(ctx, scene, ShadowMaps::Residency::Atlas, cull);
-    const ResourceHandle atlas = maps.plan(graph);
-    // A pipeline's shading samples it (its set's descriptor needs the usage): a pass that
-    // declares so and writes a word (exported, so that the graph keeps it). The atlas is
-    // exported for the readback.
-    const ResourceHandle word = graph.createBuffer("word", 4, "keeps sample_atlas live");
-    std::vector<PassUse> uses = maps.sampledUses();
-    uses.push_back({word, Use::TransferDst});
-    graph.addPass("sample_atlas", uses, [word](PassContext& pc) {
-        vkCmdFillBuffer(pc.cmd, pc.buffer(word).buffer, 0, 4, 0);
-    });
-    graph.exportResource("word", word);
-    graph.exportResource("shadow_atlas", atlas);
-    graph.compile();
-    maps.prepare(graph);
-    recordAndSubmit(ctx, graph);
-    maps.collect(graph);
-    return {readbackDepth(ctx, graph.image(atlas)), maps.counters()};
-}
-
 TEST(ShadowCull, AtlasTheSameWhereverTheLightReaches) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -96,8 +67,8 @@ TEST(ShadowCull, AtlasTheSameWhereverTheLightReaches) {
     const ShadowPlan plan = gpu.shadowPlan();
     ASSERT_EQ(plan.lights.size(), kShadowedLights);
 
-    const CulledAtlas none = renderShadowAtlas(*ctx, gpu, CullGeometry::None);
-    const CulledAtlas culled = renderShadowAtlas(*ctx, gpu, CullGeometry::Frustum);
+    const ShadowAtlasRun none = renderShadowAtlas(*ctx, gpu, CullGeometry::None);
+    const ShadowAtlasRun culled = renderShadowAtlas(*ctx, gpu, CullGeometry::Frustum);
     expectNoValidationMessages(*ctx);
     ASSERT_EQ(none.depth.r.size(), culled.depth.r.size());
     expectShadowCountersAddUp(culled.counters, "atlas, 16 shadowed lights");

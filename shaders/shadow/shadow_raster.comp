@@ -1,0 +1,87 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The shadow maps' compute rasterizer's first pass (pass "shadow_raster", core/passes/
+// shadow_raster.h): one workgroup per command slot of shadow_cull (a meshlet of a (face, draw)
+// row, if the cull kept that many), one invocation per triangle of it. A triangle whose texel
+// bounds fit in TP_RT_SMALL_PIXELS each way is rasterized here by its own invocation; a larger
+// one, or one the near plane or the face's guard band cuts, is listed for shadow_raster_big.
+// A triangle the full list cannot take is counted (TP_SR_OVERFLOW) and its meshlet listed in the
+// overflow buffer, whose large triangles shadow_raster_big rasterizes again: none is dropped.
+#include "shadow/shadow_raster.glsl"
+
+layout(local_size_x = TP_SR_GROUP) in;
+
+layout(std430, set = TP_SET_PASS, binding = TP_SR_BINDING_ARGS) buffer ArgsBlock {
+    uint args[];
+};
+
+shared uint sCounts[TP_SR_COUNTERS];
+shared uint sAtomics, sOverflow;
+
+// Lists the triangle for shadow_raster_big; false when the list is full (its slots counted
+// all the same, so the overflow shows: the group lists its meshlet instead).
+bool listTriangle(uint i0, uint i1, uint i2, uint row) {
+    uint slot = atomicAdd(list[TP_SR_LIST_SLOTS], 1u);
+    uint capacity = (uint(list.length()) - TP_SR_LIST_HEADER) / 4u;
+    if (slot >= capacity) return false;
+    atomicMax(args[0], min(slot + 1u, 65535u));
+    uint at = TP_SR_LIST_HEADER + 4u * slot;
+    list[at] = i0;
+    list[at + 1u] = i1;
+    list[at + 2u] = i2;
+    list[at + 3u] = row;
+    return true;
+}
+
+// One triangle: TP_SR_COUNT_SMALL, _BIG or _CULLED; `atomics`: the atomics it issued here.
+uint triangleOutcome(uint i0, uint i1, uint i2, uint row, bool masked, uint material,
+                     out bool clipped, out bool overflow, out uint atomics) {
+    atomics = 0u;
+    overflow = false;
+    RasterVertex v0, v1, v2;
+    uint triage = rasterTriage(clipPosition(i0), clipPosition(i1), clipPosition(i2), true,
+                               clipped, v0, v1, v2);
+    if (triage == TP_RT_CULLED) return TP_SR_COUNT_CULLED;
+    if (triage == TP_RT_LIST) {
+        overflow = !listTriangle(i0, i1, i2, row);
+        return TP_SR_COUNT_BIG;
+    }
+    bool drew;
+    atomics = rasterTriangleAs(v0, v1, v2, i0, i1, i2, row, true, masked, material, false, 0u,
+                               drew);
+    return drew ? TP_SR_COUNT_SMALL : TP_SR_COUNT_CULLED;
+}
+
+void main() {
+    uint lane = gl_LocalInvocationIndex;
+    if (lane < TP_SR_COUNTERS) sCounts[lane] = 0u;
+    if (lane == 0u) {
+        sAtomics = 0u;
+        sOverflow = 0u;
+    }
+    barrier();
+    uint slot = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+    uint i0, i1, i2, r;
+    if (slotTriangle(slot, lane, i0, i1, i2, r)) {
+        ShadowCullRow row = rows[r];
+        bool masked = (row.flags & TP_SR_FLAG_MASKED) != 0u;
+        useFace(row.face, masked);
+        bool clipped, overflow;
+        uint atomics;
+        atomicAdd(sCounts[triangleOutcome(i0, i1, i2, r, masked, row.material, clipped,
+                                          overflow, atomics)], 1u);
+        if (clipped) atomicAdd(sCounts[TP_SR_COUNT_CLIPPED], 1u);
+        if (overflow) atomicAdd(sOverflow, 1u);
+        if (atomics != 0u) atomicAdd(sAtomics, atomics);
+    }
+    barrier();
+    if (lane < TP_SR_COUNTERS && sCounts[lane] != 0u) atomicAdd(list[lane], sCounts[lane]);
+    if (lane == 0u && sAtomics != 0u) atomicAdd(list[TP_SR_ATOMICS_SMALL], sAtomics);
+    if (lane == 0u && sOverflow != 0u) {
+        // The meshlet once, for shadow_raster_big's groups to rasterize its large triangles.
+        atomicAdd(list[TP_SR_OVERFLOW], sOverflow);
+        uint at = atomicAdd(list[TP_SR_OVERFLOW_MESHLETS], 1u);
+        overflowSlots[at] = slot;
+        atomicMax(args[0], min((at + 1u) * TP_SR_GROUP, 65535u)); // a group per triangle
+    }
+}
