@@ -8,6 +8,7 @@
 #include "core/gpu/readback.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/meshlet_cull.h"
+#include "core/passes/raster_triangle_constants.h"
 #include "core/renderer/renderer.h"
 #include "visbuffer/vis_raster.h"
 
@@ -134,11 +135,9 @@ void RasterPass::prepare(FrameGraph& graph) {
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Mask);
     spec.push_back({TP_SPEC_SAMPLES, samples_});
     spec.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
-    spec.push_back({TP_VR_SPEC_SUBPIXEL_BITS, ctx_.properties.limits.subPixelPrecisionBits});
     spec.push_back({TP_VR_SPEC_HYBRID, hybrid_ ? 1u : 0u});
-    // The depth plane as the device's rasterizer sets it up (vis_raster.h): llvmpipe from the
-    // float positions, a GPU from the snapped ones.
-    spec.push_back({TP_VR_SPEC_SNAPPED_PLANE, ctx_.isCpuDevice() ? 0u : 1u});
+    const std::vector<SpecConstant> triangle = rasterTriangleConstants(ctx_);
+    spec.insert(spec.end(), triangle.begin(), triangle.end());
     pipeline_ = createComputePipeline(ctx_, cull_ ? "vis_raster_meshlet_comp" : "vis_raster_comp",
                                       spec, layout_, &set_);
     if (hybrid_) return;

@@ -9,6 +9,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/readback.h"
 #include "core/gpuscene/scene_gpu.h"
+#include "core/passes/raster_triangle_constants.h"
 #include "core/passes/shadow_cull.h"
 #include "core/renderer/renderer.h"
 
@@ -157,11 +158,10 @@ void ShadowComputeRaster::prepare(FrameGraph* graph) {
 
 void ShadowComputeRaster::makePipelines() {
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Mask);
-    spec.push_back({TP_SR_SPEC_SUBPIXEL_BITS, ctx_.properties.limits.subPixelPrecisionBits});
     spec.push_back({TP_SR_SPEC_WIDTH, width_});
     spec.push_back({TP_SR_SPEC_LOCAL, 0u}); // the atlas's rects (one light's map: not yet)
-    // The depth plane as the device's rasterizer sets it up (include/raster_triangle.glsl).
-    spec.push_back({TP_SR_SPEC_SNAPPED_PLANE, ctx_.isCpuDevice() ? 0u : 1u});
+    const std::vector<SpecConstant> triangle = rasterTriangleConstants(ctx_);
+    spec.insert(spec.end(), triangle.begin(), triangle.end());
     layout_ = scene_.createPipelineLayout(set_.layout);
     pipeline_ = createComputePipeline(ctx_, "shadow_raster_comp", spec, layout_, &set_);
     bigLayout_ = scene_.createPipelineLayout(bigSet_.layout);

@@ -25,7 +25,7 @@
 //      texture sampled with the hardware's fine derivatives: the uv's differences across the
 //      pixel's 2x2 quad on the triangle's plane.
 //
-// The includer declares kSamples, kSubpixelBits and kSnappedPlane (constants), includes
+// The includer declares kSamples (a constant), includes
 // include/sample_locations.glsl and the scene bindings, then this file, then defines:
 //   vec4 clipPosition(uint index)    vertex `index`'s clip position (its vertex shader's ops)
 //   vec3 rasterRelative(uint index)  its position relative to the eye of the view (the origin
@@ -40,12 +40,15 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "include/raster_triangle.h"
 
+layout(constant_id = TP_RT_SPEC_SUBPIXEL_BITS) const uint kSubpixelBits = TP_RT_SUBPIXEL_BITS;
+layout(constant_id = TP_RT_SPEC_SNAPPED_PLANE) const uint kSnappedPlane = 0u;
+
 #define TP_RT_MAX_POLYGON 9 // 3 vertices + one per clip plane (near, 4 guard planes)
 
 // A point of the polygon on the framebuffer's fixed-point grid, with its depth.
 struct RasterVertex {
     ivec2 p; // framebuffer coordinates * 2^kSubpixelBits, y down
-    vec2 f;  // the same unsnapped (the depth plane's)
+    vec2 f;  // the depth plane's position: p itself (kSnappedPlane) or unsnapped
     float z; // z_clip / w_clip
 };
 

@@ -22,6 +22,14 @@
 // 2^47 (int64).
 #define TP_RT_GUARD_PIXELS 8192.0f
 
+// The specialization constants of the triangle itself (raster_triangle.glsl declares them; the
+// C++ side sets both from the device: core/passes/raster_triangle_constants.h). Ids clear of
+// both includers' own (the visibility buffer's 19-22, the shadow maps' 22-23).
+#define TP_RT_SPEC_SUBPIXEL_BITS 21 // the device's subPixelPrecisionBits
+// 1: the depth plane through the snapped vertices (a GPU's rasterizer: the H200 was 6,039 ulps
+// off with the unsnapped ones), 0: through the unsnapped ones (llvmpipe's setup)
+#define TP_RT_SPEC_SNAPPED_PLANE 30
+
 // What becomes of a triangle (rasterTriage); the values are the visibility buffer's counter
 // slots (TP_VR_COUNT_*).
 #define TP_RT_SMALL 0u  // rasterized by its own invocation

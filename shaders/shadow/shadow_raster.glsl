@@ -14,10 +14,8 @@
 #include "include/scene_bindings.glsl"
 
 const uint kSamples = 1u; // a map is single-sampled: the texel's centre
-layout(constant_id = TP_SR_SPEC_SUBPIXEL_BITS) const uint kSubpixelBits = TP_RT_SUBPIXEL_BITS;
 layout(constant_id = TP_SR_SPEC_WIDTH) const uint kMapWidth = 1u;
 layout(constant_id = TP_SR_SPEC_LOCAL) const uint kLocal = 0u;
-layout(constant_id = TP_SR_SPEC_SNAPPED_PLANE) const uint kSnappedPlane = 0u;
 #include "include/sample_locations.glsl"
 
 layout(std430, set = TP_SET_PASS, binding = TP_SR_BINDING_DEPTH) buffer DepthBlock {

@@ -41,10 +41,9 @@
 // ShadowCullRow.flags
 #define TP_SR_FLAG_MASKED 1u // alpha-tested per texel
 
-// ---- specialization constants of shadow_raster and shadow_raster_big ----
-#define TP_SR_SPEC_SUBPIXEL_BITS 21 // the device's subPixelPrecisionBits
+// ---- specialization constants of shadow_raster and shadow_raster_big (the triangle's own, 21
+// and 30, in include/raster_triangle.h) ----
 #define TP_SR_SPEC_WIDTH 22         // the map's width in texels (the depth buffer's row)
 #define TP_SR_SPEC_LOCAL 23         // 1: the faces' `local` rects (one light's map), 0: `atlas`
-#define TP_SR_SPEC_SNAPPED_PLANE 24 // 1: the depth plane through the snapped vertices (a GPU), 0: unsnapped (llvmpipe)
 
 #endif

@@ -15,9 +15,7 @@
 
 layout(constant_id = TP_SPEC_SAMPLES) const uint kSamples = 1u;
 layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
-layout(constant_id = TP_VR_SPEC_SUBPIXEL_BITS) const uint kSubpixelBits = TP_VR_SUBPIXEL_BITS;
 layout(constant_id = TP_VR_SPEC_HYBRID) const uint kHybrid = 0u;
-layout(constant_id = TP_VR_SPEC_SNAPPED_PLANE) const uint kSnappedPlane = 0u;
 #include "include/sample_locations.glsl"
 
 layout(std430, set = TP_SET_PASS, binding = TP_VR_BINDING_SAMPLES) buffer SampleBlock {

@@ -10,10 +10,9 @@
 // lies in one draw (or, culled, in one meshlet of at most 124 triangles).
 #define TP_VR_GROUP 128
 // The triangle's constants are the shared rasterizer's (include/raster_triangle.h: the large
-// triangles' group, the small triangles' size, the subpixel bits, the guard band).
+// triangles' group, the small triangles' size, the guard band; the subpixel bits' constant).
 #define TP_VR_BIG_GROUP TP_RT_BIG_GROUP
 #define TP_VR_SMALL_PIXELS TP_RT_SMALL_PIXELS
-#define TP_VR_SUBPIXEL_BITS TP_RT_SUBPIXEL_BITS
 #define TP_VR_GUARD_PIXELS TP_RT_GUARD_PIXELS
 
 // ---- set 1 of vis_raster and vis_raster_big ----
@@ -47,12 +46,9 @@
 #define TP_VR_FLAG_DOUBLE_SIDED 1u
 #define TP_VR_FLAG_MASKED 2u // alpha-tested per sample (compute mode)
 
-// ---- specialization constants (after the visbuffer's 19, 20) ----
-#define TP_VR_SPEC_SUBPIXEL_BITS 21
+// ---- specialization constants (after the visbuffer's 19, 20; the triangle's own, 21 and 30,
+// in include/raster_triangle.h) ----
 #define TP_VR_SPEC_HYBRID 22 // 1: listed triangles go to the hardware (draw args), 0: vis_raster_big
-// 1: the depth plane through the snapped vertices (a GPU's rasterizer: the H200 measured 6,039
-// ulps off with the unsnapped ones), 0: through the unsnapped ones (llvmpipe's setup)
-#define TP_VR_SPEC_SNAPPED_PLANE 23
 
 #ifndef TP_GLSL
 namespace tp::gpu {

@@ -1,0 +1,21 @@
+// The compute rasterizer's own specialization constants (include/raster_triangle.glsl), set
+// from the device for both of its users: the visibility buffer's (visbuffer/raster_pass.cpp)
+// and the shadow maps' (core/passes/shadow_raster.cpp).
+#pragma once
+
+#include <vector>
+
+#include "core/gpu/context.h"
+#include "core/gpu/pipelines.h"
+#include "include/raster_triangle.h"
+
+namespace tp {
+
+// The device's sub-pixel bits, and its depth plane: llvmpipe sets it up from the float
+// positions, a GPU from the snapped ones (measured on the H200).
+inline std::vector<SpecConstant> rasterTriangleConstants(const GpuContext& ctx) {
+    return {{TP_RT_SPEC_SUBPIXEL_BITS, ctx.properties.limits.subPixelPrecisionBits},
+            {TP_RT_SPEC_SNAPPED_PLANE, ctx.isCpuDevice() ? 0u : 1u}};
+}
+
+} // namespace tp
