@@ -8,10 +8,15 @@
 #include "core/renderer/msaa_knob.h"
 #include "core/renderer/shadow_raster_knob.h"
 
+namespace tp {
+class GpuContext;
+}
+
 namespace tp::def {
 
 enum class GBuffer { Compact, Wide };   // --gbuffer
 enum class Lighting { Tiled, Volumes }; // --deferred-lighting
+enum class Prepass { Auto, On, Off };   // --gbuffer-prepass
 using Hdr = HdrStorage;                 // --hdr (core/renderer/hdr_knob.h)
 
 struct Settings {
@@ -22,6 +27,7 @@ struct Settings {
     la::AssignSettings assign;
     la::TileGroup tileGroup = la::TileGroup::Auto; // --tile-group
     GBuffer gbuffer = GBuffer::Compact;
+    Prepass prepass = Prepass::Auto;
     Lighting lighting = Lighting::Tiled;
     Hdr hdr = Hdr::Fp32;
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the G-buffer pass
@@ -30,5 +36,8 @@ struct Settings {
 
 KnobSchema knobs();
 Settings readSettings(const RenderSettings& s);
+// --gbuffer-prepass resolved: auto is on for a GPU under MSAA, off at 1x and on a CPU device
+// (docs/deferred.md, "The depth prepass": where it measured faster).
+bool prepassOn(const GpuContext& ctx, const Settings& s);
 
 } // namespace tp::def

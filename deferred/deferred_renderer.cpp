@@ -78,7 +78,8 @@ class DeferredRenderer final : public Renderer {
         // The opaque and masked draws' meshlets, culled for the G-buffer pass; the blended
         // forward pass draws its meshes whole, back to front.
         gbuffer_.plan(graph, t_,
-                      passes::planOpaqueCull(cull_, ctx_, scene_, graph, def_.cullGeometry));
+                      passes::planOpaqueCull(cull_, ctx_, scene_, graph, def_.cullGeometry),
+                      def::prepassOn(ctx_, def_));
         // Blended depth bounds: the fragments of the blended pass at the rate it shades them
         // (per pixel or per sample under MSAA), before the transparent lists are culled against
         // them.
@@ -253,6 +254,8 @@ RendererStats DeferredRenderer::stats() const {
     const uint32_t samples = t_.layout.samples;
     s.counters.push_back({"gbuffer_bytes_per_sample", double(t_.layout.bytesPerSample())});
     s.counters.push_back({"gbuffer_bytes_per_pixel", double(t_.layout.bytesPerSample() * samples)});
+    s.counters.push_back({"gbuffer_prepass", // --gbuffer-prepass, resolved
+                          def::prepassOn(ctx_, def_) ? 1.0 : 0.0});
     s.counters.push_back({"hdr_storage_bits_per_channel", // --hdr, resolved
                           def_.hdr == def::Hdr::Fp16 ? 16.0 : 32.0});
     if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled

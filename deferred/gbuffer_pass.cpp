@@ -15,7 +15,8 @@ GBufferPass::~GBufferPass() {
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
 }
 
-void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull) {
+void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull,
+                       bool prepass) {
     t_ = &t;
     cull_ = cull;
     const auto samples = VkSampleCountFlagBits(t.layout.samples);
@@ -24,23 +25,40 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCul
     std::vector<PassUse> uses;
     for (ResourceHandle h : t.gbuffer)
         uses.push_back({h, Use::ColorAttachment});
-    if (t.msaa()) {
-        t.gbufferDepth = graph.createImage(
-            "gbuffer_depth_msaa", {t.layout.depth, 0, 0, samples, "per-sample depth (reverse-Z)"});
-        uses.push_back({t.gbufferDepth, Use::DepthAttachment});
-        uses.push_back({t.depth, Use::DepthResolve});
-    } else {
-        t.gbufferDepth = t.depth;
-        uses.push_back({t.depth, Use::DepthAttachment});
+    t.gbufferDepth = t.msaa() ? graph.createImage("gbuffer_depth_msaa",
+                                                  {t.layout.depth, 0, 0, samples,
+                                                   "per-sample depth (reverse-Z)"})
+                              : t.depth;
+    if (prepass) {
+        // The prepass resolves sample 0 into `depth` under MSAA; this pass only tests.
+        passes::DepthPrepassParams p{t.layout.samples, scene_.drawList(DrawFilter::Opaque),
+                                     scene_.drawList(DrawFilter::Mask)};
+        p.depthFormat = t.layout.depth;
+        p.cull = cull;
+        prepass_.emplace(ctx_, scene_, std::move(p));
+        prepass_->plan(graph, {t.gbufferDepth, t.msaa() ? t.depth : ResourceHandle{}});
+        uses.push_back({t.gbufferDepth, Use::DepthTest});
+        if (cull)
+            for (const PassUse& u : cull->drawUses()) uses.push_back(u);
+        graph.addPass("gbuffer", uses,
+                      [this](PassContext& pc) { record(pc, passes::CullPhase::Both); });
+        return;
     }
+    uses.push_back({t.gbufferDepth, Use::DepthAttachment});
+    if (t.msaa()) uses.push_back({t.depth, Use::DepthResolve});
     passes::planGeometryPass(
         graph, cull, "gbuffer", uses, t.gbufferDepth,
         [this](PassContext& pc, passes::CullPhase phase) { record(pc, phase); });
 }
 
 void GBufferPass::prepare() {
+    if (prepass_) prepass_->prepare();
     layout_ = scene_.createPipelineLayout();
     GraphicsPipelineDesc d;
+    if (prepass_) { // the prepass's depth, as Forward+'s shading tests it
+        d.depthCompare = VK_COMPARE_OP_EQUAL;
+        d.depthWrite = false;
+    }
     const bool perSample = t_->msaa() && t_->sampleRateGBuffer;
     const std::string emissive = t_->layout.emissive ? "_emissive_frag" : "_frag";
     d.sampleShading = perSample;
@@ -70,6 +88,7 @@ void GBufferPass::record(PassContext& pc, passes::CullPhase phase) {
     for (ResourceHandle h : t_->gbuffer)
         colors.push_back({h, {}, clear, {{0.0f, 0.0f, 0.0f, 0.0f}}});
     DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}, clear};
+    if (prepass_) depth = {t_->gbufferDepth, {}, false, true};
     beginRendering(pc, colors, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
     if (cull_) {

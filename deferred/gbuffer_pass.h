@@ -6,7 +6,14 @@
 // kept, with the same shaders: a culled meshlet has no fragment in front of what the G-buffer
 // keeps. With occlusion (full) the pass is "gbuffer" (last frame's visible meshlets), the
 // depth pyramid and the late cull, then "gbuffer_late" (the rest, loading the targets).
+// With a depth prepass (--gbuffer-prepass) the pass library's depth_prepass writes the depth
+// (culled as above, in its phases) and "gbuffer" tests EQUAL without writing it: one pass over
+// every kept meshlet, each sample's material written once instead of once per surface that
+// reaches it in draw order (docs/deferred.md, "The depth prepass").
+#include <optional>
+
 #include "core/gpu/frame_graph.h"
+#include "core/passes/depth_prepass.h"
 #include "deferred/deferred_targets.h"
 
 namespace tp {
@@ -22,8 +29,9 @@ class GBufferPass {
   public:
     GBufferPass(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
     ~GBufferPass();
-    // cull: the meshlets to draw, or null to draw the meshes whole.
-    void plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull = nullptr);
+    // cull: the meshlets to draw, or null to draw the meshes whole; prepass: depth first.
+    void plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull = nullptr,
+              bool prepass = false);
     void prepare();
 
   private:
@@ -31,7 +39,8 @@ class GBufferPass {
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DeferredTargets* t_ = nullptr;
-    const passes::MeshletCull* cull_ = nullptr;
+    passes::MeshletCull* cull_ = nullptr;
+    std::optional<passes::DepthPrepass> prepass_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
 };
