@@ -157,12 +157,68 @@ void buildLists(uvec2 tile) {
 }
 
 #ifndef TP_LISTS_ONLY
-// Round 0 shades this invocation's pixels of the tile that are not edges and lists the edges;
-// round 1 shades the listed edges, one pixel an invocation. An edge is lit per sample (or per
-// distinct surface), up to kSamples times a pixel's work: shaded in place, an invocation with
-// one edge among its pixels held its whole subgroup for that long (Lauritzen 2010 compacts
-// them the same way). The same shade of the same pixel either way: the same image.
-// One shadePixel call site: lavapipe runs both sides of a divergent branch.
+// Edges flattened (shadeEdges) at pixel rate where the pass composites no blended fragments:
+// measured on the H200 (1080p 4x, 1,024 lights), deferred's tiled lighting 0.998 -> 0.737 ms
+// and the visibility buffer's with --vis-blended forward 1.256 -> 0.977, but with its blended
+// fragments composited per edge pixel (--vis-blended compute) 1.66 -> 2.00 and at sample rate
+// 2.20 -> 4.88: the finish, one invocation a pixel, then runs a round at a time (docs/visbuffer.md).
+#ifdef TP_TL_COMPOSITES_BLENDED
+const bool kFlatEdges = false;
+#else
+const bool kFlatEdges = kSamples > 1u && !kEverySample;
+#endif
+
+// Under MSAA, after the rest: the tile's edge pixels, kSamples slots a pixel, one slot an
+// invocation. Slot k of a pixel lights its k-th surface (edgeItemSample: a sample, or at the
+// visibility buffer's pixel rate a distinct triangle; a slot past the pixel's surfaces idles),
+// then one invocation a pixel gathers each sample's radiance (edgeSampleItem) and finishes it
+// (finishEdge). Lit an invocation a pixel instead, a pixel of four surfaces held its
+// subgroup for four shades while most lanes had one or none (Lauritzen 2010 compacts edges
+// for the same reason; the H200's visibility buffer at 4x: docs/visbuffer.md). The same shade
+// of the same surface either way: the same image. A group (64 or 256) is a multiple of
+// kSamples (at most 8), so a pixel's slots are in one round.
+void shadeEdges(uvec2 tile) {
+    const uint groupSize = TP_GROUP * TP_GROUP, lane = gl_LocalInvocationIndex;
+    const uint slots = sEdges * kSamples; // uniform: after the barrier that ends the listing
+    for (uint first = 0u; first < slots; first += groupSize) {
+        const uint i = first + lane, e = i / kSamples, k = i % kSamples;
+        const bool listed = e < sEdges;
+        ivec2 p = ivec2(0);
+        vec3 c = vec3(0.0);
+        if (listed) {
+            const uint local = sEdgePixels[e];
+            p = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            const uint s = edgeItemSample(p, k);
+            if (s < kSamples) c = shadeEdgeSample(p, s);
+        }
+        sSlot[3u * lane] = c.x;
+        sSlot[3u * lane + 1u] = c.y;
+        sSlot[3u * lane + 2u] = c.z;
+        barrier();
+        // The round's pixels finished by its first invocations, one a pixel: adjacent lanes, so
+        // that the finish (the visibility buffer composites the pixel's blended fragments
+        // there) fills whole subgroups.
+        const uint f = first / kSamples + lane;
+        if (lane < groupSize / kSamples && f < sEdges) {
+            const uint local = sEdgePixels[f];
+            const ivec2 q = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            vec3 samples[8];
+            for (uint s = 0u; s < kSamples; ++s) {
+                const uint at = 3u * (lane * kSamples + edgeSampleItem(q, s));
+                samples[s] = vec3(sSlot[at], sSlot[at + 1u], sSlot[at + 2u]);
+            }
+            finishEdge(q, samples);
+        }
+        barrier(); // the slots are read before the next round writes them
+    }
+}
+
+// Round 0 shades the tile's pixels that are not edges and lists the edges, which are shaded
+// after the rest: flattened (shadeEdges) where the pass does not composite blended fragments,
+// else in round 1, one pixel an invocation (shadeEdgePixel). At --msaa-shading sample every
+// pixel with geometry is an edge: nothing to compact, shaded in place. The same shade of the
+// same pixel either way: the same image. One call site for the pixel: lavapipe runs both sides
+// of a divergent branch.
 void shadeTile(uvec2 tile) {
     uint pixelsPerInvocation = (kTileSize / TP_GROUP) * (kTileSize / TP_GROUP);
     // A later batch with no light in this tile adds nothing (sCount is uniform here), unless
@@ -173,7 +229,8 @@ void shadeTile(uvec2 tile) {
     uint shadedPixels = firstBatch() || sCount > 0u ? pixelsPerInvocation : 0u;
 #endif
     const uint groupSize = TP_GROUP * TP_GROUP;
-    for (uint round = 0u; round < (kSamples > 1u && !kEverySample ? 2u : 1u); ++round) {
+    const bool listEdges = kSamples > 1u && !kEverySample;
+    for (uint round = 0u; round < (listEdges && !kFlatEdges ? 2u : 1u); ++round) {
         // sEdges is uniform after the barrier that ends round 0.
         uint items = round == 0u ? shadedPixels : (sEdges + groupSize - 1u) / groupSize;
         for (uint k = 0u; k < items; ++k) {
@@ -183,14 +240,16 @@ void shadeTile(uvec2 tile) {
                 p = pixelOf(tile, k);
                 shaded = insideViewport(p);
                 edge = shaded && kSamples > 1u && isEdge(p);
+#ifdef TP_DEBUG
+                vec2 rm = debugRoughMetal(p);
+                if (shaded && firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
+#endif
                 if (edge) {
                     uint e = atomicAdd(sEdges, 1u);
-                    // Per sample (kEverySample) every pixel with geometry is an edge: nothing
-                    // to compact, shaded in place.
-                    if (!kEverySample) {
+                    if (listEdges) {
                         uvec2 local = uvec2(p) - tile * kTileSize;
                         sEdgePixels[e] = local.y * kTileSize + local.x;
-                        shaded = false; // in round 1
+                        shaded = false; // after the rest
                     }
                 }
             } else {
@@ -200,14 +259,13 @@ void shadeTile(uvec2 tile) {
                 p = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
             }
             if (!shaded) continue;
-            shadePixel(p, edge);
-#ifdef TP_DEBUG
-            vec2 rm = debugRoughMetal(p);
-            if (firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
-#endif
+            // kFlatEdges: no edge reaches here (folded away with the constant).
+            if (edge && !kFlatEdges) shadeEdgePixel(p);
+            else shadePixel(p);
         }
         barrier(); // round 0's list complete
     }
+    if (kFlatEdges) shadeEdges(tile);
 }
 #endif
 

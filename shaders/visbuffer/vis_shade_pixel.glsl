@@ -6,14 +6,80 @@
 // every sample of that triangle; at --msaa-shading sample, every sample at its own location.
 // TP_VIS_BLEND (--vis-blended compute): the pixel's blended fragments are composited over its
 // samples before they are averaged (vis_blend.glsl).
-// edge: isEdge(p), which the caller tested.
 #ifdef TP_VIS_BLEND
 #include "visbuffer/vis_blend.glsl"
 #endif
 
-// Samples [0, kSamples) of pixel p, each lit once per distinct triangle (pixel rate) or at
-// its own location (sample rate), into c.
-void shadeSamples(ivec2 p, inout vec3 c[8]) {
+// An edge's surfaces (tiled_lighting_main.glsl: shadeEdges). At --msaa-shading sample every
+// sample is one, lit at its own location. At pixel rate a surface is a distinct triangle,
+// lit at the centre at the depth of its first sample, and its radiance is every sample's that
+// holds it: surface k is the k-th sample whose id no earlier sample holds.
+uint edgeItemSample(ivec2 p, uint k) {
+    if (kEverySample) return k;
+    uint ids[8], n = 0u;
+    for (uint s = 0u; s < kSamples; ++s) {
+        ids[s] = fetchId(p, s);
+        bool seen = false;
+        for (uint t = 0u; t < s; ++t) seen = seen || ids[t] == ids[s];
+        if (!seen) {
+            if (n == k) return s;
+            ++n;
+        }
+    }
+    return kSamples; // the pixel has fewer surfaces
+}
+
+// The surface whose radiance sample s takes: how many distinct ids come before its id's first
+// sample.
+uint edgeSampleItem(ivec2 p, uint s) {
+    if (kEverySample) return s;
+    const uint id = fetchId(p, s);
+    uint ids[8], n = 0u;
+    for (uint t = 0u; t < s; ++t) {
+        ids[t] = fetchId(p, t);
+        if (ids[t] == id) return n;
+        bool seen = false;
+        for (uint u = 0u; u < t; ++u) seen = seen || ids[u] == ids[t];
+        if (!seen) ++n;
+    }
+    return n;
+}
+
+vec3 shadeEdgeSample(ivec2 p, uint s) {
+    uint id = fetchId(p, s);
+    return id != 0u ? shade(p, s, kEverySample ? sampleOffset(s) : vec2(0.5), fetchDepth(p, s)) : vec3(0.0);
+}
+
+// The samples' radiance c[0, kSamples), the blended fragments composited over them, written
+// (per sample) or averaged; a pixel whose samples all hold one value is written as it is (their
+// average could round).
+void finishPixel(ivec2 p, inout vec3 c[8], bool oneSurface) {
+#ifdef TP_VIS_BLEND
+    const uint head = blendHead(p);
+    if (head != 0u) compositeBlended(p, head, c);
+#else
+    const uint head = 0u;
+#endif
+    const bool oneValue = oneSurface && head == 0u;
+    vec3 sum = vec3(0.0);
+    for (uint s = 0u; s < kSamples; ++s) {
+#ifdef TP_HDR_MSAA
+        writeHdr(p, s, c[s]);
+#endif
+        sum += c[s];
+    }
+#ifndef TP_HDR_MSAA
+    writeHdr(p, 0u, oneValue ? c[0] : sum / float(kSamples));
+#endif
+}
+
+void finishEdge(ivec2 p, vec3 c[8]) { finishPixel(p, c, false); }
+
+// An edge shaded by one invocation (--vis-blended compute, and at sample rate): samples
+// [0, kSamples) each lit once per distinct triangle (pixel rate, reading the ids once) or at
+// its own location (sample rate).
+void shadeEdgePixel(ivec2 p) {
+    vec3 c[8];
     uint ids[8];
     for (uint s = 0u; s < kSamples; ++s) {
         uint id = fetchId(p, s);
@@ -26,37 +92,14 @@ void shadeSamples(ivec2 p, inout vec3 c[8]) {
         if (!reused)
             c[s] = id != 0u ? shade(p, s, kEverySample ? sampleOffset(s) : vec2(0.5), fetchDepth(p, s)) : vec3(0.0);
     }
+    finishPixel(p, c, false);
 }
 
-// One shade() call site: a device that runs both sides of a divergent branch (lavapipe's
-// SIMD lanes) would otherwise pay for a second inlined copy of the material and light loop
-// in every pixel (measured: 1280x720, 128 lights, --vis-blended compute, 3.44 s -> see
-// docs/visbuffer.md).
-void shadePixel(ivec2 p, bool edge) {
+// Pixel p, not an edge: one triangle, shaded once at the centre, for every sample.
+void shadePixel(ivec2 p) {
     vec3 c[8];
-    if (edge) {
-        shadeSamples(p, c);
-    } else { // one triangle: shaded once at the centre, for every sample
-        uint id = fetchId(p, 0u);
-        c[0] = id != 0u ? shade(p, 0u, vec2(0.5), fetchDepth(p, 0u)) : vec3(0.0);
-        for (uint s = 1u; s < kSamples; ++s) c[s] = c[0];
-    }
-#ifdef TP_VIS_BLEND
-    const uint head = blendHead(p);
-    if (head != 0u) compositeBlended(p, head, c);
-#else
-    const uint head = 0u;
-#endif
-    // Samples that all hold one value are written as it is (their average could round).
-    const bool oneValue = !edge && head == 0u;
-    vec3 sum = vec3(0.0);
-    for (uint s = 0u; s < kSamples; ++s) {
-#ifdef TP_HDR_MSAA
-        writeHdr(p, s, c[s]);
-#endif
-        sum += c[s];
-    }
-#ifndef TP_HDR_MSAA
-    writeHdr(p, 0u, oneValue ? c[0] : sum / float(kSamples));
-#endif
+    uint id = fetchId(p, 0u);
+    c[0] = id != 0u ? shade(p, 0u, vec2(0.5), fetchDepth(p, 0u)) : vec3(0.0);
+    for (uint s = 1u; s < kSamples; ++s) c[s] = c[0];
+    finishPixel(p, c, true);
 }
