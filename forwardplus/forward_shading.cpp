@@ -146,6 +146,11 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     d.specConstants.push_back({TP_FP_SPEC_MATERIALS_UBO, materialsUbo_ ? 1u : 0u});
     // The light count is fixed for a plan (a new view moves lights, never adds one).
     d.specConstants.push_back({TP_FP_SPEC_NO_LIGHTS, scene_.shadingLights().empty() ? 1u : 0u});
+    // fp_params' directional count and tile grid, the same values as constants.
+    const auto directional = la::classifyLights(scene_.shadingLights()).directional.size();
+    d.specConstants.push_back({TP_FP_SPEC_DIRECTIONAL, uint32_t(directional)});
+    d.specConstants.push_back({TP_FP_SPEC_TILES_X, config_.tilesX});
+    d.specConstants.push_back({TP_FP_SPEC_TILES_Y, config_.tilesY});
     d.specConstants.push_back(
         {TP_FP_SPEC_HDR16, t_.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 1u : 0u});
     if (config_.clustered) {

@@ -38,6 +38,7 @@ struct ShadingConfig {
     bool clustered = false;
     bool blendPass = false; // blended draws are drawn: forward_transparent runs
     bool subgroupLoop = false;
+    uint32_t tilesX = 1, tilesY = 1; // the tile grid (fp_params' tiles.xy), compiled into the shading
 };
 
 // hdr: the single-sample output; hdrMsaa/depthMsaa valid under MSAA only; depth: the

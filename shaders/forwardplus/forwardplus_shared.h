@@ -35,6 +35,11 @@ namespace tp::gpu {
 #define TP_FP_SPEC_CENTRE_BOUNDS 23 // culling: 1 = widen each tile's opaque range to its opaque fragments' centre distances (--msaa-shading pixel under MSAA)
 #define TP_FP_SPEC_MATERIALS_UBO 24 // shading: 1 = read the draw's material from TP_FP_BINDING_MATERIALS_UBO, 0 = from the scene's storage buffer
 #define TP_FP_SPEC_NO_LIGHTS 25 // shading: 1 = the plan has no light at all: the light loop and the tile list's loads are compiled out
+// shading: fp_params' directionalCount and tilesX, tilesY as constants (fixed for a plan): lavapipe
+// loads a storage buffer per lane even at a uniform address (docs/efficiency.md)
+#define TP_FP_SPEC_DIRECTIONAL 26
+#define TP_FP_SPEC_TILES_X 27
+#define TP_FP_SPEC_TILES_Y 28
 // Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
 #define TP_FP_UBO_LIGHTS 1024
 // Materials the uniform-buffer copy holds: 40 KiB of MaterialGpu (std140 and std430 agree: 80 bytes,

@@ -56,6 +56,11 @@ layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 layout(constant_id = TP_FP_SPEC_LAYOUT) const uint kLayout = TP_FP_LAYOUT_COMPACT;
 layout(constant_id = TP_FP_SPEC_NO_LIGHTS) const bool kNoLights = false;
+// fp_params' directionalCount and tile grid (the same values, fixed for a plan), read per
+// fragment: as constants they cost no storage-buffer load (forward_shading.cpp).
+layout(constant_id = TP_FP_SPEC_DIRECTIONAL) const uint kDirectionalCount = 0u;
+layout(constant_id = TP_FP_SPEC_TILES_X) const uint kTilesX = 1u;
+layout(constant_id = TP_FP_SPEC_TILES_Y) const uint kTilesY = 1u;
 
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) readonly buffer TileBlock {
     FpTileLists tiles[];
@@ -176,8 +181,8 @@ void main() {
         outColor = vec4(storable(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
         return;
     }
-    uint directionalCount = params.lights.x;
-    uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
+    uint directionalCount = kDirectionalCount;
+    uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, uvec2(kTilesX, kTilesY));
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
         sum += evalLightShadowed(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface);
