@@ -76,9 +76,30 @@ void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
         {"forwardplus", "", "fp_lights_ubo",
          lightsUbo_ ? "the lights as a uniform buffer (read by the shading passes)"
                     : "stand-in (the shading passes read the scene's light buffer)"});
+    createMaterialsUbo();
     set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE,
                                {{TP_FP_BINDING_PARAMS, params},
-                                {TP_FP_BINDING_LIGHTS_UBO, lightsUboBuffer_.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
+                                {TP_FP_BINDING_LIGHTS_UBO, lightsUboBuffer_.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                {TP_FP_BINDING_MATERIALS_UBO, materialsUboBuffer_.buffer,
+                                 VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
+}
+
+// The material table as a uniform buffer, read by the shading passes on a CPU device when it
+// fits, for the reason the lights' copy exists (lavapipe's storage-buffer loads branch per lane;
+// docs/efficiency.md, "The material floor on lavapipe"); the same bytes, padded with zeros to
+// the block's length. Otherwise a one-material stand-in, and the shaders read the scene's buffer.
+void ForwardShading::createMaterialsUbo() {
+    const std::vector<gpu::MaterialGpu>& materials = scene_.materialsGpu();
+    constexpr VkDeviceSize kUboBytes = TP_FP_UBO_MATERIALS * sizeof(gpu::MaterialGpu);
+    materialsUbo_ = ctx_.isCpuDevice() && materials.size() <= TP_FP_UBO_MATERIALS &&
+                    ctx_.properties.limits.maxUniformBufferRange >= kUboBytes;
+    std::vector<gpu::MaterialGpu> copy(materialsUbo_ ? TP_FP_UBO_MATERIALS : 1, gpu::MaterialGpu{});
+    if (materialsUbo_) std::copy(materials.begin(), materials.end(), copy.begin());
+    materialsUboBuffer_ = createBufferWithData(
+        ctx_, copy.data(), copy.size() * sizeof(gpu::MaterialGpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+        {"forwardplus", "", "fp_materials_ubo",
+         materialsUbo_ ? "the materials as a uniform buffer (read by the shading passes)"
+                       : "stand-in (the shading passes read the scene's material buffer)"});
 }
 
 // The directional lights first, in fp_params' order (ascending), then every light at its
@@ -122,6 +143,14 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
     d.specConstants.push_back({TP_FP_SPEC_LIGHTS_UBO, lightsUbo_ ? 1u : 0u});
+    d.specConstants.push_back({TP_FP_SPEC_MATERIALS_UBO, materialsUbo_ ? 1u : 0u});
+    // The light count is fixed for a plan (a new view moves lights, never adds one).
+    d.specConstants.push_back({TP_FP_SPEC_NO_LIGHTS, scene_.shadingLights().empty() ? 1u : 0u});
+    // fp_params' directional count and tile grid, the same values as constants.
+    const auto directional = la::classifyLights(scene_.shadingLights()).directional.size();
+    d.specConstants.push_back({TP_FP_SPEC_DIRECTIONAL, uint32_t(directional)});
+    d.specConstants.push_back({TP_FP_SPEC_TILES_X, config_.tilesX});
+    d.specConstants.push_back({TP_FP_SPEC_TILES_Y, config_.tilesY});
     d.specConstants.push_back(
         {TP_FP_SPEC_HDR16, t_.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 1u : 0u});
     if (config_.clustered) {

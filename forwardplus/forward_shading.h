@@ -38,6 +38,7 @@ struct ShadingConfig {
     bool clustered = false;
     bool blendPass = false; // blended draws are drawn: forward_transparent runs
     bool subgroupLoop = false;
+    uint32_t tilesX = 1, tilesY = 1; // the tile grid (fp_params' tiles.xy), compiled into the shading
 };
 
 // hdr: the single-sample output; hdrMsaa/depthMsaa valid under MSAA only; depth: the
@@ -69,6 +70,7 @@ class ForwardShading {
     std::vector<PassUse> uses(bool transparent) const;
     void createPassSet(FrameGraph& graph, VkBuffer params);
     std::vector<gpu::LightGpu> lightsCopy() const; // what the uniform buffer holds
+    void createMaterialsUbo();
     GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
     void createMaterialPipelines(AlphaMode mode);
     void record(PassContext& pc, bool transparent);
@@ -81,6 +83,10 @@ class ForwardShading {
     // shaders read it (TP_FP_SPEC_LIGHTS_UBO) or only bind it.
     Buffer lightsUboBuffer_;
     bool lightsUbo_ = false;
+    // The materials as a uniform buffer (TP_FP_BINDING_MATERIALS_UBO); materialsUbo_ says whether
+    // the shaders read it (TP_FP_SPEC_MATERIALS_UBO) or only bind it.
+    Buffer materialsUboBuffer_;
+    bool materialsUbo_ = false;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     // By AlphaMode, then by material: the pipeline with that material's texture indices
     // compiled in (material.glsl, TP_MATERIAL_SPEC_TEXTURES); materials with the same

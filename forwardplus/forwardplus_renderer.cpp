@@ -127,10 +127,11 @@ class ForwardPlusRenderer final : public Renderer {
         shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, fp_.cullGeometry,
                          fp_.shadowRaster);
         shadows_->plan(graph);
-        shading_.emplace(ctx_, scene_,
-                         fp::ShadingConfig{fp_.sampling, fp_.assign.tile, layout(),
-                                           fp_.assign.slices, r_.twoLists, clustered(), r_.blendPass,
-                                           r_.subgroupLoop});
+        fp::ShadingConfig shadingConfig{fp_.sampling, fp_.assign.tile, layout(), fp_.assign.slices,
+                                        r_.twoLists, clustered(), r_.blendPass, r_.subgroupLoop};
+        shadingConfig.tilesX = grid_.tilesX;
+        shadingConfig.tilesY = grid_.tilesY;
+        shading_.emplace(ctx_, scene_, shadingConfig);
         shading_->plan(graph, {hdr_, hdrMsaa_, depth_, depthMsaa_, tiles_, indices_, masks_,
                                hdrFormat_, &*shadows_, cull_ ? &*cull_ : nullptr});
         graph.exportResource("hdr", hdr_);

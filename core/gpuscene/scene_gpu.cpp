@@ -205,6 +205,7 @@ void SceneGpu::uploadMaterials() {
     materials_ = createBufferWithData(ctx_, mats.data(), mats.size() * sizeof(gpu::MaterialGpu),
                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                       {"scene", "", "materials", "material table"});
+    materialsGpu_ = std::move(mats);
 }
 
 void SceneGpu::setLights(const std::vector<Light>& lights) {

@@ -115,6 +115,8 @@ class SceneGpu {
     // that must agree with the shaders (culling bounds, light scissors) uses these.
     const gpu::FrameUniforms& shadingFrame() const { return shadingFrame_; }
     const std::vector<gpu::LightGpu>& shadingLights() const { return shadingLights_; }
+    // The material table as uploaded (at least one entry: a default when the scene has none).
+    const std::vector<gpu::MaterialGpu>& materialsGpu() const { return materialsGpu_; }
     // World -> camera-relative, in double, rounded to fp32 like the uploaded data (the box
     // rounded outward, so it still holds every relative vertex position of its mesh).
     glm::vec3 toShading(glm::vec3 world) const;
@@ -158,6 +160,7 @@ class SceneGpu {
 
     gpu::FrameUniforms frame_{}, shadingFrame_{};
     std::vector<gpu::LightGpu> lightsGpu_, shadingLights_;
+    std::vector<gpu::MaterialGpu> materialsGpu_;
     glm::dvec3 eye_{0.0};
     uint32_t lightCount_ = 0;
     bool hasSpot_ = false;

@@ -20,6 +20,7 @@ namespace tp::gpu {
 #define TP_FP_BINDING_SPHERES 7 // light_spheres (written), culling (read): buffer vec4[light]: view-space centre, padded range
 #define TP_FP_BINDING_LIGHTS_UBO 8 // shading only: the scene's lights again, as a uniform buffer (TP_FP_SPEC_LIGHTS_UBO)
 #define TP_FP_BINDING_CENTRE_BOUNDS 9 // culling only: the opaque fragments' centre distances (core/passes/blended_bounds.h, `opaque`; a stand-in unless TP_FP_SPEC_CENTRE_BOUNDS)
+#define TP_FP_BINDING_MATERIALS_UBO 10 // shading only: the scene's materials again, as a uniform buffer (TP_FP_SPEC_MATERIALS_UBO)
 
 // ---- specialization constants (ids after the shared ones) ----
 #define TP_FP_SPEC_TWO_LISTS 14 // 1: an opaque and a transparent list per tile (scene has blended materials)
@@ -32,8 +33,18 @@ namespace tp::gpu {
 #define TP_FP_SPEC_LIGHTS_UBO 21 // shading: 1 = read the lights from TP_FP_BINDING_LIGHTS_UBO, 0 = from the scene's storage buffer
 #define TP_FP_SPEC_HDR16 22 // shading: 1 = hdr is RGBA16F (--hdr fp16, auto): sums saturate at 65,504; 0 = RGBA32F
 #define TP_FP_SPEC_CENTRE_BOUNDS 23 // culling: 1 = widen each tile's opaque range to its opaque fragments' centre distances (--msaa-shading pixel under MSAA)
+#define TP_FP_SPEC_MATERIALS_UBO 24 // shading: 1 = read the draw's material from TP_FP_BINDING_MATERIALS_UBO, 0 = from the scene's storage buffer
+#define TP_FP_SPEC_NO_LIGHTS 25 // shading: 1 = the plan has no light at all: the light loop and the tile list's loads are compiled out
+// shading: fp_params' directionalCount and tilesX, tilesY as constants (fixed for a plan): lavapipe
+// loads a storage buffer per lane even at a uniform address (docs/efficiency.md)
+#define TP_FP_SPEC_DIRECTIONAL 26
+#define TP_FP_SPEC_TILES_X 27
+#define TP_FP_SPEC_TILES_Y 28
 // Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
 #define TP_FP_UBO_LIGHTS 1024
+// Materials the uniform-buffer copy holds: 40 KiB of MaterialGpu (std140 and std430 agree: 80 bytes,
+// no array or scalar member that std140 would pad).
+#define TP_FP_UBO_MATERIALS 512
 
 #define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted

@@ -11,6 +11,42 @@
 // One pipeline per material's texture indices (forwardplus/forward_shading.cpp).
 #define TP_MATERIAL_SPEC_TEXTURES 1
 #include "include/material.glsl"
+
+// The materials again, as a uniform buffer, where they fit (forward_shading.cpp: a CPU device
+// and at most TP_FP_UBO_MATERIALS materials), as the lights below. lavapipe (Mesa 22.3) loads
+// each component of a storage buffer in a loop over the 8 lanes with a branch per lane, so
+// reading the draw's 80-byte material cost about a quarter of the 0-light shading pass
+// (docs/efficiency.md, "The material floor on lavapipe"); from a uniform buffer at an index
+// that is the same for the whole draw it is one scalar load per component. Same bytes, same
+// material.
+layout(constant_id = TP_FP_SPEC_MATERIALS_UBO) const bool kMaterialsUbo = false;
+layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_MATERIALS_UBO) uniform MaterialUboBlock {
+    MaterialGpu uboMaterials[TP_FP_UBO_MATERIALS];
+};
+
+// Member by member, for the reason uboLight() gives.
+MaterialGpu fpMaterial(uint index) {
+    if (!kMaterialsUbo) return materials[index];
+    uint i = min(index, TP_FP_UBO_MATERIALS - 1u);
+    MaterialGpu m;
+    m.baseColorFactor = uboMaterials[i].baseColorFactor;
+    m.emissive = uboMaterials[i].emissive;
+    m.alphaCutoff = uboMaterials[i].alphaCutoff;
+    m.metallic = uboMaterials[i].metallic;
+    m.roughness = uboMaterials[i].roughness;
+    m.normalScale = uboMaterials[i].normalScale;
+    m.occlusionStrength = uboMaterials[i].occlusionStrength;
+    m.baseColorTexture = uboMaterials[i].baseColorTexture;
+    m.metallicRoughnessTexture = uboMaterials[i].metallicRoughnessTexture;
+    m.normalTexture = uboMaterials[i].normalTexture;
+    m.occlusionTexture = uboMaterials[i].occlusionTexture;
+    m.emissiveTexture = uboMaterials[i].emissiveTexture;
+    m.alphaMode = uboMaterials[i].alphaMode;
+    m.doubleSided = uboMaterials[i].doubleSided;
+    m.pad0 = 0u;
+    return m;
+}
+#define TP_MATERIAL_OF(index) fpMaterial(index)
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 #include "include/light_list_walk.glsl"
@@ -19,6 +55,12 @@
 layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 layout(constant_id = TP_FP_SPEC_TWO_LISTS) const bool kTwoLists = false;
 layout(constant_id = TP_FP_SPEC_LAYOUT) const uint kLayout = TP_FP_LAYOUT_COMPACT;
+layout(constant_id = TP_FP_SPEC_NO_LIGHTS) const bool kNoLights = false;
+// fp_params' directionalCount and tile grid (the same values, fixed for a plan), read per
+// fragment: as constants they cost no storage-buffer load (forward_shading.cpp).
+layout(constant_id = TP_FP_SPEC_DIRECTIONAL) const uint kDirectionalCount = 0u;
+layout(constant_id = TP_FP_SPEC_TILES_X) const uint kTilesX = 1u;
+layout(constant_id = TP_FP_SPEC_TILES_Y) const uint kTilesY = 1u;
 
 layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_TILES) readonly buffer TileBlock {
     FpTileLists tiles[];
@@ -133,8 +175,14 @@ void main() {
     MaterialSample ms = evalFragmentMaterial();
 
     vec3 sum = ambientAndEmissive(ms);
-    uint directionalCount = params.lights.x;
-    uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, params.tiles.xy);
+    // No light in the plan: nothing to add (lavapipe would still run the loop's body once with
+    // every lane masked off, and load the tile's list: ~40 % of the 0-light pass, measured).
+    if (kNoLights) {
+        outColor = vec4(storable(sum), kAlphaMode == TP_ALPHA_BLEND ? ms.alpha : 1.0);
+        return;
+    }
+    uint directionalCount = kDirectionalCount;
+    uint tileIndex = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, uvec2(kTilesX, kTilesY));
 #ifdef TP_FP_CLUSTERED
     for (uint i = 0u; i < directionalCount; ++i)
         sum += evalLightShadowed(kLightsUbo ? uboLight(i) : fpLight(data[i], 0u), ms.surface);

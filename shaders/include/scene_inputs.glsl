@@ -40,6 +40,11 @@ layout(location = TP_LOCATION_MATERIAL) flat in uint inMaterial;
 #else
 #define TP_DRAW_MATERIAL draw.materialIndex
 #endif
+// The material at an index: the scene's buffer, unless the shader reads a copy of it
+// (Forward+'s shading: a uniform buffer on a CPU device, forwardplus/shading.frag).
+#ifndef TP_MATERIAL_OF
+#define TP_MATERIAL_OF(index) materials[index]
+#endif
 layout(location = 1) TP_IN vec3 inNormal;
 layout(location = 2) TP_IN vec2 inUv;
 layout(location = 3) TP_IN vec4 inTangent;
@@ -51,7 +56,7 @@ layout(location = 4) TP_IN vec4 inColor;
 // pixel centre for a sample ((a/w)_s / (1/w)_centre), it restores (a/w)_s / (1/w)_s.
 #define TP_EVAL_MATERIAL_READ(READ)                                                                    \
     float k = 1.0 / READ(inOne);                                                                      \
-    return evalMaterial(materials[TP_DRAW_MATERIAL], READ(inPosition) * k, READ(inNormal) * k,       \
+    return evalMaterial(TP_MATERIAL_OF(TP_DRAW_MATERIAL), READ(inPosition) * k, READ(inNormal) * k,       \
                         READ(inUv) * k, READ(inTangent) * k, READ(inColor) * k, gl_FrontFacing)
 
 MaterialSample evalFragmentMaterial() { TP_EVAL_MATERIAL_READ(TP_INPUT); }
