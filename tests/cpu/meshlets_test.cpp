@@ -282,7 +282,9 @@ TEST(MeshletOcclusion, PyramidLevels) {
             offset += s.x * s.y;
         }
         EXPECT_EQ(gpu::pyramidLevelSize(w, h, levels - 1), glm::uvec2(1, 1)) << w << "x" << h;
-        if (levels > 1) EXPECT_NE(gpu::pyramidLevelSize(w, h, levels - 2), glm::uvec2(1, 1));
+        if (levels > 1) {
+            EXPECT_NE(gpu::pyramidLevelSize(w, h, levels - 2), glm::uvec2(1, 1));
+        }
     }
     EXPECT_EQ(gpu::pyramidLevels(1920, 1080), 11u); // 960 x 540 down to 1 x 1
 }
