@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -128,6 +130,24 @@ std::vector<BrdfLimits> limitsOf(const BrdfMaterial& m) {
     return out;
 }
 
+// limitsOf(m), computed once per material in this process: it is a pure function of the
+// three numbers and costs ~0.1 s of CPU (the grids above, 46 view angles), and every error
+// model asks for it, several times per image (each bound that walks the pixels, each pipeline
+// of a compare, each case of stress: 60 % of the CPU of the visibility buffer's bound tests).
+// The map only grows, and a reference into it stays valid (std::map never moves its nodes).
+const std::vector<BrdfLimits>& limitsOfCached(const BrdfMaterial& m) {
+    static std::mutex mutex;
+    static std::map<BrdfMaterial, std::vector<BrdfLimits>> cache;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        auto it = cache.find(m);
+        if (it != cache.end()) return it->second;
+    }
+    std::vector<BrdfLimits> limits = limitsOf(m); // outside the lock: threads compute in parallel
+    std::lock_guard<std::mutex> lock(mutex);
+    return cache.emplace(m, std::move(limits)).first->second;
+}
+
 // Gradient bound of one light's term at a point `d` from it (segment within `eps`), per
 // unit of light intensity times colour, with the BRDF limits `b` and the point `eyeDistance`
 // from the eye. Returns +Inf where the light may sit on the segment.
@@ -158,7 +178,7 @@ double snappedPositionPixels(uint32_t subPixelBits) {
 std::vector<BrdfLimits> brdfLimits(const Scene& scene) {
     std::vector<BrdfLimits> all(kViewBuckets);
     for (const BrdfMaterial& m : materialsOf(scene)) {
-        const std::vector<BrdfLimits> one = limitsOf(m);
+        const std::vector<BrdfLimits>& one = limitsOfCached(m);
         for (size_t b = 0; b < all.size(); ++b) {
             all[b].maxValue = std::max(all[b].maxValue, 1.25 * one[b].maxValue);
             all[b].lipschitz = std::max(all[b].lipschitz, 1.25 * one[b].lipschitz);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <cstdlib>
+#include <ctime>
 #include <filesystem>
 
 #include <unistd.h>
@@ -89,6 +91,21 @@ Scene makeFloorScene(const std::vector<Light>& lights) {
     return s;
 }
 
+namespace {
+// TP_TIME_RUNS=1: one line per run on stderr with the process's CPU seconds over it (every
+// thread: lavapipe's rasterizer threads and pipeline compiles included), to see which runs
+// make a test slow (docs/build.md, "Test time").
+void printRunCpu(const std::string& pipeline, const SceneGpu& scene, const RenderSettings& s,
+                 clock_t cpu) {
+    std::string knobs;
+    for (const auto& [name, value] : s.knobs)
+        knobs += " " + name + "=" + value;
+    std::fprintf(stderr, "[ run-cpu ] %6.2f s %s %ux%u %ux lights=%zu debug=%d%s\n",
+                 double(cpu) / CLOCKS_PER_SEC, pipeline.c_str(), s.width, s.height, s.msaa,
+                 scene.scene().lights.size(), int(s.debug), knobs.c_str());
+}
+} // namespace
+
 RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
                     const RenderSettings& settings, uint32_t frames) {
     Result<const RendererEntry*> entry = findRenderer(pipeline);
@@ -97,7 +114,9 @@ RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipelin
     options.warmupFrames = 0;
     options.timedFrames = frames;
     SceneFeatures features = analyzeScene(scene.scene(), settings.msaa);
+    const clock_t c0 = std::clock();
     Result<RunResult> run = runRenderer(ctx, scene, **entry, features, settings, options);
+    if (std::getenv("TP_TIME_RUNS")) printRunCpu(pipeline, scene, settings, std::clock() - c0);
     EXPECT_TRUE(run.ok()) << run.error();
     return run.ok() ? std::move(*run) : RunResult{};
 }
