@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/gpu/vk_check.h"
@@ -52,12 +53,17 @@ ShadowMaps::~ShadowMaps() {
 
 bool ShadowMaps::enabled() const { return !scene_.shadowPlan().empty(); }
 
+bool ShadowMaps::readsBuffer() const { return raster_ && !cached() && residency_ == Residency::Atlas; }
+
+ResourceHandle ShadowMaps::sampledAtlas() const { return readsBuffer() ? raster_->depth() : map_; }
+
 bool ShadowMaps::cached() const {
     return residency_ == Residency::Atlas && scene_.shadowSettings().cache;
 }
 
 std::vector<PassUse> ShadowMaps::sampledUses() const {
     if (!enabled() || cached()) return {};
+    if (readsBuffer()) return {{raster_->depth(), Use::StorageRead}};
     return {{map_, Use::Sampled}};
 }
 
@@ -128,6 +134,12 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
                              "shadow maps of " + lights + ", all resident, rendered once and kept"});
         map_ = {};
         if (raster_) raster_->allocate(graph.owner());
+    } else if (readsBuffer()) {
+        // The consumers read the rasterizer's depth buffer (shadow_sample.glsl:
+        // kShadowBuffer): no D32 atlas, no copy.
+        map_ = {};
+        raster_->plan(graph, {});
+        return map_;
     } else if (residency_ == Residency::Atlas) {
         map_ = graph.createImage("shadow_atlas", {VK_FORMAT_D32_SFLOAT, p.atlasWidth, p.atlasHeight,
                                                   VK_SAMPLE_COUNT_1_BIT,
@@ -150,6 +162,22 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
     return map_;
 }
 
+// A 1x1 D32 map in the read-only layout, for the image binding when the shaders read the buffer.
+VkImageView ShadowMaps::makeUnusedMap() {
+    unusedMap_ = createImage(ctx_, {VK_FORMAT_D32_SFLOAT, 1, 1, 1, VK_SAMPLE_COUNT_1_BIT,
+                                    VK_IMAGE_USAGE_SAMPLED_BIT},
+                             {graph_->owner(), "shadow_raster", "shadow_map_unused",
+                              "a 1x1 stand-in for the atlas (its texels are read from "
+                              "shadow_raster_depth)"});
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        imageBarrier(cmd, unusedMap_.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1});
+    });
+    return unusedMap_.view;
+}
+
 SpecConstant ShadowMaps::specConstant() const {
     return {TP_SPEC_SHADOW_LOCAL, residency_ == Residency::PerLight ? 1u : 0u};
 }
@@ -159,17 +187,24 @@ void ShadowMaps::prepare(FrameGraph& graph) {
     if (cull_) cull_->prepare(cached() ? nullptr : &graph, graph.owner());
     if (raster_) raster_->prepare(cached() ? nullptr : &graph);
     // Not enabled, or a per-frame atlas no live pass samples (the graph culled it): no set.
-    if (!enabled() || (!cached() && !graph.isAllocated(map_))) return;
+    const ResourceHandle sampled = readsBuffer() ? raster_->depth() : map_;
+    if (!enabled() || (!cached() && !graph.isAllocated(sampled))) return;
     set_ = createPassSet(ctx_, {{TP_BINDING_SHADOW_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                {TP_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
+                                {TP_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                {TP_BINDING_SHADOW_DEPTH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
     VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     si.magFilter = si.minFilter = VK_FILTER_NEAREST; // texelFetch only
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VK_CHECK(vkCreateSampler(ctx_.device, &si, nullptr, &sampler_));
     writeBufferDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_FACES, scene_.shadowFaces());
+    // The binding the shaders do not read is still written (with the faces, or a 1x1 map).
+    writeBufferDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_DEPTH,
+                          readsBuffer() ? graph.buffer(sampled).buffer : scene_.shadowFaces());
     writeImageDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_MAP,
                          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                         cached() ? kept_.view : graph.image(map_).view,
+                         cached()        ? kept_.view
+                         : readsBuffer() ? makeUnusedMap()
+                                         : graph.image(map_).view,
                          VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
     layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, set_.layout);
     if (raster_) { // no graphics pipelines: the faces are rasterized in compute
@@ -197,6 +232,8 @@ void ShadowMaps::apply(std::string& shader, std::vector<SpecConstant>& spec) con
     const size_t stage = shader.rfind('_');
     shader.insert(stage == std::string::npos ? shader.size() : stage, "_shadow");
     spec.push_back(specConstant());
+    spec.push_back({TP_SPEC_SHADOW_BUFFER, readsBuffer() ? 1u : 0u});
+    spec.push_back({TP_SPEC_SHADOW_ATLAS_WIDTH, std::max(1u, scene_.shadowPlan().atlasWidth)});
 }
 
 void ShadowMaps::bind(VkCommandBuffer cmd, VkPipelineLayout layout, VkPipelineBindPoint point) const {

@@ -80,6 +80,9 @@ class ShadowMaps {
     // cached). Remembers the plan's generation (stale()).
     ResourceHandle plan(FrameGraph& graph);
     ResourceHandle map() const { return map_; }
+    // What the consumers read the per-frame atlas from: map(), or with --shadow-raster compute
+    // the rasterizer's depth buffer (float bits, row-major; no D32 atlas then).
+    ResourceHandle sampledAtlas() const;
     bool cached() const;
     // Pipelines and the set (after graph.compile()).
     void prepare(FrameGraph& graph);
@@ -142,6 +145,11 @@ class ShadowMaps {
     ResourceHandle map_;
     FrameGraph* graph_ = nullptr;
     Image kept_;                              // the cached atlas
+    // readsBuffer(): a 1x1 map the set's image binding points at (the shaders read the buffer).
+    Image unusedMap_;
+    // The per-frame atlas rasterized in compute: the consumers read its depth buffer, no copy.
+    bool readsBuffer() const;
+    VkImageView makeUnusedMap();
     std::vector<gpu::LightGpu> culledLights_; // the shadowed lights faceDraws_ (and kept_) are for
     // Per face, the draws that may reach it: culled once per plan and again when a shadowed
     // light moves, not at every recording.

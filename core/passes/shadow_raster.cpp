@@ -91,7 +91,8 @@ void ShadowComputeRaster::plan(FrameGraph& graph, ResourceHandle map) {
                    {args_, Use::IndirectRead}},
                   [this](PassContext& pc) { recordBig(pc.cmd, pc.buffer(args_).buffer); });
     // Named as the hardware's pass: the map is made here, and the reports read its time.
-    graph.addPass("shadow_maps", {{depth_, Use::TransferSrc}, {map, Use::TransferDst}},
+    if (map.valid())
+        graph.addPass("shadow_maps", {{depth_, Use::TransferSrc}, {map, Use::TransferDst}},
                   [this, map](PassContext& pc) {
                       recordCopy(pc.cmd, pc.buffer(depth_).buffer, pc.image(map).image);
                   });

@@ -54,7 +54,9 @@ class ShadowComputeRaster {
     // Throws RendererError when the depth buffer is over the device's maxStorageBufferRange.
     void size(uint32_t width, uint32_t height, double rowTriangles, uint32_t listCapacity = 0);
     // In a frame: its buffers and passes, the last ("shadow_maps") copying into `map`.
+    // map invalid: no copy (the consumers read depth() through the shadow set).
     void plan(FrameGraph& graph, ResourceHandle map);
+    ResourceHandle depth() const { return depth_; } // in a frame: the atlas's texels
     // Outside the frames: buffers of its own (ledger owner `owner`, pass "shadow_maps (once)").
     void allocate(const std::string& owner);
     // The sets and pipelines (after graph.compile() when planned in a frame).

@@ -16,6 +16,17 @@
 layout(constant_id = TP_SPEC_SHADOW_LOCAL) const bool kShadowLocal = false;
 #include "include/shadow_faces.glsl"
 layout(set = TP_SET_SHADOW, binding = TP_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
+layout(constant_id = TP_SPEC_SHADOW_BUFFER) const bool kShadowBuffer = false;
+layout(constant_id = TP_SPEC_SHADOW_ATLAS_WIDTH) const uint kShadowAtlasWidth = 1u;
+layout(std430, set = TP_SET_SHADOW, binding = TP_BINDING_SHADOW_DEPTH) readonly buffer ShadowDepth {
+    uint shadowDepth[]; // kShadowBuffer: the atlas's texels, row-major
+};
+
+// The stored depth of atlas (or map) texel t.
+float shadowTexel(ivec2 t) {
+    if (kShadowBuffer) return uintBitsToFloat(shadowDepth[uint(t.y) * kShadowAtlasWidth + uint(t.x)]);
+    return texelFetch(shadowMap, t, 0).r;
+}
 
 // The face of a light (first = LightGpu.shadow - 1) that sees light-relative position d.
 uint shadowFaceIndex(uint first, vec3 d) {
@@ -45,7 +56,7 @@ float shadowMapVisibility(LightGpu light, vec3 position, vec3 normal) {
     for (int dy = -TP_SHADOW_PCF_RADIUS; dy <= TP_SHADOW_PCF_RADIUS; ++dy)
         for (int dx = -TP_SHADOW_PCF_RADIUS; dx <= TP_SHADOW_PCF_RADIUS; ++dx) {
             ivec2 q = clamp(centre + ivec2(dx, dy), ivec2(0), ivec2(edge - 1));
-            lit += receiver >= texelFetch(shadowMap, origin + q, 0).r ? 1.0 : 0.0;
+            lit += receiver >= shadowTexel(origin + q) ? 1.0 : 0.0;
         }
     const float taps = float((2 * TP_SHADOW_PCF_RADIUS + 1) * (2 * TP_SHADOW_PCF_RADIUS + 1));
     return lit / taps;

@@ -19,6 +19,7 @@
 #define TP_SET_SHADOW 2                // the shadow set, after the scene (0) and a pass's own (1)
 #define TP_BINDING_SHADOW_FACES 0      // buffer ShadowFace[]
 #define TP_BINDING_SHADOW_MAP 1        // sampler2D: the depth map (atlas or one light's)
+#define TP_BINDING_SHADOW_DEPTH 2      // uint[]: the compute rasterizer's atlas depth (TP_SPEC_SHADOW_BUFFER)
 #define TP_SHADOW_PCF_RADIUS 1         // PCF kernel (2r + 1)^2 texels: 3 x 3, box weights
 #define TP_SHADOW_NORMAL_OFFSET 1.5f   // receiver moved along its normal by this many texels
 #define TP_SHADOW_DEPTH_BIAS 1.0f      // and compared this many texel footprints nearer
@@ -26,6 +27,11 @@
 #define TP_SHADOW_FACES_SPOT 1u
 // Specialization constant: the sampled map is one light's (the `local` rects), not the atlas.
 #define TP_SPEC_SHADOW_LOCAL 5
+// 1: the atlas is read from TP_BINDING_SHADOW_DEPTH, the float bits the compute rasterizer wrote
+// (--shadow-raster compute, maps every frame), rows of TP_SPEC_SHADOW_ATLAS_WIDTH texels: the same
+// values the D32 atlas would hold after a copy, without the copy. 0: the map's texels.
+#define TP_SPEC_SHADOW_BUFFER 31
+#define TP_SPEC_SHADOW_ATLAS_WIDTH 32
 
 #ifndef TP_GLSL
 namespace tp::gpu {

@@ -347,7 +347,8 @@ ShadowAtlasRun renderShadowAtlas(GpuContext& ctx, SceneGpu& scene, CullGeometry 
     FrameGraph graph(ctx, "shadow_atlas_test", 96, 54);
     ShadowMaps maps(ctx, scene, ShadowMaps::Residency::Atlas, cull, raster);
     maps.setRasterListCapacity(listCapacity);
-    const ResourceHandle atlas = maps.plan(graph);
+    maps.plan(graph);
+    const ResourceHandle atlas = maps.sampledAtlas(); // compute: the depth buffer
     // A pipeline's shading samples it (its set's descriptor needs the usage): a pass that
     // declares so and writes a word (exported, so that the graph keeps it). The atlas is
     // exported for the readback.
@@ -363,7 +364,14 @@ ShadowAtlasRun renderShadowAtlas(GpuContext& ctx, SceneGpu& scene, CullGeometry 
     maps.prepare(graph);
     recordAndSubmit(ctx, graph);
     maps.collect(graph);
-    return {readbackDepth(ctx, graph.image(atlas)), maps.counters()};
+    if (raster == ShadowRaster::Hardware)
+        return {readbackDepth(ctx, graph.image(atlas)), maps.counters()};
+    // The compute rasterizer's texels: the float bits the shaders read, as the copy stored them.
+    const std::vector<uint8_t> bytes = readbackBuffer(ctx, graph.buffer(atlas));
+    const ShadowPlan& p = scene.shadowPlan();
+    ImageR32 depth{p.atlasWidth, p.atlasHeight, std::vector<float>(size_t(p.atlasWidth) * p.atlasHeight)};
+    std::memcpy(depth.r.data(), bytes.data(), std::min(bytes.size(), depth.r.size() * sizeof(float)));
+    return {depth, maps.counters()};
 }
 
 } // namespace tp::test
