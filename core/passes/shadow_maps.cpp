@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 
-#include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/rendering.h"
 #include "core/gpu/vk_check.h"
@@ -162,22 +161,6 @@ ResourceHandle ShadowMaps::plan(FrameGraph& graph) {
     return map_;
 }
 
-// A 1x1 D32 map in the read-only layout, for the image binding when the shaders read the buffer.
-VkImageView ShadowMaps::makeUnusedMap() {
-    unusedMap_ = createImage(ctx_, {VK_FORMAT_D32_SFLOAT, 1, 1, 1, VK_SAMPLE_COUNT_1_BIT,
-                                    VK_IMAGE_USAGE_SAMPLED_BIT},
-                             {graph_->owner(), "shadow_raster", "shadow_map_unused",
-                              "a 1x1 stand-in for the atlas (its texels are read from "
-                              "shadow_raster_depth)"});
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-        imageBarrier(cmd, unusedMap_.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1});
-    });
-    return unusedMap_.view;
-}
-
 SpecConstant ShadowMaps::specConstant() const {
     return {TP_SPEC_SHADOW_LOCAL, residency_ == Residency::PerLight ? 1u : 0u};
 }
@@ -203,7 +186,7 @@ void ShadowMaps::prepare(FrameGraph& graph) {
     writeImageDescriptor(ctx_, set_.set, TP_BINDING_SHADOW_MAP,
                          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                          cached()        ? kept_.view
-                         : readsBuffer() ? makeUnusedMap()
+                         : readsBuffer() ? raster_->standInMap(graph.owner())
                                          : graph.image(map_).view,
                          VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, sampler_);
     layout_ = scene_.createPipelineLayout(VK_NULL_HANDLE, set_.layout);

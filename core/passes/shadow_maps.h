@@ -145,11 +145,8 @@ class ShadowMaps {
     ResourceHandle map_;
     FrameGraph* graph_ = nullptr;
     Image kept_;                              // the cached atlas
-    // readsBuffer(): a 1x1 map the set's image binding points at (the shaders read the buffer).
-    Image unusedMap_;
     // The per-frame atlas rasterized in compute: the consumers read its depth buffer, no copy.
     bool readsBuffer() const;
-    VkImageView makeUnusedMap();
     std::vector<gpu::LightGpu> culledLights_; // the shadowed lights faceDraws_ (and kept_) are for
     // Per face, the draws that may reach it: culled once per plan and again when a shadowed
     // light moves, not at every recording.

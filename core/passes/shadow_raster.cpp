@@ -99,6 +99,22 @@ void ShadowComputeRaster::plan(FrameGraph& graph, ResourceHandle map) {
     graph.exportResource("shadow_raster_list", list_);
 }
 
+VkImageView ShadowComputeRaster::standInMap(const std::string& owner) {
+    if (standIn_.view) return standIn_.view;
+    standIn_ = createImage(ctx_, {VK_FORMAT_D32_SFLOAT, 1, 1, 1, VK_SAMPLE_COUNT_1_BIT,
+                                  VK_IMAGE_USAGE_SAMPLED_BIT},
+                           {owner, "shadow_raster", "shadow_map_unused",
+                            "a 1x1 stand-in for the atlas (its texels are read from "
+                            "shadow_raster_depth)"});
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        imageBarrier(cmd, standIn_.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1});
+    });
+    return standIn_.view;
+}
+
 void ShadowComputeRaster::allocate(const std::string& owner) {
     inFrame_ = false;
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |

@@ -57,6 +57,9 @@ class ShadowComputeRaster {
     // map invalid: no copy (the consumers read depth() through the shadow set).
     void plan(FrameGraph& graph, ResourceHandle map);
     ResourceHandle depth() const { return depth_; } // in a frame: the atlas's texels
+    // Read through depth(), the atlas has no image: a 1x1 D32 map in the read-only layout for
+    // the shadow set's image binding, which the shaders then do not read (made once).
+    VkImageView standInMap(const std::string& owner);
     // Outside the frames: buffers of its own (ledger owner `owner`, pass "shadow_maps (once)").
     void allocate(const std::string& owner);
     // The sets and pipelines (after graph.compile() when planned in a frame).
@@ -89,6 +92,7 @@ class ShadowComputeRaster {
     void allocateOverflow();
     ResourceHandle depth_, list_, args_, overflow_;  // in a frame
     Buffer ownDepth_, ownList_, ownArgs_, ownOverflow_; // outside the frames
+    Image standIn_;                                      // standInMap()
     uint32_t overflowCapacity_ = 0;
     std::string owner_;
     PassSet set_, bigSet_;

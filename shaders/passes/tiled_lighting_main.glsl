@@ -92,6 +92,11 @@ ivec2 pixelOf(uvec2 tile, uint k) {
 
 bool insideViewport(ivec2 p) { return all(lessThan(uvec2(p), frame.viewport.xy)); }
 
+// The pixel of a listed edge (sEdgePixels: its index in the tile).
+ivec2 listedPixel(uvec2 tile, uint local) {
+    return ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+}
+
 // The tile's shared state cleared, its depth bounds read and (clustered) its slices set.
 void beginTile(uvec2 tile) {
     if (gl_LocalInvocationIndex == 0u) {
@@ -158,8 +163,8 @@ void buildLists(uvec2 tile) {
 
 #ifndef TP_LISTS_ONLY
 // Edges flattened (shadeEdges) at pixel rate where the pass composites no blended fragments:
-// measured on the H200 (1080p 4x, 1,024 lights), deferred's tiled lighting 0.998 -> 0.737 ms
-// and the visibility buffer's with --vis-blended forward 1.256 -> 0.977, but with its blended
+// measured on the H200 (1080p 4x, 1,024 lights), deferred's tiled lighting 0.998 -> 0.750 ms
+// and the visibility buffer's with --vis-blended forward 1.258 -> 0.985, but with its blended
 // fragments composited per edge pixel (--vis-blended compute) 1.66 -> 2.00 and at sample rate
 // 2.20 -> 4.88: the finish, one invocation a pixel, then runs a round at a time (docs/visbuffer.md).
 #ifdef TP_TL_COMPOSITES_BLENDED
@@ -187,7 +192,7 @@ void shadeEdges(uvec2 tile) {
         vec3 c = vec3(0.0);
         if (listed) {
             const uint local = sEdgePixels[e];
-            p = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            p = listedPixel(tile, local);
             const uint s = edgeItemSample(p, k);
             if (s < kSamples) c = shadeEdgeSample(p, s);
         }
@@ -196,12 +201,11 @@ void shadeEdges(uvec2 tile) {
         sSlot[3u * lane + 2u] = c.z;
         barrier();
         // The round's pixels finished by its first invocations, one a pixel: adjacent lanes, so
-        // that the finish (the visibility buffer composites the pixel's blended fragments
-        // there) fills whole subgroups.
+        // that the finish fills whole subgroups.
         const uint f = first / kSamples + lane;
         if (lane < groupSize / kSamples && f < sEdges) {
             const uint local = sEdgePixels[f];
-            const ivec2 q = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            const ivec2 q = listedPixel(tile, local);
             vec3 samples[8];
             for (uint s = 0u; s < kSamples; ++s) {
                 const uint at = 3u * (lane * kSamples + edgeSampleItem(q, s));
@@ -256,7 +260,7 @@ void shadeTile(uvec2 tile) {
                 uint e = k * groupSize + gl_LocalInvocationIndex;
                 shaded = e < sEdges;
                 uint local = shaded ? sEdgePixels[e] : 0u;
-                p = ivec2(tile * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+                p = listedPixel(tile, local);
             }
             if (!shaded) continue;
             // kFlatEdges: no edge reaches here (folded away with the constant).
