@@ -45,10 +45,12 @@ uint edgeSampleItem(ivec2 p, uint s) {
     return n;
 }
 
-vec3 shadeEdgeSample(ivec2 p, uint s) {
-    uint id = fetchId(p, s);
+// Sample s of an edge, holding triangle `id` (0: none): lit at its own location at sample rate,
+// at the centre at pixel rate.
+vec3 shadeEdgeSurface(ivec2 p, uint s, uint id) {
     return id != 0u ? shade(p, s, kEverySample ? sampleOffset(s) : vec2(0.5), fetchDepth(p, s)) : vec3(0.0);
 }
+vec3 shadeEdgeSample(ivec2 p, uint s) { return shadeEdgeSurface(p, s, fetchId(p, s)); }
 
 // The samples' radiance c[0, kSamples), the blended fragments composited over them, written
 // (per sample) or averaged; a pixel whose samples all hold one value is written as it is (their
@@ -89,8 +91,7 @@ void shadeEdgePixel(ivec2 p) {
             reused = ids[t] == id;
             if (reused) c[s] = c[t];
         }
-        if (!reused)
-            c[s] = id != 0u ? shade(p, s, kEverySample ? sampleOffset(s) : vec2(0.5), fetchDepth(p, s)) : vec3(0.0);
+        if (!reused) c[s] = shadeEdgeSurface(p, s, id);
     }
     finishPixel(p, c, false);
 }

@@ -22,12 +22,6 @@ uint64_t fragments(const RunResult& r, const std::string& pass) {
     return 0;
 }
 
-bool ran(const RunResult& r, const std::string& pass) {
-    for (const std::string& p : r.passes)
-        if (p == pass) return true;
-    return false;
-}
-
 } // namespace
 
 TEST(GBufferPrepass, GivesTheImageWithoutIt) {
@@ -52,8 +46,8 @@ TEST(GBufferPrepass, GivesTheImageWithoutIt) {
         const std::string what = std::to_string(c.msaa) + "x --cull-geometry " + c.cull;
         EXPECT_EQ(off.hdr.rgba, on.hdr.rgba) << what;
         EXPECT_EQ(off.depth.r, on.depth.r) << what;
-        EXPECT_TRUE(ran(on, "depth_prepass")) << what;
-        EXPECT_FALSE(ran(off, "depth_prepass")) << what;
+        EXPECT_TRUE(ranPass(on, "depth_prepass")) << what;
+        EXPECT_FALSE(ranPass(off, "depth_prepass")) << what;
         EXPECT_EQ(on.stats.counter("gbuffer_prepass", -1), 1.0) << what;
         EXPECT_EQ(off.stats.counter("gbuffer_prepass", -1), 0.0) << what;
         // Each sample's material written once: no more G-buffer fragments than without it.

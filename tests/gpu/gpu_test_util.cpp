@@ -106,6 +106,10 @@ void printRunCpu(const std::string& pipeline, const SceneGpu& scene, const Rende
 }
 } // namespace
 
+bool ranPass(const RunResult& run, const std::string& pass) {
+    return std::find(run.passes.begin(), run.passes.end(), pass) != run.passes.end();
+}
+
 RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
                     const RenderSettings& settings, uint32_t frames) {
     Result<const RendererEntry*> entry = findRenderer(pipeline);

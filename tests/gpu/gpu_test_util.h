@@ -36,6 +36,8 @@ Scene makeFloorScene(const std::vector<Light>& lights);
 
 RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipeline,
                     const RenderSettings& settings, uint32_t frames = 1);
+// Whether the run recorded pass `pass`.
+bool ranPass(const RunResult& run, const std::string& pass);
 
 // Every registered renderer that reads --cull-geometry.
 std::vector<std::string> cullingPipelines();

@@ -168,11 +168,8 @@ void expectShadowsAsForwardPlus(GpuContext& ctx, SceneGpu& scene, const std::str
     EXPECT_EQ(counterOf(pAll, "shadow_maps_cached"), 1.0);
     EXPECT_EQ(counterOf(pAll, "shadow_maps_renders"), 1.0);
     EXPECT_EQ(counterOf(pAll, "shadow_map_renders_per_frame"), 0.0);
-    auto ran = [](const RunResult& r, const char* pass) {
-        return std::find(r.passes.begin(), r.passes.end(), pass) != r.passes.end();
-    };
-    EXPECT_FALSE(ran(pAll, "shadow_maps"));
-    EXPECT_FALSE(ran(pNone, "shadow_maps")); // without --shadows nothing of it is planned
+    EXPECT_FALSE(ranPass(pAll, "shadow_maps"));
+    EXPECT_FALSE(ranPass(pNone, "shadow_maps")); // without --shadows nothing of it is planned
     EXPECT_EQ(counterOf(pNone, "shadowed_lights"), -1.0);
 }
 
