@@ -16,6 +16,7 @@
 #include "core/gpuscene/scene_gpu.h"
 #include "core/image/image_io.h"
 #include "core/reference/reference_renderer.h"
+#include "core/reference/reference_settings.h"
 
 namespace tp::cli {
 namespace {
@@ -147,7 +148,9 @@ ReferenceKey referenceKey(const GpuContext& ctx, const SceneGpu& scene,
     if (settings.shadows.enabled())
         t += "shadows " + shadowCountText(settings.shadows) + " budget " +
              std::to_string(settings.shadows.budgetMb) + "\n";
-    // The reference's own knobs, defaults filled in: the only settings it reads.
+    // What it follows of the pipelines' settings (--reference-shadows maps: their rasterizer).
+    t += ref::followedSettingsText(settings);
+    // The reference's own knobs, defaults filled in: the rest of what it reads.
     for (const Knob& k : (*findRenderer(kReferenceRenderer))->knobs)
         t += "knob " + k.name + "=" + k.valueIn(settings.knobs) + "\n";
     Fnv1a64 h;

@@ -51,10 +51,22 @@ const ChoiceKnob<Shadows>& shadowsKnob() {
             {{Shadows::Rays, "rays"}, {Shadows::Maps, "maps"}},
             "Visibility of the shadowed lights in the reference: rays (a shadow ray per sample "
             "and light against the opaque and masked triangles, through a BVH: exact) or maps "
-            "(the shadow maps the pipelines sample, with their filter: compare renders it as the second "
-            "reference, docs/shadows.md). No effect without shadowed lights"}
+            "(the shadow maps the pipelines sample, with their filter, rasterized as their "
+            "--shadow-raster says, with the face cull of their --cull-geometry under compute: "
+            "compare renders it as the second reference, docs/shadows.md). No effect without "
+            "shadowed lights"}
             .fixed();
     return k;
+}
+
+// The maps' rasterizer, from the pipelines' knobs (Settings::mapsRaster says why). Hardware
+// maps are drawn whole (the same texels as culled ones: the cull drops only what a face cannot
+// see); the compute rasterizer reads what the face cull keeps, which frustum and full cull
+// alike (a face's frustum and the light's range, no occlusion), so one key serves both.
+void readMapsRaster(const RenderSettings& s, Settings& r) {
+    r.mapsRaster = shadowRasterKnob().carriedIn(s);
+    if (r.mapsRaster == ShadowRaster::Compute && cullGeometryKnob().carriedIn(s) != CullGeometry::None)
+        r.mapsCull = CullGeometry::Frustum;
 }
 
 } // namespace
@@ -64,7 +76,18 @@ KnobSchema knobs() {
 }
 
 Settings readSettings(const RenderSettings& s) {
-    return {precisionKnob().in(s), msaaKnob().in(s), positionKnob().in(s), shadowsKnob().in(s)};
+    Settings r{precisionKnob().in(s), msaaKnob().in(s), positionKnob().in(s), shadowsKnob().in(s)};
+    readMapsRaster(s, r);
+    return r;
+}
+
+std::string followedSettingsText(const RenderSettings& s) {
+    if (!s.shadows.enabled() || shadowsKnob().carriedIn(s) != Shadows::Maps) return {};
+    Settings r;
+    readMapsRaster(s, r);
+    std::string t = "maps raster " + shadowRasterKnob().text(r.mapsRaster);
+    t += " cull " + cullGeometryKnob().text(r.mapsCull) + "\n";
+    return t;
 }
 
 } // namespace tp::ref

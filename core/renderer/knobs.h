@@ -86,12 +86,11 @@ template <class E> class ChoiceKnob {
     }
     const Knob& knob() const { return knob_; }
     // The value `s` holds (its default filled in by resolveKnobs).
-    E in(const RenderSettings& s) const {
-        const std::string& text = s.text(knob_.name);
-        for (const auto& v : values_)
-            if (v.second == text) return v.first;
-        throwNotAValue(knob_, text);
-    }
+    E in(const RenderSettings& s) const { return of(s.text(knob_.name)); }
+    // The value of a knob other renderers declare, as `s` carries it (its default where it
+    // does not): for a renderer that follows their setting without taking the knob as its own
+    // (the reference's shadow maps follow the pipelines' --shadow-raster).
+    E carriedIn(const RenderSettings& s) const { return of(knob_.valueIn(s.knobs)); }
     // The text of `e`, for a report line ("--light-bin auto resolved to cpu").
     const std::string& text(E e) const {
         for (const auto& v : values_)
@@ -100,6 +99,11 @@ template <class E> class ChoiceKnob {
     }
 
   private:
+    E of(const std::string& text) const {
+        for (const auto& v : values_)
+            if (v.second == text) return v.first;
+        throwNotAValue(knob_, text);
+    }
     Knob knob_;
     std::vector<std::pair<E, std::string>> values_;
 };

@@ -1,5 +1,6 @@
 // The reference cache (compare/cache/reference_cache.h): a key changes with every input the
-// reference's image depends on (resolution, MSAA, a reference knob, the lights, the camera)
+// reference's image depends on (resolution, MSAA, a reference knob, the lights, the camera, the
+// pipelines' shadow rasterizer under --reference-shadows maps)
 // and with none it does not (a pipeline's knob: changing it is what the cache is for); an
 // entry gives back the run it stored, images bit for bit and the figures it measured.
 #include <gtest/gtest.h>
@@ -42,6 +43,25 @@ TEST(ReferenceCache, TheKeyFollowsEveryInputOfTheReferenceAndNoOther) {
     s = tiny();
     s.set("reference-precision", "fp32");
     EXPECT_NE(key(s), base) << "a reference knob";
+    // The maps reference follows the pipelines' shadow rasterizer; shadow rays do not.
+    RenderSettings shadowed = tiny();
+    shadowed.shadows.count = 2;
+    const std::string rays = key(shadowed);
+    s = shadowed;
+    s.set("shadow-raster", "compute");
+    s.set("cull-geometry", "frustum");
+    EXPECT_EQ(key(s), rays) << "shadow rays see no map";
+    shadowed.set("reference-shadows", "maps");
+    const std::string maps = key(shadowed);
+    EXPECT_NE(maps, rays);
+    s = shadowed;
+    s.set("cull-geometry", "frustum"); // hardware maps are drawn whole
+    EXPECT_EQ(key(s), maps);
+    s.set("shadow-raster", "compute");
+    const std::string computeMaps = key(s);
+    EXPECT_NE(computeMaps, maps) << "the compute rasterizer";
+    s.set("cull-geometry", "full"); // the faces are culled as by frustum
+    EXPECT_EQ(key(s), computeMaps);
     std::vector<Light> lights = scene.lights;
     lights[0].intensity *= 1.0001f;
     gpu.setLights(lights);
