@@ -136,11 +136,10 @@ LaSlicing rangeSlicing() { return laSlicing(1.0, sSliceNear, sSliceScale, kSlice
 bool firstBatch() { return draw.TP_TL_LIGHT_FIRST == 0u; }
 
 #ifndef TP_LISTS_ONLY
-// One G-buffer sample, lit by the tile's lights of this batch (the host keeps a batch
-// within the shared capacity: sCount never exceeds it).
-vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
-    SurfaceSample ss = readSurfaceAt(p, s, offset, depth);
-    vec3 sum = firstBatch() ? ambientEmissive(p, s) : vec3(0.0);
+// Surface ss lit by the tile's lights of this batch (the host keeps a batch within the shared
+// capacity: sCount never exceeds it), each added to `sum` (its ambient and emission in the
+// first batch) in list order.
+vec3 shadeSurface(SurfaceSample ss, vec3 sum) {
     uint n = min(sCount, TP_TL_TILE_LIGHT_CAPACITY);
     if (kSlices > 0u) {
         // The lights of this sample's cluster: its slice's bits over the tile list.
@@ -155,6 +154,12 @@ vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
     }
     for (uint i = 0u; i < n; ++i) sum += evalLightShadowed(lights[sLights[i]], ss);
     return sum;
+}
+
+// One G-buffer sample, lit.
+vec3 shade(ivec2 p, uint s, vec2 offset, float depth) {
+    SurfaceSample ss = readSurfaceAt(p, s, offset, depth);
+    return shadeSurface(ss, firstBatch() ? ambientEmissive(p, s) : vec3(0.0));
 }
 
 // Clustered: the slices each light of the shared list reaches (after the culling's barrier;

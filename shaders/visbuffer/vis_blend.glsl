@@ -139,4 +139,47 @@ void compositeBlended(ivec2 p, uint head, inout vec3 c[8]) {
     }
     if (firstBatch()) atomicMax(bCounters[TP_VIS_BLEND_MAX_DEPTH], fragments);
 }
+
+// Pixel p, not an edge, at pixel rate: its samples' radiance c[0, kSamples) with the blended
+// fragments composited over them; returns the pixel's list head (0: no list). What shade() of
+// sample 0's triangle and then compositeBlended compute, the same operations in the same order
+// (the same image), but as the turns of one loop (the opaque surface, where there is one, then
+// each blended fragment in ascending id order) around one material evaluation (readTriangle):
+// lavapipe runs every call site in every lane of a group, taken or not, so the composite's own
+// surface read cost every pixel a second material evaluation, about half of the resolve at
+// 1280x720 (docs/visbuffer.md, "The composite where a pixel has a list"). A do-while: a loop
+// that tests at the top runs its body once more than its longest lane there.
+uint shadeLayers(ivec2 p, out vec3 c[8]) {
+    const uint head = blendHead(p);
+    const float depth = fetchDepth(p, 0u);
+    const uint tileIndex = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    for (uint s = 0u; s < kSamples; ++s) c[s] = vec3(0.0);
+    uint current = fetchId(p, 0u), coverage = 0u, fragments = 0u; // turn 0: the opaque surface (0: none)
+    bool blended = false;
+    do {
+        if (current != 0u) { // a blended turn's id is never 0
+            const VisTriangle t = visTriangle(current);
+            if (blended) {
+                ++fragments;
+                if (kSamples > 1u) coverage = samplesInFront(t, p, coverage);
+            }
+            if (!blended || coverage != 0u) {
+                MaterialSample ms = readTriangle(t, vec2(p) + vec2(0.5), depth);
+                const vec3 ambient = firstBatch() ? ambientAndEmissive(ms) : vec3(0.0);
+                if (!blended) {
+                    const vec3 lit = shadeSurface(ms.surface, ambient);
+                    for (uint s = 0u; s < kSamples; ++s) c[s] = lit;
+                } else {
+                    const vec3 lit = ambient + blendedLights(tileIndex, ms.surface);
+                    for (uint s = 0u; s < kSamples; ++s)
+                        if ((coverage & (1u << s)) != 0u) c[s] = ms.alpha * lit + (1.0 - ms.alpha) * c[s];
+                }
+            }
+        }
+        current = nextFragment(head, blended ? current : 0u, coverage);
+        blended = true;
+    } while (current != TP_VIS_NO_FRAGMENT);
+    if (head != 0u && firstBatch()) atomicMax(bCounters[TP_VIS_BLEND_MAX_DEPTH], fragments);
+    return head;
+}
 #endif

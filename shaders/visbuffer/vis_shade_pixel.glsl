@@ -55,14 +55,7 @@ vec3 shadeEdgeSample(ivec2 p, uint s) { return shadeEdgeSurface(p, s, fetchId(p,
 // The samples' radiance c[0, kSamples), the blended fragments composited over them, written
 // (per sample) or averaged; a pixel whose samples all hold one value is written as it is (their
 // average could round).
-void finishPixel(ivec2 p, inout vec3 c[8], bool oneSurface) {
-#ifdef TP_VIS_BLEND
-    const uint head = blendHead(p);
-    if (head != 0u) compositeBlended(p, head, c);
-#else
-    const uint head = 0u;
-#endif
-    const bool oneValue = oneSurface && head == 0u;
+void writePixel(ivec2 p, vec3 c[8], bool oneValue) {
     vec3 sum = vec3(0.0);
     for (uint s = 0u; s < kSamples; ++s) {
 #ifdef TP_HDR_MSAA
@@ -73,6 +66,16 @@ void finishPixel(ivec2 p, inout vec3 c[8], bool oneSurface) {
 #ifndef TP_HDR_MSAA
     writeHdr(p, 0u, oneValue ? c[0] : sum / float(kSamples));
 #endif
+}
+
+void finishPixel(ivec2 p, inout vec3 c[8], bool oneSurface) {
+#ifdef TP_VIS_BLEND
+    const uint head = blendHead(p);
+    if (head != 0u) compositeBlended(p, head, c);
+#else
+    const uint head = 0u;
+#endif
+    writePixel(p, c, oneSurface && head == 0u);
 }
 
 void finishEdge(ivec2 p, vec3 c[8]) { finishPixel(p, c, false); }
@@ -98,6 +101,14 @@ void shadeEdgePixel(ivec2 p) {
 
 // Pixel p, not an edge: one triangle, shaded once at the centre, for every sample.
 void shadePixel(ivec2 p) {
+#ifdef TP_VIS_BLEND
+    if (!kEverySample) { // its blended fragments in the same loop (vis_blend.glsl)
+        vec3 c[8];
+        const uint head = shadeLayers(p, c);
+        writePixel(p, c, head == 0u);
+        return;
+    }
+#endif
     vec3 c[8];
     uint id = fetchId(p, 0u);
     c[0] = id != 0u ? shade(p, 0u, vec2(0.5), fetchDepth(p, 0u)) : vec3(0.0);
