@@ -229,7 +229,8 @@ class VisbufferRenderer final : public Renderer {
         s.samples = vis_.sampling.samples;
         s.everySample = vis_.sampling.perSample();
         s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits},
-                       {TP_VIS_SPEC_DERIVATIVES, derivativesMode()}};
+                       {TP_VIS_SPEC_DERIVATIVES, derivativesMode()},
+                       {TP_VIS_SPEC_ONE_TEXTURE_WALK, ctx_.isCpuDevice() ? 1u : 0u}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
         if (blendInCompute_) {

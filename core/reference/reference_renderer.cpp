@@ -50,7 +50,8 @@ class ReferenceRenderer final : public Renderer {
             uses = {{hdr_, Use::ColorAttachment}, {depth_, Use::DepthAttachment}};
         }
         if (usesMaps()) { // the pipelines' atlas (shadow_maps), sampled as they sample it
-            maps_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, ref_.mapsCull, ref_.mapsRaster);
+            maps_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, ref_.mapsCull,
+                          ref_.mapsRaster);
             maps_->plan(graph);
             for (const PassUse& u : maps_->sampledUses()) uses.push_back(u);
         }

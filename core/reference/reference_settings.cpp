@@ -65,7 +65,8 @@ const ChoiceKnob<Shadows>& shadowsKnob() {
 // alike (a face's frustum and the light's range, no occlusion), so one key serves both.
 void readMapsRaster(const RenderSettings& s, Settings& r) {
     r.mapsRaster = shadowRasterKnob().carriedIn(s);
-    if (r.mapsRaster == ShadowRaster::Compute && cullGeometryKnob().carriedIn(s) != CullGeometry::None)
+    if (r.mapsRaster == ShadowRaster::Compute &&
+        cullGeometryKnob().carriedIn(s) != CullGeometry::None)
         r.mapsCull = CullGeometry::Frustum;
 }
 

@@ -43,10 +43,39 @@ vec3 gVisPosDx, gVisPosDy;
 // The texture index differs between the invocations of a group (their materials do), and an
 // index into a sampler array must be dynamically uniform unless the device has
 // shaderSampledImageArrayNonUniformIndexing (lavapipe does not). So the array is walked with a
-// uniform loop counter and each invocation samples where the counter meets its index: one
-// fetch per invocation, kTextureCount compares (docs/visbuffer.md says what that costs).
+// uniform loop counter and each invocation samples where the counter meets its index: on a
+// GPU one walk a slot (kOneTextureWalk off: a branch no lane takes costs nothing there). On a
+// CPU device every branch runs in every lane, so every sample site costs the whole group: there
+// the five slots are sampled together, once per material before evalMaterial (readTriangle),
+// in one walk of kTextureCount sites instead of one a slot. All five read the one uv with the
+// one footprint, so each slot's texel is what sampling it alone gives (docs/visbuffer.md, "The
+// texture walk": the same bytes; lavapipe's resolve 40 % shorter, the H200's 22 % longer).
+layout(constant_id = TP_VIS_SPEC_ONE_TEXTURE_WALK) const bool kOneTextureWalk = false;
+int gVisSlot[5];
+vec4 gVisTexel[5];
+void visSampleMaterialTextures(MaterialGpu m, vec2 uv) {
+    if (!kOneTextureWalk) return;
+    gVisSlot = int[5](m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
+                      m.occlusionTexture, m.emissiveTexture);
+    for (int k = 0; k < 5; ++k) gVisTexel[k] = vec4(0.0);
+    for (int i = 0; i < kTextureCount; ++i) {
+        bool named = false;
+        for (int k = 0; k < 5; ++k) named = named || gVisSlot[k] == i;
+        if (!named) continue;
+        const vec4 texel = textureGrad(textures[i], uv, gVisUvDx, gVisUvDy);
+        for (int k = 0; k < 5; ++k)
+            if (gVisSlot[k] == i) gVisTexel[k] = texel;
+    }
+}
+// Texture `index` at uv (material.glsl asks only for an index in range): the texel the one
+// walk took, or this slot's own walk.
 vec4 visTexture(int index, vec2 uv) {
     vec4 r = vec4(0.0);
+    if (kOneTextureWalk) {
+        for (int k = 0; k < 5; ++k)
+            if (gVisSlot[k] == index) r = gVisTexel[k];
+        return r;
+    }
     for (int i = 0; i < kTextureCount; ++i)
         if (i == index) r = textureGrad(textures[i], uv, gVisUvDx, gVisUvDy);
     return r;
@@ -214,9 +243,11 @@ MaterialSample readTriangle(VisTriangle t, vec2 fc, float depth) {
     // Front-facing as the rasterizer decides it (counter-clockwise in the flipped-viewport
     // framebuffer: the triangle winds counter-clockwise as the viewer, at the origin, sees it).
     bool front = dot(cross(t.p1 - t.p0, t.p2 - t.p0), t.p0) < 0.0;
-    return evalMaterial(materials[t.draw.material], h.position,
-                        TP_VIS_LERP(t.v0.normalV.xyz, t.v1.normalV.xyz, t.v2.normalV.xyz, h.b),
-                        TP_VIS_LERP(uv0, uv1, uv2, h.b), TP_VIS_LERP(t.v0.tangent, t.v1.tangent, t.v2.tangent, h.b),
+    const MaterialGpu m = materials[t.draw.material];
+    const vec2 uv = TP_VIS_LERP(uv0, uv1, uv2, h.b);
+    visSampleMaterialTextures(m, uv);
+    return evalMaterial(m, h.position, TP_VIS_LERP(t.v0.normalV.xyz, t.v1.normalV.xyz, t.v2.normalV.xyz, h.b),
+                        uv, TP_VIS_LERP(t.v0.tangent, t.v1.tangent, t.v2.tangent, h.b),
                         TP_VIS_LERP(t.v0.color, t.v1.color, t.v2.color, h.b), front);
 }
 

@@ -54,6 +54,10 @@ TP_STRUCT(VisDraw) {
 // ---- specialization constants (ids after deferred's 11..18, which the tiled pass sets) ----
 #define TP_VIS_SPEC_TRIANGLE_BITS 19 // low bits of an id that hold the triangle
 #define TP_VIS_SPEC_DERIVATIVES 20 // the resolve's texture footprint: TP_VIS_DERIVATIVES_* (--vis-derivatives)
+// 1: the resolve samples a material's textures in one walk of the array (a CPU device such as
+// lavapipe, where every sample site costs every lane); 0: one walk a slot (a GPU, where a
+// branch no lane takes costs nothing and the one walk's five texels cost registers).
+#define TP_VIS_SPEC_ONE_TEXTURE_WALK 33
 
 // ---- the uv derivatives textureGrad is given (--vis-derivatives) ----
 #define TP_VIS_DERIVATIVES_ANALYTIC 0     // d(uv)/dx, d(uv)/dy at the shaded location itself
