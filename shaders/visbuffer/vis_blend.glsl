@@ -113,14 +113,20 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
     return sum;
 }
 
-// A blended fragment of triangle t at framebuffer location fc: this batch's radiance and the
-// material's alpha.
-vec4 shadeBlended(VisTriangle t, vec2 fc, float depth) {
-    MaterialSample ms = readTriangle(t, fc, depth);
+// A blended fragment's material lit: this batch's radiance and the material's alpha.
+vec4 blendedRadiance(MaterialSample ms) {
     vec3 sum = firstBatch() ? ambientAndEmissive(ms) : vec3(0.0);
     sum += blendedLights(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x, ms.surface);
     return vec4(sum, ms.alpha);
 }
+
+// A blended fragment of triangle t at framebuffer location fc, lit.
+vec4 shadeBlended(VisTriangle t, vec2 fc, float depth) {
+    return blendedRadiance(readTriangle(t, fc, depth));
+}
+
+// `lit` (radiance, alpha) blended over the radiance under it, as the hardware's blend state.
+vec3 blendOver(vec4 lit, vec3 under) { return lit.a * lit.rgb + (1.0 - lit.a) * under; }
 
 // Pixel p's blended fragments (the list at `head`) over its samples' radiance c[0, kSamples).
 void compositeBlended(ivec2 p, uint head, inout vec3 c[8]) {
@@ -134,7 +140,7 @@ void compositeBlended(ivec2 p, uint head, inout vec3 c[8]) {
         for (uint s = 0u; s < kSamples; ++s) {
             if ((coverage & (1u << s)) == 0u) continue;
             if (kEverySample) lit = shadeBlended(t, vec2(p) + sampleOffset(s), fetchDepth(p, s));
-            c[s] = lit.a * lit.rgb + (1.0 - lit.a) * c[s];
+            c[s] = blendOver(lit, c[s]);
         }
     }
     if (firstBatch()) atomicMax(bCounters[TP_VIS_BLEND_MAX_DEPTH], fragments);
@@ -152,7 +158,6 @@ void compositeBlended(ivec2 p, uint head, inout vec3 c[8]) {
 uint shadeLayers(ivec2 p, out vec3 c[8]) {
     const uint head = blendHead(p);
     const float depth = fetchDepth(p, 0u);
-    const uint tileIndex = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     for (uint s = 0u; s < kSamples; ++s) c[s] = vec3(0.0);
     uint current = fetchId(p, 0u), coverage = 0u, fragments = 0u; // turn 0: the opaque surface (0: none)
     bool blended = false;
@@ -165,14 +170,14 @@ uint shadeLayers(ivec2 p, out vec3 c[8]) {
             }
             if (!blended || coverage != 0u) {
                 MaterialSample ms = readTriangle(t, vec2(p) + vec2(0.5), depth);
-                const vec3 ambient = firstBatch() ? ambientAndEmissive(ms) : vec3(0.0);
                 if (!blended) {
-                    const vec3 lit = shadeSurface(ms.surface, ambient);
+                    const vec3 lit =
+                        shadeSurface(ms.surface, firstBatch() ? ambientAndEmissive(ms) : vec3(0.0));
                     for (uint s = 0u; s < kSamples; ++s) c[s] = lit;
                 } else {
-                    const vec3 lit = ambient + blendedLights(tileIndex, ms.surface);
+                    const vec4 lit = blendedRadiance(ms);
                     for (uint s = 0u; s < kSamples; ++s)
-                        if ((coverage & (1u << s)) != 0u) c[s] = ms.alpha * lit + (1.0 - ms.alpha) * c[s];
+                        if ((coverage & (1u << s)) != 0u) c[s] = blendOver(lit, c[s]);
                 }
             }
         }
