@@ -221,8 +221,10 @@ void shadeEdges(uvec2 tile) {
 // after the rest: flattened (shadeEdges) where the pass does not composite blended fragments,
 // else in round 1, one pixel an invocation (shadeEdgePixel). At --msaa-shading sample every
 // pixel with geometry is an edge: nothing to compact, shaded in place. The same shade of the
-// same pixel either way: the same image. One call site for the pixel: lavapipe runs both sides
-// of a divergent branch.
+// same pixel either way: the same image. Each round is a loop of its own around its one call:
+// lavapipe runs both sides of every branch, so round 0 carried round 1's edge shading (every
+// sample lit, and the blended composite) in every pixel while it was one loop's other branch
+// (docs/visbuffer.md, "Edges in a loop of their own").
 void shadeTile(uvec2 tile) {
     uint pixelsPerInvocation = (kTileSize / TP_GROUP) * (kTileSize / TP_GROUP);
     // A later batch with no light in this tile adds nothing (sCount is uniform here), unless
@@ -234,40 +236,34 @@ void shadeTile(uvec2 tile) {
 #endif
     const uint groupSize = TP_GROUP * TP_GROUP;
     const bool listEdges = kSamples > 1u && !kEverySample;
-    for (uint round = 0u; round < (listEdges && !kFlatEdges ? 2u : 1u); ++round) {
-        // sEdges is uniform after the barrier that ends round 0.
-        uint items = round == 0u ? shadedPixels : (sEdges + groupSize - 1u) / groupSize;
-        for (uint k = 0u; k < items; ++k) {
-            ivec2 p;
-            bool edge = round == 1u, shaded;
-            if (round == 0u) {
-                p = pixelOf(tile, k);
-                shaded = insideViewport(p);
-                edge = shaded && kSamples > 1u && isEdge(p);
+    for (uint k = 0u; k < shadedPixels; ++k) {
+        ivec2 p = pixelOf(tile, k);
+        bool shaded = insideViewport(p);
+        const bool edge = shaded && kSamples > 1u && isEdge(p);
 #ifdef TP_DEBUG
-                vec2 rm = debugRoughMetal(p);
-                if (shaded && firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
+        vec2 rm = debugRoughMetal(p);
+        if (shaded && firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
-                if (edge) {
-                    uint e = atomicAdd(sEdges, 1u);
-                    if (listEdges) {
-                        uvec2 local = uvec2(p) - tile * kTileSize;
-                        sEdgePixels[e] = local.y * kTileSize + local.x;
-                        shaded = false; // after the rest
-                    }
-                }
-            } else {
-                uint e = k * groupSize + gl_LocalInvocationIndex;
-                shaded = e < sEdges;
-                uint local = shaded ? sEdgePixels[e] : 0u;
-                p = listedPixel(tile, local);
+        if (edge) {
+            uint e = atomicAdd(sEdges, 1u);
+            if (listEdges) {
+                uvec2 local = uvec2(p) - tile * kTileSize;
+                sEdgePixels[e] = local.y * kTileSize + local.x;
+                shaded = false; // after the rest
             }
-            if (!shaded) continue;
-            // kFlatEdges: no edge reaches here (folded away with the constant).
-            if (edge && !kFlatEdges) shadeEdgePixel(p);
-            else shadePixel(p);
         }
-        barrier(); // round 0's list complete
+        if (!shaded) continue;
+        // A listed edge never reaches here: the edge call folds away with listEdges.
+        if (!listEdges && edge) shadeEdgePixel(p);
+        else shadePixel(p);
+    }
+    barrier(); // round 0's list complete (sEdges is uniform after it)
+    if (listEdges && !kFlatEdges) {
+        for (uint k = 0u; k < (sEdges + groupSize - 1u) / groupSize; ++k) {
+            const uint e = k * groupSize + gl_LocalInvocationIndex;
+            if (e < sEdges) shadeEdgePixel(listedPixel(tile, sEdgePixels[e]));
+        }
+        barrier();
     }
     if (kFlatEdges) shadeEdges(tile);
 }
