@@ -259,7 +259,8 @@ void shadeTile(uvec2 tile) {
     }
     barrier(); // round 0's list complete (sEdges is uniform after it)
     if (listEdges && !kFlatEdges) {
-        for (uint k = 0u; k < (sEdges + groupSize - 1u) / groupSize; ++k) {
+        const uint rounds = (sEdges + groupSize - 1u) / groupSize; // uniform after the barrier
+        for (uint k = 0u; k < rounds; ++k) {
             const uint e = k * groupSize + gl_LocalInvocationIndex;
             if (e < sEdges) shadeEdgePixel(listedPixel(tile, sEdgePixels[e]));
         }
