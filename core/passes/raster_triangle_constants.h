@@ -11,11 +11,12 @@
 
 namespace tp {
 
-// The device's sub-pixel bits, and its depth plane: llvmpipe sets it up from the float
-// positions, a GPU from the snapped ones (measured on the H200).
+// The device's sub-pixel bits, and its triangle setup: llvmpipe sets the depth plane up from
+// the float positions and rounds the viewport transform its own way, a GPU from the snapped
+// ones (measured on the H200).
 inline std::vector<SpecConstant> rasterTriangleConstants(const GpuContext& ctx) {
     return {{TP_RT_SPEC_SUBPIXEL_BITS, ctx.properties.limits.subPixelPrecisionBits},
-            {TP_RT_SPEC_SNAPPED_PLANE, ctx.isCpuDevice() ? 0u : 1u}};
+            {TP_RT_SPEC_GPU_SETUP, ctx.isCpuDevice() ? 0u : 1u}};
 }
 
 } // namespace tp

@@ -26,9 +26,10 @@
 // C++ side sets both from the device: core/passes/raster_triangle_constants.h). Ids clear of
 // both includers' own (the visibility buffer's 19-22, the shadow maps' 22-23).
 #define TP_RT_SPEC_SUBPIXEL_BITS 21 // the device's subPixelPrecisionBits
-// 1: the depth plane through the snapped vertices (a GPU's rasterizer: the H200 was 6,039 ulps
-// off with the unsnapped ones), 0: through the unsnapped ones (llvmpipe's setup)
-#define TP_RT_SPEC_SNAPPED_PLANE 30
+// 1: a GPU's triangle setup: the depth plane through the snapped vertices (the H200 was 6,039
+// ulps off with the unsnapped ones), the viewport transform as the spec writes it. 0: llvmpipe's:
+// the plane through the unsnapped vertices, the viewport as x * (1 / w) and a fused multiply-add
+#define TP_RT_SPEC_GPU_SETUP 30
 
 // What becomes of a triangle (rasterTriage); the values are the visibility buffer's counter
 // slots (TP_VR_COUNT_*).

@@ -71,7 +71,7 @@ void printAgreement(const char* what, const Agreement& g) {
 
 // Measured on lavapipe 2026-11-29 at 96x64 (docs/visbuffer.md, "The compute rasterizer"): the
 // share of pixels holding the hardware's id (compute 0.9998, hybrid 1, the masked scene 1),
-// and the depth where they do: unclipped triangles within 18 ulps (hybrid clips none in compute;
+// and the depth where they do: unclipped triangles within 15 ulps (hybrid clips none in compute;
 // 3 on the masked scene), triangles the near plane cuts within 8.8e-5 of the depth (compute:
 // its clipped vertices and the hardware's differ by their own rounding).
 constexpr double kSameIdShare = 0.999;
