@@ -18,6 +18,19 @@ namespace {
 constexpr VkDeviceSize kMaxCommandBytes = VkDeviceSize(128) << 20;
 constexpr VkDeviceSize kCommandBytes = TP_MPLD_COMMAND_WORDS * sizeof(uint32_t);
 
+// Past one command per light and draw, the runs of reached meshlets may take this much.
+constexpr VkDeviceSize kSpanBytes = VkDeviceSize(16) << 20;
+
+// Commands a draw may take per light: as many runs of reached meshlets as kSpanBytes lets every
+// light and draw have, up to TP_MPLD_MAX_SPANS_PER_DRAW (at least 1: one span). The courtyard
+// (17 draws) gets 16 up to 3,084 lights.
+uint32_t spansPerDraw(uint32_t lights, size_t draws) {
+    const VkDeviceSize perSpan =
+        std::max<VkDeviceSize>(VkDeviceSize(lights) * draws, 1) * kCommandBytes;
+    return uint32_t(
+        std::clamp<VkDeviceSize>(kSpanBytes / perSpan, 1, TP_MPLD_MAX_SPANS_PER_DRAW));
+}
+
 glm::ivec4 toIvec(const ScreenRect& r) {
     return {r.x0, r.y0, r.x1, r.y1};
 }
@@ -56,9 +69,11 @@ std::string LightDrawPass::unavailable(const GpuContext& ctx, const SceneGpu& sc
     return {};
 }
 
-LightDrawPass::LightDrawPass(GpuContext& ctx, const SceneGpu& scene, uint32_t localLights)
-    : ctx_(ctx), scene_(scene), lights_(localLights),
-      draws_(passes::opaqueAndMaskedDraws(scene)) {
+LightDrawPass::LightDrawPass(GpuContext& ctx, SceneGpu& scene, uint32_t localLights,
+                             bool meshletReach)
+    : ctx_(ctx), scene_(scene), lights_(localLights), meshletReach_(meshletReach),
+      draws_(passes::opaqueAndMaskedDraws(scene)), spans_(spansPerDraw(localLights, draws_.size())) {
+    scene.buildMeshlets(); // the commands are spans of meshlets (light_draws.comp)
     // Runs of one cull mode in draw order: a call cannot change the cull mode between its
     // draws, and keeping the order keeps which of two coincident surfaces takes a light.
     for (size_t i = 0; i < draws_.size(); ++i) {
@@ -87,14 +102,16 @@ void LightDrawPass::plan(FrameGraph& graph) {
     const VkDeviceSize lights = std::max<uint32_t>(lights_, 1);
     commands_ = graph.createBuffer(
         "light_draw_commands",
-        lights * std::max<VkDeviceSize>(draws_.size(), 1) * kCommandBytes,
-        "per local light a region of indexed indirect draws (one per draw of the scene), "
-        "compacted per run of one cull mode");
+        lights * std::max<VkDeviceSize>(draws_.size(), 1) * spans_ * kCommandBytes,
+        "per local light a region of indexed indirect draws (per draw of the scene up to " +
+            std::to_string(spans_) + " runs of the meshlets the light reaches), compacted per "
+            "run of one cull mode");
     counts_ = graph.createBuffer("light_draw_counts",
                                  lights * std::max<VkDeviceSize>(runs(), 1) * sizeof(uint32_t),
                                  "per local light and run: its indirect draws this frame");
-    meshesBuffer_ = graph.createBuffer("light_draw_meshes", lights * sizeof(uint32_t),
-                                       "per local light: the opaque and masked draws it touches");
+    meshesBuffer_ = graph.createBuffer("light_draw_meshes", lights * 2 * sizeof(uint32_t),
+                                       "per local light: the opaque and masked draws it touches "
+                                       "and the triangles its commands draw");
     graph.addPass("light_draws",
                   {{commands_, Use::StorageWrite, TP_MPLD_BINDING_COMMANDS},
                    {counts_, Use::StorageWrite, TP_MPLD_BINDING_COUNTS},
@@ -107,7 +124,8 @@ void LightDrawPass::prepare(FrameGraph& graph) {
     set_ = graph.createPassSet("light_draws", VK_NULL_HANDLE,
                                {{TP_MPLD_BINDING_PARAMS, params_.buffer},
                                 {TP_MPLD_BINDING_LIGHTS, lightRows_.buffer},
-                                {TP_MPLD_BINDING_DRAWS, drawRows_.buffer}});
+                                {TP_MPLD_BINDING_DRAWS, drawRows_.buffer},
+                                {TP_MPLD_BINDING_MESHLETS, scene_.meshletBuffer()}});
     layout_ = scene_.createPipelineLayout(set_.layout);
     pipeline_ = createComputePipeline(ctx_, "mp_light_draws_comp", {}, layout_, &set_);
 }
@@ -115,7 +133,8 @@ void LightDrawPass::prepare(FrameGraph& graph) {
 void LightDrawPass::update(const LightPlan& plan) {
     const gpu::FrameUniforms& f = scene_.shadingFrame();
     gpu::LightDrawParams params{lights_, uint32_t(draws_.size()), runs(),
-                                f.viewport.w <= 1 ? 1u : 0u}; // as light_plan's shadedInsideBox
+                                f.viewport.w <= 1 ? 1u : 0u, // as light_plan's shadedInsideBox
+                                glm::vec3(f.eyeWorld), spans_, meshletReach_ ? 1u : 0u};
     std::memcpy(params_.mapped, &params, sizeof(params));
     writeLightRows(scene_, plan, lights_, lightRows_.mapped);
     auto* drawRows = static_cast<gpu::LightDrawDraw*>(drawRows_.mapped);
@@ -134,6 +153,8 @@ void LightDrawPass::update(const LightPlan& plan) {
         row.material = d.material;
         row.run = run;
         row.runFirst = runFirst_[run];
+        row.firstMeshlet = d.firstMeshlet;
+        row.meshletCount = d.meshletCount;
         drawRows[i] = row;
     }
 }
@@ -153,21 +174,27 @@ void LightDrawPass::recordPass(PassContext& pc) {
 
 uint32_t LightDrawPass::record(PassContext& pc, uint32_t slot) const {
     const VkBuffer commands = pc.buffer(commands_).buffer, counts = pc.buffer(counts_).buffer;
-    const VkDeviceSize region = VkDeviceSize(slot) * draws_.size();
+    const VkDeviceSize region = VkDeviceSize(slot) * draws_.size() * spans_;
     for (uint32_t r = 0; r < runs(); ++r) {
         vkCmdSetCullMode(pc.cmd, runDoubleSided_[r] ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-        vkCmdDrawIndexedIndirectCount(pc.cmd, commands, (region + runFirst_[r]) * kCommandBytes,
+        vkCmdDrawIndexedIndirectCount(pc.cmd, commands,
+                                      (region + VkDeviceSize(runFirst_[r]) * spans_) * kCommandBytes,
                                       counts, (VkDeviceSize(slot) * runs() + r) * sizeof(uint32_t),
-                                      runSize_[r], uint32_t(kCommandBytes));
+                                      runSize_[r] * spans_, uint32_t(kCommandBytes));
     }
     return runs();
 }
 
 void LightDrawPass::collect(FrameGraph& graph) {
     std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(meshesBuffer_));
+    std::vector<uint32_t> words(size_t(lights_) * 2, 0);
+    std::memcpy(words.data(), bytes.data(), std::min(bytes.size(), words.size() * sizeof(uint32_t)));
     meshes_.assign(lights_, 0);
-    std::memcpy(meshes_.data(), bytes.data(),
-                std::min(bytes.size(), meshes_.size() * sizeof(uint32_t)));
+    triangles_.assign(lights_, 0);
+    for (uint32_t s = 0; s < lights_; ++s) {
+        meshes_[s] = words[size_t(s) * 2];
+        triangles_[s] = words[size_t(s) * 2 + 1];
+    }
     collected_ = true;
 }
 

@@ -4,7 +4,8 @@
 // local light's opaque and masked draws are selected by the light plan's own rules (screen
 // rectangles overlap; at 1x the sphere reaches the box) and written as indexed indirect draws
 // into a region of its own (one command per draw of the scene, in draw order, compacted per run
-// of one cull mode), with a count per run. The light passes then record, per light, its scissor
+// of one cull mode), with a count per run. A command draws the span of the mesh's meshlets that
+// the light's sphere reaches (light_draws.comp), from the scene's meshlet index buffer. The light passes then record, per light, its scissor
 // and one vkCmdDrawIndexedIndirectCount per run: the recording no longer depends on which draws
 // a light touches, and no view builds per-light lists on the CPU.
 //
@@ -41,7 +42,10 @@ class LightDrawPass {
     // lists on the CPU, as --light-draws cpu, and says so in left_out).
     static std::string unavailable(const GpuContext& ctx, const SceneGpu& scene,
                                    uint32_t localLights);
-    LightDrawPass(GpuContext& ctx, const SceneGpu& scene, uint32_t localLights);
+    // Builds the scene's meshlets if nobody has: the commands draw runs of them. meshletReach:
+    // only the meshlets each light reaches (every shaded point on its triangle: 1x, or MSAA at
+    // sample rate), else whole meshes.
+    LightDrawPass(GpuContext& ctx, SceneGpu& scene, uint32_t localLights, bool meshletReach);
     ~LightDrawPass();
     LightDrawPass(const LightDrawPass&) = delete;
     LightDrawPass& operator=(const LightDrawPass&) = delete;
@@ -58,10 +62,12 @@ class LightDrawPass {
     // pipeline (scene_material_vert), the scene set and the scene's index buffer, and pushes
     // DrawPush with the light. Returns the calls recorded.
     uint32_t record(PassContext& pc, uint32_t slot) const;
-    // After a frame: each local light's opaque and masked draws (light_draw_meshes).
+    // After a frame: each local light's opaque and masked draws and the triangles its commands
+    // draw (light_draw_meshes).
     void collect(FrameGraph& graph);
     bool collected() const { return collected_; }
     const std::vector<uint32_t>& meshes() const { return meshes_; }
+    const std::vector<uint32_t>& triangles() const { return triangles_; }
     uint32_t runs() const { return uint32_t(runFirst_.size()); }
 
   private:
@@ -69,7 +75,9 @@ class LightDrawPass {
     GpuContext& ctx_;
     const SceneGpu& scene_;
     const uint32_t lights_;
+    const bool meshletReach_;
     std::vector<const DrawItem*> draws_; // opaque then masked, the scene's order
+    const uint32_t spans_;               // commands per draw in a light's region
     std::vector<uint32_t> runFirst_;     // per run: its first draw
     std::vector<uint32_t> runSize_;
     std::vector<bool> runDoubleSided_;
@@ -78,7 +86,7 @@ class LightDrawPass {
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
-    std::vector<uint32_t> meshes_;
+    std::vector<uint32_t> meshes_, triangles_;
     bool collected_ = false;
 };
 

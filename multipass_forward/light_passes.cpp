@@ -86,13 +86,13 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
     mapRenders_ = shading.mapRenders();
 }
 
-// The scene set and index buffer the light's draws read: with GPU lists the scene's own (the
-// commands are whole meshes), else drawOpaque's.
+// The scene set and index buffer the light's draws read: with GPU lists the meshlet index
+// buffer (the commands are spans of meshlets), else drawOpaque's.
 void LightPasses::bind(PassContext& pc, VkPipeline pipeline) const {
     if (!env_.lightDraws) return bindSceneDraws(pc.cmd, env_, pipeline);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     env_.scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    env_.scene.bindIndexBuffer(pc.cmd);
+    env_.scene.bindMeshletIndexBuffer(pc.cmd);
 }
 
 void LightPasses::recordDraws(PassContext& pc, const LightBatch& batch) {

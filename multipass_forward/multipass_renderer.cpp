@@ -100,7 +100,8 @@ class MultipassForwardRenderer final : public Renderer {
             std::vector<PassUse> uses = withCullUses(shadingUses(t_, last, true));
             if (lists_ == LightLists::Gpu && !passes::opaqueAndMaskedDraws(scene_).empty()) {
                 // Each light's draws, written on the GPU every frame (light_draw_pass.h).
-                lightDraws_.emplace(ctx_, scene_, plan_.localLights);
+                lightDraws_.emplace(ctx_, scene_, plan_.localLights,
+                                    !mp_.sampling.perPixelUnderMsaa());
                 lightDraws_->plan(graph);
                 for (const PassUse& u : lightDraws_->drawUses())
                     uses.push_back(u);
@@ -296,6 +297,12 @@ RendererStats MultipassForwardRenderer::stats() const {
     // for them; how often the CPU built per-light lists (with gpu: never, on any view).
     count("light_draws_gpu", lightDraws_ ? 1.0 : 0.0);
     if (lightDraws_) count("light_passes_indirect_calls", lights_ ? lights_->draws() : 0);
+    if (lightDraws_ && lightDraws_->collected()) { // the spans of meshlets the lights reach
+        double triangles = 0;
+        for (const LightBatch& b : plan_.batches)
+            triangles += lightDraws_->triangles()[b.slot];
+        count("light_passes_triangles", triangles);
+    }
     count("light_lists_cpu_builds", cpuListBuilds_);
     // The same for the blended draws' lights (blended draws x lights tests on the CPU per view).
     count("blended_light_draws_gpu", blendedDraws_ ? 1.0 : 0.0);
@@ -312,8 +319,9 @@ RendererStats MultipassForwardRenderer::stats() const {
         if (cull_->collected() && !lightDraws_) count("light_passes_meshlet_draws", meshletDraws);
         if (lightDraws_)
             s.leftOut.push_back({"meshlet culling in light_passes",
-                                 "--light-draws gpu draws each lit mesh whole (the prepass and "
-                                 "base pass keep their culled meshlets)"});
+                                 "--light-draws gpu draws, of each lit mesh, the span of "
+                                 "meshlets its light reaches, not culled by the view (the "
+                                 "prepass and base pass keep their culled meshlets)"});
     }
     if (!listsWhy_.empty())
         s.leftOut.push_back({"light_draws (--light-draws gpu)", listsWhy_ + ": lists on the CPU"});

@@ -6,7 +6,17 @@
 // mpRectsOverlap, and mpSphereTouchesBox at 1x) into its own region, compacted per run of one
 // cull mode, in draw order; then the run counts and the light's mesh count. The order is the
 // CPU plan's, so the light passes draw each light's meshes in the same order as before.
+//
+// A draw's commands draw not the whole mesh but the runs of its meshlets whose bounding sphere
+// the light's sphere reaches (consecutive in the meshlet index buffer, which holds each draw's
+// meshlets side by side, in order), at most spansPerDraw of them: the last one then reaches on
+// over the gaps to the last meshlet reached. A triangle left out lies in a meshlet the light
+// cannot reach, where evalLight gives exactly 0, so drawing it would add nothing. A mesh whose
+// meshlets the light reaches none of gets no command. Not under MSAA at pixel rate, where the
+// pixel centre a fragment is shaded at may lie off its triangle (params.meshletReach). On lavapipe the light passes' time is
+// shading and geometry of what each light's draws cover, drawn again for every light.
 #include "include/shared.h"
+#include "include/meshlets.h"
 #include "multipass_forward/light_draws.h"
 
 layout(local_size_x = TP_MPLD_GROUP) in;
@@ -27,15 +37,63 @@ layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_COUNTS) writeonly bu
     uint counts[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_MESHES) writeonly buffer MeshBlock {
-    uint meshes[];
+    uvec2 meshes[];
 };
+layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_MESHLETS) readonly buffer MeshletBlock {
+    MeshletGpu meshlets[];
+};
+
+// Command `at`: draw d's indices [first, end) of the meshlet index buffer.
+void writeCommand(uint at, LightDrawDraw d, uint first, uint end) {
+    const uint w = at * TP_MPLD_COMMAND_WORDS;
+    commands[w + 0u] = end - first;
+    commands[w + 1u] = 1u;
+    commands[w + 2u] = first;
+    commands[w + 3u] = uint(d.vertexOffset);
+    commands[w + 4u] = d.material; // firstInstance: the material (scene_material_vert)
+}
+
+// Writes draw d's commands for light l from command `base` of its light's region: the runs
+// of meshlets the light reaches (the meshlet sphere grown by the error of the camera-relative
+// subtraction, include/meshlets.h, the light's range by a margin over evalLight's own test; a
+// directional light, TP_MPLD_FLAG_ALL, reaches every meshlet, and so does every light without
+// params.meshletReach). Returns (commands, triangles).
+uvec2 writeReachedRuns(LightDrawLight l, LightDrawDraw d, uint base) {
+    const bool all = (l.flags & TP_MPLD_FLAG_ALL) != 0u || params.meshletReach == 0u;
+    const vec3 eye = params.eyeWorld;
+    const float eyeMagnitude = length(eye);
+    uint written = 0u, triangles = 0u, first = 0u, end = 0u;
+    bool open = false;
+    for (uint k = 0u; k < d.meshletCount; ++k) {
+        const MeshletGpu ml = meshlets[d.firstMeshlet + k];
+        const float slack =
+            (length(ml.center) + eyeMagnitude + ml.radius) * TP_MESHLET_POSITION_EPS;
+        const float reach = l.sphere.w * 1.0001 + ml.radius + slack;
+        const vec3 between = ml.center - eye - l.sphere.xyz;
+        if (!all && dot(between, between) > reach * reach) continue;
+        if (open && end != ml.firstIndex && written + 1u < params.spansPerDraw) {
+            writeCommand(base + written++, d, first, end);
+            triangles += (end - first) / 3u;
+            open = false;
+        }
+        if (!open) first = ml.firstIndex;
+        open = true;
+        end = ml.firstIndex + 3u * ml.triangleCount;
+    }
+    if (open) {
+        writeCommand(base + written++, d, first, end);
+        triangles += (end - first) / 3u;
+    }
+    return uvec2(written, triangles);
+}
 
 void main() {
     const uint slot = gl_GlobalInvocationID.x;
     if (slot >= params.lightCount || params.drawCount == 0u) return;
     const LightDrawLight l = lightRows[slot];
-    const uint region = slot * params.drawCount, countBase = slot * params.runCount;
-    uint run = 0u, n = 0u, total = 0u;
+    const uint region = slot * params.drawCount * params.spansPerDraw,
+               countBase = slot * params.runCount;
+    uint run = 0u, n = 0u, total = 0u, triangles = 0u;
     for (uint i = 0u; i < params.drawCount; ++i) { // an explicit count (docs: LAVAPIPE.md)
         const LightDrawDraw d = drawRows[i];
         if (d.run != run) {
@@ -44,15 +102,11 @@ void main() {
             n = 0u;
         }
         if (!mpLightTouchesDraw(l, d, params.boxTest != 0u)) continue;
-        const uint w = (region + d.runFirst + n) * TP_MPLD_COMMAND_WORDS;
-        commands[w + 0u] = d.indexCount;
-        commands[w + 1u] = 1u;
-        commands[w + 2u] = d.firstIndex;
-        commands[w + 3u] = uint(d.vertexOffset);
-        commands[w + 4u] = d.material; // firstInstance: the material (scene_material_vert)
-        ++n;
         ++total;
+        const uvec2 wrote = writeReachedRuns(l, d, region + d.runFirst * params.spansPerDraw + n);
+        n += wrote.x;
+        triangles += wrote.y;
     }
     counts[countBase + run] = n;
-    meshes[slot] = total;
+    meshes[slot] = uvec2(total, triangles);
 }

@@ -10,10 +10,15 @@
 #define TP_MPLD_BINDING_DRAWS 2    // LightDrawDraw per opaque then masked draw (per view)
 #define TP_MPLD_BINDING_COMMANDS 3 // VkDrawIndexedIndirectCommand (5 words): per light a region
 #define TP_MPLD_BINDING_COUNTS 4   // uint per (light, run): its commands written
-#define TP_MPLD_BINDING_MESHES 5   // uint per light: the opaque and masked draws it touches
+#define TP_MPLD_BINDING_MESHES 5   // uvec2 per light: the opaque and masked draws it touches,
+                                   // and the triangles its commands draw
+#define TP_MPLD_BINDING_MESHLETS 6 // the scene's MeshletGpu[] (include/meshlets.h)
 
 #define TP_MPLD_GROUP 64        // lights per workgroup (one invocation walks one light's draws)
 #define TP_MPLD_COMMAND_WORDS 5 // sizeof(VkDrawIndexedIndirectCommand) / 4
+// At most this many commands per draw and light: runs of the meshlets the light reaches
+// (fewer where lights x draws x this many commands would pass the pass's memory limit).
+#define TP_MPLD_MAX_SPANS_PER_DRAW 16u
 // A light that touches every draw on screen: a directional light beyond the base pass's.
 #define TP_MPLD_FLAG_ALL 1u
 
@@ -23,9 +28,18 @@ namespace tp::gpu {
 
 TP_STRUCT(LightDrawParams) {
     uint lightCount; // local lights (rows of LightDrawLight)
-    uint drawCount;  // rows of LightDrawDraw: each light's region holds drawCount commands
+    uint drawCount;  // rows of LightDrawDraw: a light's region holds drawCount x spansPerDraw
     uint runCount;   // runs of draws of one cull mode: counts per light
     uint boxTest;    // 1: the sphere-box test too (1x); 0: screen rectangles only (MSAA)
+    vec3 eyeWorld;   // the eye that camera-relative positions are relative to
+    uint spansPerDraw; // commands a draw may take in a light's region (light_draws.comp)
+    // 1: only the meshlets a light reaches (every shaded point lies on its triangle: 1x and
+    // sample-rate MSAA); 0: whole meshes (pixel-rate MSAA shades at the pixel centre, which
+    // may lie off the triangle, at a grazing angle far off it).
+    uint meshletReach;
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 // A pixel rectangle [x0, x1) x [y0, y1) is (x0, y0, x1, y1), as mp::ScreenRect.
@@ -48,12 +62,12 @@ TP_STRUCT(LightDrawDraw) {
     uint material;   // written as the command's firstInstance (scene_material_vert)
     uint run;        // its run: consecutive draws of one cull mode, in draw order
     uint runFirst;   // the run's first draw: its commands' offset in a light's region
-    uint pad0;
-    uint pad1;
+    uint firstMeshlet; // its meshlets (SceneGpu::buildMeshlets), in the meshlet index buffer
+    uint meshletCount;
 };
 
 #ifndef TP_GLSL
-static_assert(sizeof(LightDrawParams) == 16);
+static_assert(sizeof(LightDrawParams) == 48);
 static_assert(sizeof(LightDrawLight) == 48);
 static_assert(offsetof(LightDrawLight, flags) == 32);
 static_assert(offsetof(LightDrawLight, light) == 36);

@@ -9,6 +9,7 @@
 
 #include "core/cli/shadow_option.h"
 #include "core/runner/render_session.h"
+#include "core/scene/meshlets.h"
 #include "gpu_test_util.h"
 
 // Named: the GPU tests build as unity files, where other tests' anonymous helpers are visible.
@@ -146,6 +147,57 @@ TEST(MultipassLightDrawsFallback, WithoutDualSourceBlendingBlendedLightsStayOnTh
     EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba));
     for (const char* name : kPlanCounters)
         EXPECT_EQ(gpu.stats.counter(name, -1), cpu.stats.counter(name, -2)) << name;
+    expectNoValidationMessages(*ctx);
+}
+
+// Triangles of the meshlets (core/scene/meshlets.h) of every opaque and masked mesh whose sphere
+// a light at `centre` with range `range` reaches, the reach scaled by `scale`; and of the meshes
+// its sphere reaches at all (their boxes), whole.
+struct Reach {
+    double meshlets = 0, meshes = 0;
+};
+Reach reachedTriangles(const Scene& scene, glm::vec3 centre, float range, float scale) {
+    Reach r;
+    for (const Mesh& mesh : scene.meshes) {
+        if (scene.materials[mesh.material].alphaMode == AlphaMode::Blend) continue;
+        const glm::vec3 nearest = glm::clamp(centre, mesh.bounds.min, mesh.bounds.max);
+        if (glm::length(centre - nearest) > range) continue;
+        r.meshes += double(mesh.indices.size() / 3);
+        for (const Meshlet& m : buildMeshlets(mesh).meshlets)
+            if (glm::length(m.center - centre) <= (range + m.radius) * scale)
+                r.meshlets += m.triangleCount;
+    }
+    return r;
+}
+
+// light_draws.comp draws, of each mesh a light touches, only the runs of meshlets its sphere
+// reaches: one small light by the courtyard's floor submits the triangles of the meshlets a
+// CPU count says it reaches (to a rounding of the reach), far fewer than its meshes hold, and
+// the image is the CPU lists' (whole meshes) bit for bit: what is left out adds exactly 0.
+TEST(MultipassLightDrawsMeshlets, ALightDrawsOnlyTheMeshletsItReaches) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(0, 1);
+    const float diagonal = glm::length(scene.bounds.max - scene.bounds.min);
+    Light l;
+    l.position = scene.camera.target + glm::vec3(0.0f, 0.02f * diagonal, 0.0f);
+    l.range = 0.06f * diagonal;
+    l.intensity = 20.0f;
+    scene.lights = {l};
+    const RunResult cpu = render(*ctx, scene, Config{"1x"}, "cpu");
+    const RunResult gpu = render(*ctx, scene, Config{"1x"}, "gpu");
+    ASSERT_EQ(gpu.stats.counter("light_draws_gpu"), 1.0);
+    EXPECT_TRUE(sameBits(gpu.hdr.rgba, cpu.hdr.rgba))
+        << "colour differs in " << differingPixels(gpu.hdr, cpu.hdr) << " pixels";
+    const double submitted = gpu.stats.counter("light_passes_triangles", -1);
+    const Reach inner = reachedTriangles(scene, l.position, l.range, 0.999f);
+    const Reach outer = reachedTriangles(scene, l.position, l.range, 1.001f);
+    std::printf("[ light draws ] one light: %.0f triangles submitted, its meshlets %.0f-%.0f, "
+                "its meshes %.0f\n", submitted, inner.meshlets, outer.meshlets, outer.meshes);
+    EXPECT_GT(inner.meshlets, 0.0) << "the light reaches no meshlet: a weak test";
+    EXPECT_GE(submitted, inner.meshlets);
+    EXPECT_LE(submitted, outer.meshlets);
+    EXPECT_LT(outer.meshlets, 0.7 * outer.meshes) << "its meshes are hardly larger: a weak test";
     expectNoValidationMessages(*ctx);
 }
 

@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
-# Prints one line per configuration: the configuration and the SHA-256 of the EXR it
-# renders (and of its debug images). Run before and after a change that must not move a pixel (a refactoring), then
-# diff the two outputs: every pipeline and the reference on the built-in scene, 1x and 4x
-# at both shading rates, tiled and clustered, every light-list layout and culling mode.
+# Prints one line per configuration: the configuration and the pixels' hash of the EXR it
+# renders (and of its debug images). Run before and after a change that must not move a pixel
+# (a refactoring), then diff the two outputs: every pipeline and the reference on the built-in
+# scene, 1x and 4x at both shading rates, tiled and clustered, every light-list layout and
+# culling mode.
 #   tests/tools/image_fingerprints.sh BUILD/triptych > before.txt
 # ONLY=REGEX (an extended regular expression) keeps the configurations it matches, e.g.
 #   ONLY='forwardplus.*clustered|light-bin gpu' tests/tools/image_fingerprints.sh BUILD/triptych
-# The EXR holds only pixels and fixed attributes, so identical pixels hash identically.
+# The hashes are of the pixels (tests/tools/pixel_hashes.sh): how the writer compresses them
+# does not change a fingerprint.
 set -euo pipefail
 exe=${1:?usage: image_fingerprints.sh PATH/TO/triptych}
+tools=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 scene=builtin:courtyard-small
@@ -55,6 +58,6 @@ for c in "${configs[@]}"; do
     out="$work/$i"
     # shellcheck disable=SC2086
     "$exe" render "$scene" "${common[@]}" $c --out "$out" >"$work/log" 2>&1 || { echo "FAILED: $c"; cat "$work/log"; exit 1; }
-    echo "$c  $(cd "$out" && sha256sum -- *.exr *debug*.png 2>/dev/null | cut -c1-16 | tr '\n' ' ')"
+    echo "$c  $(cd "$out" && shopt -s nullglob && "$tools/pixel_hashes.sh" *.exr *debug*.png)"
     i=$((i + 1))
 done

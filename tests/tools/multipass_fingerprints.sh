@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Multipass forward's images, one line per configuration with the SHA-256 of its EXR: run with a
+# Multipass forward's images, one line per configuration with its EXR's pixel hash: run with a
 # build before a change and with one after it, on the same machine (docs: LAVAPIPE.md, bit-identical
 # only on one machine), and diff the two outputs. Covers 1x and 4x at both shading rates, every
 # --blended-lights, fp16, shadows, --cull-geometry frustum and full, the built-in courtyard, and
@@ -8,6 +8,7 @@
 #   tests/tools/multipass_fingerprints.sh BUILD/triptych [ARGS...] > before.txt
 set -euo pipefail
 exe=${1:?usage: multipass_fingerprints.sh PATH/TO/triptych [ARGS...]}
+tools=$(cd "$(dirname "$0")" && pwd)
 shift
 extra=("$@")
 work=$(mktemp -d)
@@ -38,6 +39,6 @@ for c in "${configs[@]}"; do
     # shellcheck disable=SC2086
     "$exe" render $c --pipeline multipass_forward --frames 1 --warmup 0 "${extra[@]}" \
         --out "$out" >"$work/log" 2>&1 || { echo "FAILED: $c"; cat "$work/log"; exit 1; }
-    echo "$c  $(cd "$out" && sha256sum -- *.exr | cut -c1-16 | tr '\n' ' ')"
+    echo "$c  $(cd "$out" && "$tools/pixel_hashes.sh" *.exr)"
     i=$((i + 1))
 done
