@@ -110,11 +110,14 @@ void measurePairs(CompareRecord& r, const std::string& out) {
         for (size_t k = i + 1; k < r.pipelines.size(); ++k)
             if (r.pipelines[i].run && r.pipelines[k].run) ran.push_back({i, k});
     r.pairs.resize(ran.size());
+    std::vector<ImageRGBA> shown(r.pipelines.size()); // each pipeline tonemapped once
+    forEachInParallel(shown.size(), [&](size_t i) {
+        if (r.pipelines[i].run) shown[i] = tonemapToDisplay(r.pipelines[i].run->hdr, r.exposureEv);
+    });
     forEachInParallel(ran.size(), [&](size_t n) { // each pair its own slot and files
         const PipelineOutcome &a = r.pipelines[ran[n].first], &b = r.pipelines[ran[n].second];
         PairOutcome pair{a.name, b.name, computeError(a.run->hdr, b.run->hdr, hdrOptions),
-                         computeError(tonemapToDisplay(a.run->hdr, r.exposureEv),
-                                      tonemapToDisplay(b.run->hdr, r.exposureEv))};
+                         computeError(shown[ran[n].first], shown[ran[n].second])};
         ImageRGBA diff = signedDifference(a.run->hdr, b.run->hdr);
         pair.diffP99 = differencePercentile99(diff);
         writeDifference(out, pairDiffStem(a.name, b.name), diff, r.diffScale,
