@@ -203,6 +203,7 @@ class VisbufferRenderer final : public Renderer {
 
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;
     RendererStats stats() const override;
+    PassOpWork textureWork() const;
 
   private:
     uint32_t slices() const { return vis_.assign.slicesOrZero(); }
@@ -362,10 +363,24 @@ RendererStats VisbufferRenderer::stats() const {
                            false, "lights_per_tile_mean, per pixel with geometry"});
     addTiledWork(s, {"tiled_lighting", t.lights, t.edges, t.meanLights(),
                      double(lighting_.candidates()), samples});
-    s.opWork.push_back(materialFetchWork(scene_, "tiled_lighting",
-                                         {DrawFilter::Opaque, DrawFilter::Mask},
-                                         PassLightWork::Base::CoveredPixels));
+    s.opWork.push_back(textureWork());
     return s;
+}
+
+// The resolve's texture fetches per pixel with geometry. On a CPU device its one texture walk
+// (vis_read.glsl, TP_VIS_SPEC_ONE_TEXTURE_WALK) has a sample site per texture of the scene,
+// and every site runs in every lane: the fetches made are the scene's texture count, not the
+// material's slots. On a GPU a site no lane takes costs nothing: the material's slots.
+PassOpWork VisbufferRenderer::textureWork() const {
+    if (!ctx_.isCpuDevice())
+        return materialFetchWork(scene_, "tiled_lighting", {DrawFilter::Opaque, DrawFilter::Mask},
+                                 PassLightWork::Base::CoveredPixels);
+    const size_t textures = std::max<size_t>(1, scene_.scene().textures.size());
+    return {"tiled_lighting", PassOpWork::Kind::TextureFetches,
+            PassLightWork::Base::CoveredPixels, double(textures), false,
+            "every texture of the scene (" + std::to_string(textures) +
+                "), per pixel with geometry: the one texture walk of a CPU device samples each "
+                "in every lane"};
 }
 
 } // namespace
