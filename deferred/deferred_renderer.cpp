@@ -26,7 +26,11 @@ class DeferredRenderer final : public Renderer {
   public:
     explicit DeferredRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          def_(def::readSettings(info.settings)), gbuffer_(info.ctx, info.scene),
+          // auto: binned. Its transparent lists add the ambient term last under binned culling
+          // and first under all (docs/deferred.md): another image, and no faster on the H200.
+          def_(la::withResolvedCull(def::readSettings(info.settings), info.ctx,
+                                    info.scene.lightsGpu().size(), false)),
+          gbuffer_(info.ctx, info.scene),
           lighting_(info.ctx, info.scene, def_.debug, def_.assign.binned(),
                     def_.assign.slicesOrZero(), la::binsOnGpu(info.ctx, def_.assign.bin),
                     def_.manyViews),
@@ -281,6 +285,7 @@ RendererStats DeferredRenderer::stats() const {
         s.counters.push_back({"light_candidates", double(lighting_.candidates())});
         if (binned()) // --light-bin, resolved
             s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
+        s.counters.push_back({"light_cull_all", binned() ? 0.0 : 1.0}); // --light-cull, resolved
         if (lighting_.gpuBinning()) // readbacks of a plan-time sizing run (views add none)
             s.counters.push_back({"light_bin_sizing_runs", double(lighting_.sizingRuns())});
     }

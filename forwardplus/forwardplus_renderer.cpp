@@ -46,7 +46,9 @@ class ForwardPlusRenderer final : public Renderer {
   public:
     explicit ForwardPlusRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          fp_(fp::readSettings(info.settings)), manyViews_(info.settings.manyViews),
+          fp_(la::withResolvedCull(fp::readSettings(info.settings), info.ctx,
+                                   info.scene.lightsGpu().size(), true)),
+          manyViews_(info.settings.manyViews),
           hdrFormat_(fp_.hdr == HdrStorage::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                  : VK_FORMAT_R32G32B32A32_SFLOAT),
           r_(fp::resolve(ctx_, scene_, features_, fp_)) {
@@ -256,6 +258,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (binned())
             add("binned_candidates", double(r_.gpuBinning ? bins_.slots : bins_.candidates.size()));
         if (binned()) add("light_binning_on_gpu", r_.gpuBinning ? 1.0 : 0.0); // --light-bin, resolved
+        add("light_cull_all", binned() ? 0.0 : 1.0); // --light-cull, resolved
         if (binning_) // readbacks of a plan-time sizing run: 1 per plan where views follow on the
                       // GPU
             add("light_bin_sizing_runs", double(binning_->sizingRuns()));

@@ -27,8 +27,7 @@ constexpr VkDeviceSize kSpanBytes = VkDeviceSize(16) << 20;
 uint32_t spansPerDraw(uint32_t lights, size_t draws) {
     const VkDeviceSize perSpan =
         std::max<VkDeviceSize>(VkDeviceSize(lights) * draws, 1) * kCommandBytes;
-    return uint32_t(
-        std::clamp<VkDeviceSize>(kSpanBytes / perSpan, 1, TP_MPLD_MAX_SPANS_PER_DRAW));
+    return uint32_t(std::clamp<VkDeviceSize>(kSpanBytes / perSpan, 1, TP_MPLD_MAX_SPANS_PER_DRAW));
 }
 
 glm::ivec4 toIvec(const ScreenRect& r) {
@@ -72,7 +71,8 @@ std::string LightDrawPass::unavailable(const GpuContext& ctx, const SceneGpu& sc
 LightDrawPass::LightDrawPass(GpuContext& ctx, SceneGpu& scene, uint32_t localLights,
                              bool meshletReach)
     : ctx_(ctx), scene_(scene), lights_(localLights), meshletReach_(meshletReach),
-      draws_(passes::opaqueAndMaskedDraws(scene)), spans_(spansPerDraw(localLights, draws_.size())) {
+      draws_(passes::opaqueAndMaskedDraws(scene)),
+      spans_(spansPerDraw(localLights, draws_.size())) {
     scene.buildMeshlets(); // the commands are spans of meshlets (light_draws.comp)
     // Runs of one cull mode in draw order: a call cannot change the cull mode between its
     // draws, and keeping the order keeps which of two coincident surfaces takes a light.
@@ -104,7 +104,8 @@ void LightDrawPass::plan(FrameGraph& graph) {
         "light_draw_commands",
         lights * std::max<VkDeviceSize>(draws_.size(), 1) * spans_ * kCommandBytes,
         "per local light a region of indexed indirect draws (per draw of the scene up to " +
-            std::to_string(spans_) + " runs of the meshlets the light reaches), compacted per "
+            std::to_string(spans_) +
+            " runs of the meshlets the light reaches), compacted per "
             "run of one cull mode");
     counts_ = graph.createBuffer("light_draw_counts",
                                  lights * std::max<VkDeviceSize>(runs(), 1) * sizeof(uint32_t),
@@ -132,9 +133,13 @@ void LightDrawPass::prepare(FrameGraph& graph) {
 
 void LightDrawPass::update(const LightPlan& plan) {
     const gpu::FrameUniforms& f = scene_.shadingFrame();
-    gpu::LightDrawParams params{lights_, uint32_t(draws_.size()), runs(),
+    gpu::LightDrawParams params{lights_,
+                                uint32_t(draws_.size()),
+                                runs(),
                                 f.viewport.w <= 1 ? 1u : 0u, // as light_plan's shadedInsideBox
-                                glm::vec3(f.eyeWorld), spans_, meshletReach_ ? 1u : 0u};
+                                glm::vec3(f.eyeWorld),
+                                spans_,
+                                meshletReach_ ? 1u : 0u};
     std::memcpy(params_.mapped, &params, sizeof(params));
     writeLightRows(scene_, plan, lights_, lightRows_.mapped);
     auto* drawRows = static_cast<gpu::LightDrawDraw*>(drawRows_.mapped);
@@ -177,10 +182,10 @@ uint32_t LightDrawPass::record(PassContext& pc, uint32_t slot) const {
     const VkDeviceSize region = VkDeviceSize(slot) * draws_.size() * spans_;
     for (uint32_t r = 0; r < runs(); ++r) {
         vkCmdSetCullMode(pc.cmd, runDoubleSided_[r] ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-        vkCmdDrawIndexedIndirectCount(pc.cmd, commands,
-                                      (region + VkDeviceSize(runFirst_[r]) * spans_) * kCommandBytes,
-                                      counts, (VkDeviceSize(slot) * runs() + r) * sizeof(uint32_t),
-                                      runSize_[r] * spans_, uint32_t(kCommandBytes));
+        vkCmdDrawIndexedIndirectCount(
+            pc.cmd, commands, (region + VkDeviceSize(runFirst_[r]) * spans_) * kCommandBytes,
+            counts, (VkDeviceSize(slot) * runs() + r) * sizeof(uint32_t), runSize_[r] * spans_,
+            uint32_t(kCommandBytes));
     }
     return runs();
 }
@@ -188,7 +193,8 @@ uint32_t LightDrawPass::record(PassContext& pc, uint32_t slot) const {
 void LightDrawPass::collect(FrameGraph& graph) {
     std::vector<uint8_t> bytes = readbackBuffer(ctx_, graph.buffer(meshesBuffer_));
     std::vector<uint32_t> words(size_t(lights_) * 2, 0);
-    std::memcpy(words.data(), bytes.data(), std::min(bytes.size(), words.size() * sizeof(uint32_t)));
+    std::memcpy(words.data(), bytes.data(),
+                std::min(bytes.size(), words.size() * sizeof(uint32_t)));
     meshes_.assign(lights_, 0);
     triangles_.assign(lights_, 0);
     for (uint32_t s = 0; s < lights_; ++s) {

@@ -3,11 +3,12 @@
 // shaders/multipass_forward/light_draws.comp, --light-draws gpu, the default): every frame, each
 // local light's opaque and masked draws are selected by the light plan's own rules (screen
 // rectangles overlap; at 1x the sphere reaches the box) and written as indexed indirect draws
-// into a region of its own (one command per draw of the scene, in draw order, compacted per run
-// of one cull mode), with a count per run. A command draws the span of the mesh's meshlets that
-// the light's sphere reaches (light_draws.comp), from the scene's meshlet index buffer. The light passes then record, per light, its scissor
-// and one vkCmdDrawIndexedIndirectCount per run: the recording no longer depends on which draws
-// a light touches, and no view builds per-light lists on the CPU.
+// into a region of its own (up to 16 commands per draw of the scene, in draw order, compacted
+// per run of one cull mode), with a count per run: a draw's commands are the runs of its
+// meshlets that the light's sphere reaches (light_draws.comp), over the scene's meshlet index
+// buffer. The light passes then record, per light, its scissor and one
+// vkCmdDrawIndexedIndirectCount per run: the recording no longer depends on which draws a light
+// touches, and no view builds per-light lists on the CPU.
 //
 // Per view the CPU writes only what is O(lights + draws): each light's scissor (which the
 // recording needs anyway: a scissor cannot come from an indirect command) and each draw's screen

@@ -34,7 +34,8 @@ class VisbufferRenderer final : public Renderer {
   public:
     explicit VisbufferRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          vis_(vis::readSettings(info.settings)),
+          vis_(la::withResolvedCull(vis::readSettings(info.settings), info.ctx,
+                                    info.scene.lightsGpu().size(), true)),
           hasBlended_(hasBlendedDraws(info.features, info.scene)),
           blendInCompute_(hasBlended_ && vis_.blended == vis::Blended::Compute),
           table_(vis::makeDrawTable(info.scene, blendInCompute_)),
@@ -341,6 +342,7 @@ RendererStats VisbufferRenderer::stats() const {
     s.counters.push_back({"light_candidates", double(lighting_.candidates())});
     if (vis_.assign.binned())
         s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
+    s.counters.push_back({"light_cull_all", vis_.assign.binned() ? 0.0 : 1.0}); // resolved
     if (lighting_.gpuBinning()) // readbacks of a plan-time sizing run (views add none)
         s.counters.push_back({"light_bin_sizing_runs", double(lighting_.sizingRuns())});
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? t.edges / pixels : 0.0});
@@ -376,8 +378,11 @@ PassOpWork VisbufferRenderer::textureWork() const {
         return materialFetchWork(scene_, "tiled_lighting", {DrawFilter::Opaque, DrawFilter::Mask},
                                  PassLightWork::Base::CoveredPixels);
     const size_t textures = std::max<size_t>(1, scene_.scene().textures.size());
-    return {"tiled_lighting", PassOpWork::Kind::TextureFetches,
-            PassLightWork::Base::CoveredPixels, double(textures), false,
+    return {"tiled_lighting",
+            PassOpWork::Kind::TextureFetches,
+            PassLightWork::Base::CoveredPixels,
+            double(textures),
+            false,
             "every texture of the scene (" + std::to_string(textures) +
                 "), per pixel with geometry: the one texture walk of a CPU device samples each "
                 "in every lane"};

@@ -34,11 +34,13 @@ const IntegerKnob& slicesKnob() {
 const ChoiceKnob<Cull>& lightCullKnob() {
     static const ChoiceKnob<Cull> k{
         "light-cull",
-        {{Cull::Binned, "binned"}, {Cull::All, "all"}},
+        {{Cull::Auto, "auto"}, {Cull::Binned, "binned"}, {Cull::All, "all"}},
         "Which lights a tile tests: binned (only those whose conservative tile rectangle covers "
-        "it, "
-        "built as --light-bin says; cost lights + candidates) or all (every light: tiles x "
-        "lights); both keep exactly the same lists"};
+        "it, built as --light-bin says; cost lights + candidates), all (every light: tiles x "
+        "lights; both keep exactly the same lists) or auto (all on a GPU up to 2,048 lights for "
+        "forwardplus and visbuffer, where the binning passes cost more than the tests they "
+        "save; binned on a CPU device, past that and for deferred; counter light_cull_all says "
+        "which ran)"};
     return k;
 }
 
@@ -91,6 +93,11 @@ AssignSettings readAssignSettings(const RenderSettings& s) {
     a.cull = lightCullKnob().in(s);
     a.bin = lightBinKnob().in(s);
     return a;
+}
+
+Cull resolveCull(const GpuContext& ctx, Cull cull, size_t lights, bool allPays) {
+    if (cull != Cull::Auto) return cull;
+    return allPays && !ctx.isCpuDevice() && lights <= kAutoCullAllLights ? Cull::All : Cull::Binned;
 }
 
 bool binsOnGpu(const GpuContext& ctx, Bin bin) {

@@ -18,10 +18,16 @@ namespace tp::la {
 // two when something is blended). clustered: tiles x depth slices; one list per tile over
 // its whole depth span plus, per slice, a bitmask over that list.
 enum class Assign { Tiled, Clustered };
-// --light-cull binned|all. binned (default): each tile tests only the lights whose
-// conservative tile rectangle covers it (tile_candidates.h); all: every tile tests every
-// light (brute force, tiles x lights), kept as the yardstick the binned lists must equal.
-enum class Cull { Binned, All };
+// --light-cull auto|binned|all. binned: each tile tests only the lights whose conservative
+// tile rectangle covers it (tile_candidates.h); all: every tile tests every light (brute
+// force, tiles x lights), the yardstick the binned lists must equal; auto (default, resolved
+// by resolveCull before a renderer plans): all where the renderer gains by it, else binned.
+enum class Cull { Auto, Binned, All };
+// --light-cull auto takes `all` on a GPU up to this many lights, for the renderers whose lists
+// do not depend on it (Forward+, the visibility buffer): there the binning's passes cost more
+// than testing every light in every tile (H200, 1080p, 1,024 and 2,048 lights, 1x and 4x:
+// docs/clustered.md, "--light-cull auto").
+constexpr size_t kAutoCullAllLights = 2048;
 // --light-bin auto|cpu|gpu: where binned culling's candidate runs are built. cpu:
 // la::binLights, when planned and for every new view (light_bins.h); gpu: the light_binning
 // compute pass every frame (core/passes/light_binning.h), after a sizing run per view; auto
@@ -57,12 +63,23 @@ struct AssignSettings {
     Cull cull = Cull::Binned;
     Bin bin = Bin::Auto;
     bool clustered() const { return assign == Assign::Clustered; }
-    bool binned() const { return cull == Cull::Binned; }
+    bool binned() const { return cull != Cull::All; } // auto: binned until resolved
     // Depth slices when clustered, 0 when tiled (the passes' "no slices").
     uint32_t slicesOrZero() const { return clustered() ? slices : 0; }
 };
 // The knobs of tileSizeKnob() .. lightBinKnob() in `s` (their values checked by the schema).
 AssignSettings readAssignSettings(const RenderSettings& s);
+
+// --light-cull resolved on `ctx` for a scene of `lights` lights: auto is `all` on a GPU up to
+// kAutoCullAllLights where `allPays` (a renderer whose image is the same either way and that
+// gains by it), else binned; binned and all stay.
+Cull resolveCull(const GpuContext& ctx, Cull cull, size_t lights, bool allPays);
+// A renderer's settings (anything with an AssignSettings `assign`) with --light-cull resolved.
+template <class Settings>
+Settings withResolvedCull(Settings s, const GpuContext& ctx, size_t lights, bool allPays) {
+    s.assign.cull = resolveCull(ctx, s.assign.cull, lights, allPays);
+    return s;
+}
 
 // --light-bin resolved on `ctx`: true for gpu. A run reports it (counter
 // light_binning_on_gpu), so two runs of one command on one device report the same.

@@ -10,7 +10,8 @@
 #define TP_MPLD_BINDING_DRAWS 2    // LightDrawDraw per opaque then masked draw (per view)
 #define TP_MPLD_BINDING_COMMANDS 3 // VkDrawIndexedIndirectCommand (5 words): per light a region
 #define TP_MPLD_BINDING_COUNTS 4   // uint per (light, run): its commands written
-#define TP_MPLD_BINDING_MESHES 5   // uvec2 per light: the opaque and masked draws it touches,
+#define TP_MPLD_BINDING_MESHES                                                                     \
+    5                              // uvec2 per light: the opaque and masked draws it touches,
                                    // and the triangles its commands draw
 #define TP_MPLD_BINDING_MESHLETS 6 // the scene's MeshletGpu[] (include/meshlets.h)
 

@@ -61,7 +61,8 @@ std::vector<Config> configurations() {
         if (cull && assign) {
             for (const std::string& c : cull->values)
                 for (const std::string& a : assign->values)
-                    out.push_back({e.name, {{"light-cull", c}, {"light-assign", a}}});
+                    if (c != "auto") // resolves to one of the others
+                        out.push_back({e.name, {{"light-cull", c}, {"light-assign", a}}});
         } else {
             out.push_back({e.name, {}});
         }
@@ -70,7 +71,8 @@ std::vector<Config> configurations() {
             out.push_back({e.name, {{"light-assign", "clustered"}, {"light-loop", "subgroup"}}});
         if (knobOf(e, "deferred-lighting"))
             for (const std::string& c : cull ? cull->values : std::vector<std::string>{})
-                out.push_back({e.name, {{"deferred-lighting", "volumes"}, {"light-cull", c}}});
+                if (c != "auto")
+                    out.push_back({e.name, {{"deferred-lighting", "volumes"}, {"light-cull", c}}});
         if (knobOf(e, "vis-blended")) out.push_back({e.name, {{"vis-blended", "forward"}}});
     }
     return out;

@@ -193,7 +193,8 @@ TEST(MultipassLightDrawsMeshlets, ALightDrawsOnlyTheMeshletsItReaches) {
     const Reach inner = reachedTriangles(scene, l.position, l.range, 0.999f);
     const Reach outer = reachedTriangles(scene, l.position, l.range, 1.001f);
     std::printf("[ light draws ] one light: %.0f triangles submitted, its meshlets %.0f-%.0f, "
-                "its meshes %.0f\n", submitted, inner.meshlets, outer.meshlets, outer.meshes);
+                "its meshes %.0f\n",
+                submitted, inner.meshlets, outer.meshlets, outer.meshes);
     EXPECT_GT(inner.meshlets, 0.0) << "the light reaches no meshlet: a weak test";
     EXPECT_GE(submitted, inner.meshlets);
     EXPECT_LE(submitted, outer.meshlets);
