@@ -7,15 +7,18 @@
 #   tests/bench/view_update_path.sh build/triptych OUT 1920x1080 1024
 #   tests/bench/view_update_path.sh /path/to/base/triptych OUT_BASE 1920x1080 1024
 # On lavapipe a shorter path keeps it to minutes (8 views: a copy of the path with "frames": 8).
-# Usage: [FRAMES=N] view_update_path.sh BIN OUT [RES] [LIGHTS] [PATH_FILE] [PIPELINES] [EXTRA ARGS...]
-# (FRAMES: timed frames per view, 3 by default; EXTRA ARGS go to render, e.g. --light-bin gpu)
+# Usage: [FRAMES=N] [SCENE=S] view_update_path.sh BIN OUT [RES] [LIGHTS] [PATH_FILE] [PIPELINES]
+#        [EXTRA ARGS...]
+# (FRAMES: timed frames per view, 3 by default; SCENE: a glTF file or builtin:NAME, the
+# courtyard by default, whose camera path PATH_FILE must fit; EXTRA ARGS go to render, e.g.
+# --light-bin gpu)
 set -u
 bin=$1 out=$2 res=${3:-1920x1080} lights=${4:-1024} path=${5:-docs/recipes/courtyard_path.json}
 pipelines=${6:-forwardplus,deferred,visbuffer,multipass_forward}
 shift $(($# < 6 ? $# : 6))
 mkdir -p "$out"
 for p in ${pipelines//,/ }; do
-    "$bin" render builtin:courtyard --pipeline "$p" --res "$res" --lights "$lights" \
+    "$bin" render "${SCENE:-builtin:courtyard}" --pipeline "$p" --res "$res" --lights "$lights" \
         --camera-path "$path" --frames "${FRAMES:-3}" --out "$out/$p" "$@" >"$out/$p.log" 2>&1 ||
         { echo "$p: failed (exit $?), see $out/$p.log"; continue; }
     python3 - "$out/$p/render.json" <<'PY'
