@@ -107,9 +107,11 @@ int run(InfoOptions& o) {
     SceneGpu gpuScene(*ctx, scene);
     std::printf("  shared scene data: %llu bytes\n",
                 (unsigned long long)ctx->ledger.totalBytes("scene"));
-    gpuScene.buildMeshlets(); // as --cull-geometry does before its first frame
+    // As --cull-geometry and multipass forward's GPU light draws do before their first frame.
+    gpuScene.buildMeshlets();
     std::printf("  meshlets: %u (at most 64 vertices, 124 triangles; %.1f triangles each on "
-                "average), built in %.1f ms when first used (--cull-geometry)\n",
+                "average), built in %.1f ms when first used (--cull-geometry, multipass "
+                "forward's light draws)\n",
                 gpuScene.meshletCount(),
                 gpuScene.meshletCount() ? double(scene.triangleCount()) / gpuScene.meshletCount()
                                         : 0.0,

@@ -37,10 +37,10 @@ const ChoiceKnob<Cull>& lightCullKnob() {
         {{Cull::Auto, "auto"}, {Cull::Binned, "binned"}, {Cull::All, "all"}},
         "Which lights a tile tests: binned (only those whose conservative tile rectangle covers "
         "it, built as --light-bin says; cost lights + candidates), all (every light: tiles x "
-        "lights; both keep exactly the same lists) or auto (all on a GPU up to 2,048 lights for "
-        "forwardplus and visbuffer, where the binning passes cost more than the tests they "
-        "save; binned on a CPU device, past that and for deferred; counter light_cull_all says "
-        "which ran)"};
+        "lights) or auto (all on a GPU up to 2,048 lights for forwardplus and visbuffer, where "
+        "the binning passes cost more than the tests they save; binned on a CPU device, past "
+        "that and for deferred; counter light_cull_all says which ran); binned and all keep "
+        "exactly the same lists"};
     return k;
 }
 
