@@ -13,8 +13,9 @@
 // over the gaps to the last meshlet reached. A triangle left out lies in a meshlet the light
 // cannot reach, where evalLight gives exactly 0, so drawing it would add nothing. A mesh whose
 // meshlets the light reaches none of gets no command. Not under MSAA at pixel rate, where the
-// pixel centre a fragment is shaded at may lie off its triangle (params.meshletReach). On lavapipe the light passes' time is
-// shading and geometry of what each light's draws cover, drawn again for every light.
+// pixel centre a fragment is shaded at may lie off its triangle (params.meshletReach). On
+// lavapipe the light passes' time is the shading and geometry of what each light's draws
+// cover, drawn again for every light.
 #include "include/shared.h"
 #include "include/meshlets.h"
 #include "multipass_forward/light_draws.h"
@@ -43,14 +44,16 @@ layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_MESHLETS) readonly b
     MeshletGpu meshlets[];
 };
 
-// Command `at`: draw d's indices [first, end) of the meshlet index buffer.
-void writeCommand(uint at, LightDrawDraw d, uint first, uint end) {
+// Command `at`: draw d's indices [first, end) of the meshlet index buffer. Returns its
+// triangles.
+uint writeCommand(uint at, LightDrawDraw d, uint first, uint end) {
     const uint w = at * TP_MPLD_COMMAND_WORDS;
     commands[w + 0u] = end - first;
     commands[w + 1u] = 1u;
     commands[w + 2u] = first;
     commands[w + 3u] = uint(d.vertexOffset);
     commands[w + 4u] = d.material; // firstInstance: the material (scene_material_vert)
+    return (end - first) / 3u;
 }
 
 // Writes draw d's commands for light l from command `base` of its light's region: the runs
@@ -72,18 +75,14 @@ uvec2 writeReachedRuns(LightDrawLight l, LightDrawDraw d, uint base) {
         const vec3 between = ml.center - eye - l.sphere.xyz;
         if (!all && dot(between, between) > reach * reach) continue;
         if (open && end != ml.firstIndex && written + 1u < params.spansPerDraw) {
-            writeCommand(base + written++, d, first, end);
-            triangles += (end - first) / 3u;
+            triangles += writeCommand(base + written++, d, first, end);
             open = false;
         }
         if (!open) first = ml.firstIndex;
         open = true;
         end = ml.firstIndex + 3u * ml.triangleCount;
     }
-    if (open) {
-        writeCommand(base + written++, d, first, end);
-        triangles += (end - first) / 3u;
-    }
+    if (open) triangles += writeCommand(base + written++, d, first, end);
     return uvec2(written, triangles);
 }
 
