@@ -128,7 +128,8 @@ void LightDrawPass::prepare(FrameGraph& graph) {
                                 {TP_MPLD_BINDING_DRAWS, drawRows_.buffer},
                                 {TP_MPLD_BINDING_MESHLETS, scene_.meshletBuffer()}});
     layout_ = scene_.createPipelineLayout(set_.layout);
-    pipeline_ = createComputePipeline(ctx_, "mp_light_draws_comp", {}, layout_, &set_);
+    pipeline_ = createComputePipeline(ctx_, "mp_light_draws_comp",
+                                      scene_.specConstants(AlphaMode::Opaque), layout_, &set_);
 }
 
 void LightDrawPass::update(const LightPlan& plan) {
@@ -171,6 +172,7 @@ std::vector<PassUse> LightDrawPass::drawUses() const {
 void LightDrawPass::recordPass(PassContext& pc) {
     if (lights_ == 0 || draws_.empty()) return;
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE); // the view (frame)
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
     // No push constants (meshlet_cull.cpp: a lavapipe crash): the counts are in the params.

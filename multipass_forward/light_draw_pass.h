@@ -45,7 +45,7 @@ class LightDrawPass {
                                    uint32_t localLights);
     // Builds the scene's meshlets if nobody has: the commands draw runs of them. meshletReach:
     // only the meshlets each light reaches (every shaded point on its triangle: 1x, or MSAA at
-    // sample rate), else whole meshes.
+    // sample rate), else those whose fragments can fall in its scissor.
     LightDrawPass(GpuContext& ctx, SceneGpu& scene, uint32_t localLights, bool meshletReach);
     ~LightDrawPass();
     LightDrawPass(const LightDrawPass&) = delete;

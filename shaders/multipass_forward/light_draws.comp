@@ -12,11 +12,14 @@
 // meshlets side by side, in order), at most spansPerDraw of them: the last one then reaches on
 // over the gaps to the last meshlet reached. A triangle left out lies in a meshlet the light
 // cannot reach, where evalLight gives exactly 0, so drawing it would add nothing. A mesh whose
-// meshlets the light reaches none of gets no command. Not under MSAA at pixel rate, where the
-// pixel centre a fragment is shaded at may lie off its triangle (params.meshletReach). On
-// lavapipe the light passes' time is the shading and geometry of what each light's draws
-// cover, drawn again for every light.
+// meshlets the light reaches none of gets no command. Under MSAA at pixel rate the pixel centre
+// a fragment is shaded at may lie off its triangle (params.meshletReach 0), so there a meshlet
+// is kept where its sphere's screen rectangle meets the light's scissor: outside it no fragment
+// of the meshlet is shaded at all. On lavapipe the light passes' time is the shading and
+// geometry of what each light's draws cover, drawn again for every light; on the H200 their
+// triangle setup, on the 4 SMs that rasterize.
 #include "include/shared.h"
+#include "include/scene_bindings.glsl"
 #include "include/meshlets.h"
 #include "multipass_forward/light_draws.h"
 
@@ -25,7 +28,7 @@ layout(local_size_x = TP_MPLD_GROUP) in;
 layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_PARAMS) readonly buffer ParamsBlock {
     LightDrawParams params;
 };
-layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_LIGHTS) readonly buffer LightBlock {
+layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_LIGHTS) readonly buffer LightRowBlock {
     LightDrawLight lightRows[];
 };
 layout(std430, set = TP_SET_PASS, binding = TP_MPLD_BINDING_DRAWS) readonly buffer DrawBlock {
@@ -56,13 +59,26 @@ uint writeCommand(uint at, LightDrawDraw d, uint first, uint end) {
     return (end - first) / 3u;
 }
 
+// Whether a fragment of a meshlet (camera-relative sphere) can lie in scissor `rect`: the
+// pixels its sphere's screen rectangle touches (a pixel to spare, include/meshlets.h) meet it.
+// A sphere that reaches the near plane, or anything not a number, may cover any pixel.
+bool inScissor(vec3 centre, float radius, ivec4 rect) {
+    const vec3 v = (frame.view * vec4(centre, 0.0)).xyz;
+    const float r = radius + length(centre) * TP_MESHLET_ROTATION_EPS;
+    if (!(sphereNearestDepth(v, r, frame.proj, frame.projParams.x) > 0.0)) return true;
+    const vec4 s = sphereScreenRect(v, r, frame.proj, vec2(frame.viewport.xy));
+    if (any(isnan(s))) return true;
+    return floor(s.x) < float(rect.z) && float(rect.x) < ceil(s.z) && floor(s.y) < float(rect.w) &&
+           float(rect.y) < ceil(s.w);
+}
+
 // Writes draw d's commands for light l from command `base` of its light's region: the runs
 // of meshlets the light reaches (the meshlet sphere grown by the error of the camera-relative
-// subtraction, include/meshlets.h, the light's range by a margin over evalLight's own test; a
-// directional light, TP_MPLD_FLAG_ALL, reaches every meshlet, and so does every light without
-// params.meshletReach). Returns (commands, triangles).
+// subtraction, include/meshlets.h, the light's range by a margin over evalLight's own test;
+// without params.meshletReach those whose fragments can fall in its scissor; a directional
+// light, TP_MPLD_FLAG_ALL, reaches every meshlet). Returns (commands, triangles).
 uvec2 writeReachedRuns(LightDrawLight l, LightDrawDraw d, uint base) {
-    const bool all = (l.flags & TP_MPLD_FLAG_ALL) != 0u || params.meshletReach == 0u;
+    const bool all = (l.flags & TP_MPLD_FLAG_ALL) != 0u;
     const vec3 eye = params.eyeWorld;
     const float eyeMagnitude = length(eye);
     uint written = 0u, triangles = 0u, first = 0u, end = 0u;
@@ -71,9 +87,16 @@ uvec2 writeReachedRuns(LightDrawLight l, LightDrawDraw d, uint base) {
         const MeshletGpu ml = meshlets[d.firstMeshlet + k];
         const float slack =
             (length(ml.center) + eyeMagnitude + ml.radius) * TP_MESHLET_POSITION_EPS;
-        const float reach = l.sphere.w * 1.0001 + ml.radius + slack;
-        const vec3 between = ml.center - eye - l.sphere.xyz;
-        if (!all && dot(between, between) > reach * reach) continue;
+        const vec3 centre = ml.center - eye;
+        bool reached = all;
+        if (!all && params.meshletReach != 0u) {
+            const float reach = l.sphere.w * 1.0001 + ml.radius + slack;
+            const vec3 between = centre - l.sphere.xyz;
+            reached = dot(between, between) <= reach * reach;
+        } else if (!all) {
+            reached = inScissor(centre, ml.radius + slack, l.rect);
+        }
+        if (!reached) continue;
         if (open && end != ml.firstIndex && written + 1u < params.spansPerDraw) {
             triangles += writeCommand(base + written++, d, first, end);
             open = false;

@@ -35,8 +35,9 @@ TP_STRUCT(LightDrawParams) {
     vec3 eyeWorld;   // the eye that camera-relative positions are relative to
     uint spansPerDraw; // commands a draw may take in a light's region (light_draws.comp)
     // 1: only the meshlets a light reaches (every shaded point lies on its triangle: 1x and
-    // sample-rate MSAA); 0: whole meshes (pixel-rate MSAA shades at the pixel centre, which
-    // may lie off the triangle, at a grazing angle far off it).
+    // sample-rate MSAA); 0: the meshlets whose fragments can fall in its scissor (pixel-rate
+    // MSAA shades at the pixel centre, which may lie off the triangle, at a grazing angle far
+    // off it).
     uint meshletReach;
     uint pad0;
     uint pad1;
