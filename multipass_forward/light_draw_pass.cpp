@@ -138,7 +138,6 @@ void LightDrawPass::update(const LightPlan& plan) {
                                 uint32_t(draws_.size()),
                                 runs(),
                                 f.viewport.w <= 1 ? 1u : 0u, // as light_plan's shadedInsideBox
-                                glm::vec3(f.eyeWorld),
                                 spans_,
                                 meshletReach_ ? 1u : 0u};
     std::memcpy(params_.mapped, &params, sizeof(params));

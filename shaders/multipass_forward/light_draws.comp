@@ -79,7 +79,7 @@ bool inScissor(vec3 centre, float radius, ivec4 rect) {
 // light, TP_MPLD_FLAG_ALL, reaches every meshlet). Returns (commands, triangles).
 uvec2 writeReachedRuns(LightDrawLight l, LightDrawDraw d, uint base) {
     const bool all = (l.flags & TP_MPLD_FLAG_ALL) != 0u;
-    const vec3 eye = params.eyeWorld;
+    const vec3 eye = frame.eyeWorld.xyz; // what camera-relative positions are relative to
     const float eyeMagnitude = length(eye);
     uint written = 0u, triangles = 0u, first = 0u, end = 0u;
     bool open = false;

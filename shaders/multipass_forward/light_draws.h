@@ -32,7 +32,6 @@ TP_STRUCT(LightDrawParams) {
     uint drawCount;  // rows of LightDrawDraw: a light's region holds drawCount x spansPerDraw
     uint runCount;   // runs of draws of one cull mode: counts per light
     uint boxTest;    // 1: the sphere-box test too (1x); 0: screen rectangles only (MSAA)
-    vec3 eyeWorld;   // the eye that camera-relative positions are relative to
     uint spansPerDraw; // commands a draw may take in a light's region (light_draws.comp)
     // 1: only the meshlets a light reaches (every shaded point lies on its triangle: 1x and
     // sample-rate MSAA); 0: the meshlets whose fragments can fall in its scissor (pixel-rate
@@ -41,7 +40,6 @@ TP_STRUCT(LightDrawParams) {
     uint meshletReach;
     uint pad0;
     uint pad1;
-    uint pad2;
 };
 
 // A pixel rectangle [x0, x1) x [y0, y1) is (x0, y0, x1, y1), as mp::ScreenRect.
@@ -69,7 +67,7 @@ TP_STRUCT(LightDrawDraw) {
 };
 
 #ifndef TP_GLSL
-static_assert(sizeof(LightDrawParams) == 48);
+static_assert(sizeof(LightDrawParams) == 32);
 static_assert(sizeof(LightDrawLight) == 48);
 static_assert(offsetof(LightDrawLight, flags) == 32);
 static_assert(offsetof(LightDrawLight, light) == 36);
