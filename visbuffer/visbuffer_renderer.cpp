@@ -205,6 +205,10 @@ class VisbufferRenderer final : public Renderer {
     std::vector<DebugImage> debugImages(FrameGraph& graph) override;
     RendererStats stats() const override;
     PassOpWork textureWork() const;
+    // The resolve samples a material's textures in one walk of the scene's array (vis_read.glsl):
+    // on a CPU device, where every sample site runs in every lane. One decision for the shader's
+    // constant and the fetch count.
+    bool oneTextureWalk() const { return ctx_.isCpuDevice(); }
 
   private:
     uint32_t slices() const { return vis_.assign.slicesOrZero(); }
@@ -232,7 +236,7 @@ class VisbufferRenderer final : public Renderer {
         s.everySample = vis_.sampling.perSample();
         s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits},
                        {TP_VIS_SPEC_DERIVATIVES, derivativesMode()},
-                       {TP_VIS_SPEC_ONE_TEXTURE_WALK, ctx_.isCpuDevice() ? 1u : 0u}};
+                       {TP_VIS_SPEC_ONE_TEXTURE_WALK, oneTextureWalk() ? 1u : 0u}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
         if (blendInCompute_) {
@@ -374,7 +378,7 @@ RendererStats VisbufferRenderer::stats() const {
 // and every site runs in every lane: the fetches made are the scene's texture count, not the
 // material's slots. On a GPU a site no lane takes costs nothing: the material's slots.
 PassOpWork VisbufferRenderer::textureWork() const {
-    if (!ctx_.isCpuDevice())
+    if (!oneTextureWalk())
         return materialFetchWork(scene_, "tiled_lighting", {DrawFilter::Opaque, DrawFilter::Mask},
                                  PassLightWork::Base::CoveredPixels);
     const size_t textures = std::max<size_t>(1, scene_.scene().textures.size());
