@@ -9,12 +9,29 @@
 namespace tp::vis {
 
 RasterMergePass::~RasterMergePass() {
-    for (VkPipeline p : {listed_, merge_})
+    for (VkPipeline p : {seedPipeline_, listed_, merge_})
         if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
-    for (VkPipelineLayout l : {listedLayout_, mergeLayout_})
+    for (VkPipelineLayout l : {seedLayout_, listedLayout_, mergeLayout_})
         if (l) vkDestroyPipelineLayout(ctx_.device, l, nullptr);
-    destroyPassSet(ctx_, listedSet_);
-    destroyPassSet(ctx_, mergeSet_);
+    for (PassSet* set : {&seedSet_, &listedSet_, &mergeSet_})
+        destroyPassSet(ctx_, *set);
+}
+
+bool RasterMergePass::planSeed(FrameGraph& graph, uint32_t samples,
+                               const VisibilityTargets& targets, const RasterTargets& raster) {
+    if (samples > 1) return false;
+    t_ = targets;
+    raster_ = raster;
+    seed_ = graph.createBuffer("vis_raster_seed", VkDeviceSize(graph.width()) * graph.height() * 4,
+                               "1x: the compute rasterizer's depths, copied into the depth image");
+    graph.addPass("vis_raster_seed",
+                  {{raster.samples, Use::StorageRead, TP_VR_BINDING_SEED_SAMPLES},
+                   {seed_, Use::StorageWrite, TP_VR_BINDING_SEED},
+                   {t_.ids, Use::StorageWrite, TP_VR_BINDING_SEED_IDS}},
+                  [this](PassContext& pc) { recordSeed(pc); });
+    graph.addPass("vis_raster_seed_copy", {{seed_, Use::TransferSrc}, {t_.depth, Use::TransferDst}},
+                  [this](PassContext& pc) { recordSeedCopy(pc); });
+    return true;
 }
 
 void RasterMergePass::plan(FrameGraph& graph, uint32_t samples, const VisibilityTargets& targets,
@@ -30,6 +47,7 @@ void RasterMergePass::plan(FrameGraph& graph, uint32_t samples, const Visibility
                        {raster.list, Use::StorageRead, TP_VR_BINDING_VIS_LIST},
                        {raster.args, Use::IndirectRead}},
                       [this](PassContext& pc) { recordListed(pc); });
+    if (samples == 1) return; // seeded (planSeed)
     std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment},
                               {t_.depth, Use::DepthAttachment},
                               {raster.samples, Use::StorageRead, TP_VR_BINDING_VIS_SAMPLES}};
@@ -51,6 +69,13 @@ void RasterMergePass::prepare(FrameGraph& graph) {
         d.fragmentShader = "vis_raster_hw_frag";
         d.specConstants = scene_.specConstants(AlphaMode::Opaque);
         listed_ = createGraphicsPipeline(ctx_, d);
+    }
+    if (seed_.valid()) {
+        seedSet_ = graph.createPassSet("vis_raster_seed");
+        seedLayout_ = scene_.createPipelineLayout(seedSet_.layout);
+        seedPipeline_ = createComputePipeline(ctx_, "vis_raster_seed_comp", {}, seedLayout_,
+                                              &seedSet_);
+        return;
     }
     mergeSet_ = graph.createPassSet("vis_raster_merge");
     mergeLayout_ = scene_.createPipelineLayout(mergeSet_.layout);
@@ -75,6 +100,22 @@ void RasterMergePass::bind(PassContext& pc, VkPipelineLayout layout, const PassS
     vkCmdPushConstants(pc.cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof(push), &push);
     vkCmdSetCullMode(pc.cmd, VK_CULL_MODE_NONE);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+}
+
+void RasterMergePass::recordSeed(PassContext& pc) {
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, seedPipeline_);
+    scene_.bindSceneSet(pc.cmd, seedLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, seedLayout_, TP_SET_PASS, 1,
+                            &seedSet_.set, 0, nullptr);
+    vkCmdDispatch(pc.cmd, (pc.graph.width() + 7) / 8, (pc.graph.height() + 7) / 8, 1);
+}
+
+void RasterMergePass::recordSeedCopy(PassContext& pc) {
+    VkBufferImageCopy region{};
+    region.imageExtent = {pc.graph.width(), pc.graph.height(), 1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    vkCmdCopyBufferToImage(pc.cmd, pc.buffer(seed_).buffer, pc.image(t_.depth).image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 }
 
 void RasterMergePass::recordListed(PassContext& pc) {

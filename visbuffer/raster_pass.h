@@ -8,9 +8,10 @@
 //                     within TP_VR_SMALL_PIXELS each way writes (depth bits << 32 | ~id) per
 //                     sample it covers with a 64-bit atomic max; a larger one is listed.
 //   vis_raster_big    (compute mode) a workgroup per listed triangle, dispatched indirectly.
-// vis_raster_merge (raster_merge_pass.h) then merges the samples into the visibility pass's id
-// and depth targets (in hybrid mode after the hardware drew the masked draws and the listed
-// triangles into them): everything downstream reads the targets it always read.
+// raster_merge_pass.h then puts the samples into the visibility pass's id and depth targets (at
+// 1x as their first contents, before the hardware draws the masked draws and the listed
+// triangles into them in hybrid mode; under MSAA merged after those): everything downstream
+// reads the targets it always read.
 #include <string>
 #include <utility>
 #include <vector>

@@ -79,11 +79,12 @@ class VisbufferRenderer final : public Renderer {
         // command carries its meshlet's first triangle for the ids (visibility_pass.h).
         passes::MeshletCull* cull =
             passes::planOpaqueCull(cull_, ctx_, scene_, graph, vis_.cullGeometry, true);
-        // --vis-raster compute|hybrid: the compute rasterizer's passes, merged into the
-        // visibility pass's targets (raster_pass.h).
+        // --vis-raster compute|hybrid: the compute rasterizer's passes, its samples into the
+        // visibility pass's targets (raster_pass.h, raster_merge_pass.h).
         using Draws = vis::VisibilityPass::Draws;
+        ids_ = visibility_.createTargets(graph, samples, depth_);
         if (vis_.raster == vis::Raster::Hardware) {
-            ids_ = visibility_.plan(graph, samples, depth_, cull);
+            visibility_.plan(graph, ids_, cull);
         } else {
             const bool hybrid = vis_.raster == vis::Raster::Hybrid;
             // It reads one phase's kept meshlets: occlusion's late phase is not wired to it.
@@ -92,9 +93,11 @@ class VisbufferRenderer final : public Renderer {
                                     "full yet; use --cull-geometry none or frustum");
             raster_.emplace(ctx_, scene_, table_, hybrid);
             const vis::RasterTargets raster = raster_->plan(graph, samples, cull);
-            ids_ = visibility_.plan(graph, samples, depth_, cull,
-                                    hybrid ? Draws::Masked : Draws::None);
             merge_.emplace(ctx_, scene_);
+            // At 1x the samples are the targets' first contents (the seed), the hardware's
+            // draws then test against them; under MSAA they are merged after those draws.
+            const bool seeded = merge_->planSeed(graph, samples, ids_, raster);
+            visibility_.plan(graph, ids_, cull, hybrid ? Draws::Masked : Draws::None, seeded);
             merge_->plan(graph, samples, ids_, depth_, raster);
         }
         if (blendInCompute_)

@@ -16,34 +16,35 @@ VisibilityPass::~VisibilityPass() {
     destroyPassSet(ctx_, set_);
 }
 
-VisibilityTargets VisibilityPass::plan(FrameGraph& graph, uint32_t samples,
-                                       ResourceHandle resolvedDepth,
-                                       passes::MeshletCull* cull, Draws draws) {
+VisibilityTargets VisibilityPass::createTargets(FrameGraph& graph, uint32_t samples,
+                                                ResourceHandle resolvedDepth) {
     samples_ = samples;
-    draws_ = draws;
     resolved_ = resolvedDepth;
-    cull_ = cull;
     const auto count = VkSampleCountFlagBits(samples);
     t_.ids = graph.createImage("visibility_ids",
                                {VK_FORMAT_R32_SFLOAT, 0, 0, count,
                                 "packed (draw, triangle) id per sample as an exact fp32 "
                                 "integer (0: no geometry)"});
-    std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment}};
-    if (samples > 1) {
-        t_.depth = graph.createImage("visibility_depth_msaa", {VK_FORMAT_D32_SFLOAT, 0, 0, count,
-                                                               "per-sample depth (reverse-Z)"});
-        uses.push_back({t_.depth, Use::DepthAttachment});
-        // With the compute rasterizer the merge after this pass resolves.
-        if (draws == Draws::All) uses.push_back({resolvedDepth, Use::DepthResolve});
-    } else {
-        t_.depth = resolvedDepth;
-        uses.push_back({resolvedDepth, Use::DepthAttachment});
-    }
-    if (draws == Draws::None) return t_; // compute mode: the merge clears and writes them
+    t_.depth = samples > 1 ? graph.createImage("visibility_depth_msaa",
+                                               {VK_FORMAT_D32_SFLOAT, 0, 0, count,
+                                                "per-sample depth (reverse-Z)"})
+                           : resolvedDepth;
+    return t_;
+}
+
+void VisibilityPass::plan(FrameGraph& graph, const VisibilityTargets& targets,
+                          passes::MeshletCull* cull, Draws draws, bool seeded) {
+    t_ = targets;
+    draws_ = draws;
+    cull_ = cull;
+    seeded_ = seeded;
+    if (draws == Draws::None) return; // compute mode: the seed or the merge writes the targets
+    std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment}, {t_.depth, Use::DepthAttachment}};
+    // With the compute rasterizer the merge after this pass resolves.
+    if (samples_ > 1 && draws == Draws::All) uses.push_back({resolved_, Use::DepthResolve});
     passes::planGeometryPass(
         graph, cull, "visibility", uses, t_.depth,
         [this](PassContext& pc, passes::CullPhase phase) { record(pc, phase); });
-    return t_;
 }
 
 void VisibilityPass::prepare(FrameGraph& graph) {
@@ -81,7 +82,8 @@ void VisibilityPass::prepare(FrameGraph& graph) {
 }
 
 void VisibilityPass::record(PassContext& pc, passes::CullPhase phase) {
-    const bool clear = phase != passes::CullPhase::Late; // the late phase adds to the early's
+    // The late phase adds to the early's; seeded, to the compute rasterizer's.
+    const bool clear = !seeded_ && phase != passes::CullPhase::Late;
     ColorTarget ids{t_.ids, {}, clear, {}};
     ids.clearValue.uint32[0] = 0; // no geometry
     DepthTarget depth{t_.depth,

@@ -41,12 +41,17 @@ class VisibilityPass {
     VisibilityPass(GpuContext& ctx, SceneGpu& scene, const DrawTable& table)
         : ctx_(ctx), scene_(scene), table_(table) {}
     ~VisibilityPass();
-    // resolvedDepth: the single-sample "depth" output (written directly at 1x). cull: the
-    // meshlets to draw (made with firstTriangle), or null to draw the meshes whole. raster:
-    // what --vis-raster leaves to the hardware (Hardware: everything).
+    // The id and depth targets; resolvedDepth: the single-sample "depth" output (the depth
+    // target itself at 1x).
+    VisibilityTargets createTargets(FrameGraph& graph, uint32_t samples,
+                                    ResourceHandle resolvedDepth);
+    // The pass drawing into `targets`. cull: the meshlets to draw (made with firstTriangle), or
+    // null to draw the meshes whole. draws: what --vis-raster leaves to the hardware (Hardware:
+    // everything). seeded: the compute rasterizer wrote the targets already (1x), so the pass
+    // keeps them instead of clearing.
     enum class Draws { All, Masked, None };
-    VisibilityTargets plan(FrameGraph& graph, uint32_t samples, ResourceHandle resolvedDepth,
-                           passes::MeshletCull* cull = nullptr, Draws draws = Draws::All);
+    void plan(FrameGraph& graph, const VisibilityTargets& targets,
+              passes::MeshletCull* cull = nullptr, Draws draws = Draws::All, bool seeded = false);
     void prepare(FrameGraph& graph);
 
   private:
@@ -59,6 +64,7 @@ class VisibilityPass {
     ResourceHandle resolved_;
     const passes::MeshletCull* cull_ = nullptr;
     Draws draws_ = Draws::All;
+    bool seeded_ = false;
     PassSet set_; // culled: the source triangles
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;

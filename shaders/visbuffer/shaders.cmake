@@ -19,10 +19,12 @@ triptych_tiled_lighting_variants(vis_tiled ${SHADER_DIR}/vis_resolve.comp MS 0 1
 triptych_tiled_lighting_variants(vis_tiled_blend ${SHADER_DIR}/vis_resolve.comp MS 0 1 ES 0 TS 1
   DEFINES TP_VIS_BLEND=1)
 # --vis-raster compute|hybrid: the compute rasterizer (vis_raster.glsl), its large triangles
-# (compute mode), the merge into the visibility targets and (hybrid) the hardware's triangles.
+# (compute mode), the samples into the visibility targets (the seed at 1x, the merge under
+# MSAA) and (hybrid) the hardware's triangles.
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster.comp vis_raster_comp)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster.comp vis_raster_meshlet_comp DEFINES TP_VR_MESHLETS=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_big.comp vis_raster_big_comp)
+triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_seed.comp vis_raster_seed_comp)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_merge.vert vis_raster_merge_vert)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_merge.frag vis_raster_merge_frag)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_hw.vert vis_raster_hw_vert)

@@ -30,6 +30,11 @@
 #define TP_VR_BINDING_VIS_SAMPLES 1 // the samples above, read by the merge
 #define TP_VR_BINDING_VIS_LIST 2    // hybrid: the listed triangles the hardware draws
 
+// ---- set 1 of vis_raster_seed (1x: the samples into the targets by a copy) ----
+#define TP_VR_BINDING_SEED_SAMPLES 0 // the samples above
+#define TP_VR_BINDING_SEED 1         // float[pixels]: the depths, for the copy
+#define TP_VR_BINDING_SEED_IDS 2     // the id image (R32_SFLOAT, storage)
+
 // ---- the list buffer: TP_VR_LIST_HEADER words of counters, then uvec4 per listed triangle:
 // its three vertex indices (vertexOffset added) and its id ----
 #define TP_VR_LIST_HEADER 8

@@ -46,6 +46,10 @@ for msaa in "--msaa 1" "--msaa 4 --msaa-shading pixel" "--msaa 4 --msaa-shading 
         configs+=("--pipeline $p $msaa --shadows 3")
     done
     configs+=("--pipeline deferred $msaa --deferred-lighting volumes --shadows 3")
+    # The compute rasterizer: every triangle in compute, and the small ones (also culled).
+    for vr in compute hybrid "hybrid --cull-geometry frustum"; do
+        configs+=("--pipeline visbuffer $msaa --vis-raster $vr")
+    done
 done
 # The debug images (heat maps, depth bounds, G-buffer channels) of the tiled pipelines.
 for p in forwardplus deferred visbuffer; do
