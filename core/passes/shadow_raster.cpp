@@ -213,8 +213,9 @@ void ShadowComputeRaster::recordRaster(VkCommandBuffer cmd) const {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
     const uint32_t slots = cull_.commandCapacity();
-    const uint32_t x = std::min(slots, 65535u);
-    vkCmdDispatch(cmd, x, (slots + x - 1) / x, 1);
+    const uint32_t groups = std::max(1u, (slots + TP_SR_SLOTS_PER_GROUP - 1) / TP_SR_SLOTS_PER_GROUP);
+    const uint32_t x = std::min(groups, 65535u);
+    vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
 }
 
 void ShadowComputeRaster::recordBig(VkCommandBuffer cmd, VkBuffer args) const {

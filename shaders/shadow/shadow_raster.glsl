@@ -105,18 +105,29 @@ uint rowOfCommand(uint slot) {
     return lo;
 }
 
-// Triangle t of the meshlet in command slot `slot`, its vertices (vertexOffset added) and its
-// row `r`; false when there is none (a slot past its row's kept commands, t past the meshlet).
-bool slotTriangle(uint slot, uint t, out uint i0, out uint i1, out uint i2, out uint r) {
-    if (slot >= uint(commands.length()) / 5u) return false;
-    r = rowOfCommand(slot);
-    uint k = slot - rows[r].firstCommand; // the command's place in its row's range
+// Triangle t of the meshlet in command slot `slot`, which its row `r` kept (k below counts[r]),
+// its vertices (vertexOffset added); false past the meshlet's triangles.
+bool commandTriangle(uint slot, uint t, out uint i0, out uint i1, out uint i2) {
     uint cmd = 5u * slot;
-    if (k >= rows[r].meshletCount || k >= counts[r] || t >= commands[cmd] / 3u) return false;
+    if (t >= commands[cmd] / 3u) return false;
     uint base = commands[cmd + 2u] + 3u * t;
     int vertexOffset = int(commands[cmd + 3u]);
     i0 = uint(int(meshletIndices[base]) + vertexOffset);
     i1 = uint(int(meshletIndices[base + 1u]) + vertexOffset);
     i2 = uint(int(meshletIndices[base + 2u]) + vertexOffset);
     return true;
+}
+
+// Whether row r kept a meshlet in command slot `slot` of its range.
+bool slotKept(uint slot, uint r) {
+    uint k = slot - rows[r].firstCommand; // the command's place in its row's range
+    return k < rows[r].meshletCount && k < counts[r];
+}
+
+// Triangle t of the meshlet in command slot `slot`, its vertices (vertexOffset added) and its
+// row `r`; false when there is none (a slot past its row's kept commands, t past the meshlet).
+bool slotTriangle(uint slot, uint t, out uint i0, out uint i1, out uint i2, out uint r) {
+    if (slot >= uint(commands.length()) / 5u) return false;
+    r = rowOfCommand(slot);
+    return slotKept(slot, r) && commandTriangle(slot, t, i0, i1, i2);
 }

@@ -20,6 +20,10 @@
 // Triangles per workgroup of shadow_raster.comp: one command slot (a meshlet of at most 124
 // triangles) each, an invocation per triangle.
 #define TP_SR_GROUP 128
+// Command slots per workgroup of shadow_raster.comp, taken in turn. Most slots are empty (a
+// row's range holds a slot for each of its meshlets, the kept ones first): a group per slot
+// spent the pass launching empty groups (docs/shadows.md, "The empty slots").
+#define TP_SR_SLOTS_PER_GROUP 32
 
 // ---- the list buffer: TP_SR_LIST_HEADER words of counters, then uvec4 per listed triangle:
 // its three vertex indices (vertexOffset added) and its ShadowCullRow ----
