@@ -42,6 +42,7 @@ class DeferredRenderer final : public Renderer {
     void plan(FrameGraph& graph) override {
         t_.layout = planGBufferLayout(ctx_, features_, def_.gbuffer, def_.sampling.samples);
         t_.sampleRateGBuffer = def_.sampling.shading == MsaaShading::Sample;
+        t_.clearGBuffer = def_.debug;
         // The lighting group is 8 x 8 or 16 x 16 invocations (--tile-group, at most the tile),
         // each covering (tileSize / edge)^2 pixels: the tile knob's values (8, 16, 32) are all
         // multiples of the edge.

@@ -24,6 +24,10 @@ struct DeferredTargets {
     la::TileGrid grid;                 // the lighting tiles (one workgroup each)
     std::vector<uint32_t> listOffsets; // transparent lists: tileCount + 1 run offsets
     bool sampleRateGBuffer = false;    // --msaa-shading sample: the material at every sample
+    // --debug: the G-buffer is read where no geometry is (its channel images), so it is cleared
+    // there; otherwise every reader tests the sample's depth first, and a clear would be paid
+    // for nothing (docs/deferred.md, "The G-buffer is not cleared").
+    bool clearGBuffer = false;
     bool msaa() const { return layout.samples > 1; }
     // The blended forward pass under MSAA at --msaa-shading pixel: once per pixel and
     // primitive at the pixel centre, as Forward+'s and multipass's blended draws (per sample

@@ -86,7 +86,8 @@ void GBufferPass::record(PassContext& pc, passes::CullPhase phase) {
     const bool clear = phase != passes::CullPhase::Late; // the late phase adds to the early's
     std::vector<ColorTarget> colors;
     for (ResourceHandle h : t_->gbuffer)
-        colors.push_back({h, {}, clear, {{0.0f, 0.0f, 0.0f, 0.0f}}});
+        colors.push_back({h, {}, clear && t_->clearGBuffer, {{0.0f, 0.0f, 0.0f, 0.0f}},
+                          clear && !t_->clearGBuffer});
     DepthTarget depth{t_->gbufferDepth, t_->msaa() ? t_->depth : ResourceHandle{}, clear};
     if (prepass_) depth = {t_->gbufferDepth, {}, false, true};
     beginRendering(pc, colors, depth);

@@ -11,6 +11,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
+#include "core/passes/image_clear.h"
 #include "core/renderer/msaa_knob.h"
 #include "include/shared.h"
 
@@ -55,7 +56,7 @@ struct ShadingTargets {
 class ForwardShading {
   public:
     ForwardShading(GpuContext& ctx, const SceneGpu& scene, ShadingConfig config)
-        : ctx_(ctx), scene_(scene), config_(config) {}
+        : ctx_(ctx), scene_(scene), config_(config), hdrClear_(ctx) {}
     ~ForwardShading();
     ForwardShading(const ForwardShading&) = delete;
     ForwardShading& operator=(const ForwardShading&) = delete;
@@ -93,6 +94,10 @@ class ForwardShading {
     // indices share one. pipelines_ owns them all.
     std::vector<VkPipeline> byMaterial_[3];
     std::vector<VkPipeline> pipelines_;
+    // forward_hdr_clear: the radiance zeroed by compute before forward_opaque, not by its
+    // render pass (on the H200 a render pass's clear runs on the graphics SMs, about 55 GB/s).
+    ImageClear hdrClear_;
+    bool computeClear_ = false;
 };
 
 } // namespace tp::fp

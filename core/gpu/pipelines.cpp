@@ -219,7 +219,7 @@ VkPipelineLayout createPassPipelineLayout(GpuContext& ctx, VkDescriptorSetLayout
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     info.setLayoutCount = 2;
     info.pSetLayouts = sets;
-    info.pushConstantRangeCount = 1;
+    info.pushConstantRangeCount = pushBytes ? 1 : 0; // none: no range (its size must not be 0)
     info.pPushConstantRanges = &range;
     VkPipelineLayout layout;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout));

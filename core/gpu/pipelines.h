@@ -60,7 +60,7 @@ VkPipeline createComputePipeline(GpuContext& ctx, const std::string& shader,
 
 // A layout for a pipeline outside the scene's sets (calibrate, the viewer's composite): set 0
 // `emptySet` (an empty set layout, so the pass set sits at TP_SET_PASS as in every shader), set 1
-// `passSet`, and one push-constant range of `pushBytes` for `pushStages`.
+// `passSet`, and one push-constant range of `pushBytes` for `pushStages` (none if 0).
 VkPipelineLayout createPassPipelineLayout(GpuContext& ctx, VkDescriptorSetLayout emptySet,
                                           VkDescriptorSetLayout passSet,
                                           VkShaderStageFlags pushStages, uint32_t pushBytes);

@@ -22,7 +22,9 @@ void beginRendering(PassContext& pc, const std::vector<ColorTarget>& colors,
         VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         a.imageView = pc.image(c.image).view;
         a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        a.loadOp = c.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+        a.loadOp = c.clear      ? VK_ATTACHMENT_LOAD_OP_CLEAR
+                   : c.dontCare ? VK_ATTACHMENT_LOAD_OP_DONT_CARE
+                                : VK_ATTACHMENT_LOAD_OP_LOAD;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         a.clearValue.color = c.clearValue;
         if (c.resolve.valid()) {

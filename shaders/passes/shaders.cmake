@@ -20,6 +20,13 @@ triptych_add_shader(SPVS ${SHADER_DIR}/blended_bounds.frag blended_bounds_pixel_
 triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_forward_frag)
 triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/blended_forward.frag blended_forward_pixel_frag
   DEFINES TP_INPUTS_AT_PIXEL=1)
+# The compute clear of a colour image (core/passes/image_clear.h): per storage format,
+# single-sample and multisampled.
+foreach(f r32f rgba32f rgba16f)
+  triptych_add_shader(SPVS ${SHADER_DIR}/image_clear.comp image_clear_${f}_comp DEFINES TP_IC_FORMAT=${f})
+  triptych_add_shader(SPVS ${SHADER_DIR}/image_clear.comp image_clear_${f}_ms_comp
+    DEFINES TP_IC_FORMAT=${f} TP_IC_MS=1)
+endforeach()
 # The meshlet cull pass (core/passes/meshlet_cull.h): frustum and normal cone per meshlet,
 # indirect draws of the rest.
 triptych_add_shader(SPVS ${SHADER_DIR}/meshlet_cull.comp meshlet_cull_comp)
