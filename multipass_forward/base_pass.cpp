@@ -33,8 +33,8 @@ BasePass::~BasePass() {
     destroyPipeline(env_.ctx, pipeline_);
 }
 
-void BasePass::record(PassContext& pc, const Targets& t, bool resolve) {
-    beginShading(pc, t, resolve, true);
+void BasePass::record(PassContext& pc, const Targets& t, bool resolve, bool clear) {
+    beginShading(pc, t, resolve, clear);
     draws_ = 0;
     if (pipeline_) {
         bindSceneDraws(pc.cmd, env_, pipeline_);

@@ -5,8 +5,10 @@
 #include "core/calibrate/material_fetches.h"
 #include "core/gpu/context.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/depth_prepass.h"
+#include "core/passes/image_clear.h"
 #include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "multipass_forward/blended_light_draw_pass.h"
@@ -93,8 +95,17 @@ class MultipassForwardRenderer final : public Renderer {
         prepass_->plan(graph,
                        {t_.depthTarget(), t_.depthMsaa.valid() ? t_.depth : ResourceHandle{}});
         bool last = !hasLights && !hasBlended;
+        // The accumulation zeroed by compute where the device can store to it, not by the base
+        // pass's render pass (on the H200 that clear runs on the graphics SMs: docs/efficiency.md,
+        // "Clears").
+        hdrClear_.emplace(ctx_);
+        const bool clearByPass =
+            !hdrClear_->plan(graph, "base_hdr_clear", t_.color(), accumFormat_,
+                             mp_.sampling.samples, ColorTarget{}.clearValue);
         graph.addPass("base_pass", withCullUses(shadingUses(t_, last)),
-                      [this, last](PassContext& pc) { base_->record(pc, t_, last); });
+                      [this, last, clearByPass](PassContext& pc) {
+                          base_->record(pc, t_, last, clearByPass);
+                      });
         if (hasLights) {
             last = !hasBlended;
             std::vector<PassUse> uses = withCullUses(shadingUses(t_, last, true));
@@ -128,6 +139,7 @@ class MultipassForwardRenderer final : public Renderer {
     }
 
     void prepare(FrameGraph& graph) override {
+        hdrClear_->prepare(graph);
         shadows_->prepare(graph);
         if (blendedDraws_) blendedDraws_->prepare(graph);
         // Set TP_SET_PASS: the blended light draws' light table (GPU lists; no shadows then).
@@ -250,6 +262,7 @@ class MultipassForwardRenderer final : public Renderer {
     std::optional<LightDrawPass> lightDraws_; // --light-draws gpu: light_draws
     std::optional<BlendedLightDrawPass> blendedDraws_; // and blended_light_draws
     std::unique_ptr<passes::DepthPrepass> prepass_;
+    std::optional<ImageClear> hdrClear_; // base_hdr_clear, where the device can store to it
     std::unique_ptr<BasePass> base_;
     std::unique_ptr<LightPasses> lights_;
     std::unique_ptr<BlendedPass> blended_;

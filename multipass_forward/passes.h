@@ -137,7 +137,8 @@ class BasePass {
   public:
     explicit BasePass(const PassEnv& env);
     ~BasePass();
-    void record(PassContext& pc, const Targets& t, bool resolve);
+    // clear: the accumulation is cleared by this pass (false: base_hdr_clear zeroed it).
+    void record(PassContext& pc, const Targets& t, bool resolve, bool clear);
     uint32_t draws() const { return draws_; }
     bool hasPipeline() const { return pipeline_ != VK_NULL_HANDLE; }
 
