@@ -3,6 +3,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
 #include "core/gpu/rendering.h"
+#include "core/gpu/resources.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "visbuffer/vis_raster.h"
 
@@ -111,11 +112,8 @@ void RasterMergePass::recordSeed(PassContext& pc) {
 }
 
 void RasterMergePass::recordSeedCopy(PassContext& pc) {
-    VkBufferImageCopy region{};
-    region.imageExtent = {pc.graph.width(), pc.graph.height(), 1};
-    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-    vkCmdCopyBufferToImage(pc.cmd, pc.buffer(seed_).buffer, pc.image(t_.depth).image,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    recordDepthCopy(pc.cmd, pc.buffer(seed_).buffer, pc.image(t_.depth).image, pc.graph.width(),
+                    pc.graph.height());
 }
 
 void RasterMergePass::recordListed(PassContext& pc) {

@@ -268,6 +268,14 @@ VkImageSubresourceRange mipRange(uint32_t mip, uint32_t mips) {
 
 } // namespace
 
+void recordDepthCopy(VkCommandBuffer cmd, VkBuffer depths, VkImage image, uint32_t width,
+                     uint32_t height) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    vkCmdCopyBufferToImage(cmd, depths, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+}
+
 void recordImageUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging,
                          VkDeviceSize offset) {
     const uint32_t mips = img.desc.mipLevels;

@@ -80,6 +80,13 @@ void uploadBufferData(GpuContext& ctx, const Buffer& dst, const void* data, VkDe
 // from the CPU). Ends in SHADER_READ_ONLY_OPTIMAL for every later submission.
 void recordImageUpload(VkCommandBuffer cmd, const Image& img, VkBuffer staging, VkDeviceSize offset);
 
+// Records the copy of a buffer of width x height tightly packed fp32 depths into the depth
+// aspect of `image` (in TRANSFER_DST_OPTIMAL; mip 0, layer 0): how a compute rasterizer's
+// depths become a D32 image that shaders sample and passes depth-test against (a shader cannot
+// store to a depth image).
+void recordDepthCopy(VkCommandBuffer cmd, VkBuffer depths, VkImage image, uint32_t width,
+                     uint32_t height);
+
 bool isDepthFormat(VkFormat format);
 // A depth format with a stencil aspect too: its views and barriers name both aspects, its
 // attachment layout is DEPTH_STENCIL_ATTACHMENT_OPTIMAL (attachmentLayout), a copy names depth.

@@ -227,10 +227,7 @@ void ShadowComputeRaster::recordBig(VkCommandBuffer cmd, VkBuffer args) const {
 }
 
 void ShadowComputeRaster::recordCopy(VkCommandBuffer cmd, VkBuffer depth, VkImage image) const {
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-    region.imageExtent = {width_, height_, 1};
-    vkCmdCopyBufferToImage(cmd, depth, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    recordDepthCopy(cmd, depth, image, width_, height_);
 }
 
 void ShadowComputeRaster::recordOwn(VkCommandBuffer cmd, VkImage image) {
