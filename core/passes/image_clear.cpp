@@ -46,7 +46,8 @@ ImageClear::~ImageClear() {
 bool ImageClear::plan(FrameGraph& graph, const std::string& name, ResourceHandle image,
                       VkFormat format, uint32_t samples, VkClearColorValue value) {
     const char* f = storageFormat(format);
-    if (!f || !canStore(ctx_, format, samples)) return false;
+    if ((ctx_.isCpuDevice() && !onCpuDevice_) || !f || !canStore(ctx_, format, samples))
+        return false;
     name_ = name;
     shader_ = std::string("image_clear_") + f + (samples > 1 ? "_ms" : "") + "_comp";
     samples_ = samples;
