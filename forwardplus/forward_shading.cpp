@@ -44,10 +44,8 @@ std::vector<PassUse> ForwardShading::uses(bool transparent) const {
 
 void ForwardShading::plan(FrameGraph& graph, const ShadingTargets& t) {
     t_ = t;
-    const bool msaa = config_.sampling.msaa();
-    computeClear_ = hdrClear_.plan(graph, "forward_hdr_clear", msaa ? t_.hdrMsaa : t_.hdr,
-                                   t_.hdrFormat, msaa ? config_.sampling.samples : 1,
-                                   ColorTarget{}.clearValue);
+    hdrClear_.plan(graph, "forward_hdr_clear", config_.sampling.msaa() ? t_.hdrMsaa : t_.hdr,
+                   ColorTarget{}.clearValue);
     graph.addPass("forward_opaque", uses(false), [this](PassContext& pc) { record(pc, false); });
     if (config_.blendPass)
         graph.addPass("forward_transparent", uses(true),
@@ -218,7 +216,7 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
     color.image = msaa ? t_.hdrMsaa : t_.hdr;
     const bool lastPass = transparent || !config_.blendPass;
     if (msaa && lastPass) color.resolve = t_.hdr;
-    color.clear = !transparent && !computeClear_; // else cleared by forward_hdr_clear
+    color.clear = !transparent && !hdrClear_.planned(); // else cleared by forward_hdr_clear
     DepthTarget depth{msaa ? t_.depthMsaa : t_.depth, {}, false, true};
     beginRendering(pc, {color}, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);

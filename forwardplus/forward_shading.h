@@ -97,7 +97,6 @@ class ForwardShading {
     // forward_hdr_clear: the radiance zeroed by compute before forward_opaque, not by its
     // render pass (on the H200 a render pass's clear runs on the graphics SMs, about 55 GB/s).
     ImageClear hdrClear_;
-    bool computeClear_ = false;
 };
 
 } // namespace tp::fp

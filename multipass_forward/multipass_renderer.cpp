@@ -99,12 +99,10 @@ class MultipassForwardRenderer final : public Renderer {
         // pass's render pass (on the H200 that clear runs on the graphics SMs: docs/efficiency.md,
         // "Clears").
         hdrClear_.emplace(ctx_);
-        const bool clearByPass =
-            !hdrClear_->plan(graph, "base_hdr_clear", t_.color(), accumFormat_,
-                             mp_.sampling.samples, ColorTarget{}.clearValue);
+        hdrClear_->plan(graph, "base_hdr_clear", t_.color(), ColorTarget{}.clearValue);
         graph.addPass("base_pass", withCullUses(shadingUses(t_, last)),
-                      [this, last, clearByPass](PassContext& pc) {
-                          base_->record(pc, t_, last, clearByPass);
+                      [this, last](PassContext& pc) {
+                          base_->record(pc, t_, last, !hdrClear_->planned());
                       });
         if (hasLights) {
             last = !hasBlended;

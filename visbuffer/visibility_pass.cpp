@@ -40,8 +40,7 @@ void VisibilityPass::plan(FrameGraph& graph, const VisibilityTargets& targets,
     seeded_ = seeded;
     if (draws == Draws::None) return; // compute mode: the seed or the merge writes the targets
     // The ids zeroed (no geometry) by compute where the device can store to them.
-    computeClear_ = !seeded_ && idsClear_.plan(graph, "visibility_ids_clear", t_.ids,
-                                               VK_FORMAT_R32_SFLOAT, samples_, {});
+    if (!seeded_) idsClear_.plan(graph, "visibility_ids_clear", t_.ids, {});
     std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment}, {t_.depth, Use::DepthAttachment}};
     // With the compute rasterizer the merge after this pass resolves.
     if (samples_ > 1 && draws == Draws::All) uses.push_back({resolved_, Use::DepthResolve});
@@ -88,7 +87,7 @@ void VisibilityPass::prepare(FrameGraph& graph) {
 void VisibilityPass::record(PassContext& pc, passes::CullPhase phase) {
     // The late phase adds to the early's; seeded, to the compute rasterizer's.
     const bool clear = !seeded_ && phase != passes::CullPhase::Late;
-    ColorTarget ids{t_.ids, {}, clear && !computeClear_, {}}; // else cleared by compute
+    ColorTarget ids{t_.ids, {}, clear && !idsClear_.planned(), {}}; // else by compute
     ids.clearValue.uint32[0] = 0; // no geometry
     DepthTarget depth{t_.depth,
                       samples_ > 1 && draws_ == Draws::All ? resolved_ : ResourceHandle{}, clear};

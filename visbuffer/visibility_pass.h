@@ -74,7 +74,6 @@ class VisibilityPass {
     // visibility_ids_clear: the ids zeroed by compute, not by the pass's clear (a render
     // pass's clear runs on the graphics SMs: on the H200 0.59 ms for the ids at 1080p 4x).
     ImageClear idsClear_;
-    bool computeClear_ = false;
 };
 
 } // namespace vis

@@ -265,6 +265,11 @@ VkSampleCountFlagBits FrameGraph::samples(uint32_t resource) const {
     return decl_.resources().at(resource).isImage ? resources_.at(resource).imageInfo.samples : VK_SAMPLE_COUNT_1_BIT;
 }
 
+VkFormat FrameGraph::format(uint32_t resource) const {
+    return decl_.resources().at(resource).isImage ? resources_.at(resource).imageInfo.format
+                                                  : VK_FORMAT_UNDEFINED;
+}
+
 bool FrameGraph::isAllocated(ResourceHandle h) const {
     const ResourceNode& r = resources_.at(h.index);
     return decl_.resources()[h.index].isImage ? r.image.image != VK_NULL_HANDLE

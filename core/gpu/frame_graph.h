@@ -96,6 +96,7 @@ class FrameGraph {
     // the size for a buffer (docs/efficiency.md: the bytes a pass is counted to move).
     uint64_t contentBytes(uint32_t resource) const;
     VkSampleCountFlagBits samples(uint32_t resource) const; // 1 for a buffer
+    VkFormat format(uint32_t resource) const;               // UNDEFINED for a buffer
     std::vector<std::string> livePasses() const;
     std::vector<std::string> culledPasses() const;
     uint32_t width() const { return width_; }

@@ -5,6 +5,7 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
+#include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
 #include "passes/image_clear.h"
 
@@ -25,13 +26,11 @@ const char* storageFormat(VkFormat format) {
     }
 }
 
-bool canStore(GpuContext& ctx, VkFormat format, uint32_t samples) {
+bool canStore(GpuContext& ctx, const FrameGraph& graph, VkFormat format, uint32_t samples) {
     if (samples > 1 && !ctx.caps.storageImageMultisample) return false;
-    VkImageFormatProperties props{};
-    const VkResult r = vkGetPhysicalDeviceImageFormatProperties(
-        ctx.physical, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL,
-        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0, &props);
-    return r == VK_SUCCESS && (props.sampleCounts & samples);
+    return bool(checkImageSupported(
+        ctx, {format, graph.width(), graph.height(), 1, VkSampleCountFlagBits(samples),
+              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}));
 }
 
 } // namespace
@@ -44,9 +43,11 @@ ImageClear::~ImageClear() {
 }
 
 bool ImageClear::plan(FrameGraph& graph, const std::string& name, ResourceHandle image,
-                      VkFormat format, uint32_t samples, VkClearColorValue value) {
+                      VkClearColorValue value) {
+    const VkFormat format = graph.format(image.index);
+    const uint32_t samples = graph.samples(image.index);
     const char* f = storageFormat(format);
-    if ((ctx_.isCpuDevice() && !onCpuDevice_) || !f || !canStore(ctx_, format, samples))
+    if ((ctx_.isCpuDevice() && !onCpuDevice_) || !f || !canStore(ctx_, graph, format, samples))
         return false;
     name_ = name;
     shader_ = std::string("image_clear_") + f + (samples > 1 ? "_ms" : "") + "_comp";

@@ -27,12 +27,12 @@ class ImageClear {
     ImageClear(const ImageClear&) = delete;
     ImageClear& operator=(const ImageClear&) = delete;
 
-    // Adds pass `name` setting every sample of `image` (`format`, `samples`) to `value`; false
-    // (no pass) where the device cannot store to it or is a CPU: the caller's render pass
-    // clears.
-    bool plan(FrameGraph& graph, const std::string& name, ResourceHandle image, VkFormat format,
-              uint32_t samples, VkClearColorValue value);
-    void prepare(FrameGraph& graph); // nothing if plan() added no pass
+    // Adds pass `name` setting every sample of the graph's image `image` to `value`; false (no
+    // pass) where the device cannot store to it or is a CPU: the caller's render pass clears.
+    bool plan(FrameGraph& graph, const std::string& name, ResourceHandle image,
+              VkClearColorValue value);
+    bool planned() const { return !name_.empty(); } // plan() added the pass
+    void prepare(FrameGraph& graph);                // nothing if plan() added no pass
 
   private:
     void record(PassContext& pc);

@@ -35,7 +35,7 @@ ImageRGBA clearAndRead(GpuContext& ctx, VkFormat format, uint32_t samples,
     fillPass(g, image);
     ImageClear clear(ctx, true);
     VkClearColorValue v{{value[0], value[1], value[2], value[3]}};
-    EXPECT_TRUE(clear.plan(g, "image_clear", image, format, samples, v));
+    EXPECT_TRUE(clear.plan(g, "image_clear", image, v));
     if (samples > 1) {
         out = g.createImage("resolved", {format, 0, 0, VK_SAMPLE_COUNT_1_BIT, "its average"});
         g.addPass("resolve", {{image, Use::TransferSrc}, {out, Use::TransferDst}},
@@ -84,7 +84,7 @@ TEST(ImageClear, LeavesTheClearToTheRenderPassOnACpuDevice) {
     ResourceHandle image =
         g.createImage("target", {VK_FORMAT_R32_SFLOAT, 0, 0, VK_SAMPLE_COUNT_1_BIT, "cleared"});
     ImageClear clear(*ctx);
-    EXPECT_FALSE(clear.plan(g, "image_clear", image, VK_FORMAT_R32_SFLOAT, 1, {}));
+    EXPECT_FALSE(clear.plan(g, "image_clear", image, {}));
 }
 
 } // namespace
