@@ -11,6 +11,7 @@
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/tiled_lighting.h"
 #include "core/renderer/renderer.h"
+#include "include/light_assign.h"
 #include "visbuffer/vis_shared.h"
 
 namespace tp::vis {
@@ -81,12 +82,13 @@ BlendedListTargets BlendedIdsPass::plan(FrameGraph& graph, uint32_t samples, Res
                   });
     graph.watchAfterFrame(t_.counters, 0, TP_VIS_BLEND_COUNTER_WORDS * 4); // overflowed() reads it
     // The nodes need no clear: a node is read only through a head or a node written before it.
-    graph.addPass("blended_ids",
-                  {{depth, Use::DepthTest},
-                   {t_.heads, Use::StorageWrite, TP_VIS_BINDING_BLEND_HEADS},
-                   {t_.nodes, Use::StorageWrite, TP_VIS_BINDING_BLEND_NODES},
-                   {t_.counters, Use::StorageWrite, TP_VIS_BINDING_BLEND_COUNTERS}},
-                  [this](PassContext& pc) { record(pc); });
+    std::vector<PassUse> uses = {
+        {depth, Use::DepthTest},
+        {t_.heads, Use::StorageWrite, TP_VIS_BINDING_BLEND_HEADS},
+        {t_.nodes, Use::StorageWrite, TP_VIS_BINDING_BLEND_NODES},
+        {t_.counters, Use::StorageWrite, TP_VIS_BINDING_BLEND_COUNTERS}};
+    if (bounds_.valid()) uses.push_back({bounds_, Use::StorageWrite, TP_LA_BLEND_BINDING_BOUNDS});
+    graph.addPass("blended_ids", uses, [this](PassContext& pc) { record(pc); });
     return t_;
 }
 
@@ -106,10 +108,13 @@ void BlendedIdsPass::prepare(FrameGraph& graph) {
     GraphicsPipelineDesc d;
     // No material here: scene.vert's position-only variant (the same gl_Position).
     d.vertexShader = "scene_position_vert";
-    d.fragmentShader = "vis_blended_ids_frag";
+    d.fragmentShader = bounds_.valid() ? std::string("vis_blended_ids_bounds") +
+                                             boundsConfig_.inputsSuffix() + "_frag"
+                                       : std::string("vis_blended_ids_frag");
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
     d.specConstants.push_back({TP_SPEC_SAMPLES, samples_});
+    if (bounds_.valid()) d.specConstants.push_back({TP_SPEC_TILE_SIZE, boundsConfig_.grid.tileSize});
     d.samples = VkSampleCountFlagBits(samples_);
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_GREATER; // in front of the opaque depth, as the reference's blend

@@ -9,6 +9,7 @@
 
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
+#include "core/passes/blended_bounds.h"
 #include "visbuffer/draw_table.h"
 
 namespace tp {
@@ -47,6 +48,12 @@ class BlendedIdsPass {
     // storage buffer already holds the most a plan could give it (drops there are counted).
     bool fits(uint64_t bound) const { return bound <= t_.capacity || t_.capacity == most_; }
     void prepare(FrameGraph& graph);
+    // Before plan(): the pass's fragments also record the blended depth bounds into `buffer`
+    // (a BlendedBounds planned with drawnElsewhere, whose config says the rate).
+    void recordBounds(ResourceHandle buffer, const la::BlendedBoundsConfig& config) {
+        bounds_ = buffer;
+        boundsConfig_ = config;
+    }
 
   private:
     void record(PassContext& pc);
@@ -55,6 +62,8 @@ class BlendedIdsPass {
     const DrawTable& table_;
     uint32_t samples_ = 1;
     ResourceHandle depth_;
+    ResourceHandle bounds_; // recordBounds()
+    la::BlendedBoundsConfig boundsConfig_;
     BlendedListTargets t_;
     uint64_t most_ = 0; // nodes one storage buffer holds
     uint64_t grownNeed_ = 0;

@@ -100,6 +100,16 @@ class VisbufferRenderer final : public Renderer {
             visibility_.plan(graph, ids_, cull, hybrid ? Draws::Masked : Draws::None, seeded);
             merge_->plan(graph, samples, ids_, depth_, raster);
         }
+        // The blended depth bounds: recorded by the blended lists' fragments where those are
+        // the same fragments (docs/visbuffer.md), else by the library pass's own draw.
+        ResourceHandle bounds;
+        if (hasBlended_) {
+            la::BlendedBoundsConfig b{lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
+                                      vis_.sampling.perPixelUnderMsaa()};
+            b.drawnElsewhere = blendInCompute_ && b.fusable();
+            bounds = blended_.planBounds(graph, b);
+            if (b.drawnElsewhere) blendedIds_.recordBounds(bounds, b);
+        }
         if (blendInCompute_)
             lists_ = blendedIds_.plan(graph, samples, ids_.depth, vis_.blendedCapacityPercent,
                                       vis_.blendedCapacityPercent == 0 ? fragmentBound() : 0,
@@ -111,11 +121,6 @@ class VisbufferRenderer final : public Renderer {
             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
             {graph.owner(), "", "visibility_draws",
              "per draw an id names: first index, vertex offset, material"});
-        ResourceHandle bounds;
-        if (hasBlended_)
-            bounds = blended_.planBounds(graph,
-                                         {lt_.grid, ids_.depth, samples, vis_.sampling.perSample(),
-                                          vis_.sampling.perPixelUnderMsaa()});
         // The resolve samples every shadowed light's map: the atlas, rendered before it.
         shadows_.emplace(ctx_, scene_, ShadowMaps::Residency::Atlas, vis_.cullGeometry,
                          vis_.shadowRaster);

@@ -1,6 +1,7 @@
 #include "core/passes/blended_bounds.h"
 
 #include <cstring>
+#include <stdexcept>
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -17,6 +18,8 @@ BlendedBounds::~BlendedBounds() {
 }
 
 ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig& config) {
+    if (config.drawnElsewhere && !config.fusable())
+        throw std::logic_error("blended bounds: drawn elsewhere at a rate no other pass shares");
     config_ = config;
     const uint32_t tiles = config.grid.count();
     const std::string name = config.opaque ? "centre_bounds" : "blended_bounds";
@@ -30,6 +33,7 @@ ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig&
             vkCmdFillBuffer(pc.cmd, b, 0, VkDeviceSize(tiles) * 4, TP_LA_BLEND_EMPTY);
             vkCmdFillBuffer(pc.cmd, b, VkDeviceSize(tiles) * 4, VkDeviceSize(tiles) * 4, 0u);
         });
+    if (config.drawnElsewhere) return bounds_;
     graph.addPass(
         name,
         {{config.depth, Use::DepthTest}, {bounds_, Use::StorageWrite, TP_LA_BLEND_BINDING_BOUNDS}},
@@ -38,12 +42,13 @@ ResourceHandle BlendedBounds::plan(FrameGraph& graph, const BlendedBoundsConfig&
 }
 
 void BlendedBounds::prepare(FrameGraph& graph) {
+    if (config_.drawnElsewhere) return;
     set_ = graph.createPassSet(config_.opaque ? "centre_bounds" : "blended_bounds");
     layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
     // The fragment shader reads the position only (fullInterface: the tests' comparison).
     d.vertexShader = config_.fullInterface ? "scene_vert" : "scene_position_vert";
-    d.fragmentShader = std::string("blended_bounds") + (config_.inputsAtPixel ? "_pixel" : "") +
+    d.fragmentShader = std::string("blended_bounds") + config_.inputsSuffix() +
                        (config_.fullInterface ? "_full" : "") + "_frag";
     // The fragment shader reads no material: one pipeline for the opaque and masked draws.
     d.specConstants = scene_.specConstants(config_.opaque ? AlphaMode::Opaque : AlphaMode::Blend);

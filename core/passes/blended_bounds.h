@@ -44,6 +44,18 @@ struct BlendedBoundsConfig {
     // Tests only: draw with the whole scene.vert interface (every output and input) instead
     // of its position-only variant, to check that the variant records the same bounds.
     bool fullInterface = false;
+    // Another pass draws the same blended draws with the same state and records the bounds
+    // in its fragment shader (shaders/passes/blended_bounds.glsl): the visibility buffer's
+    // blended lists. Only the buffer and its clear are planned. Possible only where the
+    // fragments are per pixel: see fusable().
+    bool drawnElsewhere = false;
+
+    // Whether a pass that runs once per pixel and primitive (no sample shading) sees exactly
+    // these fragments at these positions: at 1x, and under MSAA when the bounds are taken once
+    // per pixel at its centre. drawnElsewhere requires it.
+    bool fusable() const { return !opaque && (samples == 1 || (inputsAtPixel && !sampleShading)); }
+    // The variant of blended_bounds.glsl's inputs such a pass compiles: "_pixel" or "".
+    const char* inputsSuffix() const { return inputsAtPixel ? "_pixel" : ""; }
 };
 
 class BlendedBounds {

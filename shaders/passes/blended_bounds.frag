@@ -28,20 +28,6 @@
 // Early tests: the fragment shader has side effects, and only fragments in front of the
 // opaque depth may record (as only those are shaded).
 layout(early_fragment_tests) in;
-layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
-layout(std430, set = TP_SET_PASS, binding = TP_LA_BLEND_BINDING_BOUNDS) buffer Bounds {
-    uint bounds[]; // [0, tiles): min distance bits; [tiles, 2 tiles): max
-};
+#include "passes/blended_bounds.glsl"
 
-void main() {
-    // The shading's position (scene_inputs.glsl: evalFragmentMaterial) and distance
-    // (the clustered lookups' expression).
-    vec3 position = TP_INPUT(inPosition) * (1.0 / TP_INPUT(inOne));
-    float dist = max(-(frame.view * vec4(position, 1.0)).z, 0.0);
-    uvec2 tiles = uvec2(laTileCount1D(frame.viewport.x, kTileSize), laTileCount1D(frame.viewport.y, kTileSize));
-    uint tile = laTileIndex(uvec2(gl_FragCoord.xy), kTileSize, tiles);
-    uint tileCount = tiles.x * tiles.y;
-    uint bits = floatBitsToUint(dist); // non-negative: orders like the value
-    atomicMin(bounds[tile], bits);
-    atomicMax(bounds[tileCount + tile], bits);
-}
+void main() { recordBlendedBound(); }

@@ -11,9 +11,19 @@
 // SampleMask input does not say which samples passed): under MSAA the resolve tests each
 // covered sample against that sample's opaque depth itself. At 1x the early test decides.
 // A full pool drops the fragment and counts it (TP_VIS_BLEND_DROPPED): never silent.
+// TP_VIS_BLEND_BOUNDS: each fragment also records the blended depth bounds
+// (core/passes/blended_bounds.h): the same draws, vertex shader, depth test and fragments as
+// that pass's own draw, which is then not made (docs/visbuffer.md, "The blended bounds in the
+// blended lists' pass"). With TP_INPUTS_AT_PIXEL under MSAA, as that pass's pixel variant.
 #include "include/shared.h"
 #include "visbuffer/vis_shared.h"
 #include "include/scene_bindings.glsl"
+#ifdef TP_VIS_BLEND_BOUNDS
+#define TP_INPUTS_POSITION_ONLY 1
+#include "include/scene_inputs.glsl"
+#include "include/light_assign.glsl"
+#include "passes/blended_bounds.glsl"
+#endif
 
 layout(early_fragment_tests) in;
 layout(constant_id = TP_VIS_SPEC_TRIANGLE_BITS) const uint kTriangleBits = 20u;
@@ -30,6 +40,9 @@ layout(std430, set = TP_SET_PASS, binding = TP_VIS_BINDING_BLEND_COUNTERS) buffe
 };
 
 void main() {
+#ifdef TP_VIS_BLEND_BOUNDS
+    recordBlendedBound(); // before a full pool's early return: every shaded fragment counts
+#endif
     const uint id = ((draw.pad0 + 1u) << kTriangleBits) | uint(gl_PrimitiveID);
     const uint coverage = uint(gl_SampleMaskIn[0]) & ((1u << kSamples) - 1u);
     const uint node = atomicAdd(counters[TP_VIS_BLEND_APPENDED], 1u);

@@ -8,6 +8,11 @@ triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_masked_mes
   DEFINES TP_VIS_MASKED=1 TP_VIS_MESHLETS=1)
 # --vis-blended compute: the blended fragment lists.
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_frag)
+# The same recording the blended depth bounds (passes/blended_bounds.frag's two rates).
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_bounds_frag
+  DEFINES TP_VIS_BLEND_BOUNDS=1)
+triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_bounds_pixel_frag
+  DEFINES TP_VIS_BLEND_BOUNDS=1 TP_INPUTS_AT_PIXEL=1)
 
 # The resolve: the library's tiled lighting with the visibility buffer's surface reader and
 # pixel (vis_resolve.comp), the variant key of passes/tiled_lighting.h: m 0/1/2 (single-sample

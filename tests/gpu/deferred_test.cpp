@@ -877,7 +877,8 @@ std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char
 // (core/passes/blended_bounds.h): a tile with no blended fragment has an empty list
 // (tile_stats' transparent column: what its test found), tiled and clustered, 1x and 4x.
 // Forward+ records the same bounds from its prepass depth (the same vertex shader, depth
-// test and fragments, at the same rate: per pixel or per sample under MSAA), bit for bit.
+// test and fragments, at the same rate: per pixel or per sample under MSAA), bit for bit, and
+// so does the visibility buffer (in its blended lists' pass where they share the fragments).
 TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
@@ -912,6 +913,10 @@ TEST(Deferred, TransparentListsAreEmptyWhereNoBlendedFragmentIs) {
                 const std::vector<uint8_t> ours =
                     exportedBuffer(*ctx, yardGpu, "deferred", s, "blended_bounds");
                 EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "forwardplus", s, "blended_bounds"), ours)
+                    << assign << " " << msaa << "x " << rate;
+                // The visibility buffer's blended lists record them in their own draw where
+                // they run per pixel (1x, pixel rate), its bounds pass otherwise.
+                EXPECT_EQ(exportedBuffer(*ctx, yardGpu, "visbuffer", s, "blended_bounds"), ours)
                     << assign << " " << msaa << "x " << rate;
                 if (msaa == 1) break; // the rate changes nothing at 1x
             }
