@@ -114,7 +114,10 @@ void BlendedIdsPass::prepare(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(AlphaMode::Blend);
     d.specConstants.push_back({TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits});
     d.specConstants.push_back({TP_SPEC_SAMPLES, samples_});
-    if (bounds_.valid()) d.specConstants.push_back({TP_SPEC_TILE_SIZE, boundsConfig_.grid.tileSize});
+    if (bounds_.valid()) {
+        d.specConstants.push_back({TP_SPEC_TILE_SIZE, boundsConfig_.grid.tileSize});
+        d.specConstants.push_back({TP_LA_SPEC_BLEND_BY_SUBGROUP, la::boundsBySubgroup(ctx_)});
+    }
     d.samples = VkSampleCountFlagBits(samples_);
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_GREATER; // in front of the opaque depth, as the reference's blend

@@ -25,6 +25,9 @@ namespace tp::gpu {
 // bits): words [0, tiles) the minimum (+inf bits = 0x7f800000: no blended fragment),
 // words [tiles, 2 * tiles) the maximum (0 without). Cleared by a transfer fill every frame.
 #define TP_LA_BLEND_BINDING_BOUNDS 0 // the bounds pass's own set (TP_SET_PASS): buffer uint[2 * tiles]
+// 1: one atomic pair per tile a subgroup meets, not per fragment (passes/blended_bounds.glsl;
+// a GPU: core/passes/blended_bounds.h, boundsBySubgroup).
+#define TP_LA_SPEC_BLEND_BY_SUBGROUP 6
 #define TP_LA_BLEND_EMPTY 0x7f800000u // +inf: the minimum of a tile with no blended fragment
 // Relative padding of the recorded distances (light_assign.glsl: laBlendedBounds): the
 // bounds pass and the shading pass compute the distance with the same expression from the

@@ -1,5 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require // the bounds (passes/blended_bounds.glsl)
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 // The blended fragment lists (--vis-blended compute): every blended draw, back to front as the
 // reference draws them, depth-tested against the visibility depth (GREATER, no write, early
 // tests, as the hybrid forward pass and the blended bounds are), once per pixel and primitive.

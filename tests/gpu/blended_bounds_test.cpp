@@ -82,5 +82,33 @@ TEST(BlendedBounds, PositionOnlyInterfaceRecordsTheBoundsOfTheWholeInterface) {
     expectNoValidationMessages(*ctx);
 }
 
+// On a GPU the bounds are reduced per subgroup before their atomics (helpers left out); the
+// result must be the bounds of one atomic pair per fragment, bit for bit, at every rate.
+// A CPU device records per fragment only (boundsBySubgroup): nothing to compare there.
+TEST(BlendedBounds, SubgroupReductionRecordsTheBoundsOfPerFragmentAtomics) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    if (!la::boundsBySubgroup(*ctx))
+        GTEST_SKIP() << ctx->info.name << " records the bounds per fragment only";
+    Scene yard = courtyardSmallWithLights(16, 1);
+    SceneGpu yardGpu(*ctx, yard);
+    const la::TileGrid grid = la::makeTileGrid(kWidth, kHeight, 16);
+    struct Case {
+        uint32_t samples;
+        bool sampleShading, inputsAtPixel;
+    };
+    for (Case c : {Case{1, false, false}, Case{4, true, false}, Case{4, false, true}}) {
+        yardGpu.setView(kWidth, kHeight, c.samples);
+        la::BlendedBoundsConfig config{grid, {}, c.samples, c.sampleShading, c.inputsAtPixel};
+        std::vector<uint8_t> reduced = boundsOf(*ctx, yardGpu, config);
+        config.perFragmentAtomics = true;
+        std::vector<uint8_t> atomics = boundsOf(*ctx, yardGpu, config);
+        EXPECT_EQ(reduced, atomics) << c.samples << "x, inputs at "
+                                    << (c.inputsAtPixel ? "pixel" : "sample")
+                                    << (c.sampleShading ? ", per-sample shading" : "");
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 } // namespace
 } // namespace tp::test
