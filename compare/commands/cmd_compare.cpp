@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <future>
 #include <CLI/CLI.hpp>
 
 #include "compare/cache/calibration_cache.h"
@@ -97,17 +99,39 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
     p.files = {p.name + ".exr", p.name + ".png"};
 }
 
+// Each run's images are encoded (EXR and PNG: CPU work) while the next pipeline renders: on a
+// CPU device the renders leave part of the cores idle (docs/efficiency.md, "compare on
+// lavapipe"). join() waits for them all, rethrowing the first failure to write.
+class BackgroundWrites {
+  public:
+    ~BackgroundWrites() {
+        for (std::future<void>& f : pending_)
+            if (f.valid()) f.wait();
+    }
+    void add(std::function<void()> write) {
+        pending_.push_back(std::async(std::launch::async, std::move(write)));
+    }
+    void join() {
+        for (std::future<void>& f : pending_)
+            f.get();
+        pending_.clear();
+    }
+
+  private:
+    std::vector<std::future<void>> pending_;
+};
+
 void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
-                     const std::vector<std::string>& names) {
+                     const std::vector<std::string>& names, BackgroundWrites& writes) {
+    r.pipelines.reserve(names.size()); // each outcome stays where its write finds it
     for (size_t i = 0; i < names.size(); ++i) {
         std::string label =
             "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
-        PipelineOutcome p = renderOne(ctx, gpuScene, names[i], r, o, label);
-        if (p.run) {
-            writeImages(o.out, p, r.exposureEv);
-            warnDropped(p);
-        }
-        r.pipelines.push_back(std::move(p));
+        r.pipelines.push_back(renderOne(ctx, gpuScene, names[i], r, o, label));
+        PipelineOutcome& p = r.pipelines.back();
+        if (!p.run) continue;
+        warnDropped(p);
+        writes.add([&out = o.out, &p, ev = r.exposureEv] { writeImages(out, p, ev); });
     }
 }
 
@@ -240,11 +264,13 @@ int runCompare(const CompareOptions& o) {
         throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
-    writeImages(o.out, r.reference, r.exposureEv);
+    BackgroundWrites writes;
+    writes.add([&] { writeImages(o.out, r.reference, r.exposureEv); });
     check(writeLightsFile(o.out + "/lights.json", scene.lights));
     check(writeCameraFile(o.out + "/camera.json", scene.camera)); // ready for --camera
 
-    renderPipelines(r, o, *ctx, gpuScene, names);
+    renderPipelines(r, o, *ctx, gpuScene, names, writes);
+    writes.join();
     r.shadowPlan = gpuScene.shadowPlan(); // set up by the runs (a cached reference sets up nothing)
     // Again after the runs: a pipeline that culls meshlets had the scene build them
     // (SceneGpu::buildMeshlets, docs/geometry.md), and they are the scene's.
