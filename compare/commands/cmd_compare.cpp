@@ -57,16 +57,50 @@ void removeStaleOutputs(const std::string& out, const std::vector<std::string>& 
     }
 }
 
+// Each run's images are encoded (EXR and PNG: CPU work) while the next pipeline is set up and
+// warms up: on a CPU device that leaves part of the cores idle (docs/visbuffer.md, "compare on
+// lavapipe"). They are joined before its timed frames, whose time on a CPU device is CPU time
+// that a thread beside them would take. wait() only waits (inside a run, where a write's
+// failure is not the renderer's); join() also rethrows the first failure to write.
+class BackgroundWrites {
+  public:
+    ~BackgroundWrites() { wait(); }
+    void wait() {
+        for (std::future<void>& f : pending_)
+            if (f.valid()) f.wait();
+    }
+    void add(std::function<void()> write) {
+        pending_.push_back(std::async(std::launch::async, std::move(write)));
+    }
+    void join() {
+        for (std::future<void>& f : pending_)
+            f.get();
+        pending_.clear();
+    }
+
+  private:
+    std::vector<std::future<void>> pending_;
+};
+
 // Runs one renderer; a renderer that cannot be built, or a Vulkan failure inside it, becomes
 // a failed outcome so the other pipelines still run.
+// `writes`: joined before the first timed frame (BackgroundWrites).
 PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
-                          const CompareRecord& r, const CompareOptions& o, const std::string& label) {
+                          const CompareRecord& r, const CompareOptions& o, const std::string& label,
+                          BackgroundWrites* writes = nullptr) {
     PipelineOutcome p;
     p.name = name;
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
     RunOptions ro = progressRunOptions(name, o.warmup, o.frames);
+    if (writes && o.warmup == 0) writes->wait();
+    if (writes && o.warmup > 0)
+        ro.onFrame = [writes, timed = uint32_t(o.frames), print = ro.onFrame](
+                         uint32_t f, uint32_t total, double ms) {
+            print(f, total, ms);
+            if (f + 1 + timed == total) writes->wait(); // the last warm-up frame
+        };
     if (r.calibration) ro.ceilings = ceilingsOf(*r.calibration);
     ro.energy = r.energy;
     Result<RunResult> result =
@@ -99,35 +133,14 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
     p.files = {p.name + ".exr", p.name + ".png"};
 }
 
-// Each run's images are encoded (EXR and PNG: CPU work) while the next pipeline renders: on a
-// CPU device the renders leave part of the cores idle (docs/efficiency.md, "compare on
-// lavapipe"). join() waits for them all, rethrowing the first failure to write.
-class BackgroundWrites {
-  public:
-    ~BackgroundWrites() {
-        for (std::future<void>& f : pending_)
-            if (f.valid()) f.wait();
-    }
-    void add(std::function<void()> write) {
-        pending_.push_back(std::async(std::launch::async, std::move(write)));
-    }
-    void join() {
-        for (std::future<void>& f : pending_)
-            f.get();
-        pending_.clear();
-    }
-
-  private:
-    std::vector<std::future<void>> pending_;
-};
-
 void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
                      const std::vector<std::string>& names, BackgroundWrites& writes) {
     r.pipelines.reserve(names.size()); // each outcome stays where its write finds it
     for (size_t i = 0; i < names.size(); ++i) {
         std::string label =
             "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
-        r.pipelines.push_back(renderOne(ctx, gpuScene, names[i], r, o, label));
+        r.pipelines.push_back(renderOne(ctx, gpuScene, names[i], r, o, label, &writes));
+        writes.join(); // done before the run's timed frames: a failed write ends the run here
         PipelineOutcome& p = r.pipelines.back();
         if (!p.run) continue;
         warnDropped(p);

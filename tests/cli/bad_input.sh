@@ -40,6 +40,20 @@ expect_error "FLIP viewing distance out of range" compare --flip-distance 0 --re
 expect_error "FLIP viewing distance not a number" sweep --flip-distance far --res 8x8
 expect_error "no such device" render --device 99 --res 8x8
 expect_error "scene that is a directory" render /tmp
+# An image that cannot be written in the middle of a compare (a run's images are encoded while
+# the next pipeline warms up): a non-zero exit whose last line names the file, and no
+# report.json to say that the run completed.
+out="$work/unwritable"
+mkdir -p "$out/forwardplus.png.partial" # where the PNG is written before its rename
+run_triptych compare builtin:courtyard-small --res 16x16 --frames 1 --warmup 1 \
+    --pipelines forwardplus,deferred --out "$out"
+problem=""
+if [ "$code" -eq 0 ] || [ "$code" -ge 128 ]; then problem="exit code $code"
+elif ! tail -n 1 "$work/stderr" | grep -q "^triptych: .*forwardplus.png"; then
+    problem="the last line does not name forwardplus.png: $(tail -n 1 "$work/stderr")"
+elif [ -e "$out/report.json" ]; then problem="wrote report.json"
+fi
+report "compare that cannot write an image" "$problem"
 if [ -n "$scenes" ] && [ -d "$scenes/negative" ]; then
     while IFS= read -r f; do
         case "$f" in */non_relative_uri.gltf) continue ;; esac # valid apart from its URI: a warning
