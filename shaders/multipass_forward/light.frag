@@ -7,6 +7,9 @@
 // the same draw, so after all passes a blended draw holds exactly what shading all lights
 // at once and blending once gives (blended_pass.cpp, docs/multipass_forward.md).
 //
+// Opaque and masked draws (the light passes): a 2x2 quad beyond the light's range leaves
+// early with the zero it adds (docs/multipass_forward.md, "Quads beyond a light's range").
+//
 // TP_MP_BLENDED_GPU (mp_light_blend_frag): the blended light draws and their transmittance
 // resets as one pipeline, drawn by indirect commands that blended_light_draws.comp wrote. The
 // command's firstInstance (scene_material_vert, flat) names the light's slot and whether this is
@@ -39,6 +42,21 @@ bool inRect(ivec2 lo, ivec2 hi, ivec4 r) {
 layout(location = 0) out vec4 outColor;
 #endif
 
+#ifndef TP_MP_BLENDED_GPU
+// Whether no fragment of this 2x2 quad lies within the light's range, by a margin (this test
+// need not round as evalLight's does): the quad then adds exactly the zero evalLight gives
+// there, and may skip the material. The derivatives run in uniform control flow: each lane's
+// flag OR-ed with its row neighbour's (fine x), then with its column neighbour's (fine y).
+bool quadOutOfRange(LightGpu light) {
+    if (light.type == TP_LIGHT_DIRECTIONAL) return false;
+    const vec3 position = TP_INPUT(inPosition) * (1.0 / TP_INPUT(inOne));
+    const float reach = length(light.position - position) < light.range * 1.0001 ? 1.0 : 0.0;
+    const float pair = dFdxFine(reach) != 0.0 ? 1.0 : reach;
+    const float quad = dFdyFine(pair) != 0.0 ? 1.0 : pair;
+    return quad == 0.0;
+}
+#endif
+
 void main() {
 #ifdef TP_MP_BLENDED_GPU
     const LightDrawLight row = lightRows[inLightWord & TP_MPBL_SLOT_MASK];
@@ -58,6 +76,11 @@ void main() {
     const uint light = row.light;
 #else
     const uint light = draw.TP_MP_LIGHT_INDEX;
+    // The light passes' opaque and masked draws (the blended ones need their alpha).
+    if (kAlphaMode != TP_ALPHA_BLEND && quadOutOfRange(lights[light])) {
+        outColor = vec4(0.0); // what evalLight's zero gives below, without the material
+        return;
+    }
 #endif
     MaterialSample ms = evalFragmentMaterial();
     // The _shadow twin (--shadows) multiplies by the map this pass rendered for the light
