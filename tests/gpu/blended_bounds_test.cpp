@@ -50,45 +50,14 @@ std::vector<uint8_t> boundsOf(GpuContext& ctx, SceneGpu& scene, la::BlendedBound
     return bytes;
 }
 
+// The bounds at every rate the passes take them, drawn by the default pass and again with one of
+// its test switches on (`variant`): the same bytes, and the comparison saw blended fragments.
 // 1x and 4x; per-sample inputs (Forward+ and deferred under --msaa-shading sample, and 1x),
 // once-per-pixel inputs (Forward+'s --msaa-shading pixel); per-sample shading or not.
-TEST(BlendedBounds, PositionOnlyInterfaceRecordsTheBoundsOfTheWholeInterface) {
+void expectTheSameBoundsAtEveryRate(bool la::BlendedBoundsConfig::*variant) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    Scene yard = courtyardSmallWithLights(16, 1);
-    SceneGpu yardGpu(*ctx, yard);
-    const la::TileGrid grid = la::makeTileGrid(kWidth, kHeight, 16);
-    struct Case {
-        uint32_t samples;
-        bool sampleShading, inputsAtPixel;
-    };
-    for (Case c : {Case{1, false, false}, Case{4, true, false}, Case{4, false, true}}) {
-        yardGpu.setView(kWidth, kHeight, c.samples);
-        la::BlendedBoundsConfig config{grid, {}, c.samples, c.sampleShading, c.inputsAtPixel};
-        std::vector<uint8_t> lean = boundsOf(*ctx, yardGpu, config);
-        config.fullInterface = true;
-        std::vector<uint8_t> full = boundsOf(*ctx, yardGpu, config);
-        const std::string what = std::to_string(c.samples) + "x, " +
-                                 (c.inputsAtPixel ? "pixel" : "sample") + " inputs" +
-                                 (c.sampleShading ? ", per-sample shading" : "");
-        ASSERT_EQ(lean.size(), size_t(grid.count()) * 8) << what;
-        EXPECT_EQ(lean, full) << what;
-        uint32_t any = 0;
-        for (const la::TileBlendedBounds& t : la::unpackBlendedBounds(lean, grid.count()))
-            any += t.any ? 1 : 0;
-        EXPECT_GT(any, 0u) << what; // the comparison saw blended fragments
-        EXPECT_LT(any, grid.count()) << what;
-    }
-    expectNoValidationMessages(*ctx);
-}
-
-// On a GPU the bounds are reduced per subgroup before their atomics (helpers left out); the
-// result must be the bounds of one atomic pair per fragment, bit for bit, at every rate.
-// A CPU device records per fragment only (boundsBySubgroup): nothing to compare there.
-TEST(BlendedBounds, SubgroupReductionRecordsTheBoundsOfPerFragmentAtomics) {
-    auto ctx = makeValidatedContext();
-    ASSERT_TRUE(ctx);
-    if (!la::boundsBySubgroup(*ctx))
+    if (variant == &la::BlendedBoundsConfig::perFragmentAtomics && !la::boundsBySubgroup(*ctx))
         GTEST_SKIP() << ctx->info.name << " records the bounds per fragment only";
     Scene yard = courtyardSmallWithLights(16, 1);
     SceneGpu yardGpu(*ctx, yard);
@@ -100,14 +69,32 @@ TEST(BlendedBounds, SubgroupReductionRecordsTheBoundsOfPerFragmentAtomics) {
     for (Case c : {Case{1, false, false}, Case{4, true, false}, Case{4, false, true}}) {
         yardGpu.setView(kWidth, kHeight, c.samples);
         la::BlendedBoundsConfig config{grid, {}, c.samples, c.sampleShading, c.inputsAtPixel};
-        std::vector<uint8_t> reduced = boundsOf(*ctx, yardGpu, config);
-        config.perFragmentAtomics = true;
-        std::vector<uint8_t> atomics = boundsOf(*ctx, yardGpu, config);
-        EXPECT_EQ(reduced, atomics) << c.samples << "x, inputs at "
-                                    << (c.inputsAtPixel ? "pixel" : "sample")
-                                    << (c.sampleShading ? ", per-sample shading" : "");
+        std::vector<uint8_t> plain = boundsOf(*ctx, yardGpu, config);
+        config.*variant = true;
+        std::vector<uint8_t> other = boundsOf(*ctx, yardGpu, config);
+        const std::string what = std::to_string(c.samples) + "x, " +
+                                 (c.inputsAtPixel ? "pixel" : "sample") + " inputs" +
+                                 (c.sampleShading ? ", per-sample shading" : "");
+        ASSERT_EQ(plain.size(), size_t(grid.count()) * 8) << what;
+        EXPECT_EQ(plain, other) << what;
+        uint32_t any = 0;
+        for (const la::TileBlendedBounds& t : la::unpackBlendedBounds(plain, grid.count()))
+            any += t.any ? 1 : 0;
+        EXPECT_GT(any, 0u) << what; // the comparison saw blended fragments
+        EXPECT_LT(any, grid.count()) << what;
     }
     expectNoValidationMessages(*ctx);
+}
+
+TEST(BlendedBounds, PositionOnlyInterfaceRecordsTheBoundsOfTheWholeInterface) {
+    expectTheSameBoundsAtEveryRate(&la::BlendedBoundsConfig::fullInterface);
+}
+
+// On a GPU the bounds are reduced per subgroup before their atomics (helpers left out); the
+// result must be the bounds of one atomic pair per fragment, bit for bit, at every rate.
+// A CPU device records per fragment only (boundsBySubgroup): nothing to compare there.
+TEST(BlendedBounds, SubgroupReductionRecordsTheBoundsOfPerFragmentAtomics) {
+    expectTheSameBoundsAtEveryRate(&la::BlendedBoundsConfig::perFragmentAtomics);
 }
 
 } // namespace
