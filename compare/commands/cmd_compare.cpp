@@ -57,8 +57,8 @@ void removeStaleOutputs(const std::string& out, const std::vector<std::string>& 
     }
 }
 
-// Each run's images are encoded (EXR and PNG: CPU work) while the next pipeline is set up and
-// warms up: on a CPU device that leaves part of the cores idle (docs/visbuffer.md, "compare on
+// Each run's images are encoded (EXR and PNG: CPU work), and measured against the reference,
+// while the next pipeline is set up and warms up: on a CPU device that leaves part of the cores idle (docs/visbuffer.md, "compare on
 // lavapipe"). They are joined before its timed frames, whose time on a CPU device is CPU time
 // that a thread beside them would take. wait() only waits (inside a run, where a write's
 // failure is not the renderer's); join() also rethrows the first failure to write.
@@ -133,8 +133,11 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
     p.files = {p.name + ".exr", p.name + ".png"};
 }
 
+// Each run's images written and its measurements against the reference taken beside the next
+// pipeline's setup and warm-up (BackgroundWrites).
 void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
-                     const std::vector<std::string>& names, BackgroundWrites& writes) {
+                     const std::vector<std::string>& names, BackgroundWrites& writes,
+                     const ReferenceMeasures& measures) {
     r.pipelines.reserve(names.size()); // each outcome stays where its write finds it
     for (size_t i = 0; i < names.size(); ++i) {
         std::string label =
@@ -144,7 +147,10 @@ void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx,
         PipelineOutcome& p = r.pipelines.back();
         if (!p.run) continue;
         warnDropped(p);
-        writes.add([&out = o.out, &p, ev = r.exposureEv] { writeImages(out, p, ev); });
+        writes.add([&out = o.out, &p, ev = r.exposureEv, &measures, i] {
+            writeImages(out, p, ev);
+            measures.measure(p, i);
+        });
     }
 }
 
@@ -282,13 +288,14 @@ int runCompare(const CompareOptions& o) {
     check(writeLightsFile(o.out + "/lights.json", scene.lights));
     check(writeCameraFile(o.out + "/camera.json", scene.camera)); // ready for --camera
 
-    renderPipelines(r, o, *ctx, gpuScene, names, writes);
+    ReferenceMeasures measures(r, names.size());
+    renderPipelines(r, o, *ctx, gpuScene, names, writes, measures);
     writes.join();
     r.shadowPlan = gpuScene.shadowPlan(); // set up by the runs (a cached reference sets up nothing)
     // Again after the runs: a pipeline that culls meshlets had the scene build them
     // (SceneGpu::buildMeshlets, docs/geometry.md), and they are the scene's.
     r.sharedMemory = ctx->ledger.entriesOf("scene");
-    measureAgainstReference(r, o.out);
+    measures.write(r, o.out);
     measurePairs(r, o.out);
     measureAgainstCenterReference(r, o, *ctx, gpuScene);
     measureAgainstShadowMapReference(r, o, *ctx, gpuScene);

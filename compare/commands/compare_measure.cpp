@@ -34,29 +34,27 @@ void writeDifference(const std::string& out, const std::string& stem, const Imag
     files.push_back(stem + ".png");
 }
 
-// Metrics against the reference and the signed difference of every pipeline that ran.
-std::vector<ImageRGBA> measure(CompareRecord& r, const ImageRGBA& refDisplay) {
-    const ImageRGBA& ref = r.reference.run->hdr;
-    MetricsOptions hdrOptions;
-    hdrOptions.psnrPeak = r.hdrPsnrPeak;
-    std::vector<ImageRGBA> diffs;
-    const FlipReference flipRef = prepareFlipReference(ref, r.exposureEv, r.request.flipDistance);
-    for (PipelineOutcome& p : r.pipelines) {
-        if (!p.run) {
-            diffs.emplace_back();
-            continue;
-        }
-        p.hdr = computeError(p.run->hdr, ref, hdrOptions);
-        p.display = computeError(tonemapToDisplay(p.run->hdr, r.exposureEv), refDisplay);
-        diffs.push_back(signedDifference(p.run->hdr, ref));
-        p.diffP99 = differencePercentile99(diffs.back());
-        p.flip = measureFlip(p.run->hdr, flipRef, /*keepMaps=*/true);
-        r.diffScale = std::max(r.diffScale, p.diffP99);
-    }
-    // A scale of 0 (every pipeline equals the reference) would make the legend meaningless.
-    if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f;
-    return diffs;
+} // namespace
+
+ReferenceMeasures::ReferenceMeasures(const CompareRecord& r, size_t pipelines)
+    : reference_(r.reference.run->hdr), exposureEv_(r.exposureEv),
+      referenceDisplay_(tonemapToDisplay(reference_, r.exposureEv)),
+      flipReference_(prepareFlipReference(reference_, r.exposureEv, r.request.flipDistance)),
+      diffs_(pipelines) {
+    hdrOptions_.psnrPeak = r.hdrPsnrPeak;
 }
+
+// Metrics against the reference and the signed difference of one pipeline that ran.
+void ReferenceMeasures::measure(PipelineOutcome& p, size_t index) const {
+    if (!p.run) return;
+    p.hdr = computeError(p.run->hdr, reference_, hdrOptions_);
+    p.display = computeError(tonemapToDisplay(p.run->hdr, exposureEv_), referenceDisplay_);
+    diffs_.at(index) = signedDifference(p.run->hdr, reference_);
+    p.diffP99 = differencePercentile99(diffs_[index]);
+    p.flip = measureFlip(p.run->hdr, flipReference_, /*keepMaps=*/true);
+}
+
+namespace {
 
 // A FLIP map as EXR (the values, grey) and as the magma PNG with its legend.
 void writeFlipMap(const std::string& out, const std::string& stem, const ImageR32& map,
@@ -73,9 +71,16 @@ void writeFlipMap(const std::string& out, const std::string& stem, const ImageR3
     files.push_back(stem + ".png");
 }
 
+} // namespace
+
 // Each pipeline's maps are its own files: written side by side (EXR and PNG encoding is most
 // of a compare's time after the renders).
-void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs, const std::string& out) {
+void ReferenceMeasures::write(CompareRecord& r, const std::string& out) {
+    for (const PipelineOutcome& p : r.pipelines)
+        if (p.run) r.diffScale = std::max(r.diffScale, p.diffP99);
+    // A scale of 0 (every pipeline equals the reference) would make the legend meaningless.
+    if (!(r.diffScale > 0.0f)) r.diffScale = 1e-6f;
+    const std::vector<ImageRGBA>& diffs = diffs_;
     forEachInParallel(r.pipelines.size(), [&](size_t i) {
         PipelineOutcome& p = r.pipelines[i];
         if (!p.run) return;
@@ -86,18 +91,13 @@ void writeDifferences(CompareRecord& r, const std::vector<ImageRGBA>& diffs, con
         p.flip.hdrMap = {};
         p.flip.ldrMap = {};
     });
+    diffs_.clear();
 }
-
-} // namespace
 
 std::string pairDiffStem(const std::string& a, const std::string& b) {
     return a + "_vs_" + b + "_diff";
 }
 
-
-void measureAgainstReference(CompareRecord& r, const std::string& out) {
-    writeDifferences(r, measure(r, tonemapToDisplay(r.reference.run->hdr, r.exposureEv)), out);
-}
 
 // Pipelines against each other: metrics of a against b, and the signed difference a - b as
 // EXR and heat map on the same scale as the maps against the reference (what exceeds it
