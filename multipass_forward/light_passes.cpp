@@ -14,6 +14,7 @@
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/shadow_maps.h"
 #include "multipass_forward/light_draw_pass.h"
+#include "multipass_forward/multipass_shared.h"
 #include "multipass_forward/passes.h"
 
 namespace tp::mp {
@@ -31,17 +32,23 @@ void clearStencil(PassContext& pc, const Targets& t) {
 
 } // namespace
 
-LightPasses::LightPasses(const PassEnv& env) : env_(env) {
+LightPasses::LightPasses(const PassEnv& env, const PassSet* litSet)
+    : env_(env), litSet_(litSet ? litSet->set : VK_NULL_HANDLE) {
     if (!env.allDraws && env.plan.batches.empty()) return;
+    const bool count = litSet != nullptr;
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Opaque); // masked too: EQUAL test
-    d.fragmentShader = fragmentShader(env, "light");
+    d.fragmentShader = fragmentShader(env, count ? "light_count" : "light");
+    if (count) {
+        d.specConstants.push_back({TP_MP_SPEC_COUNT_LIT, 1u});
+        d.passSet = litSet;
+    }
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.blend = BlendMode::Additive;
     d.stencilOnce = true;
     if (env.lightDraws) { // GPU lists: the material from each command's firstInstance
         d.vertexShader = "scene_material_vert";
-        d.fragmentShader = fragmentShader(env, "light_inst");
+        d.fragmentShader = fragmentShader(env, count ? "light_inst_count" : "light_inst");
     }
     pipeline_ = createGraphicsPipeline(env.ctx, d);
     shadowed_ = createShadowedTwin(env, d);
@@ -89,6 +96,9 @@ void LightPasses::record(PassContext& pc, const Targets& t, bool resolve) {
 // The scene set and index buffer the light's draws read: with GPU lists the meshlet index
 // buffer (the commands are spans of meshlets), else drawOpaque's.
 void LightPasses::bind(PassContext& pc, VkPipeline pipeline) const {
+    if (litSet_)
+        vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, env_.layout, TP_SET_PASS,
+                                1, &litSet_, 0, nullptr);
     if (!env_.lightDraws) return bindSceneDraws(pc.cmd, env_, pipeline);
     vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     env_.scene.bindSceneSet(pc.cmd, env_.layout, VK_PIPELINE_BIND_POINT_GRAPHICS);

@@ -144,6 +144,7 @@ class BasePass {
 
   private:
     const PassEnv env_;
+    VkDescriptorSet litSet_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     uint32_t draws_ = 0;
 };
@@ -152,7 +153,10 @@ class BasePass {
 // scissored to the light's screen rectangle; one graph pass, so one timing.
 class LightPasses {
   public:
-    explicit LightPasses(const PassEnv& env);
+    // litSet: count the fragments that evaluate their light into its TP_MP_BINDING_LIT (a GPU
+    // with pass statistics; env.layout then holds the scene set, it and the shadow set); null:
+    // the plain variants, which count nothing.
+    LightPasses(const PassEnv& env, const PassSet* litSet);
     ~LightPasses();
     void record(PassContext& pc, const Targets& t, bool resolve);
     // Draws recorded: with CPU lists one per light and mesh; with GPU lists (env.lightDraws)
@@ -166,6 +170,7 @@ class LightPasses {
     void recordDraws(PassContext& pc, const LightBatch& batch);
 
     const PassEnv env_;
+    VkDescriptorSet litSet_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipeline shadowed_ = VK_NULL_HANDLE; // --shadows: the twin, for the shadowed lights
     uint32_t draws_ = 0, mapRenders_ = 0;

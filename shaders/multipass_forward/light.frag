@@ -1,5 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require // TP_MP_LIGHT_PASS's count
+#extension GL_KHR_shader_subgroup_arithmetic : require
 // One light's contribution, added into the accumulation target. Opaque and masked surfaces:
 // blend ONE + ONE, alpha kept. Blended surfaces return (alpha * light, alpha) and blend
 // "under" (colour: DST_ALPHA, ONE; alpha: ZERO, ONE_MINUS_SRC_ALPHA) with their triangles
@@ -9,6 +11,8 @@
 //
 // Opaque and masked draws (the light passes): a 2x2 quad beyond the light's range leaves
 // early with the zero it adds (docs/multipass_forward.md, "Quads beyond a light's range").
+// TP_MP_LIGHT_PASS (the light passes' own variants): the fragments that evaluate their light
+// are counted (multipass_shared.h: TP_MP_BINDING_LIT).
 //
 // TP_MP_BLENDED_GPU (mp_light_blend_frag): the blended light draws and their transmittance
 // resets as one pipeline, drawn by indirect commands that blended_light_draws.comp wrote. The
@@ -40,6 +44,31 @@ bool inRect(ivec2 lo, ivec2 hi, ivec4 r) {
 }
 #else
 layout(location = 0) out vec4 outColor;
+#endif
+
+#ifdef TP_MP_LIGHT_PASS
+// The count is a side effect: without early tests a fragment that fails depth EQUAL or the
+// stencil could run the shader first and be counted (and an NVIDIA GPU then tests late, for
+// every fragment). Early tests change nothing else here: no discard, no depth write, and the
+// stencil's light tag is written by the test itself.
+layout(early_fragment_tests) in;
+// Only a GPU's variants count (kCountLit, the renderer's choice): lavapipe (Mesa 22.3) cannot
+// compile gl_HelperInvocation, and these variants' storage buffer alone made its light passes
+// slower (1,075 -> 1,300 ms, docs/multipass_forward.md); it draws with the plain variants.
+layout(constant_id = TP_MP_SPEC_COUNT_LIT) const bool kCountLit = false;
+layout(std430, set = TP_SET_PASS, binding = TP_MP_BINDING_LIT) buffer LitBlock {
+    uint lit[TP_MP_LIT_SLOTS];
+};
+
+// One add per subgroup of the fragments (not helpers) that evaluate their light.
+void countLit() {
+    if (gl_HelperInvocation) return;
+    const uint n = subgroupAdd(1u);
+    if (subgroupElect()) {
+        const uvec2 p = uvec2(gl_FragCoord.xy);
+        atomicAdd(lit[(p.x / 8u + p.y / 8u * 5u) % TP_MP_LIT_SLOTS], n);
+    }
+}
 #endif
 
 #ifndef TP_MP_BLENDED_GPU
@@ -81,6 +110,9 @@ void main() {
         outColor = vec4(0.0); // what evalLight's zero gives below, without the material
         return;
     }
+#ifdef TP_MP_LIGHT_PASS
+    if (kCountLit) countLit();
+#endif
 #endif
     MaterialSample ms = evalFragmentMaterial();
     // The _shadow twin (--shadows) multiplies by the map this pass rendered for the light

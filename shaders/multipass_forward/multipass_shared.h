@@ -19,4 +19,13 @@
 #define TP_MP_SPEC_DIRECTIONAL_COUNT 10
 #define TP_MP_SPEC_DIRECTIONAL_FIRST 11 // ids 11 .. 11 + TP_MP_MAX_BASE_DIRECTIONAL - 1
 
+// The light passes (light.frag under TP_MP_LIGHT_PASS) on a GPU with pass statistics: the
+// fragments that evaluate their light (a 2x2 quad beyond its range does not) are counted per
+// subgroup into TP_MP_LIT_SLOTS words, spread so that the atomics seldom meet, summed on the
+// CPU: the light passes' counted work (docs/multipass_forward.md, "Quads beyond a light's
+// range").
+#define TP_MP_BINDING_LIT 0 // set TP_SET_PASS of the light passes: uint[TP_MP_LIT_SLOTS]
+#define TP_MP_LIT_SLOTS 64
+#define TP_MP_SPEC_COUNT_LIT 9 // 1: count them
+
 #endif

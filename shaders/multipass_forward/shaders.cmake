@@ -17,6 +17,15 @@ triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_frag
   DEFINES TP_MATERIAL_FROM_INSTANCE=1)
 triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_pixel_frag
   DEFINES TP_MATERIAL_FROM_INSTANCE=1 TP_INPUTS_AT_PIXEL=1)
+# The light passes counting the fragments that evaluate their light (a GPU with pass statistics:
+# TP_MP_LIGHT_PASS), with the CPU's lists and with the GPU's.
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_count_frag DEFINES TP_MP_LIGHT_PASS=1)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_count_pixel_frag
+  DEFINES TP_INPUTS_AT_PIXEL=1 TP_MP_LIGHT_PASS=1)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_count_frag
+  DEFINES TP_MATERIAL_FROM_INSTANCE=1 TP_MP_LIGHT_PASS=1)
+triptych_add_shadowed_shader(SPVS ${SHADER_DIR}/light.frag mp_light_inst_count_pixel_frag
+  DEFINES TP_MATERIAL_FROM_INSTANCE=1 TP_INPUTS_AT_PIXEL=1 TP_MP_LIGHT_PASS=1)
 # Blended light draws and resets from the GPU's lists (blended_light_draws.comp writes them): one
 # dual-source pipeline, the light's slot in each command's firstInstance.
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_light_draws.comp mp_blended_light_draws_comp)

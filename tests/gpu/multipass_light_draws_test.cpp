@@ -253,5 +253,35 @@ TEST(MultipassLightDrawsViews, NoViewBuildsPerLightListsOnTheCpu) {
     expectNoValidationMessages(*ctx);
 }
 
+// A light pass's 2x2 quad beyond the light's range skips the light and the material, so the
+// fragments no longer count the light evaluations. On a GPU the shader counts the fragments
+// that evaluate their light (per subgroup, helpers left out): some, and never more than the
+// pass's fragment invocations; on a CPU device the count is left out, saying why. Both list
+// layouts (CPU lists draw the plain and count variants, GPU lists the per-instance ones).
+TEST(MultipassLightCount, TheLightPassesCountTheFragmentsThatEvaluateTheirLight) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    const Scene scene = sceneWithLights();
+    const bool gpu = !ctx->isCpuDevice();
+    for (const char* lists : {"cpu", "gpu"}) {
+        const RunResult r = render(*ctx, scene, Config{"1x"}, lists);
+        const PassWork* lit = nullptr;
+        for (const PassWork& w : r.work)
+            if (w.pass == "light_passes") lit = &w;
+        ASSERT_NE(lit, nullptr) << lists;
+        bool leftOut = false;
+        for (const LeftOut& l : r.stats.leftOut)
+            leftOut |= l.what.find("light_passes' light evaluations") != std::string::npos;
+        EXPECT_EQ(leftOut, !gpu) << lists;
+        if (!gpu) {
+            EXPECT_TRUE(lit->lightHow.empty()) << lists;
+            continue;
+        }
+        EXPECT_GT(lit->lightEvaluations, 0.0) << lists;
+        EXPECT_LE(lit->lightEvaluations, double(lit->counts.fragmentInvocations)) << lists;
+    }
+    expectNoValidationMessages(*ctx);
+}
+
 } // namespace
 } // namespace tp::test::mp_light_draws
