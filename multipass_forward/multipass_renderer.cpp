@@ -1,6 +1,5 @@
 #include "multipass_forward/multipass_renderer.h"
 
-#include <cstring>
 #include <optional>
 
 #include "core/calibrate/material_fetches.h"
@@ -10,12 +9,11 @@
 #include "core/gpuscene/scene_gpu.h"
 #include "core/passes/depth_prepass.h"
 #include "core/passes/image_clear.h"
-#include "core/passes/blended_bounds.h"
 #include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "multipass_forward/blended_light_draw_pass.h"
+#include "multipass_forward/light_count.h"
 #include "multipass_forward/light_draw_pass.h"
-#include "multipass_forward/multipass_shared.h"
 #include "multipass_forward/passes.h"
 
 namespace tp {
@@ -33,17 +31,6 @@ uint32_t localLightCount(const SceneGpu& scene) {
 }
 
 // --light-draws gpu where the device and the size allow it (why not: `why`), else cpu.
-// The sum of a buffer's 32-bit words (a count spread over slots).
-double sumOfWords(const std::vector<uint8_t>& bytes) {
-    double sum = 0;
-    for (size_t i = 0; i + 4 <= bytes.size(); i += 4) {
-        uint32_t v;
-        std::memcpy(&v, bytes.data() + i, 4);
-        sum += v;
-    }
-    return sum;
-}
-
 LightLists chooseLists(const RendererCreateInfo& info, const Settings& s, std::string& why) {
     if (s.lightLists == LightLists::Cpu) return LightLists::Cpu;
     why = LightDrawPass::unavailable(info.ctx, info.scene, localLightCount(info.scene));
@@ -74,10 +61,9 @@ class MultipassForwardRenderer final : public Renderer {
         : ctx_(info.ctx), scene_(info.scene), mp_(readSettings(info.settings)),
           accumFormat_(mp_.accum == Accum::Fp16 ? VK_FORMAT_R16G16B16A16_SFLOAT
                                                 : VK_FORMAT_R32G32B32A32_SFLOAT),
-          manyViews_(info.settings.manyViews),
-          countLit_(info.settings.passStatistics && la::boundsBySubgroup(info.ctx)),
-          lists_(chooseLists(info, mp_, listsWhy_)),
-          blendedLists_(chooseBlendedLists(info, mp_, lists_, blendedWhy_)), plan_(newPlan()) {}
+          manyViews_(info.settings.manyViews), lists_(chooseLists(info, mp_, listsWhy_)),
+          blendedLists_(chooseBlendedLists(info, mp_, lists_, blendedWhy_)), plan_(newPlan()),
+          lightCount_(info.ctx, info.scene, info.settings.passStatistics) {}
 
     ~MultipassForwardRenderer() override {
         cull_.reset();
@@ -89,8 +75,6 @@ class MultipassForwardRenderer final : public Renderer {
         blended_.reset();
         shadows_.reset();
         if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
-        if (lightLayout_) vkDestroyPipelineLayout(ctx_.device, lightLayout_, nullptr);
-        destroyPassSet(ctx_, litSet_);
     }
 
     void plan(FrameGraph& graph) override {
@@ -134,7 +118,7 @@ class MultipassForwardRenderer final : public Renderer {
                     uses.push_back(u);
             }
             addShadowUse(uses, &*shadows_);
-            if (countLit_) planLitCount(graph, uses);
+            lightCount_.plan(graph, uses);
             graph.addPass("light_passes", uses,
                           [this, last](PassContext& pc) { lights_->record(pc, t_, last); });
         }
@@ -175,15 +159,8 @@ class MultipassForwardRenderer final : public Renderer {
         }
         prepass_->prepare();
         base_ = std::make_unique<BasePass>(env);
-        if (lit_.valid()) { // the light passes' own set: the fragments counted
-            litSet_ = graph.createPassSet("light_passes");
-            lightLayout_ = scene_.createPipelineLayout(litSet_.layout, shadows_->setLayout());
-            PassEnv lightEnv = env;
-            lightEnv.layout = lightLayout_;
-            lights_ = std::make_unique<LightPasses>(lightEnv, &litSet_);
-        } else {
-            lights_ = std::make_unique<LightPasses>(env, nullptr);
-        }
+        lights_ = std::make_unique<LightPasses>(
+            lightCount_.prepare(graph, env, shadows_->setLayout()), lightCount_.set());
         blended_ = std::make_unique<BlendedPass>(env);
         updateBlendedDraws();
     }
@@ -218,25 +195,12 @@ class MultipassForwardRenderer final : public Renderer {
             mergeGpuMeshes(plan_, lightDraws_ ? lightDraws_->meshes() : std::vector<uint32_t>{},
                            blendedDraws_ ? blendedDraws_->meshes() : std::vector<uint32_t>{});
         if (shadows_) shadows_->collect(graph);
-        if (lit_.valid() && countLit_) litFragments_ = sumOfWords(graph.watched(lit_));
+        lightCount_.collect(graph);
     }
 
     RendererStats stats() const override;
 
   private:
-    // The light passes' count of the fragments that evaluate their light (light.frag): a
-    // buffer of TP_MP_LIT_SLOTS words, zeroed before them, read after the frame.
-    void planLitCount(FrameGraph& graph, std::vector<PassUse>& uses) {
-        lit_ = graph.createBuffer("light_pass_lit", TP_MP_LIT_SLOTS * 4,
-                                  "the light passes' fragments that evaluated their light "
-                                  "(counted on a GPU with pass statistics)");
-        graph.addPass("light_pass_lit_clear", {{lit_, Use::TransferDst}}, [this](PassContext& pc) {
-            vkCmdFillBuffer(pc.cmd, pc.buffer(lit_).buffer, 0, TP_MP_LIT_SLOTS * 4, 0u);
-        });
-        uses.push_back({lit_, Use::StorageWrite, TP_MP_BINDING_LIT});
-        graph.watchAfterFrame(lit_, 0, TP_MP_LIT_SLOTS * 4); // collectStats reads it
-    }
-
     // A pass that draws opaque and masked meshes (drawOpaque) reads the culled commands.
     std::vector<PassUse> withCullUses(std::vector<PassUse> uses) const {
         if (cull_)
@@ -296,14 +260,7 @@ class MultipassForwardRenderer final : public Renderer {
     LightPlan plan_;
     Targets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    // The light passes count the fragments that evaluate their light on a GPU with pass
-    // statistics (a per-subgroup add; on a CPU device a count per fragment cost more than the
-    // quads beyond a light's range save: docs/multipass_forward.md).
-    const bool countLit_;
-    ResourceHandle lit_; // light_pass_lit
-    PassSet litSet_;
-    VkPipelineLayout lightLayout_ = VK_NULL_HANDLE; // the light passes': scene, lit, shadow sets
-    double litFragments_ = -1; // the last frame's count; -1: not counted
+    LightCount lightCount_; // the light passes' fragments that evaluate their light
     std::optional<ShadowMaps> shadows_; // one light's map (shadow_map) with --shadows
     std::optional<passes::MeshletCull> cull_; // --cull-geometry frustum: meshlet_cull
     std::optional<LightDrawPass> lightDraws_; // --light-draws gpu: light_draws
@@ -407,11 +364,6 @@ RendererStats MultipassForwardRenderer::stats() const {
     if (plan_.masked.empty())
         s.leftOut.push_back({"masked prepass pipeline", "no masked draw on screen"});
     addPassWork(s);
-    if (hasLights_ && litFragments_ < 0)
-        s.leftOut.push_back({"light_passes' light evaluations and texture fetches",
-                             countLit_ ? "no frame has run"
-                                       : "a 2x2 quad beyond the light's range skips both, and "
-                                         "they are counted only on a GPU with pass statistics"});
     return s;
 }
 
@@ -421,21 +373,7 @@ void MultipassForwardRenderer::addPassWork(RendererStats& s) const {
     using Base = PassLightWork::Base;
     const double dir = double(plan_.baseDirectional.size());
     const BlendedLights mode = mp_.blendedLights;
-    // The light passes: a 2x2 quad beyond the light's range adds its zero without the light or
-    // the material (light.frag), so their work is the fragments counted in the shader, where
-    // they are (else left out: stats()).
-    if (litFragments_ >= 0) {
-        PassLightWork lit{"light_passes", Base::Items, 1.0, true,
-                          "one light per fragment of a 2x2 quad the light reaches (counted)"};
-        lit.items = litFragments_;
-        s.lightWork.push_back(lit);
-        PassOpWork fetches = materialFetchWork(scene_, "light_passes",
-                                               {DrawFilter::Opaque, DrawFilter::Mask}, Base::Items);
-        fetches.items = litFragments_;
-        fetches.how = "the fewest textures of the draws' materials, per fragment that evaluated "
-                      "its light (counted)";
-        s.opWork.push_back(fetches);
-    }
+    lightCount_.addWork(s, hasLights_); // the light passes: what the shader counted
     s.lightWork.push_back(
         {"base_pass", Base::Fragments, dir, true, "the directional lights, per fragment"});
     s.lightWork.push_back(
