@@ -57,20 +57,21 @@ void removeStaleOutputs(const std::string& out, const std::vector<std::string>& 
     }
 }
 
-// Each run's images are encoded (EXR and PNG: CPU work), and measured against the reference,
-// while the next pipeline is set up and warms up: on a CPU device that leaves part of the cores idle (docs/visbuffer.md, "compare on
-// lavapipe"). They are joined before its timed frames, whose time on a CPU device is CPU time
-// that a thread beside them would take. wait() only waits (inside a run, where a write's
-// failure is not the renderer's); join() also rethrows the first failure to write.
-class BackgroundWrites {
+// Each run's images are encoded (EXR and PNG) and measured against the reference (metrics,
+// FLIP), CPU work, while the next pipeline is set up and warms up: on a CPU device that leaves
+// part of the cores idle (docs/visbuffer.md, "compare on lavapipe"). It is waited for before
+// that pipeline's timed frames, whose time on a CPU device is CPU time that a thread beside
+// them would take. wait() only waits (inside a run, where a failure is not the renderer's);
+// join() also rethrows the first failure (a file that cannot be written).
+class BackgroundWork {
   public:
-    ~BackgroundWrites() { wait(); }
+    ~BackgroundWork() { wait(); }
     void wait() {
         for (std::future<void>& f : pending_)
             if (f.valid()) f.wait();
     }
-    void add(std::function<void()> write) {
-        pending_.push_back(std::async(std::launch::async, std::move(write)));
+    void add(std::function<void()> work) {
+        pending_.push_back(std::async(std::launch::async, std::move(work)));
     }
     void join() {
         for (std::future<void>& f : pending_)
@@ -84,22 +85,22 @@ class BackgroundWrites {
 
 // Runs one renderer; a renderer that cannot be built, or a Vulkan failure inside it, becomes
 // a failed outcome so the other pipelines still run.
-// `writes`: joined before the first timed frame (BackgroundWrites).
+// `background`: waited for before the first timed frame (BackgroundWork).
 PipelineOutcome renderOne(GpuContext& ctx, SceneGpu& scene, const std::string& name,
                           const CompareRecord& r, const CompareOptions& o, const std::string& label,
-                          BackgroundWrites* writes = nullptr) {
+                          BackgroundWork* background = nullptr) {
     PipelineOutcome p;
     p.name = name;
     const RendererEntry* entry = *findRenderer(name);
     auto start = std::chrono::steady_clock::now();
     std::fprintf(stderr, "triptych: %s %s ...\n", label.c_str(), name.c_str());
     RunOptions ro = progressRunOptions(name, o.warmup, o.frames);
-    if (writes && o.warmup == 0) writes->wait();
-    if (writes && o.warmup > 0)
-        ro.onFrame = [writes, timed = uint32_t(o.frames), print = ro.onFrame](
+    if (background && o.warmup == 0) background->wait();
+    if (background && o.warmup > 0)
+        ro.onFrame = [background, timed = uint32_t(o.frames), print = ro.onFrame](
                          uint32_t f, uint32_t total, double ms) {
             print(f, total, ms);
-            if (f + 1 + timed == total) writes->wait(); // the last warm-up frame
+            if (f + 1 + timed == total) background->wait(); // the last warm-up frame
         };
     if (r.calibration) ro.ceilings = ceilingsOf(*r.calibration);
     ro.energy = r.energy;
@@ -134,20 +135,20 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
 }
 
 // Each run's images written and its measurements against the reference taken beside the next
-// pipeline's setup and warm-up (BackgroundWrites).
+// pipeline's setup and warm-up (BackgroundWork).
 void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
-                     const std::vector<std::string>& names, BackgroundWrites& writes,
+                     const std::vector<std::string>& names, BackgroundWork& background,
                      const ReferenceMeasures& measures) {
     r.pipelines.reserve(names.size()); // each outcome stays where its write finds it
     for (size_t i = 0; i < names.size(); ++i) {
         std::string label =
             "[" + std::to_string(i + 2) + "/" + std::to_string(names.size() + 1) + "]";
-        r.pipelines.push_back(renderOne(ctx, gpuScene, names[i], r, o, label, &writes));
-        writes.join(); // done before the run's timed frames: a failed write ends the run here
+        r.pipelines.push_back(renderOne(ctx, gpuScene, names[i], r, o, label, &background));
+        background.join(); // done before the run's timed frames: a failed write ends the run here
         PipelineOutcome& p = r.pipelines.back();
         if (!p.run) continue;
         warnDropped(p);
-        writes.add([&out = o.out, &p, ev = r.exposureEv, &measures, i] {
+        background.add([&out = o.out, &p, ev = r.exposureEv, &measures, i] {
             writeImages(out, p, ev);
             measures.measure(p, i);
         });
@@ -283,14 +284,14 @@ int runCompare(const CompareOptions& o) {
         throw UsageError("the reference failed, nothing to compare against: " + r.reference.error);
     r.exposureEv = parseExposure(o.exposure, r.reference.run->hdr);
     r.hdrPsnrPeak = brightestFiniteChannel(r.reference.run->hdr);
-    BackgroundWrites writes;
-    writes.add([&] { writeImages(o.out, r.reference, r.exposureEv); });
+    BackgroundWork background;
+    background.add([&] { writeImages(o.out, r.reference, r.exposureEv); });
     check(writeLightsFile(o.out + "/lights.json", scene.lights));
     check(writeCameraFile(o.out + "/camera.json", scene.camera)); // ready for --camera
 
     ReferenceMeasures measures(r, names.size());
-    renderPipelines(r, o, *ctx, gpuScene, names, writes, measures);
-    writes.join();
+    renderPipelines(r, o, *ctx, gpuScene, names, background, measures);
+    background.join();
     r.shadowPlan = gpuScene.shadowPlan(); // set up by the runs (a cached reference sets up nothing)
     // Again after the runs: a pipeline that culls meshlets had the scene build them
     // (SceneGpu::buildMeshlets, docs/geometry.md), and they are the scene's.
