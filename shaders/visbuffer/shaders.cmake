@@ -8,7 +8,7 @@ triptych_add_shader(SPVS ${SHADER_DIR}/visibility.frag vis_visibility_masked_mes
   DEFINES TP_VIS_MASKED=1 TP_VIS_MESHLETS=1)
 # --vis-blended compute: the blended fragment lists.
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_frag)
-# The same recording the blended depth bounds (passes/blended_bounds.frag's two rates).
+# The same, recording the blended depth bounds too (passes/blended_bounds.frag's two rates).
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_bounds_frag
   DEFINES TP_VIS_BLEND_BOUNDS=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/blended_ids.frag vis_blended_ids_bounds_pixel_frag
