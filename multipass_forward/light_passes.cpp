@@ -38,10 +38,7 @@ LightPasses::LightPasses(const PassEnv& env, const PassSet* litSet)
     const bool count = litSet != nullptr;
     GraphicsPipelineDesc d = shadingDesc(env, AlphaMode::Opaque); // masked too: EQUAL test
     d.fragmentShader = fragmentShader(env, count ? "light_count" : "light");
-    if (count) {
-        d.specConstants.push_back({TP_MP_SPEC_COUNT_LIT, 1u});
-        d.passSet = litSet;
-    }
+    if (count) d.passSet = litSet;
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.blend = BlendMode::Additive;

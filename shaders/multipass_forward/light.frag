@@ -52,10 +52,9 @@ layout(location = 0) out vec4 outColor;
 // every fragment). Early tests change nothing else here: no discard, no depth write, and the
 // stencil's light tag is written by the test itself.
 layout(early_fragment_tests) in;
-// Only a GPU's variants count (kCountLit, the renderer's choice): lavapipe (Mesa 22.3) cannot
-// compile gl_HelperInvocation, and these variants' storage buffer alone made its light passes
+// Only a GPU draws these variants (multipass_forward/light_count.h): lavapipe (Mesa 22.3)
+// cannot compile gl_HelperInvocation, and their storage buffer alone made its light passes
 // slower (1,075 -> 1,300 ms, docs/multipass_forward.md); it draws with the plain variants.
-layout(constant_id = TP_MP_SPEC_COUNT_LIT) const bool kCountLit = false;
 layout(std430, set = TP_SET_PASS, binding = TP_MP_BINDING_LIT) buffer LitBlock {
     uint lit[TP_MP_LIT_SLOTS];
 };
@@ -111,7 +110,7 @@ void main() {
         return;
     }
 #ifdef TP_MP_LIGHT_PASS
-    if (kCountLit) countLit();
+    countLit();
 #endif
 #endif
     MaterialSample ms = evalFragmentMaterial();

@@ -26,6 +26,5 @@
 // range").
 #define TP_MP_BINDING_LIT 0 // set TP_SET_PASS of the light passes: uint[TP_MP_LIT_SLOTS]
 #define TP_MP_LIT_SLOTS 64
-#define TP_MP_SPEC_COUNT_LIT 9 // 1: count them
 
 #endif
