@@ -5,7 +5,6 @@
 #include "core/calibrate/material_fetches.h"
 #include "core/gpu/context.h"
 #include "core/gpuscene/scene_gpu.h"
-#include "core/passes/blended_bounds.h"
 #include "multipass_forward/multipass_shared.h"
 
 namespace tp::mp {
@@ -26,10 +25,8 @@ double sumOfWords(const std::vector<uint8_t>& bytes) {
 
 } // namespace
 
-// The count's subgroup reduction is the blended bounds' (the same operations, the same helper
-// test, the same devices).
 LightCount::LightCount(GpuContext& ctx, const SceneGpu& scene, bool passStatistics)
-    : ctx_(ctx), scene_(scene), enabled_(passStatistics && la::boundsBySubgroup(ctx)) {}
+    : ctx_(ctx), scene_(scene), enabled_(passStatistics && ctx.reducesFragmentsBySubgroup()) {}
 
 LightCount::~LightCount() {
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);

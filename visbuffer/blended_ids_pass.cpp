@@ -116,7 +116,7 @@ void BlendedIdsPass::prepare(FrameGraph& graph) {
     d.specConstants.push_back({TP_SPEC_SAMPLES, samples_});
     if (bounds_.valid()) {
         d.specConstants.push_back({TP_SPEC_TILE_SIZE, boundsConfig_.grid.tileSize});
-        d.specConstants.push_back({TP_LA_SPEC_BLEND_BY_SUBGROUP, la::boundsBySubgroup(ctx_)});
+        d.specConstants.push_back({TP_LA_SPEC_BLEND_BY_SUBGROUP, ctx_.reducesFragmentsBySubgroup()});
     }
     d.samples = VkSampleCountFlagBits(samples_);
     d.depthWrite = false;

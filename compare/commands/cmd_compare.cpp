@@ -138,7 +138,7 @@ void writeImages(const std::string& out, PipelineOutcome& p, float ev) {
 // pipeline's setup and warm-up (BackgroundWork).
 void renderPipelines(CompareRecord& r, const CompareOptions& o, GpuContext& ctx, SceneGpu& gpuScene,
                      const std::vector<std::string>& names, BackgroundWork& background,
-                     const ReferenceMeasures& measures) {
+                     ReferenceMeasures& measures) {
     r.pipelines.reserve(names.size()); // each outcome stays where its write finds it
     for (size_t i = 0; i < names.size(); ++i) {
         std::string label =

@@ -45,7 +45,7 @@ ReferenceMeasures::ReferenceMeasures(const CompareRecord& r, size_t pipelines)
 }
 
 // Metrics against the reference and the signed difference of one pipeline that ran.
-void ReferenceMeasures::measure(PipelineOutcome& p, size_t index) const {
+void ReferenceMeasures::measure(PipelineOutcome& p, size_t index) {
     if (!p.run) return;
     p.hdr = computeError(p.run->hdr, reference_, hdrOptions_);
     p.display = computeError(tonemapToDisplay(p.run->hdr, exposureEv_), referenceDisplay_);

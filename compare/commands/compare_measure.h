@@ -23,7 +23,7 @@ class ReferenceMeasures {
     // After the reference ran and r.exposureEv and r.hdrPsnrPeak are set; `pipelines`: how
     // many r.pipelines will hold.
     ReferenceMeasures(const CompareRecord& r, size_t pipelines);
-    void measure(PipelineOutcome& p, size_t index) const;
+    void measure(PipelineOutcome& p, size_t index);
     void write(CompareRecord& r, const std::string& out);
 
   private:
@@ -32,7 +32,7 @@ class ReferenceMeasures {
     MetricsOptions hdrOptions_;
     ImageRGBA referenceDisplay_;
     FlipReference flipReference_;
-    mutable std::vector<ImageRGBA> diffs_; // each pipeline's signed difference, by index
+    std::vector<ImageRGBA> diffs_; // each pipeline's signed difference, by index
 };
 
 // Pipelines against each other: metrics of a against b, and the signed difference a - b as

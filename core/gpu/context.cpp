@@ -396,6 +396,14 @@ GpuContext::~GpuContext() {
     if (instance) vkDestroyInstance(instance, nullptr);
 }
 
+bool GpuContext::reducesFragmentsBySubgroup() const {
+    const VkSubgroupFeatureFlags need = VK_SUBGROUP_FEATURE_BASIC_BIT |
+                                        VK_SUBGROUP_FEATURE_BALLOT_BIT |
+                                        VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+    return !isCpuDevice() && (caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT) &&
+           (caps.subgroupOps & need) == need;
+}
+
 std::vector<std::string> GpuContext::validationMessages() const {
     std::lock_guard<std::mutex> lock(messagesMutex_);
     return messages_;

@@ -104,6 +104,12 @@ class GpuContext {
     DeviceCaps caps;
     DeviceInfo info;
     bool isCpuDevice() const { return properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+    // Whether a fragment shader may reduce its lanes' values per subgroup, helpers left out
+    // (gl_HelperInvocation), before an atomic: a GPU whose fragment stage has the basic, ballot
+    // and arithmetic subgroup operations. Not a CPU device: slower there than one atomic per
+    // fragment, and lavapipe (Mesa 22.3) cannot compile gl_HelperInvocation. The blended depth
+    // bounds and multipass forward's light count ask it.
+    bool reducesFragmentsBySubgroup() const;
     MemoryLedger ledger;
 
     // Records with `record`, submits, waits. For uploads, readbacks and timed frames. Every

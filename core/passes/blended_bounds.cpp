@@ -54,7 +54,7 @@ void BlendedBounds::prepare(FrameGraph& graph) {
     d.specConstants = scene_.specConstants(config_.opaque ? AlphaMode::Opaque : AlphaMode::Blend);
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.grid.tileSize});
     d.specConstants.push_back(
-        {TP_LA_SPEC_BLEND_BY_SUBGROUP, !config_.perFragmentAtomics && boundsBySubgroup(ctx_)});
+        {TP_LA_SPEC_BLEND_BY_SUBGROUP, !config_.perFragmentAtomics && ctx_.reducesFragmentsBySubgroup()});
     d.samples = VkSampleCountFlagBits(config_.samples);
     d.sampleShading = config_.sampleShading;
     d.depthWrite = false;
@@ -64,14 +64,6 @@ void BlendedBounds::prepare(FrameGraph& graph) {
     d.layout = layout_;
     d.passSet = &set_;
     pipeline_ = createGraphicsPipeline(ctx_, d);
-}
-
-bool boundsBySubgroup(const GpuContext& ctx) {
-    const VkSubgroupFeatureFlags need = VK_SUBGROUP_FEATURE_BASIC_BIT |
-                                        VK_SUBGROUP_FEATURE_BALLOT_BIT |
-                                        VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
-    return !ctx.isCpuDevice() && (ctx.caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT) &&
-           (ctx.caps.subgroupOps & need) == need;
 }
 
 void BlendedBounds::record(PassContext& pc) {

@@ -49,8 +49,9 @@ struct BlendedBoundsConfig {
     // blended lists. Only the buffer and its clear are planned. Possible only where the
     // fragments are per pixel: see fusable().
     bool drawnElsewhere = false;
-    // Tests only: one atomic pair per fragment even where boundsBySubgroup() says a subgroup
-    // reduction, to check that the reduction records the same bounds.
+    // Tests only: one atomic pair per fragment even where the device reduces per subgroup
+    // (GpuContext::reducesFragmentsBySubgroup, TP_LA_SPEC_BLEND_BY_SUBGROUP: shaders/passes/
+    // blended_bounds.glsl's kBySubgroup), to check that the reduction records the same bounds.
     bool perFragmentAtomics = false;
 
     // Whether a pass that runs once per pixel and primitive (no sample shading) sees exactly
@@ -84,13 +85,6 @@ class BlendedBounds {
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
-
-// Whether the bounds are reduced per subgroup before their atomics (shaders/passes/
-// blended_bounds.glsl: kBySubgroup): on a GPU with the fragment stage's basic, ballot and
-// arithmetic subgroup operations; not on a CPU device (slower there, and lavapipe cannot
-// compile the helper test). The value of TP_LA_SPEC_BLEND_BY_SUBGROUP for every pass that
-// records bounds.
-bool boundsBySubgroup(const GpuContext& ctx);
 
 // Reads back a bounds buffer: per tile, whether it has a blended fragment and its
 // unpadded [min, max] view distance (tests and statistics).

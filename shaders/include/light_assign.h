@@ -26,7 +26,7 @@ namespace tp::gpu {
 // words [tiles, 2 * tiles) the maximum (0 without). Cleared by a transfer fill every frame.
 #define TP_LA_BLEND_BINDING_BOUNDS 0 // the bounds pass's own set (TP_SET_PASS): buffer uint[2 * tiles]
 // 1: one atomic pair per tile a subgroup meets, not per fragment (passes/blended_bounds.glsl;
-// a GPU: core/passes/blended_bounds.h, boundsBySubgroup).
+// a GPU: GpuContext::reducesFragmentsBySubgroup).
 #define TP_LA_SPEC_BLEND_BY_SUBGROUP 6
 #define TP_LA_BLEND_EMPTY 0x7f800000u // +inf: the minimum of a tile with no blended fragment
 // Relative padding of the recorded distances (light_assign.glsl: laBlendedBounds): the

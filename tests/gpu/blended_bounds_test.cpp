@@ -57,7 +57,7 @@ std::vector<uint8_t> boundsOf(GpuContext& ctx, SceneGpu& scene, la::BlendedBound
 void expectTheSameBoundsAtEveryRate(bool la::BlendedBoundsConfig::*variant) {
     auto ctx = makeValidatedContext();
     ASSERT_TRUE(ctx);
-    if (variant == &la::BlendedBoundsConfig::perFragmentAtomics && !la::boundsBySubgroup(*ctx))
+    if (variant == &la::BlendedBoundsConfig::perFragmentAtomics && !ctx->reducesFragmentsBySubgroup())
         GTEST_SKIP() << ctx->info.name << " records the bounds per fragment only";
     Scene yard = courtyardSmallWithLights(16, 1);
     SceneGpu yardGpu(*ctx, yard);
@@ -92,7 +92,7 @@ TEST(BlendedBounds, PositionOnlyInterfaceRecordsTheBoundsOfTheWholeInterface) {
 
 // On a GPU the bounds are reduced per subgroup before their atomics (helpers left out); the
 // result must be the bounds of one atomic pair per fragment, bit for bit, at every rate.
-// A CPU device records per fragment only (boundsBySubgroup): nothing to compare there.
+// A CPU device records per fragment only (GpuContext::reducesFragmentsBySubgroup): nothing to compare there.
 TEST(BlendedBounds, SubgroupReductionRecordsTheBoundsOfPerFragmentAtomics) {
     expectTheSameBoundsAtEveryRate(&la::BlendedBoundsConfig::perFragmentAtomics);
 }
