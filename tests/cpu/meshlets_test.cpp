@@ -17,6 +17,7 @@
 #include "core/scene/procedural.h"
 #include "include/meshlets.h"
 #include "passes/depth_pyramid.h"
+#include "temp_path.h"
 #include "transformed_scenes.h"
 
 namespace tp {
@@ -99,7 +100,7 @@ TEST(Meshlets, CoverEveryTriangleOnceOnTheCourtyard) {
 
 // Mirrored nodes: the loader flips their winding, the meshlets keep it.
 TEST(Meshlets, CoverEveryTriangleOnceUnderMirroredNodes) {
-    const auto dir = std::filesystem::temp_directory_path() / "triptych_meshlets_transformed";
+    const auto dir = testTempPath("meshlets_transformed");
     Result<Scene> s = loadGltf(test::writeTransformedNodesScene(dir, 3).string());
     ASSERT_TRUE(s.ok()) << s.error();
     for (const Mesh& mesh : s->meshes)

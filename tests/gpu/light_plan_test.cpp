@@ -10,6 +10,7 @@
 #include "core/scene/gltf_loader.h"
 #include "gpu_test_util.h"
 #include "multipass_forward/light_plan.h"
+#include "temp_path.h"
 #include "transformed_scenes.h"
 
 namespace tp::test {
@@ -40,8 +41,8 @@ glm::dvec3 closestOnTriangle(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, glm::dvec
 }
 
 Scene loadTransformedScene(uint32_t seed) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("triptych_transformed_" + std::to_string(seed));
+    // One folder per process: ctest -j runs this file's tests side by side.
+    const fs::path dir = testTempPath("transformed_" + std::to_string(seed));
     Result<Scene> scene = loadGltf(writeTransformedNodesScene(dir, seed).string());
     EXPECT_TRUE(scene.ok()) << scene.error();
     return scene.ok() ? std::move(*scene) : Scene{};

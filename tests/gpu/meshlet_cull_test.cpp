@@ -13,6 +13,7 @@
 #include "core/reference/reference_renderer.h"
 #include "core/scene/gltf_loader.h"
 #include "gpu_test_util.h"
+#include "temp_path.h"
 #include "transformed_scenes.h"
 
 namespace tp::test {
@@ -98,8 +99,7 @@ TEST_P(CulledFrame, CourtyardSmallOtherViews) {
 // node's winding, so the cones built from world-space triangles follow the front faces.
 TEST_P(CulledFrame, MirroredNodesSameFrame) {
     for (uint32_t seed : {2u, 5u}) {
-        const auto dir = std::filesystem::temp_directory_path() /
-                         ("triptych_meshlet_cull_" + std::to_string(seed));
+        const auto dir = testTempPath("meshlet_cull_" + std::to_string(seed));
         Result<Scene> s = loadGltf(writeTransformedNodesScene(dir, seed).string());
         ASSERT_TRUE(s.ok()) << s.error();
         Scene scene = std::move(*s);
