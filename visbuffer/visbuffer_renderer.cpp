@@ -84,7 +84,7 @@ class VisbufferRenderer final : public Renderer {
         using Draws = vis::VisibilityPass::Draws;
         ids_ = visibility_.createTargets(graph, samples, depth_);
         if (vis_.raster == vis::Raster::Hardware) {
-            visibility_.plan(graph, ids_, cull);
+            visibility_.plan(graph, ids_, cull, Draws::All, false, vis_.debug);
         } else {
             const bool hybrid = vis_.raster == vis::Raster::Hybrid;
             // It reads one phase's kept meshlets: occlusion's late phase is not wired to it.
@@ -244,7 +244,8 @@ class VisbufferRenderer final : public Renderer {
         s.everySample = vis_.sampling.perSample();
         s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits},
                        {TP_VIS_SPEC_DERIVATIVES, derivativesMode()},
-                       {TP_VIS_SPEC_ONE_TEXTURE_WALK, oneTextureWalk() ? 1u : 0u}};
+                       {TP_VIS_SPEC_ONE_TEXTURE_WALK, oneTextureWalk() ? 1u : 0u},
+                       {TP_VIS_SPEC_IDS_BY_DEPTH, visibility_.idsByDepth() ? 1u : 0u}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
         if (blendInCompute_) {

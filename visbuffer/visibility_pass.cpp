@@ -33,14 +33,17 @@ VisibilityTargets VisibilityPass::createTargets(FrameGraph& graph, uint32_t samp
 }
 
 void VisibilityPass::plan(FrameGraph& graph, const VisibilityTargets& targets,
-                          passes::MeshletCull* cull, Draws draws, bool seeded) {
+                          passes::MeshletCull* cull, Draws draws, bool seeded, bool keepIds) {
     t_ = targets;
     draws_ = draws;
     cull_ = cull;
     seeded_ = seeded;
+    // Only this pass writes the ids and the depth: where it leaves a sample, the depth says so.
+    // (The compute rasterizer's merge and seed write them too, and are left as they were.)
+    idsByDepth_ = draws == Draws::All && !seeded && !keepIds;
     if (draws == Draws::None) return; // compute mode: the seed or the merge writes the targets
     // The ids zeroed (no geometry) by compute where the device can store to them.
-    if (!seeded_) idsClear_.plan(graph, "visibility_ids_clear", t_.ids, {});
+    if (!seeded_ && !idsByDepth_) idsClear_.plan(graph, "visibility_ids_clear", t_.ids, {});
     std::vector<PassUse> uses{{t_.ids, Use::ColorAttachment}, {t_.depth, Use::DepthAttachment}};
     // With the compute rasterizer the merge after this pass resolves.
     if (samples_ > 1 && draws == Draws::All) uses.push_back({resolved_, Use::DepthResolve});
@@ -87,8 +90,9 @@ void VisibilityPass::prepare(FrameGraph& graph) {
 void VisibilityPass::record(PassContext& pc, passes::CullPhase phase) {
     // The late phase adds to the early's; seeded, to the compute rasterizer's.
     const bool clear = !seeded_ && phase != passes::CullPhase::Late;
-    ColorTarget ids{t_.ids, {}, clear && !idsClear_.planned(), {}}; // else by compute
+    ColorTarget ids{t_.ids, {}, clear && !idsClear_.planned() && !idsByDepth_, {}}; // else by compute
     ids.clearValue.uint32[0] = 0; // no geometry
+    ids.dontCare = clear && idsByDepth_; // the late phase loads the early phase's ids
     DepthTarget depth{t_.depth,
                       samples_ > 1 && draws_ == Draws::All ? resolved_ : ResourceHandle{}, clear};
     beginRendering(pc, {ids}, depth);

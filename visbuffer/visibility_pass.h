@@ -5,7 +5,10 @@
 // under MSAA, as the depth prepass does. Under MSAA the depth is resolved (sample 0) into the
 // exported "depth"; blended draws are left to the hybrid forward pass. The ids are zeroed
 // before it by compute ("visibility_ids_clear", core/passes/image_clear.h) where the device can
-// store to them; the pass then clears the depth only.
+// store to them; the pass then clears the depth only. Drawing every draw itself (the hardware
+// rasterization, one phase or occlusion's two) with no debug image to show them, it does not
+// clear the ids at all: a sample it leaves unwritten keeps its depth's clear value, which the
+// resolve reads first (vis_read.glsl: fetchId, TP_VIS_SPEC_IDS_BY_DEPTH).
 //
 // With a MeshletCull (--cull-geometry frustum) it draws the meshlets that pass kept, each
 // command's firstInstance its meshlet's first triangle: the shaders' meshlet variants map
@@ -53,9 +56,13 @@ class VisibilityPass {
     // everything). seeded: the compute rasterizer wrote the targets already (1x), so the pass
     // keeps them instead of clearing.
     enum class Draws { All, Masked, None };
+    // keepIds: every sample's id is read as it is (the debug images), so the ids are cleared.
     void plan(FrameGraph& graph, const VisibilityTargets& targets,
-              passes::MeshletCull* cull = nullptr, Draws draws = Draws::All, bool seeded = false);
+              passes::MeshletCull* cull = nullptr, Draws draws = Draws::All, bool seeded = false,
+              bool keepIds = false);
     void prepare(FrameGraph& graph);
+    // The ids are not cleared: a reader takes a sample's id only where its depth holds geometry.
+    bool idsByDepth() const { return idsByDepth_; }
 
   private:
     void record(PassContext& pc, passes::CullPhase phase);
@@ -68,11 +75,13 @@ class VisibilityPass {
     const passes::MeshletCull* cull_ = nullptr;
     Draws draws_ = Draws::All;
     bool seeded_ = false;
+    bool idsByDepth_ = false;
     PassSet set_; // culled: the source triangles
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
     // visibility_ids_clear: the ids zeroed by compute, not by the pass's clear (a render
-    // pass's clear runs on the graphics SMs: on the H200 0.59 ms for the ids at 1080p 4x).
+    // pass's clear runs on the graphics SMs: on the H200 0.59 ms for the ids at 1080p 4x),
+    // where they are cleared at all (not idsByDepth_).
     ImageClear idsClear_;
 };
 

@@ -85,8 +85,15 @@ vec4 visTexture(int index, vec2 uv) {
 #define TP_MATERIAL_POSITION_DY(p) gVisPosDy
 #include "include/material.glsl"
 
+layout(constant_id = TP_VIS_SPEC_IDS_BY_DEPTH) const bool kIdsByDepth = false;
+
 float fetchDepth(ivec2 p, uint s) { return FETCH(gDepth, p, s).r; }
-uint fetchId(ivec2 p, uint s) { return uint(FETCH(gIds, p, s).r); }
+// kIdsByDepth: a sample the visibility pass did not write keeps a stale id; its depth is still
+// the clear value 0 (reverse-Z far plane, which no written sample has: the test is GREATER).
+uint fetchId(ivec2 p, uint s) {
+    if (kIdsByDepth && fetchDepth(p, s) <= 0.0) return 0u;
+    return uint(FETCH(gIds, p, s).r);
+}
 
 // Mean of the samples' depths (the tile depth bounds read depth only through fetchDepth).
 float meanDepth(ivec2 p) {

@@ -58,6 +58,9 @@ TP_STRUCT(VisDraw) {
 // lavapipe, where every sample site costs every lane); 0: one walk a slot (a GPU, where a
 // branch no lane takes costs nothing and the one walk's five texels cost registers).
 #define TP_VIS_SPEC_ONE_TEXTURE_WALK 33
+// 1: the visibility pass leaves the ids of samples it does not write as they were (no clear:
+// visibility_pass.h), so the resolve takes a sample's id only where its depth holds geometry.
+#define TP_VIS_SPEC_IDS_BY_DEPTH 34
 
 // ---- the uv derivatives textureGrad is given (--vis-derivatives) ----
 #define TP_VIS_DERIVATIVES_ANALYTIC 0     // d(uv)/dx, d(uv)/dy at the shaded location itself
