@@ -10,6 +10,7 @@
 #include "core/gpu/rendering.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_classes.h"
+#include "core/passes/lights_ubo.h"
 #include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -60,29 +61,18 @@ void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
         if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
 }
 
-// The graph's set for the pass's uses and fp_params, plus the lights as a uniform buffer. On a
-// CPU device (lavapipe) the shaders read the lights from it when they all fit
-// (docs/forwardplus.md, "The per-light cost on lavapipe"); on a GPU, and past TP_FP_UBO_LIGHTS
-// lights, from the scene's storage buffer as before, and a one-light stand-in is bound. The
-// light count and types are fixed for a plan; their positions follow the view (updateLights).
+// The graph's set for the pass's uses and fp_params, plus the lights as a uniform buffer
+// (core/passes/lights_ubo.h: read on a CPU device when they fit; docs/forwardplus.md, "The
+// per-light cost on lavapipe"), the directional lights first in fp_params' order (ascending):
+// the shader's loop takes the i-th directional light as slot i without loading its index
+// (shading.frag).
 void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
-    const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
-    const size_t directional = la::classifyLights(lights).directional.size();
-    constexpr VkDeviceSize kUboBytes = TP_FP_UBO_LIGHTS * sizeof(gpu::LightGpu);
-    lightsUbo_ = ctx_.isCpuDevice() && !lights.empty() &&
-                 directional + lights.size() <= TP_FP_UBO_LIGHTS &&
-                 ctx_.properties.limits.maxUniformBufferRange >= kUboBytes;
-    const std::vector<gpu::LightGpu> copy = lightsCopy();
-    const VkDeviceSize bytes = lightsUbo_ ? kUboBytes : sizeof(gpu::LightGpu);
-    lightsUboBuffer_ = createBufferWithData(
-        ctx_, copy.data(), bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-        {"forwardplus", "", "fp_lights_ubo",
-         lightsUbo_ ? "the lights as a uniform buffer (read by the shading passes)"
-                    : "stand-in (the shading passes read the scene's light buffer)"});
+    lightsUbo_.emplace(ctx_, scene_, "forwardplus", "fp_lights_ubo",
+                       la::classifyLights(scene_.shadingLights()).directional);
     createMaterialsUbo();
     set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE,
                                {{TP_FP_BINDING_PARAMS, params},
-                                {TP_FP_BINDING_LIGHTS_UBO, lightsUboBuffer_.buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                {TP_FP_BINDING_LIGHTS_UBO, lightsUbo_->buffer(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                 {TP_FP_BINDING_MATERIALS_UBO, materialsUboBuffer_.buffer,
                                  VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
 }
@@ -105,24 +95,8 @@ void ForwardShading::createMaterialsUbo() {
                        : "stand-in (the shading passes read the scene's material buffer)"});
 }
 
-// The directional lights first, in fp_params' order (ascending), then every light at its
-// index plus their count: the shader's loop takes the i-th directional light as light i
-// without loading its index (shading.frag). Zeros when the shaders do not read it.
-std::vector<gpu::LightGpu> ForwardShading::lightsCopy() const {
-    std::vector<gpu::LightGpu> copy(TP_FP_UBO_LIGHTS, gpu::LightGpu{});
-    if (!lightsUbo_) return copy;
-    const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
-    const std::vector<uint32_t> directional = la::classifyLights(lights).directional;
-    for (size_t k = 0; k < directional.size(); ++k)
-        copy[k] = lights[directional[k]];
-    std::copy(lights.begin(), lights.end(), copy.begin() + directional.size());
-    return copy;
-}
-
 void ForwardShading::updateLights() {
-    if (!lightsUbo_) return;
-    const std::vector<gpu::LightGpu> copy = lightsCopy();
-    uploadBufferData(ctx_, lightsUboBuffer_, copy.data(), copy.size() * sizeof(gpu::LightGpu));
+    if (lightsUbo_) lightsUbo_->update();
 }
 
 GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
@@ -145,7 +119,7 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     d.specConstants.push_back({TP_SPEC_TILE_SIZE, config_.tileSize});
     d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
-    d.specConstants.push_back({TP_FP_SPEC_LIGHTS_UBO, lightsUbo_ ? 1u : 0u});
+    d.specConstants.push_back({TP_FP_SPEC_LIGHTS_UBO, lightsUbo_->active() ? 1u : 0u});
     d.specConstants.push_back({TP_FP_SPEC_MATERIALS_UBO, materialsUbo_ ? 1u : 0u});
     // The light count is fixed for a plan (a new view moves lights, never adds one).
     d.specConstants.push_back({TP_FP_SPEC_NO_LIGHTS, scene_.shadingLights().empty() ? 1u : 0u});

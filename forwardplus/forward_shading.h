@@ -3,6 +3,7 @@
 // prepass) and, when something blended is drawn, forward_transparent (blended draws back to
 // front, depth GREATER, alpha-blended), each fragment walking its tile's light list (its
 // cluster's bitmask when clustered). The last of them resolves hdr_msaa into hdr under MSAA.
+#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -12,6 +13,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/passes/image_clear.h"
+#include "core/passes/lights_ubo.h"
 #include "core/renderer/msaa_knob.h"
 #include "include/shared.h"
 
@@ -70,7 +72,6 @@ class ForwardShading {
   private:
     std::vector<PassUse> uses(bool transparent) const;
     void createPassSet(FrameGraph& graph, VkBuffer params);
-    std::vector<gpu::LightGpu> lightsCopy() const; // what the uniform buffer holds
     void createMaterialsUbo();
     GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
     void createMaterialPipelines(AlphaMode mode);
@@ -80,10 +81,9 @@ class ForwardShading {
     ShadingConfig config_;
     ShadingTargets t_;
     PassSet set_;
-    // The lights as a uniform buffer (TP_FP_BINDING_LIGHTS_UBO); lightsUbo_ says whether the
+    // The lights as a uniform buffer (TP_FP_BINDING_LIGHTS_UBO); active() says whether the
     // shaders read it (TP_FP_SPEC_LIGHTS_UBO) or only bind it.
-    Buffer lightsUboBuffer_;
-    bool lightsUbo_ = false;
+    std::optional<LightsUbo> lightsUbo_;
     // The materials as a uniform buffer (TP_FP_BINDING_MATERIALS_UBO); materialsUbo_ says whether
     // the shaders read it (TP_FP_SPEC_MATERIALS_UBO) or only bind it.
     Buffer materialsUboBuffer_;

@@ -9,6 +9,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/resources.h"
 #include "core/lightassign/tile_grid.h"
+#include "core/passes/lights_ubo.h"
 
 namespace tp {
 
@@ -43,7 +44,8 @@ class BlendedForwardPass {
     // After the plan: the pass set and the pipeline. The transparent lists are light indices
     // whatever --light-cull says (hybrid_blended.h), so it reads no candidates; binned only
     // says where the ambient term joins the sum (blended_forward.frag: kAmbientLast).
-    void prepare(FrameGraph& graph, bool binned);
+    // lights: the tiled lighting's uniform-buffer copy of the lights (read on a CPU device).
+    void prepare(FrameGraph& graph, bool binned, const LightsUbo& lights);
 
   private:
     void record(PassContext& pc);

@@ -76,7 +76,7 @@ void HybridBlended::planForward(FrameGraph& graph, const BlendedForwardTargets& 
 void HybridBlended::prepare(FrameGraph& graph, TiledLighting& lighting) {
     bounds_.prepare(graph);
     if (binned_ && lighting.gpuBinning()) lighting.publishListWords(capacity_, masks_);
-    if (forwardPlanned_) forward_.prepare(graph, binned_);
+    if (forwardPlanned_) forward_.prepare(graph, binned_, lighting.lightsUbo());
 }
 
 namespace {

@@ -35,6 +35,10 @@ void TiledLighting::plan(FrameGraph& graph, const SurfaceSource& source,
     transparentMasks_ = transparentMasks;
     if (binned_) bound(t.grid, graph.owner());
     if (binning_) binning_->plan(graph); // the frame's light_binning runs before this pass
+    // The lights as a uniform buffer, read by every light loop of the pass (and of the blended
+    // forward pass, which binds this one: lightsUbo()) on a CPU device
+    // (core/passes/lights_ubo.h): light k at slot k.
+    lightsUbo_.emplace(ctx_, scene_, graph.owner(), "lights_ubo");
     // The tiles' depth bounds, reduced by a pass of their own before this one.
     depthBounds_ = std::make_unique<TileDepthBounds>(ctx_, scene_);
     const ResourceHandle tileDepth = depthBounds_->plan(graph, source.depth, source.samples, t.grid);
@@ -119,6 +123,8 @@ void TiledLighting::prepare(FrameGraph& graph) {
     }
     uploadCandidates(graph);
     externals.push_back({TP_TL_BINDING_CANDIDATES, candidates_.buffer});
+    externals.push_back(
+        {TP_TL_BINDING_LIGHTS_UBO, lightsUbo_->buffer(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
     if (!listsOnly_)
         externals.insert(externals.end(), source_.buffers.begin(), source_.buffers.end());
     set_ = graph.createPassSet(passName(), sampler_, externals);
@@ -131,6 +137,7 @@ void TiledLighting::prepare(FrameGraph& graph) {
     spec.push_back({TP_SPEC_SAMPLES, source_.samples});
     spec.push_back({TP_TL_SPEC_EVERY_SAMPLE, source_.everySample ? 1u : 0u});
     spec.push_back({TP_TL_SPEC_BINNED, binned_ ? 1u : 0u});
+    spec.push_back({TP_TL_SPEC_LIGHTS_UBO, lightsUbo_->active() ? 1u : 0u});
     // The workgroup (--tile-group; tiled_lighting.h): a GPU's latency wants a tile's pixels one
     // an invocation.
     const uint32_t group = la::tileGroupEdge(ctx_, group_, t_.grid.tileSize);
@@ -235,7 +242,8 @@ void TiledLighting::uploadCandidates(FrameGraph& graph) {
 }
 
 bool TiledLighting::updateView(FrameGraph&) {
-    if (!binned_) return true; // every tile tests every light: nothing depends on the view
+    if (lightsUbo_) lightsUbo_->update(); // the lights' positions follow the view
+    if (!binned_) return true; // every tile tests every light: nothing else depends on the view
     la::LightClasses classes = la::classifyLights(scene_.shadingLights());
     if (classes.directional != directional_) return false; // the header's layout would move
     if (binning_) {

@@ -7,6 +7,7 @@
 // buffer's ids (shaders/visbuffer/vis_read.glsl), each with its own reader and shader family,
 // sharing the culling, batching, lists and statistics.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/light_binning.h"
+#include "core/passes/lights_ubo.h"
 #include "core/passes/tile_depth_bounds.h"
 #include "passes/tiled_lighting.h"
 
@@ -149,6 +151,9 @@ class TiledLighting {
     bool gpuBinning() const { return gpuBinning_; }
     // GPU binning: plan-time sizing runs (readbacks) so far; views followed add none.
     uint32_t sizingRuns() const { return binning_ ? binning_->sizingRuns() : 0; }
+    // The lights' uniform-buffer copy (after plan), kept up to date by updateView: the blended
+    // forward pass binds it too.
+    const LightsUbo& lightsUbo() const { return *lightsUbo_; }
     // Dispatches the last recorded frame made (one per batch of lights).
     uint32_t batches() const { return batches_; }
 
@@ -190,6 +195,7 @@ class TiledLighting {
     Buffer listOffsets_; // transparent lists' per-tile offsets (blended scenes)
     Buffer candidates_;  // binned culling's candidates (a 16-byte header otherwise)
     Buffer noMasks_;     // blended scenes, tiled: a 16-byte stand-in for the unused slice rows
+    std::optional<LightsUbo> lightsUbo_; // the lights' uniform-buffer copy (a CPU device reads it)
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -41,7 +41,6 @@ namespace tp::gpu {
 #define TP_FP_SPEC_TILES_X 27
 #define TP_FP_SPEC_TILES_Y 28
 // Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
-#define TP_FP_UBO_LIGHTS 1024
 // Materials the uniform-buffer copy holds: 40 KiB of MaterialGpu (std140 and std430 agree: 80 bytes,
 // no array or scalar member that std140 would pad).
 #define TP_FP_UBO_MATERIALS 512

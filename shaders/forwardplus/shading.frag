@@ -72,34 +72,14 @@ layout(std430, set = TP_SET_PASS, binding = TP_FP_BINDING_PARAMS) readonly buffe
     FpParams params;
     uint data[];
 };
-// The lights again, as a uniform buffer, where they fit (forward_shading.cpp: a CPU device and
-// at most TP_FP_UBO_LIGHTS lights). On lavapipe (Mesa 22.3) a storage-buffer load is a loop
-// over the 8 lanes with a branch per lane and per component, a uniform-buffer load a gather
-// without branches; the bytes are the same, so the sums are too.
-layout(constant_id = TP_FP_SPEC_LIGHTS_UBO) const bool kLightsUbo = false;
-layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_LIGHTS_UBO) uniform LightUboBlock {
-    LightGpu uboLights[TP_FP_UBO_LIGHTS];
-};
+// The lights again, as a uniform buffer, where they fit (include/lights_ubo.h: a CPU device and
+// at most TP_LIGHTS_UBO_CAPACITY lights): the directional lights first, then light k at slot
+// k + directionalCount (forward_shading.cpp).
+#define TP_LIGHTS_UBO_BINDING TP_FP_BINDING_LIGHTS_UBO
+#define TP_LIGHTS_UBO_SPEC TP_FP_SPEC_LIGHTS_UBO
+#include "include/lights_ubo.glsl"
 
-// The scene's light `index`; the uniform copy holds the directional lights first and light k
-// at k + directionalCount (forward_shading.cpp).
-// Member by member: the block's std140 struct is another SPIR-V type than LightGpu, and a
-// whole-struct copy between the two is not valid SPIR-V 1.0.
-LightGpu uboLight(uint slot) {
-    LightGpu l;
-    l.position = uboLights[slot].position;
-    l.range = uboLights[slot].range;
-    l.direction = uboLights[slot].direction;
-    l.type = uboLights[slot].type;
-    l.color = uboLights[slot].color;
-    l.shadow = uboLights[slot].shadow;
-    l.spotScale = uboLights[slot].spotScale;
-    l.spotOffset = uboLights[slot].spotOffset;
-    l.pad1 = 0.0;
-    l.pad2 = 0.0;
-    return l;
-}
-
+// The scene's light `index`.
 LightGpu fpLight(uint index, uint directionalCount) {
     if (kLightsUbo) return uboLight(index + directionalCount);
     return lights[index];

@@ -22,6 +22,11 @@
 #include "include/light_assign.glsl"
 #include "include/light_list_walk.glsl"
 #include "include/shadow_light.glsl"
+// The lights' uniform-buffer copy (include/lights_ubo.h: read on a CPU device), the tiled
+// lighting's own (its slot k holds light k).
+#define TP_LIGHTS_UBO_BINDING TP_BF_BINDING_LIGHTS_UBO
+#define TP_LIGHTS_UBO_SPEC TP_TL_SPEC_LIGHTS_UBO
+#include "include/lights_ubo.glsl"
 
 layout(constant_id = TP_SPEC_TILE_SIZE) const uint kTileSize = 16u;
 
@@ -61,7 +66,7 @@ vec3 clusterLights(uint tile, uint tileCount, uint count, uint start, SurfaceSam
     vec3 sum = vec3(0.0);
     for (uint w = 0u; w < words; ++w) {
         uint bits = tMasks[row + w];
-        TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(lights[tLists[start + w * 32u + uint(lsb)]], surface);)
+        TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(sceneLight(tLists[start + w * 32u + uint(lsb)]), surface);)
     }
     return sum;
 }
@@ -79,6 +84,6 @@ void main() {
     }
     vec3 sum = kAmbientLast ? vec3(0.0) : ambient;
     for (uint i = 0u; i < count; ++i)
-        sum += evalLightShadowed(lights[tLists[start + i]], ms.surface);
+        sum += evalLightShadowed(sceneLight(tLists[start + i]), ms.surface);
     outColor = vec4(kAmbientLast ? ambient + sum : sum, ms.alpha);
 }

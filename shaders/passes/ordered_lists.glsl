@@ -69,7 +69,7 @@ void cullTransparentIndices(uvec2 tile) {
         for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) sBits[w] = 0u;
         barrier();
         for (uint i = gl_LocalInvocationIndex; i < n; i += TP_GROUP * TP_GROUP)
-            if (lightInTileAndBox(lights[candidateLight(tileIndex, first + i)], t.frustum, box, frame.view))
+            if (lightInTileAndBox(sceneLight(candidateLight(tileIndex, first + i)), t.frustum, box, frame.view))
                 atomicOr(sBits[i >> 5u], 1u << (i & 31u));
         barrier();
         compactBits(tileIndex, first, words, placed, false, t.start, t.capacity);

@@ -24,6 +24,7 @@ namespace tp::gpu {
 #define TP_TL_BINDING_TRANSPARENT_MASKS 12 // buffer uint[]: clustered blended scenes: slice rows over the transparent lists
 #define TP_TL_BINDING_BLEND_BOUNDS 13 // buffer uint[]: blended scenes: blended depth bounds (light_assign.h: TP_LA_BLEND_*)
 #define TP_TL_BINDING_TILE_DEPTH 24  // buffer uvec4 per tile: its depth bounds (the tile_depth_bounds pass writes them)
+#define TP_TL_BINDING_LIGHTS_UBO 25  // uniform buffer: the scene's lights again (core/passes/lights_ubo.h; read where TP_TL_SPEC_LIGHTS_UBO)
 
 // The tile depth bounds pass (its set 1: TP_TL_BINDING_DEPTH and TP_TL_BINDING_TILE_DEPTH)
 // writes a tile's record: the bit patterns of its nearest and farthest geometry depth
@@ -34,6 +35,7 @@ namespace tp::gpu {
 #define TP_BF_BINDING_LISTS 0   // buffer: transparent light lists, compact (include/light_assign.h)
 #define TP_BF_BINDING_MASKS 1   // buffer: clustered: slice rows over the transparent lists (a dummy when tiled)
 #define TP_BF_BINDING_BLEND_BOUNDS 2 // buffer: blended depth bounds (clustered: where the front slices start)
+#define TP_BF_BINDING_LIGHTS_UBO 3  // uniform buffer: the tiled lighting's copy of the lights (read where TP_TL_SPEC_LIGHTS_UBO)
 
 // Clustered blended scenes (--light-assign clustered): the transparent list of a tile is its
 // span list (its blended depth bounds, light_assign.glsl: LaBlendedBounds) and a buffer of
@@ -63,6 +65,7 @@ TP_INLINE uint tlClusterRowsBase(uint tileCount, uint offset, uint tile, uint sl
 // with 16- and 32-pixel tiles, 8 on a CPU device and for 8-pixel tiles).
 #define TP_TL_SPEC_GROUP_X 24
 #define TP_TL_SPEC_GROUP_Y 25
+#define TP_TL_SPEC_LIGHTS_UBO 35    // 1: the lights are read from TP_TL_BINDING_LIGHTS_UBO (a CPU device), 0: from the scene's storage buffer
 
 // Clustered deferred: per slice, a bitmask over the tile's shared list of this batch, in
 // shared memory (8 KiB beside the 16 KiB list): slices * ceil(lights / 32) words, so a

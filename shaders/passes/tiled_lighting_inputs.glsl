@@ -56,6 +56,11 @@
 // evalLightShadowed: evalLight itself, or (TP_SHADOW_MAPS, the _shadow twins) times the
 // light's visibility in the shadow atlas (set TP_SET_SHADOW).
 #include "include/shadow_light.glsl"
+// The lights' uniform-buffer copy (include/lights_ubo.h: a CPU device, where a storage-buffer
+// load branches per lane): every light of the pass's loops through sceneLight.
+#define TP_LIGHTS_UBO_BINDING TP_TL_BINDING_LIGHTS_UBO
+#define TP_LIGHTS_UBO_SPEC TP_TL_SPEC_LIGHTS_UBO
+#include "include/lights_ubo.glsl"
 #ifdef TP_LISTS_ONLY
 #define TP_SURFACE_DEPTH_ONLY
 #endif

@@ -22,7 +22,7 @@ void cull(uvec2 tile, bool hasGeometry) {
     const uint first = draw.TP_TL_LIGHT_FIRST, end = min(draw.TP_TL_LIGHT_END, candidates);
     for (uint i = first + gl_LocalInvocationIndex; hasGeometry && i < end; i += groupSize) {
         uint light = candidateLight(tileIndex, i);
-        if (lightInTileAndBox(lights[light], f, box, frame.view)) atomicOr(sBits[(i - first) >> 5u], 1u << ((i - first) & 31u));
+        if (lightInTileAndBox(sceneLight(light), f, box, frame.view)) atomicOr(sBits[(i - first) >> 5u], 1u << ((i - first) & 31u));
     }
 #endif
 #ifdef TP_TRANSPARENT
@@ -30,7 +30,7 @@ void cull(uvec2 tile, bool hasGeometry) {
     // (atomicOr: the same mask whatever the order); a loop of candidates / 64 iterations per
     // invocation, none where no blended fragment is shaded. Index lists: cullTransparentIndices.
     for (uint i = gl_LocalInvocationIndex; kTransparentMasks && firstBatch() && t.blended.any && i < candidates; i += groupSize) {
-        if (lightInTileAndBox(lights[candidateLight(tileIndex, i)], t.frustum, tBox, frame.view)) {
+        if (lightInTileAndBox(sceneLight(candidateLight(tileIndex, i)), t.frustum, tBox, frame.view)) {
             atomicAdd(sTransparentCount, 1u);
             if ((i >> 5u) < t.capacity) atomicOr(tLists[t.start + (i >> 5u)], 1u << (i & 31u)); // cleared in main
             else atomicAdd(sMaskDropped, 1u); // counted, never silent
@@ -68,7 +68,7 @@ void writeTransparentSlices(uint tileIndex) {
     for (uint w = gl_LocalInvocationIndex; w < words; w += TP_GROUP * TP_GROUP) {
         for (uint sl = 0u; sl < kSlices; ++sl) gWordBits[sl] = 0u;
         for (uint b = 0u; b < 32u && w * 32u + b < kept; ++b) {
-            LightGpu light = lights[tLists[start + w * 32u + b]];
+            LightGpu light = sceneLight(tLists[start + w * 32u + b]);
             vec4 sphere = lightSphereView(light, frame.view);
             uvec2 range = light.type == TP_LIGHT_DIRECTIONAL ? uvec2(0u, kSlices - 1u)
                                                              : laLightSlices(sphere.xyz, sphere.w, s);

@@ -148,11 +148,11 @@ vec3 shadeSurface(SurfaceSample ss, vec3 sum) {
         uint row = laSliceOf(dist, rangeSlicing()) * words;
         for (uint w = 0u; w < words; ++w) {
             uint bits = sMask[row + w];
-            TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(lights[sLights[w * 32u + uint(lsb)]], ss);)
+            TP_FOR_EACH_BIT(bits, lsb, sum += evalLightShadowed(sceneLight(sLights[w * 32u + uint(lsb)]), ss);)
         }
         return sum;
     }
-    for (uint i = 0u; i < n; ++i) sum += evalLightShadowed(lights[sLights[i]], ss);
+    for (uint i = 0u; i < n; ++i) sum += evalLightShadowed(sceneLight(sLights[i]), ss);
     return sum;
 }
 
@@ -168,7 +168,7 @@ void markSlices() {
     uint n = min(sCount, TP_TL_TILE_LIGHT_CAPACITY);
     uint words = (n + 31u) / 32u;
     for (uint i = gl_LocalInvocationIndex; i < n; i += TP_GROUP * TP_GROUP) {
-        LightGpu light = lights[sLights[i]];
+        LightGpu light = sceneLight(sLights[i]);
         vec4 sphere = lightSphereView(light, frame.view);
         // The shared list holds the directional lights too: they reach every slice.
         uvec2 range = light.type == TP_LIGHT_DIRECTIONAL

@@ -99,7 +99,7 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
             uint bits = tLists[start + w];
             TP_FOR_EACH_BIT(bits, lsb,
                 uint i = w * 32u + uint(lsb);
-                if (i >= first && i < end) sum += evalLightShadowed(lights[tlCandidateLight(c, i)], ss);)
+                if (i >= first && i < end) sum += evalLightShadowed(sceneLight(tlCandidateLight(c, i)), ss);)
         }
         return sum;
     }
@@ -108,7 +108,7 @@ vec3 blendedLights(uint tileIndex, SurfaceSample ss) {
     for (uint i = lowerBound(start, count, first); i < count; ++i) {
         uint light = tLists[start + i];
         if (light >= end) break;
-        sum += evalLightShadowed(lights[light], ss);
+        sum += evalLightShadowed(sceneLight(light), ss);
     }
     return sum;
 }

@@ -249,14 +249,16 @@ TEST(ShaderReflection, EveryEmbeddedShaderReflects) {
 TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
     const std::vector<SetBinding>& b = reflectShaderSet("blended_forward_frag", TP_SET_PASS);
     // The transparent lists (light indices), their slice rows (clustered), the blended depth
-    // bounds.
-    ASSERT_EQ(b.size(), 3u);
+    // bounds, the lights' uniform-buffer copy.
+    ASSERT_EQ(b.size(), 4u);
     EXPECT_EQ(b[0].binding, uint32_t(TP_BF_BINDING_LISTS));
     EXPECT_EQ(b[0].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(b[1].binding, uint32_t(TP_BF_BINDING_MASKS));
     EXPECT_EQ(b[1].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(b[2].binding, uint32_t(TP_BF_BINDING_BLEND_BOUNDS));
     EXPECT_EQ(b[2].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(b[3].binding, uint32_t(TP_BF_BINDING_LIGHTS_UBO));
+    EXPECT_EQ(b[3].type, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     EXPECT_TRUE(reflectShaderSet("scene_vert", TP_SET_PASS).empty());
 }
 
@@ -265,7 +267,8 @@ TEST(ShaderReflection, AMismatchedPassSetIsAOneLineErrorNamingPassBindingAndShad
     set.pass = "transparent_forward";
     set.bindings = {{TP_BF_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                     {TP_BF_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                    {TP_BF_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                    {TP_BF_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                    {TP_BF_BINDING_LIGHTS_UBO, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
     EXPECT_EQ(errorOf([&] {
                   checkPassBindings(&set, {"scene_vert", "blended_forward_frag"});
               }),
