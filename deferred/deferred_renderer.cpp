@@ -139,7 +139,7 @@ class DeferredRenderer final : public Renderer {
 
     void prepare(FrameGraph& graph) override {
         if (cull_) cull_->prepare(graph);
-        gbuffer_.prepare();
+        gbuffer_.prepare(graph);
         if (shadows_) shadows_->prepare(graph); // its set layout, before the passes sampling it
         if (t_.tileStats.valid()) lighting_.prepare(graph);
         if (useVolumes()) volumes_.prepare(graph);

@@ -13,6 +13,7 @@ GBufferPass::~GBufferPass() {
     if (opaque_) vkDestroyPipeline(ctx_.device, opaque_, nullptr);
     if (masked_) vkDestroyPipeline(ctx_.device, masked_, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    destroyPassSet(ctx_, set_);
 }
 
 void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull,
@@ -51,10 +52,15 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCul
         [this](PassContext& pc, passes::CullPhase phase) { record(pc, phase); });
 }
 
-void GBufferPass::prepare() {
+void GBufferPass::prepare(FrameGraph& graph) {
     if (prepass_) prepass_->prepare();
-    layout_ = scene_.createPipelineLayout();
+    materialsUbo_.emplace(ctx_, scene_, graph.owner(), "gbuffer_materials_ubo");
+    set_ = graph.createPassSet("gbuffer", VK_NULL_HANDLE,
+                               {{TP_DEF_BINDING_MATERIALS_UBO, materialsUbo_->buffer(),
+                                 VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
+    layout_ = scene_.createPipelineLayout(set_.layout);
     GraphicsPipelineDesc d;
+    d.passSet = &set_;
     if (prepass_) { // the prepass's depth, as Forward+'s shading tests it
         d.depthCompare = VK_COMPARE_OP_EQUAL;
         d.depthWrite = false;
@@ -77,6 +83,7 @@ void GBufferPass::prepare() {
         d.fragmentShader = std::string("deferred_gbuffer") + rate + emissive;
         d.specConstants = scene_.specConstants(mode);
         d.specConstants.push_back({TP_DEF_SPEC_WIDE, t_->layout.wide ? 1u : 0u});
+        d.specConstants.push_back({TP_DEF_SPEC_MATERIALS_UBO, materialsUbo_->active() ? 1u : 0u});
         if (coverage) d.specConstants.push_back({TP_SPEC_SAMPLES, t_->layout.samples});
         (mode == AlphaMode::Opaque ? opaque_ : masked_) = createGraphicsPipeline(ctx_, d);
     }
@@ -92,6 +99,8 @@ void GBufferPass::record(PassContext& pc, passes::CullPhase phase) {
     if (prepass_) depth = {t_->gbufferDepth, {}, false, true};
     beginRendering(pc, colors, depth);
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
+                            &set_.set, 0, nullptr);
     if (cull_) {
         scene_.bindMeshletIndexBuffer(pc.cmd);
         for (auto [mode, pipeline] :

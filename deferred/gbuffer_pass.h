@@ -13,7 +13,9 @@
 #include <optional>
 
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/descriptors.h"
 #include "core/passes/depth_prepass.h"
+#include "core/passes/materials_ubo.h"
 #include "deferred/deferred_targets.h"
 
 namespace tp {
@@ -32,7 +34,8 @@ class GBufferPass {
     // cull: the meshlets to draw, or null to draw the meshes whole; prepass: depth first.
     void plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCull* cull = nullptr,
               bool prepass = false);
-    void prepare();
+    // The pass set (the materials' uniform-buffer copy) and the pipelines.
+    void prepare(FrameGraph& graph);
 
   private:
     void record(PassContext& pc, passes::CullPhase phase);
@@ -41,6 +44,8 @@ class GBufferPass {
     const DeferredTargets* t_ = nullptr;
     passes::MeshletCull* cull_ = nullptr;
     std::optional<passes::DepthPrepass> prepass_;
+    std::optional<MaterialsUbo> materialsUbo_; // read on a CPU device (materials_ubo.h)
+    PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
 };

@@ -11,6 +11,7 @@
 #include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/light_classes.h"
 #include "core/passes/lights_ubo.h"
+#include "core/passes/materials_ubo.h"
 #include "core/passes/meshlet_cull.h"
 #include "core/passes/shadow_maps.h"
 #include "forwardplus/forwardplus_shared.h"
@@ -61,38 +62,20 @@ void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
         if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
 }
 
-// The graph's set for the pass's uses and fp_params, plus the lights as a uniform buffer
-// (core/passes/lights_ubo.h: read on a CPU device when they fit; docs/forwardplus.md, "The
-// per-light cost on lavapipe"), the directional lights first in fp_params' order (ascending):
-// the shader's loop takes the i-th directional light as slot i without loading its index
-// (shading.frag).
+// The graph's set for the pass's uses and fp_params, plus the lights and the materials as
+// uniform buffers (core/passes/lights_ubo.h, materials_ubo.h: read on a CPU device when they
+// fit; docs/forwardplus.md, "The per-light cost on lavapipe"), the directional lights first in
+// fp_params' order (ascending): the shader's loop takes the i-th directional light as slot i
+// without loading its index (shading.frag).
 void ForwardShading::createPassSet(FrameGraph& graph, VkBuffer params) {
     lightsUbo_.emplace(ctx_, scene_, "forwardplus", "fp_lights_ubo",
                        la::classifyLights(scene_.shadingLights()).directional);
-    createMaterialsUbo();
+    materialsUbo_.emplace(ctx_, scene_, "forwardplus", "fp_materials_ubo");
     set_ = graph.createPassSet("forward_opaque", VK_NULL_HANDLE,
                                {{TP_FP_BINDING_PARAMS, params},
                                 {TP_FP_BINDING_LIGHTS_UBO, lightsUbo_->buffer(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                                {TP_FP_BINDING_MATERIALS_UBO, materialsUboBuffer_.buffer,
+                                {TP_FP_BINDING_MATERIALS_UBO, materialsUbo_->buffer(),
                                  VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
-}
-
-// The material table as a uniform buffer, read by the shading passes on a CPU device when it
-// fits, for the reason the lights' copy exists (lavapipe's storage-buffer loads branch per lane;
-// docs/efficiency.md, "The material floor on lavapipe"); the same bytes, padded with zeros to
-// the block's length. Otherwise a one-material stand-in, and the shaders read the scene's buffer.
-void ForwardShading::createMaterialsUbo() {
-    const std::vector<gpu::MaterialGpu>& materials = scene_.materialsGpu();
-    constexpr VkDeviceSize kUboBytes = TP_FP_UBO_MATERIALS * sizeof(gpu::MaterialGpu);
-    materialsUbo_ = ctx_.isCpuDevice() && materials.size() <= TP_FP_UBO_MATERIALS &&
-                    ctx_.properties.limits.maxUniformBufferRange >= kUboBytes;
-    std::vector<gpu::MaterialGpu> copy(materialsUbo_ ? TP_FP_UBO_MATERIALS : 1, gpu::MaterialGpu{});
-    if (materialsUbo_) std::copy(materials.begin(), materials.end(), copy.begin());
-    materialsUboBuffer_ = createBufferWithData(
-        ctx_, copy.data(), copy.size() * sizeof(gpu::MaterialGpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-        {"forwardplus", "", "fp_materials_ubo",
-         materialsUbo_ ? "the materials as a uniform buffer (read by the shading passes)"
-                       : "stand-in (the shading passes read the scene's material buffer)"});
 }
 
 void ForwardShading::updateLights() {
@@ -120,7 +103,7 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     d.specConstants.push_back({TP_FP_SPEC_TWO_LISTS, config_.twoLists ? 1u : 0u});
     d.specConstants.push_back({TP_FP_SPEC_LAYOUT, config_.layout});
     d.specConstants.push_back({TP_FP_SPEC_LIGHTS_UBO, lightsUbo_->active() ? 1u : 0u});
-    d.specConstants.push_back({TP_FP_SPEC_MATERIALS_UBO, materialsUbo_ ? 1u : 0u});
+    d.specConstants.push_back({TP_FP_SPEC_MATERIALS_UBO, materialsUbo_->active() ? 1u : 0u});
     // The light count is fixed for a plan (a new view moves lights, never adds one).
     d.specConstants.push_back({TP_FP_SPEC_NO_LIGHTS, scene_.shadingLights().empty() ? 1u : 0u});
     // fp_params' directional count and tile grid, the same values as constants.

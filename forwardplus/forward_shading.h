@@ -14,6 +14,7 @@
 #include "core/gpu/resources.h"
 #include "core/passes/image_clear.h"
 #include "core/passes/lights_ubo.h"
+#include "core/passes/materials_ubo.h"
 #include "core/renderer/msaa_knob.h"
 #include "include/shared.h"
 
@@ -72,7 +73,6 @@ class ForwardShading {
   private:
     std::vector<PassUse> uses(bool transparent) const;
     void createPassSet(FrameGraph& graph, VkBuffer params);
-    void createMaterialsUbo();
     GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
     void createMaterialPipelines(AlphaMode mode);
     void record(PassContext& pc, bool transparent);
@@ -84,10 +84,9 @@ class ForwardShading {
     // The lights as a uniform buffer (TP_FP_BINDING_LIGHTS_UBO); active() says whether the
     // shaders read it (TP_FP_SPEC_LIGHTS_UBO) or only bind it.
     std::optional<LightsUbo> lightsUbo_;
-    // The materials as a uniform buffer (TP_FP_BINDING_MATERIALS_UBO); materialsUbo_ says whether
+    // The materials as a uniform buffer (TP_FP_BINDING_MATERIALS_UBO); active() says whether
     // the shaders read it (TP_FP_SPEC_MATERIALS_UBO) or only bind it.
-    Buffer materialsUboBuffer_;
-    bool materialsUbo_ = false;
+    std::optional<MaterialsUbo> materialsUbo_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     // By AlphaMode, then by material: the pipeline with that material's texture indices
     // compiled in (material.glsl, TP_MATERIAL_SPEC_TEXTURES); materials with the same

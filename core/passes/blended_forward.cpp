@@ -40,8 +40,10 @@ void BlendedForwardPass::plan(FrameGraph& graph, const BlendedForwardTargets& t,
 bool BlendedForwardPass::shadowed() const { return t_.shadows && t_.shadows->enabled(); }
 
 void BlendedForwardPass::prepare(FrameGraph& graph, bool binned, const LightsUbo& lights) {
+    materialsUbo_.emplace(ctx_, scene_, graph.owner(), "transparent_forward_materials_ubo");
     std::vector<ExternalBuffer> externals{
-        {TP_BF_BINDING_LIGHTS_UBO, lights.buffer(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+        {TP_BF_BINDING_LIGHTS_UBO, lights.buffer(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+        {TP_BF_BINDING_MATERIALS_UBO, materialsUbo_->buffer(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
     if (!masks_.valid()) {
         noMasks_ = createStandInBuffer(ctx_, {graph.owner(), "", "transparent_cluster_masks_unused",
                                               "stand-in: slice rows are clustered only"});
@@ -60,6 +62,7 @@ void BlendedForwardPass::prepare(FrameGraph& graph, bool binned, const LightsUbo
     d.specConstants.push_back({TP_TL_SPEC_SLICES, slices_});
     d.specConstants.push_back({TP_TL_SPEC_BINNED, binned ? 1u : 0u}); // the ambient term last
     d.specConstants.push_back({TP_TL_SPEC_LIGHTS_UBO, lights.active() ? 1u : 0u});
+    d.specConstants.push_back({TP_BF_SPEC_MATERIALS_UBO, materialsUbo_->active() ? 1u : 0u});
     if (shadowed()) t_.shadows->apply(d.fragmentShader, d.specConstants); // the _shadow twin
     d.colorFormats = {t_.hdrFormat};
     d.samples = VkSampleCountFlagBits(t_.samples);

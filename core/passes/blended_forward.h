@@ -5,11 +5,14 @@
 // (tiled_lighting.h, blended_lists.h); shaded once per pixel or per sample as `perPixel`
 // says. A pipeline that shades opaque surfaces from a surface source (deferred, a
 // visibility buffer) composes it for what that source cannot hold.
+#include <optional>
+
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/resources.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/lights_ubo.h"
+#include "core/passes/materials_ubo.h"
 
 namespace tp {
 
@@ -56,6 +59,7 @@ class BlendedForwardPass {
     uint32_t slices_ = 0;
     ResourceHandle masks_;
     Buffer noMasks_; // tiled: a 16-byte stand-in for the unused slice rows
+    std::optional<MaterialsUbo> materialsUbo_; // read on a CPU device (materials_ubo.h)
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

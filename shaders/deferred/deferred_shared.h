@@ -20,6 +20,10 @@ using std::sin;
 #define TP_DEF_BINDING_ROUGH_METAL 2 // sampler: roughness r, metallic g
 #define TP_DEF_BINDING_EMISSIVE 3    // sampler: emissive rgb (only when the scene emits)
 #define TP_DEF_BINDING_EDGE_MASK 9   // sampler: 1x edge mask (volumes lighting under MSAA)
+// The G-buffer pass's own set: the materials' uniform-buffer copy (core/passes/materials_ubo.h),
+// read where TP_DEF_SPEC_MATERIALS_UBO.
+#define TP_DEF_BINDING_MATERIALS_UBO 20
+#define TP_DEF_SPEC_MATERIALS_UBO 36
 
 #define TP_DEF_SPEC_WIDE 11          // 1: wide (fp32, xyz normal) G-buffer, 0: compact
 // ---- specialization constants of the light-volume shaders ----

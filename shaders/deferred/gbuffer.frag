@@ -13,6 +13,10 @@
 #include "deferred/deferred_shared.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
+// The draw's material from the uniform-buffer copy on a CPU device (include/materials_ubo.h).
+#define TP_MATERIALS_UBO_BINDING TP_DEF_BINDING_MATERIALS_UBO
+#define TP_MATERIALS_UBO_SPEC TP_DEF_SPEC_MATERIALS_UBO
+#include "include/materials_ubo.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/gbuffer_encoding.h"
 

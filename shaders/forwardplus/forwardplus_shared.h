@@ -43,7 +43,6 @@ namespace tp::gpu {
 // Lights the uniform-buffer copy holds: 64 KiB of LightGpu (std140 and std430 agree: 64 bytes).
 // Materials the uniform-buffer copy holds: 40 KiB of MaterialGpu (std140 and std430 agree: 80 bytes,
 // no array or scalar member that std140 would pad).
-#define TP_FP_UBO_MATERIALS 512
 
 #define TP_FP_LAYOUT_COMPACT 0u // per-tile offsets from a conservative CPU bound: never drops
 #define TP_FP_LAYOUT_FIXED 1u   // tileCapacity slots per tile (AMD ForwardPlus11); drops counted

@@ -12,41 +12,11 @@
 #define TP_MATERIAL_SPEC_TEXTURES 1
 #include "include/material.glsl"
 
-// The materials again, as a uniform buffer, where they fit (forward_shading.cpp: a CPU device
-// and at most TP_FP_UBO_MATERIALS materials), as the lights below. lavapipe (Mesa 22.3) loads
-// each component of a storage buffer in a loop over the 8 lanes with a branch per lane, so
-// reading the draw's 80-byte material cost about a quarter of the 0-light shading pass
-// (docs/efficiency.md, "The material floor on lavapipe"); from a uniform buffer at an index
-// that is the same for the whole draw it is one scalar load per component. Same bytes, same
-// material.
-layout(constant_id = TP_FP_SPEC_MATERIALS_UBO) const bool kMaterialsUbo = false;
-layout(std140, set = TP_SET_PASS, binding = TP_FP_BINDING_MATERIALS_UBO) uniform MaterialUboBlock {
-    MaterialGpu uboMaterials[TP_FP_UBO_MATERIALS];
-};
-
-// Member by member, for the reason uboLight() gives.
-MaterialGpu fpMaterial(uint index) {
-    if (!kMaterialsUbo) return materials[index];
-    uint i = min(index, TP_FP_UBO_MATERIALS - 1u);
-    MaterialGpu m;
-    m.baseColorFactor = uboMaterials[i].baseColorFactor;
-    m.emissive = uboMaterials[i].emissive;
-    m.alphaCutoff = uboMaterials[i].alphaCutoff;
-    m.metallic = uboMaterials[i].metallic;
-    m.roughness = uboMaterials[i].roughness;
-    m.normalScale = uboMaterials[i].normalScale;
-    m.occlusionStrength = uboMaterials[i].occlusionStrength;
-    m.baseColorTexture = uboMaterials[i].baseColorTexture;
-    m.metallicRoughnessTexture = uboMaterials[i].metallicRoughnessTexture;
-    m.normalTexture = uboMaterials[i].normalTexture;
-    m.occlusionTexture = uboMaterials[i].occlusionTexture;
-    m.emissiveTexture = uboMaterials[i].emissiveTexture;
-    m.alphaMode = uboMaterials[i].alphaMode;
-    m.doubleSided = uboMaterials[i].doubleSided;
-    m.pad0 = 0u;
-    return m;
-}
-#define TP_MATERIAL_OF(index) fpMaterial(index)
+// The materials again, as a uniform buffer, where they fit (include/materials_ubo.h: a CPU
+// device and at most TP_MATERIALS_UBO_CAPACITY materials): the draw's material through it.
+#define TP_MATERIALS_UBO_BINDING TP_FP_BINDING_MATERIALS_UBO
+#define TP_MATERIALS_UBO_SPEC TP_FP_SPEC_MATERIALS_UBO
+#include "include/materials_ubo.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 #include "include/light_list_walk.glsl"

@@ -18,6 +18,10 @@
 #include "passes/tiled_lighting.h"
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
+// The draw's material from the uniform-buffer copy on a CPU device (include/materials_ubo.h).
+#define TP_MATERIALS_UBO_BINDING TP_BF_BINDING_MATERIALS_UBO
+#define TP_MATERIALS_UBO_SPEC TP_BF_SPEC_MATERIALS_UBO
+#include "include/materials_ubo.glsl"
 #include "include/scene_inputs.glsl"
 #include "include/light_assign.glsl"
 #include "include/light_list_walk.glsl"

@@ -36,6 +36,8 @@ namespace tp::gpu {
 #define TP_BF_BINDING_MASKS 1   // buffer: clustered: slice rows over the transparent lists (a dummy when tiled)
 #define TP_BF_BINDING_BLEND_BOUNDS 2 // buffer: blended depth bounds (clustered: where the front slices start)
 #define TP_BF_BINDING_LIGHTS_UBO 3  // uniform buffer: the tiled lighting's copy of the lights (read where TP_TL_SPEC_LIGHTS_UBO)
+#define TP_BF_BINDING_MATERIALS_UBO 4 // uniform buffer: the materials' copy (core/passes/materials_ubo.h; read where TP_BF_SPEC_MATERIALS_UBO)
+#define TP_BF_SPEC_MATERIALS_UBO 36
 
 // Clustered blended scenes (--light-assign clustered): the transparent list of a tile is its
 // span list (its blended depth bounds, light_assign.glsl: LaBlendedBounds) and a buffer of

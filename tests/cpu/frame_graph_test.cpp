@@ -249,8 +249,8 @@ TEST(ShaderReflection, EveryEmbeddedShaderReflects) {
 TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
     const std::vector<SetBinding>& b = reflectShaderSet("blended_forward_frag", TP_SET_PASS);
     // The transparent lists (light indices), their slice rows (clustered), the blended depth
-    // bounds, the lights' uniform-buffer copy.
-    ASSERT_EQ(b.size(), 4u);
+    // bounds, the lights' and the materials' uniform-buffer copies.
+    ASSERT_EQ(b.size(), 5u);
     EXPECT_EQ(b[0].binding, uint32_t(TP_BF_BINDING_LISTS));
     EXPECT_EQ(b[0].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(b[1].binding, uint32_t(TP_BF_BINDING_MASKS));
@@ -259,6 +259,8 @@ TEST(ShaderReflection, ReadsThePassSetOfAnEmbeddedShader) {
     EXPECT_EQ(b[2].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(b[3].binding, uint32_t(TP_BF_BINDING_LIGHTS_UBO));
     EXPECT_EQ(b[3].type, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+    EXPECT_EQ(b[4].binding, uint32_t(TP_BF_BINDING_MATERIALS_UBO));
+    EXPECT_EQ(b[4].type, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     EXPECT_TRUE(reflectShaderSet("scene_vert", TP_SET_PASS).empty());
 }
 
@@ -268,7 +270,8 @@ TEST(ShaderReflection, AMismatchedPassSetIsAOneLineErrorNamingPassBindingAndShad
     set.bindings = {{TP_BF_BINDING_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                     {TP_BF_BINDING_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                     {TP_BF_BINDING_BLEND_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                    {TP_BF_BINDING_LIGHTS_UBO, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+                    {TP_BF_BINDING_LIGHTS_UBO, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                    {TP_BF_BINDING_MATERIALS_UBO, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
     EXPECT_EQ(errorOf([&] {
                   checkPassBindings(&set, {"scene_vert", "blended_forward_frag"});
               }),
