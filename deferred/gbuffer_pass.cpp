@@ -54,7 +54,7 @@ void GBufferPass::plan(FrameGraph& graph, DeferredTargets& t, passes::MeshletCul
 
 void GBufferPass::prepare(FrameGraph& graph) {
     if (prepass_) prepass_->prepare();
-    materialsUbo_.emplace(ctx_, scene_, graph.owner(), "gbuffer_materials_ubo");
+    materialsUbo_.emplace(ctx_, scene_, graph.owner(), "materials_ubo"); // not a G-buffer target
     set_ = graph.createPassSet("gbuffer", VK_NULL_HANDLE,
                                {{TP_DEF_BINDING_MATERIALS_UBO, materialsUbo_->buffer(),
                                  VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}});
