@@ -20,6 +20,8 @@
 #include "gltf_test_scenes.h"
 #include "gpu_test_util.h"
 #include "include/light_assign.h"
+#include "include/lights_ubo.h"
+#include "include/materials_ubo.h"
 #include "triangle_pixels.h"
 
 namespace tp::test {
@@ -728,6 +730,32 @@ uint64_t entryBytes(const RunResult& run, const std::string& name) {
     for (const LedgerEntry& e : run.memory)
         if (e.tag.name == name) return e.requestedBytes;
     return 0;
+}
+
+// On a CPU device the lights and the materials are read from uniform-buffer copies where they
+// fit (core/passes/lights_ubo.h, materials_ubo.h: lavapipe's storage-buffer loads branch per
+// lane); the ledger shows which: the whole block when read, a one-element stand-in otherwise.
+// Past 1,024 lights the shaders read the scene's buffer (the image is the same either way:
+// the fingerprints and the reference tests at 4,096 lights).
+TEST(Deferred, ReadsTheLightsAndMaterialsFromUniformCopiesOnACpuDevice) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    if (!ctx->isCpuDevice()) GTEST_SKIP() << "the copies are read on a CPU device only";
+    for (uint32_t lights : {4u, 1025u}) {
+        Scene yard = courtyardWithLights(lights);
+        SceneGpu yardGpu(*ctx, yard);
+        RunResult r = runOrFail(*ctx, yardGpu, "deferred", small(1, "compact"));
+        const uint64_t lightBytes = lights <= TP_LIGHTS_UBO_CAPACITY
+                                        ? TP_LIGHTS_UBO_CAPACITY * sizeof(gpu::LightGpu)
+                                        : sizeof(gpu::LightGpu);
+        EXPECT_EQ(entryBytes(r, "lights_ubo"), lightBytes) << lights;
+        EXPECT_EQ(entryBytes(r, "materials_ubo"), TP_MATERIALS_UBO_CAPACITY * sizeof(gpu::MaterialGpu))
+            << lights;
+        EXPECT_EQ(entryBytes(r, "transparent_forward_materials_ubo"),
+                  TP_MATERIALS_UBO_CAPACITY * sizeof(gpu::MaterialGpu))
+            << lights;
+    }
+    expectNoValidationMessages(*ctx);
 }
 
 // The transparent lists use light assignment's compact layout: one 16-byte header per tile,
