@@ -460,6 +460,8 @@ RenderSettings settings(uint32_t w, uint32_t h, uint32_t msaa, uint32_t tile) {
     s.height = h;
     s.msaa = msaa;
     s.set("tile", tile);
+    // Binned: --light-cull auto is `all` on a GPU up to 2,048 lights (no binning to compare).
+    s.set("light-cull", "binned");
     return s;
 }
 
