@@ -45,7 +45,7 @@ void RasterMergePass::plan(FrameGraph& graph, uint32_t samples, const Visibility
         graph.addPass("vis_raster_hw",
                       {{t_.ids, Use::ColorAttachment},
                        {t_.depth, Use::DepthAttachment},
-                       {raster.list, Use::StorageRead, TP_VR_BINDING_VIS_LIST},
+                       {raster.hwList, Use::StorageRead, TP_VR_BINDING_VIS_LIST},
                        {raster.args, Use::IndirectRead}},
                       [this](PassContext& pc) { recordListed(pc); });
     if (samples == 1) return; // seeded (planSeed)

@@ -28,12 +28,13 @@ RasterPass::RasterPass(GpuContext& ctx, SceneGpu& scene, const DrawTable& table,
 }
 
 RasterPass::~RasterPass() {
-    for (VkPipeline p : {pipeline_, big_})
+    for (VkPipeline p : {pipeline_, big_, order_})
         if (p) vkDestroyPipeline(ctx_.device, p, nullptr);
-    for (VkPipelineLayout l : {layout_, bigLayout_})
+    for (VkPipelineLayout l : {layout_, bigLayout_, orderLayout_})
         if (l) vkDestroyPipelineLayout(ctx_.device, l, nullptr);
     destroyPassSet(ctx_, set_);
     destroyPassSet(ctx_, bigSet_);
+    destroyPassSet(ctx_, orderSet_);
 }
 
 RasterTargets RasterPass::plan(FrameGraph& graph, uint32_t samples,
@@ -50,9 +51,19 @@ RasterTargets RasterPass::plan(FrameGraph& graph, uint32_t samples,
                             " MiB; use a lower --res or --msaa");
     t_.samples = graph.createBuffer("vis_raster_samples", bytes,
                                     "per sample: depth bits and ~id, the 64-bit atomic max");
-    t_.list = graph.createBuffer(
-        "vis_raster_list", (TP_VR_LIST_HEADER + 4 * VkDeviceSize(std::max(triangles_, 1u))) * 4,
-        "counters, then per large triangle its vertices and id (a slot for every triangle)");
+    makeChunks();
+    const VkDeviceSize slots = std::max(triangles_, 1u), chunks = std::max(chunkCount_, 1u);
+    if (hybrid_) {
+        t_.list = graph.createBuffer(
+            "vis_raster_list", (TP_VR_LIST_HEADER + chunks + 4 * TP_VR_GROUP * chunks) * 4,
+            "counters, then per chunk of triangles its listed count and a slot for each");
+        t_.hwList = graph.createBuffer("vis_raster_hw_list", 4 * slots * 4,
+                                       "per listed triangle its vertices and id, in draw order");
+    } else {
+        t_.list = graph.createBuffer(
+            "vis_raster_list", (TP_VR_LIST_HEADER + 4 * slots) * 4,
+            "counters, then per large triangle its vertices and id (a slot for every triangle)");
+    }
     t_.args = graph.createBuffer("vis_raster_args", 16,
                                  hybrid_ ? "the hardware's draw of the listed triangles"
                                          : "vis_raster_big's dispatch");
@@ -75,6 +86,12 @@ RasterTargets RasterPass::plan(FrameGraph& graph, uint32_t samples,
         uses.push_back({cull->counts(), Use::StorageRead, TP_VR_BINDING_COUNTS});
     }
     graph.addPass("vis_raster", uses, [this](PassContext& pc) { record(pc); });
+    if (hybrid_)
+        graph.addPass("vis_raster_order",
+                      {{t_.list, Use::StorageRead, TP_VR_BINDING_ORDER_STAGED},
+                       {t_.hwList, Use::StorageWrite, TP_VR_BINDING_ORDER_LIST},
+                       {t_.args, Use::StorageWrite, TP_VR_BINDING_ORDER_ARGS}},
+                      [this](PassContext& pc) { recordOrder(pc); });
     if (!hybrid_)
         graph.addPass("vis_raster_big",
                       {{t_.samples, Use::StorageWrite, TP_VR_BINDING_SAMPLES},
@@ -82,7 +99,7 @@ RasterTargets RasterPass::plan(FrameGraph& graph, uint32_t samples,
                        {t_.args, Use::IndirectRead}},
                       [this](PassContext& pc) { recordBig(pc); });
     graph.exportResource("vis_raster_list", t_.list);
-    makeChunks();
+    if (hybrid_) graph.exportResource("vis_raster_hw_list", t_.hwList);
     return t_;
 }
 
@@ -140,7 +157,14 @@ void RasterPass::prepare(FrameGraph& graph) {
     spec.insert(spec.end(), triangle.begin(), triangle.end());
     pipeline_ = createComputePipeline(ctx_, cull_ ? "vis_raster_meshlet_comp" : "vis_raster_comp",
                                       spec, layout_, &set_);
-    if (hybrid_) return;
+    if (hybrid_) {
+        orderSet_ = graph.createPassSet("vis_raster_order");
+        orderLayout_ = scene_.createPipelineLayout(orderSet_.layout);
+        order_ = createComputePipeline(ctx_, "vis_raster_order_comp",
+                                       {{TP_VR_SPEC_CHUNKS, std::max(chunkCount_, 1u)}},
+                                       orderLayout_, &orderSet_);
+        return;
+    }
     bigSet_ = graph.createPassSet("vis_raster_big", VK_NULL_HANDLE,
                                   {{TP_VR_BINDING_ROWS, rows_.buffer}});
     bigLayout_ = scene_.createPipelineLayout(bigSet_.layout);
@@ -155,8 +179,22 @@ void RasterPass::record(PassContext& pc) {
     scene_.bindSceneSet(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_COMPUTE);
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
+    dispatchChunks(pc.cmd);
+}
+
+// A workgroup per chunk (vis_raster and vis_raster_order alike).
+void RasterPass::dispatchChunks(VkCommandBuffer cmd) const {
     const uint32_t x = std::min(chunkCount_, 65535u);
-    vkCmdDispatch(pc.cmd, x, (chunkCount_ + x - 1) / x, 1);
+    vkCmdDispatch(cmd, x, (chunkCount_ + x - 1) / x, 1);
+}
+
+void RasterPass::recordOrder(PassContext& pc) {
+    if (chunkCount_ == 0) return; // nothing staged: the draw keeps its 0 vertices
+    vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, order_);
+    scene_.bindSceneSet(pc.cmd, orderLayout_, VK_PIPELINE_BIND_POINT_COMPUTE);
+    vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, orderLayout_, TP_SET_PASS, 1,
+                            &orderSet_.set, 0, nullptr);
+    dispatchChunks(pc.cmd);
 }
 
 void RasterPass::recordBig(PassContext& pc) {

@@ -36,6 +36,7 @@ struct RasterTargets {
     ResourceHandle samples; // uint64_t per sample: (depth bits << 32) | ~id, 0: none
     ResourceHandle list;    // counters, then the listed triangles (vis_raster.h)
     ResourceHandle args;    // the listed triangles' indirect dispatch (compute) or draw (hybrid)
+    ResourceHandle hwList;  // hybrid: the listed triangles in the draws' order (vis_raster_order)
     bool hybrid = false;
     bool valid() const { return samples.valid(); }
 };
@@ -67,6 +68,8 @@ class RasterPass {
     void makeChunks();
     void record(PassContext& pc);
     void recordBig(PassContext& pc);
+    void recordOrder(PassContext& pc);
+    void dispatchChunks(VkCommandBuffer cmd) const;
     GpuContext& ctx_;
     SceneGpu& scene_;
     const DrawTable& table_;
@@ -79,9 +82,10 @@ class RasterPass {
     std::vector<gpu::RasterChunk> chunkData_; // from plan until prepare uploads it
     Buffer chunks_, rows_;
     uint32_t chunkCount_ = 0;
-    PassSet set_, bigSet_;
-    VkPipelineLayout layout_ = VK_NULL_HANDLE, bigLayout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE, big_ = VK_NULL_HANDLE;
+    PassSet set_, bigSet_, orderSet_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE, bigLayout_ = VK_NULL_HANDLE,
+                     orderLayout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE, big_ = VK_NULL_HANDLE, order_ = VK_NULL_HANDLE;
     bool collected_ = false;
     uint32_t counts_[TP_VR_LIST_HEADER] = {};
 };

@@ -1,5 +1,6 @@
 #include "visbuffer/vis_settings.h"
 
+#include "core/gpu/context.h"
 #include "visbuffer/vis_shared.h"
 
 namespace tp::vis {
@@ -32,14 +33,27 @@ const ChoiceKnob<Derivatives>& derivativesKnob() {
 const ChoiceKnob<Raster>& rasterKnob() {
     static const ChoiceKnob<Raster> k{
         "vis-raster",
-        {{Raster::Hardware, "hardware"}, {Raster::Compute, "compute"}, {Raster::Hybrid, "hybrid"}},
-        "Who rasterizes visbuffer's opaque and masked triangles: hardware (the fixed-function "
+        {{Raster::Auto, "auto"},
+         {Raster::Hardware, "hardware"},
+         {Raster::Compute, "compute"},
+         {Raster::Hybrid, "hybrid"}},
+        "Who rasterizes visbuffer's opaque and masked triangles: auto (hybrid on a GPU at 1x "
+        "without --cull-geometry full, where it measured fastest; hardware on a CPU device, "
+        "under MSAA and with occlusion culling; counter vis_raster_mode says which ran: 0 "
+        "hardware, 1 compute, 2 hybrid), hardware (the fixed-function "
         "visibility pass), compute (a compute rasterizer writes (depth, id) per sample with a "
         "64-bit atomic max: top-left rule, standard sample locations, near-plane clipping, the "
         "alpha test) or hybrid (triangles within 8x8 pixels in compute, the larger ones, those "
         "the near plane cuts and masked draws by the hardware, into the same visibility buffer). "
         "compute and hybrid need shaderInt64 and shaderBufferInt64Atomics (docs/visbuffer.md)"};
     return k;
+}
+
+Raster resolveRaster(const GpuContext& ctx, const Settings& s) {
+    if (s.raster != Raster::Auto) return s.raster;
+    const bool hybridPays = !ctx.isCpuDevice() && ctx.caps.int64Atomics &&
+                            s.sampling.samples == 1 && s.cullGeometry != CullGeometry::Full;
+    return hybridPays ? Raster::Hybrid : Raster::Hardware;
 }
 
 uint32_t resolveDerivatives(Derivatives d) {

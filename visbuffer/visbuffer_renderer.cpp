@@ -30,12 +30,19 @@ bool hasBlendedDraws(const SceneFeatures& features, const SceneGpu& scene) {
     return features.blended && scene.hasDraws(DrawFilter::Blend);
 }
 
+// The settings with their device-dependent defaults resolved: --light-cull and --vis-raster.
+vis::Settings resolvedSettings(const RendererCreateInfo& info) {
+    vis::Settings s = la::withResolvedCull(vis::readSettings(info.settings), info.ctx,
+                                           info.scene.lightsGpu().size(), true);
+    s.raster = vis::resolveRaster(info.ctx, s);
+    return s;
+}
+
 class VisbufferRenderer final : public Renderer {
   public:
     explicit VisbufferRenderer(const RendererCreateInfo& info)
         : ctx_(info.ctx), scene_(info.scene), features_(info.features),
-          vis_(la::withResolvedCull(vis::readSettings(info.settings), info.ctx,
-                                    info.scene.lightsGpu().size(), true)),
+          vis_(resolvedSettings(info)),
           hasBlended_(hasBlendedDraws(info.features, info.scene)),
           blendInCompute_(hasBlended_ && vis_.blended == vis::Blended::Compute),
           table_(vis::makeDrawTable(info.scene, blendInCompute_)),
@@ -332,6 +339,10 @@ RendererStats VisbufferRenderer::stats() const {
     if (shadows_) s.counters = shadows_->counters(); // none without --shadows
     const uint32_t samples = vis_.sampling.samples;
     s.counters.push_back({"visibility_bytes_per_sample", 4.0}); // fp32 id, beside depth
+    s.counters.push_back({"vis_raster_mode", // --vis-raster, resolved
+                          vis_.raster == vis::Raster::Hybrid    ? 2.0
+                          : vis_.raster == vis::Raster::Compute ? 1.0
+                                                                : 0.0});
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
     if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled

@@ -29,6 +29,7 @@ triptych_tiled_lighting_variants(vis_tiled_blend ${SHADER_DIR}/vis_resolve.comp 
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster.comp vis_raster_comp)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster.comp vis_raster_meshlet_comp DEFINES TP_VR_MESHLETS=1)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_big.comp vis_raster_big_comp)
+triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_order.comp vis_raster_order_comp)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_seed.comp vis_raster_seed_comp)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_merge.vert vis_raster_merge_vert)
 triptych_add_shader(SPVS ${SHADER_DIR}/vis_raster_merge.frag vis_raster_merge_frag)

@@ -30,6 +30,12 @@
 #define TP_VR_BINDING_VIS_SAMPLES 1 // the samples above, read by the merge
 #define TP_VR_BINDING_VIS_LIST 2    // hybrid: the listed triangles the hardware draws
 
+// ---- set 1 of vis_raster_order (hybrid: the staged triangles, in triangle order, for the
+// hardware's draw) ----
+#define TP_VR_BINDING_ORDER_STAGED 0 // the list buffer above, hybrid's staged layout (below)
+#define TP_VR_BINDING_ORDER_LIST 1   // uvec4 per listed triangle, in the order of the draws
+#define TP_VR_BINDING_ORDER_ARGS 2   // the hardware draw's arguments (its vertex count)
+
 // ---- set 1 of vis_raster_seed (1x: the samples into the targets by a copy) ----
 #define TP_VR_BINDING_SEED_SAMPLES 0 // the samples above
 #define TP_VR_BINDING_SEED 1         // float[pixels]: the depths, for the copy
@@ -37,6 +43,11 @@
 
 // ---- the list buffer: TP_VR_LIST_HEADER words of counters, then uvec4 per listed triangle:
 // its three vertex indices (vertexOffset added) and its id ----
+// In hybrid mode the slots are staged per chunk instead, so that the hardware draws the listed
+// triangles in one order whatever order the workgroups ran in (its depth test keeps the first
+// of equal depths, and what its early test rejects is counted): after the header, each chunk's
+// listed count (a word a chunk), then TP_VR_GROUP slots a chunk, filled in lane order;
+// vis_raster_order packs them into the hardware's list, chunk after chunk.
 #define TP_VR_LIST_HEADER 8
 #define TP_VR_COUNTERS 4         // the words below, read back for the report
 #define TP_VR_COUNT_SMALL 0      // triangles rasterized by their own invocation
@@ -54,6 +65,7 @@
 // ---- specialization constants (after the visbuffer's 19, 20; the triangle's own, 21 and 30,
 // in include/raster_triangle.h) ----
 #define TP_VR_SPEC_HYBRID 22 // 1: listed triangles go to the hardware (draw args), 0: vis_raster_big
+#define TP_VR_SPEC_CHUNKS 23 // vis_raster_order: the chunks (vis_raster's workgroups)
 
 #ifndef TP_GLSL
 namespace tp::gpu {

@@ -879,26 +879,15 @@ TEST(Deferred, BlendedSurfaceOverTheSkyKeepsLightsBeyondTheOpaqueDepth) {
     expectNoValidationMessages(*ctx);
 }
 
-// One frame of `pipeline` through its own graph; returns the exported buffer `name` (and,
-// when asked, `tile_stats`), for what runOrFail does not read back.
+// One frame of `pipeline`: the exported buffer `name` (and, when asked, `tile_stats`).
 std::vector<uint8_t> exportedBuffer(GpuContext& ctx, SceneGpu& scene, const char* pipeline,
                                     const RenderSettings& settings, const char* name,
                                     std::vector<uint8_t>* tileStats = nullptr) {
-    scene.setView(settings.width, settings.height, settings.msaa);
-    Result<const RendererEntry*> entry = findRenderer(pipeline);
-    EXPECT_TRUE(entry.ok());
-    RenderSettings resolved = settings;
-    EXPECT_TRUE(resolveKnobs((*entry)->knobs, resolved).ok());
-    RendererCreateInfo info{ctx, scene, analyzeScene(scene.scene(), settings.msaa), resolved};
-    std::unique_ptr<Renderer> renderer = createRenderer(**entry, info);
-    FrameGraph graph(ctx, pipeline, settings.width, settings.height);
-    renderer->plan(graph);
-    graph.compile();
-    renderer->prepare(graph);
-    recordAndSubmit(ctx, graph);
-    if (tileStats) *tileStats = readbackBuffer(ctx, graph.buffer(graph.exported("tile_stats")));
-    ResourceHandle h = graph.exported(name);
-    return h.valid() ? readbackBuffer(ctx, graph.buffer(h)) : std::vector<uint8_t>{};
+    std::vector<std::string> names{name};
+    if (tileStats) names.push_back("tile_stats");
+    std::vector<std::vector<uint8_t>> got = exportedBuffers(ctx, scene, pipeline, settings, names);
+    if (tileStats) *tileStats = got.at(1);
+    return got.at(0);
 }
 
 // The transparent lists are culled against each tile's blended depth bounds

@@ -97,6 +97,8 @@ TEST_P(ForwardPlusViews, FollowsInPlaceWithinTheRoomAndPlansAgainPastIt) {
     settings.width = kW;
     settings.height = kH;
     settings.knobs = GetParam();
+    // Binned: --light-cull auto is `all` on a GPU up to 2,048 lights (no runs to follow).
+    settings.knobs["light-cull"] = "binned";
     Result<const RendererEntry*> entry = findRenderer("forwardplus");
     ASSERT_TRUE(entry.ok());
     scene.camera = a;
@@ -229,7 +231,8 @@ TEST(ForwardPlusClusteredViews, MaskRowsPastTheRoomArePlannedAgain) {
     RenderSettings settings;
     settings.width = kW;
     settings.height = kH;
-    settings.knobs = {{"light-assign", "clustered"}, {"light-bin", "gpu"}, {"slices", "16"}};
+    settings.knobs = {{"light-assign", "clustered"}, {"light-bin", "gpu"}, {"slices", "16"},
+                      {"light-cull", "binned"}}; // auto is `all` on a GPU at this count
     const RendererEntry& entry = **findRenderer("forwardplus");
     scene.lights = packed;
 

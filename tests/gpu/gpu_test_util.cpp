@@ -163,6 +163,38 @@ std::vector<std::string> cullingPipelines() {
     return out;
 }
 
+std::vector<std::vector<uint8_t>> exportedBuffers(GpuContext& ctx, SceneGpu& scene,
+                                                  const std::string& pipeline,
+                                                  const RenderSettings& settings,
+                                                  const std::vector<std::string>& names) {
+    scene.setView(settings.width, settings.height, settings.msaa);
+    Result<const RendererEntry*> entry = findRenderer(pipeline);
+    EXPECT_TRUE(entry.ok());
+    if (!entry.ok()) return std::vector<std::vector<uint8_t>>(names.size());
+    RenderSettings resolved = settings;
+    EXPECT_TRUE(resolveKnobs((*entry)->knobs, resolved).ok());
+    RendererCreateInfo info{ctx, scene, analyzeScene(scene.scene(), settings.msaa), resolved};
+    std::unique_ptr<Renderer> renderer = createRenderer(**entry, info);
+    FrameGraph graph(ctx, pipeline, settings.width, settings.height);
+    renderer->plan(graph);
+    graph.compile();
+    renderer->prepare(graph);
+    recordAndSubmit(ctx, graph);
+    std::vector<std::vector<uint8_t>> out;
+    for (const std::string& name : names) {
+        ResourceHandle h = graph.exported(name);
+        out.push_back(h.valid() ? readbackBuffer(ctx, graph.buffer(h)) : std::vector<uint8_t>{});
+    }
+    return out;
+}
+
+void holdRasterFixed(RenderSettings& s, const std::string& pipeline) {
+    Result<const RendererEntry*> entry = findRenderer(pipeline);
+    if (entry.ok() && std::any_of((*entry)->knobs.begin(), (*entry)->knobs.end(),
+                                  [](const Knob& k) { return k.name == "vis-raster"; }))
+        s.set("vis-raster", "hardware");
+}
+
 std::vector<RunResult> renderCullModes(const std::string& pipeline, const Scene& scene, uint32_t w,
                                        uint32_t h, uint32_t msaa, const std::string& mode,
                                        const std::vector<uint32_t>& frames) {
@@ -174,6 +206,7 @@ std::vector<RunResult> renderCullModes(const std::string& pipeline, const Scene&
     s.width = w;
     s.height = h;
     s.msaa = msaa;
+    holdRasterFixed(s, pipeline);
     std::vector<RunResult> out{runOrFail(*ctx, gpuScene, pipeline, s)};
     s.set("cull-geometry", mode);
     for (uint32_t n : frames)

@@ -39,6 +39,18 @@ RunResult runOrFail(GpuContext& ctx, SceneGpu& scene, const std::string& pipelin
 // Whether the run recorded pass `pass`.
 bool ranPass(const RunResult& run, const std::string& pass);
 
+// One frame of `pipeline` through its own graph: the exported buffers `names` read back (empty
+// where a name is not exported), for what runOrFail does not read back.
+std::vector<std::vector<uint8_t>> exportedBuffers(GpuContext& ctx, SceneGpu& scene,
+                                                  const std::string& pipeline,
+                                                  const RenderSettings& settings,
+                                                  const std::vector<std::string>& names);
+
+// `s` with the visibility buffer's rasterizer held at hardware (when `pipeline` reads
+// --vis-raster): on a GPU at 1x --vis-raster auto is hybrid, but hardware under
+// --cull-geometry full (vis_settings.h), so comparing culling modes must fix it.
+void holdRasterFixed(RenderSettings& s, const std::string& pipeline);
+
 // Every registered renderer that reads --cull-geometry.
 std::vector<std::string> cullingPipelines();
 // `pipeline` on a validated context: unculled (one frame), then with --cull-geometry `mode` for

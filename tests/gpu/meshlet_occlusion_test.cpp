@@ -141,6 +141,7 @@ TEST_P(OccludedFrame, AMovedViewDrawsWhatItUncoversLate) {
     s.width = 128;
     s.height = 72;
     s.manyViews = true;
+    holdRasterFixed(s, GetParam());
     const RunResult none = runOrFail(*ctx, gpu, GetParam(), s);
     s.set("cull-geometry", "full");
     Result<const RendererEntry*> entry = findRenderer(GetParam());

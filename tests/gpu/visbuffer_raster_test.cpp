@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "core/scene/lights.h"
+#include "visbuffer/vis_raster.h"
 #include "gpu_test_util.h"
 
 namespace tp::test {
@@ -183,6 +184,35 @@ TEST(VisbufferRaster, PassesAreTimedAndTheirWorkCounted) {
         }
         EXPECT_EQ(triangles, compute ? small + listed : small);
         EXPECT_GT(atomics, 0);
+    }
+    expectNoValidationMessages(*ctx);
+}
+
+// Hybrid mode: the hardware draws the listed triangles in the draws' triangle order (ids
+// strictly ascending), whatever order vis_raster's workgroups ran in, so that its depth test's
+// ties and its fragment counts are the same on every run (vis_raster_order.comp); the list is
+// what vis_raster counted, at 1x and 4x.
+TEST(VisbufferRaster, HybridDrawsTheListedTrianglesInDrawOrder) {
+    auto ctx = makeValidatedContext();
+    ASSERT_TRUE(ctx);
+    Scene scene = courtyardSmallWithLights(4, 3);
+    SceneGpu gpuScene(*ctx, scene);
+    for (uint32_t msaa : {1u, 4u}) {
+        SCOPED_TRACE(msaa);
+        const std::vector<std::vector<uint8_t>> got =
+            exportedBuffers(*ctx, gpuScene, "visbuffer", rasterSettings("hybrid", msaa),
+                            {"vis_raster_list", "vis_raster_hw_list"});
+        ASSERT_GE(got[0].size(), TP_VR_LIST_HEADER * 4u);
+        uint32_t listed = 0;
+        std::memcpy(&listed, got[0].data() + TP_VR_COUNT_BIG * 4, 4);
+        ASSERT_GT(listed, 1u);
+        ASSERT_GE(got[1].size(), size_t(listed) * 16);
+        std::vector<uint32_t> words(size_t(listed) * 4);
+        std::memcpy(words.data(), got[1].data(), words.size() * 4);
+        uint32_t descending = 0;
+        for (uint32_t t = 1; t < listed; ++t)
+            if (words[t * 4 + 3] <= words[(t - 1) * 4 + 3]) ++descending;
+        EXPECT_EQ(descending, 0u) << "of " << listed << " listed triangles";
     }
     expectNoValidationMessages(*ctx);
 }
