@@ -80,8 +80,12 @@ Result<VkInstance> createInstance(bool validate, const std::vector<std::string>&
     info.ppEnabledExtensionNames = extensions.data();
     VkInstance instance = VK_NULL_HANDLE;
     VkResult r = vkCreateInstance(&info, nullptr, &instance);
+    // The result named: on the H200 the NVIDIA driver refuses a process's 31st instance (one
+    // made and destroyed per test, in one test process) with one of these two, and a bare "no
+    // driver" sent that search the wrong way (docs/build.md, "GPU tests").
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
-        return Error{"no Vulkan 1.3 driver found (install mesa-vulkan-drivers for lavapipe)"};
+        return Error{std::string("no Vulkan 1.3 driver found (vkCreateInstance: ") +
+                     vkResultName(r) + "; install mesa-vulkan-drivers for lavapipe)"};
     if (r != VK_SUCCESS)
         return Error{std::string("vkCreateInstance failed with ") + vkResultName(r)};
     return instance;
