@@ -33,7 +33,7 @@ def parse_variant(text):
 def run_once(binary, env, args, out):
     cmd = [binary, "render", args.scene, "--pipeline", args.pipeline, "--res", args.res,
            "--lights", str(args.lights), "--seed", str(args.seed), "--frames", str(args.frames),
-           "--warmup", "1", "--calibration", "none", "--out", out]
+           "--warmup", "1", "--calibration", "none", "--msaa", str(args.msaa), "--out", out]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run(cmd, env={**os.environ, **env}, check=True, stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL)
@@ -52,6 +52,7 @@ def main():
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--frames", type=int, default=5)
     p.add_argument("--res", default="1280x720")
+    p.add_argument("--msaa", type=int, default=1)
     p.add_argument("--scene", default="builtin:courtyard")
     p.add_argument("--pipeline", default="forwardplus")
     p.add_argument("--pass", dest="pass_name", default="forward_opaque")
