@@ -17,17 +17,17 @@ LightsUbo::LightsUbo(GpuContext& ctx, const SceneGpu& scene, const std::string& 
               ctx_.properties.limits.maxUniformBufferRange >= kBytes;
     const std::vector<gpu::LightGpu> data = copy();
     buffer_ = createBufferWithData(
-        ctx_, data.data(), active_ ? kBytes : sizeof(gpu::LightGpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+        ctx_, data.data(), data.size() * sizeof(gpu::LightGpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
         {owner, "", name,
          active_ ? "the lights as a uniform buffer (read by the shading loops: a CPU device)"
                  : "stand-in (the shading loops read the scene's light buffer)"});
 }
 
-// The prefix's lights, then every light at its index plus the prefix's length; zeros past them
-// (and only zeros when the shaders do not read it).
+// The prefix's lights, then every light at its index plus the prefix's length; zeros past them.
+// The one-light stand-in (zeros) when the shaders do not read it.
 std::vector<gpu::LightGpu> LightsUbo::copy() const {
+    if (!active_) return std::vector<gpu::LightGpu>(1, gpu::LightGpu{});
     std::vector<gpu::LightGpu> out(TP_LIGHTS_UBO_CAPACITY, gpu::LightGpu{});
-    if (!active_) return out;
     const std::vector<gpu::LightGpu>& lights = scene_.shadingLights();
     for (size_t k = 0; k < prefix_.size(); ++k)
         out[k] = lights[prefix_[k]];

@@ -154,12 +154,15 @@ std::vector<uint32_t> blendedLayers(const Scene& scene, const gpu::FrameUniforms
     return layers;
 }
 
+// Whether renderer `e` declares the knob `name`.
+bool readsKnob(const RendererEntry& e, const std::string& name) {
+    return std::any_of(e.knobs.begin(), e.knobs.end(), [&](const Knob& k) { return k.name == name; });
+}
+
 std::vector<std::string> cullingPipelines() {
     std::vector<std::string> out;
     for (const RendererEntry& e : registeredRenderers())
-        if (std::any_of(e.knobs.begin(), e.knobs.end(),
-                        [](const Knob& k) { return k.name == "cull-geometry"; }))
-            out.push_back(e.name);
+        if (readsKnob(e, "cull-geometry")) out.push_back(e.name);
     return out;
 }
 
@@ -190,9 +193,7 @@ std::vector<std::vector<uint8_t>> exportedBuffers(GpuContext& ctx, SceneGpu& sce
 
 void holdRasterFixed(RenderSettings& s, const std::string& pipeline) {
     Result<const RendererEntry*> entry = findRenderer(pipeline);
-    if (entry.ok() && std::any_of((*entry)->knobs.begin(), (*entry)->knobs.end(),
-                                  [](const Knob& k) { return k.name == "vis-raster"; }))
-        s.set("vis-raster", "hardware");
+    if (entry.ok() && readsKnob(**entry, "vis-raster")) s.set("vis-raster", "hardware");
 }
 
 std::vector<RunResult> renderCullModes(const std::string& pipeline, const Scene& scene, uint32_t w,
