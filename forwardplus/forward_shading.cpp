@@ -1,8 +1,5 @@
 #include "forwardplus/forward_shading.h"
 
-#include <algorithm>
-#include <array>
-#include <map>
 #include <string>
 
 #include "core/gpu/context.h"
@@ -19,8 +16,6 @@
 namespace tp::fp {
 
 ForwardShading::~ForwardShading() {
-    for (VkPipeline p : pipelines_)
-        vkDestroyPipeline(ctx_.device, p, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     destroyPassSet(ctx_, set_);
 }
@@ -59,7 +54,7 @@ void ForwardShading::prepare(FrameGraph& graph, VkBuffer params) {
     createPassSet(graph, params);
     layout_ = scene_.createPipelineLayout(set_.layout, t_.shadows ? t_.shadows->setLayout() : VK_NULL_HANDLE);
     for (AlphaMode mode : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
-        if (scene_.hasDraws(DrawFilter(mode))) createMaterialPipelines(mode);
+        if (scene_.hasDraws(DrawFilter(mode))) pipelines_.create(scene_, mode, pipelineDesc(mode));
 }
 
 // The graph's set for the pass's uses and fp_params, plus the lights and the materials as
@@ -121,52 +116,6 @@ GraphicsPipelineDesc ForwardShading::pipelineDesc(AlphaMode mode) const {
     return d;
 }
 
-namespace {
-
-// A material's texture indices in material.glsl's slot order (TP_SPEC_MATERIAL_TEXTURE_FIRST).
-using TextureSlots = std::array<int32_t, 5>;
-
-TextureSlots textureSlots(const Material& m) {
-    return {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture,
-            m.emissiveTexture};
-}
-
-// Past this many distinct materials in one alpha mode, the rest share one pipeline that reads
-// the indices from the material buffer: pipeline creation stays bounded on large scenes.
-constexpr size_t kMaxMaterialPipelines = 32;
-constexpr TextureSlots kFromMaterial = {TP_TEXTURE_FROM_MATERIAL, TP_TEXTURE_FROM_MATERIAL,
-                                        TP_TEXTURE_FROM_MATERIAL, TP_TEXTURE_FROM_MATERIAL,
-                                        TP_TEXTURE_FROM_MATERIAL};
-
-} // namespace
-
-// One pipeline per distinct set of texture indices among this mode's draws: on lavapipe an
-// absent texture is otherwise still sampled and a present one goes through a dynamic index
-// (material.glsl, TP_MATERIAL_SPEC_TEXTURES; docs/forwardplus.md, "The material floor").
-void ForwardShading::createMaterialPipelines(AlphaMode mode) {
-    const std::vector<Material>& materials = scene_.scene().materials;
-    std::vector<VkPipeline>& byMaterial = byMaterial_[uint32_t(mode)];
-    byMaterial.assign(materials.size(), VK_NULL_HANDLE);
-    std::map<TextureSlots, VkPipeline> variants;
-    auto variant = [&](TextureSlots slots) {
-        if (variants.size() >= kMaxMaterialPipelines && !variants.count(slots))
-            slots = kFromMaterial;
-        if (auto it = variants.find(slots); it != variants.end()) return it->second;
-        GraphicsPipelineDesc d = pipelineDesc(mode);
-        for (uint32_t i = 0; i < slots.size(); ++i)
-            d.specConstants.push_back({TP_SPEC_MATERIAL_TEXTURE_FIRST + i, uint32_t(slots[i])});
-        VkPipeline p = createGraphicsPipeline(ctx_, d);
-        pipelines_.push_back(p);
-        return variants[slots] = p;
-    };
-    for (const DrawItem* item : scene_.drawList(DrawFilter(mode))) {
-        if (item->material >= materials.size()) continue; // drawn with the buffer's indices
-        VkPipeline& p = byMaterial[item->material];
-        if (!p) p = variant(textureSlots(materials[item->material]));
-    }
-    byMaterial.push_back(variant(kFromMaterial)); // last: for a material index out of range
-}
-
 void ForwardShading::record(PassContext& pc, bool transparent) {
     const bool msaa = config_.sampling.msaa();
     ColorTarget color;
@@ -188,20 +137,13 @@ void ForwardShading::record(PassContext& pc, bool transparent) {
         scene_.bindMeshletIndexBuffer(pc.cmd);
     else
         scene_.bindIndexBuffer(pc.cmd);
-    for (AlphaMode mode : modes) {
-        const std::vector<VkPipeline>& byMaterial = byMaterial_[uint32_t(mode)];
-        VkPipeline bound = VK_NULL_HANDLE;
-        // The draws in recordDraws' order, each with its material's pipeline.
-        for (const DrawItem* item : scene_.drawList(DrawFilter(mode))) {
-            VkPipeline p = byMaterial[std::min<size_t>(item->material, byMaterial.size() - 1)];
-            if (p != bound) vkCmdBindPipeline(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
-            bound = p;
+    for (AlphaMode mode : modes)
+        pipelines_.forEachDraw(scene_, pc.cmd, mode, [&](const DrawItem& item) {
             if (culled)
-                t_.cull->recordDraw(pc, layout_, *item);
+                t_.cull->recordDraw(pc, layout_, item);
             else
-                recordDraw(pc.cmd, layout_, *item);
-        }
-    }
+                recordDraw(pc.cmd, layout_, item);
+        });
     endRendering(pc);
 }
 

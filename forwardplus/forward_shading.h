@@ -14,6 +14,7 @@
 #include "core/gpu/resources.h"
 #include "core/passes/image_clear.h"
 #include "core/passes/lights_ubo.h"
+#include "core/passes/material_pipelines.h"
 #include "core/passes/materials_ubo.h"
 #include "core/renderer/msaa_knob.h"
 #include "include/shared.h"
@@ -59,7 +60,7 @@ struct ShadingTargets {
 class ForwardShading {
   public:
     ForwardShading(GpuContext& ctx, const SceneGpu& scene, ShadingConfig config)
-        : ctx_(ctx), scene_(scene), config_(config), hdrClear_(ctx) {}
+        : ctx_(ctx), scene_(scene), config_(config), pipelines_(ctx), hdrClear_(ctx) {}
     ~ForwardShading();
     ForwardShading(const ForwardShading&) = delete;
     ForwardShading& operator=(const ForwardShading&) = delete;
@@ -74,7 +75,6 @@ class ForwardShading {
     std::vector<PassUse> uses(bool transparent) const;
     void createPassSet(FrameGraph& graph, VkBuffer params);
     GraphicsPipelineDesc pipelineDesc(AlphaMode mode) const;
-    void createMaterialPipelines(AlphaMode mode);
     void record(PassContext& pc, bool transparent);
     GpuContext& ctx_;
     const SceneGpu& scene_;
@@ -88,11 +88,8 @@ class ForwardShading {
     // the shaders read it (TP_FP_SPEC_MATERIALS_UBO) or only bind it.
     std::optional<MaterialsUbo> materialsUbo_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    // By AlphaMode, then by material: the pipeline with that material's texture indices
-    // compiled in (material.glsl, TP_MATERIAL_SPEC_TEXTURES); materials with the same
-    // indices share one. pipelines_ owns them all.
-    std::vector<VkPipeline> byMaterial_[3];
-    std::vector<VkPipeline> pipelines_;
+    // Each draw's pipeline: its material's texture indices compiled in (material_pipelines.h).
+    MaterialPipelines pipelines_;
     // forward_hdr_clear: the radiance zeroed by compute before forward_opaque, not by its
     // render pass (on the H200 a render pass's clear runs on the graphics SMs, about 55 GB/s).
     ImageClear hdrClear_;

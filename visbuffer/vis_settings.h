@@ -41,6 +41,16 @@ uint32_t resolveDerivatives(Derivatives d);
 // measured faster, else hardware.
 enum class Raster { Auto, Hardware, Compute, Hybrid };
 const ChoiceKnob<Raster>& rasterKnob();
+// --vis-edges: how the resolve lights its MSAA edge pixels at --msaa-shading pixel with
+// --vis-blended compute. Pixel: one invocation an edge pixel, its surfaces lit and its blended
+// fragments composited. Split: only the edges whose pixel has blended fragments so; the others
+// flattened, a surface an invocation (as deferred's edges and --vis-blended forward's are).
+// Auto: split on a GPU, pixel on a CPU device (resolveEdges; docs/visbuffer.md, "Edges with
+// nothing to composite, flattened"). The same image whichever.
+enum class Edges { Auto, Pixel, Split };
+const ChoiceKnob<Edges>& edgesKnob();
+// Whether the resolve splits its edges on `ctx` (TP_VIS_SPEC_SPLIT_EDGES).
+bool resolveEdges(const GpuContext& ctx, Edges e);
 
 // --vis-blended-capacity: the fragment pool in percent of the pixel count, 0: the derived
 // bound (fragment_bound.h).
@@ -72,6 +82,7 @@ struct Settings {
     uint32_t blendedCapacityPercent = 0; // 0: the derived bound
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the visibility pass
     Raster raster = Raster::Auto;                   // --vis-raster (resolveRaster)
+    Edges edges = Edges::Auto;                      // --vis-edges (resolveEdges)
     ShadowRaster shadowRaster = ShadowRaster::Hardware; // --shadow-raster: the atlas's faces
     // Many views: the blended fragments an earlier plan of this session overflowed with, times
     // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).

@@ -252,7 +252,8 @@ class VisbufferRenderer final : public Renderer {
         s.constants = {{TP_VIS_SPEC_TRIANGLE_BITS, table_.triangleBits},
                        {TP_VIS_SPEC_DERIVATIVES, derivativesMode()},
                        {TP_VIS_SPEC_ONE_TEXTURE_WALK, oneTextureWalk() ? 1u : 0u},
-                       {TP_VIS_SPEC_IDS_BY_DEPTH, visibility_.idsByDepth() ? 1u : 0u}};
+                       {TP_VIS_SPEC_IDS_BY_DEPTH, visibility_.idsByDepth() ? 1u : 0u},
+                       {TP_VIS_SPEC_SPLIT_EDGES, vis::resolveEdges(ctx_, vis_.edges) ? 1u : 0u}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
         if (blendInCompute_) {
@@ -343,6 +344,10 @@ RendererStats VisbufferRenderer::stats() const {
                           vis_.raster == vis::Raster::Hybrid    ? 2.0
                           : vis_.raster == vis::Raster::Compute ? 1.0
                                                                 : 0.0});
+    // --vis-edges, resolved: 1 where the resolve split its edges (only when it has them to split:
+    // under MSAA at pixel rate with the blended fragments composited in compute).
+    if (samples > 1 && !vis_.sampling.perSample() && blendInCompute_)
+        s.counters.push_back({"vis_edges_split", vis::resolveEdges(ctx_, vis_.edges) ? 1.0 : 0.0});
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
     if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled

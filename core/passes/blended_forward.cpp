@@ -12,7 +12,6 @@
 namespace tp {
 
 BlendedForwardPass::~BlendedForwardPass() {
-    if (pipeline_) vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     destroyPassSet(ctx_, set_);
 }
@@ -72,7 +71,7 @@ void BlendedForwardPass::prepare(FrameGraph& graph, bool binned, const LightsUbo
     d.blend = BlendMode::Alpha;
     d.layout = layout_;
     d.passSet = &set_;
-    pipeline_ = createGraphicsPipeline(ctx_, d);
+    pipelines_.create(scene_, AlphaMode::Blend, d);
 }
 
 void BlendedForwardPass::record(PassContext& pc) {
@@ -84,7 +83,9 @@ void BlendedForwardPass::record(PassContext& pc) {
     vkCmdBindDescriptorSets(pc.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, TP_SET_PASS, 1,
                             &set_.set, 0, nullptr);
     if (shadowed()) t_.shadows->bind(pc.cmd, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS);
-    scene_.recordDraws(pc.cmd, layout_, DrawFilter::Blend, pipeline_);
+    scene_.bindIndexBuffer(pc.cmd);
+    pipelines_.forEachDraw(scene_, pc.cmd, AlphaMode::Blend,
+                           [&](const DrawItem& item) { recordDraw(pc.cmd, layout_, item); });
     endRendering(pc);
 }
 

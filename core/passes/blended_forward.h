@@ -12,6 +12,7 @@
 #include "core/gpu/resources.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/passes/lights_ubo.h"
+#include "core/passes/material_pipelines.h"
 #include "core/passes/materials_ubo.h"
 
 namespace tp {
@@ -37,7 +38,8 @@ struct BlendedForwardTargets {
 
 class BlendedForwardPass {
   public:
-    BlendedForwardPass(GpuContext& ctx, SceneGpu& scene) : ctx_(ctx), scene_(scene) {}
+    BlendedForwardPass(GpuContext& ctx, SceneGpu& scene)
+        : ctx_(ctx), scene_(scene), pipelines_(ctx) {}
     ~BlendedForwardPass();
     // slices > 0 with `masks` (--light-assign clustered): fragments take their cluster's
     // lights through the slice rows the tiled pass wrote over the transparent lists.
@@ -62,7 +64,8 @@ class BlendedForwardPass {
     std::optional<MaterialsUbo> materialsUbo_; // read on a CPU device (materials_ubo.h)
     PassSet set_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    // Each draw's pipeline: its material's texture indices compiled in (material_pipelines.h).
+    MaterialPipelines pipelines_;
 };
 
 } // namespace tp

@@ -16,6 +16,8 @@
 // shadow atlas (include/shadow_light.glsl); blended surfaces receive shadows, cast none.
 #include "include/shared.h"
 #include "passes/tiled_lighting.h"
+// A pipeline per material, its texture indices compiled in (core/passes/material_pipelines.h).
+#define TP_MATERIAL_SPEC_TEXTURES 1
 #include "include/scene_bindings.glsl"
 #include "include/material.glsl"
 // The draw's material from the uniform-buffer copy on a CPU device (include/materials_ubo.h).

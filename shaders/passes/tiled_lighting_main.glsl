@@ -105,6 +105,8 @@ void beginTile(uvec2 tile) {
         sTransparentCount = 0u;
         sMaskDropped = 0u;
         sEdges = 0u;
+        sFlatEdges = 0u;
+        sCompositeEdges = 0u;
     }
     if (kSlices > 0u) // every word a row may use: the host keeps slices * rows within the array
         for (uint i = gl_LocalInvocationIndex; i < kMaskWords; i += TP_GROUP * TP_GROUP) sMask[i] = 0u;
@@ -162,17 +164,6 @@ void buildLists(uvec2 tile) {
 }
 
 #ifndef TP_LISTS_ONLY
-// Edges flattened (shadeEdges) at pixel rate where the pass composites no blended fragments:
-// measured on the H200 (1080p 4x, 1,024 lights), deferred's tiled lighting 0.998 -> 0.750 ms
-// and the visibility buffer's with --vis-blended forward 1.258 -> 0.985, but with its blended
-// fragments composited per edge pixel (--vis-blended compute) 1.66 -> 2.00 and at sample rate
-// 2.20 -> 4.88: the finish, one invocation a pixel, then runs a round at a time (docs/visbuffer.md).
-#ifdef TP_TL_COMPOSITES_BLENDED
-const bool kFlatEdges = false;
-#else
-const bool kFlatEdges = kSamples > 1u && !kEverySample;
-#endif
-
 // Under MSAA, after the rest: the tile's edge pixels, kSamples slots a pixel, one slot an
 // invocation. Slot k of a pixel lights its k-th surface (edgeItemSample: a sample, or at the
 // visibility buffer's pixel rate a distinct triangle; a slot past the pixel's surfaces idles),
@@ -184,10 +175,10 @@ const bool kFlatEdges = kSamples > 1u && !kEverySample;
 // kSamples (at most 8), so a pixel's slots are in one round.
 void shadeEdges(uvec2 tile) {
     const uint groupSize = TP_GROUP * TP_GROUP, lane = gl_LocalInvocationIndex;
-    const uint slots = sEdges * kSamples; // uniform: after the barrier that ends the listing
+    const uint slots = sFlatEdges * kSamples; // uniform: after the barrier that ends the listing
     for (uint first = 0u; first < slots; first += groupSize) {
         const uint i = first + lane, e = i / kSamples, k = i % kSamples;
-        const bool listed = e < sEdges;
+        const bool listed = e < sFlatEdges;
         ivec2 p = ivec2(0);
         vec3 c = vec3(0.0);
         if (listed) {
@@ -203,7 +194,7 @@ void shadeEdges(uvec2 tile) {
         // The round's pixels finished by its first invocations, one a pixel: adjacent lanes, so
         // that the finish fills whole subgroups.
         const uint f = first / kSamples + lane;
-        if (lane < groupSize / kSamples && f < sEdges) {
+        if (lane < groupSize / kSamples && f < sFlatEdges) {
             const uint local = sEdgePixels[f];
             const ivec2 q = listedPixel(tile, local);
             vec3 samples[8];
@@ -218,13 +209,18 @@ void shadeEdges(uvec2 tile) {
 }
 
 // Round 0 shades the tile's pixels that are not edges and lists the edges, which are shaded
-// after the rest: flattened (shadeEdges) where the pass does not composite blended fragments,
-// else in round 1, one pixel an invocation (shadeEdgePixel). At --msaa-shading sample every
-// pixel with geometry is an edge: nothing to compact, shaded in place. The same shade of the
-// same pixel either way: the same image. Each round is a loop of its own around its one call:
-// lavapipe runs both sides of every branch, so round 0 carried round 1's edge shading (every
-// sample lit, and the blended composite) in every pixel while it was one loop's other branch
-// (docs/visbuffer.md, "Edges in a loop of their own").
+// after the rest: flattened (shadeEdges), or one pixel an invocation (shadeEdgePixel) where
+// edgeComposites says so: the visibility buffer's --vis-blended compute, for the edges whose
+// pixel has blended fragments to composite on a GPU and for every edge on a CPU device
+// (vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES). Flattened, a composite (one invocation a pixel, after
+// the slots) ran a round at a time and took the H200's 1080p 4x resolve from 1.66 to 2.00 ms,
+// while an edge with nothing to composite is 8 of 9 there; on lavapipe flattening those 8 took
+// the 4x resolve from 1,607 to 1,976 ms. At --msaa-shading sample every pixel with geometry is
+// an edge: nothing to compact, shaded in place. The same shade of the same pixel whichever way:
+// the same image. Each round is a loop of its own around its one call: lavapipe runs both sides
+// of every branch, so round 0 carried the edges' shading (every sample lit, and the blended
+// composite) in every pixel while it was one loop's other branch (docs/visbuffer.md, "Edges in
+// a loop of their own", "Edges with nothing to composite, flattened").
 void shadeTile(uvec2 tile) {
     uint pixelsPerInvocation = (kTileSize / TP_GROUP) * (kTileSize / TP_GROUP);
     // A later batch with no light in this tile adds nothing (sCount is uniform here), unless
@@ -245,9 +241,11 @@ void shadeTile(uvec2 tile) {
         if (shaded && firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
         if (edge) {
-            uint e = atomicAdd(sEdges, 1u);
+            atomicAdd(sEdges, 1u);
             if (listEdges) {
                 uvec2 local = uvec2(p) - tile * kTileSize;
+                const uint e = edgeComposites(p) ? kEdgeWords - 1u - atomicAdd(sCompositeEdges, 1u)
+                                                 : atomicAdd(sFlatEdges, 1u);
                 sEdgePixels[e] = local.y * kTileSize + local.x;
                 shaded = false; // after the rest
             }
@@ -257,16 +255,15 @@ void shadeTile(uvec2 tile) {
         if (!listEdges && edge) shadeEdgePixel(p);
         else shadePixel(p);
     }
-    barrier(); // round 0's list complete (sEdges is uniform after it)
-    if (listEdges && !kFlatEdges) {
-        const uint rounds = (sEdges + groupSize - 1u) / groupSize; // uniform after the barrier
+    barrier(); // round 0's lists complete (their counts are uniform after it)
+    if (listEdges) {
+        const uint rounds = (sCompositeEdges + groupSize - 1u) / groupSize;
         for (uint k = 0u; k < rounds; ++k) {
             const uint e = k * groupSize + gl_LocalInvocationIndex;
-            if (e < sEdges) shadeEdgePixel(listedPixel(tile, sEdgePixels[e]));
+            if (e < sCompositeEdges) shadeEdgePixel(listedPixel(tile, sEdgePixels[kEdgeWords - 1u - e]));
         }
-        barrier();
+        shadeEdges(tile); // its slots are its own: no barrier needed after the rounds above
     }
-    if (kFlatEdges) shadeEdges(tile);
 }
 #endif
 

@@ -26,6 +26,10 @@ vec3 shadeEdgeSample(ivec2 p, uint s) {
 // The edge's samples' radiance c[0, kSamples), written (per sample) or averaged.
 void finishEdge(ivec2 p, vec3 c[8]);
 
+// Whether edge p composites blended fragments (shaded one invocation a pixel, not flattened:
+// tiled_lighting_main.glsl): never here.
+bool edgeComposites(ivec2 p) { return false; }
+
 // An edge shaded by one invocation (at --msaa-shading sample, where every pixel is one).
 void shadeEdgePixel(ivec2 p) {
     vec3 c[8];

@@ -103,18 +103,17 @@ layout(std430, set = TP_SET_PASS, binding = TP_TL_BINDING_TILE_DEPTH) readonly b
 shared uint sCount;
 shared uint sTransparentCount;
 shared uint sMaskDropped; // binned: survivors past the tile's mask words (none while the runs match the bound)
-shared uint sEdges; // the tile's edge pixels: the length of sEdgePixels
+shared uint sEdges; // the tile's edge pixels (its statistics)
 // Under MSAA the tile's edge pixels (their index in the tile), shaded after the rest by the
-// whole group (tiled_lighting_main.glsl: shadeTile). One word a pixel of the tile; a single
-// word without MSAA or at sample rate (every pixel shaded in place).
-shared uint sEdgePixels[kSamples > 1u && !kEverySample ? kTileSize * kTileSize : 1u];
+// whole group (tiled_lighting_main.glsl: shadeTile): from the start the sFlatEdges lit
+// flattened, from the end the sCompositeEdges that composite blended fragments. One word a
+// pixel of the tile; a single word without MSAA or at sample rate (every pixel shaded in place).
+const uint kEdgeWords = kSamples > 1u && !kEverySample ? kTileSize * kTileSize : 1u;
+shared uint sEdgePixels[kEdgeWords];
+shared uint sFlatEdges, sCompositeEdges;
 // shadeEdges: each invocation's radiance for one surface of an edge pixel, read by the pixel's
 // first invocation (x, y, z: a vec3 array would be padded). The group is at most 16 x 16.
-#ifdef TP_TL_COMPOSITES_BLENDED
-shared float sSlot[1]; // edges are not flattened (tiled_lighting_main.glsl: kFlatEdges)
-#else
 shared float sSlot[kSamples > 1u && !kEverySample ? 3u * 256u : 1u];
-#endif
 shared uint sLights[TP_TL_TILE_LIGHT_CAPACITY];
 // The culling's survivors of this batch as bits over its candidates (a batch holds at most
 // the shared capacity: core/passes/tiled_lighting.cpp), made into sLights by compactList.

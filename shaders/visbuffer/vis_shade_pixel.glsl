@@ -80,7 +80,17 @@ void finishPixel(ivec2 p, inout vec3 c[8], bool oneSurface) {
 
 void finishEdge(ivec2 p, vec3 c[8]) { finishPixel(p, c, false); }
 
-// An edge shaded by one invocation (--vis-blended compute, and at sample rate): samples
+// Whether edge p is shaded by one invocation (shadeEdgePixel), not flattened
+// (tiled_lighting_main.glsl): with --vis-blended compute, every edge on a CPU device, and on a
+// GPU those with blended fragments to composite (vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES).
+#ifdef TP_VIS_BLEND
+layout(constant_id = TP_VIS_SPEC_SPLIT_EDGES) const bool kSplitEdges = false;
+bool edgeComposites(ivec2 p) { return !kSplitEdges || blendHead(p) != 0u; }
+#else
+bool edgeComposites(ivec2 p) { return false; }
+#endif
+
+// An edge shaded by one invocation (one that composites, and at sample rate): samples
 // [0, kSamples) each lit once per distinct triangle (pixel rate, reading the ids once) or at
 // its own location (sample rate).
 void shadeEdgePixel(ivec2 p) {
