@@ -14,6 +14,8 @@ const char* rasterName(RasterPath r) {
     case RasterPath::Msaa: return "msaa";
     case RasterPath::DepthOnlyMsaa:
         return "depth_only_msaa";
+    case RasterPath::GBuffer: return "gbuffer";
+    case RasterPath::GBufferMsaa: return "gbuffer_msaa";
     case RasterPath::None: break;
     }
     return "none";

@@ -10,6 +10,9 @@ constexpr double kFmaFlopsPerStep = 8 * 4 * 2; // calibrate_fma.glsl: 8 vec4 cha
 constexpr VkFormat kLoopTarget = VK_FORMAT_R8G8B8A8_UNORM;  // one write after a long loop
 constexpr VkFormat kHdrTarget = VK_FORMAT_R16G16B16A16_SFLOAT; // what our passes shade into
 constexpr uint32_t kSmallCell = 2, kLargeCell = 32; // grid cells' edge in pixels (2 triangles a cell)
+// Deferred's compact G-buffer without emission (deferred/gbuffer_layout.cpp), after the first
+// (base colour, RGBA8 sRGB): the least a pass that writes three targets writes (10 B a pixel).
+const std::vector<VkFormat> kGBufferRest = {VK_FORMAT_R16G16_SNORM, VK_FORMAT_R8G8_UNORM};
 
 Bench stream(const char* name, uint32_t kind, const char* what, uint64_t bytes, bool quick) {
     const uint32_t elements = uint32_t(bytes / 16), steps = quick ? 4u : 16u;
@@ -48,7 +51,8 @@ Bench fragmentLoop(const char* name, uint32_t kind, const char* unit, const char
 // triangles for a grid of cells `cell` pixels wide.
 Bench raster(const char* name, const char* unit, const char* what, bool quick, BenchDraw draw,
              uint32_t cell = 0) {
-    Bench b{name, TP_CAL_FRAGMENT_FLAT, unit, what, true, draw};
+    Bench b{name, draw.moreColors.empty() ? TP_CAL_FRAGMENT_FLAT : TP_CAL_FRAGMENT_FLAT3, unit, what,
+            true, draw};
     b.draw.layered = true;
     b.draw.size = targetSize(quick);
     b.push = {cell ? b.draw.size / cell : 0u, quick ? 2u : 8u, 0u, 0u};
@@ -89,6 +93,10 @@ std::vector<Bench> computeBenches(bool quick) {
         loop("image_read", TP_CAL_IMAGE_READ, "GB/s",
              "texelFetch of the 1024x1024 RGBA8 texture, neighbouring texels", quick,
              quick ? 8u : 64u, 4.0),
+        // The same over a multisampled depth (what a 4x pass reads): 4 samples of 4 bytes a step.
+        loop("image_read_msaa4", TP_CAL_IMAGE_READ_MSAA4, "GB/s",
+             "texelFetch of every sample of a 1024x1024 D32 4x MSAA depth, neighbouring texels",
+             quick, quick ? 8u : 64u, 16.0),
         loop("light_point", TP_CAL_LIGHT_POINT, "Geval/s",
              "one point light through the shared light model and BRDF", quick, quick ? 4u : 64u,
              1.0),
@@ -121,6 +129,9 @@ std::vector<Bench> rasterBenches(bool quick) {
     // Indexed: a mesh's vertices are shared by its triangles; the non-indexed grid shaded three
     // vertices a triangle and measured less than an indexed pass's triangles can go.
     BenchDraw culled{.vertex = TP_CAL_VERTEX_GRID_INDEXED, .color = kHdrTarget, .cullAll = true};
+    BenchDraw gbuffer{.color = VK_FORMAT_R8G8B8A8_SRGB, .moreColors = kGBufferRest};
+    BenchDraw gbufferMsaa{.color = VK_FORMAT_R8G8B8A8_SRGB, .moreColors = kGBufferRest,
+                          .samples = VK_SAMPLE_COUNT_4_BIT};
     return {
         raster("raster_depth", "Gpixel/s",
                "full-screen layers into D32, depth test and write, no fragment shader", quick,
@@ -138,6 +149,14 @@ std::vector<Bench> rasterBenches(bool quick) {
                "rop_colour at 4x MSAA, no depth (pixels, 4 samples each)", quick, colourMsaa),
         raster("raster_depth_msaa4", "Gpixel/s", "raster_depth at 4x MSAA (pixels, 4 samples each)",
                quick, depthMsaa),
+        // What a pass writing several targets does at the least (deferred's G-buffer): passes
+        // with three colour attachments or more are placed against these, not rop_colour.
+        raster("rop_gbuffer", "Gpixel/s",
+               "full-screen layers into three targets, RGBA8 sRGB, RG16 SNORM and RG8 (deferred's "
+               "compact G-buffer)",
+               quick, gbuffer),
+        raster("rop_gbuffer_msaa4", "Gpixel/s", "rop_gbuffer at 4x MSAA (pixels, 4 samples each)",
+               quick, gbufferMsaa),
         raster("tri_small", "Gtri/s", "a grid of 2x2-pixel cells, 2 triangles each, one colour",
                quick, colour, kSmallCell),
         raster("tri_large", "Gtri/s", "a grid of 32x32-pixel cells, 2 triangles each, one colour",

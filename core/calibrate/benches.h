@@ -18,6 +18,7 @@ struct BenchDraw {
     uint32_t vertex = TP_CAL_VERTEX_LAYERS;
     bool fragment = true;                     // false: depth only, no fragment shader
     VkFormat color = VK_FORMAT_UNDEFINED;     // none: no colour attachment
+    std::vector<VkFormat> moreColors;         // attachments 1.. (the G-buffer ceilings)
     bool depth = false;                       // a D32 attachment, test GREATER and write
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     BlendMode blend = BlendMode::None;

@@ -1,6 +1,7 @@
 #include "core/calibrate/efficiency.h"
 
 #include <algorithm>
+#include <string>
 
 namespace tp {
 namespace {
@@ -21,13 +22,20 @@ struct Placer {
 
     // An image is read at the faster of the buffer stream and image_read (texel fetches of an
     // image that fits a last-level cache, as one the previous pass wrote may; on lavapipe a path
-    // of its own): the stream alone is no upper bound on how fast a pass reads its depth.
+    // of its own): the stream alone is no upper bound on how fast a pass reads its depth. A
+    // multisampled image may also go at image_read_msaa4 (its samples read together: on lavapipe
+    // faster a byte than single texels, docs/efficiency.md).
     LimitTime memory(const PassWork& w) const {
-        const double images = w.imageBytesRead, buffers = w.bytesRead - images;
-        const double imageRate = images > 0 ? std::max(rate("dram_read"), rate("image_read")) : 0.0;
-        return {"memory",
-                images > 0 ? "dram_read, image_read + dram_write" : "dram_read + dram_write",
-                ms(buffers, rate("dram_read")) + ms(images, imageRate) +
+        const double msaa = w.msaaImageBytesRead, single = w.imageBytesRead - msaa;
+        const double buffers = w.bytesRead - w.imageBytesRead;
+        const double singleRate =
+            w.imageBytesRead > 0 ? std::max(rate("dram_read"), rate("image_read")) : 0.0;
+        const double msaaRate = msaa > 0 ? std::max(singleRate, rate("image_read_msaa4")) : 0.0;
+        std::string ceiling = "dram_read";
+        if (w.imageBytesRead > 0) ceiling += ", image_read";
+        if (msaa > 0) ceiling += ", image_read_msaa4";
+        return {"memory", ceiling + " + dram_write",
+                ms(buffers, rate("dram_read")) + ms(single, singleRate) + ms(msaa, msaaRate) +
                     ms(w.bytesWritten, rate("dram_write"))};
     }
     // Light evaluations at the stage's light-model ceilings, point and spot in the scene's mix.
@@ -47,6 +55,10 @@ struct Placer {
             return "raster_depth_msaa4";
         case RasterPath::Msaa:
             return "rop_colour_msaa4";
+        case RasterPath::GBuffer:
+            return "rop_gbuffer";
+        case RasterPath::GBufferMsaa:
+            return "rop_gbuffer_msaa4";
         case RasterPath::Colour:
         case RasterPath::None:
             break;

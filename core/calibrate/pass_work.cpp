@@ -11,14 +11,17 @@ bool isAttachment(Use u) {
 }
 
 RasterPath rasterPath(const GraphDecl::Pass& p, const PassWorkInput& in) {
-    bool colour = false, depth = false, msaa = false;
+    bool depth = false, msaa = false;
+    uint32_t colours = 0;
     for (const PassUse& u : p.uses) {
         if (!isAttachment(u.use)) continue;
-        colour |= u.use == Use::ColorAttachment;
+        colours += u.use == Use::ColorAttachment ? 1u : 0u;
         depth |= u.use == Use::DepthAttachment || u.use == Use::DepthTest;
         msaa |= in.resourceSamples(u.resource.index) > 1;
     }
+    const bool colour = colours > 0;
     if (!colour && !depth) return RasterPath::None;
+    if (colours >= kGBufferTargets) return msaa ? RasterPath::GBufferMsaa : RasterPath::GBuffer;
     if (msaa) return colour ? RasterPath::Msaa : RasterPath::DepthOnlyMsaa;
     return colour ? RasterPath::Colour : RasterPath::DepthOnly;
 }
@@ -132,7 +135,11 @@ std::vector<PassWork> countPassWork(const PassWorkInput& in) {
         for (const PassUse& u : p.uses) {
             const UseBytes b = useBytes(u.use, attachmentBytes(u, w, in));
             w.bytesRead += b.read;
-            if (in.decl->resources().at(u.resource.index).isImage) w.imageBytesRead += b.read;
+            if (in.decl->resources().at(u.resource.index).isImage) {
+                w.imageBytesRead += b.read;
+                if (in.resourceSamples && in.resourceSamples(u.resource.index) > 1)
+                    w.msaaImageBytesRead += b.read;
+            }
             w.bytesWritten += b.written;
         }
         w.stage = stageOf(p, w);

@@ -15,9 +15,13 @@ namespace tp {
 
 // Which ALU a pass's shading runs on, and which raster path its fragments take: what decides
 // the ceilings it is placed against. Msaa: colour at more than one sample (with or without
-// depth); DepthOnlyMsaa: depth alone at more than one sample.
+// depth); DepthOnlyMsaa: depth alone at more than one sample; GBuffer(Msaa): three colour
+// attachments or more (kGBufferTargets), at one sample (more).
 enum class PassStage { Compute, Graphics, Other };
-enum class RasterPath { None, DepthOnly, Colour, Msaa, DepthOnlyMsaa };
+enum class RasterPath { None, DepthOnly, Colour, Msaa, DepthOnlyMsaa, GBuffer, GBufferMsaa };
+// The colour attachments calibrate's G-buffer ceilings write (rop_gbuffer): a pass with fewer
+// does less per pixel and is placed against the one-target ceilings.
+constexpr uint32_t kGBufferTargets = 3;
 
 // One kind of a pass's other counted work (PassOpWork), summed over the renderer's entries.
 struct CountedOps {
@@ -33,6 +37,7 @@ struct PassWork {
     RasterPath raster = RasterPath::None;
     double bytesRead = 0, bytesWritten = 0; // the frame graph's declared uses, each once
     double imageBytesRead = 0;              // the part of bytesRead read from images
+    double msaaImageBytesRead = 0;          // the part of imageBytesRead read from multisampled images
     bool counted = false;                   // pipeline statistics were available
     PipelineCounts counts;
     double rasterPixels = 0; // placed against the raster ceilings

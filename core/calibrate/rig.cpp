@@ -14,9 +14,11 @@ constexpr VkShaderStageFlags kPushStages =
     VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkFormat kTextureFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
-VkSampler createLinearRepeatSampler(GpuContext& ctx) {
+// Linear for the texture's fetches; nearest for the 4x depth, whose format need not filter
+// (texelFetch never does, but a linear sampler on it is invalid).
+VkSampler createRepeatSampler(GpuContext& ctx, VkFilter filter) {
     VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    si.magFilter = si.minFilter = VK_FILTER_LINEAR;
+    si.magFilter = si.minFilter = filter;
     si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     si.maxLod = 0.0f;
@@ -42,7 +44,27 @@ void fill(GpuContext& ctx, Rig& rig) {
                      VK_ACCESS_2_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        // The 4x depth at 0.5 (its reads sum it; nothing is written back).
+        const VkImageSubresourceRange depth{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        imageBarrier(cmd, rig.depthMsaa4.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, depth);
+        const VkClearDepthStencilValue half{0.5f, 0};
+        vkCmdClearDepthStencilImage(cmd, rig.depthMsaa4.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                    &half, 1, &depth);
+        imageBarrier(cmd, rig.depthMsaa4.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, depth);
     });
+}
+
+std::vector<VkFormat> colorFormats(const BenchDraw& d) {
+    std::vector<VkFormat> out;
+    if (d.color == VK_FORMAT_UNDEFINED) return out;
+    out.push_back(d.color);
+    out.insert(out.end(), d.moreColors.begin(), d.moreColors.end());
+    return out;
 }
 
 void createLayout(Rig& rig) {
@@ -53,11 +75,15 @@ void createLayout(Rig& rig) {
 }
 
 void beginRendering(VkCommandBuffer cmd, const Targets& t, uint32_t size) {
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = t.color.view;
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR; // blending adds to something defined
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    std::vector<VkRenderingAttachmentInfo> colors;
+    for (const Image& image : t.colors) {
+        VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        color.imageView = image.view;
+        color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR; // blending adds to something defined
+        color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        colors.push_back(color);
+    }
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = t.depth.view;
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -66,8 +92,8 @@ void beginRendering(VkCommandBuffer cmd, const Targets& t, uint32_t size) {
     VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
     info.renderArea = {{0, 0}, {size, size}};
     info.layerCount = 1;
-    info.colorAttachmentCount = t.color.image ? 1u : 0u;
-    info.pColorAttachments = &color;
+    info.colorAttachmentCount = uint32_t(colors.size());
+    info.pColorAttachments = colors.data();
     info.pDepthAttachment = t.depth.image ? &depth : nullptr;
     vkCmdBeginRendering(cmd, &info);
 }
@@ -86,7 +112,8 @@ void toAttachment(VkCommandBuffer cmd, const Image& image, bool depth) {
 }
 
 void recordDraw(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pipeline, const Targets& t) {
-    toAttachment(cmd, t.color, false);
+    for (const Image& image : t.colors)
+        toAttachment(cmd, image, false);
     toAttachment(cmd, t.depth, true);
     beginRendering(cmd, t, b.draw.size);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -113,10 +140,16 @@ Rig::Rig(GpuContext& c, uint64_t bytes) : ctx(c) {
     texture = createImage(ctx, {kTextureFormat, TP_CAL_TEXTURE_SIZE, TP_CAL_TEXTURE_SIZE, 1, VK_SAMPLE_COUNT_1_BIT,
                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT},
                           {"calibrate", "calibrate", "texture", "what the texture fetches read"});
-    sampler = createLinearRepeatSampler(ctx);
+    depthMsaa4 = createImage(ctx, {VK_FORMAT_D32_SFLOAT, TP_CAL_TEXTURE_SIZE, TP_CAL_TEXTURE_SIZE, 1,
+                                   VK_SAMPLE_COUNT_4_BIT,
+                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT},
+                             {"calibrate", "calibrate", "depth_msaa4", "what image_read_msaa4 reads"});
+    sampler = createRepeatSampler(ctx, VK_FILTER_LINEAR);
+    nearest = createRepeatSampler(ctx, VK_FILTER_NEAREST);
     const std::vector<SetBinding> bindings = {{TP_CAL_BINDING_SRC, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                               {TP_CAL_BINDING_DST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                              {TP_CAL_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+                                              {TP_CAL_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                              {TP_CAL_BINDING_DEPTH_MSAA4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
     set = createPassSet(ctx, bindings);
     set.pass = "calibrate";
     set.bindings = bindings; // what reflection checks each kind's shader against
@@ -124,6 +157,8 @@ Rig::Rig(GpuContext& c, uint64_t bytes) : ctx(c) {
     writeBufferDescriptor(ctx, set.set, TP_CAL_BINDING_DST, dst.buffer);
     writeImageDescriptor(ctx, set.set, TP_CAL_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                          texture.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, sampler);
+    writeImageDescriptor(ctx, set.set, TP_CAL_BINDING_DEPTH_MSAA4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                         depthMsaa4.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, nearest);
     createLayout(*this);
     fill(ctx, *this);
 }
@@ -133,15 +168,16 @@ Rig::~Rig() {
     vkDestroyDescriptorSetLayout(ctx.device, emptySet, nullptr);
     destroyPassSet(ctx, set);
     vkDestroySampler(ctx.device, sampler, nullptr);
+    vkDestroySampler(ctx.device, nearest, nullptr);
 }
 
 Targets createTargets(GpuContext& ctx, const Bench& b) {
     Targets t;
     if (!b.graphics) return t;
     const BenchDraw& d = b.draw;
-    if (d.color != VK_FORMAT_UNDEFINED)
-        t.color = createImage(ctx, {d.color, d.size, d.size, 1, d.samples, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT},
-                              {"calibrate", "calibrate", "colour", "the raster ceilings' colour attachment"});
+    for (VkFormat f : colorFormats(d))
+        t.colors.push_back(createImage(ctx, {f, d.size, d.size, 1, d.samples, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT},
+                                       {"calibrate", "calibrate", "colour", "the raster ceilings' colour attachment"}));
     if (d.depth)
         t.depth = createImage(ctx, {VK_FORMAT_D32_SFLOAT, d.size, d.size, 1, d.samples,
                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT},
@@ -162,7 +198,7 @@ VkPipeline createBenchPipeline(Rig& rig, const Bench& b) {
     GraphicsPipelineDesc d;
     d.vertexShader = "calibrate_v" + std::to_string(b.draw.vertex) + "_vert";
     d.fragmentShader = b.draw.fragment ? "calibrate_" + std::to_string(b.kind) + "_frag" : "";
-    if (b.draw.color != VK_FORMAT_UNDEFINED) d.colorFormats = {b.draw.color};
+    d.colorFormats = colorFormats(b.draw);
     d.depthFormat = b.draw.depth ? VK_FORMAT_D32_SFLOAT : VK_FORMAT_UNDEFINED;
     d.depthTest = d.depthWrite = b.draw.depth;
     d.samples = b.draw.samples;
@@ -171,7 +207,7 @@ VkPipeline createBenchPipeline(Rig& rig, const Bench& b) {
     // Every fragment kind declares the texture (calibrate_texture.glsl) and no buffer; the
     // depth-only draw declares nothing. What reflection checks the shaders against:
     PassSet drawSet = rig.set;
-    drawSet.bindings = {rig.set.bindings.back()};
+    drawSet.bindings = {{TP_CAL_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
     d.passSet = b.draw.fragment ? &drawSet : nullptr;
     return createGraphicsPipeline(rig.ctx, d);
 }

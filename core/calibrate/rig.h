@@ -1,6 +1,8 @@
 #pragma once
 // What calibrate's benchmarks run on: the buffers, the texture, the descriptor set and layout
 // they share; each benchmark's pipeline and render targets; recording one dispatch or draw.
+#include <vector>
+
 #include "core/calibrate/benches.h"
 #include "core/gpu/descriptors.h"
 #include "core/gpu/resources.h"
@@ -15,7 +17,8 @@ struct Rig {
     GpuContext& ctx;
     Buffer src, dst;
     Image texture;
-    VkSampler sampler = VK_NULL_HANDLE;
+    Image depthMsaa4; // D32 at 4x: image_read_msaa4's reads
+    VkSampler sampler = VK_NULL_HANDLE, nearest = VK_NULL_HANDLE;
     PassSet set;
     VkDescriptorSetLayout emptySet = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -28,7 +31,8 @@ struct Rig {
 
 // A graphics benchmark's attachments (none for compute), and an indexed grid's indices.
 struct Targets {
-    Image color, depth;
+    std::vector<Image> colors; // the draw's colour attachments, in order
+    Image depth;
     Buffer indices;
 };
 Targets createTargets(GpuContext& ctx, const Bench& b);

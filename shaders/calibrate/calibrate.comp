@@ -50,6 +50,10 @@ void main() {
     const ivec2 texel = ivec2(gid & uint(TP_CAL_TEXTURE_SIZE - 1), (gid / uint(TP_CAL_TEXTURE_SIZE)) & uint(TP_CAL_TEXTURE_SIZE - 1));
     const vec4 sum = texelReads(texel, cal.iterations);
     if (sum.x == 1.0e-30) dst[gid] = sum;
+#elif TP_CAL_KIND == TP_CAL_IMAGE_READ_MSAA4
+    const ivec2 texel = ivec2(gid & uint(TP_CAL_TEXTURE_SIZE - 1), (gid / uint(TP_CAL_TEXTURE_SIZE)) & uint(TP_CAL_TEXTURE_SIZE - 1));
+    const float sum = sampleReads(texel, cal.iterations);
+    if (sum == 1.0e-30) dst[gid] = vec4(sum);
 #elif TP_CAL_KIND == TP_CAL_LIGHT_POINT || TP_CAL_KIND == TP_CAL_LIGHT_SPOT
     const vec3 sum = lightEvaluations(float(gid), cal.iterations, TP_CAL_KIND == TP_CAL_LIGHT_SPOT);
     if (sum.x == 1.0e-30) dst[gid] = vec4(sum, 1.0);

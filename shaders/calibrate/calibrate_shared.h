@@ -7,6 +7,9 @@
 #define TP_CAL_BINDING_SRC 0 // buffer vec4[]: what the reads read
 #define TP_CAL_BINDING_DST 1 // buffer vec4[] (uint[] for the atomics): what the writes write
 #define TP_CAL_BINDING_TEXTURE 2 // sampler2D, RGBA8 (TP_CAL_TEXTURE_SIZE squared): what the fetches read
+// sampler2DMS, D32 at 4x (TP_CAL_TEXTURE_SIZE squared): what image_read_msaa4 reads, as a pass
+// reads a multisampled depth (tile_depth_bounds, light culling)
+#define TP_CAL_BINDING_DEPTH_MSAA4 3
 
 #define TP_CAL_TEXTURE_SIZE 1024 // the size of a material texture in the built-in courtyard
 
@@ -25,11 +28,13 @@
 #define TP_CAL_LIGHT_POINT 9   // `iterations` evalLight of a point light (light_model.h)
 #define TP_CAL_LIGHT_SPOT 10   // ... of a spot light
 #define TP_CAL_IMAGE_READ 15   // `iterations` texelFetch of the texture (one texel, no filter)
+#define TP_CAL_IMAGE_READ_MSAA4 16 // `iterations` texels of the 4x depth, each its 4 samples by texelFetch
 // Fragment kinds (calibrate.frag), drawn over TP_CAL_VERTEX's geometry.
 #define TP_CAL_FRAGMENT_TEXTURE 11 // TP_CAL_TEXTURE per pixel, with texture() (derivatives)
 #define TP_CAL_FRAGMENT_LIGHT_POINT 12
 #define TP_CAL_FRAGMENT_LIGHT_SPOT 13
 #define TP_CAL_FRAGMENT_FLAT 14 // one constant colour: what rasterisation and the ROPs cost
+#define TP_CAL_FRAGMENT_FLAT3 17 // ... into three colour attachments (the G-buffer ceilings)
 
 // Vertex kinds (calibrate.vert, TP_CAL_VERTEX).
 #define TP_CAL_VERTEX_LAYERS 0 // one full-screen triangle per instance (`iterations` instances)

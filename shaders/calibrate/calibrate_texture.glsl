@@ -33,4 +33,20 @@ vec4 texelReads(ivec2 texel, uint steps) {
         sum += texelFetch(calTexture, (texel + ivec2(k & 15u, (k >> 4u) & 15u)) & (TP_CAL_TEXTURE_SIZE - 1), 0);
     return sum;
 }
+
+#ifndef TP_CAL_FRAGMENT
+// texelReads over the 4x multisampled depth: each step a texel's four samples, one texelFetch
+// each, as tile_depth_bounds and the light culling read a multisampled depth (16 MiB in all).
+// On lavapipe a pass read its 4x depth faster than image_read's single samples (docs/efficiency.md).
+layout(set = 1, binding = TP_CAL_BINDING_DEPTH_MSAA4) uniform sampler2DMS calDepthMsaa4;
+
+float sampleReads(ivec2 texel, uint steps) {
+    float sum = 0.0;
+    for (uint k = 0u; k < steps; ++k) {
+        const ivec2 t = (texel + ivec2(k & 15u, (k >> 4u) & 15u)) & (TP_CAL_TEXTURE_SIZE - 1);
+        for (int s = 0; s < 4; ++s) sum += texelFetch(calDepthMsaa4, t, s).r;
+    }
+    return sum;
+}
+#endif
 #endif

@@ -63,7 +63,7 @@ TEST(PassWork, AGBufferWriteAt4xCountsEverySampleOfEveryTargetAndTheDepthTest) {
     // (4 + 8 + 4) bytes per sample written, and the depth test reads and writes 4 per sample.
     EXPECT_EQ(w.bytesWritten, kFrameW * kFrameH * 4 * (4 + 8 + 4 + 4));
     EXPECT_EQ(w.bytesRead, kFrameW * kFrameH * 4 * 4);
-    EXPECT_EQ(w.raster, RasterPath::Msaa);
+    EXPECT_EQ(w.raster, RasterPath::GBufferMsaa); // three targets: rop_gbuffer_msaa4
     EXPECT_TRUE(w.counted);
     EXPECT_EQ(w.counts.fragmentInvocations, 3'000'000u);
 }
