@@ -317,6 +317,7 @@ RendererStats DeferredRenderer::stats() const {
     if (!useVolumes()) // MSAA edge samples, shared atomics, light-vs-tile tests
         addTiledWork(s, {"tiled_lighting", totals.lights, totals.edges, totals.meanLights(),
                          double(lighting_.candidates()), samples});
+    lighting_.addBinningWork(s);
     return s;
 }
 

@@ -293,6 +293,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (r_.blendPass)
             s.opWork.push_back(materialFetchWork(scene_, "forward_transparent", {DrawFilter::Blend},
                                                  PassLightWork::Base::Fragments));
+        if (binning_) la::addBinningWork(s, bins_.slots, binning_->locals());
         fp::addLeftOut(s, r_, fp_, scene_, features_);
         return s;
     }

@@ -303,6 +303,17 @@ RendererStats MultipassForwardRenderer::stats() const {
     count("light_passes_draws", lightDraws);
     count("blended_draws", blendDraws);
     count("blended_light_draws", blendLightDraws);
+    // The draws placed against draw_culled (docs/efficiency.md): a draw per light and mesh is
+    // this architecture's cost that no pixel or triangle count shows.
+    for (const auto& [pass, draws] : {std::pair{"depth_prepass", prepassDraws},
+                                      {"base_pass", baseDraws},
+                                      {"light_passes", lightDraws},
+                                      {"blended", blendDraws}})
+        if (draws > 0)
+            s.opWork.push_back({pass, PassOpWork::Kind::Draws, PassLightWork::Base::Items, 1.0,
+                                true, "the draws recorded, or selected on the GPU (counter " +
+                                          std::string(pass) + "_draws)",
+                                double(draws)});
     count("local_lights", plan_.localLights);
     count("lights_skipped", plan_.lightsSkipped);
     count("base_pass_directional_lights", double(plan_.baseDirectional.size()));

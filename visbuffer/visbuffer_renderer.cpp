@@ -394,6 +394,7 @@ RendererStats VisbufferRenderer::stats() const {
                            false, "lights_per_tile_mean, per pixel with geometry"});
     addTiledWork(s, {"tiled_lighting", t.lights, t.edges, t.meanLights(),
                      double(lighting_.candidates()), samples});
+    lighting_.addBinningWork(s);
     s.opWork.push_back(textureWork());
     return s;
 }

@@ -33,6 +33,12 @@ const char* opName(PassOpWork::Kind k) {
         return "light_tile_tests";
     case PassOpWork::Kind::Triangles:
         return "triangles_rasterized";
+    case PassOpWork::Kind::BytesRead:
+        return "untracked_bytes_read"; // beside bytes_read, which includes them
+    case PassOpWork::Kind::BytesWritten:
+        return "untracked_bytes_written";
+    case PassOpWork::Kind::Draws:
+        return "draws";
     }
     return "ops";
 }

@@ -62,6 +62,19 @@ Bench raster(const char* name, const char* unit, const char* what, bool quick, B
     return b;
 }
 
+// `draws` draw commands of one full-screen triangle each, culled: what a draw costs before any
+// primitive is set up (the command processor and the draw's state), per draw.
+Bench drawCalls(const char* name, const char* what, bool quick) {
+    BenchDraw draw{.color = kHdrTarget, .cullAll = true};
+    draw.indirectDraws = quick ? 1024u : 65536u;
+    Bench b{name, TP_CAL_FRAGMENT_FLAT, "Gdraw/s", what, true, draw};
+    b.draw.size = targetSize(quick);
+    b.push = {0u, 1u, 0u, 0u};
+    b.work = double(draw.indirectDraws);
+    b.scalable = false; // sized by its draw count
+    return b;
+}
+
 std::vector<Bench> memoryBenches(uint64_t bytes, bool quick) {
     const uint32_t elements = uint32_t(bytes / 16);
     const uint32_t cacheWindow = std::min<uint32_t>(65536u, elements); // vec4: 1 MiB
@@ -165,6 +178,11 @@ std::vector<Bench> rasterBenches(bool quick) {
         raster("tri_culled", "Gtri/s",
                "tri_small's grid, indexed (shared vertices), every triangle culled: no pixel",
                quick, culled, kSmallCell),
+        // The fastest a draw can go: every draw a pass issues is placed against it (multipass
+        // forward's, a draw per light and mesh).
+        drawCalls("draw_culled",
+                  "indirect draws of one full-screen triangle each, culled, in one multi-draw call",
+                  quick),
     };
 }
 

@@ -91,6 +91,12 @@ struct Placer {
         return {"triangles", "tri_culled", ms(double(w.counts.inputPrimitives), rate("tri_culled"))};
     }
 
+    // Every draw command at the rate of indirect draws whose one triangle is culled: the least a
+    // draw costs the command processor (a direct draw, or one that rasterizes, costs more).
+    LimitTime draws(const PassWork& w) const {
+        return {"draws", "draw_culled", ms(w.opCount(PassOpWork::Kind::Draws), rate("draw_culled"))};
+    }
+
     PassEfficiency place(const PassWork& w, double measuredMs) const {
         PassEfficiency e{w.pass, measuredMs};
         // Transfers and clears are not placed: no ceiling measures vkCmdFillBuffer (lavapipe's is
@@ -101,6 +107,7 @@ struct Placer {
         if (w.counted && w.stage == PassStage::Graphics && w.rasterPixels > 0) e.limits.push_back(raster(w));
         if (w.counted && w.counts.inputPrimitives > 0) e.limits.push_back(triangles(w));
         if (w.opCount(PassOpWork::Kind::TextureFetches) > 0) e.limits.push_back(texture(w));
+        if (w.opCount(PassOpWork::Kind::Draws) > 0) e.limits.push_back(draws(w));
         if (w.opCount(PassOpWork::Kind::GlobalAtomics) +
                 w.opCount(PassOpWork::Kind::SharedAtomics) >
             0)

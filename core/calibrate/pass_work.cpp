@@ -96,6 +96,8 @@ void addOpWork(PassWork& w, const PassWorkInput& in) {
         it->count += items * o.perItem;
         it->exact = it->exact && o.exact;
         joinHow(it->how, o.how);
+        if (o.kind == PassOpWork::Kind::BytesRead) w.bytesRead += items * o.perItem;
+        if (o.kind == PassOpWork::Kind::BytesWritten) w.bytesWritten += items * o.perItem;
     }
 }
 

@@ -121,7 +121,12 @@ void recordDraw(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pipeli
     setViewportAndScissor(cmd, b.draw.size, b.draw.size);
     vkCmdSetCullMode(cmd, b.draw.cullAll ? VK_CULL_MODE_FRONT_AND_BACK : VK_CULL_MODE_NONE);
     vkCmdPushConstants(cmd, rig.layout, kPushStages, 0, sizeof(CalPush), &b.push);
-    if (b.indexed()) {
+    if (b.draw.indirectDraws > 0 && rig.ctx.caps.drawIndirectCount) { // multiDrawIndirect with it
+        vkCmdDrawIndirect(cmd, t.indirect.buffer, 0, b.draw.indirectDraws, sizeof(VkDrawIndirectCommand));
+    } else if (b.draw.indirectDraws > 0) {
+        for (uint32_t i = 0; i < b.draw.indirectDraws; ++i)
+            vkCmdDrawIndirect(cmd, t.indirect.buffer, i * sizeof(VkDrawIndirectCommand), 1, 0);
+    } else if (b.indexed()) {
         vkCmdBindIndexBuffer(cmd, t.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cmd, b.vertexCount(), b.instanceCount(), 0, 0, 0);
     } else {
@@ -182,6 +187,13 @@ Targets createTargets(GpuContext& ctx, const Bench& b) {
         t.depth = createImage(ctx, {VK_FORMAT_D32_SFLOAT, d.size, d.size, 1, d.samples,
                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT},
                               {"calibrate", "calibrate", "depth", "the raster ceilings' depth attachment"});
+    if (d.indirectDraws > 0) {
+        const std::vector<VkDrawIndirectCommand> commands(d.indirectDraws, {3u, 1u, 0u, 0u});
+        t.indirect = createBufferWithData(
+            ctx, commands.data(), commands.size() * sizeof(VkDrawIndirectCommand),
+            VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+            {"calibrate", "calibrate", "draw_commands", "draw_culled's indirect draws"});
+    }
     if (b.indexed()) {
         const std::vector<uint32_t> indices = gridIndices(b.push.stride);
         t.indices = createBufferWithData(

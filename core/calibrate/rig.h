@@ -34,6 +34,7 @@ struct Targets {
     std::vector<Image> colors; // the draw's colour attachments, in order
     Image depth;
     Buffer indices;
+    Buffer indirect; // indirectDraws' commands
 };
 Targets createTargets(GpuContext& ctx, const Bench& b);
 

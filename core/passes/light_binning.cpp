@@ -380,4 +380,22 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
 }
 
+void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals) {
+    using Kind = PassOpWork::Kind;
+    using Base = PassLightWork::Base;
+    const double pairs = double(slots), lights = double(locals);
+    s.opWork.push_back({"light_binning", Kind::BytesRead, Base::Items,
+                        double(sizeof(gpu::LightGpu) + 4), true,
+                        "each light and its index read once", lights});
+    s.opWork.push_back({"light_bin_fill", Kind::GlobalAtomics, Base::Items, 1.0, true,
+                        "one atomicAdd per (light, tile) pair: its slot in the tile's run", pairs});
+    s.opWork.push_back({"light_bin_fill", Kind::BytesWritten, Base::Items, 4.0, true,
+                        "each pair's light index into its run", pairs});
+    s.opWork.push_back({"light_bin_fill", Kind::BytesRead, Base::Items, 4.0, true,
+                        "each light's index", lights});
+    for (Kind k : {Kind::BytesRead, Kind::BytesWritten})
+        s.opWork.push_back({"light_bin_sort", k, Base::Items, 4.0, false,
+                            "every run once (at least: a long run by steps)", pairs});
+}
+
 } // namespace tp::la

@@ -38,6 +38,7 @@
 #include "core/gpu/resources.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/tile_grid.h"
+#include "core/renderer/renderer.h"
 
 namespace tp {
 class GpuContext;
@@ -68,6 +69,8 @@ class GpuBinning {
     // A new view followed without sizes(): the slab planes again where the projection moved
     // (an upload only then). The frame bins the view itself.
     void followView() { uploadInputs(); }
+    // The point and spot lights it bins.
+    uint32_t locals() const { return locals_; }
     // The longest run the frame is recorded for (the sort's steps, the consumers' batches):
     // the first sizes()'s maxBound, with kRunHeadroom under many views, at most every local
     // light. A longer run is an overflow (overflowed()).
@@ -139,5 +142,15 @@ class GpuBinning {
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     std::vector<VkPipeline> pipelines_; // one per step (kSteps in light_binning.cpp)
 };
+
+// The binning passes' counted work (docs/efficiency.md, "Placing a pass: what is counted") for
+// a frame that binned `locals` lights into `slots` (light, tile) pairs: light_binning reads each
+// light; light_bin_fill makes one returning atomicAdd per pair (its slot in the tile's run)
+// and writes the pair's light index; light_bin_sort reads and writes every run once (at least:
+// a run longer than shared memory is passed over a step at a time). The runs and the lights
+// live outside the frame graph, so their bytes are added here. The corners' atomics of
+// light_binning (one to four per light that covers a tile) and the sort's compare network are
+// not counted: no count of the first is kept, no ceiling measures the second.
+void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals);
 
 } // namespace tp::la

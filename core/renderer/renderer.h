@@ -89,8 +89,11 @@ struct PassLightWork {
 // Counted as lower bounds: what the pass cannot avoid doing (exact = the count itself is exact).
 struct PassOpWork {
     // Triangles: set up and rasterized in a compute pass (the visibility buffer's compute
-    // rasterizer).
-    enum class Kind { TextureFetches, GlobalAtomics, SharedAtomics, TileTests, Triangles };
+    // rasterizer). BytesRead, BytesWritten: buffer bytes a pass moves outside the frame graph's
+    // declared uses (the GPU binning's runs, in its consumer's buffer), added to its memory work.
+    // Draws: draw commands a graphics pass issues (direct, or each of an indirect call's).
+    enum class Kind { TextureFetches, GlobalAtomics, SharedAtomics, TileTests, Triangles, BytesRead,
+                      BytesWritten, Draws };
     std::string pass;
     Kind kind = Kind::TextureFetches;
     PassLightWork::Base base = PassLightWork::Base::Fragments;

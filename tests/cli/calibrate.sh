@@ -31,7 +31,7 @@ f = json.load(open(sys.argv[1]))
 names = ["dram_read", "dram_write", "dram_copy", "cache_read", "fp32_fma", "shared_atomic", "global_atomic",
          "texture_fetch", "image_read", "image_read_msaa4", "light_point", "light_spot", "fragment_fma", "fragment_texture_fetch",
          "fragment_light_point", "fragment_light_spot", "raster_depth", "rop_colour", "rop_blend",
-         "raster_msaa4", "rop_colour_msaa4", "raster_depth_msaa4", "rop_gbuffer", "rop_gbuffer_msaa4", "tri_small", "tri_large", "tri_culled"]
+         "raster_msaa4", "rop_colour_msaa4", "raster_depth_msaa4", "rop_gbuffer", "rop_gbuffer_msaa4", "tri_small", "tri_large", "tri_culled", "draw_culled"]
 if f.get("schema") != "triptych.calibration/1": print("schema", f.get("schema")); sys.exit()
 if [c["name"] for c in f["ceilings"]] != names: print("ceilings", [c["name"] for c in f["ceilings"]]); sys.exit()
 for c in f["ceilings"]:

@@ -11,6 +11,7 @@
 #include "core/calibrate/material_fetches.h"
 #include "core/calibrate/pass_work.h"
 #include "core/calibrate/tiled_work.h"
+#include "core/passes/light_binning.h"
 #include "multipass_forward/mp_settings.h"
 
 namespace tp {
@@ -202,6 +203,58 @@ TEST(Efficiency, AnImageIsReadAtTheFasterOfTheStreamAndImageRead) {
         placeFrame({w}, {{"frame", 1}, {"light_culling", 1}}, rates, 0).passes[0].limits[0];
     EXPECT_EQ(m.limit, "memory");
     EXPECT_NEAR(m.ms, 1'000'000 / 4e9 * 1e3 + 1000 / 1e9 * 1e3, 1e-12);
+}
+
+// The GPU binning's passes were placed at 0.0 % of memory on the H200: their runs, the lights
+// and the fill's atomics are outside the frame graph's uses, so nothing was counted. Now the
+// fill counts an atomic and a 4-byte store per (light, tile) pair, the sort reads and writes
+// every run, the binning reads every light: the fill is placed against global_atomic.
+TEST(Efficiency, TheGpuBinningsAtomicsAndRunsAreCounted) {
+    OnePass p;
+    ResourceHandle counts = p.decl.addResource("light_bin_counts", false);
+    p.samples = {1};
+    for (const char* pass : {"light_binning", "light_bin_fill", "light_bin_sort"})
+        p.decl.addPass(pass, {{counts, Use::StorageWrite}});
+    RendererStats stats;
+    la::addBinningWork(stats, 3'000'000, 65'536);
+    PassWorkInput in = p.input({}, stats);
+    in.livePasses = {0, 1, 2};
+    in.resourceBytes = [](uint32_t) { return uint64_t(1000); };
+    const std::vector<PassWork> w = countPassWork(in);
+    ASSERT_EQ(w.size(), 3u);
+    EXPECT_EQ(w[0].bytesRead, 65'536.0 * (sizeof(gpu::LightGpu) + 4));
+    EXPECT_EQ(w[1].opCount(PassOpWork::Kind::GlobalAtomics), 3'000'000.0);
+    EXPECT_EQ(w[1].bytesWritten, 1000 + 3'000'000.0 * 4);
+    EXPECT_EQ(w[2].bytesRead, 3'000'000.0 * 4);
+    EXPECT_EQ(w[2].bytesWritten, 1000 + 3'000'000.0 * 4);
+    const CeilingRates rates = {{"dram_read", 4.5e12}, {"dram_write", 4.2e12}, {"global_atomic", 1e11}};
+    const FrameEfficiency f = placeFrame(
+        w, {{"frame", 1}, {"light_binning", 0.05}, {"light_bin_fill", 0.1}, {"light_bin_sort", 0.2}},
+        rates, 0);
+    EXPECT_EQ(f.passes[1].bound.limit, "atomics");
+    EXPECT_NEAR(f.passes[1].bound.ms, 3e6 / 1e11 * 1e3, 1e-9);
+    EXPECT_EQ(f.passes[2].bound.limit, "memory");
+    EXPECT_GT(f.passes[2].bound.ms, 0.002); // 24 MB at 4.2-4.5 TB/s
+    EXPECT_EQ(cli::passWorkJson(w)[1]["untracked_bytes_written"], 12'000'000.0);
+}
+
+// Multipass forward's blended pass on the H200 took 28.8 ms with no light and no texture: its
+// draws, a draw per light and blended mesh, which nothing counted. A pass's draws are placed
+// against draw_culled (indirect draws of a culled triangle: the least a draw costs).
+TEST(Efficiency, DrawsArePlacedAgainstTheDrawCeiling) {
+    const OnePass p = colourPass("blended", 1);
+    RendererStats stats;
+    stats.opWork.push_back({"blended", PassOpWork::Kind::Draws, PassLightWork::Base::Items, 1.0,
+                            true, "the draws recorded", 20'000});
+    const PassWork w = countPassWork(p.input({{"blended", {60'000, 60'000, 1000, 1000}}}, stats))[0];
+    EXPECT_EQ(w.opCount(PassOpWork::Kind::Draws), 20'000.0);
+    const CeilingRates rates = {{"rop_colour", 6.6e9}, {"tri_culled", 5e9}, {"draw_culled", 1e6},
+                                {"dram_read", 1e15},   {"dram_write", 1e15}};
+    const FrameEfficiency f = placeFrame({w}, {{"frame", 40}, {"blended", 30}}, rates, 0);
+    EXPECT_EQ(f.passes[0].bound.limit, "draws");
+    EXPECT_EQ(f.passes[0].bound.ceiling, "draw_culled");
+    EXPECT_NEAR(f.passes[0].bound.ms, 20.0, 1e-9); // 20,000 draws at a million a second
+    EXPECT_EQ(cli::passWorkJson({w})[0]["draws"], 20'000.0);
 }
 
 // Deferred's G-buffer writes three or four targets a fragment; placed against rop_colour (one
