@@ -146,6 +146,8 @@ class VisbufferRenderer final : public Renderer {
         if (hasBlended_) graph.exportResource("blended_bounds", bounds);
         if (blendInCompute_) graph.exportResource("blended_list_counters", lists_.counters);
         if (vis_.debug) graph.exportResource("debug_edge_rm", lt_.debug);
+        // --debug: each pixel's blended list (read by the tests beside the edge mask).
+        if (vis_.debug && blendInCompute_) graph.exportResource("blended_heads", lists_.heads);
         if (vis_.debug && samples == 1) graph.exportResource("visibility_ids", ids_.ids);
     }
 

@@ -25,8 +25,8 @@ struct BenchDraw {
     bool layered = false; // push.iterations are instances (layers), not loop steps
     bool cullAll = false; // every triangle culled (front and back): setup without raster
     uint32_t size = 0;    // the square target's edge in pixels
-    // > 0: that many draws of one triangle, from an indirect buffer in one call where the device
-    // has multiDrawIndirect (else a call each), instead of `iterations` instances.
+    // > 0: that many draws of one triangle from an indirect buffer, as few calls as the device's
+    // multi-draw indirect allows (a call each without it), instead of `iterations` instances.
     uint32_t indirectDraws = 0;
 };
 

@@ -1,5 +1,7 @@
 #include "core/calibrate/rig.h"
 
+#include <algorithm>
+
 #include "core/gpu/barriers.h"
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -121,11 +123,16 @@ void recordDraw(VkCommandBuffer cmd, Rig& rig, const Bench& b, VkPipeline pipeli
     setViewportAndScissor(cmd, b.draw.size, b.draw.size);
     vkCmdSetCullMode(cmd, b.draw.cullAll ? VK_CULL_MODE_FRONT_AND_BACK : VK_CULL_MODE_NONE);
     vkCmdPushConstants(cmd, rig.layout, kPushStages, 0, sizeof(CalPush), &b.push);
-    if (b.draw.indirectDraws > 0 && rig.ctx.caps.drawIndirectCount) { // multiDrawIndirect with it
-        vkCmdDrawIndirect(cmd, t.indirect.buffer, 0, b.draw.indirectDraws, sizeof(VkDrawIndirectCommand));
-    } else if (b.draw.indirectDraws > 0) {
-        for (uint32_t i = 0; i < b.draw.indirectDraws; ++i)
-            vkCmdDrawIndirect(cmd, t.indirect.buffer, i * sizeof(VkDrawIndirectCommand), 1, 0);
+    if (b.draw.indirectDraws > 0) {
+        // The context enables multiDrawIndirect with drawIndirectCount (context.cpp); without it a
+        // call draws one. At most maxDrawIndirectCount a call (65,535 at the least).
+        const uint32_t perCall = rig.ctx.caps.drawIndirectCount
+                                     ? std::max(rig.ctx.properties.limits.maxDrawIndirectCount, 1u)
+                                     : 1u;
+        for (uint32_t first = 0; first < b.draw.indirectDraws; first += perCall)
+            vkCmdDrawIndirect(cmd, t.indirect.buffer, first * sizeof(VkDrawIndirectCommand),
+                              std::min(perCall, b.draw.indirectDraws - first),
+                              sizeof(VkDrawIndirectCommand));
     } else if (b.indexed()) {
         vkCmdBindIndexBuffer(cmd, t.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cmd, b.vertexCount(), b.instanceCount(), 0, 0, 0);

@@ -384,15 +384,16 @@ void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals) {
     using Kind = PassOpWork::Kind;
     using Base = PassLightWork::Base;
     const double pairs = double(slots), lights = double(locals);
-    s.opWork.push_back({"light_binning", Kind::BytesRead, Base::Items,
-                        double(sizeof(gpu::LightGpu) + 4), true,
-                        "each light and its index read once", lights});
+    // binRect reads a light's index and its position and range (bin_common.glsl), 20 bytes.
+    s.opWork.push_back({"light_binning", Kind::BytesRead, Base::Items, 20.0, false,
+                        "each light's index, position and range, once (at least)", lights});
     s.opWork.push_back({"light_bin_fill", Kind::GlobalAtomics, Base::Items, 1.0, true,
                         "one atomicAdd per (light, tile) pair: its slot in the tile's run", pairs});
     s.opWork.push_back({"light_bin_fill", Kind::BytesWritten, Base::Items, 4.0, true,
                         "each pair's light index into its run", pairs});
-    s.opWork.push_back({"light_bin_fill", Kind::BytesRead, Base::Items, 4.0, true,
-                        "each light's index", lights});
+    s.opWork.push_back({"light_bin_fill", Kind::BytesRead, Base::Items, 4.0, false,
+                        "each light's index (at least: once per workgroup and dispatch that shares it)",
+                        lights});
     for (Kind k : {Kind::BytesRead, Kind::BytesWritten})
         s.opWork.push_back({"light_bin_sort", k, Base::Items, 4.0, false,
                             "every run once (at least: a long run by steps)", pairs});

@@ -145,7 +145,7 @@ class GpuBinning {
 
 // The binning passes' counted work (docs/efficiency.md, "Placing a pass: what is counted") for
 // a frame that binned `locals` lights into `slots` (light, tile) pairs: light_binning reads each
-// light; light_bin_fill makes one returning atomicAdd per pair (its slot in the tile's run)
+// light's index, position and range; light_bin_fill makes one returning atomicAdd per pair (its slot in the tile's run)
 // and writes the pair's light index; light_bin_sort reads and writes every run once (at least:
 // a run longer than shared memory is passed over a step at a time). The runs and the lights
 // live outside the frame graph, so their bytes are added here. The corners' atomics of

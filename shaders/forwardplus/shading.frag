@@ -8,7 +8,7 @@
 #include "include/shared.h"
 #include "forwardplus/forwardplus_shared.h"
 #include "include/scene_bindings.glsl"
-// One pipeline per material's texture indices (forwardplus/forward_shading.cpp).
+// One pipeline per material's texture indices (core/passes/material_pipelines.h).
 #define TP_MATERIAL_SPEC_TEXTURES 1
 #include "include/material.glsl"
 

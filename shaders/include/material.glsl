@@ -29,7 +29,8 @@ vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
 }
 
 // TP_MATERIAL_SPEC_TEXTURES: the five texture indices are specialization constants, one
-// pipeline per material (Forward+'s shading, forwardplus/forward_shading.cpp). lavapipe runs
+// pipeline per material (core/passes/material_pipelines.h: Forward+'s shading and the blended
+// forward pass). lavapipe runs
 // both sides of every branch, so sampleTexture()'s guard does not skip the sample of an absent
 // texture, and it takes a dynamic index through a per-lane loop and a switch over the whole
 // array; compiled in, an absent texture costs nothing and a present one is a static sample

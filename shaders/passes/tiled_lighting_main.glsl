@@ -211,8 +211,8 @@ void shadeEdges(uvec2 tile) {
 // Round 0 shades the tile's pixels that are not edges and lists the edges, which are shaded
 // after the rest: flattened (shadeEdges), or one pixel an invocation (shadeEdgePixel) where
 // edgeComposites says so: the visibility buffer's --vis-blended compute, for the edges whose
-// pixel has blended fragments to composite on a GPU and for every edge on a CPU device
-// (vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES). Flattened, a composite (one invocation a pixel, after
+// pixel has blended fragments to composite with --vis-edges split (auto on a GPU) and for every
+// edge with pixel (auto on a CPU device; vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES). Flattened, a composite (one invocation a pixel, after
 // the slots) ran a round at a time and took the H200's 1080p 4x resolve from 1.66 to 2.00 ms,
 // while an edge with nothing to composite is 8 of 9 there; on lavapipe flattening those 8 took
 // the 4x resolve from 1,607 to 1,976 ms. At --msaa-shading sample every pixel with geometry is
@@ -240,15 +240,14 @@ void shadeTile(uvec2 tile) {
         vec2 rm = debugRoughMetal(p);
         if (shaded && firstBatch()) imageStore(debugOut, p, vec4(edge ? 1.0 : 0.0, rm, 1.0));
 #endif
-        if (edge) {
+        if (edge && listEdges) { // one atomic an edge: sEdges is their sum (below)
+            uvec2 local = uvec2(p) - tile * kTileSize;
+            const uint e = edgeComposites(p) ? kEdgeWords - 1u - atomicAdd(sCompositeEdges, 1u)
+                                             : atomicAdd(sFlatEdges, 1u);
+            sEdgePixels[e] = local.y * kTileSize + local.x;
+            shaded = false; // after the rest
+        } else if (edge) {
             atomicAdd(sEdges, 1u);
-            if (listEdges) {
-                uvec2 local = uvec2(p) - tile * kTileSize;
-                const uint e = edgeComposites(p) ? kEdgeWords - 1u - atomicAdd(sCompositeEdges, 1u)
-                                                 : atomicAdd(sFlatEdges, 1u);
-                sEdgePixels[e] = local.y * kTileSize + local.x;
-                shaded = false; // after the rest
-            }
         }
         if (!shaded) continue;
         // A listed edge never reaches here: the edge call folds away with listEdges.
@@ -256,6 +255,8 @@ void shadeTile(uvec2 tile) {
         else shadePixel(p);
     }
     barrier(); // round 0's lists complete (their counts are uniform after it)
+    // The statistics' edge count, read after the pass's last barrier (main: writeTileStats).
+    if (listEdges && gl_LocalInvocationIndex == 0u) sEdges = sFlatEdges + sCompositeEdges;
     if (listEdges) {
         const uint rounds = (sCompositeEdges + groupSize - 1u) / groupSize;
         for (uint k = 0u; k < rounds; ++k) {

@@ -81,8 +81,9 @@ void finishPixel(ivec2 p, inout vec3 c[8], bool oneSurface) {
 void finishEdge(ivec2 p, vec3 c[8]) { finishPixel(p, c, false); }
 
 // Whether edge p is shaded by one invocation (shadeEdgePixel), not flattened
-// (tiled_lighting_main.glsl): with --vis-blended compute, every edge on a CPU device, and on a
-// GPU those with blended fragments to composite (vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES).
+// (tiled_lighting_main.glsl): with --vis-blended compute, every edge under --vis-edges pixel,
+// and under split only those with blended fragments to composite (vis_shared.h:
+// TP_VIS_SPEC_SPLIT_EDGES).
 #ifdef TP_VIS_BLEND
 layout(constant_id = TP_VIS_SPEC_SPLIT_EDGES) const bool kSplitEdges = false;
 bool edgeComposites(ivec2 p) { return !kSplitEdges || blendHead(p) != 0u; }

@@ -61,9 +61,10 @@ TP_STRUCT(VisDraw) {
 // 1: the visibility pass leaves the ids of samples it does not write as they were (no clear:
 // visibility_pass.h), so the resolve takes a sample's id only where its depth holds geometry.
 #define TP_VIS_SPEC_IDS_BY_DEPTH 34
-// 1 (a GPU): under MSAA at pixel rate with the blended fragments composited in compute, only the
-// edges whose pixel has a blended list are lit one invocation a pixel, the others flattened (a
-// surface an invocation); 0 (a CPU device, where the flattened rounds cost more than the lanes
+// --vis-edges (vis_settings.h: resolveEdges; auto is 1 on a GPU, 0 on a CPU device). 1 (split):
+// under MSAA at pixel rate with the blended fragments composited in compute, only the edges
+// whose pixel has a blended list are lit one invocation a pixel, the others flattened (a
+// surface an invocation); 0 (pixel; on lavapipe the flattened rounds cost more than the lanes
 // they fill): every edge one invocation a pixel (tiled_lighting_main.glsl: shadeTile).
 #define TP_VIS_SPEC_SPLIT_EDGES 37
 

@@ -222,7 +222,7 @@ TEST(Efficiency, TheGpuBinningsAtomicsAndRunsAreCounted) {
     in.resourceBytes = [](uint32_t) { return uint64_t(1000); };
     const std::vector<PassWork> w = countPassWork(in);
     ASSERT_EQ(w.size(), 3u);
-    EXPECT_EQ(w[0].bytesRead, 65'536.0 * (sizeof(gpu::LightGpu) + 4));
+    EXPECT_EQ(w[0].bytesRead, 65'536.0 * 20); // each light's index, position and range
     EXPECT_EQ(w[1].opCount(PassOpWork::Kind::GlobalAtomics), 3'000'000.0);
     EXPECT_EQ(w[1].bytesWritten, 1000 + 3'000'000.0 * 4);
     EXPECT_EQ(w[2].bytesRead, 3'000'000.0 * 4);
