@@ -62,8 +62,9 @@ const ChoiceKnob<Edges>& edgesKnob() {
     return k;
 }
 
-bool resolveEdges(const GpuContext& ctx, Edges e) {
-    return e == Edges::Split || (e == Edges::Auto && !ctx.isCpuDevice());
+Edges resolveEdges(const GpuContext& ctx, Edges e) {
+    if (e != Edges::Auto) return e;
+    return ctx.isCpuDevice() ? Edges::Pixel : Edges::Split;
 }
 
 Raster resolveRaster(const GpuContext& ctx, const Settings& s) {

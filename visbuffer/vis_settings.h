@@ -49,8 +49,8 @@ const ChoiceKnob<Raster>& rasterKnob();
 // nothing to composite, flattened"). The same image whichever.
 enum class Edges { Auto, Pixel, Split };
 const ChoiceKnob<Edges>& edgesKnob();
-// Whether the resolve splits its edges on `ctx` (TP_VIS_SPEC_SPLIT_EDGES).
-bool resolveEdges(const GpuContext& ctx, Edges e);
+// --vis-edges auto resolved on `ctx` (Pixel or Split; the others stay).
+Edges resolveEdges(const GpuContext& ctx, Edges e);
 
 // --vis-blended-capacity: the fragment pool in percent of the pixel count, 0: the derived
 // bound (fragment_bound.h).
@@ -83,6 +83,7 @@ struct Settings {
     CullGeometry cullGeometry = CullGeometry::None; // --cull-geometry: the visibility pass
     Raster raster = Raster::Auto;                   // --vis-raster (resolveRaster)
     Edges edges = Edges::Auto;                      // --vis-edges (resolveEdges)
+    bool splitEdges() const { return edges == Edges::Split; } // after resolveEdges
     ShadowRaster shadowRaster = ShadowRaster::Hardware; // --shadow-raster: the atlas's faces
     // Many views: the blended fragments an earlier plan of this session overflowed with, times
     // two (RenderSettings::capacities[kSeenFragments]; Renderer contract step 7).

@@ -30,11 +30,13 @@ bool hasBlendedDraws(const SceneFeatures& features, const SceneGpu& scene) {
     return features.blended && scene.hasDraws(DrawFilter::Blend);
 }
 
-// The settings with their device-dependent defaults resolved: --light-cull and --vis-raster.
+// The settings with their device-dependent defaults resolved: --light-cull, --vis-raster and
+// --vis-edges.
 vis::Settings resolvedSettings(const RendererCreateInfo& info) {
     vis::Settings s = la::withResolvedCull(vis::readSettings(info.settings), info.ctx,
                                            info.scene.lightsGpu().size(), true);
     s.raster = vis::resolveRaster(info.ctx, s);
+    s.edges = vis::resolveEdges(info.ctx, s.edges);
     return s;
 }
 
@@ -255,7 +257,7 @@ class VisbufferRenderer final : public Renderer {
                        {TP_VIS_SPEC_DERIVATIVES, derivativesMode()},
                        {TP_VIS_SPEC_ONE_TEXTURE_WALK, oneTextureWalk() ? 1u : 0u},
                        {TP_VIS_SPEC_IDS_BY_DEPTH, visibility_.idsByDepth() ? 1u : 0u},
-                       {TP_VIS_SPEC_SPLIT_EDGES, vis::resolveEdges(ctx_, vis_.edges) ? 1u : 0u}};
+                       {TP_VIS_SPEC_SPLIT_EDGES, vis_.splitEdges() ? 1u : 0u}};
         s.buffers = {{TP_VIS_BINDING_INDICES, scene_.indexBuffer()},
                      {TP_VIS_BINDING_DRAWS, drawBuffer_.buffer}};
         if (blendInCompute_) {
@@ -349,7 +351,7 @@ RendererStats VisbufferRenderer::stats() const {
     // --vis-edges, resolved: 1 where the resolve split its edges (only when it has them to split:
     // under MSAA at pixel rate with the blended fragments composited in compute).
     if (samples > 1 && !vis_.sampling.perSample() && blendInCompute_)
-        s.counters.push_back({"vis_edges_split", vis::resolveEdges(ctx_, vis_.edges) ? 1.0 : 0.0});
+        s.counters.push_back({"vis_edges_split", vis_.splitEdges() ? 1.0 : 0.0});
     s.counters.push_back({"visibility_draws", double(table_.opaque.size() + table_.masked.size())});
     s.counters.push_back({"visibility_triangle_bits", double(table_.triangleBits)});
     if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled

@@ -212,8 +212,8 @@ void shadeEdges(uvec2 tile) {
 // after the rest: flattened (shadeEdges), or one pixel an invocation (shadeEdgePixel) where
 // edgeComposites says so: the visibility buffer's --vis-blended compute, for the edges whose
 // pixel has blended fragments to composite with --vis-edges split (auto on a GPU) and for every
-// edge with pixel (auto on a CPU device; vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES). Flattened, a composite (one invocation a pixel, after
-// the slots) ran a round at a time and took the H200's 1080p 4x resolve from 1.66 to 2.00 ms,
+// edge with pixel (auto on a CPU device; vis_shared.h: TP_VIS_SPEC_SPLIT_EDGES). Flattened, a
+// composite (one invocation a pixel, after the slots) ran a round at a time and took the H200's 1080p 4x resolve from 1.66 to 2.00 ms,
 // while an edge with nothing to composite is 8 of 9 there; on lavapipe flattening those 8 took
 // the 4x resolve from 1,607 to 1,976 ms. At --msaa-shading sample every pixel with geometry is
 // an edge: nothing to compact, shaded in place. The same shade of the same pixel whichever way:
