@@ -40,9 +40,12 @@ uint32_t sortSize(uint32_t n) {
 } // namespace
 
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-                       const std::vector<uint32_t>& local, std::string owner, bool manyViews)
+                       const std::vector<uint32_t>& local, std::string owner, bool manyViews,
+                       uint32_t sortBuckets)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
       owner_(std::move(owner)), manyViews_(manyViews) {
+    if (sortBuckets == 0 || (sortBuckets & (sortBuckets - 1)) != 0)
+        throw std::logic_error("GpuBinning: the sort's buckets must be a power of two");
     // Its largest buffer: the light list, bound whole.
     if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
@@ -72,6 +75,7 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                            : std::min({TP_BIN_SORT_GROUP_GPU, limits.maxComputeWorkGroupInvocations,
                                        limits.maxComputeWorkGroupSize[0]});
     spec.push_back({TP_BIN_SPEC_SORT_GROUP, sortGroup});
+    spec.push_back({TP_BIN_SPEC_SORT_BUCKETS, sortBuckets});
     try {
         for (const char* shader : kShaders)
             pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));

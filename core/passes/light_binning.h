@@ -39,6 +39,7 @@
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/renderer/renderer.h"
+#include "include/light_binning.h"
 
 namespace tp {
 class GpuContext;
@@ -55,9 +56,11 @@ class GpuBinning {
     // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
     // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
     // manyViews: the longest run the frame plans for (runBound) gets kRunHeadroom over the
-    // first view's.
+    // first view's. sortBuckets: the short runs' sort buckets (bin_sort.comp), a power of two;
+    // tests give few, to crowd them.
     GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
-               const std::vector<uint32_t>& local, std::string owner, bool manyViews = false);
+               const std::vector<uint32_t>& local, std::string owner, bool manyViews = false,
+               uint32_t sortBuckets = TP_BIN_SORT_BUCKETS);
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;

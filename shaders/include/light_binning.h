@@ -82,7 +82,16 @@ namespace tp::gpu {
 #define TP_BIN_SPEC_SORT_GROUP 12
 #define TP_BIN_SORT_GROUP_GPU 256u
 #define TP_BIN_SORT_GROUP_CPU 64u
-#define TP_BIN_RANK_SORT 256u      // runs up to this long: each light to its rank (one barrier)
+#define TP_BIN_RANK_SORT 128u      // runs up to this long: each light to its rank (one barrier)
+// Longer runs in shared memory by buckets over the range of every local light's index
+// (bin_sort.comp): how many (a power of two; a specialization constant, so that tests can
+// crowd them), and the most lights a bucket may hold before the run is sorted by the bitonic
+// network instead (each of a bucket's lights compares with all of them). H200, 1920x1080
+// (docs/clustered.md): 256 buckets and ranks up to 128 lights beat 64, 128 and 512 buckets and
+// ranks up to 64, 256 and 512.
+#define TP_BIN_SPEC_SORT_BUCKETS 13
+#define TP_BIN_SORT_BUCKETS 256u
+#define TP_BIN_BUCKET_MOST 64u
 #define TP_BIN_STEP_PAIRS 64u      // long-run step: pairs per invocation and dispatch
 // Tiles one fill dispatch may visit per light: lavapipe ends an invocation after 65,535
 // loop iterations in total (core/passes/tiled_lighting.h); the slab loops add tilesX + tilesY.

@@ -156,7 +156,7 @@ struct WordLayout {
 // layout goes to its own buffer, between two canaries.
 Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile,
            uint32_t frames = 2, uint32_t room = ~0u, bool manyViews = false,
-           const WordLayout& layout = {}) {
+           const WordLayout& layout = {}, uint32_t sortBuckets = TP_BIN_SORT_BUCKETS) {
     Binned out;
     scene.setView(w, h, 1);
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
@@ -168,7 +168,7 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
         if (!r.empty())
             out.largestRect =
                 std::max(out.largestRect, uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1));
-    la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews);
+    la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews, sortBuckets);
     out.sizes = gpuBin.sizes();
     const uint32_t base = 7; // the runs need not start at word 0
     if (room == ~0u) room = uint32_t(out.sizes.slots);
@@ -213,12 +213,12 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
 
 // Returns the tiles of the largest rectangle.
 uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile,
-                        uint32_t minLongest = 1) {
+                        uint32_t minLongest = 1, uint32_t sortBuckets = TP_BIN_SORT_BUCKETS) {
     auto ctx = makeValidatedContext();
     EXPECT_TRUE(ctx);
     if (!ctx) return 0;
     SceneGpu gpuScene(*ctx, scene);
-    Binned b = bin(*ctx, gpuScene, w, h, tile);
+    Binned b = bin(*ctx, gpuScene, w, h, tile, 2, ~0u, false, {}, sortBuckets);
     EXPECT_EQ(b.sizes.bound, b.cpu.bound);
     EXPECT_EQ(b.sizes.offsets, b.cpu.offsets);
     EXPECT_EQ(b.sizes.slots, b.cpu.slots);
@@ -269,9 +269,19 @@ TEST(GpuLightBinning, TallAndWideGridsScanInShares) {
 TEST(GpuLightBinning, LightsAroundAndBehindTheEye) {
     expectSameRuns(aroundTheEye(1024), 96, 64, 8);
 }
-// 1,000 lights in every tile: runs past the rank sort, bitonic in shared memory.
+// 1,000 lights in every tile: runs past the rank sort, by buckets in shared memory (four
+// lights a bucket: 256 over the range of 1,000 light indices).
 TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
     expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1);
+}
+// The same runs over 16 buckets: 64 lights a bucket (TP_BIN_BUCKET_MOST), each ranked among
+// its bucket's; over 8, 128 a bucket, too many: the bitonic network sorts the run instead.
+TEST(GpuLightBinning, WholeScreenRunsInFullBuckets) {
+    static_assert(1000 / 16 < TP_BIN_BUCKET_MOST + 1 && 1000 / 8 > TP_BIN_BUCKET_MOST);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 16);
+}
+TEST(GpuLightBinning, WholeScreenRunsInCrowdedBucketsSortedBitonic) {
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 8);
 }
 // 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
