@@ -293,7 +293,8 @@ class ForwardPlusRenderer final : public Renderer {
         if (r_.blendPass)
             s.opWork.push_back(materialFetchWork(scene_, "forward_transparent", {DrawFilter::Blend},
                                                  PassLightWork::Base::Fragments));
-        if (binning_) la::addBinningWork(s, bins_.slots, binning_->locals());
+        if (binning_)
+            la::addBinningWork(s, bins_.slots, binning_->locals(), binning_->cornerAtomics());
         fp::addLeftOut(s, r_, fp_, scene_, features_);
         return s;
     }

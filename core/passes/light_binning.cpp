@@ -214,7 +214,26 @@ LightBins GpuBinning::collect(FrameGraph& graph) {
         bins.maxBound = std::max(bins.maxBound, bins.bound[t]);
     }
     bins.slots = bins.offsets[tiles];
+    cornerAtomics_ = countCornerAtomics(readbackBuffer(ctx_, graph.buffer(rects_)));
     return bins;
+}
+
+// bin_rects.comp's atomics on the difference array: a light whose rectangle covers a tile adds
+// at its first tile and, where they fall inside the grid, at the tiles past its last column,
+// past its last row, and past both.
+uint64_t GpuBinning::countCornerAtomics(const std::vector<uint8_t>& rectBytes) const {
+    const uint32_t n = std::min<uint32_t>(locals_, uint32_t(rectBytes.size() / 8));
+    uint64_t atomics = 0;
+    for (uint32_t k = 0; k < n; ++k) {
+        uint32_t packed[2];
+        std::memcpy(packed, rectBytes.data() + size_t(k) * 8, 8);
+        const uint32_t x0 = packed[0] & 0xffffu, x1 = packed[0] >> 16, y0 = packed[1] & 0xffffu,
+                       y1 = packed[1] >> 16;
+        if (x0 > x1 || y0 > y1) continue; // no tile (binPackRect's empty rectangle)
+        const bool right = x1 + 1 < grid_.tilesX, below = y1 + 1 < grid_.tilesY;
+        atomics += 1 + uint64_t(right) + uint64_t(below) + uint64_t(right && below);
+    }
+    return atomics;
 }
 
 void GpuBinning::plan(FrameGraph& graph) {
@@ -257,6 +276,7 @@ void GpuBinning::plan(FrameGraph& graph) {
     // Read after the frame by the tests; also what keeps the passes live.
     graph.exportResource("light_bin_offsets", offsets_);
     graph.exportResource("light_bin_counts", counts_);
+    graph.exportResource("light_bin_rects", rects_); // collect() counts the corners' atomics
     // The view's needs, which overflowed() reads after every view's frames.
     graph.watchAfterFrame(offsets_, (uint64_t(tiles) + 1) * 4, TP_BIN_NEEDS * 4);
 }
@@ -384,13 +404,17 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
 }
 
-void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals) {
+void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals, uint64_t corners) {
     using Kind = PassOpWork::Kind;
     using Base = PassLightWork::Base;
     const double pairs = double(slots), lights = double(locals);
     // binRect reads a light's index and its position and range (bin_common.glsl), 20 bytes.
     s.opWork.push_back({"light_binning", Kind::BytesRead, Base::Items, 20.0, false,
                         "each light's index, position and range, once (at least)", lights});
+    s.opWork.push_back({"light_binning", Kind::GlobalAtomics, Base::Items, 1.0, true,
+                        "one to four atomicAdds per light that covers a tile: its rectangle's "
+                        "corners in the difference array",
+                        double(corners)});
     s.opWork.push_back({"light_bin_fill", Kind::GlobalAtomics, Base::Items, 1.0, true,
                         "one atomicAdd per (light, tile) pair: its slot in the tile's run", pairs});
     s.opWork.push_back({"light_bin_fill", Kind::BytesWritten, Base::Items, 4.0, true,

@@ -18,8 +18,9 @@
 //                TP_BIN_FILL_GROUPS_GPU workgroups on a GPU)
 //   light_bin_sort
 //     6. sort    every tile's run ascending: a workgroup per tile in shared memory (by rank up
-//                to 256, else bitonic); longer runs than shared memory holds by blocks
-//                (bitonic steps within a block in shared memory, across blocks a dispatch each)
+//                to 128 lights, else by buckets over the lights' index range, bitonic where a
+//                bucket is crowded); longer runs than shared memory holds by blocks (bitonic
+//                steps within a block in shared memory, across blocks a dispatch each)
 // The buffers need their sizes before the frame, so the pipeline calls sizes() at plan time:
 // steps 1-4 once, then readbacks of the counts and the offsets: the numbers the CPU path
 // gives. A renderer that follows a new view (Renderer::updateView) needs no readback: the
@@ -105,12 +106,15 @@ class GpuBinning {
     bool overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra = 0);
     // After a frame: its layout (bound, offsets, slots, maxBound) read back, for statistics.
     LightBins collect(FrameGraph& graph);
+    // The last collected frame's atomics on the difference array (bin_rects.comp's corners).
+    uint64_t cornerAtomics() const { return cornerAtomics_; }
 
   private:
     struct Bufs {
         VkBuffer counts, offsets, rows, rects;
     };
     void destroyPipelines(); // and the layout and pass set
+    uint64_t countCornerAtomics(const std::vector<uint8_t>& rectBytes) const;
     void bind(const Bufs& b, VkBuffer target);
     void uploadInputs(); // the grid and the slab planes of the current projection
     void recordSizing(VkCommandBuffer cmd, bool storeRects);
@@ -126,6 +130,7 @@ class GpuBinning {
     SceneGpu& scene_;
     TileGrid grid_;
     uint32_t locals_ = 0;
+    uint64_t cornerAtomics_ = 0;
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
     uint32_t offsetsWord_ = 0, room_ = 0; // prepare(): where the frame publishes its offsets
@@ -150,10 +155,10 @@ class GpuBinning {
 // a frame that binned `locals` lights into `slots` (light, tile) pairs: light_binning reads each
 // light's index, position and range; light_bin_fill makes one returning atomicAdd per pair (its slot in the tile's run)
 // and writes the pair's light index; light_bin_sort reads and writes every run once (at least:
-// a run longer than shared memory is passed over a step at a time). The runs and the lights
-// live outside the frame graph, so their bytes are added here. The corners' atomics of
-// light_binning (one to four per light that covers a tile) and the sort's compare network are
-// not counted: no count of the first is kept, no ceiling measures the second.
-void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals);
+// a run longer than shared memory is passed over a step at a time); light_binning's
+// `corners` atomics on the difference array (GpuBinning::cornerAtomics). The runs and the
+// lights live outside the frame graph, so their bytes are added here. The sort's compares
+// are not counted: no ceiling measures them.
+void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals, uint64_t corners);
 
 } // namespace tp::la

@@ -151,7 +151,7 @@ class TiledLighting {
     bool gpuBinning() const { return gpuBinning_; }
     // GPU binning: its passes' counted work for the last collected frame (la::addBinningWork).
     void addBinningWork(RendererStats& s) const {
-        if (binning_) la::addBinningWork(s, bins_.slots, binning_->locals());
+        if (binning_) la::addBinningWork(s, bins_.slots, binning_->locals(), binning_->cornerAtomics());
     }
     // GPU binning: plan-time sizing runs (readbacks) so far; views followed add none.
     uint32_t sizingRuns() const { return binning_ ? binning_->sizingRuns() : 0; }

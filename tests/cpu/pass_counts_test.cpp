@@ -208,7 +208,8 @@ TEST(Efficiency, AnImageIsReadAtTheFasterOfTheStreamAndImageRead) {
 // The GPU binning's passes were placed at 0.0 % of memory on the H200: their runs, the lights
 // and the fill's atomics are outside the frame graph's uses, so nothing was counted. Now the
 // fill counts an atomic and a 4-byte store per (light, tile) pair, the sort reads and writes
-// every run, the binning reads every light: the fill is placed against global_atomic.
+// every run, the binning reads every light and makes its corners' atomics: the fill is placed
+// against global_atomic.
 TEST(Efficiency, TheGpuBinningsAtomicsAndRunsAreCounted) {
     OnePass p;
     ResourceHandle counts = p.decl.addResource("light_bin_counts", false);
@@ -216,13 +217,14 @@ TEST(Efficiency, TheGpuBinningsAtomicsAndRunsAreCounted) {
     for (const char* pass : {"light_binning", "light_bin_fill", "light_bin_sort"})
         p.decl.addPass(pass, {{counts, Use::StorageWrite}});
     RendererStats stats;
-    la::addBinningWork(stats, 3'000'000, 65'536);
+    la::addBinningWork(stats, 3'000'000, 65'536, 200'000);
     PassWorkInput in = p.input({}, stats);
     in.livePasses = {0, 1, 2};
     in.resourceBytes = [](uint32_t) { return uint64_t(1000); };
     const std::vector<PassWork> w = countPassWork(in);
     ASSERT_EQ(w.size(), 3u);
     EXPECT_EQ(w[0].bytesRead, 65'536.0 * 20); // each light's index, position and range
+    EXPECT_EQ(w[0].opCount(PassOpWork::Kind::GlobalAtomics), 200'000.0); // the corners
     EXPECT_EQ(w[1].opCount(PassOpWork::Kind::GlobalAtomics), 3'000'000.0);
     EXPECT_EQ(w[1].bytesWritten, 1000 + 3'000'000.0 * 4);
     EXPECT_EQ(w[2].bytesRead, 3'000'000.0 * 4);

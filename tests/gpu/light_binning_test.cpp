@@ -138,6 +138,7 @@ struct Binned {
     uint32_t wordCanaries[2] = {};       // the words buffer's words before and after the layout
     bool overflowed = false;             // GpuBinning::overflowed after the frames
     uint32_t largestRect = 0;            // tiles of the largest rectangle, on the CPU
+    uint64_t corners = 0, cpuCorners = 0; // difference-array atomics: counted, and on the CPU
 };
 
 constexpr uint32_t kCanary = 0xC0FFEEu;
@@ -165,9 +166,12 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     out.cpu = la::binLights(grid, f.view, f.proj, scene.shadingLights(), local, true);
     for (const la::TileRect& r :
          la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local))
-        if (!r.empty())
+        if (!r.empty()) {
             out.largestRect =
                 std::max(out.largestRect, uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1));
+            const bool right = uint32_t(r.x1 + 1) < grid.tilesX, below = uint32_t(r.y1 + 1) < grid.tilesY;
+            out.cpuCorners += 1 + uint64_t(right) + uint64_t(below) + uint64_t(right && below);
+        }
     la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews, sortBuckets);
     out.sizes = gpuBin.sizes();
     const uint32_t base = 7; // the runs need not start at word 0
@@ -193,6 +197,8 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     gpuBin.publishWords(wordLayout.buffer, layout.scale, layout.add, layout.room, wordsFirst);
     recordAndSubmit(ctx, graph, frames); // a frame rebuilds what the last one left
     out.overflowed = gpuBin.overflowed(graph, 1); // batches of one light: any longer run counts
+    gpuBin.collect(graph);
+    out.corners = gpuBin.cornerAtomics();
     auto words = [](const std::vector<uint8_t>& bytes, size_t first, size_t n) {
         std::vector<uint32_t> w(n);
         std::memcpy(w.data(), bytes.data() + first * 4, n * 4);
@@ -227,6 +233,7 @@ uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t til
     EXPECT_EQ(b.published, b.cpu.offsets) << "the offsets the consumers read";
     EXPECT_FALSE(b.overflowed);
     EXPECT_EQ(b.canary, kCanary);
+    EXPECT_EQ(b.corners, b.cpuCorners) << "light_binning's counted atomics (efficiency placement)";
     // The word layout: a bit per candidate and kWordsAdd more per tile (HybridBlended's masks).
     std::vector<uint32_t> wantWords(b.cpu.bound.size() + 1, 0);
     for (size_t t = 0; t < b.cpu.bound.size(); ++t)
