@@ -296,9 +296,11 @@ RendererStats MultipassForwardRenderer::stats() const {
                    blendDraws = (blended_ ? blended_->draws() : 0) +
                                 (blendedDraws_ ? 2 * blendLightDraws : 0);
     const uint32_t prepassDraws = prepass_ ? prepass_->draws() : 0,
+                   lateDraws = prepass_ ? prepass_->lateDraws() : 0,
                    baseDraws = base_ ? base_->draws() : 0;
-    count("draws", double(prepassDraws + baseDraws + lightDraws + blendDraws));
+    count("draws", double(prepassDraws + lateDraws + baseDraws + lightDraws + blendDraws));
     count("depth_prepass_draws", prepassDraws);
+    count("depth_prepass_late_draws", lateDraws); // --cull-geometry full: the occlusion's second
     count("base_pass_draws", baseDraws);
     count("light_passes_draws", lightDraws);
     count("blended_draws", blendDraws);
@@ -306,6 +308,7 @@ RendererStats MultipassForwardRenderer::stats() const {
     // The draws placed against draw_culled (docs/efficiency.md): a draw per light and mesh is
     // this architecture's cost that no pixel or triangle count shows.
     for (const auto& [pass, draws] : {std::pair{"depth_prepass", prepassDraws},
+                                      {"depth_prepass_late", lateDraws},
                                       {"base_pass", baseDraws},
                                       {"light_passes", lightDraws},
                                       {"blended", blendDraws}})

@@ -60,7 +60,8 @@ void DepthPrepass::record(PassContext& pc, CullPhase phase) {
         scene_.bindMeshletIndexBuffer(pc.cmd);
     else
         scene_.bindIndexBuffer(pc.cmd);
-    if (phase != CullPhase::Late) draws_ = 0;
+    uint32_t& drawn = phase == CullPhase::Late ? lateDraws_ : draws_;
+    drawn = 0;
     for (auto [pipeline, list] :
          {std::pair{opaque_, &params_.opaque}, std::pair{masked_, &params_.masked}}) {
         if (!pipeline) continue;
@@ -70,7 +71,7 @@ void DepthPrepass::record(PassContext& pc, CullPhase phase) {
                 params_.cull->recordDraw(pc, layout_, *d, 0, phase);
             else
                 recordDraw(pc.cmd, layout_, *d);
-        if (phase != CullPhase::Late) draws_ += uint32_t(list->size());
+        drawn += uint32_t(list->size());
     }
     endRendering(pc);
 }

@@ -57,6 +57,7 @@ class DepthPrepass {
     // Pipelines (after the graph is compiled; they depend on no resource).
     void prepare();
     uint32_t draws() const { return draws_; } // recorded in the last frame
+    uint32_t lateDraws() const { return lateDraws_; } // by depth_prepass_late (occlusion culling)
     // A new view's lists (recorded from the next recording on); false, and nothing changed,
     // when a non-empty list has no pipeline (it was empty at prepare, without everyPipeline).
     bool setDraws(std::vector<const DrawItem*> opaque, std::vector<const DrawItem*> masked);
@@ -69,7 +70,7 @@ class DepthPrepass {
     DepthPrepassTargets t_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline opaque_ = VK_NULL_HANDLE, masked_ = VK_NULL_HANDLE;
-    uint32_t draws_ = 0;
+    uint32_t draws_ = 0, lateDraws_ = 0;
 };
 
 } // namespace tp::passes

@@ -84,6 +84,14 @@ void expectSameOverFrames(const Runs& r, const std::string& what) {
     EXPECT_EQ(first.occlusion, 0) << what;
     EXPECT_GT(later.early, 0) << what;
     EXPECT_EQ(later.late, 0) << what << ": a still view's history is its visible set";
+    // Multipass forward counts its prepass draws (placed against draw_culled): the late phase
+    // records every draw of the prepass again (as its late meshlets); unculled, it has none.
+    const double late = r.first.stats.counter("depth_prepass_late_draws", -1);
+    if (late >= 0) {
+        EXPECT_GT(late, 0) << what;
+        EXPECT_EQ(late, r.first.stats.counter("depth_prepass_draws")) << what;
+        EXPECT_EQ(r.none.stats.counter("depth_prepass_late_draws"), 0) << what;
+    }
 }
 
 class OccludedFrame : public ::testing::TestWithParam<std::string> {};

@@ -93,7 +93,8 @@ void expectConsistentStats(const RunResult& mp, bool additive = false) {
     const double light = statOf(mp, "light_passes_draws"), blended = statOf(mp, "blended_draws");
     const double blendedLight = statOf(mp, "blended_light_draws");
     EXPECT_EQ(statOf(mp, "draws"),
-              statOf(mp, "depth_prepass_draws") + statOf(mp, "base_pass_draws") + light + blended);
+              statOf(mp, "depth_prepass_draws") + statOf(mp, "depth_prepass_late_draws") +
+                  statOf(mp, "base_pass_draws") + light + blended);
     EXPECT_NEAR(statOf(mp, "meshes_per_light_mean") * statOf(mp, "local_lights"),
                 light + blendedLight, 1e-6);
     EXPECT_GE(blended, (additive ? 1.0 : 2.0) * blendedLight);
