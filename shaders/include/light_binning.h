@@ -64,10 +64,11 @@ namespace tp::gpu {
 // The fill: how many workgroups share each 64 lights' (light, tile) pairs.
 #define TP_BIN_SPLIT materialIndex
 // The fill's split is chosen so that at least this many workgroups run (or one per 64 lights):
-// on a GPU enough to fill it (H200, 1,024 lights of the default range: light_bin_fill 0.69 ms
-// with a workgroup per 64 lights); on a CPU device a few, each workgroup's scan costing
-// barriers there.
-#define TP_BIN_FILL_GROUPS_GPU 2048u
+// on a GPU enough to fill it with waits on atomics (H200, 1,024 lights of the default range:
+// light_bin_fill 0.69 ms with a workgroup per 64 lights; at 65,536 lights 0.117 ms with 2,048
+// workgroups, 0.100 with 4,096, 0.092 with 8,192, 0.087 with 16,384, docs/clustered.md); on a
+// CPU device a few, each workgroup's scan costing barriers there.
+#define TP_BIN_FILL_GROUPS_GPU 8192u
 #define TP_BIN_FILL_GROUPS_CPU 8u
 
 // Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32, and 2 KiB of
