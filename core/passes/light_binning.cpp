@@ -1,6 +1,7 @@
 #include "core/passes/light_binning.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include "core/gpu/context.h"
@@ -68,12 +69,13 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
     layout_ = scene_.createPipelineLayout(set_.layout);
     std::vector<SpecConstant> spec = scene_.specConstants(AlphaMode::Opaque);
     // Vulkan guarantees only 128 invocations per workgroup: a GPU that allows fewer than 256 gets
-    // its limit.
+    // its limit, rounded down to a power of two (bin_sort.comp scans its lanes in groups of 16).
     const VkPhysicalDeviceLimits& limits = ctx_.properties.limits;
     const uint32_t sortGroup =
-        ctx_.isCpuDevice() ? TP_BIN_SORT_GROUP_CPU
-                           : std::min({TP_BIN_SORT_GROUP_GPU, limits.maxComputeWorkGroupInvocations,
-                                       limits.maxComputeWorkGroupSize[0]});
+        ctx_.isCpuDevice()
+            ? TP_BIN_SORT_GROUP_CPU
+            : std::bit_floor(std::min({TP_BIN_SORT_GROUP_GPU, limits.maxComputeWorkGroupInvocations,
+                                       limits.maxComputeWorkGroupSize[0]}));
     spec.push_back({TP_BIN_SPEC_SORT_GROUP, sortGroup});
     spec.push_back({TP_BIN_SPEC_SORT_BUCKETS, sortBuckets});
     try {

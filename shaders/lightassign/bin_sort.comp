@@ -117,7 +117,7 @@ void main() {
     barrier();
     for (uint i = lane; i < n; i += TP_BIN_SORT_GROUP)
         if (atomicAdd(bucketFill[(target[base + i] - lo) >> shift], 1u) >= TP_BIN_BUCKET_MOST)
-            crowded = 1u; // any lane that finds one: the same value
+            atomicOr(crowded, 1u); // only where a bucket is crowded: the fallback's cost
     barrier();
     if (crowded != 0u) { // uniform: read after the barrier
         for (uint i = lane; i < n; i += TP_BIN_SORT_GROUP) run[i] = target[base + i];
