@@ -676,6 +676,12 @@ void expectBinnedEqualsBruteForce(const Scene& scene, RenderSettings settings) {
     };
     EXPECT_EQ(counter(binned, "lights_dropped"), 0.0);
     EXPECT_LT(counter(binned, "lights_tested"), counter(all, "lights_tested"));
+    for (const ListRun* r : {&all, &binned}) { // light_culling's counted work: the tests
+        double tests = -1;
+        for (const PassOpWork& w : r->stats.opWork)
+            if (w.pass == "light_culling" && w.kind == PassOpWork::Kind::TileTests) tests = w.items;
+        EXPECT_EQ(tests, counter(*r, "lights_tested"));
+    }
     std::printf(
         "[ forwardplus ] binned culling: %.0f tests against %.0f for every light, %llu listed\n",
         counter(binned, "lights_tested"), counter(all, "lights_tested"),
