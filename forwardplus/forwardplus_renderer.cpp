@@ -286,13 +286,7 @@ class ForwardPlusRenderer final : public Renderer {
             in.poolNodes = lists_.poolNodes;
             fp::addListCounters(s.counters, in);
             fp::addLightWork(s, r_, fp_, classes_.directional.size());
-            // Light-versus-tile tests (reported; no ceiling measures a test): both culling
-            // variants test the same candidates.
-            s.opWork.push_back({"light_culling", PassOpWork::Kind::TileTests,
-                                PassLightWork::Base::Items, 1.0, false,
-                                "lights_tested: each tile with geometry tests its candidates, "
-                                "again for its transparent list where it has blended fragments",
-                                s.counter("lights_tested")});
+            fp::addCullingWork(s);
         }
         s.opWork.push_back(materialFetchWork(scene_, "forward_opaque",
                                              {DrawFilter::Opaque, DrawFilter::Mask},

@@ -65,6 +65,16 @@ void addLightWork(RendererStats& stats, const Resolved& r, const Settings& s, si
                                    " + directional lights, per fragment"});
 }
 
+void addCullingWork(RendererStats& stats) {
+    // Reported, not placed (no ceiling measures a test); both culling variants test the same
+    // candidates.
+    stats.opWork.push_back({"light_culling", PassOpWork::Kind::TileTests,
+                            PassLightWork::Base::Items, 1.0, false,
+                            "lights_tested: each tile with geometry tests its candidates, again "
+                            "for its transparent list where it has blended fragments",
+                            stats.counter("lights_tested")});
+}
+
 void addLeftOut(RendererStats& stats, const Resolved& r, const Settings& s, SceneGpu& scene,
                 const SceneFeatures& features) {
     auto& out = stats.leftOut;

@@ -38,5 +38,7 @@ void addLeftOut(RendererStats& stats, const Resolved& r, const Settings& s, Scen
 // Every shaded fragment evaluates its tile's (cluster's) list and the unculled directional
 // lights: the lists' mean (from the counters already in `stats`) stands for the fragment's list.
 void addLightWork(RendererStats& stats, const Resolved& r, const Settings& s, size_t directionalLights);
+// light_culling's light-versus-tile tests (the counter lights_tested, added before).
+void addCullingWork(RendererStats& stats);
 
 } // namespace tp::fp

@@ -71,10 +71,10 @@ namespace tp::gpu {
 #define TP_BIN_FILL_GROUPS_GPU 8192u
 #define TP_BIN_FILL_GROUPS_CPU 8u
 
-// Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32, and 2 KiB of
-// buckets); longer ones
-// by blocks of this size: the bitonic steps within a block in shared memory
-// (bin_sort_local.comp), a dispatch per step only across blocks (bin_sort_step.comp).
+// Runs up to this long are sorted in shared memory (16 KiB of lavapipe's 32, and 3 KiB of
+// buckets and scan); longer ones by blocks of this size: the bitonic steps within a block in
+// shared memory (bin_sort_local.comp), a dispatch per step only across blocks
+// (bin_sort_step.comp).
 #define TP_BIN_SHARED_SORT 4096u
 // Invocations sorting one tile's run (bin_sort.comp's workgroup size, a specialization
 // constant): 256 on a GPU, where the short runs' sort by rank and each bitonic step then take
