@@ -287,8 +287,6 @@ RendererStats DeferredRenderer::stats() const {
         if (binned()) // --light-bin, resolved
             s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
         s.counters.push_back({"light_cull_all", binned() ? 0.0 : 1.0}); // --light-cull, resolved
-        if (lighting_.gpuBinning()) // readbacks of a plan-time sizing run (views add none)
-            s.counters.push_back({"light_bin_sizing_runs", double(lighting_.sizingRuns())});
     }
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)

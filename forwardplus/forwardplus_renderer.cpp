@@ -255,13 +255,11 @@ class ForwardPlusRenderer final : public Renderer {
         add("culling_by_subgroup", r_.subgroupCull ? 1.0 : 0.0); // --cull-by, resolved
         if (cull_) // --cull-geometry frustum: meshlets and triangles, submitted and culled
             for (const auto& c : cull_->counters()) s.counters.push_back(c);
-        if (binned())
+        if (binned()) {
             add("binned_candidates", double(r_.gpuBinning ? bins_.slots : bins_.candidates.size()));
-        if (binned()) add("light_binning_on_gpu", r_.gpuBinning ? 1.0 : 0.0); // --light-bin, resolved
+            add("light_binning_on_gpu", r_.gpuBinning ? 1.0 : 0.0); // --light-bin, resolved
+        }
         add("light_cull_all", binned() ? 0.0 : 1.0); // --light-cull, resolved
-        if (binning_) // readbacks of a plan-time sizing run: 1 per plan where views follow on the
-                      // GPU
-            add("light_bin_sizing_runs", double(binning_->sizingRuns()));
         if (clustered()) {
             add("slices", double(fp_.assign.slices));
             add("cluster_mask_words", double(bins_.masks.words));
@@ -294,8 +292,7 @@ class ForwardPlusRenderer final : public Renderer {
         if (r_.blendPass)
             s.opWork.push_back(materialFetchWork(scene_, "forward_transparent", {DrawFilter::Blend},
                                                  PassLightWork::Base::Fragments));
-        if (binning_)
-            la::addBinningWork(s, bins_.slots, binning_->locals(), binning_->cornerAtomics());
+        if (binning_) binning_->addStats(s, bins_.slots);
         fp::addLeftOut(s, r_, fp_, scene_, features_);
         return s;
     }

@@ -376,8 +376,6 @@ RendererStats VisbufferRenderer::stats() const {
     if (vis_.assign.binned())
         s.counters.push_back({"light_binning_on_gpu", lighting_.gpuBinning() ? 1.0 : 0.0});
     s.counters.push_back({"light_cull_all", vis_.assign.binned() ? 0.0 : 1.0}); // resolved
-    if (lighting_.gpuBinning()) // readbacks of a plan-time sizing run (views add none)
-        s.counters.push_back({"light_bin_sizing_runs", double(lighting_.sizingRuns())});
     s.counters.push_back({"edge_pixel_share", pixels > 0 ? t.edges / pixels : 0.0});
     if (samples > 1 && !ctx_.caps.standardSampleLocations)
         s.leftOut.push_back(

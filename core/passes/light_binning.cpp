@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <functional>
 
 #include "core/gpu/context.h"
 #include "core/gpu/pipelines.h"
@@ -45,8 +46,13 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                        uint32_t sortBuckets)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
       owner_(std::move(owner)), manyViews_(manyViews) {
-    if (sortBuckets == 0 || (sortBuckets & (sortBuckets - 1)) != 0)
-        throw std::logic_error("GpuBinning: the sort's buckets must be a power of two");
+    static_assert(kSortBuckets == TP_BIN_SORT_BUCKETS);
+    // bin_sort.comp's buckets: a power of two (a shift), at most 1,024 (shared memory).
+    if (sortBuckets < 2 || sortBuckets > 1024 || (sortBuckets & (sortBuckets - 1)) != 0)
+        throw std::logic_error("GpuBinning: the sort's buckets must be a power of two, 2 to 1,024");
+    // The sort's buckets span local.front() to local.back(): every run's light lies between.
+    if (std::adjacent_find(local.begin(), local.end(), std::greater_equal<uint32_t>()) != local.end())
+        throw std::logic_error("GpuBinning: the local lights must be ascending");
     // Its largest buffer: the light list, bound whole.
     if (uint64_t(local.size()) * 4 > ctx_.caps.maxStorageBufferRange)
         throw RendererError("--light-bin gpu: a list of " + std::to_string(local.size()) +
@@ -216,6 +222,7 @@ LightBins GpuBinning::collect(FrameGraph& graph) {
         bins.maxBound = std::max(bins.maxBound, bins.bound[t]);
     }
     bins.slots = bins.offsets[tiles];
+    std::memcpy(&sortFallbacks_, bytes.data() + (size_t(tiles) + 1 + TP_BIN_NEED_FALLBACKS) * 4, 4);
     cornerAtomics_ = countCornerAtomics(readbackBuffer(ctx_, graph.buffer(rects_)));
     return bins;
 }
@@ -404,6 +411,12 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
     // The culling (compute) and Forward+'s shading (fragment: the same buffer) read it next.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+}
+
+void GpuBinning::addStats(RendererStats& s, uint64_t slots) const {
+    s.counters.push_back({"light_bin_sizing_runs", double(sizingRuns_)});
+    s.counters.push_back({"light_bin_sort_fallbacks", double(sortFallbacks_)});
+    addBinningWork(s, slots, locals_, cornerAtomics_);
 }
 
 void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals, uint64_t corners) {

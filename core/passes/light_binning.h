@@ -40,7 +40,6 @@
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/tile_grid.h"
 #include "core/renderer/renderer.h"
-#include "include/light_binning.h"
 
 namespace tp {
 class GpuContext;
@@ -51,6 +50,8 @@ namespace tp::la {
 
 // Many views: the longest run planned, over the first view's (core/passes/light_binning.h).
 constexpr uint32_t kRunHeadroom = 2;
+// bin_sort.comp's buckets (TP_BIN_SORT_BUCKETS).
+constexpr uint32_t kSortBuckets = 256;
 
 class GpuBinning {
   public:
@@ -61,7 +62,7 @@ class GpuBinning {
     // tests give few, to crowd them.
     GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                const std::vector<uint32_t>& local, std::string owner, bool manyViews = false,
-               uint32_t sortBuckets = TP_BIN_SORT_BUCKETS);
+               uint32_t sortBuckets = kSortBuckets);
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
@@ -108,6 +109,12 @@ class GpuBinning {
     LightBins collect(FrameGraph& graph);
     // The last collected frame's atomics on the difference array (bin_rects.comp's corners).
     uint64_t cornerAtomics() const { return cornerAtomics_; }
+    // Its runs the sort gave the bitonic network because a bucket was crowded (a statistic).
+    uint32_t sortFallbacks() const { return sortFallbacks_; }
+    // The counters light_bin_sizing_runs (plan-time readbacks: views followed add none) and
+    // light_bin_sort_fallbacks, and the passes' counted work (addBinningWork) for the last
+    // collected frame, which binned into `slots` (light, tile) pairs.
+    void addStats(RendererStats& s, uint64_t slots) const;
 
   private:
     struct Bufs {
@@ -131,6 +138,7 @@ class GpuBinning {
     TileGrid grid_;
     uint32_t locals_ = 0;
     uint64_t cornerAtomics_ = 0;
+    uint32_t sortFallbacks_ = 0;
     std::string owner_;
     uint32_t base_ = 0;     // the target's first word
     uint32_t offsetsWord_ = 0, room_ = 0; // prepare(): where the frame publishes its offsets

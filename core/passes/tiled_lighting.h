@@ -149,12 +149,11 @@ class TiledLighting {
     // Light-vs-tile tests the culling makes (binned: the candidates; all: lights x tiles).
     uint64_t candidates() const { return candidateCount_; }
     bool gpuBinning() const { return gpuBinning_; }
-    // GPU binning: its passes' counted work for the last collected frame (la::addBinningWork).
+    // GPU binning: its counters and its passes' counted work for the last collected frame
+    // (GpuBinning::addStats).
     void addBinningWork(RendererStats& s) const {
-        if (binning_) la::addBinningWork(s, bins_.slots, binning_->locals(), binning_->cornerAtomics());
+        if (binning_) binning_->addStats(s, bins_.slots);
     }
-    // GPU binning: plan-time sizing runs (readbacks) so far; views followed add none.
-    uint32_t sizingRuns() const { return binning_ ? binning_->sizingRuns() : 0; }
     // The lights' uniform-buffer copy (after plan), kept up to date by updateView: the blended
     // forward pass binds it too.
     const LightsUbo& lightsUbo() const { return *lightsUbo_; }

@@ -40,10 +40,11 @@ namespace tp::gpu {
 #define TP_BIN_ROOM pad2
 // After the offsets (offsets[tiles + 1 + i]): what the view needed, read after its frames
 // (GpuBinning::overflowed): the slots unclamped (modulo 2^32), the longest run.
-#define TP_BIN_NEEDS 3u
+#define TP_BIN_NEEDS 4u
 #define TP_BIN_NEED_SLOTS 0u
 #define TP_BIN_NEED_RUN 1u
 #define TP_BIN_NEED_WORDS 2u // the word layout's words (when one is published)
+#define TP_BIN_NEED_FALLBACKS 3u // not a need: runs the sort gave the bitonic network (a crowded bucket)
 // The word layout (bin_scan_words.comp, after the counts): tile t takes
 // TP_BIN_WORDS_SCALE * ceil((TP_BIN_WORDS_ADD + counts[t]) / 32) words, a bit per candidate
 // (the transparent lists' bitmasks over the directional lights and the run: scale 1; clustered

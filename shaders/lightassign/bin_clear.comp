@@ -8,7 +8,10 @@ layout(local_size_x = 64) in;
 
 void main() {
     const uint t = binFlatIndex();
-    if (t == 0u) offsets[bin.grid.z + 1u + TP_BIN_NEED_RUN] = 0u; // the longest run, an atomicMax
+    if (t == 0u) { // the longest run (an atomicMax) and the sort's fallbacks (atomicAdd)
+        offsets[bin.grid.z + 1u + TP_BIN_NEED_RUN] = 0u;
+        offsets[bin.grid.z + 1u + TP_BIN_NEED_FALLBACKS] = 0u;
+    }
     if (t >= bin.grid.z) return;
     counts[t] = 0u;
 }

@@ -69,10 +69,10 @@ void scanBuckets(uint n) {
     if (lane == 0u) bucketStart[kBuckets] = n;
 }
 
-// The run ascending in place in shared memory: the bitonic network over it padded with +inf.
+// The run (loaded by every lane) ascending in place in shared memory: the bitonic network over
+// it padded with +inf, virtually: a pair whose partner lies past the run is skipped.
 void bitonicSort(uint n, uint lane) {
     const uint size = binSortSize(n);
-    for (uint i = n + lane; i < size; i += TP_BIN_SORT_GROUP) run[i] = 0xffffffffu;
     barrier();
     for (uint k = 2u; k <= size; k <<= 1u)
         for (uint j = k >> 1u; j > 0u; j >>= 1u) {
@@ -120,6 +120,7 @@ void main() {
             atomicOr(crowded, 1u); // only where a bucket is crowded: the fallback's cost
     barrier();
     if (crowded != 0u) { // uniform: read after the barrier
+        if (lane == 0u) atomicAdd(offsets[bin.grid.z + 1u + TP_BIN_NEED_FALLBACKS], 1u); // a statistic
         for (uint i = lane; i < n; i += TP_BIN_SORT_GROUP) run[i] = target[base + i];
         bitonicSort(n, lane);
         for (uint i = lane; i < n; i += TP_BIN_SORT_GROUP) target[base + i] = run[i];

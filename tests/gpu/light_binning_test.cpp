@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <random>
 
@@ -139,6 +140,7 @@ struct Binned {
     bool overflowed = false;             // GpuBinning::overflowed after the frames
     uint32_t largestRect = 0;            // tiles of the largest rectangle, on the CPU
     uint64_t corners = 0, cpuCorners = 0; // difference-array atomics: counted, and on the CPU
+    uint32_t fallbacks = 0;               // runs the sort gave its bitonic network
 };
 
 constexpr uint32_t kCanary = 0xC0FFEEu;
@@ -199,6 +201,7 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     out.overflowed = gpuBin.overflowed(graph, 1); // batches of one light: any longer run counts
     gpuBin.collect(graph);
     out.corners = gpuBin.cornerAtomics();
+    out.fallbacks = gpuBin.sortFallbacks();
     auto words = [](const std::vector<uint8_t>& bytes, size_t first, size_t n) {
         std::vector<uint32_t> w(n);
         std::memcpy(w.data(), bytes.data() + first * 4, n * 4);
@@ -217,9 +220,11 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     return out;
 }
 
-// Returns the tiles of the largest rectangle.
+// Returns the tiles of the largest rectangle. fallbacks (when not -1): the runs the sort must
+// have given its bitonic network.
 uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile,
-                        uint32_t minLongest = 1, uint32_t sortBuckets = TP_BIN_SORT_BUCKETS) {
+                        uint32_t minLongest = 1, uint32_t sortBuckets = TP_BIN_SORT_BUCKETS,
+                        int64_t fallbacks = -1) {
     auto ctx = makeValidatedContext();
     EXPECT_TRUE(ctx);
     if (!ctx) return 0;
@@ -234,6 +239,9 @@ uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t til
     EXPECT_FALSE(b.overflowed);
     EXPECT_EQ(b.canary, kCanary);
     EXPECT_EQ(b.corners, b.cpuCorners) << "light_binning's counted atomics (efficiency placement)";
+    if (fallbacks >= 0) {
+        EXPECT_EQ(b.fallbacks, uint64_t(fallbacks)) << "runs sorted by the network";
+    }
     // The word layout: a bit per candidate and kWordsAdd more per tile (HybridBlended's masks).
     std::vector<uint32_t> wantWords(b.cpu.bound.size() + 1, 0);
     for (size_t t = 0; t < b.cpu.bound.size(); ++t)
@@ -279,16 +287,20 @@ TEST(GpuLightBinning, LightsAroundAndBehindTheEye) {
 // 1,000 lights in every tile: runs past the rank sort, by buckets in shared memory (four
 // lights a bucket: 256 over the range of 1,000 light indices).
 TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
-    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, TP_BIN_SORT_BUCKETS, 0);
 }
-// The same runs over 16 buckets: 64 lights a bucket (TP_BIN_BUCKET_MOST), each ranked among
-// its bucket's; over 8, 128 a bucket, too many: the bitonic network sorts the run instead.
+// The same runs over 16 buckets: 64 lights a bucket (TP_BIN_BUCKET_MOST; a bucket spans a
+// power of two of the range's 10 bits), each ranked among its bucket's; over 8, 128 a bucket,
+// too many: the bitonic network sorts each of the 3 x 2 tiles' runs instead.
+constexpr uint32_t kWholeScreenBucket16 = 1u << (std::bit_width(999u) - 4);
+constexpr uint32_t kWholeScreenBucket8 = 1u << (std::bit_width(999u) - 3);
 TEST(GpuLightBinning, WholeScreenRunsInFullBuckets) {
-    static_assert(1000 / 16 < TP_BIN_BUCKET_MOST + 1 && 1000 / 8 > TP_BIN_BUCKET_MOST);
-    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 16);
+    static_assert(kWholeScreenBucket16 == TP_BIN_BUCKET_MOST);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 16, 0);
 }
 TEST(GpuLightBinning, WholeScreenRunsInCrowdedBucketsSortedBitonic) {
-    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 8);
+    static_assert(kWholeScreenBucket8 > TP_BIN_BUCKET_MOST);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 8, 6);
 }
 // 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
