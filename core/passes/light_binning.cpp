@@ -234,12 +234,11 @@ uint64_t GpuBinning::countCornerAtomics(const std::vector<uint8_t>& rectBytes) c
     const uint32_t n = std::min<uint32_t>(locals_, uint32_t(rectBytes.size() / 8));
     uint64_t atomics = 0;
     for (uint32_t k = 0; k < n; ++k) {
-        uint32_t packed[2];
-        std::memcpy(packed, rectBytes.data() + size_t(k) * 8, 8);
-        const uint32_t x0 = packed[0] & 0xffffu, x1 = packed[0] >> 16, y0 = packed[1] & 0xffffu,
-                       y1 = packed[1] >> 16;
-        if (x0 > x1 || y0 > y1) continue; // no tile (binPackRect's empty rectangle)
-        const bool right = x1 + 1 < grid_.tilesX, below = y1 + 1 < grid_.tilesY;
+        glm::uvec2 packed;
+        std::memcpy(&packed, rectBytes.data() + size_t(k) * 8, 8);
+        const glm::ivec4 r = gpu::binUnpackRect(packed); // x0, x1, y0, y1
+        if (r.x > r.y || r.z > r.w) continue; // no tile (binPackRect's empty rectangle)
+        const bool right = uint32_t(r.y) + 1 < grid_.tilesX, below = uint32_t(r.w) + 1 < grid_.tilesY;
         atomics += 1 + uint64_t(right) + uint64_t(below) + uint64_t(right && below);
     }
     return atomics;
