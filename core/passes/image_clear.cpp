@@ -7,6 +7,7 @@
 #include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/gpu/vk_check.h"
+#include "include/shared.h"
 #include "passes/image_clear.h"
 
 namespace tp {

@@ -11,6 +11,7 @@
 #include "core/gpu/vk_check.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/compact_layout.h"
+#include "core/lightassign/corner_atomics.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/renderer/renderer.h"
 #include "include/light_binning.h"
@@ -161,7 +162,7 @@ LightBins GpuBinning::sizes() {
             {owner_, "light_binning", name, "GPU binning at plan time (freed before the frame)"});
     };
     const uint32_t tiles = grid_.count();
-    Buffer counts = make(tiles, "light_bin_sizing_counts"),
+    Buffer counts = make(2 * uint64_t(tiles), "light_bin_sizing_counts"),
            offsets = make(tiles + 1 + TP_BIN_NEEDS, "light_bin_sizing_offsets"),
            rows = make(grid_.tilesY, "light_bin_sizing_rows");
     bind({counts.buffer, offsets.buffer, rows.buffer, rows.buffer},
@@ -227,27 +228,22 @@ LightBins GpuBinning::collect(FrameGraph& graph) {
     return bins;
 }
 
-// bin_rects.comp's atomics on the difference array: a light whose rectangle covers a tile adds
-// at its first tile and, where they fall inside the grid, at the tiles past its last column,
-// past its last row, and past both.
+// The frame's rectangles (read back) to bin_rects.comp's atomics.
 uint64_t GpuBinning::countCornerAtomics(const std::vector<uint8_t>& rectBytes) const {
-    const uint32_t n = std::min<uint32_t>(locals_, uint32_t(rectBytes.size() / 8));
-    uint64_t atomics = 0;
-    for (uint32_t k = 0; k < n; ++k) {
+    std::vector<TileRect> rects(std::min<size_t>(locals_, rectBytes.size() / 8));
+    for (size_t k = 0; k < rects.size(); ++k) {
         glm::uvec2 packed;
-        std::memcpy(&packed, rectBytes.data() + size_t(k) * 8, 8);
+        std::memcpy(&packed, rectBytes.data() + k * 8, 8);
         const glm::ivec4 r = gpu::binUnpackRect(packed); // x0, x1, y0, y1
-        if (r.x > r.y || r.z > r.w) continue; // no tile (binPackRect's empty rectangle)
-        const bool right = uint32_t(r.y) + 1 < grid_.tilesX, below = uint32_t(r.w) + 1 < grid_.tilesY;
-        atomics += 1 + uint64_t(right) + uint64_t(below) + uint64_t(right && below);
+        rects[k] = {r.x, r.y, r.z, r.w};
     }
-    return atomics;
+    return binCornerAtomics(rects, grid_);
 }
 
 void GpuBinning::plan(FrameGraph& graph) {
     const uint32_t tiles = grid_.count();
-    counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 4,
-                                 "GPU binning: lights covering each tile");
+    counts_ = graph.createBuffer("light_bin_counts", uint64_t(tiles) * 8,
+                                 "GPU binning: lights covering each tile (corners, direct)");
     offsets_ = graph.createBuffer("light_bin_offsets", (uint64_t(tiles) + 1 + TP_BIN_NEEDS) * 4,
                                   "GPU binning: each tile's first candidate (prefix sum), the "
                                   "view's needs");
@@ -333,7 +329,7 @@ void GpuBinning::recordSizing(VkCommandBuffer cmd, bool frame) {
                       VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     const gpu::DrawPush push{0, base_, 0, 0};
-    dispatchFlat(cmd, pipelines_[kClear], grid_.count(), push);
+    dispatchFlat(cmd, pipelines_[kClear], 2 * grid_.count(), push); // corners, direct counts
     stepBarrier(cmd);
     dispatchFlat(cmd, pipelines_[kRects], locals_, {frame ? 1u : 0u, base_, 0, 0});
     stepBarrier(cmd);

@@ -6,8 +6,9 @@
 //                the transparent lists' masks, clustered Forward+'s slice rows)
 //     1. clear   the counts (a difference array)
 //     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
-//                corners in the difference array; in the frame the rectangle, stored for the
-//                fill (8 bytes a light)
+//                corners in the difference array, or a rectangle of fewer tiles than corners
+//                each tile in the direct counts (folded in by step 3); in the frame the
+//                rectangle, stored for the fill (8 bytes a light)
 //     3. rows    a workgroup per row of tiles: prefix sums along it
 //     4. columns a workgroup per column: the counts (the bound) and their row-major exclusive
 //                prefix sum (the offsets: the compact layout) in one pass down the column

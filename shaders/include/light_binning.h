@@ -18,8 +18,9 @@ namespace tp::gpu {
 // ---- set TP_SET_PASS of the light_binning pass (all storage buffers) ----
 #define TP_BIN_BINDING_INPUTS 0  // BinInputs, then vec4 slabs[]: columns lo, columns hi, rows lo, rows hi
 #define TP_BIN_BINDING_LOCALS 1  // uint[]: the point/spot light indices, ascending (la::LightClasses::local)
-#define TP_BIN_BINDING_COUNTS 2  // uint[tiles]: a difference array, then per tile how many rectangles
-                                 // cover it; the fill counts it down (its cursor)
+#define TP_BIN_BINDING_COUNTS 2  // uint[2 tiles]: a difference array, then per tile how many rectangles
+                                 // cover it; the fill counts it down (its cursor). Then per tile
+                                 // the small rectangles counted directly (bin_rects.comp)
 #define TP_BIN_BINDING_OFFSETS 3 // uint[tiles + 1 + TP_BIN_NEEDS]: exclusive prefix sum of the counts
                                  // (modulo 2^32: a layout past 2^32 - 1 is refused before any frame,
                                  // from the counts), in the frame clamped to the room; then the needs

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 1: every tile's count (the difference array) to 0, and the longest
+// light_binning, step 1: every tile's count (the difference array, the direct counts) to 0, and the longest
 // run (bin_scan_columns.comp takes the maximum).
 #include "lightassign/bin_common.glsl"
 
@@ -12,6 +12,6 @@ void main() {
         offsets[bin.grid.z + 1u + TP_BIN_NEED_RUN] = 0u;
         offsets[bin.grid.z + 1u + TP_BIN_NEED_FALLBACKS] = 0u;
     }
-    if (t >= bin.grid.z) return;
+    if (t >= 2u * bin.grid.z) return; // the difference array and the direct counts
     counts[t] = 0u;
 }

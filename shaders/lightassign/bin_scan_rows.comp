@@ -3,7 +3,10 @@
 // light_binning, step 3: a workgroup per row of tiles. Along the row, the difference array's
 // inclusive prefix sum R (into counts) and R's exclusive prefix sum E (into offsets), and R's
 // sum over the row (into rowSums): what step 4 needs to finish counts and offsets going down
-// the columns (bin_scan_columns.comp says how).
+// the columns (bin_scan_columns.comp says how). The direct counts C (bin_rects.comp's small
+// rectangles) are a difference array of their own, C(x, y) - C(x - 1, y) - C(x, y - 1) +
+// C(x - 1, y - 1), whose prefix sum along the row is C(x, y) - C(x, y - 1): added to R here,
+// they reach the counts and offsets with the rectangles' corners.
 #include "lightassign/bin_common.glsl"
 #include "lightassign/bin_scan.glsl"
 
@@ -14,10 +17,13 @@ void main() {
     for (uint x = share.x; x < share.y; ++x) sum += counts[row + x];
     uvec4 total;
     uint r = binScanExclusive(uvec4(sum, 0u, 0u, 0u), total).x, rSum = 0u;
+    const uint direct = bin.grid.z;
     for (uint x = share.x; x < share.y; ++x) {
         r += counts[row + x];
-        counts[row + x] = r;
-        rSum += r;
+        const uint above = row == 0u ? 0u : counts[direct + row - W + x];
+        const uint rWithDirect = r + counts[direct + row + x] - above; // modulo 2^32, as the corners
+        counts[row + x] = rWithDirect;
+        rSum += rWithDirect;
     }
     uint e = binScanExclusive(uvec4(rSum, 0u, 0u, 0u), total).x;
     for (uint x = share.x; x < share.y; ++x) {

@@ -14,6 +14,7 @@
 #include "core/gpu/frame_graph.h"
 #include "core/gpu/readback.h"
 #include "core/gpu/vk_check.h"
+#include "core/lightassign/corner_atomics.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/light_classes.h"
 #include "core/lightassign/tile_bound.h"
@@ -166,14 +167,13 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
     const std::vector<uint32_t> local = la::classifyLights(scene.shadingLights()).local;
     const gpu::FrameUniforms& f = scene.shadingFrame();
     out.cpu = la::binLights(grid, f.view, f.proj, scene.shadingLights(), local, true);
-    for (const la::TileRect& r :
-         la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local))
-        if (!r.empty()) {
+    const std::vector<la::TileRect> rects =
+        la::conservativeTileRects(grid, f.view, f.proj, scene.shadingLights(), local);
+    for (const la::TileRect& r : rects)
+        if (!r.empty())
             out.largestRect =
                 std::max(out.largestRect, uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1));
-            const bool right = uint32_t(r.x1 + 1) < grid.tilesX, below = uint32_t(r.y1 + 1) < grid.tilesY;
-            out.cpuCorners += 1 + uint64_t(right) + uint64_t(below) + uint64_t(right && below);
-        }
+    out.cpuCorners = la::binCornerAtomics(rects, grid);
     la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews, sortBuckets);
     out.sizes = gpuBin.sizes();
     const uint32_t base = 7; // the runs need not start at word 0
