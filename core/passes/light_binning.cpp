@@ -44,10 +44,11 @@ uint32_t sortSize(uint32_t n) {
 
 GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                        const std::vector<uint32_t>& local, std::string owner, bool manyViews,
-                       uint32_t sortBuckets)
+                       const BinningTuning& tuning)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
       owner_(std::move(owner)), manyViews_(manyViews) {
     static_assert(kSortBuckets == TP_BIN_SORT_BUCKETS);
+    const uint32_t sortBuckets = tuning.sortBuckets;
     // bin_sort.comp's buckets: a power of two (a shift), at most 1,024 (shared memory).
     if (sortBuckets < 2 || sortBuckets > 1024 || (sortBuckets & (sortBuckets - 1)) != 0)
         throw std::logic_error("GpuBinning: the sort's buckets must be a power of two, 2 to 1,024");
@@ -85,6 +86,9 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                                        limits.maxComputeWorkGroupSize[0]}));
     spec.push_back({TP_BIN_SPEC_SORT_GROUP, sortGroup});
     spec.push_back({TP_BIN_SPEC_SORT_BUCKETS, sortBuckets});
+    const bool manyPerTile = uint64_t(locals_) >= uint64_t(TP_BIN_FILL_RESERVE_PER_TILE) * grid_.count();
+    fillReserve_ = tuning.fillReserve.value_or(!ctx_.isCpuDevice() && manyPerTile);
+    spec.push_back({TP_BIN_SPEC_FILL_RESERVE, fillReserve_ ? TP_BIN_FILL_RESERVE_WORDS : 1u});
     try {
         for (const char* shader : kShaders)
             pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));

@@ -32,6 +32,7 @@
 // after the view's frames: a view past the room or past the planned longest run is counted
 // there and the renderer is planned again (the contract's step 7), never shown cut.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,16 +55,24 @@ constexpr uint32_t kRunHeadroom = 2;
 // bin_sort.comp's buckets (TP_BIN_SORT_BUCKETS).
 constexpr uint32_t kSortBuckets = 256;
 
+// Choices the callers leave to the pass; tests force them.
+struct BinningTuning {
+    // The short runs' sort buckets (bin_sort.comp), a power of two; tests give few, to crowd them.
+    uint32_t sortBuckets = kSortBuckets;
+    // The fill's reserved shared memory (include/light_binning.h: TP_BIN_FILL_RESERVE_WORDS);
+    // unset: on a GPU with TP_BIN_FILL_RESERVE_PER_TILE lights a tile or more.
+    std::optional<bool> fillReserve;
+};
+
 class GpuBinning {
   public:
     // local: the point/spot light indices, ascending (la::LightClasses::local); owner: the
     // pipeline, for the ledger. The scene's uploaded view and lights are what it bins.
     // manyViews: the longest run the frame plans for (runBound) gets kRunHeadroom over the
-    // first view's. sortBuckets: the short runs' sort buckets (bin_sort.comp), a power of two;
-    // tests give few, to crowd them.
+    // first view's.
     GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                const std::vector<uint32_t>& local, std::string owner, bool manyViews = false,
-               uint32_t sortBuckets = kSortBuckets);
+               const BinningTuning& tuning = {});
     ~GpuBinning();
     GpuBinning(const GpuBinning&) = delete;
     GpuBinning& operator=(const GpuBinning&) = delete;
@@ -110,6 +119,8 @@ class GpuBinning {
     LightBins collect(FrameGraph& graph);
     // The last collected frame's atomics on the difference array (bin_rects.comp's corners).
     uint64_t cornerAtomics() const { return cornerAtomics_; }
+    // Whether the fill's workgroup reserves shared memory (BinningTuning::fillReserve).
+    bool fillReserved() const { return fillReserve_; }
     // Its runs the sort gave the bitonic network because a bucket was crowded (a statistic).
     uint32_t sortFallbacks() const { return sortFallbacks_; }
     // The counters light_bin_sizing_runs (plan-time readbacks: views followed add none) and
@@ -146,6 +157,7 @@ class GpuBinning {
     uint32_t runBound_ = 0; // from the first sizes(): whether long runs need bin_sort_step
     uint32_t sizingRuns_ = 0;
     bool manyViews_ = false;
+    bool fillReserve_ = false;
     Buffer inputs_, localList_;
     std::vector<uint8_t> inputBytes_; // what inputs_ holds
     Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()

@@ -13,6 +13,8 @@
 #include "lightassign/bin_common.glsl"
 #include "lightassign/bin_scan.glsl" // local_size_x = 64
 
+layout(constant_id = TP_BIN_SPEC_FILL_RESERVE) const uint kReserveWords = 1u;
+shared uint reserve[kReserveWords]; // include/light_binning.h: TP_BIN_FILL_RESERVE_WORDS
 shared uint pairsBefore[64];
 shared uvec4 spans[64]; // per light of the workgroup: first column, width, first row, light
 
@@ -37,6 +39,7 @@ void main() {
     const uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     const uint split = draw.TP_BIN_SPLIT, part = group % split;
     const uint lane = gl_LocalInvocationIndex, index = (group / split) * 64u + lane;
+    reserve[lane % kReserveWords] = 0u; // written and read, so that the compiler keeps it
     uint pairs = 0u;
     uvec4 span = uvec4(0u);
     if (index < bin.grid.w) {
@@ -56,7 +59,9 @@ void main() {
     spans[lane] = span;
     barrier();
     const uint W = bin.grid.x;
-    for (uint i = part * 64u + lane; i < total.x; i += 64u * split) {
+    // + 0: a word another lane wrote (the first 64 of the reserve; the rest is never touched)
+    const uint first = part * 64u + lane + reserve[((lane + 1u) & 63u) % kReserveWords];
+    for (uint i = first; i < total.x; i += 64u * split) {
         const uint owner = binPairOwner(i), j = i - pairsBefore[owner];
         const uvec4 s = spans[owner];
         binFillTile((s.z + j / s.y) * W + s.x + j % s.y, s.w);

@@ -142,6 +142,7 @@ struct Binned {
     uint32_t largestRect = 0;            // tiles of the largest rectangle, on the CPU
     uint64_t corners = 0, cpuCorners = 0; // difference-array atomics: counted, and on the CPU
     uint32_t fallbacks = 0;               // runs the sort gave its bitonic network
+    bool fillReserved = false;            // the fill's workgroup reserved shared memory
 };
 
 constexpr uint32_t kCanary = 0xC0FFEEu;
@@ -160,7 +161,7 @@ struct WordLayout {
 // layout goes to its own buffer, between two canaries.
 Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t tile,
            uint32_t frames = 2, uint32_t room = ~0u, bool manyViews = false,
-           const WordLayout& layout = {}, uint32_t sortBuckets = TP_BIN_SORT_BUCKETS) {
+           const WordLayout& layout = {}, const la::BinningTuning& tuning = {}) {
     Binned out;
     scene.setView(w, h, 1);
     const la::TileGrid grid = la::makeTileGrid(w, h, tile);
@@ -174,7 +175,8 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
             out.largestRect =
                 std::max(out.largestRect, uint32_t(r.x1 - r.x0 + 1) * uint32_t(r.y1 - r.y0 + 1));
     out.cpuCorners = la::binCornerAtomics(rects, grid);
-    la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews, sortBuckets);
+    la::GpuBinning gpuBin(ctx, scene, grid, local, "test", manyViews, tuning);
+    out.fillReserved = gpuBin.fillReserved();
     out.sizes = gpuBin.sizes();
     const uint32_t base = 7; // the runs need not start at word 0
     if (room == ~0u) room = uint32_t(out.sizes.slots);
@@ -223,13 +225,16 @@ Binned bin(GpuContext& ctx, SceneGpu& scene, uint32_t w, uint32_t h, uint32_t ti
 // Returns the tiles of the largest rectangle. fallbacks (when not -1): the runs the sort must
 // have given its bitonic network.
 uint32_t expectSameRuns(const Scene& scene, uint32_t w, uint32_t h, uint32_t tile,
-                        uint32_t minLongest = 1, uint32_t sortBuckets = TP_BIN_SORT_BUCKETS,
+                        uint32_t minLongest = 1, const la::BinningTuning& tuning = {},
                         int64_t fallbacks = -1) {
     auto ctx = makeValidatedContext();
     EXPECT_TRUE(ctx);
     if (!ctx) return 0;
     SceneGpu gpuScene(*ctx, scene);
-    Binned b = bin(*ctx, gpuScene, w, h, tile, 2, ~0u, false, {}, sortBuckets);
+    Binned b = bin(*ctx, gpuScene, w, h, tile, 2, ~0u, false, {}, tuning);
+    if (tuning.fillReserve) {
+        EXPECT_EQ(b.fillReserved, *tuning.fillReserve) << "the fill's variant";
+    }
     EXPECT_EQ(b.sizes.bound, b.cpu.bound);
     EXPECT_EQ(b.sizes.offsets, b.cpu.offsets);
     EXPECT_EQ(b.sizes.slots, b.cpu.slots);
@@ -275,6 +280,15 @@ TEST(GpuLightBinning, CourtyardPointsAndSpotsTile32) {
 TEST(GpuLightBinning, Floor2048Lights) {
     expectSameRuns(floorWith(2048), 160, 96, 16);
 }
+// The fill with its workgroup's reserved shared memory (a GPU's choice with many lights a
+// tile; lavapipe's never): the same runs. Large rectangles too (pairs split over workgroups).
+TEST(GpuLightBinning, Floor2048LightsFillReserved) {
+    expectSameRuns(floorWith(2048), 160, 96, 16, 1, {.fillReserve = true});
+}
+TEST(GpuLightBinning, LargeRectanglesFillReserved) {
+    expectSameRuns(aroundTheEye(1024), 256, 160, 8, 1, {.fillReserve = true});
+}
+
 // Rows and columns longer than the scans' workgroup (64): each invocation scans a share of
 // several tiles (12 x 150 tiles, then 150 x 12).
 TEST(GpuLightBinning, TallAndWideGridsScanInShares) {
@@ -287,7 +301,7 @@ TEST(GpuLightBinning, LightsAroundAndBehindTheEye) {
 // 1,000 lights in every tile: runs past the rank sort, by buckets in shared memory (four
 // lights a bucket: 256 over the range of 1,000 light indices).
 TEST(GpuLightBinning, WholeScreenRunsSortedInSharedMemory) {
-    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, TP_BIN_SORT_BUCKETS, 0);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, {}, 0);
 }
 // The same runs over 16 buckets: 64 lights a bucket (TP_BIN_BUCKET_MOST; a bucket spans a
 // power of two of the range's 10 bits), each ranked among its bucket's; over 8, 128 a bucket,
@@ -296,11 +310,11 @@ constexpr uint32_t kWholeScreenBucket16 = 1u << (std::bit_width(999u) - 4);
 constexpr uint32_t kWholeScreenBucket8 = 1u << (std::bit_width(999u) - 3);
 TEST(GpuLightBinning, WholeScreenRunsInFullBuckets) {
     static_assert(kWholeScreenBucket16 == TP_BIN_BUCKET_MOST);
-    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 16, 0);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, {.sortBuckets = 16}, 0);
 }
 TEST(GpuLightBinning, WholeScreenRunsInCrowdedBucketsSortedBitonic) {
     static_assert(kWholeScreenBucket8 > TP_BIN_BUCKET_MOST);
-    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, 8, 6);
+    expectSameRuns(wholeScreen(1000), 48, 32, 16, TP_BIN_RANK_SORT + 1, {.sortBuckets = 8}, 6);
 }
 // 4,500 lights in every one of 12 tiles: each run is sorted in place, one dispatch per step.
 TEST(GpuLightBinning, WholeScreenRunsLongerThanSharedMemory) {
