@@ -427,7 +427,8 @@ void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals, uint64_t 
                         "each light's index, position and range, once (at least)", lights});
     s.opWork.push_back({"light_binning", Kind::GlobalAtomics, Base::Items, 1.0, true,
                         "one to four atomicAdds per light that covers a tile: its rectangle's "
-                        "corners in the difference array",
+                        "corners in the difference array, or one per tile of a rectangle with "
+                        "fewer tiles than corners (the direct counts)",
                         double(corners)});
     s.opWork.push_back({"light_bin_fill", Kind::GlobalAtomics, Base::Items, 1.0, true,
                         "one atomicAdd per (light, tile) pair: its slot in the tile's run", pairs});

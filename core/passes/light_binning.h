@@ -4,12 +4,13 @@
 // compute passes, exactly equal (include/light_binning.h says why):
 //   light_binning (counts and offsets, 4 dispatches; a 5th for a word layout, publishWords:
 //                the transparent lists' masks, clustered Forward+'s slice rows)
-//     1. clear   the counts (a difference array)
+//     1. clear   the counts (a difference array) and the direct counts
 //     2. rects   per light, its conservative tile rectangle (slab ranges by bisection); its
 //                corners in the difference array, or a rectangle of fewer tiles than corners
 //                each tile in the direct counts (folded in by step 3); in the frame the
 //                rectangle, stored for the fill (8 bytes a light)
-//     3. rows    a workgroup per row of tiles: prefix sums along it
+//     3. rows    a workgroup per row of tiles: prefix sums along it, the direct counts
+//                folded in
 //     4. columns a workgroup per column: the counts (the bound) and their row-major exclusive
 //                prefix sum (the offsets: the compact layout) in one pass down the column
 //   light_bin_fill
@@ -60,7 +61,8 @@ struct BinningTuning {
     // The short runs' sort buckets (bin_sort.comp), a power of two; tests give few, to crowd them.
     uint32_t sortBuckets = kSortBuckets;
     // The fill's reserved shared memory (include/light_binning.h: TP_BIN_FILL_RESERVE_WORDS);
-    // unset: on a GPU with TP_BIN_FILL_RESERVE_PER_TILE lights a tile or more.
+    // unset: on a GPU with at least TP_BIN_FILL_RESERVE_PER_TILE point/spot lights per tile of
+    // the grid (their number over the tiles', not how many cover a tile).
     std::optional<bool> fillReserve;
 };
 
@@ -117,7 +119,8 @@ class GpuBinning {
     bool overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra = 0);
     // After a frame: its layout (bound, offsets, slots, maxBound) read back, for statistics.
     LightBins collect(FrameGraph& graph);
-    // The last collected frame's atomics on the difference array (bin_rects.comp's corners).
+    // The last collected frame's atomics on the counts (bin_rects.comp: a rectangle's corners in
+    // the difference array, or a small one's tiles in the direct counts; la::binCornerAtomics).
     uint64_t cornerAtomics() const { return cornerAtomics_; }
     // Whether the fill's workgroup reserves shared memory (BinningTuning::fillReserve).
     bool fillReserved() const { return fillReserve_; }
@@ -177,7 +180,7 @@ class GpuBinning {
 // light's index, position and range; light_bin_fill makes one returning atomicAdd per pair (its slot in the tile's run)
 // and writes the pair's light index; light_bin_sort reads and writes every run once (at least:
 // a run longer than shared memory is passed over a step at a time); light_binning's
-// `corners` atomics on the difference array (GpuBinning::cornerAtomics). The runs and the
+// `corners` atomics on the counts (GpuBinning::cornerAtomics). The runs and the
 // lights live outside the frame graph, so their bytes are added here. The sort's compares
 // are not counted: no ceiling measures them.
 void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals, uint64_t corners);

@@ -39,7 +39,9 @@ void main() {
     const uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     const uint split = draw.TP_BIN_SPLIT, part = group % split;
     const uint lane = gl_LocalInvocationIndex, index = (group / split) * 64u + lane;
-    reserve[lane % kReserveWords] = 0u; // written and read, so that the compiler keeps it
+    // Written whole and read at an index from the inputs, so that no compiler can drop or
+    // shrink it; each word by one lane (no race).
+    for (uint w = lane; w < kReserveWords; w += 64u) reserve[w] = 0u;
     uint pairs = 0u;
     uvec4 span = uvec4(0u);
     if (index < bin.grid.w) {
@@ -59,8 +61,7 @@ void main() {
     spans[lane] = span;
     barrier();
     const uint W = bin.grid.x;
-    // + 0: a word another lane wrote (the first 64 of the reserve; the rest is never touched)
-    const uint first = part * 64u + lane + reserve[((lane + 1u) & 63u) % kReserveWords];
+    const uint first = part * 64u + lane + reserve[(lane + bin.grid.w) % kReserveWords]; // + 0
     for (uint i = first; i < total.x; i += 64u * split) {
         const uint owner = binPairOwner(i), j = i - pairsBefore[owner];
         const uvec4 s = spans[owner];

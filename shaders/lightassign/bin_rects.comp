@@ -4,8 +4,9 @@
 // test, in the same float operations, as la::conservativeTileRects (include/light_binning.h)
 // - and its four corners in the tiles' difference array (integer atomics: the counts do not
 // depend on the order). Corners past the last column or row are left out: they would only
-// change sums outside the grid. A rectangle of fewer tiles than it has corners (1x1, 1x2,
-// 1x3 and their transposes inside the grid) adds 1 to each of its tiles in the direct counts
+// change sums outside the grid. A rectangle of fewer tiles than it has corners inside the grid
+// (1x1, 1x2, 1x3 and their transposes away from the last column and row; at that edge, with
+// fewer corners, a 1x1) adds 1 to each of its tiles in the direct counts
 // instead (the second half of the counts; bin_scan_rows.comp folds them in): fewer atomics on
 // scattered words, the pass's largest cost with many small lights (H200, 1,000,000 lights:
 // light_binning 0.213 -> 0.164 ms, docs/clustered.md). In the frame it also stores the rectangle for the fill.

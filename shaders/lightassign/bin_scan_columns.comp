@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // light_binning, step 4: a workgroup per column of tiles; with step 3's R (row prefix sums of
-// the difference array), E (row prefix sums of R, exclusive) and rowSums (R's sum per row):
+// the difference array, plus C(x, y) - C(x, y - 1) of the direct counts), E (row prefix sums of R, exclusive) and rowSums (R's sum per row):
 //   counts(x, y)  = sum over y' <= y of R(x, y')      how many rectangles cover the tile
 //   rowTotal(y)   = sum over y' <= y of rowSums(y')    the counts' sum over row y
 //   offsets(x, y) = sum over y' < y of rowTotal(y')   the tiles of the rows above

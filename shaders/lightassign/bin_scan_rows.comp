@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // light_binning, step 3: a workgroup per row of tiles. Along the row, the difference array's
-// inclusive prefix sum R (into counts) and R's exclusive prefix sum E (into offsets), and R's
+// inclusive prefix sum R, with the direct counts folded in (below; into counts) and R's exclusive prefix sum E (into offsets), and R's
 // sum over the row (into rowSums): what step 4 needs to finish counts and offsets going down
 // the columns (bin_scan_columns.comp says how). The direct counts C (bin_rects.comp's small
 // rectangles) are a difference array of their own, C(x, y) - C(x - 1, y) - C(x, y - 1) +

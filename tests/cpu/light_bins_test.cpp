@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/lightassign/compact_layout.h"
+#include "core/lightassign/corner_atomics.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/lightassign/tile_candidates.h"
@@ -48,6 +49,38 @@ TEST(LightBins, EqualTheirPartsAndBuildCandidatesOnlyWhenAsked) {
     EXPECT_TRUE(noCand.candidates.empty());
     EXPECT_EQ(noCand.offsets, layout.offsets);
     EXPECT_EQ(noCand.maxBound, bins.maxBound);
+}
+
+// bin_rects.comp's atomics, rectangle by rectangle on a 4 x 4 grid: the corners inside the
+// grid, or the tiles where a rectangle has fewer tiles than corners.
+TEST(LightBins, CornerAtomicsAreTheFewerOfCornersAndTiles) {
+    const la::TileGrid g = la::makeTileGrid(64, 64, 16);
+    ASSERT_EQ(g.tilesX, 4u);
+    ASSERT_EQ(g.tilesY, 4u);
+    struct Case {
+        la::TileRect r;
+        uint64_t atomics;
+    };
+    const Case cases[] = {
+        {{1, 1, 1, 1}, 1}, // 1x1 inside: 4 corners, 1 tile
+        {{3, 3, 3, 3}, 1}, // the last tile: 1 corner
+        {{3, 3, 1, 1}, 1}, // 1x1 on the last column: 2 corners, 1 tile
+        {{0, 2, 1, 1}, 3}, // 1x3 inside: 4 corners, 3 tiles
+        {{1, 2, 1, 2}, 4}, // 2x2 inside: 4 and 4
+        {{0, 3, 1, 1}, 2}, // a whole row: 2 corners (first tile, below), 4 tiles
+        {{0, 3, 0, 3}, 1}, // the whole grid: its first tile
+        {{1, 2, 0, 3}, 2}, // two whole columns: 2 corners, 8 tiles
+        {{2, 1, 0, 0}, 0}, // empty
+    };
+    uint64_t sum = 0;
+    std::vector<la::TileRect> all;
+    for (const Case& c : cases) {
+        EXPECT_EQ(la::binCornerAtomics({c.r}, g), c.atomics)
+            << c.r.x0 << ".." << c.r.x1 << " x " << c.r.y0 << ".." << c.r.y1;
+        sum += c.atomics;
+        all.push_back(c.r);
+    }
+    EXPECT_EQ(la::binCornerAtomics(all, g), sum);
 }
 
 TEST(LightBins, NoLightsGiveEmptyBins) {

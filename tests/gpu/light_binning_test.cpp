@@ -140,7 +140,7 @@ struct Binned {
     uint32_t wordCanaries[2] = {};       // the words buffer's words before and after the layout
     bool overflowed = false;             // GpuBinning::overflowed after the frames
     uint32_t largestRect = 0;            // tiles of the largest rectangle, on the CPU
-    uint64_t corners = 0, cpuCorners = 0; // difference-array atomics: counted, and on the CPU
+    uint64_t corners = 0, cpuCorners = 0; // atomics on the counts: from the GPU's rectangles, the CPU's
     uint32_t fallbacks = 0;               // runs the sort gave its bitonic network
     bool fillReserved = false;            // the fill's workgroup reserved shared memory
 };
