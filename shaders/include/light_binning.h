@@ -74,8 +74,8 @@ namespace tp::gpu {
 #define TP_BIN_FILL_GROUPS_CPU 8u
 // Shared memory the fill's workgroup reserves and does not need (a specialization constant,
 // in words): on the H200, with many lights a tile, a 64-lane workgroup holding 4 KiB more fills
-// faster (1,000,000 lights: light_bin_fill 0.219 -> 0.184 ms; reserving 1 KiB 0.208, 8 KiB 0.178), with
-// fewer it does not (65,536 lights: 0.091 -> 0.090; 1,024: 0.030 -> 0.032). Fewer workgroups
+// faster (1,000,000 lights: light_bin_fill 0.219 -> 0.184 ms; reserving 1 KiB 0.208, 8 KiB
+// 0.178), with fewer it does not (65,536 lights: 0.091 -> 0.090; 1,024: 0.030 -> 0.032). Fewer workgroups
 // share a multiprocessor, or its split between L1 and shared memory moves: which of the two
 // was not measured (docs/clustered.md). Reserved on a GPU from TP_BIN_FILL_RESERVE_PER_TILE
 // lights a tile.

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// light_binning, step 1: every tile's count (the difference array, the direct counts) to 0, and the longest
-// run (bin_scan_columns.comp takes the maximum).
+// light_binning, step 1: every tile's count (the difference array, the direct counts) to 0,
+// and the longest run (bin_scan_columns.comp takes the maximum).
 #include "lightassign/bin_common.glsl"
 
 layout(local_size_x = 64) in;

@@ -86,19 +86,6 @@ ivec4 binRect(uint k) {
     return rect;
 }
 
-// A non-empty rectangle's four corners in the difference array (+1 at its first tile, -1 past
-// its last column and past its last row, +1 past both), as tile indices; 0xffffffff for a
-// corner past the last column or row: it would only change sums outside the grid. The order
-// matches kBinCornerSigns.
-uvec4 binRectCorners(ivec4 rect) {
-    const uint W = bin.grid.x, H = bin.grid.y;
-    const uint x0 = uint(rect.x), x1 = uint(rect.y) + 1u, y0 = uint(rect.z), y1 = uint(rect.w) + 1u;
-    const uint none = 0xffffffffu;
-    return uvec4(y0 * W + x0, x1 < W ? y0 * W + x1 : none, y1 < H ? y1 * W + x0 : none,
-                 x1 < W && y1 < H ? y1 * W + x1 : none);
-}
-const uvec4 kBinCornerSigns = uvec4(1u, 0xffffffffu, 0xffffffffu, 1u); // -1 modulo 2^32
-
 // Tiles a rectangle covers (0 when empty).
 uint binRectArea(ivec4 rect) {
     return rect.x > rect.y || rect.z > rect.w ? 0u : uint(rect.y - rect.x + 1) * uint(rect.w - rect.z + 1);
