@@ -47,7 +47,7 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
                        const BinningTuning& tuning)
     : ctx_(ctx), scene_(scene), grid_(grid), locals_(uint32_t(local.size())),
       owner_(std::move(owner)), manyViews_(manyViews) {
-    static_assert(kSortBuckets == TP_BIN_SORT_BUCKETS);
+    static_assert(kSortBuckets == TP_BIN_SORT_BUCKETS && kSharedSortWords == TP_BIN_SHARED_SORT);
     const uint32_t sortBuckets = tuning.sortBuckets;
     // bin_sort.comp's buckets: a power of two (a shift), at most 1,024 (shared memory).
     if (sortBuckets < 2 || sortBuckets > 1024 || (sortBuckets & (sortBuckets - 1)) != 0)
@@ -89,6 +89,8 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
     const bool manyPerTile = uint64_t(locals_) >= uint64_t(TP_BIN_FILL_RESERVE_PER_TILE) * grid_.count();
     fillReserve_ = tuning.fillReserve.value_or(!ctx_.isCpuDevice() && manyPerTile);
     spec.push_back({TP_BIN_SPEC_FILL_RESERVE, fillReserve_ ? TP_BIN_FILL_RESERVE_WORDS : 1u});
+    spec.push_back({TP_BIN_SPEC_SORT_SHARED, sharedRun_});
+    spec_ = spec;
     try {
         for (const char* shader : kShaders)
             pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));
@@ -192,11 +194,28 @@ LightBins GpuBinning::sizes() {
     bins.slots = makeCompactLayout(bins.bound).slots;
     if (!bins.bound.empty())
         bins.maxBound = *std::max_element(bins.bound.begin(), bins.bound.end());
-    if (sizingRuns_++ == 0) // the frame's longest run: planned once, checked after each view
+    if (sizingRuns_++ == 0) { // the frame's longest run: planned once, checked after each view
         runBound_ = manyViews_ ? std::min(locals_, std::max(1u, bins.maxBound) * kRunHeadroom)
                                : bins.maxBound;
+        sizeSortRun();
+    }
     if (target_) bind(frame_, target_); // a later view's sizing: the frame's buffers again
     return bins;
+}
+
+// bin_sort.comp's run in shared memory sized to the planned longest run (include/
+// light_binning.h: TP_BIN_SPEC_SORT_SHARED): its pipeline made again at the first sizing, before
+// any frame is recorded.
+void GpuBinning::sizeSortRun() {
+    const uint32_t words =
+        std::clamp(sortSize(runBound_), TP_BIN_SORT_SHARED_LEAST, TP_BIN_SHARED_SORT);
+    if (words == sharedRun_) return;
+    sharedRun_ = words;
+    for (SpecConstant& c : spec_)
+        if (c.id == TP_BIN_SPEC_SORT_SHARED) c.value = words;
+    VkPipeline sort = createComputePipeline(ctx_, kShaders[kSort], spec_, layout_, &set_);
+    vkDestroyPipeline(ctx_.device, pipelines_[kSort], nullptr);
+    pipelines_[kSort] = sort;
 }
 
 bool GpuBinning::overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra) {
@@ -210,7 +229,10 @@ bool GpuBinning::overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra) {
     // batches. So a single view's exact bound is not outgrown by a view one light longer.
     const auto sorted = [](uint32_t n) { return n <= TP_BIN_SHARED_SORT ? 0u : sortSize(n); };
     const auto batches = [&](uint64_t n) { return (extra + n + batch - 1) / std::max(batch, 1u); };
-    const bool longer = sorted(run) > sorted(runBound_) || batches(run) > batches(runBound_);
+    // A run past the sort's shared run, which only the block sort (past TP_BIN_SHARED_SORT)
+    // would sort, is longer too.
+    const bool pastShared = run > sharedRun_ && sharedRun_ < TP_BIN_SHARED_SORT;
+    const bool longer = pastShared || sorted(run) > sorted(runBound_) || batches(run) > batches(runBound_);
     return need[TP_BIN_NEED_SLOTS] > room_ || longer ||
            (words_.buffer && need[TP_BIN_NEED_WORDS] > words_.room);
 }

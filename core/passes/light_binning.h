@@ -39,6 +39,7 @@
 
 #include "core/gpu/descriptors.h"
 #include "core/gpu/frame_graph.h"
+#include "core/gpu/pipelines.h"
 #include "core/gpu/resources.h"
 #include "core/lightassign/light_bins.h"
 #include "core/lightassign/tile_grid.h"
@@ -55,6 +56,8 @@ namespace tp::la {
 constexpr uint32_t kRunHeadroom = 2;
 // bin_sort.comp's buckets (TP_BIN_SORT_BUCKETS).
 constexpr uint32_t kSortBuckets = 256;
+// The longest run bin_sort.comp sorts in shared memory (TP_BIN_SHARED_SORT).
+constexpr uint32_t kSharedSortWords = 4096;
 
 // Choices the callers leave to the pass; tests force them.
 struct BinningTuning {
@@ -122,6 +125,9 @@ class GpuBinning {
     // The last collected frame's atomics on the counts (bin_rects.comp: a rectangle's corners in
     // the difference array, or a small one's tiles in the direct counts; la::binCornerAtomics).
     uint64_t cornerAtomics() const { return cornerAtomics_; }
+    // The longest run the short-run sort holds in shared memory: runBound() rounded up to a
+    // power of two, 256 to 4,096 (kSharedSortWords), from the first sizes().
+    uint32_t sortSharedRun() const { return sharedRun_; }
     // Whether the fill's workgroup reserves shared memory (BinningTuning::fillReserve).
     bool fillReserved() const { return fillReserve_; }
     // Its runs the sort gave the bitonic network because a bucket was crowded (a statistic).
@@ -139,6 +145,7 @@ class GpuBinning {
     uint64_t countCornerAtomics(const std::vector<uint8_t>& rectBytes) const;
     void bind(const Bufs& b, VkBuffer target);
     void uploadInputs(); // the grid and the slab planes of the current projection
+    void sizeSortRun();  // the sort's shared run for runBound_ (its pipeline again)
     void recordSizing(VkCommandBuffer cmd, bool storeRects);
     void recordFill(VkCommandBuffer cmd);
     void recordSort(VkCommandBuffer cmd);
@@ -161,6 +168,8 @@ class GpuBinning {
     uint32_t sizingRuns_ = 0;
     bool manyViews_ = false;
     bool fillReserve_ = false;
+    uint32_t sharedRun_ = kSharedSortWords; // bin_sort.comp's run in shared memory
+    std::vector<SpecConstant> spec_;                // the pipelines' specialization
     Buffer inputs_, localList_;
     std::vector<uint8_t> inputBytes_; // what inputs_ holds
     Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()

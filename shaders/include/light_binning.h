@@ -88,6 +88,14 @@ namespace tp::gpu {
 // shared memory (bin_sort_local.comp), a dispatch per step only across blocks
 // (bin_sort_step.comp).
 #define TP_BIN_SHARED_SORT 4096u
+// bin_sort.comp's run in shared memory, sized to the frame's longest planned run (a
+// specialization constant: the power of two at or above GpuBinning::runBound, at most
+// TP_BIN_SHARED_SORT, at least TP_BIN_SORT_SHARED_LEAST): 16 KiB a workgroup held fewer of them
+// on a multiprocessor than the sort could use (H200, 1920x1080: light_bin_sort 0.103 -> 0.061
+// ms at 65,536 lights, runs of up to 1,274 in 2,048 words; 0.078 -> 0.032 at 1,024 lights, 512
+// words; docs/clustered.md).
+#define TP_BIN_SPEC_SORT_SHARED 15
+#define TP_BIN_SORT_SHARED_LEAST 256u
 // Invocations sorting one tile's run (bin_sort.comp's workgroup size, a specialization
 // constant): 256 on a GPU, where the short runs' sort by rank and each bitonic step then take
 // one or two elements a lane (H100, 1920x1080: light_bin_sort 0.35 -> 0.17 ms at 65,536

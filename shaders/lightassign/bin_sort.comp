@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // light_bin_sort (step 6): each tile's run sorted ascending, a workgroup per tile, runs of 2
-// to TP_BIN_SHARED_SORT lights (longer ones: bin_sort_local.comp and bin_sort_step.comp).
+// to kSharedRun lights (the frame's longest, include/light_binning.h; longer ones than
+// TP_BIN_SHARED_SORT: bin_sort_local.comp and bin_sort_step.comp).
 // A run holds each light once, so its order needs no compare network:
 // - up to TP_BIN_RANK_SORT lights, each light goes to its rank (how many of the run are
 //   smaller): one barrier, n compares a light;
@@ -22,7 +23,8 @@ layout(local_size_x_id = TP_BIN_SPEC_SORT_GROUP) in; // TP_BIN_SORT_GROUP_GPU or
 #define TP_BIN_SORT_GROUP gl_WorkGroupSize.x
 layout(constant_id = TP_BIN_SPEC_SORT_BUCKETS) const uint kBuckets = TP_BIN_SORT_BUCKETS;
 
-shared uint run[TP_BIN_SHARED_SORT];
+layout(constant_id = TP_BIN_SPEC_SORT_SHARED) const uint kSharedRun = TP_BIN_SHARED_SORT;
+shared uint run[kSharedRun];
 shared uint bucketStart[kBuckets + 1u]; // exclusive prefix sum of the bucket sizes, then n
 shared uint bucketFill[kBuckets];       // each bucket's size, then its cursor
 shared uint laneSum[TP_BIN_SORT_GROUP_GPU];
@@ -94,7 +96,7 @@ void bitonicSort(uint n, uint lane) {
 void main() {
     const uint t = gl_WorkGroupID.y * bin.grid.x + gl_WorkGroupID.x;
     const uint first = offsets[t], n = offsets[t + 1u] - first, lane = gl_LocalInvocationIndex;
-    if (n < 2u || n > TP_BIN_SHARED_SORT) return; // uniform over the workgroup
+    if (n < 2u || n > kSharedRun) return; // uniform over the workgroup
     const uint base = draw.TP_BIN_BASE + first;
     if (n <= TP_BIN_RANK_SORT) {
         for (uint i = lane; i < n; i += TP_BIN_SORT_GROUP) run[i] = target[base + i];

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <memory>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -365,41 +366,73 @@ TEST(GpuLightBinning, ViewPastTheRoomIsCutAndCounted) {
 
 // A view whose longest run is past the one the frame was recorded for (the sort's steps, the
 // consumers' batches) is an overflow too: planned for the first view's, lights moved closer.
-TEST(GpuLightBinning, RunLongerThanPlannedIsCounted) {
-    auto ctx = makeValidatedContext();
-    ASSERT_TRUE(ctx);
+// Plans a single view of the courtyard's 512 lights at 128x72 (tiles of `tile`), then moves
+// every light to the eye's target, so that the tiles there hold every light, and runs a frame
+// of that view. Returns the binning, its graph and the first view's sizes.
+struct LongerRun {
+    std::unique_ptr<GpuContext> ctx;
+    std::unique_ptr<SceneGpu> scene;
+    std::unique_ptr<la::GpuBinning> bin;
+    std::unique_ptr<FrameGraph> graph;
+    Buffer target;
+    la::LightBins first;
+    uint32_t locals = 0;
+};
+void runLongerThanPlanned(LongerRun& r, uint32_t tile) {
+    r.ctx = makeValidatedContext();
+    ASSERT_TRUE(r.ctx);
     Scene scene = courtyard(512);
-    SceneGpu gpuScene(*ctx, scene);
-    gpuScene.setView(128, 72, 1);
-    const la::TileGrid grid = la::makeTileGrid(128, 72, 16);
-    const std::vector<uint32_t> local = la::classifyLights(gpuScene.shadingLights()).local;
-    la::GpuBinning gpuBin(*ctx, gpuScene, grid, local, "test");
-    const la::LightBins first = gpuBin.sizes();
-    EXPECT_EQ(gpuBin.runBound(), first.maxBound); // a single view: exactly its need
-    ASSERT_LT(first.maxBound, local.size());
-    // Every light at the eye's target: the tiles there hold every light.
+    r.scene = std::make_unique<SceneGpu>(*r.ctx, scene);
+    r.scene->setView(128, 72, 1);
+    const la::TileGrid grid = la::makeTileGrid(128, 72, tile);
+    const std::vector<uint32_t> local = la::classifyLights(r.scene->shadingLights()).local;
+    r.locals = uint32_t(local.size());
+    r.bin = std::make_unique<la::GpuBinning>(*r.ctx, *r.scene, grid, local, "test");
+    r.first = r.bin->sizes();
+    EXPECT_EQ(r.bin->runBound(), r.first.maxBound); // a single view: exactly its need
+    EXPECT_EQ(r.bin->sortSharedRun(),
+              std::clamp(std::bit_ceil(r.first.maxBound), TP_BIN_SORT_SHARED_LEAST, TP_BIN_SHARED_SORT));
+    ASSERT_LT(r.first.maxBound, local.size());
     for (Light& l : scene.lights)
         l.position = scene.camera.target;
-    gpuScene.setLights(scene.lights);
-    gpuScene.setView(128, 72, 1);
+    r.scene->setLights(scene.lights);
+    r.scene->setView(128, 72, 1);
     const uint64_t room = uint64_t(local.size()) * grid.count();
     std::vector<uint32_t> zeros(room + grid.count() + 1, 0);
-    Buffer target = createBufferWithData(*ctx, zeros.data(), zeros.size() * 4,
-                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                         {"test", "", "runs", "the runs, the offsets"});
-    FrameGraph graph(*ctx, "test", 128, 72);
-    gpuBin.plan(graph);
-    graph.compile();
-    gpuBin.prepare(graph, target.buffer, 0, room, room);
-    gpuBin.followView();
-    recordAndSubmit(*ctx, graph, 1);
-    EXPECT_TRUE(gpuBin.overflowed(graph, 1)); // a consumer taking a light per dispatch
+    r.target = createBufferWithData(*r.ctx, zeros.data(), zeros.size() * 4,
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                    {"test", "", "runs", "the runs, the offsets"});
+    r.graph = std::make_unique<FrameGraph>(*r.ctx, "test", 128, 72);
+    r.bin->plan(*r.graph);
+    r.graph->compile();
+    r.bin->prepare(*r.graph, r.target.buffer, 0, room, room);
+    r.bin->followView();
+    recordAndSubmit(*r.ctx, *r.graph, 1);
+}
+
+TEST(GpuLightBinning, RunLongerThanPlannedIsCounted) {
+    LongerRun r;
+    runLongerThanPlanned(r, 16);
+    ASSERT_TRUE(r.graph);
+    ASSERT_GE(r.bin->sortSharedRun(), r.locals) << "the case below needs the run to fit";
+    EXPECT_TRUE(r.bin->overflowed(*r.graph, 1)); // a consumer taking a light per dispatch
     // One taking every light in one dispatch records the same for the longer run (and the sort
     // stays in shared memory): no replan for it.
-    EXPECT_FALSE(gpuBin.overflowed(graph, uint32_t(local.size())));
-    EXPECT_EQ(gpuBin.collect(graph).maxBound, uint32_t(local.size()));
-    EXPECT_EQ(gpuBin.sizingRuns(), 1u);
-    expectNoValidationMessages(*ctx);
+    EXPECT_FALSE(r.bin->overflowed(*r.graph, r.locals));
+    EXPECT_EQ(r.bin->collect(*r.graph).maxBound, r.locals);
+    EXPECT_EQ(r.bin->sizingRuns(), 1u);
+    expectNoValidationMessages(*r.ctx);
+}
+// The same with tiles of 8: the first view's runs fit the least shared run (256), the moved
+// lights' 512 do not, so even a consumer of every light in one dispatch plans again (its runs
+// were left unsorted).
+TEST(GpuLightBinning, RunPastTheSortsSharedRunIsCounted) {
+    LongerRun r;
+    runLongerThanPlanned(r, 8);
+    ASSERT_TRUE(r.graph);
+    ASSERT_LT(r.bin->sortSharedRun(), r.locals);
+    EXPECT_TRUE(r.bin->overflowed(*r.graph, r.locals));
+    expectNoValidationMessages(*r.ctx);
 }
 
 // Clustered Forward+'s slice rows (ceil(run / 32) words a slice, `slices` rows a tile), laid
