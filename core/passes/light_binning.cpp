@@ -203,9 +203,9 @@ LightBins GpuBinning::sizes() {
     return bins;
 }
 
-// bin_sort.comp's run in shared memory sized to the planned longest run (include/
-// light_binning.h: TP_BIN_SPEC_SORT_SHARED): its pipeline made again at the first sizing, before
-// any frame is recorded.
+// bin_sort.comp's run in shared memory sized to the planned longest run
+// (include/light_binning.h: TP_BIN_SPEC_SORT_SHARED): its pipeline made again at the first
+// sizing, before any frame is recorded.
 void GpuBinning::sizeSortRun() {
     const uint32_t words =
         std::clamp(sortSize(runBound_), TP_BIN_SORT_SHARED_LEAST, TP_BIN_SHARED_SORT);

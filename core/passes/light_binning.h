@@ -169,7 +169,7 @@ class GpuBinning {
     bool manyViews_ = false;
     bool fillReserve_ = false;
     uint32_t sharedRun_ = kSharedSortWords; // bin_sort.comp's run in shared memory
-    std::vector<SpecConstant> spec_;                // the pipelines' specialization
+    std::vector<SpecConstant> spec_;        // the pipelines' specialization
     Buffer inputs_, localList_;
     std::vector<uint8_t> inputBytes_; // what inputs_ holds
     Bufs frame_{};                    // prepare(): the frame's buffers, bound again after sizes()
