@@ -11,7 +11,6 @@
 #include "core/gpu/vk_check.h"
 #include "core/gpuscene/scene_gpu.h"
 #include "core/lightassign/compact_layout.h"
-#include "core/lightassign/corner_atomics.h"
 #include "core/lightassign/tile_bound.h"
 #include "core/renderer/renderer.h"
 #include "include/light_binning.h"
@@ -31,13 +30,6 @@ void stepBarrier(VkCommandBuffer cmd) {
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-}
-
-uint32_t sortSize(uint32_t n) {
-    uint32_t s = 1;
-    while (s < n)
-        s <<= 1;
-    return s;
 }
 
 } // namespace
@@ -92,8 +84,10 @@ GpuBinning::GpuBinning(GpuContext& ctx, SceneGpu& scene, const TileGrid& grid,
     spec.push_back({TP_BIN_SPEC_SORT_SHARED, sharedRun_});
     spec_ = spec;
     try {
-        for (const char* shader : kShaders)
-            pipelines_.push_back(createComputePipeline(ctx_, shader, spec, layout_, &set_));
+        for (int step = 0; step < kSteps; ++step) // the sort's at the first sizing (sizeSortRun)
+            pipelines_.push_back(step == kSort ? VK_NULL_HANDLE
+                                               : createComputePipeline(ctx_, kShaders[step], spec,
+                                                                       layout_, &set_));
     } catch (...) {
         destroyPipelines(); // no destructor runs for an object whose constructor throws
         throw;
@@ -204,18 +198,13 @@ LightBins GpuBinning::sizes() {
 }
 
 // bin_sort.comp's run in shared memory sized to the planned longest run
-// (include/light_binning.h: TP_BIN_SPEC_SORT_SHARED): its pipeline made again at the first
+// (include/light_binning.h: TP_BIN_SPEC_SORT_SHARED): its pipeline is made here, at the first
 // sizing, before any frame is recorded.
 void GpuBinning::sizeSortRun() {
-    const uint32_t words =
-        std::clamp(sortSize(runBound_), TP_BIN_SORT_SHARED_LEAST, TP_BIN_SHARED_SORT);
-    if (words == sharedRun_) return;
-    sharedRun_ = words;
+    sharedRun_ = std::clamp(std::bit_ceil(runBound_), TP_BIN_SORT_SHARED_LEAST, TP_BIN_SHARED_SORT);
     for (SpecConstant& c : spec_)
-        if (c.id == TP_BIN_SPEC_SORT_SHARED) c.value = words;
-    VkPipeline sort = createComputePipeline(ctx_, kShaders[kSort], spec_, layout_, &set_);
-    vkDestroyPipeline(ctx_.device, pipelines_[kSort], nullptr);
-    pipelines_[kSort] = sort;
+        if (c.id == TP_BIN_SPEC_SORT_SHARED) c.value = sharedRun_;
+    pipelines_[kSort] = createComputePipeline(ctx_, kShaders[kSort], spec_, layout_, &set_);
 }
 
 bool GpuBinning::overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra) {
@@ -225,9 +214,9 @@ bool GpuBinning::overflowed(FrameGraph& graph, uint32_t batch, uint32_t extra) {
     std::memcpy(need, bytes.data(), sizeof(need));
     const uint32_t run = need[TP_BIN_NEED_RUN];
     // A longer run than planned matters only where the recording would differ: the long-run
-    // sort's steps (runs past shared memory, up to sortSize(runBound)) and the consumer's
+    // sort's steps (runs past shared memory, up to std::bit_ceil(runBound)) and the consumer's
     // batches. So a single view's exact bound is not outgrown by a view one light longer.
-    const auto sorted = [](uint32_t n) { return n <= TP_BIN_SHARED_SORT ? 0u : sortSize(n); };
+    const auto sorted = [](uint32_t n) { return n <= TP_BIN_SHARED_SORT ? 0u : std::bit_ceil(n); };
     const auto batches = [&](uint64_t n) { return (extra + n + batch - 1) / std::max(batch, 1u); };
     // A run past the sort's shared run, which only the block sort (past TP_BIN_SHARED_SORT)
     // would sort, is longer too.
@@ -252,18 +241,6 @@ LightBins GpuBinning::collect(FrameGraph& graph) {
     std::memcpy(&sortFallbacks_, bytes.data() + (size_t(tiles) + 1 + TP_BIN_NEED_FALLBACKS) * 4, 4);
     cornerAtomics_ = countCornerAtomics(readbackBuffer(ctx_, graph.buffer(rects_)));
     return bins;
-}
-
-// The frame's rectangles (read back) to bin_rects.comp's atomics.
-uint64_t GpuBinning::countCornerAtomics(const std::vector<uint8_t>& rectBytes) const {
-    std::vector<TileRect> rects(std::min<size_t>(locals_, rectBytes.size() / 8));
-    for (size_t k = 0; k < rects.size(); ++k) {
-        glm::uvec2 packed;
-        std::memcpy(&packed, rectBytes.data() + k * 8, 8);
-        const glm::ivec4 r = gpu::binUnpackRect(packed); // x0, x1, y0, y1
-        rects[k] = {r.x, r.y, r.z, r.w};
-    }
-    return binCornerAtomics(rects, grid_);
 }
 
 void GpuBinning::plan(FrameGraph& graph) {
@@ -398,6 +375,7 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
 
 // Step 6: every run sorted in place (pass light_bin_sort).
 void GpuBinning::recordSort(VkCommandBuffer cmd) {
+    if (!pipelines_[kSort]) throw std::logic_error("GpuBinning: a frame before sizes()");
     stepBarrier(cmd); // the fill's target writes (outside the graph)
     const gpu::DrawPush push{0, base_, 0, 0};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[kSort]);
@@ -408,7 +386,7 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
         // Steps within a block in shared memory (bin_sort_local), one dispatch for all the
         // steps of a merge that stay in the block; a dispatch per step only for the distances
         // of a block or more (bin_sort_step): for a run of 16,384, 6 dispatches, not 105.
-        const uint32_t size = sortSize(runBound_), blocks = size / TP_BIN_SHARED_SORT;
+        const uint32_t size = std::bit_ceil(runBound_), blocks = size / TP_BIN_SHARED_SORT;
         const uint32_t chunks = (size / 2 + 64 * TP_BIN_STEP_PAIRS - 1) / (64 * TP_BIN_STEP_PAIRS);
         auto local = [&](uint32_t kFrom, uint32_t kTo) {
             stepBarrier(cmd);
@@ -432,36 +410,6 @@ void GpuBinning::recordSort(VkCommandBuffer cmd) {
     // The culling (compute) and Forward+'s shading (fragment: the same buffer) read it next.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
-}
-
-void GpuBinning::addStats(RendererStats& s, uint64_t slots) const {
-    s.counters.push_back({"light_bin_sizing_runs", double(sizingRuns_)});
-    s.counters.push_back({"light_bin_sort_fallbacks", double(sortFallbacks_)});
-    addBinningWork(s, slots, locals_, cornerAtomics_);
-}
-
-void addBinningWork(RendererStats& s, uint64_t slots, uint32_t locals, uint64_t corners) {
-    using Kind = PassOpWork::Kind;
-    using Base = PassLightWork::Base;
-    const double pairs = double(slots), lights = double(locals);
-    // binRect reads a light's index and its position and range (bin_common.glsl), 20 bytes.
-    s.opWork.push_back({"light_binning", Kind::BytesRead, Base::Items, 20.0, false,
-                        "each light's index, position and range, once (at least)", lights});
-    s.opWork.push_back({"light_binning", Kind::GlobalAtomics, Base::Items, 1.0, true,
-                        "one to four atomicAdds per light that covers a tile: its rectangle's "
-                        "corners in the difference array, or one per tile of a rectangle with "
-                        "fewer tiles than corners (the direct counts)",
-                        double(corners)});
-    s.opWork.push_back({"light_bin_fill", Kind::GlobalAtomics, Base::Items, 1.0, true,
-                        "one atomicAdd per (light, tile) pair: its slot in the tile's run", pairs});
-    s.opWork.push_back({"light_bin_fill", Kind::BytesWritten, Base::Items, 4.0, true,
-                        "each pair's light index into its run", pairs});
-    s.opWork.push_back({"light_bin_fill", Kind::BytesRead, Base::Items, 4.0, false,
-                        "each light's index (at least: once per workgroup and dispatch that shares it)",
-                        lights});
-    for (Kind k : {Kind::BytesRead, Kind::BytesWritten})
-        s.opWork.push_back({"light_bin_sort", k, Base::Items, 4.0, false,
-                            "every run once (at least: a long run by steps)", pairs});
 }
 
 } // namespace tp::la
