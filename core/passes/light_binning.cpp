@@ -364,7 +364,8 @@ void GpuBinning::recordFill(VkCommandBuffer cmd) {
     const uint32_t rows = std::max(1u, TP_BIN_FILL_BUDGET / std::max(1u, grid_.tilesX));
     const uint32_t groups = (locals_ + 63) / 64;
     const uint32_t target = ctx_.isCpuDevice() ? TP_BIN_FILL_GROUPS_CPU : TP_BIN_FILL_GROUPS_GPU;
-    const uint32_t split = groups == 0 ? 1 : std::max(1u, target / groups);
+    const uint32_t split =
+        groups == 0 ? 1 : std::clamp(target / groups, 1u, uint32_t(TP_BIN_FILL_SPLIT_MAX));
     for (uint32_t first = 0; first < grid_.tilesY; first += rows) {
         if (first > 0)
             stepBarrier(cmd); // the same buffers (the validation layer cannot see the rows differ)

@@ -65,13 +65,16 @@ namespace tp::gpu {
 #define TP_BIN_STORE_RECTS materialIndex
 // The fill: how many workgroups share each 64 lights' (light, tile) pairs.
 #define TP_BIN_SPLIT materialIndex
-// The fill's split is chosen so that at least this many workgroups run (or one per 64 lights):
-// on a GPU enough to fill it with waits on atomics (H200, 1,024 lights of the default range:
-// light_bin_fill 0.69 ms with a workgroup per 64 lights; at 65,536 lights 0.117 ms with 2,048
-// workgroups, 0.100 with 4,096, 0.092 with 8,192, 0.087 with 16,384, docs/clustered.md); on a
-// CPU device a few, each workgroup's scan costing barriers there.
-#define TP_BIN_FILL_GROUPS_GPU 8192u
+// The fill's split is chosen so that at least this many workgroups run (or one per 64 lights),
+// each 64 lights' pairs over at most TP_BIN_FILL_SPLIT_MAX of them: on a GPU enough to fill it
+// with waits on atomics (H200, 1,024 lights of the default range: light_bin_fill 0.69 ms with a
+// workgroup per 64 lights; at 65,536 lights 0.117 ms with 2,048 workgroups, 0.100 with 4,096,
+// 0.092 with 8,192, 0.087 with 16,384, 0.086 with 24,576), but not so thinly that a workgroup
+// has little to walk (1,024 lights: 0.030 ms with 512 workgroups a 64 lights, 0.031 with 1,024;
+// docs/clustered.md); on a CPU device a few, each workgroup's scan costing barriers there.
+#define TP_BIN_FILL_GROUPS_GPU 16384u
 #define TP_BIN_FILL_GROUPS_CPU 8u
+#define TP_BIN_FILL_SPLIT_MAX 512u
 // Shared memory the fill's workgroup reserves and does not need (a specialization constant,
 // in words): on the H200, with many lights a tile, a 64-lane workgroup holding 4 KiB more fills
 // faster (1,000,000 lights: light_bin_fill 0.219 -> 0.184 ms; reserving 1 KiB 0.208, 8 KiB
