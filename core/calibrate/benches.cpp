@@ -51,8 +51,8 @@ Bench fragmentLoop(const char* name, uint32_t kind, const char* unit, const char
 // triangles for a grid of cells `cell` pixels wide.
 Bench raster(const char* name, const char* unit, const char* what, bool quick, BenchDraw draw,
              uint32_t cell = 0) {
-    Bench b{name, draw.moreColors.empty() ? TP_CAL_FRAGMENT_FLAT : TP_CAL_FRAGMENT_FLAT3, unit, what,
-            true, draw};
+    const uint32_t kind = draw.moreColors.empty() ? TP_CAL_FRAGMENT_FLAT : TP_CAL_FRAGMENT_FLAT3;
+    Bench b{name, kind, unit, what, true, draw};
     b.draw.layered = true;
     b.draw.size = targetSize(quick);
     b.push = {cell ? b.draw.size / cell : 0u, quick ? 2u : 8u, 0u, 0u};

@@ -28,8 +28,9 @@ Buffer copyToHost(GpuContext& ctx, const Image& image, uint32_t texelBytes) {
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferImageCopy region{};
         // One aspect a copy: a depth-stencil image gives its depth.
-        const VkImageAspectFlags aspect =
-            image.aspect & VK_IMAGE_ASPECT_DEPTH_BIT ? VK_IMAGE_ASPECT_DEPTH_BIT : image.aspect;
+        const VkImageAspectFlags aspect = image.aspect & VK_IMAGE_ASPECT_DEPTH_BIT
+                                              ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT)
+                                              : image.aspect;
         region.imageSubresource = {aspect, 0, 0, 1};
         region.imageExtent = {image.desc.width, image.desc.height, 1};
         vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
