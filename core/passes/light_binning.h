@@ -17,8 +17,8 @@
 //     5. fill    per light and covered tile, a slot from the tile's count counted down
 //                (atomic: scheduling order); the (light, tile) pairs of each 64 lights
 //                spread evenly over the invocations of one or more workgroups (at least
-//                TP_BIN_FILL_GROUPS_GPU workgroups on a GPU, each 64 lights over at
-//                most TP_BIN_FILL_SPLIT_MAX)
+//                TP_BIN_FILL_GROUPS_GPU workgroups on a GPU, each 64 lights' pairs over
+//                at most TP_BIN_FILL_SPLIT_MAX workgroups)
 //   light_bin_sort
 //     6. sort    every tile's run ascending: a workgroup per tile in shared memory (by rank up
 //                to 128 lights, else by buckets over the lights' index range, bitonic where a
